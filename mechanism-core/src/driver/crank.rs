@@ -1,0 +1,75 @@
+//! Crank driver: a link of length `r` turning about a known pivot `O`; its angle
+//! `theta` (rad, from +x, counter-clockwise), speed `omega` (rad/s) and angular
+//! acceleration `alpha` (rad/s^2) are the inputs. The tip is `A = O + r (cos, sin)`.
+//!
+//! The crank's axis is the unit vector from `O` to `A`. When the caller already
+//! has `(cos theta, sin theta)` (an encoder often does), [`position_cos_sin`]
+//! skips the trigonometry.
+
+use crate::error::{Error, Primitive};
+use crate::geometry::{finite, finite_point, finite_vec, positive, unit};
+use crate::link::{relative_acceleration, relative_velocity};
+use crate::scalar::Real;
+use nalgebra::{Point2, Vector2};
+
+const P: Primitive = Primitive::Crank;
+
+/// Crank at a given angle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CrankPosition<T: Real> {
+    /// The tip `A` (L).
+    pub tip: Point2<T>,
+    /// `A - O` (L): the crank as a vector.
+    pub r: Vector2<T>,
+    /// Unit axis of the crank, `(cos theta, sin theta)`.
+    pub axis: Vector2<T>,
+}
+
+/// Places the crank at `theta` (rad).
+///
+/// Errors: `NonPositive` for `length <= 0`; `NonFinite` for a non-finite angle
+/// or pivot.
+#[inline]
+pub fn position<T: Real>(pivot: &Point2<T>, length: T, theta: T) -> Result<CrankPosition<T>, Error> {
+    let theta = finite(theta, P, "crank angle")?;
+    place(pivot, length, unit(theta))
+}
+
+/// Places the crank from `(cos theta, sin theta)`, which need not be exactly
+/// unit: it is normalized (an encoder's pair rarely is).
+///
+/// Errors: `NonFinite`; `NonPositive` for `length <= 0` or a zero pair.
+#[inline]
+pub fn position_cos_sin<T: Real>(
+    pivot: &Point2<T>,
+    length: T,
+    cos: T,
+    sin: T,
+) -> Result<CrankPosition<T>, Error> {
+    let v = finite_vec(Vector2::new(cos, sin), P, "crank (cos, sin)")?;
+    let norm = positive(crate::geometry::length(&v), P, "crank |(cos, sin)|")?;
+    place(pivot, length, v / norm)
+}
+
+#[inline(always)]
+fn place<T: Real>(pivot: &Point2<T>, length: T, axis: Vector2<T>) -> Result<CrankPosition<T>, Error> {
+    let length = positive(length, P, "crank length")?;
+    let r = axis * length;
+    let tip = finite_point(pivot + r, P, "crank tip")?;
+    Ok(CrankPosition { tip, r, axis })
+}
+
+/// Velocity of the tip relative to the pivot, `omega perp(r)` (L/s).
+#[inline]
+pub fn velocity<T: Real>(pos: &CrankPosition<T>, omega: T) -> Result<Vector2<T>, Error> {
+    let omega = finite(omega, P, "crank speed")?;
+    finite_vec(relative_velocity(&pos.r, omega), P, "crank tip velocity")
+}
+
+/// Acceleration of the tip relative to the pivot (L/s^2).
+#[inline]
+pub fn acceleration<T: Real>(pos: &CrankPosition<T>, omega: T, alpha: T) -> Result<Vector2<T>, Error> {
+    let omega = finite(omega, P, "crank speed")?;
+    let alpha = finite(alpha, P, "crank angular acceleration")?;
+    finite_vec(relative_acceleration(&pos.r, omega, alpha), P, "crank tip acceleration")
+}

@@ -1,0 +1,2 @@
+//! Drivers: the inputs of a mechanism.
+pub mod crank;

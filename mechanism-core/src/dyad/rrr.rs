@@ -1,0 +1,181 @@
+//! RRR group: two links joined by a revolute at `C`, pinned at known points `A`
+//! and `B`.
+//!
+//! ```text
+//!             C
+//!        l1  / \  l2          Mode::Plus : C to the left of the directed line A -> B
+//!           /   \             Mode::Minus: C to the right
+//!          A ---- B
+//! ```
+//!
+//! Position uses the law of cosines in vector form (no trigonometry): with
+//! `d = B - A`, the foot of `C` on `AB` is at `a = (l1^2 - l2^2 + |d|^2) / (2|d|)`
+//! from `A`, and the height is `h = 2 * area / |d|`, the area from Heron's
+//! formula in the factored form `(l1+l2+d)(l1+l2-d)(d+l1-l2)(d-l1+l2)`, which
+//! loses no digits to cancellation near the edge of assembly.
+//!
+//! Rates: differentiating `A + r1 = B + r2` (with `r1 = C - A`, `r2 = C - B`)
+//! gives `w1 perp(r1) - w2 perp(r2) = vB - vA`; dotting with `r2` and `r1`
+//! solves the 2x2 system in closed form with determinant `cross(r1, r2)`
+//! (`l1 l2 sin` of the angle between the links: zero at toggle).
+//! Units: lengths in the user's unit L, rates per second; angular rates in rad/s.
+
+use crate::error::{Error, Fault, Primitive};
+use crate::geometry::{abs, check_det, cross, dot, finite_point, finite_vec, length, perp, positive};
+use crate::mode::Mode;
+use crate::scalar::Real;
+use nalgebra::{Point2, Vector2};
+
+const P: Primitive = Primitive::Rrr;
+
+/// Closed RRR group.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RrrPosition<T: Real> {
+    /// The inner joint `C` (L).
+    pub c: Point2<T>,
+    /// `C - A`: link 1 as a vector, length `l1` (L). Its direction is link 1's axis.
+    pub r1: Vector2<T>,
+    /// `C - B`: link 2 as a vector, length `l2` (L). Its direction is link 2's axis.
+    pub r2: Vector2<T>,
+}
+
+/// Angular velocities of the two links and the velocity of `C` relative to `A`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RrrVelocity<T: Real> {
+    /// Angular velocity of link 1 (rad/s, counter-clockwise positive).
+    pub omega1: T,
+    /// Angular velocity of link 2 (rad/s).
+    pub omega2: T,
+    /// `vC - vA = omega1 * perp(r1)` (L/s). Add `vA` unless `A` is fixed.
+    pub vc_rel_a: Vector2<T>,
+}
+
+/// Angular accelerations of the two links and the acceleration of `C` relative to `A`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RrrAcceleration<T: Real> {
+    /// Angular acceleration of link 1 (rad/s^2).
+    pub alpha1: T,
+    /// Angular acceleration of link 2 (rad/s^2).
+    pub alpha2: T,
+    /// `aC - aA` (L/s^2). Add `aA` unless `A` is fixed.
+    pub ac_rel_a: Vector2<T>,
+}
+
+/// Closes the group: finds `C` with `|C - A| = l1`, `|C - B| = l2`, on the side
+/// of `A -> B` chosen by `mode`.
+///
+/// Errors: `NonPositive` for `l1` or `l2 <= 0`; `NonFinite` for non-finite
+/// points; `CannotAssemble` when `|B - A|` lies outside `[|l1 - l2|, l1 + l2]`
+/// by more than `4 eps (l1 + l2)` (inside that rounding band the joint is put on
+/// the line, `h = 0`); `Singular` when `A` and `B` coincide (the direction of
+/// the line is undefined).
+#[inline]
+pub fn position<T: Real>(
+    a: &Point2<T>,
+    l1: T,
+    b: &Point2<T>,
+    l2: T,
+    mode: Mode,
+) -> Result<RrrPosition<T>, Error> {
+    let l1 = positive(l1, P, "RRR length l1")?;
+    let l2 = positive(l2, P, "RRR length l2")?;
+    let d = finite_vec(b - a, P, "RRR joint distance")?;
+    let dist = length(&d);
+    let sum = l1 + l2;
+    if !(dist > T::zero()) {
+        return Err(Error::new(P, Fault::Singular { det: 0.0, scale: sum.as_f64() }));
+    }
+    // Heron's factors; each negative one means the triangle does not close.
+    let outer = sum - dist; // < 0: too far apart
+    let inner1 = dist + l1 - l2; // < 0: l2 too long
+    let inner2 = dist - l1 + l2; // < 0: l1 too long
+    let band = T::lit(4.0) * T::eps() * sum;
+    let worst = outer.min(inner1).min(inner2);
+    if worst < -band {
+        let (miss, reach) = if outer <= inner1.min(inner2) {
+            (-outer, sum)
+        } else {
+            (-(inner1.min(inner2)), abs(l1 - l2))
+        };
+        return Err(Error::new(
+            P,
+            Fault::CannotAssemble {
+                miss: miss.as_f64(),
+                reach: reach.as_f64(),
+            },
+        ));
+    }
+    let clamp = |x: T| if x < T::zero() { T::zero() } else { x };
+    // 16 area^2 = (l1+l2+d)(l1+l2-d)(d+l1-l2)(d-l1+l2); h = 2 area / d.
+    let area16 = (sum + dist) * clamp(outer) * clamp(inner1) * clamp(inner2);
+    let h = area16.sqrt() / (T::lit(2.0) * dist);
+    // Foot of C on AB from A: (l1^2 - l2^2 + d^2) / (2 d) = ((l1-l2)(l1+l2) + d^2) / (2d).
+    let along = ((l1 - l2) * sum + dist * dist) / (T::lit(2.0) * dist);
+    let e = d / dist;
+    let r1 = e * along + perp(&e) * (mode.sign::<T>() * h);
+    let c = finite_point(a + r1, P, "RRR joint C")?;
+    Ok(RrrPosition { c, r1, r2: c - b })
+}
+
+/// Rates of the group, given the velocity of `B` relative to `A` (`vB - vA`, L/s).
+///
+/// Errors: `Singular` when `|cross(r1, r2)| <= 16 eps l1 l2` (toggle: the two
+/// links are aligned); `NonFinite` for a non-finite input.
+#[inline]
+pub fn velocity<T: Real>(
+    pos: &RrrPosition<T>,
+    vb_rel_a: &Vector2<T>,
+) -> Result<RrrVelocity<T>, Error> {
+    let det = check_det(cross(&pos.r1, &pos.r2), length(&pos.r1) * length(&pos.r2), P)?;
+    let dv = finite_vec(*vb_rel_a, P, "RRR joint velocity")?;
+    let omega1 = dot(&dv, &pos.r2) / det;
+    let omega2 = dot(&dv, &pos.r1) / det;
+    let vc_rel_a = finite_vec(perp(&pos.r1) * omega1, P, "RRR velocity of C")?;
+    Ok(RrrVelocity {
+        omega1,
+        omega2,
+        vc_rel_a,
+    })
+}
+
+/// Accelerations of the group, given `aB - aA` (L/s^2) and the rates.
+///
+/// Differentiating once more: `alpha1 perp(r1) - alpha2 perp(r2) =
+/// aB - aA + omega1^2 r1 - omega2^2 r2`, the same matrix as for the rates.
+/// Errors as for [`velocity`].
+#[inline]
+pub fn acceleration<T: Real>(
+    pos: &RrrPosition<T>,
+    vel: &RrrVelocity<T>,
+    ab_rel_a: &Vector2<T>,
+) -> Result<RrrAcceleration<T>, Error> {
+    let det = check_det(cross(&pos.r1, &pos.r2), length(&pos.r1) * length(&pos.r2), P)?;
+    let da = finite_vec(*ab_rel_a, P, "RRR joint acceleration")?;
+    let w = da + pos.r1 * (vel.omega1 * vel.omega1) - pos.r2 * (vel.omega2 * vel.omega2);
+    let alpha1 = dot(&w, &pos.r2) / det;
+    let alpha2 = dot(&w, &pos.r1) / det;
+    let ac_rel_a = finite_vec(
+        perp(&pos.r1) * alpha1 - pos.r1 * (vel.omega1 * vel.omega1),
+        P,
+        "RRR acceleration of C",
+    )?;
+    Ok(RrrAcceleration {
+        alpha1,
+        alpha2,
+        ac_rel_a,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn three_four_five_triangle_is_exact() {
+        // A=(0,0), B=(5,0), l1=3, l2=4: C=(1.8, 2.4) on the left (Plus).
+        let p = position(&Point2::new(0.0, 0.0), 3.0, &Point2::new(5.0, 0.0), 4.0, Mode::Plus).unwrap();
+        assert_eq!(p.c, Point2::new(1.8, 2.4));
+        let m = position(&Point2::new(0.0, 0.0), 3.0, &Point2::new(5.0, 0.0), 4.0, Mode::Minus).unwrap();
+        assert_eq!(m.c, Point2::new(1.8, -2.4));
+    }
+}

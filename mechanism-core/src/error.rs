@@ -1,0 +1,158 @@
+//! The typed errors. Every fallible function in the core returns
+//! `Result<_, Error>`; no function panics, and no `Ok` carries NaN or infinity.
+//!
+//! An [`Error`] says which primitive failed (and, once the generated code has
+//! named it with [`Error::in_group`], which group of the user's mechanism), and
+//! by how much ([`Fault`]). Numbers are widened to `f64` so the type is not
+//! generic and can cross `f32`/`f64` code unchanged.
+
+use core::fmt;
+
+/// The kind of primitive that reported an error.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Primitive {
+    /// A crank driver (link turning about a known point).
+    Crank,
+    /// A slider driver (translation along a known guide).
+    Slider,
+    /// A linear-actuator driver (a length between two points is the input).
+    Actuator,
+    /// A point fixed on a link.
+    LinkPoint,
+    /// Class II group revolute-revolute-revolute.
+    Rrr,
+    /// Class II group revolute-revolute-prismatic.
+    Rrp,
+    /// Class II group revolute-prismatic-revolute.
+    Rpr,
+    /// Class II group prismatic-revolute-prismatic.
+    Prp,
+    /// Class II group revolute-prismatic-prismatic.
+    Rpp,
+    /// The linear solver ([`crate::linsolve`]).
+    LinearSystem,
+}
+
+impl Primitive {
+    /// Short upper-case name, as in the textbooks ("RRR", "crank", ...).
+    pub const fn name(self) -> &'static str {
+        match self {
+            Primitive::Crank => "crank",
+            Primitive::Slider => "slider",
+            Primitive::Actuator => "actuator",
+            Primitive::LinkPoint => "link point",
+            Primitive::Rrr => "RRR",
+            Primitive::Rrp => "RRP",
+            Primitive::Rpr => "RPR",
+            Primitive::Prp => "PRP",
+            Primitive::Rpp => "RPP",
+            Primitive::LinearSystem => "linear system",
+        }
+    }
+}
+
+/// What went wrong, with the numbers that show by how much.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Fault {
+    /// The group cannot close at this pose. `miss` (> 0, length units) is how far
+    /// the distance between the known joints lies outside the reachable range;
+    /// `reach` is the range's nearer bound, for scale.
+    CannotAssemble {
+        /// Distance outside the reachable range, > 0.
+        miss: f64,
+        /// The bound that was missed (for example `l1 + l2`).
+        reach: f64,
+    },
+    /// A rate or force system is singular at this pose (toggle, dead centre,
+    /// parallel guides). `det` is the determinant (or smallest pivot) and
+    /// `scale` what it is compared against; `|det| / scale` is the relative
+    /// conditioning, below `16 * eps` here.
+    Singular {
+        /// The determinant or pivot found.
+        det: f64,
+        /// Its natural scale (product of the column lengths or row scales).
+        scale: f64,
+    },
+    /// An input or an intermediate result was NaN or infinite.
+    NonFinite {
+        /// Which quantity.
+        what: &'static str,
+    },
+    /// A length or other input that must be positive was not.
+    NonPositive {
+        /// Which quantity.
+        what: &'static str,
+        /// The value given.
+        value: f64,
+    },
+}
+
+/// A typed error: which primitive, which group of the user's mechanism (when
+/// known), and the [`Fault`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Error {
+    /// The user's name for the group or driver (for example `"B"`), or `""` when
+    /// a primitive was called directly.
+    pub group: &'static str,
+    /// The primitive that failed.
+    pub primitive: Primitive,
+    /// What went wrong.
+    pub fault: Fault,
+}
+
+impl Error {
+    /// An error from `primitive`, not yet attributed to a named group.
+    #[inline]
+    pub const fn new(primitive: Primitive, fault: Fault) -> Self {
+        Error {
+            group: "",
+            primitive,
+            fault,
+        }
+    }
+
+    /// Attributes the error to the user's group `name` (generated code calls this).
+    #[inline]
+    pub const fn in_group(mut self, name: &'static str) -> Self {
+        self.group = name;
+        self
+    }
+}
+
+impl fmt::Display for Fault {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Fault::CannotAssemble { miss, reach } => write!(
+                f,
+                "cannot assemble: the known joints are {miss:e} outside the reachable range (bound {reach:e})"
+            ),
+            Fault::Singular { det, scale } => write!(
+                f,
+                "singular position: determinant {det:e} against scale {scale:e} (relative {:e})",
+                if scale != 0.0 { det / scale } else { det }
+            ),
+            Fault::NonFinite { what } => write!(f, "{what} is not finite"),
+            Fault::NonPositive { what, value } => {
+                write!(f, "{what} must be positive, got {value:e}")
+            }
+        }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.group.is_empty() {
+            write!(f, "{}: {}", self.primitive.name(), self.fault)
+        } else {
+            write!(
+                f,
+                "group `{}` ({}): {}",
+                self.group,
+                self.primitive.name(),
+                self.fault
+            )
+        }
+    }
+}
+
+impl core::error::Error for Error {}

@@ -1,0 +1,151 @@
+//! Small planar vector helpers used by every primitive (no trigonometry).
+//!
+//! Sign conventions: angles and angular rates are counter-clockwise positive;
+//! `perp(v)` is `v` turned +90 degrees, so the velocity of a point at offset `r`
+//! on a link turning at `omega` is `omega * perp(r)`.
+
+use crate::error::{Error, Fault, Primitive};
+use crate::scalar::Real;
+use nalgebra::{Point2, Vector2};
+
+/// `v` rotated by +90 degrees: `(-v.y, v.x)`.
+#[inline(always)]
+pub fn perp<T: Real>(v: &Vector2<T>) -> Vector2<T> {
+    Vector2::new(-v.y, v.x)
+}
+
+/// The z component of the planar cross product `a x b` (positive when `b` is
+/// counter-clockwise from `a`).
+#[inline(always)]
+pub fn cross<T: Real>(a: &Vector2<T>, b: &Vector2<T>) -> T {
+    a.x * b.y - a.y * b.x
+}
+
+/// Dot product.
+#[inline(always)]
+pub fn dot<T: Real>(a: &Vector2<T>, b: &Vector2<T>) -> T {
+    a.x * b.x + a.y * b.y
+}
+
+/// Absolute value.
+#[inline(always)]
+pub fn abs<T: Real>(x: T) -> T {
+    if x < T::zero() {
+        -x
+    } else {
+        x
+    }
+}
+
+/// Euclidean length, scaled so that it neither overflows nor underflows for
+/// components between about 1e-150 and 1e150 (f64).
+#[inline(always)]
+pub fn length<T: Real>(v: &Vector2<T>) -> T {
+    (v.x * v.x + v.y * v.y).sqrt()
+}
+
+/// Angle of `v` from +x, counter-clockwise, in radians in `(-pi, pi]`.
+#[inline(always)]
+pub fn angle<T: Real>(v: &Vector2<T>) -> T {
+    v.y.atan2(v.x)
+}
+
+/// Angle of `v` from +x in degrees in `[0, 360)`, the convention of the tables.
+#[inline]
+pub fn angle_deg_0_360<T: Real>(v: &Vector2<T>) -> T {
+    let deg = angle(v) * T::lit(180.0) / T::pi();
+    if deg < T::zero() {
+        let wrapped = deg + T::lit(360.0);
+        // -tiny + 360 rounds to 360: keep the half-open range.
+        if wrapped >= T::lit(360.0) {
+            T::zero()
+        } else {
+            wrapped
+        }
+    } else {
+        deg
+    }
+}
+
+/// The unit vector `(cos angle, sin angle)`.
+#[inline(always)]
+pub fn unit<T: Real>(angle: T) -> Vector2<T> {
+    let (s, c) = angle.sin_cos();
+    Vector2::new(c, s)
+}
+
+/// Returns `Err(NonFinite)` unless `x` is finite.
+#[inline(always)]
+pub fn finite<T: Real>(x: T, primitive: Primitive, what: &'static str) -> Result<T, Error> {
+    if x.finite() {
+        Ok(x)
+    } else {
+        Err(Error::new(primitive, Fault::NonFinite { what }))
+    }
+}
+
+/// Returns `Err(NonFinite)` unless both components are finite.
+#[inline(always)]
+pub fn finite_vec<T: Real>(
+    v: Vector2<T>,
+    primitive: Primitive,
+    what: &'static str,
+) -> Result<Vector2<T>, Error> {
+    if v.x.finite() && v.y.finite() {
+        Ok(v)
+    } else {
+        Err(Error::new(primitive, Fault::NonFinite { what }))
+    }
+}
+
+/// Returns `Err(NonFinite)` unless both coordinates are finite.
+#[inline(always)]
+pub fn finite_point<T: Real>(
+    p: Point2<T>,
+    primitive: Primitive,
+    what: &'static str,
+) -> Result<Point2<T>, Error> {
+    finite_vec(p.coords, primitive, what).map(Point2::from)
+}
+
+/// Returns `Err(NonPositive)` unless `x` is finite and `> 0`.
+#[inline(always)]
+pub fn positive<T: Real>(x: T, primitive: Primitive, what: &'static str) -> Result<T, Error> {
+    let x = finite(x, primitive, what)?;
+    if x > T::zero() {
+        Ok(x)
+    } else {
+        Err(Error::new(
+            primitive,
+            Fault::NonPositive {
+                what,
+                value: x.as_f64(),
+            },
+        ))
+    }
+}
+
+/// Relative threshold below which a 2x2 rate system counts as singular:
+/// `|det| <= SINGULAR_RELATIVE * eps * scale`, where `scale` is the product of
+/// the lengths of the determinant's columns. At that level the rates' relative
+/// error bound (about `eps / (|det| / scale)`) is already 1/16: nothing useful
+/// remains, so a typed error is more honest than a number.
+pub const SINGULAR_RELATIVE: f64 = 16.0;
+
+/// Checks a determinant against its scale; `Err(Singular)` when
+/// `|det| <= SINGULAR_RELATIVE * eps * scale` or either is not finite.
+#[inline(always)]
+pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, Error> {
+    let threshold = T::lit(SINGULAR_RELATIVE) * T::eps() * scale;
+    if det.finite() && scale.finite() && abs(det) > threshold {
+        Ok(det)
+    } else {
+        Err(Error::new(
+            primitive,
+            Fault::Singular {
+                det: det.as_f64(),
+                scale: scale.as_f64(),
+            },
+        ))
+    }
+}

@@ -1,0 +1,30 @@
+//! `mechanism-core`: the `no_std`, allocation-free primitives behind the
+//! `mechanism!` macro, usable directly.
+//!
+//! - [`driver`]: crank, slider and linear actuator inputs;
+//! - [`link`]: points fixed on a link and rigid-body rate relations;
+//! - [`dyad`]: the five class II Assur groups RRR, RRP, RPR, PRP, RPP, each with
+//!   `position`, `velocity` and `acceleration` (and kinetostatics in [`force`]);
+//! - [`linsolve`]: Gaussian elimination with row scaling and partial pivoting on
+//!   fixed-size arrays;
+//! - [`error`]: the typed errors.
+//!
+//! Conventions: the user's length unit L throughout (results scale with it);
+//! angles in radians from +x, counter-clockwise positive; rates per second.
+//! Every function returns `Result`; none panics; no `Ok` holds NaN or infinity.
+#![no_std]
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod driver;
+pub mod dyad;
+pub mod error;
+pub mod geometry;
+pub mod link;
+pub mod mode;
+pub mod scalar;
+
+pub use error::{Error, Fault, Primitive};
+pub use mode::Mode;
+pub use nalgebra::{Point2, Vector2};
+pub use scalar::Real;

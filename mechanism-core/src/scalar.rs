@@ -1,0 +1,65 @@
+//! The scalar type every primitive is generic over.
+//!
+//! [`Real`] is nalgebra's [`RealField`] (so results are ordinary `Point2<T>` /
+//! `Vector2<T>` that users can feed to the rest of nalgebra) plus the three
+//! things the primitives need that `RealField` does not name unambiguously:
+//! converting a literal, widening to `f64` for error reports, and machine epsilon.
+//!
+//! Why not a scalar trait of our own from scratch: users want nalgebra types at
+//! the API, and nalgebra's arithmetic on `Vector2<T>` needs `RealField`-like
+//! bounds anyway. Why not bare `RealField`: `FromPrimitive::from_f64` returns an
+//! `Option` (a panic path if unwrapped) and `abs` is ambiguous between two
+//! supertraits; [`Real::lit`] and [`crate::geometry::abs`] avoid both.
+//! Implemented for `f32` and `f64` only.
+
+use nalgebra::RealField;
+
+/// A floating-point scalar: `f32` or `f64`.
+pub trait Real: RealField + Copy {
+    /// Converts an `f64` literal (rounding to nearest for `f32`).
+    fn lit(x: f64) -> Self;
+    /// Widens to `f64` (exact for both implementations); used in error values.
+    fn as_f64(self) -> f64;
+    /// Machine epsilon: the gap between 1 and the next representable number.
+    fn eps() -> Self;
+    /// `true` when the value is neither NaN nor infinite.
+    fn finite(self) -> bool;
+}
+
+impl Real for f64 {
+    #[inline(always)]
+    fn lit(x: f64) -> Self {
+        x
+    }
+    #[inline(always)]
+    fn as_f64(self) -> f64 {
+        self
+    }
+    #[inline(always)]
+    fn eps() -> Self {
+        f64::EPSILON
+    }
+    #[inline(always)]
+    fn finite(self) -> bool {
+        self.is_finite()
+    }
+}
+
+impl Real for f32 {
+    #[inline(always)]
+    fn lit(x: f64) -> Self {
+        x as f32
+    }
+    #[inline(always)]
+    fn as_f64(self) -> f64 {
+        self as f64
+    }
+    #[inline(always)]
+    fn eps() -> Self {
+        f32::EPSILON
+    }
+    #[inline(always)]
+    fn finite(self) -> bool {
+        self.is_finite()
+    }
+}
