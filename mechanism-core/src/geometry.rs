@@ -149,3 +149,24 @@ pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, E
         ))
     }
 }
+
+/// `x - y` where `None` stands for a zero vector (a fixed point): with a
+/// constant `None`, the missing terms vanish at compile time.
+#[inline(always)]
+pub fn difference<T: Real>(x: Option<&Vector2<T>>, y: Option<&Vector2<T>>) -> Vector2<T> {
+    match (x, y) {
+        (Some(x), Some(y)) => x - y,
+        (Some(x), None) => *x,
+        (None, Some(y)) => -y,
+        (None, None) => Vector2::zeros(),
+    }
+}
+
+/// `x + v` where `None` stands for a zero `x` (a fixed point).
+#[inline(always)]
+pub fn plus<T: Real>(x: Option<&Vector2<T>>, v: Vector2<T>) -> Vector2<T> {
+    match x {
+        Some(x) => x + v,
+        None => v,
+    }
+}

@@ -20,6 +20,7 @@ pub mod driver;
 pub mod dyad;
 pub mod error;
 pub mod geometry;
+pub mod guide;
 pub mod link;
 pub mod mode;
 pub mod scalar;

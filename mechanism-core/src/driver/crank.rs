@@ -7,7 +7,7 @@
 //! skips the trigonometry.
 
 use crate::error::{Error, Primitive};
-use crate::geometry::{finite, finite_point, finite_vec, positive, unit};
+use crate::geometry::{finite, finite_point, finite_vec, plus, positive, unit};
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -30,7 +30,11 @@ pub struct CrankPosition<T: Real> {
 /// Errors: `NonPositive` for `length <= 0`; `NonFinite` for a non-finite angle
 /// or pivot.
 #[inline]
-pub fn position<T: Real>(pivot: &Point2<T>, length: T, theta: T) -> Result<CrankPosition<T>, Error> {
+pub fn position<T: Real>(
+    pivot: &Point2<T>,
+    length: T,
+    theta: T,
+) -> Result<CrankPosition<T>, Error> {
     let theta = finite(theta, P, "crank angle")?;
     place(pivot, length, unit(theta))
 }
@@ -52,24 +56,46 @@ pub fn position_cos_sin<T: Real>(
 }
 
 #[inline(always)]
-fn place<T: Real>(pivot: &Point2<T>, length: T, axis: Vector2<T>) -> Result<CrankPosition<T>, Error> {
+fn place<T: Real>(
+    pivot: &Point2<T>,
+    length: T,
+    axis: Vector2<T>,
+) -> Result<CrankPosition<T>, Error> {
     let length = positive(length, P, "crank length")?;
     let r = axis * length;
     let tip = finite_point(pivot + r, P, "crank tip")?;
     Ok(CrankPosition { tip, r, axis })
 }
 
-/// Velocity of the tip relative to the pivot, `omega perp(r)` (L/s).
+/// Velocity of the tip (L/s): `v_pivot + omega perp(r)`; `v_pivot = None`
+/// for a crank on the ground.
 #[inline]
-pub fn velocity<T: Real>(pos: &CrankPosition<T>, omega: T) -> Result<Vector2<T>, Error> {
+pub fn velocity<T: Real>(
+    pos: &CrankPosition<T>,
+    v_pivot: Option<&Vector2<T>>,
+    omega: T,
+) -> Result<Vector2<T>, Error> {
     let omega = finite(omega, P, "crank speed")?;
-    finite_vec(relative_velocity(&pos.r, omega), P, "crank tip velocity")
+    finite_vec(
+        plus(v_pivot, relative_velocity(&pos.r, omega)),
+        P,
+        "crank tip velocity",
+    )
 }
 
-/// Acceleration of the tip relative to the pivot (L/s^2).
+/// Acceleration of the tip (L/s^2): `a_pivot + alpha perp(r) - omega^2 r`.
 #[inline]
-pub fn acceleration<T: Real>(pos: &CrankPosition<T>, omega: T, alpha: T) -> Result<Vector2<T>, Error> {
+pub fn acceleration<T: Real>(
+    pos: &CrankPosition<T>,
+    a_pivot: Option<&Vector2<T>>,
+    omega: T,
+    alpha: T,
+) -> Result<Vector2<T>, Error> {
     let omega = finite(omega, P, "crank speed")?;
     let alpha = finite(alpha, P, "crank angular acceleration")?;
-    finite_vec(relative_acceleration(&pos.r, omega, alpha), P, "crank tip acceleration")
+    finite_vec(
+        plus(a_pivot, relative_acceleration(&pos.r, omega, alpha)),
+        P,
+        "crank tip acceleration",
+    )
 }

@@ -21,7 +21,10 @@
 //! Units: lengths in the user's unit L, rates per second; angular rates in rad/s.
 
 use crate::error::{Error, Fault, Primitive};
-use crate::geometry::{abs, check_det, cross, dot, finite_point, finite_vec, length, perp, positive};
+use crate::geometry::{
+    abs, check_det, cross, difference, dot, finite_point, finite_vec, length, perp, plus, positive,
+};
+use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -39,26 +42,26 @@ pub struct RrrPosition<T: Real> {
     pub r2: Vector2<T>,
 }
 
-/// Angular velocities of the two links and the velocity of `C` relative to `A`.
+/// Angular velocities of the two links and the velocity of `C`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RrrVelocity<T: Real> {
     /// Angular velocity of link 1 (rad/s, counter-clockwise positive).
     pub omega1: T,
     /// Angular velocity of link 2 (rad/s).
     pub omega2: T,
-    /// `vC - vA = omega1 * perp(r1)` (L/s). Add `vA` unless `A` is fixed.
-    pub vc_rel_a: Vector2<T>,
+    /// Velocity of `C` (L/s).
+    pub vc: Vector2<T>,
 }
 
-/// Angular accelerations of the two links and the acceleration of `C` relative to `A`.
+/// Angular accelerations of the two links and the acceleration of `C`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RrrAcceleration<T: Real> {
     /// Angular acceleration of link 1 (rad/s^2).
     pub alpha1: T,
     /// Angular acceleration of link 2 (rad/s^2).
     pub alpha2: T,
-    /// `aC - aA` (L/s^2). Add `aA` unless `A` is fixed.
-    pub ac_rel_a: Vector2<T>,
+    /// Acceleration of `C` (L/s^2).
+    pub ac: Vector2<T>,
 }
 
 /// Closes the group: finds `C` with `|C - A| = l1`, `|C - B| = l2`, on the side
@@ -83,19 +86,25 @@ pub fn position<T: Real>(
     let dist = length(&d);
     let sum = l1 + l2;
     if !(dist > T::zero()) {
-        return Err(Error::new(P, Fault::Singular { det: 0.0, scale: sum.as_f64() }));
+        return Err(Error::new(
+            P,
+            Fault::Singular {
+                det: 0.0,
+                scale: sum.as_f64(),
+            },
+        ));
     }
     // Heron's factors; each negative one means the triangle does not close.
     let outer = sum - dist; // < 0: too far apart
     let inner1 = dist + l1 - l2; // < 0: l2 too long
     let inner2 = dist - l1 + l2; // < 0: l1 too long
     let band = T::lit(4.0) * T::eps() * sum;
-    let worst = outer.min(inner1).min(inner2);
-    if worst < -band {
-        let (miss, reach) = if outer <= inner1.min(inner2) {
+    let inner = inner1.min(inner2);
+    if outer.min(inner) < -band {
+        let (miss, reach) = if outer <= inner {
             (-outer, sum)
         } else {
-            (-(inner1.min(inner2)), abs(l1 - l2))
+            (-inner, abs(l1 - l2))
         };
         return Err(Error::new(
             P,
@@ -109,7 +118,7 @@ pub fn position<T: Real>(
     // 16 area^2 = (l1+l2+d)(l1+l2-d)(d+l1-l2)(d-l1+l2); h = 2 area / d.
     let area16 = (sum + dist) * clamp(outer) * clamp(inner1) * clamp(inner2);
     let h = area16.sqrt() / (T::lit(2.0) * dist);
-    // Foot of C on AB from A: (l1^2 - l2^2 + d^2) / (2 d) = ((l1-l2)(l1+l2) + d^2) / (2d).
+    // Foot of C on AB, from A: (l1^2 - l2^2 + d^2) / (2d) = ((l1-l2)(l1+l2) + d^2) / (2d).
     let along = ((l1 - l2) * sum + dist * dist) / (T::lit(2.0) * dist);
     let e = d / dist;
     let r1 = e * along + perp(&e) * (mode.sign::<T>() * h);
@@ -117,28 +126,42 @@ pub fn position<T: Real>(
     Ok(RrrPosition { c, r1, r2: c - b })
 }
 
-/// Rates of the group, given the velocity of `B` relative to `A` (`vB - vA`, L/s).
+/// Determinant of the rate system, `cross(r1, r2) = l1 l2 sin(angle between
+/// the links)`, checked against `16 eps l1 l2`.
+#[inline(always)]
+fn determinant<T: Real>(pos: &RrrPosition<T>) -> Result<T, Error> {
+    check_det(
+        cross(&pos.r1, &pos.r2),
+        length(&pos.r1) * length(&pos.r2),
+        P,
+    )
+}
+
+/// Rates of the group from the velocities of `A` and `B` (L/s); `None` means
+/// the point is fixed (its terms vanish at compile time).
 ///
 /// Errors: `Singular` when `|cross(r1, r2)| <= 16 eps l1 l2` (toggle: the two
 /// links are aligned); `NonFinite` for a non-finite input.
 #[inline]
 pub fn velocity<T: Real>(
     pos: &RrrPosition<T>,
-    vb_rel_a: &Vector2<T>,
+    va: Option<&Vector2<T>>,
+    vb: Option<&Vector2<T>>,
 ) -> Result<RrrVelocity<T>, Error> {
-    let det = check_det(cross(&pos.r1, &pos.r2), length(&pos.r1) * length(&pos.r2), P)?;
-    let dv = finite_vec(*vb_rel_a, P, "RRR joint velocity")?;
+    let det = determinant(pos)?;
+    let dv = finite_vec(difference(vb, va), P, "RRR joint velocity")?;
     let omega1 = dot(&dv, &pos.r2) / det;
     let omega2 = dot(&dv, &pos.r1) / det;
-    let vc_rel_a = finite_vec(perp(&pos.r1) * omega1, P, "RRR velocity of C")?;
-    Ok(RrrVelocity {
-        omega1,
-        omega2,
-        vc_rel_a,
-    })
+    let vc = finite_vec(
+        plus(va, relative_velocity(&pos.r1, omega1)),
+        P,
+        "RRR velocity of C",
+    )?;
+    Ok(RrrVelocity { omega1, omega2, vc })
 }
 
-/// Accelerations of the group, given `aB - aA` (L/s^2) and the rates.
+/// Accelerations of the group from the accelerations of `A` and `B` (L/s^2;
+/// `None`: fixed) and the rates.
 ///
 /// Differentiating once more: `alpha1 perp(r1) - alpha2 perp(r2) =
 /// aB - aA + omega1^2 r1 - omega2^2 r2`, the same matrix as for the rates.
@@ -147,23 +170,20 @@ pub fn velocity<T: Real>(
 pub fn acceleration<T: Real>(
     pos: &RrrPosition<T>,
     vel: &RrrVelocity<T>,
-    ab_rel_a: &Vector2<T>,
+    aa: Option<&Vector2<T>>,
+    ab: Option<&Vector2<T>>,
 ) -> Result<RrrAcceleration<T>, Error> {
-    let det = check_det(cross(&pos.r1, &pos.r2), length(&pos.r1) * length(&pos.r2), P)?;
-    let da = finite_vec(*ab_rel_a, P, "RRR joint acceleration")?;
+    let det = determinant(pos)?;
+    let da = finite_vec(difference(ab, aa), P, "RRR joint acceleration")?;
     let w = da + pos.r1 * (vel.omega1 * vel.omega1) - pos.r2 * (vel.omega2 * vel.omega2);
     let alpha1 = dot(&w, &pos.r2) / det;
     let alpha2 = dot(&w, &pos.r1) / det;
-    let ac_rel_a = finite_vec(
-        perp(&pos.r1) * alpha1 - pos.r1 * (vel.omega1 * vel.omega1),
+    let ac = finite_vec(
+        plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1)),
         P,
         "RRR acceleration of C",
     )?;
-    Ok(RrrAcceleration {
-        alpha1,
-        alpha2,
-        ac_rel_a,
-    })
+    Ok(RrrAcceleration { alpha1, alpha2, ac })
 }
 
 #[cfg(test)]
@@ -173,9 +193,23 @@ mod tests {
     #[test]
     fn three_four_five_triangle_is_exact() {
         // A=(0,0), B=(5,0), l1=3, l2=4: C=(1.8, 2.4) on the left (Plus).
-        let p = position(&Point2::new(0.0, 0.0), 3.0, &Point2::new(5.0, 0.0), 4.0, Mode::Plus).unwrap();
+        let p = position(
+            &Point2::new(0.0, 0.0),
+            3.0,
+            &Point2::new(5.0, 0.0),
+            4.0,
+            Mode::Plus,
+        )
+        .unwrap();
         assert_eq!(p.c, Point2::new(1.8, 2.4));
-        let m = position(&Point2::new(0.0, 0.0), 3.0, &Point2::new(5.0, 0.0), 4.0, Mode::Minus).unwrap();
+        let m = position(
+            &Point2::new(0.0, 0.0),
+            3.0,
+            &Point2::new(5.0, 0.0),
+            4.0,
+            Mode::Minus,
+        )
+        .unwrap();
         assert_eq!(m.c, Point2::new(1.8, -2.4));
     }
 }
