@@ -1,8 +1,46 @@
-//! Code generation for `mechanism!`: parse -> model -> validate -> plan -> emit.
+//! Code generation for `mechanism!`, as a plain library so it can be unit- and
+//! snapshot-tested: [`parse`] -> [`model`] -> [`validate`] -> [`plan`] -> [`emit`].
+//!
+//! Errors are accumulated across stages and reported together, each on the
+//! user's token; on error, stub items with the real names keep the user's own
+//! code free of follow-on errors.
+
+pub mod emit;
+pub mod model;
+pub mod parse;
+pub mod plan;
+pub mod validate;
+pub mod value;
+
 use proc_macro2::TokenStream;
 
-/// Expands a mechanism definition.
+/// Expands a mechanism definition into Rust items.
 pub fn expand(input: TokenStream) -> TokenStream {
-    let _ = input;
-    TokenStream::new()
+    let definition: parse::Definition = match syn::parse2(input) {
+        Ok(d) => d,
+        Err(e) => return e.to_compile_error(),
+    };
+    let kinds_failed = definition.items.iter().any(|item| match item {
+        parse::Item::Let(l) => !model::KINDS.contains(&l.kind.to_string().as_str()),
+        _ => false,
+    });
+    let (model, mut errors) = model::lower(definition);
+    validate::unique_names(&model, &mut errors);
+    validate::reserved_names(&model, &mut errors);
+    validate::references_resolve(&model, &mut errors);
+    validate::has_driver(&model, kinds_failed, &mut errors);
+    validate::dof_matches(&model, &mut errors);
+    validate::outputs_exist(&model, &mut errors);
+    if !errors.0.is_empty() {
+        return emit::emit_stub(&model, errors.0);
+    }
+    let plan = match plan::plan(&model) {
+        Ok(p) => p,
+        Err(e) => return emit::emit_stub(&model, e),
+    };
+    validate::geometry_consistent(&model, &plan, &mut errors);
+    if !errors.0.is_empty() {
+        return emit::emit_stub(&model, errors.0);
+    }
+    emit::emit(&model, &plan)
 }

@@ -1,0 +1,1040 @@
+//! Stage 5, emit: straight-line Rust for one mechanism. Only what the scene asks
+//! for is generated: no velocity code in a position-only scene, no `atan2`
+//! unless a link angle is an output, and fixed points and guides pass `None`
+//! so that their terms vanish at compile time.
+
+use crate::model::{Kind, Level, Local, Mode, Model, Origin, Stmt};
+use crate::plan::Plan;
+use crate::value::{lit, Value};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use std::collections::BTreeSet;
+use syn::Ident;
+
+/// Which names the user wants in the output structs.
+struct Outputs {
+    points: Vec<Ident>,
+    links: Vec<Ident>,
+    slides: Vec<(Ident, usize, usize)>, // name, stmt, slot
+}
+
+fn outputs(model: &Model, plan: &Plan) -> Outputs {
+    let wanted = |name: &Ident| match &model.outputs {
+        None => true,
+        Some(list) => list.iter().any(|o| o == name),
+    };
+    let mut out = Outputs {
+        points: vec![],
+        links: vec![],
+        slides: vec![],
+    };
+    for &i in &plan.order {
+        let stmt = &model.stmts[i];
+        match stmt.kind {
+            Kind::Guide { .. } => {}
+            Kind::Rpr { .. } => {
+                if wanted(&stmt.name) {
+                    out.slides.push((stmt.name.clone(), i, 0));
+                }
+            }
+            _ => {
+                if wanted(&stmt.name) {
+                    out.points.push(stmt.name.clone());
+                }
+            }
+        }
+        for (link, named) in stmt.links.iter().zip(&stmt.links_named) {
+            if *named && wanted(link) {
+                out.links.push(link.clone());
+            }
+        }
+        for (slot, slide) in stmt.slides.iter().enumerate() {
+            if let Some(s) = slide {
+                if wanted(s) {
+                    out.slides.push((s.clone(), i, slot));
+                }
+            }
+        }
+    }
+    out
+}
+
+fn mode_tokens(mode: Mode) -> TokenStream {
+    match mode {
+        Mode::Plus => quote!(::mechanism::Mode::Plus),
+        Mode::Minus => quote!(::mechanism::Mode::Minus),
+    }
+}
+
+/// A unit vector at a given angle: folded at expansion time when literal.
+fn unit_vector(angle: &Value) -> TokenStream {
+    match angle.fold() {
+        Some(a) => {
+            let (s, c) = a.sin_cos();
+            let (c, s) = (lit(c), lit(s));
+            quote!(::mechanism::Vector2::new(#c, #s))
+        }
+        None => {
+            let a = angle.emit();
+            quote!(::mechanism::geometry::unit(#a))
+        }
+    }
+}
+
+fn tag(stmt: &Stmt) -> TokenStream {
+    let name = stmt.name.to_string();
+    quote!(.map_err(|e| e.in_group(#name))?)
+}
+
+struct Emitter<'a> {
+    model: &'a Model,
+    plan: &'a Plan,
+    /// Links whose unit axis is needed in position (points on them, carried guides).
+    axes: BTreeSet<String>,
+}
+
+impl Emitter<'_> {
+    fn grp(&self, stmt: &Stmt) -> Ident {
+        format_ident!("grp_{}", stmt.name)
+    }
+
+    /// Unit axis and raw direction of link `index` of `stmt`, in position scope.
+    fn link_direction(&self, stmt: &Stmt, index: usize) -> (TokenStream, TokenStream) {
+        let g = self.grp(stmt);
+        match (&stmt.kind, index) {
+            (Kind::Crank { .. }, _) | (Kind::Rpr { .. }, _) => (quote!(#g.axis), quote!(#g.axis)),
+            (Kind::Slider { guide, .. }, _)
+            | (Kind::Rrp { guide, .. }, 1)
+            | (Kind::Rpp { guide, .. }, 1) => (quote!(#guide.dir), quote!(#guide.dir)),
+            (Kind::Actuator { l, .. }, 0)
+            | (Kind::Rrp { l, .. }, 0)
+            | (Kind::Rrr { l1: l, .. }, 0) => {
+                let l = l.emit();
+                (quote!(#g.r1 / #l), quote!(#g.r1))
+            }
+            (Kind::Rrr { l2, .. }, _) => {
+                let l2 = l2.emit();
+                (quote!(#g.r2 / #l2), quote!(#g.r2))
+            }
+            (Kind::Actuator { input, .. }, _) => (quote!(#g.r2 / input.#input), quote!(#g.r2)),
+            (Kind::Prp { g1, .. }, 0) => (quote!(#g1.dir), quote!(#g1.dir)),
+            (Kind::Prp { g2, .. }, _) => (quote!(#g2.dir), quote!(#g2.dir)),
+            (Kind::Rpp { .. }, _) => (quote!(#g.slot), quote!(#g.slot)),
+            _ => (
+                quote!(::mechanism::Vector2::x()),
+                quote!(::mechanism::Vector2::x()),
+            ),
+        }
+    }
+
+    /// Position statements for one statement; returns (code, fields) where
+    /// fields are the locals to keep in the position struct.
+    fn position(&self, stmt: &Stmt) -> (TokenStream, Vec<Ident>) {
+        let name = &stmt.name;
+        let g = self.grp(stmt);
+        let t = tag(stmt);
+        let mut fields = vec![];
+        let code = match &stmt.kind {
+            Kind::Ground { x, y } => {
+                let (x, y) = (x.emit(), y.emit());
+                fields.push(name.clone());
+                quote!(let #name = ::mechanism::Point2::new(#x, #y);)
+            }
+            Kind::Guide {
+                origin,
+                angle,
+                carrier,
+            } => {
+                let origin = match origin {
+                    Origin::Point(p) => quote!(#p),
+                    Origin::Coords(x, y) => {
+                        let (x, y) = (x.emit(), y.emit());
+                        quote!(::mechanism::Point2::new(#x, #y))
+                    }
+                };
+                let dir = match carrier {
+                    None => unit_vector(angle),
+                    Some(link) => {
+                        let axis = format_ident!("axis_{}", link);
+                        if angle.fold() == Some(0.0) {
+                            quote!(#axis)
+                        } else {
+                            let u = unit_vector(angle);
+                            quote!(::mechanism::link::local_offset(&#axis, &#u))
+                        }
+                    }
+                };
+                fields.push(name.clone());
+                quote!(let #name = ::mechanism::guide::Line { origin: #origin, dir: #dir };)
+            }
+            Kind::Crank {
+                pivot,
+                radius,
+                input,
+            } => {
+                let r = radius.emit();
+                fields.extend([g.clone(), name.clone()]);
+                quote! {
+                    let #g = ::mechanism::driver::crank::position(&#pivot, #r, input.#input) #t;
+                    let #name = #g.tip;
+                }
+            }
+            Kind::Slider {
+                guide,
+                input,
+                offset,
+            } => {
+                let o = offset.emit();
+                fields.extend([g.clone(), name.clone()]);
+                quote! {
+                    let #g = ::mechanism::driver::slider::position(&#guide, #o, input.#input) #t;
+                    let #name = #g.p;
+                }
+            }
+            Kind::Actuator {
+                a,
+                l,
+                b,
+                input,
+                mode,
+            } => {
+                let (l, m) = (l.emit(), mode_tokens(*mode));
+                fields.extend([g.clone(), name.clone()]);
+                quote! {
+                    let #g = ::mechanism::driver::actuator::position(&#a, #l, &#b, input.#input, #m) #t;
+                    let #name = #g.c;
+                }
+            }
+            Kind::Rrr { a, l1, b, l2, mode } => {
+                let (l1, l2, m) = (l1.emit(), l2.emit(), mode_tokens(*mode));
+                fields.extend([g.clone(), name.clone()]);
+                quote! {
+                    let #g = ::mechanism::dyad::rrr::position(&#a, #l1, &#b, #l2, #m) #t;
+                    let #name = #g.c;
+                }
+            }
+            Kind::Rrp {
+                a,
+                l,
+                guide,
+                mode,
+                offset,
+            } => {
+                let (l, m, o) = (l.emit(), mode_tokens(*mode), offset.emit());
+                fields.extend([g.clone(), name.clone()]);
+                quote! {
+                    let #g = ::mechanism::dyad::rrp::position(&#a, #l, &#guide, #o, #m) #t;
+                    let #name = #g.c;
+                }
+            }
+            Kind::Rpr { a, b, mode, offset } => {
+                let (m, o) = (mode_tokens(*mode), offset.emit());
+                fields.push(g.clone());
+                quote! {
+                    let #g = ::mechanism::dyad::rpr::position(&#a, &#b, #o, #m) #t;
+                }
+            }
+            Kind::Prp {
+                g1,
+                g2,
+                offset1,
+                offset2,
+            } => {
+                let (o1, o2) = (offset1.emit(), offset2.emit());
+                fields.extend([g.clone(), name.clone()]);
+                quote! {
+                    let #g = ::mechanism::dyad::prp::position(&#g1, #o1, &#g2, #o2) #t;
+                    let #name = #g.c;
+                }
+            }
+            Kind::Rpp {
+                a,
+                guide,
+                slot,
+                offset,
+            } => {
+                let (u, o) = (unit_vector(slot), offset.emit());
+                fields.extend([g.clone(), name.clone()]);
+                quote! {
+                    let #g = ::mechanism::dyad::rpp::position(&#a, &#guide, #o, &#u) #t;
+                    let #name = #g.q;
+                }
+            }
+            Kind::Point { link, from, local } => {
+                let axis = format_ident!("axis_{}", link);
+                let local = match local {
+                    Local::Cartesian(x, y) => {
+                        let (x, y) = (x.emit(), y.emit());
+                        quote!(::mechanism::Vector2::new(#x, #y))
+                    }
+                    Local::Polar(d, a) => match (d.fold(), a.fold()) {
+                        (Some(d), Some(a)) => {
+                            let (s, c) = a.sin_cos();
+                            let (x, y) = (lit(d * c), lit(d * s));
+                            quote!(::mechanism::Vector2::new(#x, #y))
+                        }
+                        _ => {
+                            let (d, u) = (d.emit(), unit_vector(a));
+                            quote!((#u * #d))
+                        }
+                    },
+                };
+                fields.push(name.clone());
+                quote! {
+                    let #name = ::mechanism::link::point_position(&#from, &#axis, &#local) #t;
+                }
+            }
+        };
+        // Unit axes of the links this statement creates, where needed.
+        let mut axes = TokenStream::new();
+        for (j, link) in stmt.links.iter().enumerate() {
+            if self.axes.contains(&link.to_string()) {
+                let axis = format_ident!("axis_{}", link);
+                let (unit, _) = self.link_direction(stmt, j);
+                axes.extend(quote!(let #axis = #unit;));
+                fields.push(axis);
+            }
+        }
+        (quote!(#code #axes), fields)
+    }
+}
+
+fn opt_point(
+    point: &Ident,
+    moving: &BTreeSet<String>,
+    prefix: &str,
+    scope: &TokenStream,
+) -> TokenStream {
+    if moving.contains(&point.to_string()) {
+        let v = format_ident!("{}_{}", prefix, point);
+        quote!(::core::option::Option::Some(&#scope #v))
+    } else {
+        quote!(::core::option::Option::None)
+    }
+}
+
+/// Expands a valid, planned model.
+pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
+    let name = &model.name;
+    let vis = &model.vis;
+    let docs = &model.docs;
+    let position_ty = format_ident!("{}Position", name);
+    let velocity_ty = format_ident!("{}Velocity", name);
+    let acceleration_ty = format_ident!("{}Acceleration", name);
+    let input_ty = format_ident!("{}Input", name);
+    let solution_ty = format_ident!("{}Solution", name);
+    let out = outputs(model, plan);
+
+    // Which link axes are needed in position.
+    let mut axes = BTreeSet::new();
+    for stmt in &model.stmts {
+        match &stmt.kind {
+            Kind::Point { link, .. } => {
+                axes.insert(link.to_string());
+            }
+            Kind::Guide {
+                carrier: Some(link),
+                ..
+            } => {
+                axes.insert(link.to_string());
+            }
+            _ => {}
+        }
+    }
+    let em = Emitter { model, plan, axes };
+
+    // Points that move (everything but ground points and points on still links
+    // measured from still points).
+    let mut moving: BTreeSet<String> = BTreeSet::new();
+    for &i in &plan.order {
+        let stmt = &model.stmts[i];
+        match &stmt.kind {
+            Kind::Ground { .. } | Kind::Guide { .. } | Kind::Rpr { .. } => {}
+            Kind::Point { link, from, .. } => {
+                if plan.turning_link(&link.to_string()).is_some()
+                    || moving.contains(&from.to_string())
+                {
+                    moving.insert(stmt.name.to_string());
+                }
+            }
+            _ => {
+                moving.insert(stmt.name.to_string());
+            }
+        }
+    }
+
+    // ---------------- inputs and parameters ----------------
+    let inputs: Vec<Ident> = model
+        .stmts
+        .iter()
+        .filter_map(|s| s.kind.input().cloned())
+        .collect();
+    let param_names: Vec<&Ident> = model.params.iter().map(|(n, _)| n).collect();
+    let param_defaults: Vec<TokenStream> = model.params.iter().map(|(_, v)| lit(*v)).collect();
+
+    // ---------------- position ----------------
+    let mut pos_code = TokenStream::new();
+    let mut pos_fields: Vec<Ident> = Vec::new();
+    for &i in &plan.order {
+        let (code, fields) = em.position(&model.stmts[i]);
+        pos_code.extend(code);
+        pos_fields.extend(fields);
+    }
+    // Output locals: link angles and slides.
+    let mut pos_out_code = TokenStream::new();
+    let mut pos_out_fields: Vec<(Ident, TokenStream)> = Vec::new();
+    for p in &out.points {
+        pos_out_fields.push((p.clone(), quote!(::mechanism::Point2<T>)));
+    }
+    for link in &out.links {
+        let info = &plan.links[&link.to_string()];
+        let (_, dir) = em.link_direction(&model.stmts[info.stmt], info.index);
+        pos_out_code.extend(quote!(let #link = ::mechanism::geometry::angle(&#dir);));
+        pos_out_fields.push((link.clone(), quote!(T)));
+    }
+    for (slide, i, slot) in &out.slides {
+        let g = em.grp(&model.stmts[*i]);
+        let field = match (&model.stmts[*i].kind, slot) {
+            (Kind::Prp { .. }, 0) | (Kind::Rpp { .. }, 0) => quote!(s1),
+            (Kind::Prp { .. }, _) | (Kind::Rpp { .. }, _) => quote!(s2),
+            _ => quote!(s),
+        };
+        pos_out_code.extend(quote!(let #slide = #g.#field;));
+        pos_out_fields.push((slide.clone(), quote!(T)));
+    }
+    let out_names: BTreeSet<String> = pos_out_fields.iter().map(|(n, _)| n.to_string()).collect();
+    let hidden_pos: Vec<&Ident> = pos_fields
+        .iter()
+        .filter(|f| !out_names.contains(&f.to_string()))
+        .collect();
+    let hidden_pos_types: Vec<TokenStream> = hidden_pos
+        .iter()
+        .map(|f| position_field_type(model, plan, f))
+        .collect();
+    let (pos_out_names, pos_out_types): (Vec<Ident>, Vec<TokenStream>) =
+        pos_out_fields.iter().cloned().unzip();
+
+    let level = model.level;
+    let mut items = TokenStream::new();
+    let mut methods = TokenStream::new();
+
+    // ---------------- structure doc ----------------
+    let mut structure = String::from("Structure found by `mechanism!` (solve order):\n\n");
+    for (k, &i) in plan.order.iter().enumerate() {
+        structure.push_str(&format!("{}. {}\n", k + 1, describe(&model.stmts[i])));
+    }
+    structure.push_str(&format!(
+        "\nAnalyses generated: {}.",
+        match level {
+            Level::Position => "position",
+            Level::Velocity => "position, velocity",
+            Level::Acceleration => "position, velocity, acceleration",
+        }
+    ));
+
+    let input_doc = format!("Inputs of [`{name}`], one per driver: angles in rad, lengths in the definition's unit. The same struct carries their rates and accelerations.");
+    let pos_doc = format!("Position of [`{name}`]: points in the definition's length unit, link angles in rad in (-pi, pi] from +x, counter-clockwise; slide displacements in length units.");
+    items.extend(quote! {
+        #(#docs)*
+        #[doc = ""]
+        #[doc = #structure]
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        #vis struct #name<T = ::core::primitive::f64> {
+            #(#[doc = "Run-time parameter (default from the definition)."] pub #param_names: T,)*
+            #[doc(hidden)]
+            pub _scalar: ::core::marker::PhantomData<T>,
+        }
+
+        impl<T: ::mechanism::Real> ::core::default::Default for #name<T> {
+            #[inline]
+            fn default() -> Self {
+                #name { #(#param_names: #param_defaults,)* _scalar: ::core::marker::PhantomData }
+            }
+        }
+
+        #[doc = #input_doc]
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        #[allow(non_snake_case)]
+        #vis struct #input_ty<T = ::core::primitive::f64> {
+            #(#[doc = "Driver input (or its rate / acceleration)."] pub #inputs: T,)*
+        }
+
+        #[doc = #pos_doc]
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        #[allow(non_snake_case)]
+        #vis struct #position_ty<T: ::mechanism::Real = ::core::primitive::f64> {
+            #(#[doc = "Output."] pub #pos_out_names: #pos_out_types,)*
+            #(#[doc(hidden)] pub #hidden_pos: #hidden_pos_types,)*
+            #[doc(hidden)]
+            pub input: #input_ty<T>,
+        }
+    });
+    let pos_all: Vec<&Ident> = pos_out_names
+        .iter()
+        .chain(hidden_pos.iter().copied())
+        .collect();
+    methods.extend(quote! {
+        /// Solves the position analysis for the driver inputs (rad or length units).
+        ///
+        /// Errors name the group that cannot be assembled or is singular.
+        #[inline]
+        #[allow(non_snake_case, unused_variables)]
+        pub fn position(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> {
+            let input = *input;
+            #pos_code
+            #pos_out_code
+            ::core::result::Result::Ok(#position_ty { #(#pos_all,)* input })
+        }
+    });
+
+    if level >= Level::Velocity {
+        let (code, fields, outs) = emit_rates(&em, &moving, &out, false);
+        let vel_doc = format!("Velocity of [`{name}`]: point velocities in length units per second, link angular velocities in rad/s (counter-clockwise positive), slide rates in length units per second.");
+        let (on, ot, oc): (Vec<Ident>, Vec<TokenStream>, Vec<TokenStream>) = unzip3(outs);
+        let (hn, ht): (Vec<Ident>, Vec<TokenStream>) = fields.into_iter().unzip();
+        items.extend(quote! {
+            #[doc = #vel_doc]
+            #[derive(Clone, Copy, Debug, PartialEq)]
+            #[allow(non_snake_case)]
+            #vis struct #velocity_ty<T: ::mechanism::Real = ::core::primitive::f64> {
+                #(#[doc = "Output."] pub #on: #ot,)*
+                #(#[doc(hidden)] pub #hn: #ht,)*
+                #[doc(hidden)]
+                pub rates: #input_ty<T>,
+            }
+        });
+        methods.extend(quote! {
+            /// Solves the velocity analysis at `pos` for the input rates
+            /// (rad/s or length units per second).
+            #[inline]
+            #[allow(non_snake_case, unused_variables)]
+            pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error> {
+                let rates = *rates;
+                #code
+                #(let #on = #oc;)*
+                ::core::result::Result::Ok(#velocity_ty { #(#on,)* #(#hn,)* rates })
+            }
+        });
+    }
+    if level >= Level::Acceleration {
+        let (code, fields, outs) = emit_rates(&em, &moving, &out, true);
+        let acc_doc = format!("Acceleration of [`{name}`]: point accelerations in length units per s^2, link angular accelerations in rad/s^2, slide accelerations in length units per s^2.");
+        let (on, ot, oc): (Vec<Ident>, Vec<TokenStream>, Vec<TokenStream>) = unzip3(outs);
+        let (hn, ht): (Vec<Ident>, Vec<TokenStream>) = fields.into_iter().unzip();
+        items.extend(quote! {
+            #[doc = #acc_doc]
+            #[derive(Clone, Copy, Debug, PartialEq)]
+            #[allow(non_snake_case)]
+            #vis struct #acceleration_ty<T: ::mechanism::Real = ::core::primitive::f64> {
+                #(#[doc = "Output."] pub #on: #ot,)*
+                #(#[doc(hidden)] pub #hn: #ht,)*
+            }
+
+            /// Position, velocity and acceleration together.
+            #[derive(Clone, Copy, Debug, PartialEq)]
+            #vis struct #solution_ty<T: ::mechanism::Real = ::core::primitive::f64> {
+                /// Position analysis.
+                pub position: #position_ty<T>,
+                /// Velocity analysis.
+                pub velocity: #velocity_ty<T>,
+                /// Acceleration analysis.
+                pub acceleration: #acceleration_ty<T>,
+            }
+        });
+        methods.extend(quote! {
+            /// Solves the acceleration analysis at `pos`, `vel` for the input
+            /// accelerations (rad/s^2 or length units per s^2).
+            #[inline]
+            #[allow(non_snake_case, unused_variables)]
+            pub fn acceleration(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#acceleration_ty<T>, ::mechanism::Error> {
+                let accels = *accels;
+                let rates = vel.rates;
+                #code
+                #(let #on = #oc;)*
+                ::core::result::Result::Ok(#acceleration_ty { #(#on,)* #(#hn,)* })
+            }
+
+            /// Position, velocity and acceleration at once.
+            #[inline]
+            pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error> {
+                let position = self.position(input)?;
+                let velocity = self.velocity(&position, rates)?;
+                let acceleration = self.acceleration(&position, &velocity, accels)?;
+                ::core::result::Result::Ok(#solution_ty { position, velocity, acceleration })
+            }
+        });
+    }
+
+    quote! {
+        #items
+        impl<T: ::mechanism::Real> #name<T> {
+            #methods
+        }
+    }
+}
+
+fn unzip3<A, B, C>(v: Vec<(A, B, C)>) -> (Vec<A>, Vec<B>, Vec<C>) {
+    let mut a = Vec::new();
+    let mut b = Vec::new();
+    let mut c = Vec::new();
+    for (x, y, z) in v {
+        a.push(x);
+        b.push(y);
+        c.push(z);
+    }
+    (a, b, c)
+}
+
+/// The type of a hidden position field.
+fn position_field_type(model: &Model, _plan: &Plan, field: &Ident) -> TokenStream {
+    let f = field.to_string();
+    if f.starts_with("axis_") {
+        return quote!(::mechanism::Vector2<T>);
+    }
+    if let Some(stmt_name) = f.strip_prefix("grp_") {
+        if let Some(stmt) = model.stmts.iter().find(|s| s.name == stmt_name) {
+            return match stmt.kind {
+                Kind::Crank { .. } => quote!(::mechanism::driver::crank::CrankPosition<T>),
+                Kind::Slider { .. } => quote!(::mechanism::driver::slider::SliderPosition<T>),
+                Kind::Actuator { .. } => quote!(::mechanism::driver::actuator::ActuatorPosition<T>),
+                Kind::Rrr { .. } => quote!(::mechanism::dyad::rrr::RrrPosition<T>),
+                Kind::Rrp { .. } => quote!(::mechanism::dyad::rrp::RrpPosition<T>),
+                Kind::Rpr { .. } => quote!(::mechanism::dyad::rpr::RprPosition<T>),
+                Kind::Prp { .. } => quote!(::mechanism::dyad::prp::PrpPosition<T>),
+                Kind::Rpp { .. } => quote!(::mechanism::dyad::rpp::RppPosition<T>),
+                _ => quote!(()),
+            };
+        }
+    }
+    if let Some(stmt) = model.stmts.iter().find(|s| s.name == f) {
+        if let Kind::Guide { .. } = stmt.kind {
+            return quote!(::mechanism::guide::Line<T>);
+        }
+    }
+    quote!(::mechanism::Point2<T>)
+}
+
+fn group_type(kind: &Kind, accel: bool) -> TokenStream {
+    let (module, ty) = match kind {
+        Kind::Actuator { .. } => (quote!(driver::actuator), "Actuator"),
+        Kind::Rrr { .. } => (quote!(dyad::rrr), "Rrr"),
+        Kind::Rrp { .. } => (quote!(dyad::rrp), "Rrp"),
+        Kind::Rpr { .. } => (quote!(dyad::rpr), "Rpr"),
+        Kind::Prp { .. } => (quote!(dyad::prp), "Prp"),
+        _ => (quote!(dyad::rpp), "Rpp"),
+    };
+    let ty = format_ident!("{}{}", ty, if accel { "Acceleration" } else { "Velocity" });
+    quote!(::mechanism::#module::#ty<T>)
+}
+
+/// Velocity (`accel == false`) or acceleration statements. Returns the code,
+/// the hidden fields (name, type) and the outputs (name, type, value).
+#[allow(clippy::type_complexity)]
+fn emit_rates(
+    em: &Emitter<'_>,
+    moving: &BTreeSet<String>,
+    out: &Outputs,
+    accel: bool,
+) -> (
+    TokenStream,
+    Vec<(Ident, TokenStream)>,
+    Vec<(Ident, TokenStream, TokenStream)>,
+) {
+    let model = em.model;
+    let plan = em.plan;
+    let vec_ty = quote!(::mechanism::Vector2<T>);
+    let (pfx, wpfx, gpfx, rpfx) = if accel {
+        ("acc", "alpha", "gacc", "grp_a")
+    } else {
+        ("vel", "omega", "gvel", "grp_v")
+    };
+    let none = quote!(::core::option::Option::None);
+    // Motion of a known point at this level.
+    let point_arg = |p: &Ident| opt_point(p, moving, pfx, &quote!());
+    // Angular rate of a link at this level (None: it does not turn).
+    let link_rate = |link: &Ident| {
+        plan.turning_link(&link.to_string())
+            .map(|l| format_ident!("{}_{}", wpfx, l))
+    };
+    let link_omega_in_accel = |link: &Ident| {
+        plan.turning_link(&link.to_string()).map(|l| {
+            let w = format_ident!("omega_{}", l);
+            quote!(vel.#w)
+        })
+    };
+    let carried = |g: &Ident| {
+        plan.guides
+            .get(&g.to_string())
+            .is_some_and(|i| i.carrier.is_some())
+    };
+    // Guide velocity argument (in the velocity fn: local; in acceleration: from `vel`).
+    let guide_vel = |g: &Ident| {
+        if !carried(g) {
+            return none.clone();
+        }
+        let n = format_ident!("gvel_{}", g);
+        if accel {
+            quote!(::core::option::Option::Some(&vel.#n))
+        } else {
+            quote!(::core::option::Option::Some(&#n))
+        }
+    };
+    let guide_acc = |g: &Ident| {
+        if !carried(g) {
+            return none.clone();
+        }
+        let n = format_ident!("gacc_{}", g);
+        quote!(::core::option::Option::Some(&#n))
+    };
+    let mut code = TokenStream::new();
+    let mut fields: Vec<(Ident, TokenStream)> = Vec::new();
+    // Slide rate expressions by (stmt, slot).
+    let mut slide_values: Vec<(usize, usize, TokenStream)> = Vec::new();
+    for &i in &plan.order {
+        let stmt = &model.stmts[i];
+        let name = &stmt.name;
+        let g = format_ident!("grp_{}", name);
+        let gv = format_ident!("grp_v_{}", name);
+        let gr = format_ident!("{}_{}", rpfx, name);
+        let pv = format_ident!("{}_{}", pfx, name);
+        let t = tag(stmt);
+        let own = |k: usize| format_ident!("{}_{}", wpfx, stmt.links[k]);
+        let (r1, r2) = if accel {
+            (quote!(alpha1), quote!(alpha2))
+        } else {
+            (quote!(omega1), quote!(omega2))
+        };
+        let (pt, sd, sd1, sd2) = if accel {
+            (quote!(ac), quote!(s_ddot), quote!(s1_ddot), quote!(s2_ddot))
+        } else {
+            (quote!(vc), quote!(s_dot), quote!(s1_dot), quote!(s2_dot))
+        };
+        match &stmt.kind {
+            Kind::Ground { .. } | Kind::Guide { carrier: None, .. } => {}
+            Kind::Guide {
+                origin,
+                carrier: Some(link),
+                ..
+            } => {
+                let n = format_ident!("{}_{}", gpfx, name);
+                let origin_motion = match origin {
+                    Origin::Point(p) if moving.contains(&p.to_string()) => {
+                        let v = format_ident!("{}_{}", pfx, p);
+                        quote!(#v)
+                    }
+                    _ => quote!(::mechanism::Vector2::zeros()),
+                };
+                let w = link_rate(link)
+                    .map(|w| quote!(#w))
+                    .unwrap_or_else(|| lit(0.0));
+                let (body, ty) = if accel {
+                    (
+                        quote!(::mechanism::guide::LineAcceleration { a_origin: #origin_motion, alpha: #w }),
+                        quote!(::mechanism::guide::LineAcceleration<T>),
+                    )
+                } else {
+                    (
+                        quote!(::mechanism::guide::LineVelocity { v_origin: #origin_motion, omega: #w }),
+                        quote!(::mechanism::guide::LineVelocity<T>),
+                    )
+                };
+                code.extend(quote!(let #n = #body;));
+                fields.push((n, ty));
+            }
+            Kind::Crank { pivot, input, .. } => {
+                let w = own(0);
+                let m = point_arg(pivot);
+                code.extend(if accel {
+                    quote! {
+                        let #pv = ::mechanism::driver::crank::acceleration(&pos.#g, #m, rates.#input, accels.#input) #t;
+                        let #w = accels.#input;
+                    }
+                } else {
+                    quote! {
+                        let #pv = ::mechanism::driver::crank::velocity(&pos.#g, #m, rates.#input) #t;
+                        let #w = rates.#input;
+                    }
+                });
+                fields.push((pv, vec_ty.clone()));
+                fields.push((w, quote!(T)));
+            }
+            Kind::Slider { guide, input, .. } => {
+                let gvel = guide_vel(guide);
+                code.extend(if accel {
+                    let gacc = guide_acc(guide);
+                    quote! {
+                        let #pv = ::mechanism::driver::slider::acceleration(&pos.#g, &pos.#guide, pos.input.#input, rates.#input, accels.#input, #gvel, #gacc) #t;
+                    }
+                } else {
+                    quote! {
+                        let #pv = ::mechanism::driver::slider::velocity(&pos.#g, &pos.#guide, pos.input.#input, rates.#input, #gvel) #t;
+                    }
+                });
+                fields.push((pv, vec_ty.clone()));
+            }
+            Kind::Point { link, from, .. } => {
+                if !moving.contains(&name.to_string()) {
+                    continue;
+                }
+                let base = if moving.contains(&from.to_string()) {
+                    let b = format_ident!("{}_{}", pfx, from);
+                    Some(quote!(#b))
+                } else {
+                    None
+                };
+                let relative = match (link_rate(link), accel) {
+                    (None, _) => None,
+                    (Some(w), false) => Some(
+                        quote!(::mechanism::link::point_velocity(&(pos.#name - pos.#from), #w) #t),
+                    ),
+                    (Some(alpha), true) => {
+                        let w = link_omega_in_accel(link).unwrap_or_else(|| lit(0.0));
+                        Some(
+                            quote!(::mechanism::link::point_acceleration(&(pos.#name - pos.#from), #w, #alpha) #t),
+                        )
+                    }
+                };
+                let value = match (base, relative) {
+                    (Some(b), Some(r)) => quote!(#b + #r),
+                    (Some(b), None) => b,
+                    (None, Some(r)) => r,
+                    (None, None) => quote!(::mechanism::Vector2::zeros()),
+                };
+                code.extend(quote!(let #pv = #value;));
+                fields.push((pv, vec_ty.clone()));
+            }
+            kind => {
+                // The five groups and the actuator share one shape: a call that
+                // returns a struct, then named pieces of it.
+                let call = match (kind, accel) {
+                    (Kind::Actuator { a, b, input, .. }, false) => {
+                        let (ma, mb) = (point_arg(a), point_arg(b));
+                        quote!(::mechanism::driver::actuator::velocity(&pos.#g, #ma, #mb, rates.#input))
+                    }
+                    (Kind::Actuator { a, b, input, .. }, true) => {
+                        let (ma, mb) = (point_arg(a), point_arg(b));
+                        quote!(::mechanism::driver::actuator::acceleration(&pos.#g, &vel.#gv, #ma, #mb, rates.#input, accels.#input))
+                    }
+                    (Kind::Rrr { a, b, .. }, false) => {
+                        let (ma, mb) = (point_arg(a), point_arg(b));
+                        quote!(::mechanism::dyad::rrr::velocity(&pos.#g, #ma, #mb))
+                    }
+                    (Kind::Rrr { a, b, .. }, true) => {
+                        let (ma, mb) = (point_arg(a), point_arg(b));
+                        quote!(::mechanism::dyad::rrr::acceleration(&pos.#g, &vel.#gv, #ma, #mb))
+                    }
+                    (Kind::Rrp { a, guide, .. }, false) => {
+                        let (ma, gvel) = (point_arg(a), guide_vel(guide));
+                        quote!(::mechanism::dyad::rrp::velocity(&pos.#g, &pos.#guide, #ma, #gvel))
+                    }
+                    (Kind::Rrp { a, guide, .. }, true) => {
+                        let (ma, gvel, gacc) = (point_arg(a), guide_vel(guide), guide_acc(guide));
+                        quote!(::mechanism::dyad::rrp::acceleration(&pos.#g, &pos.#guide, &vel.#gv, #ma, #gvel, #gacc))
+                    }
+                    (Kind::Rpr { a, b, .. }, false) => {
+                        let (ma, mb) = (point_arg(a), point_arg(b));
+                        quote!(::mechanism::dyad::rpr::velocity(&pos.#g, &pos.#a, &pos.#b, #ma, #mb))
+                    }
+                    (Kind::Rpr { a, b, .. }, true) => {
+                        let (ma, mb) = (point_arg(a), point_arg(b));
+                        quote!(::mechanism::dyad::rpr::acceleration(&pos.#g, &pos.#a, &pos.#b, &vel.#gv, #ma, #mb))
+                    }
+                    (Kind::Prp { g1, g2, .. }, false) => {
+                        let (v1, v2) = (guide_vel(g1), guide_vel(g2));
+                        quote!(::mechanism::dyad::prp::velocity(&pos.#g, &pos.#g1, &pos.#g2, #v1, #v2))
+                    }
+                    (Kind::Prp { g1, g2, .. }, true) => {
+                        let (v1, v2) = (guide_vel(g1), guide_vel(g2));
+                        let (a1, a2) = (guide_acc(g1), guide_acc(g2));
+                        quote!(::mechanism::dyad::prp::acceleration(&pos.#g, &pos.#g1, &pos.#g2, &vel.#gv, #v1, #a1, #v2, #a2))
+                    }
+                    (Kind::Rpp { a, guide, .. }, false) => {
+                        let (ma, gvel) = (point_arg(a), guide_vel(guide));
+                        quote!(::mechanism::dyad::rpp::velocity(&pos.#g, &pos.#a, &pos.#guide, #ma, #gvel))
+                    }
+                    (Kind::Rpp { a, guide, .. }, true) => {
+                        let (ma, gvel, gacc) = (point_arg(a), guide_vel(guide), guide_acc(guide));
+                        quote!(::mechanism::dyad::rpp::acceleration(&pos.#g, &pos.#a, &pos.#guide, &vel.#gv, #ma, #gvel, #gacc))
+                    }
+                    _ => continue,
+                };
+                code.extend(quote!(let #gr = #call #t;));
+                fields.push((gr.clone(), group_type(kind, accel)));
+                let mut named = |local: Ident, value: TokenStream, ty: TokenStream| {
+                    code.extend(quote!(let #local = #value;));
+                    fields.push((local, ty));
+                };
+                match kind {
+                    Kind::Actuator { .. } | Kind::Rrr { .. } => {
+                        named(pv.clone(), quote!(#gr.#pt), vec_ty.clone());
+                        named(own(0), quote!(#gr.#r1), quote!(T));
+                        named(own(1), quote!(#gr.#r2), quote!(T));
+                    }
+                    Kind::Rrp { .. } => {
+                        named(pv.clone(), quote!(#gr.#pt), vec_ty.clone());
+                        named(own(0), quote!(#gr.#r1), quote!(T));
+                        slide_values.push((i, 0, quote!(#gr.#sd)));
+                    }
+                    Kind::Rpr { .. } => {
+                        let r = if accel { quote!(alpha) } else { quote!(omega) };
+                        named(own(0), quote!(#gr.#r), quote!(T));
+                        named(own(1), quote!(#gr.#r), quote!(T));
+                        slide_values.push((i, 0, quote!(#gr.#sd)));
+                    }
+                    Kind::Prp { .. } => {
+                        named(pv.clone(), quote!(#gr.#pt), vec_ty.clone());
+                        slide_values.push((i, 0, quote!(#gr.#sd1)));
+                        slide_values.push((i, 1, quote!(#gr.#sd2)));
+                    }
+                    _ => {
+                        let q = if accel { quote!(aq) } else { quote!(vq) };
+                        named(pv.clone(), quote!(#gr.#q), vec_ty.clone());
+                        slide_values.push((i, 0, quote!(#gr.#sd1)));
+                        slide_values.push((i, 1, quote!(#gr.#sd2)));
+                    }
+                }
+            }
+        }
+    }
+    // Outputs.
+    let mut outs = Vec::new();
+    for p in &out.points {
+        let value = if moving.contains(&p.to_string()) {
+            let v = format_ident!("{}_{}", pfx, p);
+            quote!(#v)
+        } else {
+            quote!(::mechanism::Vector2::zeros())
+        };
+        outs.push((p.clone(), vec_ty.clone(), value));
+    }
+    for link in &out.links {
+        let value = link_rate(link)
+            .map(|w| quote!(#w))
+            .unwrap_or_else(|| lit(0.0));
+        outs.push((link.clone(), quote!(T), value));
+    }
+    for (slide, i, slot) in &out.slides {
+        let value = slide_values
+            .iter()
+            .find(|(si, ss, _)| si == i && ss == slot)
+            .map(|(_, _, v)| v.clone())
+            .unwrap_or_else(|| lit(0.0));
+        outs.push((slide.clone(), quote!(T), value));
+    }
+    // Hidden fields that are also outputs are kept once (as outputs).
+    let out_names: BTreeSet<String> = outs.iter().map(|(n, _, _)| n.to_string()).collect();
+    fields.retain(|(n, _)| !out_names.contains(&n.to_string()));
+    (code, fields, outs)
+}
+
+/// One line of the structure listing in the generated type's doc comment.
+fn describe(stmt: &Stmt) -> String {
+    let links = stmt
+        .links
+        .iter()
+        .map(Ident::to_string)
+        .collect::<Vec<_>>()
+        .join(", ");
+    let mode = |m: &Mode| match m {
+        Mode::Plus => "mode plus (m = +1)",
+        Mode::Minus => "mode minus (m = -1)",
+    };
+    let n = &stmt.name;
+    match &stmt.kind {
+        Kind::Ground { .. } => format!("ground point `{n}`"),
+        Kind::Guide { carrier: None, .. } => format!("fixed guide `{n}`"),
+        Kind::Guide { carrier: Some(l), .. } => format!("guide `{n}` carried by `{l}`"),
+        Kind::Crank { pivot, input, .. } => {
+            format!("driver: crank `{links}` about `{pivot}`, input `{input}`, tip `{n}`")
+        }
+        Kind::Slider { guide, input, .. } => {
+            format!("driver: slider `{links}` on `{guide}`, input `{input}`, pin `{n}`")
+        }
+        Kind::Actuator { a, b, input, mode: m, .. } => format!(
+            "driver: linear actuator `{links}` from `{b}`, link pivoted at `{a}`, input `{input}`, joint `{n}`, {}",
+            mode(m)
+        ),
+        Kind::Rrr { a, b, mode: m, .. } => {
+            format!("RRR group `{links}`: `{a}`, `{b}` -> `{n}`, {}", mode(m))
+        }
+        Kind::Rrp { a, guide, mode: m, .. } => {
+            format!("RRP group `{links}`: `{a}` and guide `{guide}` -> `{n}`, {}", mode(m))
+        }
+        Kind::Rpr { a, b, mode: m, .. } => {
+            format!("RPR group `{links}`: block at `{a}` on link pivoted at `{b}`, slide `{n}`, {}", mode(m))
+        }
+        Kind::Prp { g1, g2, .. } => format!("PRP group `{links}`: guides `{g1}`, `{g2}` -> `{n}`"),
+        Kind::Rpp { a, guide, .. } => {
+            format!("RPP group `{links}`: block at `{a}`, link on guide `{guide}`, reference point `{n}`")
+        }
+        Kind::Point { link, from, .. } => format!("point `{n}` on `{link}` (from `{from}`)"),
+    }
+}
+
+/// On errors: the errors, plus stub items with the real names and signatures,
+/// so that the user's code that uses them reports no cascade of follow-on
+/// errors. The stubs' bodies are never compiled into a program (the
+/// `compile_error!`s stop the build first).
+pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
+    let errors = errors.into_iter().map(|e| e.to_compile_error());
+    let name = &model.name;
+    let vis = &model.vis;
+    let position_ty = format_ident!("{}Position", name);
+    let velocity_ty = format_ident!("{}Velocity", name);
+    let acceleration_ty = format_ident!("{}Acceleration", name);
+    let input_ty = format_ident!("{}Input", name);
+    let solution_ty = format_ident!("{}Solution", name);
+    let params: Vec<&Ident> = model.params.iter().map(|(n, _)| n).collect();
+    let inputs: Vec<Ident> = model
+        .stmts
+        .iter()
+        .filter_map(|s| s.kind.input().cloned())
+        .collect();
+    let points: Vec<&Ident> = model
+        .stmts
+        .iter()
+        .filter(|s| !matches!(s.kind, Kind::Guide { .. } | Kind::Rpr { .. }))
+        .map(|s| &s.name)
+        .collect();
+    let scalars: Vec<&Ident> = model
+        .stmts
+        .iter()
+        .flat_map(|s| {
+            let rpr = matches!(s.kind, Kind::Rpr { .. }).then_some(&s.name);
+            s.links
+                .iter()
+                .zip(&s.links_named)
+                .filter(|(_, n)| **n)
+                .map(|(l, _)| l)
+                .chain(s.slides.iter().flatten())
+                .chain(rpr)
+        })
+        .collect();
+    quote! {
+        #(#errors)*
+        #[allow(non_snake_case, dead_code)]
+        #vis struct #name<T = ::core::primitive::f64> { #(pub #params: T,)* pub _scalar: ::core::marker::PhantomData<T> }
+        impl<T: ::mechanism::Real> ::core::default::Default for #name<T> {
+            fn default() -> Self { ::core::unimplemented!() }
+        }
+        #[allow(non_snake_case, dead_code)]
+        #vis struct #input_ty<T = ::core::primitive::f64> { #(pub #inputs: T,)* pub _scalar: ::core::marker::PhantomData<T> }
+        #[allow(non_snake_case, dead_code)]
+        #vis struct #position_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #points: ::mechanism::Point2<T>,)* #(pub #scalars: T,)* }
+        #[allow(non_snake_case, dead_code)]
+        #vis struct #velocity_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #points: ::mechanism::Vector2<T>,)* #(pub #scalars: T,)* }
+        #[allow(non_snake_case, dead_code)]
+        #vis struct #acceleration_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #points: ::mechanism::Vector2<T>,)* #(pub #scalars: T,)* }
+        #[allow(dead_code)]
+        #vis struct #solution_ty<T: ::mechanism::Real = ::core::primitive::f64> {
+            pub position: #position_ty<T>, pub velocity: #velocity_ty<T>, pub acceleration: #acceleration_ty<T>,
+        }
+        #[allow(dead_code, unused_variables)]
+        impl<T: ::mechanism::Real> #name<T> {
+            pub fn position(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
+            pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
+            pub fn acceleration(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#acceleration_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
+            pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
+        }
+    }
+}

@@ -1,0 +1,809 @@
+//! Stage 2, model: the parse tree lowered into typed statements. Arguments are
+//! checked for arity, role (point, guide, link, number, mode) and literal
+//! positivity here; names are resolved across statements in `validate`.
+
+use crate::parse::{self, Arg, Definition, Item};
+use crate::value::{convert, Scope, Value};
+use proc_macro2::Span;
+use std::collections::BTreeMap;
+use syn::spanned::Spanned;
+use syn::{Attribute, Expr, Ident, LitInt, Visibility};
+
+/// How far the generated code goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Level {
+    /// `position` only.
+    Position,
+    /// `position` and `velocity`.
+    Velocity,
+    /// `position`, `velocity`, `acceleration` (the default).
+    Acceleration,
+}
+
+/// Assembly mode as written.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    /// `plus` / `left`: m = +1.
+    Plus,
+    /// `minus` / `right`: m = -1.
+    Minus,
+}
+
+/// A whole mechanism.
+pub struct Model {
+    /// Doc comments of the definition.
+    pub docs: Vec<Attribute>,
+    /// Visibility of the generated items.
+    pub vis: Visibility,
+    /// Type name.
+    pub name: Ident,
+    /// Run-time parameters with their (folded) default values.
+    pub params: Vec<(Ident, f64)>,
+    /// Compile-time constants (folded).
+    pub consts: BTreeMap<String, (Ident, f64)>,
+    /// `let` statements, in the order written.
+    pub stmts: Vec<Stmt>,
+    /// Requested analysis level and the token that asked.
+    pub level: Level,
+    /// Span of the `analysis` statement's value.
+    pub level_span: Option<Span>,
+    /// Requested outputs (`None`: everything named).
+    pub outputs: Option<Vec<Ident>>,
+    /// Declared mobility.
+    pub dof: Option<LitInt>,
+}
+
+/// One `let` statement.
+pub struct Stmt {
+    /// The defined name.
+    pub name: Ident,
+    /// The kind token (`rrr`, ...).
+    pub kind_token: Ident,
+    /// What the statement is.
+    pub kind: Kind,
+    /// Names of the links it creates (user-given or generated).
+    pub links: Vec<Ident>,
+    /// Which of `links` the user named (only those become outputs).
+    pub links_named: Vec<bool>,
+    /// Names of slide displacements (user-given) by slot.
+    pub slides: Vec<Option<Ident>>,
+}
+
+/// Origin of a guide.
+pub enum Origin {
+    /// A named point.
+    Point(Ident),
+    /// Literal or parametric coordinates.
+    Coords(Value, Value),
+}
+
+/// A point's local coordinates on a link.
+pub enum Local {
+    /// Distance and angle from the link's axis.
+    Polar(Value, Value),
+    /// `(x, y)` along the axis and its left normal.
+    Cartesian(Value, Value),
+}
+
+/// The statement kinds.
+pub enum Kind {
+    /// A fixed point.
+    Ground { x: Value, y: Value },
+    /// A guide line, fixed (`carrier == None`) or carried by a link.
+    Guide {
+        origin: Origin,
+        angle: Value,
+        carrier: Option<Ident>,
+    },
+    /// Crank driver.
+    Crank {
+        pivot: Ident,
+        radius: Value,
+        input: Ident,
+    },
+    /// Slider driver.
+    Slider {
+        guide: Ident,
+        input: Ident,
+        offset: Value,
+    },
+    /// Linear actuator driver.
+    Actuator {
+        a: Ident,
+        l: Value,
+        b: Ident,
+        input: Ident,
+        mode: Mode,
+    },
+    /// RRR group.
+    Rrr {
+        a: Ident,
+        l1: Value,
+        b: Ident,
+        l2: Value,
+        mode: Mode,
+    },
+    /// RRP group.
+    Rrp {
+        a: Ident,
+        l: Value,
+        guide: Ident,
+        mode: Mode,
+        offset: Value,
+    },
+    /// RPR group.
+    Rpr {
+        a: Ident,
+        b: Ident,
+        mode: Mode,
+        offset: Value,
+    },
+    /// PRP group.
+    Prp {
+        g1: Ident,
+        g2: Ident,
+        offset1: Value,
+        offset2: Value,
+    },
+    /// RPP group.
+    Rpp {
+        a: Ident,
+        guide: Ident,
+        slot: Value,
+        offset: Value,
+    },
+    /// A point fixed on a link.
+    Point {
+        link: Ident,
+        from: Ident,
+        local: Local,
+    },
+}
+
+/// Every statement kind the language knows, for suggestions.
+pub const KINDS: &[&str] = &[
+    "ground", "guide", "crank", "slider", "actuator", "rrr", "rrp", "rpr", "prp", "rpp", "point",
+];
+
+impl Kind {
+    /// Number of links the statement creates.
+    pub fn link_count(&self) -> usize {
+        match self {
+            Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } => 0,
+            Kind::Crank { .. } | Kind::Slider { .. } => 1,
+            _ => 2,
+        }
+    }
+
+    /// Number of slide displacements the statement creates.
+    pub fn slide_count(&self) -> usize {
+        match self {
+            Kind::Rrp { .. } => 1,
+            Kind::Prp { .. } | Kind::Rpp { .. } => 2,
+            _ => 0,
+        }
+    }
+
+    /// `true` for drivers.
+    pub fn is_driver(&self) -> bool {
+        matches!(
+            self,
+            Kind::Crank { .. } | Kind::Slider { .. } | Kind::Actuator { .. }
+        )
+    }
+
+    /// The input variable of a driver.
+    pub fn input(&self) -> Option<&Ident> {
+        match self {
+            Kind::Crank { input, .. }
+            | Kind::Slider { input, .. }
+            | Kind::Actuator { input, .. } => Some(input),
+            _ => None,
+        }
+    }
+}
+
+/// Collected errors.
+#[derive(Default)]
+pub struct Errors(pub Vec<syn::Error>);
+
+impl Errors {
+    /// Records an error.
+    pub fn push(&mut self, span: Span, message: impl std::fmt::Display) {
+        self.0.push(syn::Error::new(span, message));
+    }
+}
+
+/// Levenshtein distance, for "did you mean" hints.
+pub fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut prev = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let cur = row[j + 1];
+            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
+            prev = cur;
+        }
+    }
+    row[b.len()]
+}
+
+/// The nearest of `candidates` to `name`, if reasonably close.
+pub fn nearest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    candidates
+        .into_iter()
+        .map(|c| (edit_distance(name, c), c))
+        .filter(|(d, c)| *d <= (name.len().max(c.len()) / 2).max(1))
+        .min()
+        .map(|(_, c)| c)
+}
+
+/// A " (did you mean `x`?)" hint, or "".
+pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> String {
+    match nearest(name, candidates) {
+        Some(c) => format!("; did you mean `{c}`?"),
+        None => String::new(),
+    }
+}
+
+struct NumberScope<'a> {
+    consts: &'a BTreeMap<String, (Ident, f64)>,
+    params: &'a [(Ident, f64)],
+    names: &'a [String],
+}
+
+impl Scope for NumberScope<'_> {
+    fn constant(&self, name: &Ident) -> Option<f64> {
+        self.consts.get(&name.to_string()).map(|c| c.1)
+    }
+    fn is_param(&self, name: &Ident) -> bool {
+        self.params.iter().any(|(p, _)| p == name)
+    }
+    fn not_a_number(&self, name: &Ident) -> syn::Error {
+        let s = name.to_string();
+        if self.names.contains(&s) {
+            return syn::Error::new(
+                name.span(),
+                format!("`{s}` is a point, link or guide, not a number; dimensions are numbers, `params` or `const` names"),
+            );
+        }
+        let all = self
+            .params
+            .iter()
+            .map(|(p, _)| p.to_string())
+            .chain(self.consts.keys().cloned())
+            .collect::<Vec<_>>();
+        syn::Error::new(
+            name.span(),
+            format!(
+                "cannot find parameter or constant `{s}`{}",
+                did_you_mean(&s, all.iter().map(String::as_str))
+            ),
+        )
+    }
+}
+
+/// Reads the arguments of one statement in order.
+struct Args<'a> {
+    args: std::slice::Iter<'a, Arg>,
+    span: Span,
+    kind: String,
+    usage: &'static str,
+    scope: &'a NumberScope<'a>,
+    errors: &'a mut Errors,
+    failed: bool,
+}
+
+impl<'a> Args<'a> {
+    fn next(&mut self, role: &str) -> Option<&'a Arg> {
+        let arg = self.args.next();
+        if arg.is_none() && !self.failed {
+            self.failed = true;
+            self.errors.push(
+                self.span,
+                format!(
+                    "`{}` is missing its {role}; usage: `{}`",
+                    self.kind, self.usage
+                ),
+            );
+        }
+        arg
+    }
+
+    fn fail(&mut self, span: Span, message: String) {
+        self.failed = true;
+        self.errors.push(span, message);
+    }
+
+    /// A name (point, guide, link or new input name).
+    fn name(&mut self, role: &str) -> Option<Ident> {
+        match self.next(role)? {
+            Arg::Value(Expr::Path(p), None) if p.path.get_ident().is_some() => {
+                p.path.get_ident().cloned()
+            }
+            Arg::Value(e, _) => {
+                self.fail(e.span(), format!("expected the {role} (a name) here"));
+                None
+            }
+            Arg::From(i) => {
+                self.fail(i.span(), format!("expected the {role} here, not `from`"));
+                None
+            }
+        }
+    }
+
+    /// A number (angle units allowed when `angle`).
+    fn number(&mut self, role: &str, angle: bool) -> Option<Value> {
+        let arg = self.next(role)?;
+        let Arg::Value(expr, unit) = arg else {
+            if let Arg::From(i) = arg {
+                self.fail(i.span(), format!("expected the {role} (a number) here"));
+            }
+            return None;
+        };
+        let value = match convert(expr, self.scope) {
+            Ok(v) => v,
+            Err(e) => {
+                self.failed = true;
+                self.errors.0.push(e);
+                return None;
+            }
+        };
+        match unit {
+            None => Some(value),
+            Some(u) if angle && u == "deg" => Some(value.degrees()),
+            Some(u) if angle && u == "rad" => Some(value),
+            Some(u) => {
+                let hint = if angle {
+                    format!("unknown angle unit `{u}`; write `deg` or `rad`")
+                } else {
+                    format!("unexpected `{u}`: the {role} is a length, it takes no unit")
+                };
+                self.fail(u.span(), hint);
+                None
+            }
+        }
+    }
+
+    /// A number that must be positive when it is known at compile time.
+    fn length(&mut self, role: &str) -> Option<Value> {
+        let v = self.number(role, false)?;
+        if let Some(x) = v.fold() {
+            if x <= 0.0 || !x.is_finite() {
+                self.fail(
+                    v.span,
+                    format!(
+                        "the {role} must be positive, got {x}; a link length is a distance > 0"
+                    ),
+                );
+            }
+        }
+        Some(v)
+    }
+
+    fn optional_number(&mut self, role: &str) -> Value {
+        if self.args.len() == 0 {
+            return Value::lit(0.0, self.span);
+        }
+        self.number(role, false)
+            .unwrap_or_else(|| Value::lit(0.0, self.span))
+    }
+
+    fn mode(&mut self, group: &str) -> Option<Mode> {
+        let name = self.name("assembly mode")?;
+        let accepted: &[&str] = if group == "rrr" || group == "actuator" {
+            &["left", "right", "plus", "minus"]
+        } else {
+            &["plus", "minus"]
+        };
+        match name.to_string().as_str() {
+            s if !accepted.contains(&s) => {
+                self.fail(
+                    name.span(),
+                    format!(
+                        "unknown assembly mode `{s}` for `{group}`; write {}{}",
+                        accepted
+                            .iter()
+                            .map(|m| format!("`{m}`"))
+                            .collect::<Vec<_>>()
+                            .join(" or "),
+                        did_you_mean(s, accepted.iter().copied())
+                    ),
+                );
+                None
+            }
+            "left" | "plus" => Some(Mode::Plus),
+            _ => Some(Mode::Minus),
+        }
+    }
+
+    fn from(&mut self) -> Option<Ident> {
+        match self.next("`from POINT`")? {
+            Arg::From(i) => Some(i.clone()),
+            Arg::Value(e, _) => {
+                self.fail(
+                    e.span(),
+                    "expected `from POINT`: the point on the link the offset is measured from"
+                        .into(),
+                );
+                None
+            }
+        }
+    }
+
+    fn finish(&mut self) {
+        if let Some(extra) = self.args.next() {
+            let span = match extra {
+                Arg::From(i) => i.span(),
+                Arg::Value(e, _) => e.span(),
+            };
+            if !self.failed {
+                self.fail(
+                    span,
+                    format!(
+                        "too many arguments for `{}`; usage: `{}`",
+                        self.kind, self.usage
+                    ),
+                );
+            }
+        }
+    }
+}
+
+fn usage(kind: &str) -> &'static str {
+    match kind {
+        "ground" => "ground(x, y)",
+        "guide" => "guide(POINT or (x, y), angle) or guide(POINT, LINK[, angle])",
+        "crank" => "crank(PIVOT, radius, INPUT) as LINK",
+        "slider" => "slider(GUIDE, INPUT[, offset]) as LINK",
+        "actuator" => "actuator(A, radius, B, INPUT, left|right) as (LINK, CYLINDER)",
+        "rrr" => "rrr(A, l1, B, l2, left|right) as (LINK1, LINK2)",
+        "rrp" => "rrp(A, l, GUIDE, plus|minus[, offset]) as (LINK, BLOCK) slide S",
+        "rpr" => "let S = rpr(A, B, plus|minus[, offset]) as (BLOCK, LINK)",
+        "prp" => "prp(GUIDE1, GUIDE2[, offset1, offset2]) as (LINK1, LINK2) slide (S1, S2)",
+        "rpp" => "rpp(A, GUIDE, slot_angle[, offset]) as (BLOCK, LINK) slide (S1, S2)",
+        "point" => "point(LINK, from POINT, distance, angle) or point(LINK, from POINT, (x, y))",
+        _ => "",
+    }
+}
+
+/// Drivers other tools call differently, with the word to use here.
+fn unsupported_driver(kind: &str) -> Option<&'static str> {
+    match kind {
+        "motor" | "rotary" | "revolute" | "input" | "rocker" => {
+            Some("a rotary input is a `crank(PIVOT, radius, INPUT) as LINK`")
+        }
+        "linear" | "cylinder" | "piston" => {
+            Some("a length input is an `actuator(...)`, a translation input a `slider(...)`")
+        }
+        _ => None,
+    }
+}
+
+fn lower_kind(stmt: &parse::Let, scope: &NumberScope<'_>, errors: &mut Errors) -> Option<Kind> {
+    let kind = stmt.kind.to_string();
+    if !KINDS.contains(&kind.as_str()) {
+        let hint = match unsupported_driver(&kind) {
+            Some(h) => format!("unsupported driver `{kind}`: {h}"),
+            None => format!(
+                "unknown statement kind `{kind}`; expected one of {}{}",
+                KINDS.join(", "),
+                did_you_mean(&kind, KINDS.iter().copied())
+            ),
+        };
+        errors.push(stmt.kind.span(), hint);
+        return None;
+    }
+    let mut a = Args {
+        args: stmt.args.iter(),
+        span: stmt.args_span,
+        usage: usage(&kind),
+        kind: kind.clone(),
+        scope,
+        errors,
+        failed: false,
+    };
+    let k = match kind.as_str() {
+        "ground" => Kind::Ground {
+            x: a.number("x coordinate", false)?,
+            y: a.number("y coordinate", false)?,
+        },
+        "guide" => {
+            let origin = match a.next("origin")? {
+                Arg::Value(Expr::Tuple(t), None) if t.elems.len() == 2 => {
+                    let x = convert(&t.elems[0], scope)
+                        .map_err(|e| a.errors.0.push(e))
+                        .ok()?;
+                    let y = convert(&t.elems[1], scope)
+                        .map_err(|e| a.errors.0.push(e))
+                        .ok()?;
+                    Origin::Coords(x, y)
+                }
+                Arg::Value(Expr::Path(p), None) if p.path.get_ident().is_some() => {
+                    Origin::Point(p.path.get_ident()?.clone())
+                }
+                other => {
+                    let span = match other {
+                        Arg::From(i) => i.span(),
+                        Arg::Value(e, _) => e.span(),
+                    };
+                    a.fail(
+                        span,
+                        "expected the guide's origin: a point name or `(x, y)`".into(),
+                    );
+                    return None;
+                }
+            };
+            // Second argument: a link (carried guide) or an angle (fixed guide).
+            let carrier = match stmt.args.get(1) {
+                Some(Arg::Value(Expr::Path(p), None))
+                    if p.path.get_ident().is_some()
+                        && scope.constant(p.path.get_ident()?).is_none()
+                        && !scope.is_param(p.path.get_ident()?) =>
+                {
+                    a.name("carrying link")
+                }
+                _ => None,
+            };
+            let angle = if carrier.is_some() && a.args.len() == 0 {
+                Value::lit(0.0, stmt.args_span)
+            } else {
+                a.number("direction angle", true)?
+            };
+            Kind::Guide {
+                origin,
+                angle,
+                carrier,
+            }
+        }
+        "crank" => Kind::Crank {
+            pivot: a.name("pivot point")?,
+            radius: a.length("crank radius")?,
+            input: a.name("input name")?,
+        },
+        "slider" => Kind::Slider {
+            guide: a.name("guide")?,
+            input: a.name("input name")?,
+            offset: a.optional_number("offset"),
+        },
+        "actuator" => Kind::Actuator {
+            a: a.name("pivot-side point A")?,
+            l: a.length("radius |C - A|")?,
+            b: a.name("cylinder base point B")?,
+            input: a.name("input name")?,
+            mode: a.mode("actuator")?,
+        },
+        "rrr" => Kind::Rrr {
+            a: a.name("first known joint")?,
+            l1: a.length("first link length")?,
+            b: a.name("second known joint")?,
+            l2: a.length("second link length")?,
+            mode: a.mode("rrr")?,
+        },
+        "rrp" => Kind::Rrp {
+            a: a.name("known joint")?,
+            l: a.length("link length")?,
+            guide: a.name("guide")?,
+            mode: a.mode("rrp")?,
+            offset: a.optional_number("offset"),
+        },
+        "rpr" => Kind::Rpr {
+            a: a.name("block pin")?,
+            b: a.name("rocker pivot")?,
+            mode: a.mode("rpr")?,
+            offset: a.optional_number("offset"),
+        },
+        "prp" => {
+            let g1 = a.name("first guide")?;
+            let g2 = a.name("second guide")?;
+            let offset1 = a.optional_number("first offset");
+            let offset2 = a.optional_number("second offset");
+            Kind::Prp {
+                g1,
+                g2,
+                offset1,
+                offset2,
+            }
+        }
+        "rpp" => Kind::Rpp {
+            a: a.name("block pin")?,
+            guide: a.name("guide")?,
+            slot: a.number("slot angle", true)?,
+            offset: a.optional_number("offset"),
+        },
+        "point" => {
+            let link = a.name("link")?;
+            let from = a.from()?;
+            let local = match stmt.args.get(2) {
+                Some(Arg::Value(Expr::Tuple(t), None)) if t.elems.len() == 2 => {
+                    a.args.next();
+                    let x = convert(&t.elems[0], scope)
+                        .map_err(|e| a.errors.0.push(e))
+                        .ok()?;
+                    let y = convert(&t.elems[1], scope)
+                        .map_err(|e| a.errors.0.push(e))
+                        .ok()?;
+                    Local::Cartesian(x, y)
+                }
+                _ => Local::Polar(a.number("distance", false)?, a.number("angle", true)?),
+            };
+            Kind::Point { link, from, local }
+        }
+        _ => return None,
+    };
+    a.finish();
+    if a.failed {
+        None
+    } else {
+        Some(k)
+    }
+}
+
+/// Lowers a parsed definition. Returns the model (possibly partial) and errors.
+pub fn lower(def: Definition) -> (Model, Errors) {
+    let mut errors = Errors::default();
+    let mut params: Vec<(Ident, f64)> = Vec::new();
+    let mut consts: BTreeMap<String, (Ident, f64)> = BTreeMap::new();
+    let mut level = Level::Acceleration;
+    let mut level_span = None;
+    let mut outputs = None;
+    let mut dof = None;
+    // Names of every let, link and slide, for "not a number" messages.
+    let mut names = Vec::new();
+    for item in &def.items {
+        if let Item::Let(l) = item {
+            names.push(l.name.to_string());
+            names.extend(l.links.iter().map(Ident::to_string));
+        }
+    }
+    let empty = BTreeMap::new();
+    let literal_scope = NumberScope {
+        consts: &empty,
+        params: &[],
+        names: &names,
+    };
+    // Constants and parameter defaults first (they may appear anywhere).
+    for item in &def.items {
+        match item {
+            Item::Const(c) => match convert(&c.value, &literal_scope).map(|v| (v.fold(), v.span)) {
+                Ok((Some(x), _)) => {
+                    consts.insert(c.name.to_string(), (c.name.clone(), x));
+                }
+                Ok((None, span)) => {
+                    errors.push(span, "a `const` must be a number known at compile time")
+                }
+                Err(e) => errors.0.push(e),
+            },
+            Item::Params(list) => {
+                for p in list {
+                    match convert(&p.value, &literal_scope).map(|v| (v.fold(), v.span)) {
+                        Ok((Some(x), _)) => params.push((p.name.clone(), x)),
+                        Ok((None, span)) => {
+                            errors.push(span, "a parameter's default must be a number")
+                        }
+                        Err(e) => errors.0.push(e),
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    let scope = NumberScope {
+        consts: &consts,
+        params: &params,
+        names: &names,
+    };
+    let mut stmts = Vec::new();
+    for item in def.items {
+        match item {
+            Item::Analysis(what) => {
+                level_span = Some(what.span());
+                level = match what.to_string().as_str() {
+                    "position" => Level::Position,
+                    "velocity" => Level::Velocity,
+                    "acceleration" => Level::Acceleration,
+                    other => {
+                        let known = ["position", "velocity", "acceleration"];
+                        errors.push(
+                            what.span(),
+                            format!(
+                                "this definition cannot give the analysis `{other}`; write `position`, `velocity` or `acceleration`{}",
+                                did_you_mean(other, known)
+                            ),
+                        );
+                        Level::Acceleration
+                    }
+                };
+            }
+            Item::Outputs(list) => outputs = Some(list),
+            Item::Dof(n) => dof = Some(n),
+            Item::Let(l) => {
+                let Some(kind) = lower_kind(&l, &scope, &mut errors) else {
+                    continue;
+                };
+                let want_links = kind.link_count();
+                if l.links.len() > want_links {
+                    errors.push(
+                        l.links[want_links.min(l.links.len() - 1)].span(),
+                        format!(
+                            "`{}` creates {want_links} link(s), but {} names are given after `as`",
+                            l.kind,
+                            l.links.len()
+                        ),
+                    );
+                }
+                let mut links = Vec::new();
+                let mut links_named = Vec::new();
+                for i in 0..want_links {
+                    match l.links.get(i) {
+                        Some(n) => {
+                            links.push(n.clone());
+                            links_named.push(true);
+                        }
+                        None => {
+                            links.push(syn::Ident::new(
+                                &format!("{}_link{}", l.name, i + 1),
+                                l.name.span(),
+                            ));
+                            links_named.push(false);
+                        }
+                    }
+                }
+                let want_slides = kind.slide_count();
+                if l.slides.len() > want_slides {
+                    errors.push(
+                        l.slides[0].span(),
+                        format!(
+                            "`{}` has {want_slides} slide displacement(s) to name, not {}",
+                            l.kind,
+                            l.slides.len()
+                        ),
+                    );
+                }
+                let slides = (0..want_slides).map(|i| l.slides.get(i).cloned()).collect();
+                stmts.push(Stmt {
+                    name: l.name,
+                    kind_token: l.kind,
+                    kind,
+                    links,
+                    links_named,
+                    slides,
+                });
+            }
+            Item::Mass(m) => errors.push(
+                m.link.span(),
+                "`mass` belongs to the force analysis, which this version does not generate yet",
+            ),
+            Item::Gravity(span, _, _) => errors.push(
+                span,
+                "`gravity` belongs to the force analysis, which this version does not generate yet",
+            ),
+            Item::Force(at, _, _) => errors.push(
+                at.span(),
+                "`force` belongs to the force analysis, which this version does not generate yet",
+            ),
+            Item::Torque(on, _) => errors.push(
+                on.span(),
+                "`torque` belongs to the force analysis, which this version does not generate yet",
+            ),
+            Item::Params(_) | Item::Const(_) => {}
+        }
+    }
+    (
+        Model {
+            docs: def.docs,
+            vis: def.vis,
+            name: def.name,
+            params,
+            consts,
+            stmts,
+            level,
+            level_span,
+            outputs,
+            dof,
+        },
+        errors,
+    )
+}

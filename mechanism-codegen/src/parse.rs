@@ -1,0 +1,293 @@
+//! Stage 1, parse: the token stream of `mechanism! { ... }` into a syntax tree
+//! that keeps every user token (for spans). No meaning is given here.
+//!
+//! Grammar (see `docs/dsl.md` for the reference with examples):
+//!
+//! ```text
+//! definition := outer-doc* vis? IDENT '{' item* '}'
+//! item       := 'params' '{' (IDENT '=' expr),* '}'
+//!             | 'const' IDENT '=' expr ';'
+//!             | 'analysis' IDENT ';'
+//!             | 'outputs' '{' IDENT,* '}'
+//!             | 'dof' INT ';'
+//!             | 'let' IDENT '=' IDENT '(' arg,* ')' ('as' links)? ('slide' names)? ';'
+//!             | 'mass' IDENT '{' (IDENT '=' arg),* '}'
+//!             | 'gravity' '(' expr ',' expr ')' ';'
+//!             | 'force' 'at' IDENT '=' '(' expr ',' expr ')' ';'
+//!             | 'torque' 'on' IDENT '=' expr ';'
+//! arg        := 'from' IDENT | expr ('deg' | 'rad')?
+//! links      := IDENT | '(' IDENT,* ')'
+//! names      := IDENT | '(' IDENT,* ')'
+//! ```
+
+use proc_macro2::Span;
+use syn::parse::{Parse, ParseStream};
+use syn::punctuated::Punctuated;
+use syn::{braced, parenthesized, Attribute, Expr, Ident, LitInt, Token, Visibility};
+
+/// A whole definition.
+pub struct Definition {
+    /// Outer doc comments, copied onto the generated type.
+    pub docs: Vec<Attribute>,
+    /// Visibility of the generated items.
+    pub vis: Visibility,
+    /// Name of the mechanism type.
+    pub name: Ident,
+    /// Statements in the order written.
+    pub items: Vec<Item>,
+}
+
+/// One statement of the body.
+pub enum Item {
+    /// `params { a = 1.0, ... }`: run-time parameters with literal defaults.
+    Params(Vec<Assign>),
+    /// `const a = 1.0;`: a compile-time constant, folded into the code.
+    Const(Assign),
+    /// `analysis velocity;`
+    Analysis(Ident),
+    /// `outputs { B, link3 }`
+    Outputs(Vec<Ident>),
+    /// `dof 1;`: the mobility the author computed; checked.
+    Dof(LitInt),
+    /// `let NAME = KIND(args) as (links) slide (names);`
+    Let(Let),
+    /// `mass link3 { m = 20.0, at = P, j = 1.2 }`
+    Mass(Mass),
+    /// `gravity (0.0, -9.81);`
+    Gravity(Span, Expr, Expr),
+    /// `force at E = (fx, fy);`
+    Force(Ident, Expr, Expr),
+    /// `torque on link3 = t;`
+    Torque(Ident, Expr),
+}
+
+/// `name = expr`.
+pub struct Assign {
+    /// The name.
+    pub name: Ident,
+    /// The value.
+    pub value: Expr,
+}
+
+/// `let` statement.
+pub struct Let {
+    /// The defined name (a point, a guide, or a slide variable).
+    pub name: Ident,
+    /// The statement kind (`ground`, `crank`, `rrr`, ...).
+    pub kind: Ident,
+    /// Arguments in order.
+    pub args: Vec<Arg>,
+    /// Span of the parenthesized argument list (for arity errors).
+    pub args_span: Span,
+    /// Names given to the links the statement creates (`as`).
+    pub links: Vec<Ident>,
+    /// Names given to slide displacements (`slide`).
+    pub slides: Vec<Ident>,
+}
+
+/// A call argument.
+pub enum Arg {
+    /// `from X`: the point a link point is measured from.
+    From(Ident),
+    /// A value, with an optional angle unit.
+    Value(Expr, Option<Ident>),
+}
+
+/// `mass link { m = .., at = .., j = .. }`.
+pub struct Mass {
+    /// The link.
+    pub link: Ident,
+    /// Its fields.
+    pub fields: Vec<(Ident, Arg)>,
+}
+
+fn kw(input: ParseStream, word: &str) -> bool {
+    input.peek(Ident) && input.fork().parse::<Ident>().is_ok_and(|i| i == word)
+}
+
+impl Parse for Arg {
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        if kw(input, "from") && input.peek2(Ident) {
+            let _: Ident = input.parse()?;
+            return Ok(Arg::From(input.parse()?));
+        }
+        let expr: Expr = input.parse()?;
+        let unit = if input.peek(Ident) {
+            Some(input.parse::<Ident>()?)
+        } else {
+            None
+        };
+        Ok(Arg::Value(expr, unit))
+    }
+}
+
+fn names(input: ParseStream) -> syn::Result<Vec<Ident>> {
+    if input.peek(syn::token::Paren) {
+        let content;
+        parenthesized!(content in input);
+        let list = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
+        Ok(list.into_iter().collect())
+    } else {
+        Ok(vec![input.parse()?])
+    }
+}
+
+fn pair(input: ParseStream) -> syn::Result<(Expr, Expr)> {
+    let content;
+    parenthesized!(content in input);
+    let x: Expr = content.parse()?;
+    content.parse::<Token![,]>()?;
+    let y: Expr = content.parse()?;
+    Ok((x, y))
+}
+
+impl Parse for Assign {
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        let name = input.parse()?;
+        input.parse::<Token![=]>()?;
+        Ok(Assign {
+            name,
+            value: input.parse()?,
+        })
+    }
+}
+
+impl Parse for Item {
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        if input.peek(Token![let]) {
+            input.parse::<Token![let]>()?;
+            let name: Ident = input.parse()?;
+            input.parse::<Token![=]>()?;
+            let kind: Ident = input.parse()?;
+            let content;
+            let paren = parenthesized!(content in input);
+            let args = Punctuated::<Arg, Token![,]>::parse_terminated(&content)?
+                .into_iter()
+                .collect();
+            let mut links = Vec::new();
+            if input.peek(Token![as]) {
+                input.parse::<Token![as]>()?;
+                links = names(input)?;
+            }
+            let mut slides = Vec::new();
+            if kw(input, "slide") {
+                let _: Ident = input.parse()?;
+                slides = names(input)?;
+            }
+            input.parse::<Token![;]>()?;
+            return Ok(Item::Let(Let {
+                name,
+                kind,
+                args,
+                args_span: paren.span.join(),
+                links,
+                slides,
+            }));
+        }
+        if input.peek(Token![const]) {
+            input.parse::<Token![const]>()?;
+            let assign = input.parse()?;
+            input.parse::<Token![;]>()?;
+            return Ok(Item::Const(assign));
+        }
+        let word: Ident = input.parse().map_err(|e| {
+            syn::Error::new(
+                e.span(),
+                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `mass`, `gravity`, `force` or `torque`",
+            )
+        })?;
+        match word.to_string().as_str() {
+            "params" => {
+                let content;
+                braced!(content in input);
+                let list = Punctuated::<Assign, Token![,]>::parse_terminated(&content)?;
+                Ok(Item::Params(list.into_iter().collect()))
+            }
+            "analysis" => {
+                let what = input.parse()?;
+                input.parse::<Token![;]>()?;
+                Ok(Item::Analysis(what))
+            }
+            "outputs" => {
+                let content;
+                braced!(content in input);
+                let list = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
+                Ok(Item::Outputs(list.into_iter().collect()))
+            }
+            "dof" => {
+                let n = input.parse()?;
+                input.parse::<Token![;]>()?;
+                Ok(Item::Dof(n))
+            }
+            "mass" => {
+                let link = input.parse()?;
+                let content;
+                braced!(content in input);
+                let mut fields = Vec::new();
+                while !content.is_empty() {
+                    let name: Ident = content.parse()?;
+                    content.parse::<Token![=]>()?;
+                    fields.push((name, content.parse()?));
+                    if content.is_empty() {
+                        break;
+                    }
+                    content.parse::<Token![,]>()?;
+                }
+                Ok(Item::Mass(Mass { link, fields }))
+            }
+            "gravity" => {
+                let (x, y) = pair(input)?;
+                input.parse::<Token![;]>()?;
+                Ok(Item::Gravity(word.span(), x, y))
+            }
+            "force" => {
+                if !kw(input, "at") {
+                    return Err(input.error("expected `at`: `force at POINT = (fx, fy);`"));
+                }
+                let _: Ident = input.parse()?;
+                let at = input.parse()?;
+                input.parse::<Token![=]>()?;
+                let (x, y) = pair(input)?;
+                input.parse::<Token![;]>()?;
+                Ok(Item::Force(at, x, y))
+            }
+            "torque" => {
+                if !kw(input, "on") {
+                    return Err(input.error("expected `on`: `torque on LINK = value;`"));
+                }
+                let _: Ident = input.parse()?;
+                let on = input.parse()?;
+                input.parse::<Token![=]>()?;
+                let value = input.parse()?;
+                input.parse::<Token![;]>()?;
+                Ok(Item::Torque(on, value))
+            }
+            other => Err(syn::Error::new(
+                word.span(),
+                format!(
+                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `mass`, `gravity`, `force` or `torque`"
+                ),
+            )),
+        }
+    }
+}
+
+impl Parse for Definition {
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        let docs = input.call(Attribute::parse_outer)?;
+        let vis = input.parse()?;
+        let name = input.parse()?;
+        let content;
+        braced!(content in input);
+        let mut items = Vec::new();
+        while !content.is_empty() {
+            items.push(content.parse()?);
+        }
+        Ok(Definition {
+            docs,
+            vis,
+            name,
+            items,
+        })
+    }
+}

@@ -1,0 +1,370 @@
+//! Stage 3, validate: rules across statements, one function per rule, each
+//! pushing errors with the span of the user's offending token and a hint.
+//! All rules run, so several errors are reported at once.
+
+use crate::model::{did_you_mean, Errors, Kind, Model, Origin};
+use crate::plan::{references, Plan};
+use std::collections::BTreeMap;
+use syn::Ident;
+
+/// What a name stands for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Category {
+    /// A point.
+    Point,
+    /// A guide line.
+    Guide,
+    /// A link.
+    Link,
+    /// A slide displacement.
+    Slide,
+    /// A driver input.
+    Input,
+    /// A run-time parameter.
+    Param,
+    /// A compile-time constant.
+    Const,
+}
+
+impl Category {
+    fn article(self) -> &'static str {
+        match self {
+            Category::Point => "a point",
+            Category::Guide => "a guide",
+            Category::Link => "a link",
+            Category::Slide => "a slide displacement",
+            Category::Input => "a driver input",
+            Category::Param => "a parameter",
+            Category::Const => "a constant",
+        }
+    }
+}
+
+/// Prefixes of names the generated code uses for its own locals.
+pub const RESERVED_PREFIXES: &[&str] = &[
+    "vel_", "acc_", "grp_", "axis_", "omega_", "alpha_", "gvel_", "gacc_",
+];
+/// Names the generated methods use for their arguments.
+pub const RESERVED: &[&str] = &["input", "rates", "accels", "pos", "vel", "acc", "T"];
+
+/// Every defined name with its category and defining token.
+pub fn symbols(model: &Model) -> BTreeMap<String, (Category, Ident)> {
+    let mut table = BTreeMap::new();
+    for (name, _) in &model.params {
+        table.insert(name.to_string(), (Category::Param, name.clone()));
+    }
+    for (name, (ident, _)) in &model.consts {
+        table.insert(name.clone(), (Category::Const, ident.clone()));
+    }
+    for stmt in &model.stmts {
+        let cat = match stmt.kind {
+            Kind::Guide { .. } => Category::Guide,
+            Kind::Rpr { .. } => Category::Slide,
+            _ => Category::Point,
+        };
+        table.insert(stmt.name.to_string(), (cat, stmt.name.clone()));
+        for link in &stmt.links {
+            table.insert(link.to_string(), (Category::Link, link.clone()));
+        }
+        for slide in stmt.slides.iter().flatten() {
+            table.insert(slide.to_string(), (Category::Slide, slide.clone()));
+        }
+        if let Some(input) = stmt.kind.input() {
+            table.insert(input.to_string(), (Category::Input, input.clone()));
+        }
+    }
+    table
+}
+
+/// Rule: a name is defined once (points, links, slides, inputs, parameters and
+/// constants share one namespace: they become fields side by side).
+pub fn unique_names(model: &Model, errors: &mut Errors) {
+    let mut seen: BTreeMap<String, Ident> = BTreeMap::new();
+    let mut check = |ident: &Ident, errors: &mut Errors| {
+        let key = ident.to_string();
+        if let Some(first) = seen.get(&key) {
+            let _ = first;
+            errors.push(
+                ident.span(),
+                format!(
+                    "`{key}` is defined twice; every point, link, guide, slide, input, parameter and constant needs its own name: rename this one, e.g. `{key}2`"
+                ),
+            );
+        } else {
+            seen.insert(key, ident.clone());
+        }
+    };
+    for (name, _) in &model.params {
+        check(name, errors);
+    }
+    for (ident, _) in model.consts.values() {
+        check(ident, errors);
+    }
+    for stmt in &model.stmts {
+        check(&stmt.name, errors);
+        for (link, named) in stmt.links.iter().zip(&stmt.links_named) {
+            if *named {
+                check(link, errors);
+            }
+        }
+        for slide in stmt.slides.iter().flatten() {
+            check(slide, errors);
+        }
+        if let Some(input) = stmt.kind.input() {
+            check(input, errors);
+        }
+    }
+}
+
+/// Rule: names the generated code needs for itself are not available.
+pub fn reserved_names(model: &Model, errors: &mut Errors) {
+    for (name, (_, ident)) in symbols(model) {
+        if RESERVED.contains(&name.as_str()) {
+            errors.push(
+                ident.span(),
+                format!("`{name}` is reserved for the generated methods' arguments; choose another name"),
+            );
+        } else if let Some(p) = RESERVED_PREFIXES.iter().find(|p| name.starts_with(*p)) {
+            errors.push(
+                ident.span(),
+                format!("names starting with `{p}` are reserved for the generated code's locals; rename `{name}`"),
+            );
+        }
+    }
+}
+
+/// Rule: every reference names something defined, of the right category, and
+/// not the statement itself.
+pub fn references_resolve(model: &Model, errors: &mut Errors) {
+    let table = symbols(model);
+    for stmt in &model.stmts {
+        let expected: Vec<(&Ident, Category)> = match &stmt.kind {
+            Kind::Guide {
+                origin, carrier, ..
+            } => {
+                let mut v = Vec::new();
+                if let Origin::Point(p) = origin {
+                    v.push((p, Category::Point));
+                }
+                if let Some(c) = carrier {
+                    v.push((c, Category::Link));
+                }
+                v
+            }
+            Kind::Slider { guide, .. } => vec![(guide, Category::Guide)],
+            Kind::Rrp { a, guide, .. } | Kind::Rpp { a, guide, .. } => {
+                vec![(a, Category::Point), (guide, Category::Guide)]
+            }
+            Kind::Prp { g1, g2, .. } => vec![(g1, Category::Guide), (g2, Category::Guide)],
+            Kind::Point { link, from, .. } => vec![(link, Category::Link), (from, Category::Point)],
+            _ => references(stmt)
+                .into_iter()
+                .map(|r| (r, Category::Point))
+                .collect(),
+        };
+        for (r, want) in expected {
+            let name = r.to_string();
+            let own_link = stmt.links.iter().any(|l| *l == name);
+            if name == stmt.name.to_string() || own_link {
+                errors.push(
+                    r.span(),
+                    format!(
+                        "`{}` refers to itself: `{name}` is what this statement defines; use a point or guide defined elsewhere",
+                        stmt.name
+                    ),
+                );
+                continue;
+            }
+            match table.get(&name) {
+                Some((cat, _)) if *cat == want => {}
+                Some((cat, _)) => errors.push(
+                    r.span(),
+                    format!(
+                        "`{name}` is {}, but {} is expected here",
+                        cat.article(),
+                        want.article()
+                    ),
+                ),
+                None => {
+                    let candidates: Vec<&str> = table
+                        .iter()
+                        .filter(|(_, (c, _))| *c == want)
+                        .map(|(n, _)| n.as_str())
+                        .collect();
+                    let what = match want {
+                        Category::Link => "no link named",
+                        Category::Guide => "no guide named",
+                        _ => "cannot find point",
+                    };
+                    errors.push(
+                        r.span(),
+                        format!("{what} `{name}`{}", did_you_mean(&name, candidates)),
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Rule: at least one driver, unless a statement's kind was already rejected
+/// (it may have been meant as the driver: no cascade).
+pub fn has_driver(model: &Model, kinds_failed: bool, errors: &mut Errors) {
+    if kinds_failed || model.stmts.iter().any(|s| s.kind.is_driver()) {
+        return;
+    }
+    errors.push(
+        model.name.span(),
+        format!(
+            "`{}` has no driver, so nothing moves; add one, e.g. `let A = crank(O, radius, theta) as link2;`, a `slider(...)` or an `actuator(...)`",
+            model.name
+        ),
+    );
+}
+
+/// Rule: a declared `dof N` matches Gruebler's count of the links and joints the
+/// statements create (each driver adds one degree of freedom, each class II
+/// group none), i.e. the number of inputs.
+pub fn dof_matches(model: &Model, errors: &mut Errors) {
+    let Some(declared) = &model.dof else { return };
+    let Ok(n) = declared.base10_parse::<i64>() else {
+        errors.push(declared.span(), "`dof` takes a whole number");
+        return;
+    };
+    let (mut links, mut joints) = (1i64, 0i64);
+    let mut inputs = Vec::new();
+    for stmt in &model.stmts {
+        match stmt.kind {
+            Kind::Crank { .. } | Kind::Slider { .. } => {
+                links += 1;
+                joints += 1;
+            }
+            // Cylinder = barrel + rod: three bodies, four lower pairs.
+            Kind::Actuator { .. } => {
+                links += 3;
+                joints += 4;
+            }
+            Kind::Rrr { .. }
+            | Kind::Rrp { .. }
+            | Kind::Rpr { .. }
+            | Kind::Prp { .. }
+            | Kind::Rpp { .. } => {
+                links += 2;
+                joints += 3;
+            }
+            _ => {}
+        }
+        if let Some(i) = stmt.kind.input() {
+            inputs.push(i.to_string());
+        }
+    }
+    let mobility = 3 * (links - 1) - 2 * joints;
+    if mobility != n {
+        errors.push(
+            declared.span(),
+            format!(
+                "the mechanism has {mobility} degree(s) of freedom (Gruebler: 3*({links}-1) - 2*{joints} = {mobility}) for {} input(s) [{}], but `dof {n}` is declared; add or remove a driver, or correct `dof`",
+                inputs.len(),
+                inputs.join(", ")
+            ),
+        );
+    }
+}
+
+/// Rule: every requested output is a point, a named link or a slide.
+pub fn outputs_exist(model: &Model, errors: &mut Errors) {
+    let Some(outputs) = &model.outputs else {
+        return;
+    };
+    let table = symbols(model);
+    for o in outputs {
+        let name = o.to_string();
+        match table.get(&name) {
+            Some((Category::Point | Category::Link | Category::Slide, _)) => {}
+            Some((cat, _)) => errors.push(
+                o.span(),
+                format!(
+                    "this definition cannot give `{name}` as an output: it is {}; outputs are points, links (their angles and rates) and slide displacements",
+                    cat.article()
+                ),
+            ),
+            None => {
+                let candidates = table
+                    .iter()
+                    .filter(|(_, (c, _))| matches!(c, Category::Point | Category::Link | Category::Slide))
+                    .map(|(n, _)| n.as_str());
+                errors.push(
+                    o.span(),
+                    format!(
+                        "this definition cannot give `{name}`: no point, link or slide has that name{}",
+                        did_you_mean(&name, candidates)
+                    ),
+                );
+            }
+        }
+    }
+}
+
+/// Rule (after planning): a link point is measured from a point of that link,
+/// and a crank turns about a ground point.
+pub fn geometry_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
+    for stmt in &model.stmts {
+        match &stmt.kind {
+            Kind::Point { link, from, .. } => {
+                if let Some(info) = plan.links.get(&link.to_string()) {
+                    let f = from.to_string();
+                    if !info.points.contains(&f) && plan.defined.contains_key(&f) {
+                        errors.push(
+                            from.span(),
+                            format!(
+                                "`{f}` is not a point of `{link}`; measure from one of its points: {}",
+                                info.points
+                                    .iter()
+                                    .filter(|p| **p != stmt.name.to_string())
+                                    .map(|p| format!("`{p}`"))
+                                    .collect::<Vec<_>>()
+                                    .join(", ")
+                            ),
+                        );
+                    }
+                }
+            }
+            Kind::Crank { pivot, .. } => {
+                let p = pivot.to_string();
+                if plan.defined.contains_key(&p) && !plan.is_ground(&p) {
+                    errors.push(
+                        pivot.span(),
+                        format!("a crank turns about a ground point, and `{p}` moves; define the pivot with `ground(x, y)`"),
+                    );
+                }
+            }
+            Kind::Guide {
+                origin: Origin::Point(p),
+                carrier: Some(link),
+                ..
+            } => {
+                if let Some(info) = plan.links.get(&link.to_string()) {
+                    if !info.points.contains(&p.to_string()) {
+                        errors.push(
+                            p.span(),
+                            format!("a guide carried by `{link}` must pass through one of its points, and `{p}` is not on it"),
+                        );
+                    }
+                }
+            }
+            Kind::Guide {
+                origin: Origin::Point(p),
+                carrier: None,
+                ..
+            } => {
+                let name = p.to_string();
+                if plan.defined.contains_key(&name) && !plan.is_ground(&name) {
+                    errors.push(
+                        p.span(),
+                        format!("a fixed guide must pass through a ground point, and `{name}` moves; to slide on a moving link write `guide({name}, LINK)`"),
+                    );
+                }
+            }
+            _ => {}
+        }
+    }
+}

@@ -1,0 +1,173 @@
+//! Scalar expressions in a definition: literals, parameters, constants and
+//! arithmetic on them, with angle units. Constant sub-expressions are folded at
+//! expansion time, so `const` values and literals cost nothing at run time.
+
+use proc_macro2::{Span, TokenStream};
+use quote::{quote, quote_spanned};
+use syn::spanned::Spanned;
+use syn::{BinOp, Expr, Ident, Lit, UnOp};
+
+/// A scalar expression with its span.
+#[derive(Clone, Debug)]
+pub struct Value {
+    /// What it is.
+    pub kind: ValueKind,
+    /// The user's tokens.
+    pub span: Span,
+}
+
+/// The shapes a scalar expression can take.
+#[derive(Clone, Debug)]
+pub enum ValueKind {
+    /// A number (constants are folded into this).
+    Lit(f64),
+    /// A run-time parameter `self.name`.
+    Param(Ident),
+    /// `-x`.
+    Neg(Box<Value>),
+    /// `x op y` with `op` one of `+ - * /`.
+    Bin(Box<Value>, char, Box<Value>),
+}
+
+impl Value {
+    /// A literal with a span.
+    pub fn lit(x: f64, span: Span) -> Self {
+        Value {
+            kind: ValueKind::Lit(x),
+            span,
+        }
+    }
+
+    /// The number, when the expression depends on literals and constants only.
+    pub fn fold(&self) -> Option<f64> {
+        match &self.kind {
+            ValueKind::Lit(x) => Some(*x),
+            ValueKind::Param(_) => None,
+            ValueKind::Neg(v) => v.fold().map(|x| -x),
+            ValueKind::Bin(a, op, b) => {
+                let (a, b) = (a.fold()?, b.fold()?);
+                Some(match op {
+                    '+' => a + b,
+                    '-' => a - b,
+                    '*' => a * b,
+                    _ => a / b,
+                })
+            }
+        }
+    }
+
+    /// Multiplies by `pi / 180` (for `deg`).
+    pub fn degrees(self) -> Self {
+        let span = self.span;
+        match self.fold() {
+            Some(x) => Value::lit(x.to_radians(), span),
+            None => Value {
+                kind: ValueKind::Bin(
+                    Box::new(self),
+                    '*',
+                    Box::new(Value::lit(core::f64::consts::PI / 180.0, span)),
+                ),
+                span,
+            },
+        }
+    }
+
+    /// Rust code computing the value in the scalar type `T` (inside a method
+    /// with `self` the parameter struct). Folded values become one literal.
+    pub fn emit(&self) -> TokenStream {
+        if let Some(x) = self.fold() {
+            return lit(x);
+        }
+        match &self.kind {
+            ValueKind::Lit(x) => lit(*x),
+            ValueKind::Param(name) => quote_spanned!(self.span=> self.#name),
+            ValueKind::Neg(v) => {
+                let v = v.emit();
+                quote!((-#v))
+            }
+            ValueKind::Bin(a, op, b) => {
+                let (a, b) = (a.emit(), b.emit());
+                match op {
+                    '+' => quote!((#a + #b)),
+                    '-' => quote!((#a - #b)),
+                    '*' => quote!((#a * #b)),
+                    _ => quote!((#a / #b)),
+                }
+            }
+        }
+    }
+}
+
+/// `T::lit(x)` with `x` printed exactly (shortest round-trip form).
+pub fn lit(x: f64) -> TokenStream {
+    let literal = proc_macro2::Literal::f64_suffixed(x);
+    quote!(<T as ::mechanism::Real>::lit(#literal))
+}
+
+/// How names inside an expression resolve.
+pub trait Scope {
+    /// A constant's folded value.
+    fn constant(&self, name: &Ident) -> Option<f64>;
+    /// `true` for a run-time parameter.
+    fn is_param(&self, name: &Ident) -> bool;
+    /// An error for a name that is neither (with a suggestion).
+    fn not_a_number(&self, name: &Ident) -> syn::Error;
+}
+
+/// Converts a user expression. Errors carry the span of the offending token.
+pub fn convert(expr: &Expr, scope: &dyn Scope) -> Result<Value, syn::Error> {
+    let span = expr.span();
+    let kind = match expr {
+        Expr::Lit(l) => match &l.lit {
+            Lit::Float(f) => ValueKind::Lit(f.base10_parse::<f64>()?),
+            Lit::Int(i) => ValueKind::Lit(i.base10_parse::<f64>()?),
+            _ => return Err(syn::Error::new(span, "expected a number")),
+        },
+        Expr::Path(p) => {
+            let Some(name) = p.path.get_ident() else {
+                return Err(syn::Error::new(
+                    span,
+                    "expected a number or a parameter name",
+                ));
+            };
+            if let Some(x) = scope.constant(name) {
+                ValueKind::Lit(x)
+            } else if scope.is_param(name) {
+                ValueKind::Param(name.clone())
+            } else {
+                return Err(scope.not_a_number(name));
+            }
+        }
+        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => {
+            ValueKind::Neg(Box::new(convert(&u.expr, scope)?))
+        }
+        Expr::Paren(p) => return convert(&p.expr, scope),
+        Expr::Group(g) => return convert(&g.expr, scope),
+        Expr::Binary(b) => {
+            let op = match b.op {
+                BinOp::Add(_) => '+',
+                BinOp::Sub(_) => '-',
+                BinOp::Mul(_) => '*',
+                BinOp::Div(_) => '/',
+                _ => {
+                    return Err(syn::Error::new(
+                        b.op.span(),
+                        "only `+`, `-`, `*` and `/` are allowed in a dimension",
+                    ))
+                }
+            };
+            ValueKind::Bin(
+                Box::new(convert(&b.left, scope)?),
+                op,
+                Box::new(convert(&b.right, scope)?),
+            )
+        }
+        _ => {
+            return Err(syn::Error::new(
+                span,
+                "expected a number, a parameter, or arithmetic (`+ - * /`) on them",
+            ))
+        }
+    };
+    Ok(Value { kind, span })
+}
