@@ -59,6 +59,56 @@ fn outputs(model: &Model, plan: &Plan) -> Outputs {
     out
 }
 
+/// Statements the outputs need, directly or through the statements they use.
+/// The rest (a coupler point nobody asked for) is left out.
+fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usize> {
+    let mut stack: Vec<usize> = Vec::new();
+    for p in &out.points {
+        stack.extend(plan.defined.get(&p.to_string()));
+    }
+    for l in &out.links {
+        stack.extend(plan.links.get(&l.to_string()).map(|i| i.stmt));
+    }
+    stack.extend(out.slides.iter().map(|(_, i, _)| *i));
+    let mut needed = BTreeSet::new();
+    while let Some(i) = stack.pop() {
+        if needed.insert(i) {
+            for r in crate::plan::references(&model.stmts[i]) {
+                stack.extend(plan.defined.get(&r.to_string()));
+            }
+        }
+    }
+    needed
+}
+
+/// Doc comments of the output fields, in the order points, links, slides.
+fn output_docs(out: &Outputs, level: usize) -> Vec<String> {
+    let (p, l, s) = match level {
+        0 => (
+            "Point `{}` (length units).",
+            "Angle of link `{}` from +x (rad, in (-pi, pi], counter-clockwise).",
+            "Slide displacement `{}` (length units).",
+        ),
+        1 => (
+            "Velocity of point `{}` (length units/s).",
+            "Angular velocity of link `{}` (rad/s, counter-clockwise positive).",
+            "Rate of slide displacement `{}` (length units/s).",
+        ),
+        _ => (
+            "Acceleration of point `{}` (length units/s^2).",
+            "Angular acceleration of link `{}` (rad/s^2).",
+            "Second derivative of slide displacement `{}` (length units/s^2).",
+        ),
+    };
+    let fill = |t: &str, n: &Ident| t.replace("{}", &n.to_string());
+    out.points
+        .iter()
+        .map(|n| fill(p, n))
+        .chain(out.links.iter().map(|n| fill(l, n)))
+        .chain(out.slides.iter().map(|(n, _, _)| fill(s, n)))
+        .collect()
+}
+
 fn mode_tokens(mode: Mode) -> TokenStream {
     match mode {
         Mode::Plus => quote!(::mechanism::Mode::Plus),
@@ -324,10 +374,24 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
     let input_ty = format_ident!("{}Input", name);
     let solution_ty = format_ident!("{}Solution", name);
     let out = outputs(model, plan);
+    let needed = needed_statements(model, plan, &out);
+    let order: Vec<usize> = plan
+        .order
+        .iter()
+        .copied()
+        .filter(|i| needed.contains(i))
+        .collect();
+    let plan = &Plan {
+        order,
+        defined: plan.defined.clone(),
+        links: plan.links.clone(),
+        guides: plan.guides.clone(),
+        ground: plan.ground.clone(),
+    };
 
     // Which link axes are needed in position.
     let mut axes = BTreeSet::new();
-    for stmt in &model.stmts {
+    for stmt in plan.order.iter().map(|&i| &model.stmts[i]) {
         match &stmt.kind {
             Kind::Point { link, .. } => {
                 axes.insert(link.to_string());
@@ -415,6 +479,9 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
         pos_out_fields.iter().cloned().unzip();
 
     let level = model.level;
+    let pos_docs = output_docs(&out, 0);
+    let vel_docs = output_docs(&out, 1);
+    let acc_docs = output_docs(&out, 2);
     let mut items = TokenStream::new();
     let mut methods = TokenStream::new();
 
@@ -463,7 +530,7 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
         #[derive(Clone, Copy, Debug, PartialEq)]
         #[allow(non_snake_case)]
         #vis struct #position_ty<T: ::mechanism::Real = ::core::primitive::f64> {
-            #(#[doc = "Output."] pub #pos_out_names: #pos_out_types,)*
+            #(#[doc = #pos_docs] pub #pos_out_names: #pos_out_types,)*
             #(#[doc(hidden)] pub #hidden_pos: #hidden_pos_types,)*
             #[doc(hidden)]
             pub input: #input_ty<T>,
@@ -497,7 +564,7 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
             #[derive(Clone, Copy, Debug, PartialEq)]
             #[allow(non_snake_case)]
             #vis struct #velocity_ty<T: ::mechanism::Real = ::core::primitive::f64> {
-                #(#[doc = "Output."] pub #on: #ot,)*
+                #(#[doc = #vel_docs] pub #on: #ot,)*
                 #(#[doc(hidden)] pub #hn: #ht,)*
                 #[doc(hidden)]
                 pub rates: #input_ty<T>,
@@ -526,7 +593,7 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
             #[derive(Clone, Copy, Debug, PartialEq)]
             #[allow(non_snake_case)]
             #vis struct #acceleration_ty<T: ::mechanism::Real = ::core::primitive::f64> {
-                #(#[doc = "Output."] pub #on: #ot,)*
+                #(#[doc = #acc_docs] pub #on: #ot,)*
                 #(#[doc(hidden)] pub #hn: #ht,)*
             }
 

@@ -1,0 +1,70 @@
+//! Expansion snapshots: what the macro writes for three scenes of one four-bar.
+//! They show that a scene gets only what it asks for:
+//! - `position_only`: no velocity or acceleration code, and no `atan2`
+//!   (`geometry::angle`) since no link angle is an output;
+//! - `velocity_angles`: velocity code, angles computed because links are outputs,
+//!   no acceleration code;
+//! - `acceleration_full`: everything; fixed points pass `None`.
+//!
+//! Review changes with `cargo insta review` (or `INSTA_UPDATE=always`).
+
+use quote::quote;
+
+fn expand(tokens: proc_macro2::TokenStream) -> String {
+    let out = mechanism_codegen::expand(tokens);
+    let file: syn::File = syn::parse2(out).expect("expansion is valid Rust");
+    prettyplease::unparse(&file)
+}
+
+fn four_bar(scene: proc_macro2::TokenStream) -> String {
+    expand(quote! {
+        /// Four-bar of seed 002 (mm).
+        pub FourBar {
+            params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+            let O2 = ground(0.0, 0.0);
+            let O4 = ground(ground, 0.0);
+            let A = crank(O2, crank, theta2) as link2;
+            let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+            let P = point(link3, from A, 120.0, 30 deg);
+            #scene
+        }
+    })
+}
+
+#[test]
+fn position_only() {
+    let code = four_bar(quote! { analysis position; outputs { B, P } });
+    assert!(
+        !code.contains("fn velocity"),
+        "a position-only scene has no velocity code"
+    );
+    assert!(
+        !code.contains("geometry::angle"),
+        "no angle output, so no atan2"
+    );
+    insta::assert_snapshot!(code);
+}
+
+#[test]
+fn velocity_angles() {
+    let code = four_bar(quote! { analysis velocity; outputs { B, link3, link4 } });
+    assert!(code.contains("fn velocity"));
+    assert!(!code.contains("fn acceleration"));
+    assert!(code.contains("geometry::angle"), "link angles are outputs");
+    assert!(
+        !code.contains("let P ="),
+        "P is not an output and nothing needs it: left out"
+    );
+    insta::assert_snapshot!(code);
+}
+
+#[test]
+fn acceleration_full() {
+    let code = four_bar(quote! {});
+    assert!(code.contains("fn acceleration") && code.contains("fn solve"));
+    // O2 and O4 are fixed: the crank and the RRR group get `None` for them.
+    let flat: String = code.split_whitespace().collect();
+    assert!(flat.contains("crank::velocity(&pos.grp_A,::core::option::Option::None"));
+    assert!(flat.contains("rrr::velocity(&pos.grp_B,::core::option::Option::Some(&vel_A),::core::option::Option::None"));
+    insta::assert_snapshot!(code);
+}
