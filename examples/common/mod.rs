@@ -1,0 +1,34 @@
+//! Shared by the examples: `--csv` detection and full-precision CSV rows.
+#![allow(dead_code)]
+
+/// `true` when the example was run with `--csv`.
+pub fn csv_mode() -> bool {
+    std::env::args().any(|a| a == "--csv")
+}
+
+/// One CSV row, every number with 17 significant digits (round-trip exact for f64).
+pub fn csv_row(values: &[f64]) -> String {
+    values
+        .iter()
+        .map(|v| format!("{v:.16e}"))
+        .collect::<Vec<_>>()
+        .join(",")
+}
+
+/// One table row: each value right-aligned in `width` with `decimals` digits.
+pub fn table_row(values: &[f64], width: usize, decimals: usize) -> String {
+    values
+        .iter()
+        .map(|v| format!("{v:>width$.decimals$}"))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// A header row right-aligned like [`table_row`].
+pub fn header(names: &[&str], width: usize) -> String {
+    names
+        .iter()
+        .map(|n| format!("{n:>width$}"))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
