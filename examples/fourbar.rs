@@ -4,21 +4,8 @@
 //! Run: `cargo run --release --example fourbar` (table) or with `-- --csv`
 //! (CSV only, 17 significant digits).
 mod common;
+use common::scenes::{FourBar, FourBarInput};
 use mechanism::geometry::angle_deg_0_360;
-use mechanism::mechanism;
-
-mechanism! {
-    /// Crank-rocker four-bar of seed 002 (mm). Ground O2-O4 = 304.8, crank
-    /// O2-A = 101.6, coupler A-B = 254.0, rocker O4-B = 177.8.
-    pub FourBar {
-        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
-        dof 1;
-        let O2 = ground(0.0, 0.0);
-        let O4 = ground(ground, 0.0);
-        let A = crank(O2, crank, theta2) as link2;
-        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
-    }
-}
 
 /// Crank speed of seed 002 (rad/s).
 const OMEGA2: f64 = 250.0;
@@ -26,18 +13,31 @@ const OMEGA2: f64 = 250.0;
 fn main() {
     let csv = common::csv_mode();
     let fb = FourBar::<f64>::default();
-    let names = ["theta2_deg", "theta3_deg", "theta4_deg", "omega3", "omega4", "alpha3", "alpha4"];
+    let names = [
+        "theta2_deg",
+        "theta3_deg",
+        "theta4_deg",
+        "omega3",
+        "omega4",
+        "alpha3",
+        "alpha4",
+    ];
     if csv {
         println!("{}", names.join(","));
     } else {
         println!("Four-bar of seed 002: ground 304.8, crank 101.6, coupler 254.0, rocker 177.8 mm; crank 250 rad/s");
-        println!("angles in deg, omega in rad/s, alpha in rad/s^2\n{}", common::header(&names, 14));
+        println!(
+            "angles in deg, omega in rad/s, alpha in rad/s^2\n{}",
+            common::header(&names, 14)
+        );
     }
     for step in 0..72 {
         let deg = 5.0 * step as f64;
         let s = fb
             .solve(
-                &FourBarInput { theta2: deg.to_radians() },
+                &FourBarInput {
+                    theta2: deg.to_radians(),
+                },
                 &FourBarInput { theta2: OMEGA2 },
                 &FourBarInput { theta2: 0.0 },
             )

@@ -1,6 +1,8 @@
 //! Shared by the examples: `--csv` detection and full-precision CSV rows.
 #![allow(dead_code)]
 
+pub mod scenes;
+
 /// `true` when the example was run with `--csv`.
 pub fn csv_mode() -> bool {
     std::env::args().any(|a| a == "--csv")

@@ -1,0 +1,86 @@
+//! The mechanisms of the examples, defined once and shared by the examples,
+//! the tests (`tests/examples.rs`) and the benchmarks.
+#![allow(dead_code)]
+
+use mechanism::mechanism;
+
+mechanism! {
+    /// Crank-rocker four-bar of seed 002 (mm). Ground O2-O4 = 304.8, crank
+    /// O2-A = 101.6, coupler A-B = 254.0, rocker O4-B = 177.8; the document's
+    /// branch has B above the line A-O4 (`left`).
+    pub FourBar {
+        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+    }
+}
+
+mechanism! {
+    /// Six-bar of seed 000, problem 3-28 (mm): the crank turns about A; B is on
+    /// the crank opposite its slide line; the block F slides along the crank's
+    /// line and is pinned to the rocker E-F (60) whose other arm E-D is 35; the
+    /// RRR group B-C-D (50, 75) closes the loop.
+    pub SixBar {
+        dof 1;
+        let A = ground(0.0, 0.0);
+        let E = ground(70.0, 0.0);
+        let K = crank(A, 40.0, phi1) as link1;
+        let B = point(link1, from A, 40.0, 180 deg);
+        let crank_line = guide(A, link1);
+        let F = rrp(E, 60.0, crank_line, plus) as (link4, block5) slide af;
+        let D = point(link4, from E, 35.0, 180 deg);
+        let C = rrr(B, 50.0, D, 75.0, left) as (link2, link3);
+        outputs { C, F, link2, link3, link4, af }
+    }
+}
+
+mechanism! {
+    /// Quick-return shaper of seed 001 (m): crank AB = 0.125 about A; the block
+    /// at B slides on the rocker pivoted at C = (0, -0.275); D on the rocker at
+    /// CD = 0.6; the connecting rod DE = 0.15 drives the ram E along y = 0.3
+    /// (guide direction 180 deg, as in the document).
+    pub Shaper {
+        dof 1;
+        let A = ground(0.0, 0.0);
+        let C = ground(0.0, -0.275);
+        let ram = guide((0.0, 0.3), 180 deg);
+        let B = crank(A, 0.125, crank) as link2;
+        let cb = rpr(B, C, plus) as (block, link3);
+        let D = point(link3, from C, 0.6, 0 deg);
+        let E = rrp(D, 0.15, ram, plus) as (link4, ram_block) slide s_ram;
+        outputs { E, link3, link4 }
+    }
+}
+
+mechanism! {
+    /// Offset slider-crank (m): crank 0.1, connecting rod 0.4, slide line at
+    /// y = 0.02 along +x.
+    pub SliderCrank {
+        params { crank = 0.1, rod = 0.4, offset = 0.02 }
+        dof 1;
+        let O = ground(0.0, 0.0);
+        let line = guide((0.0, offset), 0 deg);
+        let A = crank(O, crank, theta) as link2;
+        let B = rrp(A, rod, line, plus) as (link3, slider) slide x;
+        outputs { B, link3, x }
+    }
+}
+
+mechanism! {
+    /// Two-input five-bar robot (m): cranks of 0.1 about O1 = (0, 0) and
+    /// O2 = (0.08, 0), distal links of 0.16 meeting at the end point P above
+    /// the base (`left` of the directed line A -> C).
+    pub FiveBar {
+        params { base = 0.08, proximal = 0.1, distal = 0.16 }
+        dof 2;
+        let O1 = ground(0.0, 0.0);
+        let O2 = ground(base, 0.0);
+        let A = crank(O1, proximal, q1) as arm1;
+        let C = crank(O2, proximal, q2) as arm2;
+        let P = rrr(A, distal, C, distal, left) as (forearm1, forearm2);
+        outputs { P }
+    }
+}

@@ -1,0 +1,44 @@
+//! A two-input five-bar robot (m): the end point P over a grid of both crank
+//! angles; where the arms cannot reach, the typed error is printed instead.
+//!
+//! Run: `cargo run --release --example five_bar` (table) or with `-- --csv`.
+mod common;
+use common::scenes::{FiveBar, FiveBarInput};
+
+fn main() {
+    let csv = common::csv_mode();
+    let m = FiveBar::<f64>::default();
+    let names = ["q1_deg", "q2_deg", "p_x", "p_y", "vp_x", "vp_y"];
+    if csv {
+        println!("{}", names.join(","));
+    } else {
+        println!("Five-bar: base 0.08 m, proximal 0.1 m, distal 0.16 m; both cranks at 1 rad/s");
+        println!("{}", common::header(&names, 12));
+    }
+    for i in 0..=6 {
+        for j in 0..=6 {
+            let q1 = 60.0 + 15.0 * i as f64;
+            let q2 = 0.0 + 15.0 * j as f64;
+            let input = FiveBarInput {
+                q1: q1.to_radians(),
+                q2: q2.to_radians(),
+            };
+            let rates = FiveBarInput { q1: 1.0, q2: 1.0 };
+            let result = m
+                .position(&input)
+                .and_then(|p| m.velocity(&p, &rates).map(|v| (p, v)));
+            match result {
+                Ok((p, v)) => {
+                    let row = [q1, q2, p.P.x, p.P.y, v.P.x, v.P.y];
+                    if csv {
+                        println!("{}", common::csv_row(&row));
+                    } else {
+                        println!("{}", common::table_row(&row, 12, 5));
+                    }
+                }
+                Err(e) if !csv => println!("{q1:>12.1} {q2:>12.1}   {e}"),
+                Err(_) => {}
+            }
+        }
+    }
+}

@@ -1,0 +1,62 @@
+//! Seed 001: the quick-return shaper (crank + RPR + RRP, m), crank at 1 rad/s,
+//! 0..360 deg in steps of 30, on the document's branch (theta3 = 65.556 deg,
+//! theta4 = 168.938 deg at crank 0).
+//!
+//! Run: `cargo run --release --example shaper` (table) or with `-- --csv`.
+mod common;
+use common::scenes::{Shaper, ShaperInput};
+use mechanism::geometry::{angle_deg_0_360, unit};
+
+fn main() {
+    let csv = common::csv_mode();
+    let m = Shaper::<f64>::default();
+    let names = [
+        "crank_deg",
+        "theta3_deg",
+        "omega3",
+        "alpha3",
+        "theta4_deg",
+        "omega4",
+        "alpha4",
+        "x_e",
+        "v_e",
+        "a_e",
+    ];
+    if csv {
+        println!("{}", names.join(","));
+    } else {
+        println!("Quick-return shaper of seed 001 (m); crank 1 rad/s");
+        println!("angles deg, rates rad/s and rad/s^2; ram E: m, m/s, m/s^2");
+        println!("{}", common::header(&names, 11));
+    }
+    for step in 0..=12 {
+        let deg = 30.0 * step as f64;
+        let s = m
+            .solve(
+                &ShaperInput {
+                    crank: deg.to_radians(),
+                },
+                &ShaperInput { crank: 1.0 },
+                &ShaperInput { crank: 0.0 },
+            )
+            .expect("the seed 001 shaper assembles over the whole turn");
+        let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
+        let row = [
+            deg,
+            angle_deg_0_360(&unit(p.link3)),
+            v.link3,
+            a.link3,
+            angle_deg_0_360(&unit(p.link4)),
+            v.link4,
+            a.link4,
+            p.E.x,
+            v.E.x,
+            a.E.x,
+        ];
+        if csv {
+            println!("{}", common::csv_row(&row));
+        } else {
+            println!("{}", common::table_row(&row, 11, 6));
+        }
+    }
+}
