@@ -1,5 +1,6 @@
 //! Seed 000, problem 3-28: a six-bar whose block F slides along the crank's own
-//! line (mm), crank at 10 rad/s, crank angle 40..55 deg in 15 equal steps, on
+//! line (mm), crank at 10 rad/s, crank angle 40..55 deg at 15 equally spaced values (both ends
+//! included, as the document's `linspace`), on
 //! the document's branch (theta2 = 41.04, theta3 = 145.85, theta4 = 88.58 deg,
 //! af = 93.31 at phi1 = 40 deg).
 //!
@@ -42,8 +43,9 @@ fn main() {
         );
         println!("{}", common::header(&names, 11));
     }
-    for step in 0..=15 {
-        let deg = 40.0 + step as f64;
+    // The document's grid: linspace(40, 55, 15), both ends included.
+    for step in 0..15 {
+        let deg = 40.0 + 15.0 * step as f64 / 14.0;
         let s = m
             .solve(
                 &SixBarInput {
