@@ -165,7 +165,7 @@ pub fn references_resolve(model: &Model, errors: &mut Errors) {
         for (r, want) in expected {
             let name = r.to_string();
             let own_link = stmt.links.iter().any(|l| *l == name);
-            if name == stmt.name.to_string() || own_link {
+            if stmt.name == name || own_link {
                 errors.push(
                     r.span(),
                     format!(
@@ -319,7 +319,7 @@ pub fn geometry_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
                                 "`{f}` is not a point of `{link}`; measure from one of its points: {}",
                                 info.points
                                     .iter()
-                                    .filter(|p| **p != stmt.name.to_string())
+                                    .filter(|p| stmt.name != p.as_str())
                                     .map(|p| format!("`{p}`"))
                                     .collect::<Vec<_>>()
                                     .join(", ")

@@ -85,7 +85,8 @@ pub fn position<T: Real>(
     let d = finite_vec(b - a, P, "RRR joint distance")?;
     let dist = length(&d);
     let sum = l1 + l2;
-    if !(dist > T::zero()) {
+    // Also catches NaN (dist was checked finite, but stay defensive).
+    if dist.partial_cmp(&T::zero()) != Some(core::cmp::Ordering::Greater) {
         return Err(Error::new(
             P,
             Fault::Singular {
