@@ -188,10 +188,7 @@ pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
                 let start = left[0];
                 let mut cycle = vec![start];
                 let mut at = start;
-                loop {
-                    let Some(&d) = deps[at].iter().find(|d| !done[**d]) else {
-                        break;
-                    };
+                while let Some(&d) = deps[at].iter().find(|d| !done[**d]) {
                     if let Some(pos) = cycle.iter().position(|&c| c == d) {
                         cycle.drain(..pos);
                         break;
