@@ -1,0 +1,14 @@
+// Error: no crank, slider or actuator: nothing moves.
+use mechanism::mechanism;
+
+mechanism! {
+    pub FourBar {
+        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = ground(50.0, 80.0);
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+    }
+}
+
+fn main() {}

@@ -1,0 +1,20 @@
+// Error: `dof 2` is wrong; main() still uses the generated type, its
+// `position` method and a field, and must see no follow-on error.
+use mechanism::mechanism;
+
+mechanism! {
+    pub FourBar {
+        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        dof 2;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+    }
+}
+
+fn main() {
+    let fb = FourBar::<f64>::default();
+    let p = fb.position(&FourBarInput { theta2: 0.0 });
+    let _ = p.unwrap().B;
+}
