@@ -1,2 +1,4 @@
 //! Drivers: the inputs of a mechanism.
+pub mod actuator;
 pub mod crank;
+pub mod slider;

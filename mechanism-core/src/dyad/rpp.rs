@@ -1,0 +1,178 @@
+//! RPP group: a block (link 1) pinned at the known point `A` slides in a
+//! straight slot of link 2; link 2 translates along the guide `g` (it turns
+//! with `g`'s body). The sine mechanism / Scotch yoke.
+//!
+//! ```text
+//!               ^ g.dir: link 2 translates along the guide
+//!               |
+//!               Q=========[=A=]=========>  slot of link 2, direction w
+//!               |    s1    block           (g.dir turned by beta)
+//!               | s2                       A = Q + s1 w
+//!      g.origin o                          Q = g.at(s2, offset)
+//! ```
+//!
+//! `Q` is link 2's reference point, on the guide's offset line; the slot passes
+//! through `Q` with the unit direction `w = cos(beta) dir + sin(beta) perp(dir)`,
+//! given by `slot_dir_local = (cos beta, sin beta)` (fixed on link 2). The
+//! closure is unique: there is no mode.
+//!
+//! Position: `s1 w + s2 dir = A - g.origin - offset perp(dir) = q`; crossing with
+//! `dir` and `w`: `s1 = cross(dir, q) / D`, `s2 = cross(q, w) / D`,
+//! `D = cross(dir, w) = sin(beta)`: zero when the slot is parallel to the guide.
+//!
+//! Rates: relative to `g`'s body, `A` moves at `s1_dot w + s2_dot dir` (`w` is
+//! fixed in that body), so `s1_dot w + s2_dot dir = vA - v_body(A)`: the same
+//! matrix. Accelerations add the Coriolis term of that relative velocity.
+//! Units: lengths in the user's unit L, rates per second.
+
+use crate::driver::slider::{transport_acceleration, transport_velocity};
+use crate::error::{Error, Primitive};
+use crate::geometry::{
+    check_det, cross, difference, finite, finite_point, finite_vec, length, perp, plus,
+};
+use crate::guide::{Line, LineAcceleration, LineVelocity};
+use crate::scalar::Real;
+use nalgebra::{Point2, Vector2};
+
+const P: Primitive = Primitive::Rpp;
+
+/// Closed RPP group.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RppPosition<T: Real> {
+    /// Link 2's reference point `Q = g.at(s2, offset)` (L), where the slot
+    /// crosses the guide's offset line.
+    pub q: Point2<T>,
+    /// The slot's unit direction `w` in world axes.
+    pub slot: Vector2<T>,
+    /// Place of the block in the slot (L): `A = Q + s1 w`.
+    pub s1: T,
+    /// Displacement of link 2 along `g.dir` from `g.origin` (L).
+    pub s2: T,
+}
+
+/// Rates of the RPP group.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RppVelocity<T: Real> {
+    /// Sliding speed of the block in the slot, relative to link 2 (L/s).
+    pub s1_dot: T,
+    /// Sliding speed of link 2 along `g`, relative to `g`'s body (L/s).
+    pub s2_dot: T,
+    /// Absolute velocity of `Q` (L/s).
+    pub vq: Vector2<T>,
+}
+
+/// Accelerations of the RPP group.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RppAcceleration<T: Real> {
+    /// Sliding acceleration of the block relative to link 2 (L/s^2).
+    pub s1_ddot: T,
+    /// Sliding acceleration of link 2 relative to `g`'s body (L/s^2).
+    pub s2_ddot: T,
+    /// Absolute acceleration of `Q` (L/s^2).
+    pub aq: Vector2<T>,
+}
+
+/// Determinant `cross(dir, w) = sin(beta)`, checked against `16 eps |dir| |w|`.
+#[inline(always)]
+fn determinant<T: Real>(dir: &Vector2<T>, w: &Vector2<T>) -> Result<T, Error> {
+    check_det(cross(dir, w), length(dir) * length(w), P)
+}
+
+/// Closes the group: finds `s1`, `s2` with `A = g.at(s2, offset) + s1 w`,
+/// `w = slot_dir_local.x dir + slot_dir_local.y perp(dir)` (`offset` in L, left
+/// of `g.dir` positive; `g.dir` and `slot_dir_local` unit vectors).
+///
+/// Errors: `NonFinite` for non-finite inputs or results; `Singular` when the
+/// slot is parallel to the guide to rounding (`|sin beta| <= 16 eps`).
+#[inline]
+pub fn position<T: Real>(
+    a: &Point2<T>,
+    g: &Line<T>,
+    offset: T,
+    slot_dir_local: &Vector2<T>,
+) -> Result<RppPosition<T>, Error> {
+    let offset = finite(offset, P, "RPP guide offset")?;
+    let dir = finite_vec(g.dir, P, "RPP guide direction")?;
+    let local = finite_vec(*slot_dir_local, P, "RPP slot direction")?;
+    let n = perp(&dir);
+    let w = dir * local.x + n * local.y;
+    let q = finite_vec(
+        (a - g.origin) - n * offset,
+        P,
+        "RPP distance from the guide",
+    )?;
+    let det = determinant(&dir, &w)?;
+    let s1 = finite(cross(&dir, &q) / det, P, "RPP displacement s1")?;
+    let s2 = finite(cross(&q, &w) / det, P, "RPP displacement s2")?;
+    let qp = finite_point(g.at(s2, offset), P, "RPP point Q")?;
+    Ok(RppPosition {
+        q: qp,
+        slot: w,
+        s1,
+        s2,
+    })
+}
+
+/// Rates of the group from the velocity of `A` (L/s; `None`: fixed) and the
+/// motion of `g`'s body (`None`: fixed guide).
+///
+/// With `r = vA - v_body(A)`: `s1_dot = cross(dir, r) / D`,
+/// `s2_dot = cross(r, w) / D`; `vq = v_body(Q) + s2_dot dir`.
+/// Link 2's angular velocity is the guide body's.
+///
+/// Errors: `Singular` when the slot is parallel to the guide; `NonFinite` for a
+/// non-finite input or result.
+#[inline]
+pub fn velocity<T: Real>(
+    pos: &RppPosition<T>,
+    a: &Point2<T>,
+    g: &Line<T>,
+    va: Option<&Vector2<T>>,
+    gv: Option<&LineVelocity<T>>,
+) -> Result<RppVelocity<T>, Error> {
+    let det = determinant(&g.dir, &pos.slot)?;
+    let vma = transport_velocity(g, a, gv);
+    let r = finite_vec(difference(va, vma.as_ref()), P, "RPP relative velocity")?;
+    let s1_dot = finite(cross(&g.dir, &r) / det, P, "RPP sliding speed 1")?;
+    let s2_dot = finite(cross(&r, &pos.slot) / det, P, "RPP sliding speed 2")?;
+    let vmq = transport_velocity(g, &pos.q, gv);
+    let vq = finite_vec(plus(vmq.as_ref(), g.dir * s2_dot), P, "RPP velocity of Q")?;
+    Ok(RppVelocity { s1_dot, s2_dot, vq })
+}
+
+/// Accelerations of the group from the acceleration of `A` (L/s^2; `None`:
+/// fixed), the rates and the guide body's motion (`gv`/`ga`; `None` counts as
+/// zero).
+///
+/// Differentiating once more in the guide body's frame:
+/// `s1_ddot w + s2_ddot dir = aA - a_body(A) - 2 omega perp(s1_dot w + s2_dot dir)`,
+/// the same matrix; `aq = a_body(Q) + 2 omega s2_dot perp(dir) + s2_ddot dir`.
+/// Errors as for [`velocity`].
+#[inline]
+pub fn acceleration<T: Real>(
+    pos: &RppPosition<T>,
+    a: &Point2<T>,
+    g: &Line<T>,
+    vel: &RppVelocity<T>,
+    aa: Option<&Vector2<T>>,
+    gv: Option<&LineVelocity<T>>,
+    ga: Option<&LineAcceleration<T>>,
+) -> Result<RppAcceleration<T>, Error> {
+    let det = determinant(&g.dir, &pos.slot)?;
+    let rel_a = pos.slot * vel.s1_dot + g.dir * vel.s2_dot;
+    let ama = transport_acceleration(g, a, gv, ga, &rel_a);
+    let r = finite_vec(difference(aa, ama.as_ref()), P, "RPP relative acceleration")?;
+    let s1_ddot = finite(cross(&g.dir, &r) / det, P, "RPP sliding acceleration 1")?;
+    let s2_ddot = finite(cross(&r, &pos.slot) / det, P, "RPP sliding acceleration 2")?;
+    let amq = transport_acceleration(g, &pos.q, gv, ga, &(g.dir * vel.s2_dot));
+    let aq = finite_vec(
+        plus(amq.as_ref(), g.dir * s2_ddot),
+        P,
+        "RPP acceleration of Q",
+    )?;
+    Ok(RppAcceleration {
+        s1_ddot,
+        s2_ddot,
+        aq,
+    })
+}

@@ -1,0 +1,192 @@
+//! RRP group: link 1 turns about the known point `A` and carries, at distance
+//! `l`, the revolute `C` of a block (link 2) that slides on a guide `g`.
+//!
+//! ```text
+//!           A
+//!           |\  l (link 1)         Mode::Plus : C ahead of F along g.dir
+//!           | \                    Mode::Minus: C behind F (mirror image)
+//!   --------F--C[block]-------->  offset line: g shifted left by `offset`
+//!
+//!   g.origin o----------------->  guide g, direction g.dir
+//! ```
+//!
+//! `F` is the foot of the perpendicular from `A` on the offset line, the line
+//! that `C` travels on: `C = g.at(s, offset) = g.origin + s dir + offset perp(dir)`.
+//!
+//! Position in vector form: with `p = A - g.origin`, `A`'s coordinates in the
+//! guide's frame are `t = dot(p, dir)` along and `k = dot(p, perp(dir)) - offset`
+//! across the offset line; `|C - A| = l` gives `(s - t)^2 + k^2 = l^2`, so
+//! `s = t + m sqrt((l - |k|)(l + |k|))` (`m = +1` for `Plus`), the factored
+//! form losing no digits near tangency (`|k| = l`).
+//!
+//! Rates: differentiating `A + r1 = C` (`r1 = C - A`, turning at `omega1`) and
+//! `C = g.at(s, offset)` on a guide body moving at `(v_origin, omega)` gives
+//! `omega1 perp(r1) - s_dot dir = v_body(C) - vA`, a 2x2 system with columns
+//! `perp(r1)`, `-dir` and determinant `dot(r1, dir) = m sqrt(l^2 - k^2)`: zero
+//! when link 1 is perpendicular to the guide (the block cannot be pushed along).
+//! The block turns with the guide body; its angular rates are the guide's.
+//! Units: lengths in the user's unit L, rates per second; angular rates in rad/s.
+
+use crate::driver::slider::{transport_acceleration, transport_velocity};
+use crate::error::{Error, Fault, Primitive};
+use crate::geometry::{
+    check_det, cross, difference, dot, finite, finite_point, finite_vec, length, perp, plus,
+    positive,
+};
+use crate::guide::{Line, LineAcceleration, LineVelocity};
+use crate::link::{relative_acceleration, relative_velocity};
+use crate::mode::Mode;
+use crate::scalar::Real;
+use nalgebra::{Point2, Vector2};
+
+const P: Primitive = Primitive::Rrp;
+
+/// Closed RRP group.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RrpPosition<T: Real> {
+    /// The revolute `C` between link 1 and the block (L).
+    pub c: Point2<T>,
+    /// `C - A`: link 1 as a vector, length `l` (L). Its direction is link 1's axis.
+    pub r1: Vector2<T>,
+    /// Displacement of `C` along `g.dir` from `g.origin` (L): `C = g.at(s, offset)`.
+    pub s: T,
+}
+
+/// Rates of the RRP group.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RrpVelocity<T: Real> {
+    /// Angular velocity of link 1 (rad/s, counter-clockwise positive).
+    pub omega1: T,
+    /// Sliding speed of the block along the guide, relative to the guide's body
+    /// (L/s, positive along `g.dir`).
+    pub s_dot: T,
+    /// Absolute velocity of `C` (L/s).
+    pub vc: Vector2<T>,
+}
+
+/// Accelerations of the RRP group.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RrpAcceleration<T: Real> {
+    /// Angular acceleration of link 1 (rad/s^2).
+    pub alpha1: T,
+    /// Sliding acceleration of the block relative to the guide's body (L/s^2).
+    pub s_ddot: T,
+    /// Absolute acceleration of `C` (L/s^2).
+    pub ac: Vector2<T>,
+}
+
+/// Closes the group: finds `C` on the line `g` shifted by `offset` (L, left of
+/// `g.dir` positive) with `|C - A| = l` (L), ahead of the foot `F` of the
+/// perpendicular from `A` along `g.dir` for `Mode::Plus` (`dot(C - A, dir) >= 0`),
+/// behind it for `Mode::Minus`. `g.dir` must be a unit vector.
+///
+/// Errors: `NonPositive` for `l <= 0`; `NonFinite` for non-finite inputs;
+/// `CannotAssemble { miss: |k| - l, reach: l }` when `A` lies farther than `l`
+/// from the offset line (distance `|k|`) by more than `4 eps l` (inside that
+/// rounding band `C` is put at `F`, the tangent position).
+#[inline]
+pub fn position<T: Real>(
+    a: &Point2<T>,
+    l: T,
+    g: &Line<T>,
+    offset: T,
+    mode: Mode,
+) -> Result<RrpPosition<T>, Error> {
+    let l = positive(l, P, "RRP length l")?;
+    let offset = finite(offset, P, "RRP guide offset")?;
+    let dir = finite_vec(g.dir, P, "RRP guide direction")?;
+    let p = finite_vec(a - g.origin, P, "RRP distance from the guide origin")?;
+    let n = perp(&dir);
+    let t = dot(&p, &dir);
+    // Signed distance of A from the offset line (left positive).
+    let k = dot(&p, &n) - offset;
+    let h = if k < T::zero() { -k } else { k };
+    let gap = l - h; // < 0: the circle about A misses the line
+    let band = T::lit(4.0) * T::eps() * l;
+    // (A NaN `gap`, from an overflowing product, flows on to the finite checks.)
+    if gap < -band {
+        return Err(Error::new(
+            P,
+            Fault::CannotAssemble {
+                miss: (-gap).as_f64(),
+                reach: l.as_f64(),
+            },
+        ));
+    }
+    let gap = if gap < T::zero() { T::zero() } else { gap };
+    // Half chord, sqrt(l^2 - k^2) factored: no cancellation near tangency.
+    let half = mode.sign::<T>() * (gap * (l + h)).sqrt();
+    let r1 = dir * half - n * k;
+    let s = finite(t + half, P, "RRP slide displacement s")?;
+    let c = finite_point(a + r1, P, "RRP joint C")?;
+    Ok(RrpPosition { c, r1, s })
+}
+
+/// Determinant of the rate system, `dot(r1, dir) = +-sqrt(l^2 - k^2)`, checked
+/// against `16 eps |r1| |dir|`.
+#[inline(always)]
+fn determinant<T: Real>(pos: &RrpPosition<T>, g: &Line<T>) -> Result<T, Error> {
+    check_det(dot(&pos.r1, &g.dir), length(&pos.r1) * length(&g.dir), P)
+}
+
+/// Rates of the group from the velocity of `A` (L/s; `None`: fixed) and the
+/// motion of the guide's body (`None`: fixed guide).
+///
+/// With `w = v_body(C) - vA`: `omega1 = cross(dir, w) / det`,
+/// `s_dot = -dot(w, r1) / det`, `det = dot(r1, dir)`; `vc = vA + omega1 perp(r1)`
+/// (which equals `v_body(C) + s_dot dir`).
+///
+/// Errors: `Singular` when `|dot(r1, dir)| <= 16 eps l` (link 1 perpendicular to
+/// the guide: tangency); `NonFinite` for a non-finite input or result.
+#[inline]
+pub fn velocity<T: Real>(
+    pos: &RrpPosition<T>,
+    g: &Line<T>,
+    va: Option<&Vector2<T>>,
+    gv: Option<&LineVelocity<T>>,
+) -> Result<RrpVelocity<T>, Error> {
+    let det = determinant(pos, g)?;
+    let vm = transport_velocity(g, &pos.c, gv);
+    let w = finite_vec(difference(vm.as_ref(), va), P, "RRP joint velocity")?;
+    let omega1 = finite(cross(&g.dir, &w) / det, P, "RRP angular velocity")?;
+    let s_dot = finite(-dot(&w, &pos.r1) / det, P, "RRP sliding speed")?;
+    let vc = finite_vec(
+        plus(va, relative_velocity(&pos.r1, omega1)),
+        P,
+        "RRP velocity of C",
+    )?;
+    Ok(RrpVelocity { omega1, s_dot, vc })
+}
+
+/// Accelerations of the group from the acceleration of `A` (L/s^2; `None`:
+/// fixed), the rates, and the guide body's motion (`gv`/`ga`; either `None`
+/// counts as zero).
+///
+/// Differentiating once more (the guide direction turns at the body's `omega`):
+/// `alpha1 perp(r1) - s_ddot dir = a_body(C) + 2 omega s_dot perp(dir) - aA +
+/// omega1^2 r1`, the same matrix as for the rates. Errors as for [`velocity`].
+#[inline]
+pub fn acceleration<T: Real>(
+    pos: &RrpPosition<T>,
+    g: &Line<T>,
+    vel: &RrpVelocity<T>,
+    aa: Option<&Vector2<T>>,
+    gv: Option<&LineVelocity<T>>,
+    ga: Option<&LineAcceleration<T>>,
+) -> Result<RrpAcceleration<T>, Error> {
+    let det = determinant(pos, g)?;
+    let am = transport_acceleration(g, &pos.c, gv, ga, &(g.dir * vel.s_dot));
+    let w = finite_vec(
+        difference(am.as_ref(), aa) + pos.r1 * (vel.omega1 * vel.omega1),
+        P,
+        "RRP joint acceleration",
+    )?;
+    let alpha1 = finite(cross(&g.dir, &w) / det, P, "RRP angular acceleration")?;
+    let s_ddot = finite(-dot(&w, &pos.r1) / det, P, "RRP sliding acceleration")?;
+    let ac = finite_vec(
+        plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1)),
+        P,
+        "RRP acceleration of C",
+    )?;
+    Ok(RrpAcceleration { alpha1, s_ddot, ac })
+}
