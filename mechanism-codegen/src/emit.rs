@@ -1052,16 +1052,33 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
     let input_ty = format_ident!("{}Input", name);
     let solution_ty = format_ident!("{}Solution", name);
     let params: Vec<&Ident> = model.params.iter().map(|(n, _)| n).collect();
+    let mut seen = BTreeSet::new();
+    let mut unique = |i: &Ident| seen.insert(i.to_string());
     let inputs: Vec<Ident> = model
         .stmts
         .iter()
         .filter_map(|s| s.kind.input().cloned())
+        .chain(model.failed.iter().filter_map(|f| f.input.clone()))
+        .filter(|i| unique(i))
         .collect();
+    let scalar_marker = if inputs.is_empty() {
+        quote!(pub _scalar: ::core::marker::PhantomData<T>,)
+    } else {
+        quote!()
+    };
     let points: Vec<&Ident> = model
         .stmts
         .iter()
         .filter(|s| !matches!(s.kind, Kind::Guide { .. } | Kind::Rpr { .. }))
         .map(|s| &s.name)
+        .chain(
+            model
+                .failed
+                .iter()
+                .filter(|f| f.kind != "guide" && f.kind != "rpr")
+                .map(|f| &f.name),
+        )
+        .filter(|i| unique(i))
         .collect();
     let scalars: Vec<&Ident> = model
         .stmts
@@ -1076,6 +1093,11 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
                 .chain(s.slides.iter().flatten())
                 .chain(rpr)
         })
+        .chain(model.failed.iter().flat_map(|f| {
+            let rpr = (f.kind == "rpr").then_some(&f.name);
+            f.links.iter().chain(f.slides.iter()).chain(rpr)
+        }))
+        .filter(|i| unique(i))
         .collect();
     quote! {
         #(#errors)*
@@ -1085,7 +1107,7 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
             fn default() -> Self { ::core::unimplemented!() }
         }
         #[allow(non_snake_case, dead_code)]
-        #vis struct #input_ty<T = ::core::primitive::f64> { #(pub #inputs: T,)* pub _scalar: ::core::marker::PhantomData<T> }
+        #vis struct #input_ty<T = ::core::primitive::f64> { #(pub #inputs: T,)* #scalar_marker }
         #[allow(non_snake_case, dead_code)]
         #vis struct #position_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #points: ::mechanism::Point2<T>,)* #(pub #scalars: T,)* }
         #[allow(non_snake_case, dead_code)]

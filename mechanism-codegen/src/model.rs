@@ -51,6 +51,22 @@ pub struct Model {
     pub outputs: Option<Vec<Ident>>,
     /// Declared mobility.
     pub dof: Option<LitInt>,
+    /// Statements whose arguments were rejected: their names stay defined.
+    pub failed: Vec<Failed>,
+}
+
+/// A statement whose arguments were rejected (an error is already reported).
+pub struct Failed {
+    /// The name it defines.
+    pub name: Ident,
+    /// Its kind token.
+    pub kind: Ident,
+    /// Links it names.
+    pub links: Vec<Ident>,
+    /// Slides it names.
+    pub slides: Vec<Ident>,
+    /// Its input name, for a driver.
+    pub input: Option<Ident>,
 }
 
 /// One `let` statement.
@@ -231,12 +247,26 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 }
 
 /// The nearest of `candidates` to `name`, if reasonably close.
+/// Close means at most a third of the longer name differs (one letter in
+/// names of 2 or 3, none in one-letter names: `Q` is no typo of `A`). Ties
+/// prefer a candidate that keeps the last character (`O5` -> `O4`? no:
+/// equal; `Q4` -> `O4` over `A`), then alphabetical order.
 pub fn nearest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
     candidates
         .into_iter()
         .map(|c| (edit_distance(name, c), c))
-        .filter(|(d, c)| *d <= (name.len().max(c.len()) / 2).max(1))
-        .min()
+        .filter(|(d, c)| {
+            *d > 0
+                && *d
+                    <= name
+                        .chars()
+                        .count()
+                        .max(c.chars().count())
+                        .div_ceil(3)
+                        .min(3)
+                && name.chars().count() > 1
+        })
+        .min_by_key(|(d, c)| (*d, name.chars().last() != c.chars().last(), c.to_string()))
         .map(|(_, c)| c)
 }
 
@@ -372,12 +402,13 @@ impl<'a> Args<'a> {
         let v = self.number(role, false)?;
         if let Some(x) = v.fold() {
             if x <= 0.0 || !x.is_finite() {
-                self.fail(
-                    v.span,
+                self.failed = true;
+                self.errors.0.push(syn::Error::new_spanned(
+                    &v.tokens,
                     format!(
-                        "the {role} must be positive, got {x}; a link length is a distance > 0"
+                        "the {role} must be positive, got {x:?}; a link length is a distance > 0"
                     ),
-                );
+                ));
             }
         }
         Some(v)
@@ -641,6 +672,27 @@ fn lower_kind(stmt: &parse::Let, scope: &NumberScope<'_>, errors: &mut Errors) -
     }
 }
 
+fn literal_scope_for<'a>(
+    consts: &'a BTreeMap<String, (Ident, f64)>,
+    names: &'a [String],
+) -> NumberScope<'a> {
+    NumberScope {
+        consts,
+        params: &[],
+        names,
+    }
+}
+
+/// Where a driver's input name sits among its arguments.
+fn input_position(kind: &str) -> Option<usize> {
+    match kind {
+        "crank" => Some(2),
+        "slider" => Some(1),
+        "actuator" => Some(3),
+        _ => None,
+    }
+}
+
 /// Lowers a parsed definition. Returns the model (possibly partial) and errors.
 pub fn lower(def: Definition) -> (Model, Errors) {
     let mut errors = Errors::default();
@@ -664,27 +716,52 @@ pub fn lower(def: Definition) -> (Model, Errors) {
         params: &[],
         names: &names,
     };
-    // Constants and parameter defaults first (they may appear anywhere).
+    let _ = literal_scope;
+    // Constants and parameter defaults first (they may appear anywhere). A
+    // constant may use the constants written before it. A value that fails is
+    // reported and still registered (as 0), so its uses raise no follow-on errors.
     for item in &def.items {
         match item {
-            Item::Const(c) => match convert(&c.value, &literal_scope).map(|v| (v.fold(), v.span)) {
-                Ok((Some(x), _)) => {
-                    consts.insert(c.name.to_string(), (c.name.clone(), x));
-                }
-                Ok((None, span)) => {
-                    errors.push(span, "a `const` must be a number known at compile time")
-                }
-                Err(e) => errors.0.push(e),
-            },
+            Item::Const(c) => {
+                let earlier = NumberScope {
+                    consts: &consts,
+                    params: &[],
+                    names: &names,
+                };
+                let x = match convert(&c.value, &earlier).map(|v| (v.fold(), v.span)) {
+                    Ok((Some(x), _)) => x,
+                    Ok((None, span)) => {
+                        errors.push(span, "a `const` must be a number known at compile time: a literal, or arithmetic on literals and earlier constants");
+                        0.0
+                    }
+                    Err(e) => {
+                        errors.0.push(syn::Error::new(
+                            e.span(),
+                            format!(
+                                "{e} (a `const` may use literals and constants defined before it)"
+                            ),
+                        ));
+                        0.0
+                    }
+                };
+                consts.insert(c.name.to_string(), (c.name.clone(), x));
+            }
             Item::Params(list) => {
                 for p in list {
-                    match convert(&p.value, &literal_scope).map(|v| (v.fold(), v.span)) {
-                        Ok((Some(x), _)) => params.push((p.name.clone(), x)),
+                    let x = match convert(&p.value, &literal_scope_for(&consts, &names))
+                        .map(|v| (v.fold(), v.span))
+                    {
+                        Ok((Some(x), _)) => x,
                         Ok((None, span)) => {
-                            errors.push(span, "a parameter's default must be a number")
+                            errors.push(span, "a parameter's default must be a literal number (or arithmetic on literals and constants)");
+                            0.0
                         }
-                        Err(e) => errors.0.push(e),
-                    }
+                        Err(e) => {
+                            errors.0.push(syn::Error::new(e.span(), format!("{e} (a parameter's default may use literals and constants only)")));
+                            0.0
+                        }
+                    };
+                    params.push((p.name.clone(), x));
                 }
             }
             _ => {}
@@ -696,6 +773,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
         names: &names,
     };
     let mut stmts = Vec::new();
+    let mut failed = Vec::new();
     for item in def.items {
         match item {
             Item::Analysis(what) => {
@@ -721,6 +799,21 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             Item::Dof(n) => dof = Some(n),
             Item::Let(l) => {
                 let Some(kind) = lower_kind(&l, &scope, &mut errors) else {
+                    // Keep the names the statement meant to define, so that the
+                    // rest of the definition and the user's code see no cascade.
+                    let input = input_position(&l.kind.to_string())
+                        .and_then(|i| l.args.get(i))
+                        .and_then(|a| match a {
+                            Arg::Value(Expr::Path(p), None) => p.path.get_ident().cloned(),
+                            _ => None,
+                        });
+                    failed.push(Failed {
+                        name: l.name,
+                        kind: l.kind,
+                        links: l.links,
+                        slides: l.slides,
+                        input,
+                    });
                     continue;
                 };
                 let want_links = kind.link_count();
@@ -803,6 +896,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             level_span,
             outputs,
             dof,
+            failed,
         },
         errors,
     )

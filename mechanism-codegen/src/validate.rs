@@ -73,6 +73,23 @@ pub fn symbols(model: &Model) -> BTreeMap<String, (Category, Ident)> {
             table.insert(input.to_string(), (Category::Input, input.clone()));
         }
     }
+    for f in &model.failed {
+        let cat = match f.kind.to_string().as_str() {
+            "guide" => Category::Guide,
+            "rpr" => Category::Slide,
+            _ => Category::Point,
+        };
+        table.insert(f.name.to_string(), (cat, f.name.clone()));
+        for link in &f.links {
+            table.insert(link.to_string(), (Category::Link, link.clone()));
+        }
+        for slide in &f.slides {
+            table.insert(slide.to_string(), (Category::Slide, slide.clone()));
+        }
+        if let Some(input) = &f.input {
+            table.insert(input.to_string(), (Category::Input, input.clone()));
+        }
+    }
     table
 }
 
@@ -209,7 +226,7 @@ pub fn references_resolve(model: &Model, errors: &mut Errors) {
 /// Rule: at least one driver, unless a statement's kind was already rejected
 /// (it may have been meant as the driver: no cascade).
 pub fn has_driver(model: &Model, kinds_failed: bool, errors: &mut Errors) {
-    if kinds_failed || model.stmts.iter().any(|s| s.kind.is_driver()) {
+    if kinds_failed || !model.failed.is_empty() || model.stmts.iter().any(|s| s.kind.is_driver()) {
         return;
     }
     errors.push(
@@ -226,6 +243,9 @@ pub fn has_driver(model: &Model, kinds_failed: bool, errors: &mut Errors) {
 /// group none), i.e. the number of inputs.
 pub fn dof_matches(model: &Model, errors: &mut Errors) {
     let Some(declared) = &model.dof else { return };
+    if !model.failed.is_empty() {
+        return; // a rejected statement would make the count meaningless
+    }
     let Ok(n) = declared.base10_parse::<i64>() else {
         errors.push(declared.span(), "`dof` takes a whole number");
         return;

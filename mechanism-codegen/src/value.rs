@@ -12,8 +12,10 @@ use syn::{BinOp, Expr, Ident, Lit, UnOp};
 pub struct Value {
     /// What it is.
     pub kind: ValueKind,
-    /// The user's tokens.
+    /// The span of the user's first token.
     pub span: Span,
+    /// The user's tokens (for errors that cover the whole expression).
+    pub tokens: TokenStream,
 }
 
 /// The shapes a scalar expression can take.
@@ -35,6 +37,7 @@ impl Value {
         Value {
             kind: ValueKind::Lit(x),
             span,
+            tokens: quote_spanned!(span=> #x),
         }
     }
 
@@ -61,14 +64,18 @@ impl Value {
         let span = self.span;
         match self.fold() {
             Some(x) => Value::lit(x.to_radians(), span),
-            None => Value {
-                kind: ValueKind::Bin(
-                    Box::new(self),
-                    '*',
-                    Box::new(Value::lit(core::f64::consts::PI / 180.0, span)),
-                ),
-                span,
-            },
+            None => {
+                let tokens = self.tokens.clone();
+                Value {
+                    kind: ValueKind::Bin(
+                        Box::new(self),
+                        '*',
+                        Box::new(Value::lit(core::f64::consts::PI / 180.0, span)),
+                    ),
+                    span,
+                    tokens,
+                }
+            }
         }
     }
 
@@ -121,6 +128,12 @@ pub fn convert(expr: &Expr, scope: &dyn Scope) -> Result<Value, syn::Error> {
         Expr::Lit(l) => match &l.lit {
             Lit::Float(f) => ValueKind::Lit(f.base10_parse::<f64>()?),
             Lit::Int(i) => ValueKind::Lit(i.base10_parse::<f64>()?),
+            Lit::Str(_) => {
+                return Err(syn::Error::new(
+                    span,
+                    "expected a number, not a string: remove the quotes",
+                ))
+            }
             _ => return Err(syn::Error::new(span, "expected a number")),
         },
         Expr::Path(p) => {
@@ -163,11 +176,15 @@ pub fn convert(expr: &Expr, scope: &dyn Scope) -> Result<Value, syn::Error> {
             )
         }
         _ => {
-            return Err(syn::Error::new(
-                span,
+            return Err(syn::Error::new_spanned(
+                expr,
                 "expected a number, a parameter, or arithmetic (`+ - * /`) on them",
             ))
         }
     };
-    Ok(Value { kind, span })
+    Ok(Value {
+        kind,
+        span,
+        tokens: quote::ToTokens::to_token_stream(expr),
+    })
 }
