@@ -19,9 +19,11 @@
 pub mod driver;
 pub mod dyad;
 pub mod error;
+pub mod force;
 pub mod geometry;
 pub mod guide;
 pub mod link;
+pub mod linsolve;
 pub mod mode;
 pub mod scalar;
 
