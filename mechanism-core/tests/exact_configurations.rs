@@ -886,11 +886,9 @@ fn fuzz<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError
     Ok(())
 }
 
-/// RRR's rates with wild inputs. Ignored: `rrr::velocity` / `rrr::acceleration`
-/// (not covered by this file's author) do not check `omega1`, `omega2`,
-/// `alpha1`, `alpha2` for finiteness, and return e.g. `omega2 = inf` in an `Ok`
-/// (found by this test: f32, `r1`, `r2` ~ 1e-40 .. 1e20). Run with
-/// `--ignored` once `rrr.rs` checks every output.
+/// RRR's rates with wild inputs (f32, `r1`, `r2` from 1e-40 to 1e20): every
+/// angular rate inside an `Ok` is finite. This test found `omega2 = inf` in an
+/// `Ok` before `rrr.rs` checked its rates.
 fn fuzz_rrr_rates<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError> {
     let pos = rrr::position(&pool.pt::<T>(), pool.x(), &pool.pt(), pool.x(), pool.mode());
     let wild_pos = rrr::RrrPosition {
@@ -935,7 +933,6 @@ proptest! {
     }
 
     #[test]
-    #[ignore = "rrr.rs leaks non-finite angular rates in Ok; see fuzz_rrr_rates"]
     fn wild_inputs_rrr_rates(
         vals in prop::collection::vec(wild(), 40),
         bits in any::<u64>(),

@@ -22,7 +22,8 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, check_det, cross, difference, dot, finite_point, finite_vec, length, perp, plus, positive,
+    abs, check_det, cross, difference, dot, finite, finite_point, finite_vec, length, perp, plus,
+    positive,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -151,8 +152,8 @@ pub fn velocity<T: Real>(
 ) -> Result<RrrVelocity<T>, Error> {
     let det = determinant(pos)?;
     let dv = finite_vec(difference(vb, va), P, "RRR joint velocity")?;
-    let omega1 = dot(&dv, &pos.r2) / det;
-    let omega2 = dot(&dv, &pos.r1) / det;
+    let omega1 = finite(dot(&dv, &pos.r2) / det, P, "RRR omega1")?;
+    let omega2 = finite(dot(&dv, &pos.r1) / det, P, "RRR omega2")?;
     let vc = finite_vec(
         plus(va, relative_velocity(&pos.r1, omega1)),
         P,
@@ -177,8 +178,8 @@ pub fn acceleration<T: Real>(
     let det = determinant(pos)?;
     let da = finite_vec(difference(ab, aa), P, "RRR joint acceleration")?;
     let w = da + pos.r1 * (vel.omega1 * vel.omega1) - pos.r2 * (vel.omega2 * vel.omega2);
-    let alpha1 = dot(&w, &pos.r2) / det;
-    let alpha2 = dot(&w, &pos.r1) / det;
+    let alpha1 = finite(dot(&w, &pos.r2) / det, P, "RRR alpha1")?;
+    let alpha2 = finite(dot(&w, &pos.r1) / det, P, "RRR alpha2")?;
     let ac = finite_vec(
         plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1)),
         P,
