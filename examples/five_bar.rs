@@ -1,5 +1,6 @@
 //! A two-input five-bar robot (m): the end point P over a grid of both crank
-//! angles; where the arms cannot reach, the typed error is printed instead.
+//! angles. With these dimensions every grid pose assembles; a pose that cannot
+//! (shorter distal links, a run-time parameter) prints the typed error instead.
 //!
 //! Run: `cargo run --release --example five_bar` (table) or with `-- --csv`.
 mod common;
