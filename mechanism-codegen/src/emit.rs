@@ -473,7 +473,7 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
         .collect();
     let hidden_pos_types: Vec<TokenStream> = hidden_pos
         .iter()
-        .map(|f| position_field_type(model, plan, f))
+        .map(|f| position_field_type(model, f))
         .collect();
     let (pos_out_names, pos_out_types): (Vec<Ident>, Vec<TokenStream>) =
         pos_out_fields.iter().cloned().unzip();
@@ -653,7 +653,7 @@ fn unzip3<A, B, C>(v: Vec<(A, B, C)>) -> (Vec<A>, Vec<B>, Vec<C>) {
 }
 
 /// The type of a hidden position field.
-fn position_field_type(model: &Model, _plan: &Plan, field: &Ident) -> TokenStream {
+fn position_field_type(model: &Model, field: &Ident) -> TokenStream {
     let f = field.to_string();
     if f.starts_with("axis_") {
         return quote!(::mechanism::Vector2<T>);

@@ -710,13 +710,6 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             names.extend(l.links.iter().map(Ident::to_string));
         }
     }
-    let empty = BTreeMap::new();
-    let literal_scope = NumberScope {
-        consts: &empty,
-        params: &[],
-        names: &names,
-    };
-    let _ = literal_scope;
     // Constants and parameter defaults first (they may appear anywhere). A
     // constant may use the constants written before it. A value that fails is
     // reported and still registered (as 0), so its uses raise no follow-on errors.
