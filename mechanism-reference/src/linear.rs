@@ -36,17 +36,18 @@ pub fn solve(mut a: Vec<Vec<Dd>>, mut b: Vec<Dd>) -> Result<Vec<Dd>, SingularMat
         }
         a.swap(col, pivot_row);
         b.swap(col, pivot_row);
-        for row in col + 1..n {
-            let factor = a[row][col] / a[col][col];
+        let (upper, lower) = a.split_at_mut(col + 1);
+        let pivot = &upper[col];
+        for (offset, row) in lower.iter_mut().enumerate() {
+            let factor = row[col] / pivot[col];
             if factor.hi == 0.0 {
                 continue;
             }
-            for k in col..n {
-                let sub = factor * a[col][k];
-                a[row][k] -= sub;
+            for (entry, &p) in row[col..].iter_mut().zip(&pivot[col..]) {
+                *entry -= factor * p;
             }
             let sub = factor * b[col];
-            b[row] -= sub;
+            b[col + 1 + offset] -= sub;
         }
     }
     let mut x = vec![Dd::ZERO; n];
