@@ -439,3 +439,74 @@ fn stiff_group_defeats_naive_elimination() {
         "naive elimination unexpectedly fine: {naive_err}"
     );
 }
+
+/// The shaper's force analysis in f32 against f64 over a turn, relative to
+/// each quantity's largest magnitude over the turn. f32 rounds at 6e-8
+/// relative; the kinematics (sin/cos, the RPR and RRP closures, the
+/// accelerations) and two chained 6x6 solves amplify that by a few tens
+/// (measured: 1.9e-6), so the bound is 1e-5, about 80 f32 ulps; a term
+/// missing in one precision would be off by its full size, > 1e-2.
+#[test]
+fn shaper_forces_f32_against_f64() {
+    let (s64, s32) = (
+        ShaperForces::<f64>::default(),
+        ShaperForces::<f32>::default(),
+    );
+    let mut rows64 = Vec::new();
+    let mut rows32 = Vec::new();
+    for step in 0..72 {
+        let deg = 5.0 * step as f64;
+        let cut = if (60.0..=250.0).contains(&deg) {
+            -5000.0
+        } else {
+            0.0
+        };
+        let f64s = s64
+            .solve(
+                &ShaperForcesInput {
+                    crank: deg.to_radians(),
+                },
+                &ShaperForcesInput { crank: 2.0 * PI },
+                &ShaperForcesInput { crank: 0.0 },
+                &ShaperForcesLoads { cut },
+            )
+            .unwrap()
+            .forces;
+        let f32s = s32
+            .solve(
+                &ShaperForcesInput {
+                    crank: deg.to_radians() as f32,
+                },
+                &ShaperForcesInput {
+                    crank: 2.0 * std::f32::consts::PI,
+                },
+                &ShaperForcesInput { crank: 0.0 },
+                &ShaperForcesLoads { cut: cut as f32 },
+            )
+            .unwrap()
+            .forces;
+        rows64.push([
+            f64s.drive_crank,
+            f64s.r_ground_link3.x,
+            f64s.r_ground_link3.y,
+            f64s.r_link4_ram_block.x,
+            f64s.r_ground_ram_block.normal,
+        ]);
+        rows32.push([
+            f32s.drive_crank,
+            f32s.r_ground_link3.x,
+            f32s.r_ground_link3.y,
+            f32s.r_link4_ram_block.x,
+            f32s.r_ground_ram_block.normal,
+        ]);
+    }
+    let mut worst: f64 = 0.0;
+    for col in 0..5 {
+        let scale = rows64.iter().fold(0.0f64, |m, r| m.max(r[col].abs()));
+        for (a, b) in rows64.iter().zip(&rows32) {
+            worst = worst.max((a[col] - f64::from(b[col])).abs() / scale);
+        }
+    }
+    println!("shaper forces, f32 against f64: {worst:.2e} of each column's largest value");
+    assert!(worst < 1e-5, "{worst}");
+}
