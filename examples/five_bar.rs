@@ -42,4 +42,5 @@ fn main() {
             }
         }
     }
+    common::plots::write_and_report("five_bar", common::plots::five_bar);
 }

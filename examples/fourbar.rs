@@ -58,4 +58,5 @@ fn main() {
             println!("{}", common::table_row(&row, 14, 4));
         }
     }
+    common::plots::write_and_report("fourbar", common::plots::fourbar);
 }

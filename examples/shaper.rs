@@ -59,4 +59,5 @@ fn main() {
             println!("{}", common::table_row(&row, 11, 6));
         }
     }
+    common::plots::write_and_report("shaper", common::plots::shaper);
 }

@@ -81,4 +81,5 @@ fn main() {
             println!("{}", common::table_row(&row, 11, 3));
         }
     }
+    common::plots::write_and_report("sixbar", common::plots::sixbar);
 }

@@ -53,4 +53,5 @@ fn main() {
             println!("{}", common::table_row(&row, 12, 5));
         }
     }
+    common::plots::write_and_report("slider_crank", common::plots::slider_crank);
 }

@@ -101,10 +101,9 @@ impl fmt::Display for PlotError {
         match self {
             PlotError::NoSeries { plot } => write!(f, "plot `{plot}` has no series"),
             PlotError::EmptySeries { series } => write!(f, "series `{series}` is empty"),
-            PlotError::LengthMismatch { series, xs, ys } => write!(
-                f,
-                "series `{series}` has {xs} x values but {ys} y values"
-            ),
+            PlotError::LengthMismatch { series, xs, ys } => {
+                write!(f, "series `{series}` has {xs} x values but {ys} y values")
+            }
             PlotError::NonFinite { what, index } => {
                 write!(f, "{what}: value {index} is NaN or infinite")
             }

@@ -370,18 +370,20 @@ impl Plot {
             num(pw),
             num(ph)
         );
-        let markers = self.markers.unwrap_or_else(|| {
-            self.series
-                .iter()
-                .all(|s| s.xs.len() <= MARKER_MAX_POINTS)
-        });
+        let markers = self
+            .markers
+            .unwrap_or_else(|| self.series.iter().all(|s| s.xs.len() <= MARKER_MAX_POINTS));
         let _ = writeln!(
             out,
             r#"<g class="series" clip-path="url(#mp-clip-{id})" fill="none" stroke-width="2" stroke-linejoin="round" stroke-linecap="round">"#
         );
         for (k, s) in self.series.iter().enumerate() {
             let (color, dash) = style(k);
-            let pts: Vec<[f64; 2]> = s.xs.iter().zip(&s.ys).map(|(&a, &b)| [px(a), py(b)]).collect();
+            let pts: Vec<[f64; 2]> =
+                s.xs.iter()
+                    .zip(&s.ys)
+                    .map(|(&a, &b)| [px(a), py(b)])
+                    .collect();
             let _ = writeln!(
                 out,
                 r#"<path data-series="{}" stroke="{color}"{dash} d="{}"/>"#,

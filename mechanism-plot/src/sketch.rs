@@ -43,7 +43,7 @@ pub struct Frame {
 }
 
 impl Frame {
-    /// An empty pose; `caption` (may be empty) is shown top right, e.g. `θ2 = 30°`.
+    /// An empty pose; `caption` (may be empty) is shown bottom right, e.g. `θ2 = 30°`.
     pub fn new(caption: &str) -> Self {
         Frame {
             caption: caption.to_string(),
@@ -135,6 +135,7 @@ pub struct Sketch {
     pivots: Vec<(String, Xy)>,
     ground_guides: Vec<(Xy, Xy)>,
     paths: Vec<(String, Vec<Xy>)>,
+    faint: Vec<Vec<Xy>>,
     frames: Vec<Frame>,
 }
 
@@ -182,6 +183,13 @@ impl Sketch {
     /// The path of a tracer point over the input range, drawn under every frame.
     pub fn path(&mut self, name: &str, points: &[Xy]) -> &mut Self {
         self.paths.push((name.to_string(), points.to_vec()));
+        self
+    }
+
+    /// A thin grey reference line (a workspace grid line, a construction line), drawn
+    /// under everything else.
+    pub fn faint_path(&mut self, points: &[Xy]) -> &mut Self {
+        self.faint.push(points.to_vec());
         self
     }
 
@@ -267,6 +275,9 @@ impl Sketch {
         for (name, pts) in &self.paths {
             check(format!("path `{name}`"), pts, &mut all, true)?;
         }
+        for (k, pts) in self.faint.iter().enumerate() {
+            check(format!("faint path {k}"), pts, &mut all, true)?;
+        }
         for (k, f) in self.frames.iter().enumerate() {
             check(format!("frame {k}"), &f.coords(), &mut Vec::new(), false)?;
             for s in &f.shapes {
@@ -335,6 +346,14 @@ impl Sketch {
             r#" font-weight="bold""#,
             &self.title,
         );
+        for pts in &self.faint {
+            let px: Vec<[f64; 2]> = pts.iter().map(|p| view.px(*p)).collect();
+            let _ = writeln!(
+                out,
+                r##"<path class="faint" d="{}" fill="none" stroke="#bbb" stroke-width="1"/>"##,
+                svg::path_data(&px)
+            );
+        }
         // Ground guides: the line, hatching on its right.
         for (a, b) in &self.ground_guides {
             let (pa, pb) = (view.px(*a), view.px(*b));
@@ -357,8 +376,18 @@ impl Sketch {
                 let mut t = 4.0;
                 while t < len {
                     let p = [pa[0] + d[0] * t, pa[1] + d[1] * t];
-                    let q = [p[0] + 9.0 * n[0] - 6.0 * d[0], p[1] + 9.0 * n[1] - 6.0 * d[1]];
-                    let _ = write!(out_h, "M{} {} L{} {} ", num(p[0]), num(p[1]), num(q[0]), num(q[1]));
+                    let q = [
+                        p[0] + 9.0 * n[0] - 6.0 * d[0],
+                        p[1] + 9.0 * n[1] - 6.0 * d[1],
+                    ];
+                    let _ = write!(
+                        out_h,
+                        "M{} {} L{} {} ",
+                        num(p[0]),
+                        num(p[1]),
+                        num(q[0]),
+                        num(q[1])
+                    );
                     t += 8.0;
                 }
                 let _ = writeln!(
@@ -383,7 +412,10 @@ impl Sketch {
         // Supports of ground pivots: a triangle standing on hatched ground.
         for (_, p) in &self.pivots {
             let [x, y] = view.px(*p);
-            let _ = writeln!(out, r##"<g class="ground-pivot" stroke="#222" stroke-width="1.5">"##);
+            let _ = writeln!(
+                out,
+                r##"<g class="ground-pivot" stroke="#222" stroke-width="1.5">"##
+            );
             let _ = writeln!(
                 out,
                 r##"<path d="M{} {} L{} {} L{} {} Z" fill="#e8e8e8"/>"##,
@@ -394,10 +426,23 @@ impl Sketch {
                 num(x + 11.0),
                 num(y + 19.0)
             );
-            let mut h = format!("M{} {} L{} {}", num(x - 18.0), num(y + 19.0), num(x + 18.0), num(y + 19.0));
+            let mut h = format!(
+                "M{} {} L{} {}",
+                num(x - 18.0),
+                num(y + 19.0),
+                num(x + 18.0),
+                num(y + 19.0)
+            );
             for i in 0..6 {
                 let hx = x - 15.0 + 7.0 * i as f64;
-                let _ = write!(h, " M{} {} L{} {}", num(hx), num(y + 19.0), num(hx - 6.0), num(y + 26.0));
+                let _ = write!(
+                    h,
+                    " M{} {} L{} {}",
+                    num(hx),
+                    num(y + 19.0),
+                    num(hx - 6.0),
+                    num(y + 26.0)
+                );
             }
             let _ = writeln!(out, r#"<path class="hatch" d="{h}" fill="none"/>"#);
             let _ = writeln!(out, "</g>");
@@ -577,8 +622,17 @@ impl Sketch {
                 label(out, x, y, name);
             }
         }
+        // In the foot band, right: clear of the title and of the scale bar (left).
         if !f.caption.is_empty() {
-            text(out, view.width - 14.0, 24.0, 13.0, "end", r#" class="caption""#, &f.caption);
+            text(
+                out,
+                view.width - 14.0,
+                view.height - 14.0,
+                13.0,
+                "end",
+                r#" class="caption""#,
+                &f.caption,
+            );
         }
         let _ = writeln!(out, "</g>");
     }

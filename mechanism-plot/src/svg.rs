@@ -6,10 +6,11 @@ use std::fmt::Write;
 pub const FONT: &str = "DejaVu Sans, Helvetica, Arial, sans-serif";
 
 /// Series and link colours: the Okabe-Ito palette (distinguishable with the common colour
-/// vision deficiencies), black moved to the end, then a few darker extras.
+/// vision deficiencies) without its yellow, which is too pale on white, then brown, grey
+/// and a dark yellow.
 pub const PALETTE: [&str; 10] = [
-    "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#F0E442", "#000000",
-    "#8C564B", "#7F7F7F",
+    "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000", "#8C564B",
+    "#7F7F7F", "#B59F00",
 ];
 
 /// Dash patterns paired with the palette's second cycle, so that series 11.. still differ.

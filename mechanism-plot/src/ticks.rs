@@ -66,6 +66,7 @@ pub fn nice_ticks(lo: f64, hi: f64, degrees: bool, expand: bool, step: Option<f6
     let span = hi - lo;
     let step = match step {
         Some(s) if s.is_finite() && s > 0.0 && span / s <= 1000.0 => s,
+        _ if !expand => aligned_step(lo, hi, degrees).unwrap_or_else(|| auto_step(span, degrees)),
         _ => auto_step(span, degrees),
     };
     if expand {
@@ -96,6 +97,32 @@ pub fn nice_ticks(lo: f64, hi: f64, degrees: bool, expand: bool, step: Option<f6
         exponent,
         decimals,
     }
+}
+
+/// For an axis that is not widened: the smallest candidate step of which both ends are
+/// multiples, giving 3 to [`MAX_INTERVALS`] intervals (40..55 -> 5, so that the last
+/// tick sits on the end of the axis).
+fn aligned_step(lo: f64, hi: f64, degrees: bool) -> Option<f64> {
+    let span = hi - lo;
+    let mag = 10f64.powf((span / MAX_INTERVALS).log10().floor());
+    let mut cands: Vec<f64> = [mag, 10.0 * mag, 100.0 * mag]
+        .iter()
+        .flat_map(|m| [1.0, 2.0, 5.0].map(|f| f * m))
+        .collect();
+    if degrees && span >= 30.0 {
+        cands.extend([15.0, 30.0, 45.0, 90.0, 180.0]);
+    }
+    let multiple =
+        |v: f64, s: f64| ((v / s) - (v / s).round()).abs() < SLACK * (1.0 + (v / s).abs());
+    cands
+        .into_iter()
+        .filter(|&s| {
+            let n = span / s;
+            (3.0 - SLACK..=MAX_INTERVALS + SLACK).contains(&n) && multiple(lo, s) && multiple(hi, s)
+        })
+        .fold(None, |best: Option<f64>, s| {
+            Some(best.map_or(s, |b| b.min(s)))
+        })
 }
 
 /// The smallest candidate step giving at most [`MAX_INTERVALS`] intervals over `span`.
@@ -144,6 +171,18 @@ mod tests {
         assert_eq!(t.values.last(), Some(&360.0));
         // The same span without the degree candidates takes 50.
         assert_eq!(nice_ticks(0.0, 360.0, false, false, None).step, 50.0);
+    }
+
+    #[test]
+    fn unwidened_axes_end_on_a_tick() {
+        let t = nice_ticks(40.0, 55.0, true, false, None);
+        assert_eq!(t.step, 5.0);
+        assert_eq!(t.values.last(), Some(&55.0));
+        let t = nice_ticks(60.0, 150.0, true, false, None);
+        assert_eq!(t.step, 15.0);
+        // No step fits both ends: the automatic step, ticks inside.
+        let t = nice_ticks(0.1, 0.73, false, false, None);
+        assert!(t.values.iter().all(|v| (0.1..=0.73).contains(v)));
     }
 
     #[test]
