@@ -3,6 +3,9 @@
 //!
 //! Run: `cargo run --release --example fourbar` (table) or with `-- --csv`
 //! (CSV only, 17 significant digits).
+//!
+//! Also writes SVG pictures (kinematics, a drawing, an animation) to
+//! `target/plots/fourbar/` and says where on stderr (`docs/plots.md`).
 mod common;
 use common::scenes::{FourBar, FourBarInput};
 use mechanism::geometry::angle_deg_0_360;

@@ -2,6 +2,9 @@
 //! crank pivot, 3000 rpm, a full turn in steps of 10 deg.
 //!
 //! Run: `cargo run --release --example slider_crank` (table) or with `-- --csv`.
+//!
+//! Also writes SVG pictures (kinematics, a drawing, an animation) to
+//! `target/plots/slider_crank/` and says where on stderr (`docs/plots.md`).
 mod common;
 use common::scenes::{SliderCrank, SliderCrankInput};
 use mechanism::geometry::{angle_deg_0_360, unit};
