@@ -28,7 +28,7 @@ struct Expect {
     frames: usize,
 }
 
-const SCENES: [Expect; 5] = [
+const SCENES: [Expect; 6] = [
     // O2, O4 ground; A, B moving; link3 a plate A-B-P.
     Expect {
         name: "fourbar",
@@ -65,6 +65,16 @@ const SCENES: [Expect; 5] = [
         make: common::plots::slider_crank,
         panels: 6,
         moving_joints: 2,
+        ground_joints: 1,
+        sliders: 1,
+        frames: 90,
+    },
+    // A ground; B moving; block 2 in the slot (the forces figure comes first).
+    Expect {
+        name: "sine_mechanism",
+        make: common::plots::sine_mechanism,
+        panels: 2,
+        moving_joints: 1,
         ground_joints: 1,
         sliders: 1,
         frames: 90,
@@ -266,4 +276,25 @@ fn the_coupler_point_rides_its_path() {
         );
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The shaper's force figure (written after the shaper's own three pictures):
+/// well-formed, inside its view, two panels (torque; four reaction series).
+#[test]
+fn the_shaper_force_figure_is_sound() {
+    let dir = out_dir("shaper_forces");
+    let files = common::plots::shaper_forces(&dir).unwrap();
+    assert_eq!(files.len(), 4, "the shaper's pictures and forces.svg");
+    let text = std::fs::read_to_string(&files[3]).unwrap();
+    let (doc, vb) = parse(&text);
+    assert_inside(&doc, vb);
+    let ps = panels(&doc);
+    assert_eq!(ps.len(), 2);
+    assert_eq!(ps[0].series.len(), 1);
+    assert_eq!(ps[1].series.len(), 4);
+    for p in &ps {
+        for path in &p.paths {
+            assert!(path.len() >= 100, "a curve over the turn");
+        }
+    }
 }

@@ -538,3 +538,133 @@ fn save(dir: &Path, fig: Figure, sk: &Sketch, pose: usize) -> Result<Vec<PathBuf
     sk.write_animation(CYCLE_S, &files[2])?;
     Ok(files.to_vec())
 }
+
+/// Sine mechanism of seed 000, problem 4-23 (g = 10, as the document): the driving
+/// torque and the reactions over a turn (`forces.svg`), a drawing and an animation.
+pub fn sine_mechanism(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
+    let m = SineMechanism::<f64>::default();
+    let deg = grid(0.0, 360.0, 180);
+    let mut cols: [Vec<f64>; 5] = Default::default();
+    let mut poses = Vec::new();
+    for &d in &deg {
+        let s = m
+            .solve(
+                &SineMechanismInput {
+                    phi1: d.to_radians(),
+                },
+                &SineMechanismInput { phi1: 10.0 },
+                &SineMechanismInput { phi1: 0.0 },
+            )
+            .expect("the sine mechanism is regular over the whole turn");
+        let (p, f) = (&s.position, &s.forces);
+        let m43 = f.r_ground_link3.wrench_about(&p.B, &p.Q).moment;
+        for (c, x) in cols.iter_mut().zip([
+            f.drive_phi1,
+            f.r_link1_block2.x,
+            f.r_link1_block2.y,
+            f.r_block2_link3.force.y,
+            m43,
+        ]) {
+            c.push(x);
+        }
+        poses.push(s.position);
+    }
+    let x = ("crank angle φ1", "deg");
+    let fig = Figure::new("Sine mechanism of seed 000 (4-23): crank 10 rad/s, Fr = 400 N")
+        .panel(
+            Plot::new("Driving torque on the crank and guide couple on link 3")
+                .x_axis(x.0, x.1)
+                .y_axis("moment", "N m")
+                .series("Mb (ccw +)", &deg, &cols[0])
+                .series("m43 (about S3)", &deg, &cols[4]),
+        )
+        .panel(
+            Plot::new("Reactions")
+                .x_axis(x.0, x.1)
+                .y_axis("force", "N")
+                .series("R12x (crank on block)", &deg, &cols[1])
+                .series("R12y (crank on block)", &deg, &cols[2])
+                .series("R23y (block on link 3)", &deg, &cols[3]),
+        );
+    let mut sk = Sketch::new("Sine mechanism, seed 000 (4-23)", "m");
+    sk.ground_pivot("A", [0.0, 0.0])
+        .ground_guide([0.0, -0.22], [0.0, -0.15])
+        .ground_guide([0.0, 0.15], [0.0, 0.22]);
+    let path: Vec<Xy> = poses.iter().map(|p| xy(&p.B)).collect();
+    sk.path("B", &path);
+    for (p, d) in poses.iter().zip(&deg).step_by(2).take(90) {
+        let q = xy(&p.Q);
+        sk.frame(
+            Frame::new(&caption("φ1", *d))
+                .link("link3", &[[q[0], q[1] - 0.2], [q[0], q[1] + 0.2]])
+                .link("slot", &[[q[0] - 0.13, q[1]], [q[0] + 0.13, q[1]]])
+                .link("link1", &[[0.0, 0.0], xy(&p.B)])
+                .slider("block2", xy(&p.B), 0.0)
+                .joint("B", xy(&p.B)),
+        );
+    }
+    let files = [
+        dir.join("forces.svg"),
+        dir.join("drawing.svg"),
+        dir.join("animation.svg"),
+    ];
+    fig.write(&files[0])?;
+    sk.write_drawing(15, &files[1])?;
+    sk.write_animation(CYCLE_S, &files[2])?;
+    Ok(files.to_vec())
+}
+
+/// The shaper with masses, gravity and a 5 kN cutting force on the forward stroke at
+/// 60 rpm: driving torque and reactions (`forces.svg`), plus the shaper's drawing and
+/// animation (the same linkage as `shaper`).
+pub fn shaper_forces(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
+    let m = ShaperForces::<f64>::default();
+    let deg = grid(0.0, 360.0, 360);
+    let mut cols: [Vec<f64>; 5] = Default::default();
+    for &d in &deg {
+        let input = ShaperForcesInput {
+            crank: d.to_radians(),
+        };
+        let p = m.position(&input).expect("the shaper assembles");
+        let rates = ShaperForcesInput { crank: 2.0 * PI };
+        let v = m.velocity(&p, &rates).expect("regular");
+        let a = m
+            .acceleration(&p, &v, &ShaperForcesInput { crank: 0.0 })
+            .expect("regular");
+        let cut = if v.s_ram > 0.0 { -5000.0 } else { 0.0 };
+        let f = m
+            .forces(&p, &v, &a, &ShaperForcesLoads { cut })
+            .expect("regular force systems");
+        for (c, x) in cols.iter_mut().zip([
+            f.drive_crank,
+            f.r_ground_link3.x,
+            f.r_ground_link3.y,
+            f.r_ground_ram_block.normal,
+            cut,
+        ]) {
+            c.push(x);
+        }
+    }
+    let x = ("crank angle", "deg");
+    let fig = Figure::new("Shaper with masses and gravity, 60 rpm, 5 kN cut on the forward stroke")
+        .panel(
+            Plot::new("Driving torque")
+                .x_axis(x.0, x.1)
+                .y_axis("torque", "N m")
+                .series("T (ccw +)", &deg, &cols[0]),
+        )
+        .panel(
+            Plot::new("Reactions")
+                .x_axis(x.0, x.1)
+                .y_axis("force", "N")
+                .series("ground on rocker at C, x", &deg, &cols[1])
+                .series("ground on rocker at C, y", &deg, &cols[2])
+                .series("guide on ram, normal", &deg, &cols[3])
+                .series("cutting force along the guide", &deg, &cols[4]),
+        );
+    let mut files = shaper(dir)?;
+    let forces = dir.join("forces.svg");
+    fig.write(&forces)?;
+    files.push(forces);
+    Ok(files)
+}
