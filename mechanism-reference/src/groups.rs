@@ -177,11 +177,7 @@ pub fn rrp_position(a: V, l: f64, g: &Line, offset: f64, ahead: bool) -> Option<
 /// RRP rates on a fixed guide: `omega1 perp(C - A) - s_dot dir = -vA`, solved
 /// for `(omega1, s_dot)`.
 pub fn rrp_rates(a: V, c: V, g: &Line, va: V) -> Option<(Dd, Dd)> {
-    solve2(
-        perp(sub(c, a)),
-        scale(-Dd::ONE, g.dir),
-        scale(-Dd::ONE, va),
-    )
+    solve2(perp(sub(c, a)), scale(-Dd::ONE, g.dir), scale(-Dd::ONE, va))
 }
 
 /// RRP accelerations on a fixed guide: `alpha1 perp(r1) - s_ddot dir =
@@ -221,7 +217,7 @@ pub fn rpr_position(a: V, b: V, offset: f64, positive: bool) -> Option<(V, Dd)> 
 /// RPR rates: `s_dot u + omega perp(A - B) = vA - vB`, solved for
 /// `(omega, s_dot)`.
 pub fn rpr_rates(a: V, b: V, u: V, va: V, vb: V) -> Option<(Dd, Dd)> {
-    solve2(perp(sub(a, b)), u, sub(va, vb)).map(|(omega, s_dot)| (omega, s_dot))
+    solve2(perp(sub(a, b)), u, sub(va, vb))
 }
 
 /// PRP closure: `C = g1.at(s1, o1) = g2.at(s2, o2)`; returns `(C, s1, s2)`.

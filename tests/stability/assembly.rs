@@ -17,8 +17,8 @@
 //! the same `c`.
 
 use crate::common::*;
-use mechanism::dyad::{rpr, rrp, rrr};
 use mechanism::driver::actuator;
+use mechanism::dyad::{rpr, rrp, rrr};
 use mechanism::guide::Line;
 use mechanism::{Error, Fault, Mode, Point2, Primitive, Vector2};
 use mechanism_reference::groups as refg;

@@ -53,7 +53,11 @@ fn bad_runtime_parameters_are_typed_errors() {
             }
             let e = m.position(&input).expect_err("bad length");
             assert!(
-                if non_finite { is_non_finite(&e) } else { is_non_positive(&e) },
+                if non_finite {
+                    is_non_finite(&e)
+                } else {
+                    is_non_positive(&e)
+                },
                 "four-bar length #{which} = {x}: {e}"
             );
             assert!(!e.group.is_empty(), "error names its group: {e}");
@@ -69,16 +73,19 @@ fn bad_runtime_parameters_are_typed_errors() {
                 ..SliderCrank::default()
             };
             assert!(is_non_finite(
-                &m.position(&SliderCrankInput { theta: 0.3 }).expect_err("bad offset")
+                &m.position(&SliderCrankInput { theta: 0.3 })
+                    .expect_err("bad offset")
             ));
             // Inputs.
             let m = FourBar::<f64>::default();
             assert!(is_non_finite(
-                &m.position(&FourBarInput { theta2: x }).expect_err("bad angle")
+                &m.position(&FourBarInput { theta2: x })
+                    .expect_err("bad angle")
             ));
             let p = m.position(&input).unwrap();
             assert!(is_non_finite(
-                &m.velocity(&p, &FourBarInput { theta2: x }).expect_err("bad speed")
+                &m.velocity(&p, &FourBarInput { theta2: x })
+                    .expect_err("bad speed")
             ));
             let v = m.velocity(&p, &input).unwrap();
             assert!(is_non_finite(
@@ -97,7 +104,11 @@ fn bad_runtime_parameters_are_typed_errors() {
                 .position(&SliderCrankInput { theta: 0.3 })
                 .expect_err("bad length");
             assert!(
-                if non_finite { is_non_finite(&e) } else { is_non_positive(&e) },
+                if non_finite {
+                    is_non_finite(&e)
+                } else {
+                    is_non_positive(&e)
+                },
                 "slider-crank length #{which} = {x}: {e}"
             );
         }

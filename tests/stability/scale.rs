@@ -43,9 +43,7 @@ fn fourbar<T: Real>(s: f64, theta: f64) -> (Vec<f64>, Vec<f64>) {
     let lengths = [
         p.A.x, p.A.y, p.B.x, p.B.y, v.A.x, v.A.y, v.B.x, v.B.y, a.A.x, a.A.y, a.B.x, a.B.y,
     ];
-    let angles = [
-        p.link3, p.link4, v.link3, v.link4, a.link3, a.link4,
-    ];
+    let angles = [p.link3, p.link4, v.link3, v.link4, a.link3, a.link4];
     (
         lengths.iter().map(|x| x.as_f64() / s).collect(),
         angles.iter().map(|x| x.as_f64()).collect(),
@@ -108,7 +106,12 @@ fn scale_invariance_powers_of_ten_few_ulp() {
     let (l64, a64) = powers_of_ten::<f64>();
     let (l32, a32) = powers_of_ten::<f32>();
     println!("powers of ten: f64 lengths {l64:.2} eps, angles {a64:.2} eps; f32 lengths {l32:.2} eps, angles {a32:.2} eps");
-    for (name, w) in [("f64 lengths", l64), ("f64 angles", a64), ("f32 lengths", l32), ("f32 angles", a32)] {
+    for (name, w) in [
+        ("f64 lengths", l64),
+        ("f64 angles", a64),
+        ("f32 lengths", l32),
+        ("f32 angles", a32),
+    ] {
         assert!(w <= 32.0, "{name}: {w} eps");
     }
 }

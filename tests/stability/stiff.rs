@@ -62,12 +62,25 @@ pub fn stiff_case(angle: f64) -> StiffCase {
     let c = P::new(300.0, 400.0);
     let b = P::new(900.0, 400.0 + 600.0 * angle.tan());
     let g = V::new(0.0, -9810.0); // mm/s^2
-    // Link 1: 1e6 kg, J = 1e11 kg mm^2; link 2: 1e-6 kg, J = 10 kg mm^2 * 1e-6.
-    let (m1, j1, g1, ag1, al1) = (1e6, 1e11, P::new(150.0, 200.0), V::new(-2500.0, 1200.0), 3.0);
-    let (m2, j2, g2, ag2, al2) = (1e-6, 1e-5, P::new(600.0, 400.0), V::new(4000.0, -700.0), -2.0);
+                                  // Link 1: 1e6 kg, J = 1e11 kg mm^2; link 2: 1e-6 kg, J = 10 kg mm^2 * 1e-6.
+    let (m1, j1, g1, ag1, al1) = (
+        1e6,
+        1e11,
+        P::new(150.0, 200.0),
+        V::new(-2500.0, 1200.0),
+        3.0,
+    );
+    let (m2, j2, g2, ag2, al2) = (
+        1e-6,
+        1e-5,
+        P::new(600.0, 400.0),
+        V::new(4000.0, -700.0),
+        -2.0,
+    );
     let (fx, fp) = (V::new(1.0, -2.0), P::new(800.0, 0.0));
     let load1 = inertia_and_gravity(m1, j1, &g1, &ag1, al1, Some(&g), &c);
-    let load2 = inertia_and_gravity(m2, j2, &g2, &ag2, al2, Some(&g), &c) + Wrench::force_at(&fx, &fp, &c);
+    let load2 =
+        inertia_and_gravity(m2, j2, &g2, &ag2, al2, Some(&g), &c) + Wrench::force_at(&fx, &fp, &c);
     let r = force::rrr::reactions(&a, &b, &c, &load1, &load2).expect("regular pose");
     let ours = [r.a.x, r.a.y, r.b.x, r.b.y, r.c.x, r.c.y];
 
@@ -79,7 +92,8 @@ pub fn stiff_case(angle: f64) -> StiffCase {
     // fp; combine into one force through G2 plus a couple.
     let fxd = refg::v(fx.x, fx.y);
     let f2 = refg::add(f2a, fxd);
-    let m2c = -(dd(j2) * dd(al2)) + refg::cross(refg::sub(refg::v(fp.x, fp.y), refg::v(g2.x, g2.y)), fxd);
+    let m2c =
+        -(dd(j2) * dd(al2)) + refg::cross(refg::sub(refg::v(fp.x, fp.y), refg::v(g2.x, g2.y)), fxd);
     let exact = refg::rrr_reactions(
         refg::v(a.x, a.y),
         refg::v(b.x, b.y),
@@ -128,7 +142,11 @@ pub fn stiff_case(angle: f64) -> StiffCase {
     StiffCase {
         angle,
         min_pivot_ratio: r.min_pivot_ratio,
-        errors: [Some(err(&ours)), naive.map(|x| err(&x)), Some(err(&pivoted))],
+        errors: [
+            Some(err(&ours)),
+            naive.map(|x| err(&x)),
+            Some(err(&pivoted)),
+        ],
     }
 }
 
@@ -167,7 +185,10 @@ fn stiff_sweep_scaled_pivoting_against_naive() {
         );
         worst_ours = worst_ours.max(ours);
         if angle == 0.0 {
-            assert!(naive.is_none(), "naive elimination should meet a zero pivot");
+            assert!(
+                naive.is_none(),
+                "naive elimination should meet a zero pivot"
+            );
         } else if angle <= 1e-9 {
             naive_small_angle = naive_small_angle.max(naive.unwrap_or(f64::INFINITY));
         }
@@ -194,8 +215,24 @@ fn per_unit_mass<T: Real>(m: f64) -> [f64; 6] {
     let (a, b, c) = (p(0.0, 0.0), p(0.9, 0.1), p(0.3, 0.4));
     let g = v(0.0, -9.81);
     let mt = T::lit(m);
-    let load1 = inertia_and_gravity(mt, T::lit(m * 0.01), &p(0.15, 0.2), &v(-2.5, 1.2), T::lit(3.0), Some(&g), &c);
-    let load2 = inertia_and_gravity(mt, T::lit(m * 0.01), &p(0.6, 0.25), &v(4.0, -0.7), T::lit(-2.0), Some(&g), &c);
+    let load1 = inertia_and_gravity(
+        mt,
+        T::lit(m * 0.01),
+        &p(0.15, 0.2),
+        &v(-2.5, 1.2),
+        T::lit(3.0),
+        Some(&g),
+        &c,
+    );
+    let load2 = inertia_and_gravity(
+        mt,
+        T::lit(m * 0.01),
+        &p(0.6, 0.25),
+        &v(4.0, -0.7),
+        T::lit(-2.0),
+        Some(&g),
+        &c,
+    );
     let r = force::rrr::reactions(&a, &b, &c, &load1, &load2).expect("regular pose");
     [r.a.x, r.a.y, r.b.x, r.b.y, r.c.x, r.c.y].map(|x| x.as_f64() / mt.as_f64())
 }

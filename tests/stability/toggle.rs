@@ -58,7 +58,8 @@ fn check(
     match got {
         Ok((x, cond)) => {
             assert!(x.iter().all(|v| v.is_finite()) && cond.is_finite());
-            let (r0, r1) = reference.unwrap_or_else(|| panic!("{what}: Ok at an exactly singular pose"));
+            let (r0, r1) =
+                reference.unwrap_or_else(|| panic!("{what}: Ok at an exactly singular pose"));
             let size = r0.abs().to_f64().max(r1.abs().to_f64());
             let err = (Dd::from(x[0]) - r0)
                 .abs()
@@ -299,7 +300,8 @@ fn actuator_rates_near_dead_centre() {
                 refg::sub(dvv(&vb), dvv(&va)),
                 refg::scale(Dd::from(ldot) / n2, r2d),
             );
-            let reference = refg::solve2(refg::perp(r1d), refg::scale(-Dd::ONE, refg::perp(r2d)), rhs);
+            let reference =
+                refg::solve2(refg::perp(r1d), refg::scale(-Dd::ONE, refg::perp(r2d)), rhs);
             worst = worst.max(check("actuator", got, reference, kd));
         }
     }
@@ -345,7 +347,9 @@ fn rrr_end_to_end_rates_near_toggle() {
             worst_delta = worst_delta.max(err * delta / EPS);
         }
     }
-    println!("RRR end to end: max err kappa^2 / eps = {worst:.3}, err delta / eps = {worst_delta:.3}");
+    println!(
+        "RRR end to end: max err kappa^2 / eps = {worst:.3}, err delta / eps = {worst_delta:.3}"
+    );
     // At the edge exactly (B = (2, 0) from the origin, l1 + l2 = 2): Singular.
     let pos = rrr::position(&p(0.0, 0.0), 1.25, &p(2.0, 0.0), 0.75, Mode::Plus).unwrap();
     match rrr::velocity(&pos, Some(&va), None) {
