@@ -180,7 +180,7 @@ pub fn inputs(model: &Model, errors: &mut Errors) -> Vec<Input> {
             Arg::From(i) => i.span(),
         };
         let show = |x: f64| show_value(x, angle);
-        if !(lo < hi) || !lo.is_finite() || !hi.is_finite() {
+        if lo >= hi || !lo.is_finite() || !hi.is_finite() {
             errors.push(
                 span,
                 format!(
@@ -645,6 +645,12 @@ fn explain(model: &Model, stmt_index: usize, fault: &Fault, at: &str) -> String 
             show_num(*miss),
             show_num(*reach)
         ),
+        (Kind::Prp { g1, g2, .. }, Fault::Singular { .. }) => format!(
+            "at {at}, guides `{g1}` and `{g2}` are parallel: the joint is at infinity"
+        ),
+        (Kind::Rpp { guide, .. }, Fault::Singular { .. }) => format!(
+            "at {at}, the slot is parallel to guide `{guide}`: the joint is at infinity"
+        ),
         (_, fault) => format!("at {at}: {fault}"),
     }
 }
@@ -721,6 +727,10 @@ fn grashof(model: &Model, plan: &Plan, stmt_index: usize) -> Option<String> {
         return None;
     })
 }
+
+/// One sweep event: group, lower corner (or the singular input), upper
+/// corner, fault, count, `true` for a singular position.
+type Found = (usize, Vec<f64>, Vec<f64>, Fault, u32, bool);
 
 /// The expansion-time check's findings.
 pub struct Findings {
@@ -817,7 +827,7 @@ pub fn expansion_check(
             .map(|(k, i)| (i.name.to_string(), k))
             .collect(),
     };
-    let mut events: Vec<(usize, Vec<f64>, Vec<f64>, Fault, u32, bool)> = Vec::new();
+    let mut events: Vec<Found> = Vec::new();
     let tol = Tolerances::for_eps(f64::EPSILON);
     if inputs.len() == 1 {
         sweep::sweep_1d(
@@ -880,8 +890,7 @@ pub fn expansion_check(
         }
     );
     // Errors, one per failing group (all its intervals in one message).
-    let mut by_group: BTreeMap<usize, Vec<&(usize, Vec<f64>, Vec<f64>, Fault, u32, bool)>> =
-        BTreeMap::new();
+    let mut by_group: BTreeMap<usize, Vec<&Found>> = BTreeMap::new();
     for e in events.iter().filter(|e| !e.5) {
         by_group.entry(e.0).or_default().push(e);
     }
@@ -894,7 +903,13 @@ pub fn expansion_check(
             let name = &input.name;
             let intervals: Vec<String> = list
                 .iter()
-                .map(|e| show_interval(e.1[0], e.2[0], input.angle))
+                .map(|e| {
+                    if e.2[0] - e.1[0] <= 1e-9 * (ranges[0].hi - ranges[0].lo) {
+                        format!("at {}", show_value(0.5 * (e.1[0] + e.2[0]), input.angle))
+                    } else {
+                        format!("in {}", show_interval(e.1[0], e.2[0], input.angle))
+                    }
+                })
                 .collect();
             let worst = list
                 .iter()
@@ -942,7 +957,7 @@ pub fn expansion_check(
                 .map(|&(a, b)| {
                     // A turn's interval shown with its middle in (-180, 180] deg.
                     if input.angle && r.periodic {
-                        let k = ((0.5 * (a + b)) / (2.0 * PI)).round();
+                        let k = ((0.5 * (a + b) - PI) / (2.0 * PI)).ceil();
                         (a - 2.0 * PI * k, b - 2.0 * PI * k)
                     } else {
                         (a, b)
@@ -986,7 +1001,7 @@ pub fn expansion_check(
                 )
             };
             format!(
-                "cannot assemble group `{}` ({kind}) for {name} in {} (checked over {over})\n  = note: {why}\n  = help: {grashof}{where_ok}",
+                "cannot assemble group `{}` ({kind}) for {name} {} (checked over {over})\n  = note: {why}\n  = help: {grashof}{where_ok}",
                 stmt.name,
                 intervals.join(" and "),
             )
@@ -1028,26 +1043,36 @@ pub fn expansion_check(
             continue;
         }
         let kind = group_kind(&stmt.kind).unwrap_or("group");
-        let at: Vec<String> = list
+        let mut at1: Vec<f64> = list
             .iter()
             .map(|(at, _)| {
-                if inputs.len() == 1 {
-                    // To 1e-4 (deg): the determinant is exactly zero over a
-                    // rounding band about a fold, where the search may stop.
-                    let r = ranges[0];
-                    let x = if r.periodic && at[0] >= r.hi - 1e-9 * (r.hi - r.lo) {
-                        at[0] - (r.hi - r.lo)
-                    } else {
-                        at[0]
-                    };
-                    let x = if inputs[0].angle { x.to_degrees() } else { x };
+                // To 1e-4 (deg): the determinant is exactly zero over a
+                // rounding band about a fold, where the search may stop.
+                let r = ranges[0];
+                let unit = if inputs[0].angle { 180.0 / PI } else { 1.0 };
+                let x = (at[0] * unit * 1e4).round() / 1e4;
+                if r.periodic && x >= r.hi * unit {
+                    x - (r.hi - r.lo) * unit
+                } else {
+                    x
+                }
+            })
+            .collect();
+        at1.sort_by(f64::total_cmp);
+        let at: Vec<String> = if inputs.len() == 1 {
+            at1.iter()
+                .map(|x| {
                     format!(
                         "{} = {}{}",
                         inputs[0].name,
-                        show_num((x * 1e4).round() / 1e4),
+                        show_num(*x),
                         if inputs[0].angle { " deg" } else { "" }
                     )
-                } else {
+                })
+                .collect()
+        } else {
+            list.iter()
+                .map(|(at, _)| {
                     format!(
                         "({}, {}) = ({}, {})",
                         inputs[0].name,
@@ -1055,9 +1080,9 @@ pub fn expansion_check(
                         show_value(at[0], inputs[0].angle),
                         show_value(at[1], inputs[1].angle)
                     )
-                }
-            })
-            .collect();
+                })
+                .collect()
+        };
         let count = if inputs.len() == 2 {
             format!(" ({} sign changes on the grid)", list[0].1)
         } else {
@@ -1156,7 +1181,7 @@ pub fn emit_check(model: &Model, plan: &Plan, inputs: &[Input], summary: &str) -
             let ranges = [#(#ranges),*];
             let mut report = ::mechanism::sweep::Report::new([#(#input_strs),*], ranges, [#(#group_names),*]);
             let tol = ::mechanism::sweep::Tolerances::for_eps(<T as ::mechanism::Real>::as_f64(<T as ::mechanism::Real>::eps()));
-            let eval = |q: &[f64; #d]| -> ::mechanism::sweep::Outcome<#g> {
+            let eval = |q: &[::core::primitive::f64; #d]| -> ::mechanism::sweep::Outcome<#g> {
                 let input = #input_ty { #(#input_names: <T as ::mechanism::Real>::lit(q[#ks]),)* };
                 match self.position(&input) {
                     ::core::result::Result::Ok(pos) => ::core::result::Result::Ok([#(#dets),*]),

@@ -383,7 +383,7 @@ impl Parse for Definition {
         let self_test = docs
             .iter()
             .find(|a| a.path().is_ident("self_test"))
-            .map(|a| syn::spanned::Spanned::span(a));
+            .map(syn::spanned::Spanned::span);
         docs.retain(|a| !a.path().is_ident("self_test"));
         let vis = input.parse()?;
         let name = input.parse()?;

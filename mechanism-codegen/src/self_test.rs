@@ -587,6 +587,11 @@ pub fn emit(
         #[allow(non_snake_case, unused_variables, unused_imports, dead_code, clippy::all)]
         mod #module {
             use super::*;
+            // Explicit imports win over the glob: the tests work where the
+            // user's module shadows prelude names.
+            use ::core::option::Option::{self, None, Some};
+            use ::core::primitive::{f32, f64};
+            use ::core::result::Result::{self, Err, Ok};
             use ::mechanism::Real as _;
 
             const LO: [f64; #d] = [#(#lo),*];

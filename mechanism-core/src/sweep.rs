@@ -24,9 +24,10 @@
 //!
 //! Singular positions, between neighbours that both assemble: a change of
 //! sign of a group's scaled determinant is bisected; a sample where its
-//! magnitude is a local minimum (no sign change) is refined by a golden-section
-//! search, and counts as singular when the minimum is below
-//! `Tolerances::singular`. (For the groups with an assembly mode the
+//! magnitude is a local minimum (no sign change), and could reach zero if the
+//! determinant is V-shaped there (`f1 - max(f0 - f1, f2 - f1)` below the
+//! threshold), is refined by a golden-section search, and counts as singular
+//! when the minimum is below `Tolerances::singular`. (For the groups with an assembly mode the
 //! determinant keeps its sign and touches zero at a toggle, so the minimum
 //! test is the one that finds them.)
 //!
@@ -157,6 +158,17 @@ fn abs(x: f64) -> f64 {
     }
 }
 
+/// Whether a local minimum `f1` of `|det|` between neighbours `f0`, `f2`
+/// (equal steps) may dip below the singular threshold: the steepest V through
+/// the three samples, `f1 - max(f0 - f1, f2 - f1)`, is its lowest possible
+/// value if the determinant is no steeper than its samples show. A smooth
+/// minimum well above zero (or a constant determinant's rounding noise) is
+/// not refined.
+fn may_reach(f0: f64, f1: f64, f2: f64, tol: &Tolerances) -> bool {
+    let rise = if f0 > f2 { f0 - f1 } else { f2 - f1 };
+    f1 - rise < tol.singular
+}
+
 /// At most this many halvings (a width ratio of 2^-80 is below any tolerance).
 const MAX_STEPS: usize = 80;
 
@@ -173,7 +185,7 @@ pub fn sweep_1d<const G: usize>(
 ) {
     let n = if samples < 2 { 2 } else { samples };
     let width = range.hi - range.lo;
-    if !(width > 0.0) || !width.is_finite() {
+    if width.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) || !width.is_finite() {
         return;
     }
     let step = width / n as f64;
@@ -328,7 +340,11 @@ pub fn sweep_1d<const G: usize>(
                     });
                 } else if let Some((x2, d2)) = prev2 {
                     let m = abs(dp[g]);
-                    if m <= abs(d2[g]) && m < abs(dc[g]) && !changed[g] {
+                    if m <= abs(d2[g])
+                        && m < abs(dc[g])
+                        && !changed[g]
+                        && may_reach(abs(d2[g]), m, abs(dc[g]), tol)
+                    {
                         let (q, det) = golden(&mut f, g, x2, x);
                         if det < tol.singular {
                             report(Event::Singular {
@@ -354,7 +370,11 @@ pub fn sweep_1d<const G: usize>(
         if let (Some((x2, d2)), Ok(dn), Some(d1)) = (prev2, &prev.1, second) {
             for g in 0..G {
                 let m = abs(dn[g]);
-                if m <= abs(d2[g]) && m < abs(d1[g]) && !changed[g] {
+                if m <= abs(d2[g])
+                    && m < abs(d1[g])
+                    && !changed[g]
+                    && may_reach(abs(d2[g]), m, abs(d1[g]), tol)
+                {
                     let (q, det) = golden(&mut f, g, x2, range.hi + step);
                     if det < tol.singular {
                         let q = if q >= range.hi { q - width } else { q };
@@ -425,6 +445,9 @@ pub fn sweep_1d<const G: usize>(
     }
 }
 
+/// Failing grid points of one group: bounding box, first fault, count.
+type Box2 = ([f64; 2], [f64; 2], Fault, u32);
+
 /// Sweeps two inputs over the grid `(samples + 1)^2` of the box `ranges`; see
 /// the module documentation. At most one `Fails` and one `Singular` event per
 /// group, in group order.
@@ -442,7 +465,7 @@ pub fn sweep_2d<const G: usize>(
             r.lo + (r.hi - r.lo) / n as f64 * i as f64
         }
     };
-    let mut fails: [Option<([f64; 2], [f64; 2], Fault, u32)>; G] = [None; G];
+    let mut fails: [Option<Box2>; G] = [None; G];
     let mut sing: [Option<([f64; 2], f64, u32)>; G] = [None; G];
     for i in 0..=n {
         let x = at(&ranges[0], i);
