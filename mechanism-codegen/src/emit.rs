@@ -12,13 +12,13 @@ use std::collections::BTreeSet;
 use syn::Ident;
 
 /// Which names the user wants in the output structs.
-struct Outputs {
-    points: Vec<Ident>,
-    links: Vec<Ident>,
-    slides: Vec<(Ident, usize, usize)>, // name, stmt, slot
+pub(crate) struct Outputs {
+    pub(crate) points: Vec<Ident>,
+    pub(crate) links: Vec<Ident>,
+    pub(crate) slides: Vec<(Ident, usize, usize)>, // name, stmt, slot
 }
 
-fn outputs(model: &Model, plan: &Plan) -> Outputs {
+pub(crate) fn outputs(model: &Model, plan: &Plan) -> Outputs {
     let wanted = |name: &Ident| match &model.outputs {
         None => true,
         Some(list) => list.iter().any(|o| o == name),
@@ -61,7 +61,7 @@ fn outputs(model: &Model, plan: &Plan) -> Outputs {
 
 /// Statements the outputs need, directly or through the statements they use.
 /// The rest (a coupler point nobody asked for) is left out.
-fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usize> {
+pub(crate) fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usize> {
     let mut stack: Vec<usize> = crate::kinetostatics::roots(model, plan);
     for p in &out.points {
         stack.extend(plan.defined.get(&p.to_string()));
