@@ -8,7 +8,10 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod constraint;
 mod dd;
+pub mod equations;
 pub mod linear;
+pub mod loop_closure;
 
 pub use dd::Dd;
