@@ -10,6 +10,7 @@
 
 #[path = "../../benches/common/baselines.rs"]
 mod baselines;
+mod batch;
 mod generated;
 mod methods;
 mod numpy;
@@ -189,6 +190,9 @@ fn machine() -> String {
     };
     let date = cmd("date", &["-u", "+%Y-%m-%d %H:%M UTC"]);
     let rustc = cmd("rustc", &["-V"]);
+    let load = std::fs::read_to_string("/proc/loadavg")
+        .map(|l| l.split_whitespace().take(3).collect::<Vec<_>>().join(" "))
+        .unwrap_or_default();
     let flags = std::env::var("RUSTFLAGS").unwrap_or_default();
     let flags = if flags.is_empty() {
         "(none)".into()
@@ -196,7 +200,7 @@ fn machine() -> String {
         flags
     };
     format!(
-        "Machine: {cpu}, {cores} logical cores (`nproc`); {rustc}; RUSTFLAGS: {flags}; made {date}."
+        "Machine: {cpu}, {cores} logical cores (`nproc`); {rustc}; RUSTFLAGS: {flags}; made {date}; load average at the start (1, 5, 15 min): {load}."
     )
 }
 

@@ -33,7 +33,7 @@ pub struct Method<'a> {
     pub errors: Errors,
 }
 
-fn method<'a>(
+pub fn method<'a>(
     family: &str,
     name: &str,
     precision: Precision,
@@ -245,6 +245,7 @@ pub fn for_scene<'a>(scene: &'a Scene, out_dir: &Path) -> Vec<Method<'a>> {
                     + s.acceleration.B.x
                     + s.acceleration.B.y
             ));
+            v.extend(crate::batch::fourbar(scene));
             let (w, a) = (scene.rates[0], scene.accels[0]);
             let grid = &scene.grid;
             // Hand-written closed form, f64 and f32.
@@ -540,6 +541,11 @@ pub fn targets(scene: &Scene, ms: &[Method]) -> Vec<String> {
         let na = find("generated f64, no angle outputs")
             .map(median)
             .unwrap_or(f64::NAN);
+        let bt = find("generated batch f64").map(median).unwrap_or(f64::NAN);
+        let np = ms
+            .iter()
+            .find(|m| m.family == "numpy whole-array")
+            .map(median);
         let cf = find("hand-written closed form f64")
             .map(median)
             .unwrap_or(f64::NAN);
@@ -564,6 +570,20 @@ pub fn targets(scene: &Scene, ms: &[Method]) -> Vec<String> {
             nh / g,
             ok(nh / g >= 8.0)
         ));
+        out.push(format!(
+            "FourBar batch f64 {bt:.1} ns per evaluation = {:.2}x faster than the scalar path (target >= 4 with -C target-cpu=native): {}",
+            g / bt,
+            ok(g / bt >= 4.0)
+        ));
+        match np {
+            Some(np) => out.push(format!(
+                "FourBar batch f64 {bt:.1} ns vs numpy whole-array {np:.1} ns (target: faster): {}",
+                ok(bt < np)
+            )),
+            None => out.push(format!(
+                "FourBar batch f64 {bt:.1} ns vs numpy whole-array (not measured: numpy missing; orientation figure about 37 ns)"
+            )),
+        }
         out.push(format!(
             "FourBar without angle outputs {na:.1} ns = {:.2}x with them (target <= 0.6): {}",
             na / g,
