@@ -92,10 +92,13 @@ pub fn closed_form<T: F>(t2: T, w2: T, al2: T) -> FourBarOut<T> {
     }
 }
 
+/// Residual, Jacobian, (sin, cos) of t3 and of t4.
+type LoopEq<T> = (Vector2<T>, Matrix2<T>, (T, T), (T, T));
+
 /// Loop-closure equations in angle form: `a u(t2) + b u(t3) - c u(t4) - d x = 0`,
 /// with Jacobian in `(t3, t4)`: `[[-b s3, c s4], [b c3, -c c4]]`.
 #[inline(always)]
-fn loop_eq<T: F>(t2: (T, T), t3: T, t4: T) -> (Vector2<T>, Matrix2<T>, (T, T), (T, T)) {
+fn loop_eq<T: F>(t2: (T, T), t3: T, t4: T) -> LoopEq<T> {
     let (a, b, c, d) = (T::c(CRANK), T::c(COUPLER), T::c(ROCKER), T::c(GROUND));
     let (s3, c3) = t3.sin_cos();
     let (s4, c4) = t4.sin_cos();

@@ -136,6 +136,9 @@ fn errors(
     e
 }
 
+/// The reference at one grid point: columns and residual (`None`: failed).
+type RefPoint = Option<(Vec<Dd>, f64)>;
+
 /// Reference columns at every grid point, started from the given samples'
 /// points (falling back to the previous grid point's solution).
 fn references(
@@ -144,7 +147,7 @@ fn references(
     rates: &[f64],
     accels: &[f64],
     starts: &[Option<generated::Sample>],
-) -> (Vec<Option<(Vec<Dd>, f64)>>, Vec<String>) {
+) -> (Vec<RefPoint>, Vec<String>) {
     let mut out = Vec::with_capacity(grid.len());
     let mut problems = Vec::new();
     let mut last: Option<Vec<(f64, f64)>> = None;

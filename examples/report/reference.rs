@@ -29,6 +29,9 @@ pub struct Column {
     pub order: usize,
 }
 
+/// Columns from positions, velocities, accelerations of every point.
+pub type ColumnsOf = fn(&[V2], &[V2], &[V2]) -> Vec<Dd>;
+
 /// One example scene as the report sees it.
 pub struct Scene {
     pub name: &'static str,
@@ -41,7 +44,7 @@ pub struct Scene {
     pub linkage: Linkage,
     /// The compared columns from the reference's positions, velocities,
     /// accelerations of every point.
-    pub columns_of: fn(&[V2], &[V2], &[V2]) -> Vec<Dd>,
+    pub columns_of: ColumnsOf,
 }
 
 fn cols(names: &[(&'static str, Kind)]) -> Vec<Column> {

@@ -37,14 +37,14 @@ impl V2 {
         }
     }
     /// Difference `self - o`.
-    pub fn sub(self, o: V2) -> V2 {
+    pub fn minus(self, o: V2) -> V2 {
         V2 {
             x: self.x - o.x,
             y: self.y - o.y,
         }
     }
     /// Sum `self + o`.
-    pub fn add(self, o: V2) -> V2 {
+    pub fn plus(self, o: V2) -> V2 {
         V2 {
             x: self.x + o.x,
             y: self.y + o.y,

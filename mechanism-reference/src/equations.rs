@@ -45,19 +45,19 @@ pub fn residual(linkage: &Linkage, p: &[V2], inputs: &[Dd]) -> Vec<Dd> {
             } => {
                 let (s, co) = inputs[input].sin_cos();
                 let r = Dd::from_f64(r);
-                let d = p[tip].sub(p[o]);
+                let d = p[tip].minus(p[o]);
                 f.push(d.x - r * co);
                 f.push(d.y - r * s);
             }
             Constraint::Distance { p: a, q: b, len } => {
-                let d = p[a].sub(p[b]);
+                let d = p[a].minus(p[b]);
                 f.push(d.dot(d) - Dd::from_f64(len).sqr());
             }
             Constraint::OnFixedLine { p: a, origin, dir } => {
-                f.push(dir.cross(p[a].sub(origin)));
+                f.push(dir.cross(p[a].minus(origin)));
             }
             Constraint::OnLine { p: a, q1, q2 } => {
-                f.push(p[q2].sub(p[q1]).cross(p[a].sub(p[q1])));
+                f.push(p[q2].minus(p[q1]).cross(p[a].minus(p[q1])));
             }
             Constraint::Affine {
                 p: a,
@@ -66,9 +66,9 @@ pub fn residual(linkage: &Linkage, p: &[V2], inputs: &[Dd]) -> Vec<Dd> {
                 a: ka,
                 b: kb,
             } => {
-                let w = p[q].sub(p[o]);
-                let rhs = p[o].add(w.scale(ka)).add(w.perp().scale(kb));
-                let d = p[a].sub(rhs);
+                let w = p[q].minus(p[o]);
+                let rhs = p[o].plus(w.scale(ka)).plus(w.perp().scale(kb));
+                let d = p[a].minus(rhs);
                 f.push(d.x);
                 f.push(d.y);
             }
@@ -106,7 +106,7 @@ pub fn jacobian(linkage: &Linkage, p: &[V2]) -> Vec<Vec<Dd>> {
                 rows.push(ry);
             }
             Constraint::Distance { p: a, q: b, .. } => {
-                let d = p[a].sub(p[b]).scale(Dd::from_f64(2.0));
+                let d = p[a].minus(p[b]).scale(Dd::from_f64(2.0));
                 let mut r = vec![zero; n];
                 put(&mut r, &cols, a, d);
                 put(&mut r, &cols, b, d.scale(-one));
@@ -129,14 +129,14 @@ pub fn jacobian(linkage: &Linkage, p: &[V2]) -> Vec<Vec<Dd>> {
             Constraint::OnLine { p: a, q1, q2 } => {
                 // cross(w, e), w = Q2 - Q1, e = P - Q1:
                 // d/dw = (e.y, -e.x), d/de = (-w.y, w.x).
-                let w = p[q2].sub(p[q1]);
-                let e = p[a].sub(p[q1]);
+                let w = p[q2].minus(p[q1]);
+                let e = p[a].minus(p[q1]);
                 let gw = V2 { x: e.y, y: -e.x };
                 let ge = V2 { x: -w.y, y: w.x };
                 let mut r = vec![zero; n];
                 put(&mut r, &cols, q2, gw);
                 put(&mut r, &cols, a, ge);
-                put(&mut r, &cols, q1, gw.add(ge).scale(-one));
+                put(&mut r, &cols, q1, gw.plus(ge).scale(-one));
                 rows.push(r);
             }
             Constraint::Affine {
@@ -222,12 +222,12 @@ pub fn acceleration_rhs(
                 b.push(r * al * co - r * w2 * s);
             }
             Constraint::Distance { p: a, q: bb, .. } => {
-                let dv = v[a].sub(v[bb]);
+                let dv = v[a].minus(v[bb]);
                 b.push(-(two * dv.dot(dv)));
             }
             Constraint::OnLine { p: a, q1, q2 } => {
-                let wd = v[q2].sub(v[q1]);
-                let ed = v[a].sub(v[q1]);
+                let wd = v[q2].minus(v[q1]);
+                let ed = v[a].minus(v[q1]);
                 b.push(-(two * wd.cross(ed)));
             }
             Constraint::OnFixedLine { .. } => b.push(Dd::ZERO),

@@ -130,10 +130,14 @@ pub fn position(
 fn check_sides(linkage: &Linkage, p: &[V2]) -> Result<(), ReferenceError> {
     for (index, s) in linkage.sides.iter().enumerate() {
         let value = match *s {
-            Side::Left { p: q, a, b, sign } => p[b].sub(p[a]).cross(p[q].sub(p[a])).to_f64() * sign,
-            Side::Ahead { p: q, a, from, to } => p[q].sub(p[a]).dot(p[to].sub(p[from])).to_f64(),
+            Side::Left { p: q, a, b, sign } => {
+                p[b].minus(p[a]).cross(p[q].minus(p[a])).to_f64() * sign
+            }
+            Side::Ahead { p: q, a, from, to } => {
+                p[q].minus(p[a]).dot(p[to].minus(p[from])).to_f64()
+            }
         };
-        if !(value > 0.0) {
+        if value.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) {
             return Err(ReferenceError::WrongBranch { index });
         }
     }
@@ -191,14 +195,14 @@ pub fn acceleration(
 
 /// Angle of `B - A` from +x (rad, (-pi, pi]).
 pub fn angle(p: &[V2], a: usize, b: usize) -> Dd {
-    let d = p[b].sub(p[a]);
+    let d = p[b].minus(p[a]);
     Dd::atan2(d.y, d.x)
 }
 
 /// Angular velocity of the segment `A -> B`: `cross(d, d') / |d|^2` (rad/s).
 pub fn angular_velocity(p: &[V2], v: &[V2], a: usize, b: usize) -> Dd {
-    let d = p[b].sub(p[a]);
-    let dv = v[b].sub(v[a]);
+    let d = p[b].minus(p[a]);
+    let dv = v[b].minus(v[a]);
     d.cross(dv) / d.dot(d)
 }
 
@@ -206,9 +210,9 @@ pub fn angular_velocity(p: &[V2], v: &[V2], a: usize, b: usize) -> Dd {
 /// `cross(d, d') / |d|^2`, i.e. `cross(d, d'') / |d|^2 - 2 cross(d, d') (d . d')
 /// / |d|^4` (rad/s^2).
 pub fn angular_acceleration(p: &[V2], v: &[V2], acc: &[V2], a: usize, b: usize) -> Dd {
-    let d = p[b].sub(p[a]);
-    let dv = v[b].sub(v[a]);
-    let da = acc[b].sub(acc[a]);
+    let d = p[b].minus(p[a]);
+    let dv = v[b].minus(v[a]);
+    let da = acc[b].minus(acc[a]);
     let n = d.dot(d);
     d.cross(da) / n - Dd::from_f64(2.0) * d.cross(dv) * d.dot(dv) / n.sqr()
 }
