@@ -22,8 +22,8 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, check_det, cross, difference, dot, finite, finite_point, finite_vec, length, perp, plus,
-    positive,
+    abs, check_det_sq, cross, difference, dot, finite, finite_point, finite_vec, length, perp,
+    plus, positive,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -132,9 +132,10 @@ pub fn position<T: Real>(
 /// the links)`, checked against `16 eps l1 l2`.
 #[inline(always)]
 fn determinant<T: Real>(pos: &RrrPosition<T>) -> Result<T, Error> {
-    check_det(
+    // Squared form: no square roots on the hot path (the lengths are l1, l2).
+    check_det_sq(
         cross(&pos.r1, &pos.r2),
-        length(&pos.r1) * length(&pos.r2),
+        dot(&pos.r1, &pos.r1) * dot(&pos.r2, &pos.r2),
         P,
     )
 }
