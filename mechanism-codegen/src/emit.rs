@@ -698,6 +698,8 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
         });
     }
 
+    // Batch API (structure of arrays, issue 5): see batch.rs.
+    items.extend(crate::batch::emit(model, &inputs, &pos_out_fields));
     quote! {
         #items
         impl<T: ::mechanism::Real> #name<T> {
