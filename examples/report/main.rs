@@ -17,9 +17,8 @@ mod numpy;
 mod reference;
 #[path = "../common/scenes.rs"]
 mod scenes;
-// Issue 6 (stability) provides `stability.rs` with
-// `pub fn section(out_dir: &std::path::Path) -> String`; enable at merge:
-// mod stability;
+/// The stability section: error against distance to each singularity.
+mod stability;
 mod svg;
 mod timing;
 #[path = "../../benches/common/variants.rs"]
@@ -372,7 +371,7 @@ fn main() {
         }
         let _ = writeln!(md, "- ({} in all)", all_problems.len());
     }
-    // Issue 6 hook: md += &stability::section(&out_dir);
+    md += &stability::section(&out_dir);
     std::fs::write(out_dir.join("summary.md"), &md).expect("write summary");
     println!("{md}");
     eprintln!("wrote {}", out_dir.display());
