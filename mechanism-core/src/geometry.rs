@@ -50,6 +50,27 @@ pub fn angle<T: Real>(v: &Vector2<T>) -> T {
     v.y.atan2(v.x)
 }
 
+/// `angle` (rad) reduced to `(-pi, pi]`: `angle - 2 pi k` with `k` the nearest
+/// integer to `angle / 2 pi`. Exact for `|angle| <= pi`; otherwise the error is
+/// the rounding of `2 pi k` (about `|angle| eps`). A crank's link angle is its
+/// input reduced this way, with no `atan2`.
+#[inline]
+pub fn wrap_angle<T: Real>(angle: T) -> T {
+    let pi = T::pi();
+    if angle <= pi && angle > -pi {
+        return angle;
+    }
+    let two_pi = T::two_pi();
+    let reduced = angle - two_pi * (angle / two_pi).round();
+    if reduced <= -pi {
+        reduced + two_pi
+    } else if reduced > pi {
+        reduced - two_pi
+    } else {
+        reduced
+    }
+}
+
 /// Angle of `v` from +x in degrees in `[0, 360)`, the convention of the tables.
 #[inline]
 pub fn angle_deg_0_360<T: Real>(v: &Vector2<T>) -> T {
