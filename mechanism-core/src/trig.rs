@@ -1,0 +1,325 @@
+//! Sine and cosine of an `f32` computed in `f32` (and integer) arithmetic only.
+//!
+//! Why: libm's `sinf`/`cosf` evaluate in `f64`. On a core with a
+//! single-precision FPU (Cortex-M4F, thumbv7em-none-eabihf) every `f64`
+//! operation is a software routine (`__aeabi_dmul`, `__aeabi_dadd`, ...), so
+//! one `sinf` costs hundreds of instructions and pulls in kilobytes of code.
+//! [`sin_cos_f32`] uses only single-precision multiplies and adds, which the
+//! FPU does in hardware, and 32-bit integer multiplies for range reduction.
+//!
+//! # Domain and accuracy
+//!
+//! Every finite `f32`. The result is within **2 ulp** of the exact sine and
+//! cosine (ulp of `f32` at the exact value's magnitude, with the subnormal
+//! spacing `2^-149` as the floor); non-finite inputs give `(NaN, NaN)`. The
+//! bound is checked against `f64` (`std`'s `sin`/`cos` of the widened input,
+//! which are far more accurate than the bound) by the tests below: exhaustively
+//! over every `f32` in an `#[ignore]`d test (`cargo test --release -p
+//! mechanism-core --lib trig -- --ignored`), and on a dense sample of the
+//! whole range in the ordinary run. The worst error found exhaustively is
+//! stated in `docs/embedded.md`.
+//!
+//! # Method
+//!
+//! 1. `|x| < 2^-12`: `(x, 1)`; `|x| <= pi/4`: no reduction.
+//! 2. Otherwise `|x| = (4n + q) pi/2 + r` with `|r| <= pi/4`, computed
+//!    exactly enough for every `f32` by the Payne-Hanek scheme in integer
+//!    arithmetic: the 24-bit significand times a 96-bit window of the binary
+//!    expansion of `2/pi` (the window starts where the bits stop contributing
+//!    whole turns), giving `|x| 2/pi mod 4` with at least 94 fraction bits;
+//!    the fraction is rounded to the nearest quadrant, normalized, multiplied
+//!    by `pi/2` in 64-bit fixed point and converted to `f32` once. The error
+//!    of `r` is 0.5 ulp from that conversion plus about `2^-31 |r|` from
+//!    truncations; the closest any `f32` comes to a multiple of `pi/2` is far
+//!    above the resolution (94 fraction bits) of the product, so there is no
+//!    catastrophic cancellation anywhere in the range.
+//! 3. `sin r` and `cos r` by their Taylor series through `r^9` and `r^10`
+//!    (Horner form): the truncation error at `|r| = pi/4` is below
+//!    `(pi/4)^11 / 11! < 1.8e-9` and `(pi/4)^12 / 12! < 1.2e-10`, under 0.05
+//!    ulp of the results there; Taylor rather than minimax coefficients so
+//!    that every coefficient is an exact, checkable `1/n!`.
+//! 4. The quadrant picks `(+-sin r, +-cos r)` and the sign of `x` the sign of
+//!    the sine.
+//!
+//! The digits of `2/pi` and `pi/2` below are the standard binary expansions
+//! (hexadecimal, most significant first); the tests check them indirectly:
+//! a wrong word would put large arguments' results far from `f64`'s, whose
+//! reduction uses its own table.
+
+/// `pi/4` rounded down to `f32` (0.78539813...), the no-reduction threshold.
+const PIO4_F32_DOWN: f32 = 0.785_398_1;
+
+/// `2^-12`: below it `x` and 1 are the rounded sine and cosine (within 1 ulp).
+const TINY: f32 = 1.0 / 4096.0;
+
+/// The binary expansion of `2/pi` after the point, 32 bits per word: enough
+/// for the largest finite `f32` (exponent 127: bits up to about 200 are used).
+const TWO_OVER_PI: [u32; 8] = [
+    0xA2F9_836E,
+    0x4E44_1529,
+    0xFC27_57D1,
+    0xF534_DDC0,
+    0xDB62_9599,
+    0x3C43_9041,
+    0xFE51_63AB,
+    0xDEBB_C561,
+];
+
+/// `pi/2 * 2^62`, rounded to nearest.
+const PIO2_Q62: u64 = 0x6487_ED51_10B4_611A;
+
+/// Taylor coefficients of `sin`: `-1/3!`, `1/5!`, `-1/7!`, `1/9!`.
+const S3: f32 = -1.0 / 6.0;
+const S5: f32 = 1.0 / 120.0;
+const S7: f32 = -1.0 / 5040.0;
+const S9: f32 = 1.0 / 362_880.0;
+/// Taylor coefficients of `cos`: `1/4!`, `-1/6!`, `1/8!`, `-1/10!`.
+const C4: f32 = 1.0 / 24.0;
+const C6: f32 = -1.0 / 720.0;
+const C8: f32 = 1.0 / 40_320.0;
+const C10: f32 = -1.0 / 3_628_800.0;
+
+/// `(sin x, cos x)` for `x` in radians, within 2 ulp for every finite `f32`
+/// (see the module documentation); `(NaN, NaN)` for a non-finite `x`.
+#[inline]
+pub fn sin_cos_f32(x: f32) -> (f32, f32) {
+    if !x.is_finite() {
+        return (f32::NAN, f32::NAN);
+    }
+    let ax = if x < 0.0 { -x } else { x };
+    if ax < TINY {
+        // sin x = x (1 - x^2/6 + ...) and cos x = 1 - x^2/2 + ... round to x
+        // and 1 here (relative terms below 2^-25); keeps the sign of -0.0.
+        return (x, 1.0);
+    }
+    if ax <= PIO4_F32_DOWN {
+        return (sin_poly(x), cos_poly(x));
+    }
+    let (q, r) = reduce(ax);
+    let (s, c) = (sin_poly(r), cos_poly(r));
+    let (s, c) = match q & 3 {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    };
+    if x < 0.0 {
+        (-s, c)
+    } else {
+        (s, c)
+    }
+}
+
+/// `sin r` for `|r| <= pi/4`.
+#[inline(always)]
+fn sin_poly(r: f32) -> f32 {
+    let r2 = r * r;
+    r + r * r2 * (S3 + r2 * (S5 + r2 * (S7 + r2 * S9)))
+}
+
+/// `cos r` for `|r| <= pi/4`.
+#[inline(always)]
+fn cos_poly(r: f32) -> f32 {
+    let r2 = r * r;
+    1.0 - 0.5 * r2 + r2 * r2 * (C4 + r2 * (C6 + r2 * (C8 + r2 * C10)))
+}
+
+/// The 96 bits of `2/pi` after the first `skip`, as an integer (`skip <= 102`).
+#[inline(always)]
+fn window(skip: u32) -> u128 {
+    // `skip <= 102` (the largest finite f32 has e = 104 below), so the word
+    // index is at most 3; the mask only tells the compiler so (no bounds check).
+    let idx = ((skip / 32) & 3) as usize;
+    let big = (u128::from(TWO_OVER_PI[idx]) << 96)
+        | (u128::from(TWO_OVER_PI[idx + 1]) << 64)
+        | (u128::from(TWO_OVER_PI[idx + 2]) << 32)
+        | u128::from(TWO_OVER_PI[idx + 3]);
+    // 128 - 31 >= 96 valid bits remain after the shift.
+    (big << (skip % 32)) >> 32
+}
+
+/// `2^k` for `-126 <= k <= 127`, exactly.
+#[inline(always)]
+fn pow2(k: i32) -> f32 {
+    f32::from_bits(((127 + k) as u32) << 23)
+}
+
+/// Reduces a finite `ax > pi/4` to `(q, r)` with `ax = (4n + q) pi/2 + r`,
+/// `|r| <= pi/4` (see the module documentation for the error).
+#[inline(never)]
+fn reduce(ax: f32) -> (u32, f32) {
+    let bits = ax.to_bits();
+    // ax > pi/4 is normal: the biased exponent is 126..=254.
+    let biased = ((bits >> 23) & 0xFF) as i32;
+    let m = (bits & 0x007F_FFFF) | 0x0080_0000;
+    // ax = m * 2^e, m a 24-bit integer, e in -24..=104.
+    let e = biased - 150;
+    // Bits of 2/pi at positions <= e - 2 contribute multiples of 4 (whole
+    // turns) to ax * 2/pi: skip them.
+    let skip = if e > 2 { e - 2 } else { 0 };
+    let w = window(skip as u32);
+    // p = m * w < 2^120, and ax * 2/pi mod 4 = (p mod 2^(f+2)) / 2^f.
+    let p = u128::from(m) * w;
+    let f = (96 + skip - e) as u32; // 94..=120
+    let mut q = ((p >> f) & 3) as u32;
+    let one = 1u128 << f;
+    let mut frac = p & (one - 1);
+    let mut negative = false;
+    if frac >= one >> 1 {
+        // Round to the nearest quadrant: r is negative.
+        q = q.wrapping_add(1);
+        frac = one - frac;
+        negative = true;
+    }
+    if frac == 0 {
+        return (q, 0.0);
+    }
+    // Normalize the fraction (value frac * 2^-f) to 64 significant bits, times
+    // pi/2 in fixed point: r = prod * 2^(2 - f - lz), prod < 2^127.
+    let lz = frac.leading_zeros();
+    let top = ((frac << lz) >> 64) as u64;
+    let prod = u128::from(top) * u128::from(PIO2_Q62);
+    let lz2 = prod.leading_zeros();
+    let hi = ((prod << lz2) >> 96) as u32;
+    // r = hi * 2^k with k = 96 - lz2 + 2 - f - lz, between -150 and -32:
+    // split the scaling in two exact steps so that each power is normal.
+    let k = 98 - (lz2 + f + lz) as i32;
+    let half = k / 2;
+    let r = (hi as f32) * pow2(half) * pow2(k - half);
+    (q, if negative { -r } else { r })
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+
+    /// Error of `got` against the exact value `want` (f64), in units of the
+    /// f32 spacing at `|want|` (floored at the smallest subnormal spacing).
+    fn ulps(got: f32, want: f64) -> f64 {
+        let w32 = (want as f32).abs();
+        let spacing = if w32 == 0.0 || w32 < f32::MIN_POSITIVE {
+            2f64.powi(-149)
+        } else {
+            // Spacing of f32 at |want|: 2^(exponent - 23); when |want| rounds
+            // up to a power of two, use the smaller spacing below it.
+            let e = ((w32.to_bits() >> 23) & 0xFF) as i32 - 127;
+            let s = 2f64.powi(e - 23);
+            if (w32 as f64) > want.abs() && w32.to_bits() & 0x007F_FFFF == 0 {
+                s / 2.0
+            } else {
+                s
+            }
+        };
+        ((got as f64) - want).abs() / spacing
+    }
+
+    /// The worst errors (sin, cos) over the given inputs, with the arguments.
+    fn worst(xs: impl Iterator<Item = f32>) -> ((f64, f32), (f64, f32)) {
+        let mut ws = (0.0, 0.0f32);
+        let mut wc = (0.0, 0.0f32);
+        for x in xs {
+            let (s, c) = sin_cos_f32(x);
+            let es = ulps(s, (x as f64).sin());
+            let ec = ulps(c, (x as f64).cos());
+            if es > ws.0 {
+                ws = (es, x);
+            }
+            if ec > wc.0 {
+                wc = (ec, x);
+            }
+        }
+        (ws, wc)
+    }
+
+    /// The stated bound.
+    const BOUND_ULP: f64 = 2.0;
+
+    #[test]
+    fn dense_sample_of_every_finite_f32_within_2_ulp() {
+        // Every 997th bit pattern of the positive finite f32 (about 2.1
+        // million arguments spread evenly over all exponents), and their
+        // negatives; 997 is prime so the low significand bits vary.
+        let xs = (0..0x7F80_0000u32)
+            .step_by(997)
+            .map(f32::from_bits)
+            .flat_map(|x| [x, -x]);
+        let ((es, xs_), (ec, xc)) = worst(xs);
+        assert!(es <= BOUND_ULP, "sin: {es} ulp at {xs_:e}");
+        assert!(ec <= BOUND_ULP, "cos: {ec} ulp at {xc:e}");
+    }
+
+    #[test]
+    fn every_f32_in_one_turn_either_way_within_2_ulp() {
+        // The range of crank angles: every f32 in [2^-3, 8] (the inputs that
+        // are reduced by one or a few quadrants), and a stride below.
+        let lo = 0.125f32.to_bits();
+        let hi = 8.0f32.to_bits();
+        let ((es, xs_), (ec, xc)) = worst((lo..=hi).step_by(3).map(f32::from_bits));
+        assert!(es <= BOUND_ULP, "sin: {es} ulp at {xs_:e}");
+        assert!(ec <= BOUND_ULP, "cos: {ec} ulp at {xc:e}");
+    }
+
+    #[test]
+    fn hard_cases_near_multiples_of_pi_over_2() {
+        // Arguments nearest to k pi/2 (the cancellation cases of the reduction)
+        // for k up to 2^20, and the f32 neighbours on both sides: the small
+        // result must still be accurate relative to itself.
+        let mut xs = std::vec::Vec::new();
+        for k in 1..(1u32 << 20) {
+            let x = (k as f64 * core::f64::consts::FRAC_PI_2) as f32;
+            let b = x.to_bits();
+            xs.extend([b - 1, b, b + 1].map(f32::from_bits));
+        }
+        let ((es, xs_), (ec, xc)) = worst(xs.into_iter());
+        assert!(es <= BOUND_ULP, "sin: {es} ulp at {xs_:e}");
+        assert!(ec <= BOUND_ULP, "cos: {ec} ulp at {xc:e}");
+    }
+
+    #[test]
+    fn special_values() {
+        assert_eq!(sin_cos_f32(0.0), (0.0, 1.0));
+        let (s, c) = sin_cos_f32(-0.0);
+        assert!(s == 0.0 && s.is_sign_negative() && c == 1.0);
+        // The smallest subnormal: sin x = x exactly, cos x = 1.
+        let tiny = f32::from_bits(1);
+        assert_eq!(sin_cos_f32(tiny), (tiny, 1.0));
+        for x in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+            let (s, c) = sin_cos_f32(x);
+            assert!(s.is_nan() && c.is_nan());
+        }
+        // Largest finite: against f64 (uses the last words of the table).
+        for x in [f32::MAX, -f32::MAX] {
+            let (s, c) = sin_cos_f32(x);
+            assert!(ulps(s, (x as f64).sin()) <= BOUND_ULP);
+            assert!(ulps(c, (x as f64).cos()) <= BOUND_ULP);
+        }
+    }
+
+    #[test]
+    fn sin_squared_plus_cos_squared_is_one() {
+        // An identity independent of any reference implementation: with both
+        // within 2 ulp (2 * 2^-24 relative at most), s^2 + c^2 is within about
+        // 4 * 2 * 2^-24 of 1; 1e-6 leaves room for the f32 squaring.
+        for k in 0..100_000 {
+            let x = -1.0e4 + 0.2 * k as f32;
+            let (s, c) = sin_cos_f32(x);
+            let n = (s as f64).powi(2) + (c as f64).powi(2);
+            assert!((n - 1.0).abs() < 1e-6, "{x}: {n}");
+        }
+    }
+
+    #[test]
+    #[ignore = "exhaustive over all 2^32 bit patterns: minutes in release"]
+    fn exhaustive_every_f32_within_2_ulp() {
+        let ((es, xs_), (ec, xc)) = worst(
+            (0..0x7F80_0000u32)
+                .map(f32::from_bits)
+                .flat_map(|x| [x, -x]),
+        );
+        std::println!(
+            "worst sin error {es:.3} ulp at {xs_:e}; worst cos error {ec:.3} ulp at {xc:e}"
+        );
+        assert!(es <= BOUND_ULP && ec <= BOUND_ULP);
+    }
+}
