@@ -41,7 +41,7 @@ pub fn abs<T: Real>(x: T) -> T {
 /// components between about 1e-150 and 1e150 (f64).
 #[inline(always)]
 pub fn length<T: Real>(v: &Vector2<T>) -> T {
-    (v.x * v.x + v.y * v.y).sqrt()
+    (v.x * v.x + v.y * v.y).sqrt_kernel()
 }
 
 /// Angle of `v` from +x, counter-clockwise, in radians in `(-pi, pi]`.

@@ -31,6 +31,11 @@ pub trait Real: RealField + Copy {
     /// from `ComplexField::sin_cos`, which for `f32` goes through libm's `sinf`,
     /// whose internals are `f64`.
     fn sin_cos_kernel(self) -> (Self, Self);
+    /// Square root in this type's own precision: `f32` through
+    /// [`crate::trig::sqrt_f32`] (correctly rounded, FPU divide plus integer
+    /// check, where libm's `sqrtf` is a slow integer routine), `f64` through
+    /// nalgebra's `sqrt`.
+    fn sqrt_kernel(self) -> Self;
 }
 
 impl Real for f64 {
@@ -54,6 +59,10 @@ impl Real for f64 {
     fn sin_cos_kernel(self) -> (Self, Self) {
         <f64 as nalgebra::ComplexField>::sin_cos(self)
     }
+    #[inline(always)]
+    fn sqrt_kernel(self) -> Self {
+        <f64 as nalgebra::ComplexField>::sqrt(self)
+    }
 }
 
 impl Real for f32 {
@@ -76,5 +85,9 @@ impl Real for f32 {
     #[inline(always)]
     fn sin_cos_kernel(self) -> (Self, Self) {
         crate::trig::sin_cos_f32(self)
+    }
+    #[inline(always)]
+    fn sqrt_kernel(self) -> Self {
+        crate::trig::sqrt_f32(self)
     }
 }

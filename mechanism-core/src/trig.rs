@@ -1,4 +1,5 @@
-//! Sine and cosine of an `f32` computed in `f32` (and integer) arithmetic only.
+//! Sine, cosine and square root of an `f32` computed in `f32` (and integer)
+//! arithmetic only: [`sin_cos_f32`] and [`sqrt_f32`].
 //!
 //! Why: libm's `sinf`/`cosf` evaluate in `f64`. On a core with a
 //! single-precision FPU (Cortex-M4F, thumbv7em-none-eabihf) every `f64`
@@ -41,6 +42,17 @@
 //! 4. The quadrant picks `(+-sin r, +-cos r)` and the sign of `x` the sign of
 //!    the sine.
 //!
+//! # Square root
+//!
+//! libm's `sqrtf` is an integer routine (about 150 instructions on a
+//! Cortex-M4F), and the FPU's `vsqrt.f32` is out of reach of safe stable Rust
+//! without `std` (`core::f32::math::sqrt` is unstable in Rust 1.95, and libm
+//! has no ARM path). [`sqrt_f32`] takes a bit-level first guess and three
+//! Newton steps with the FPU's divide: the result is at most one step from
+//! the correctly rounded square root (checked against `f64` for every `f32`
+//! by an `#[ignore]`d test). An exact integer test of the neighbours would
+//! make it correctly rounded but costs more than libm's `sqrtf` on the M4F.
+//!
 //! The digits of `2/pi` and `pi/2` below are the standard binary expansions
 //! (hexadecimal, most significant first); the tests check them indirectly:
 //! a wrong word would put large arguments' results far from `f64`'s, whose
@@ -65,8 +77,8 @@ const TWO_OVER_PI: [u32; 8] = [
     0xDEBB_C561,
 ];
 
-/// `pi/2 * 2^62`, rounded to nearest.
-const PIO2_Q62: u64 = 0x6487_ED51_10B4_611A;
+/// `pi/2 * 2^30`, rounded to nearest (31 bits).
+const PIO2_Q30: u32 = 0x6487_ED51;
 
 /// Taylor coefficients of `sin`: `-1/3!`, `1/5!`, `-1/7!`, `1/9!`.
 const S3: f32 = -1.0 / 6.0;
@@ -124,18 +136,15 @@ fn cos_poly(r: f32) -> f32 {
     1.0 - 0.5 * r2 + r2 * r2 * (C4 + r2 * (C6 + r2 * (C8 + r2 * C10)))
 }
 
-/// The 96 bits of `2/pi` after the first `skip`, as an integer (`skip <= 102`).
+/// The 32 bits of `2/pi` after its first `pos` bits (`pos <= 166`).
 #[inline(always)]
-fn window(skip: u32) -> u128 {
-    // `skip <= 102` (the largest finite f32 has e = 104 below), so the word
-    // index is at most 3; the mask only tells the compiler so (no bounds check).
-    let idx = ((skip / 32) & 3) as usize;
-    let big = (u128::from(TWO_OVER_PI[idx]) << 96)
-        | (u128::from(TWO_OVER_PI[idx + 1]) << 64)
-        | (u128::from(TWO_OVER_PI[idx + 2]) << 32)
-        | u128::from(TWO_OVER_PI[idx + 3]);
-    // 128 - 31 >= 96 valid bits remain after the shift.
-    (big << (skip % 32)) >> 32
+fn bits32(pos: u32) -> u32 {
+    // pos <= 166 below, so the word index is at most 5 and idx + 1 <= 6; the
+    // mask only tells the compiler so (no bounds check, no panic path).
+    let idx = ((pos / 32) & 7) as usize;
+    let pair = (u64::from(TWO_OVER_PI[idx]) << 32)
+        | u64::from(TWO_OVER_PI[(idx + 1) & 7]);
+    ((pair << (pos % 32)) >> 32) as u32
 }
 
 /// `2^k` for `-126 <= k <= 127`, exactly.
@@ -145,48 +154,88 @@ fn pow2(k: i32) -> f32 {
 }
 
 /// Reduces a finite `ax > pi/4` to `(q, r)` with `ax = (4n + q) pi/2 + r`,
-/// `|r| <= pi/4` (see the module documentation for the error).
+/// `|r| <= pi/4` (see the module documentation for the error). 32- and
+/// 64-bit integer arithmetic only (a Cortex-M4 multiplies 32 x 32 -> 64 bits
+/// in one instruction).
 #[inline(never)]
 fn reduce(ax: f32) -> (u32, f32) {
     let bits = ax.to_bits();
     // ax > pi/4 is normal: the biased exponent is 126..=254.
     let biased = ((bits >> 23) & 0xFF) as i32;
-    let m = (bits & 0x007F_FFFF) | 0x0080_0000;
+    let m = u64::from((bits & 0x007F_FFFF) | 0x0080_0000);
     // ax = m * 2^e, m a 24-bit integer, e in -24..=104.
     let e = biased - 150;
     // Bits of 2/pi at positions <= e - 2 contribute multiples of 4 (whole
-    // turns) to ax * 2/pi: skip them.
-    let skip = if e > 2 { e - 2 } else { 0 };
-    let w = window(skip as u32);
-    // p = m * w < 2^120, and ax * 2/pi mod 4 = (p mod 2^(f+2)) / 2^f.
-    let p = u128::from(m) * w;
-    let f = (96 + skip - e) as u32; // 94..=120
-    let mut q = ((p >> f) & 3) as u32;
-    let one = 1u128 << f;
-    let mut frac = p & (one - 1);
+    // turns) to ax * 2/pi: skip them. skip <= 102.
+    let skip = if e > 2 { (e - 2) as u32 } else { 0 };
+    // The 96-bit window w0:w1:w2 of 2/pi after `skip` bits; P = m * window
+    // (< 2^120) as hi:lo (64 bits each), and ax * 2/pi = P * 2^-f (mod the
+    // skipped whole turns) with f = 96 + skip - e, in 94..=120.
+    let (w0, w1, w2) = (bits32(skip), bits32(skip + 32), bits32(skip + 64));
+    let a = m * u64::from(w2);
+    let b = m * u64::from(w1);
+    let c = m * u64::from(w0);
+    let (lo, carry) = a.overflowing_add(b << 32);
+    let hi = c + (b >> 32) + u64::from(carry);
+    let f = (96 + skip as i32 - e) as u32;
+    // Quadrant: bits f and f + 1 of P; fraction: the 64 bits below bit f.
+    let sh = f - 64; // 30..=56
+    let mut q = ((hi >> sh) & 3) as u32;
+    let mut frac = (hi << (64 - sh)) | (lo >> sh);
     let mut negative = false;
-    if frac >= one >> 1 {
+    if frac >> 63 != 0 {
         // Round to the nearest quadrant: r is negative.
         q = q.wrapping_add(1);
-        frac = one - frac;
+        frac = frac.wrapping_neg();
         negative = true;
     }
     if frac == 0 {
         return (q, 0.0);
     }
-    // Normalize the fraction (value frac * 2^-f) to 64 significant bits, times
-    // pi/2 in fixed point: r = prod * 2^(2 - f - lz), prod < 2^127.
+    // Normalize the fraction (value frac * 2^-64), keep 32 bits, times pi/2
+    // in fixed point (2^30 pi/2, 31 bits).
     let lz = frac.leading_zeros();
-    let top = ((frac << lz) >> 64) as u64;
-    let prod = u128::from(top) * u128::from(PIO2_Q62);
+    let top = ((frac << lz) >> 32) as u32;
+    let prod = u64::from(top) * u64::from(PIO2_Q30);
     let lz2 = prod.leading_zeros();
-    let hi = ((prod << lz2) >> 96) as u32;
-    // r = hi * 2^k with k = 96 - lz2 + 2 - f - lz, between -150 and -32:
-    // split the scaling in two exact steps so that each power is normal.
-    let k = 98 - (lz2 + f + lz) as i32;
-    let half = k / 2;
-    let r = (hi as f32) * pow2(half) * pow2(k - half);
+    let hi32 = ((prod << lz2) >> 32) as u32;
+    // frac * 2^-64 = top * 2^(-32 - lz), so r = prod * 2^(-62 - lz) = hi32 * 2^k,
+    // k = -30 - lz2 - lz, between -94 and -30: 2^k is normal.
+    let k = -30 - (lz2 + lz) as i32;
+    let r = (hi32 as f32) * pow2(k);
     (q, if negative { -r } else { r })
+}
+
+/// Square root of `x`, at most one representable step from the correctly
+/// rounded result (so within 1.5 ulp; about 3 in 4 results are the correctly
+/// rounded one): `NaN` for `x < 0` or NaN, `x` itself for `+-0` and `+inf`.
+#[inline]
+pub fn sqrt_f32(x: f32) -> f32 {
+    if x.is_nan() || x < 0.0 {
+        return f32::NAN;
+    }
+    if x == 0.0 || x == f32::INFINITY {
+        return x;
+    }
+    if x < f32::MIN_POSITIVE {
+        // Subnormal: sqrt(x 2^24) 2^-12, both scalings exact.
+        return sqrt_normal(x * pow2(24)) * pow2(-12);
+    }
+    sqrt_normal(x)
+}
+
+/// Square root of a positive normal `x`.
+#[inline(always)]
+fn sqrt_normal(x: f32) -> f32 {
+    // First guess: halve the biased exponent (and, roughly, the logarithm of
+    // the significand); within about 3.5 %.
+    let mut y = f32::from_bits((x.to_bits() >> 1) + 0x1FBD_1DF5);
+    // Newton: the relative error e goes to about e^2 / 2 per step (3.5 % ->
+    // 6e-4 -> 2e-7 -> rounding level).
+    for _ in 0..3 {
+        y = 0.5 * (y + x / y);
+    }
+    y
 }
 
 #[cfg(test)]
@@ -309,16 +358,79 @@ mod tests {
         }
     }
 
+    /// f64's square root of an f32, rounded to f32, is the correctly rounded
+    /// f32 square root (53 >= 2 * 24 + 2 bits: the double rounding is harmless).
+    fn sqrt_reference(x: f32) -> f32 {
+        (x as f64).sqrt() as f32
+    }
+
+    /// Representable steps between the kernel's square root and the correctly
+    /// rounded one (both positive: bit patterns are ordered like values).
+    fn sqrt_steps(x: f32) -> u32 {
+        sqrt_f32(x).to_bits().abs_diff(sqrt_reference(x).to_bits())
+    }
+
     #[test]
-    #[ignore = "exhaustive over all 2^32 bit patterns: minutes in release"]
+    fn sqrt_within_one_step_on_a_dense_sample() {
+        for b in (0..0x7F80_0000u32).step_by(251) {
+            let x = f32::from_bits(b);
+            assert!(sqrt_steps(x) <= 1, "{x:e}");
+        }
+        // Perfect squares and their neighbours (exact results, ties avoided).
+        for k in 1..5000u32 {
+            let x = (k * k) as f32;
+            assert_eq!(sqrt_f32(x), k as f32);
+            for n in [f32::from_bits(x.to_bits() - 1), f32::from_bits(x.to_bits() + 1)] {
+                assert!(sqrt_steps(n) <= 1, "{n:e}");
+            }
+        }
+    }
+
+    #[test]
+    fn sqrt_special_values() {
+        assert_eq!(sqrt_f32(0.0).to_bits(), 0.0f32.to_bits());
+        assert_eq!(sqrt_f32(-0.0).to_bits(), (-0.0f32).to_bits());
+        assert_eq!(sqrt_f32(f32::INFINITY), f32::INFINITY);
+        assert!(sqrt_f32(-1.0).is_nan() && sqrt_f32(f32::NAN).is_nan());
+        assert!(sqrt_f32(f32::NEG_INFINITY).is_nan());
+        assert!(sqrt_steps(f32::MAX) <= 1 && sqrt_steps(f32::from_bits(1)) <= 1);
+    }
+
+    #[test]
+    #[ignore = "exhaustive over all 2^31 non-negative bit patterns"]
+    fn exhaustive_sqrt_within_one_step() {
+        let worst = (0..0x7F80_0000u32)
+            .map(|b| sqrt_steps(f32::from_bits(b)))
+            .max();
+        assert_eq!(worst, Some(1));
+    }
+
+    #[test]
+    #[ignore = "exhaustive over all 2^31 non-negative bit patterns: minutes in release"]
     fn exhaustive_every_f32_within_2_ulp() {
-        let ((es, xs_), (ec, xc)) = worst(
-            (0..0x7F80_0000u32)
-                .map(f32::from_bits)
-                .flat_map(|x| [x, -x]),
-        );
+        // Non-negative arguments only: the kernel computes -x as x with the
+        // sine's sign flipped, exactly. Four threads over interleaved chunks.
+        let workers: std::vec::Vec<_> = (0..4u32)
+            .map(|t| {
+                std::thread::spawn(move || {
+                    let lo = t * 0x1FE0_0000;
+                    worst((lo..lo + 0x1FE0_0000).map(f32::from_bits))
+                })
+            })
+            .collect();
+        let mut all = ((0.0, 0.0f32), (0.0, 0.0f32));
+        for w in workers {
+            let (s, c) = w.join().expect("worker");
+            if s.0 > all.0 .0 {
+                all.0 = s;
+            }
+            if c.0 > all.1 .0 {
+                all.1 = c;
+            }
+        }
+        let ((es, xs_), (ec, xc)) = all;
         std::println!(
-            "worst sin error {es:.3} ulp at {xs_:e}; worst cos error {ec:.3} ulp at {xc:e}"
+            "worst sin error {es:.4} ulp at {xs_:e}; worst cos error {ec:.4} ulp at {xc:e}"
         );
         assert!(es <= BOUND_ULP && ec <= BOUND_ULP);
     }
