@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod scenes;
+pub mod seed003;
 
 /// `true` when the example was run with `--csv`.
 pub fn csv_mode() -> bool {

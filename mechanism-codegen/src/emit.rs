@@ -62,7 +62,7 @@ fn outputs(model: &Model, plan: &Plan) -> Outputs {
 /// Statements the outputs need, directly or through the statements they use.
 /// The rest (a coupler point nobody asked for) is left out.
 fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usize> {
-    let mut stack: Vec<usize> = Vec::new();
+    let mut stack: Vec<usize> = crate::kinetostatics::roots(model, plan);
     for p in &out.points {
         stack.extend(plan.defined.get(&p.to_string()));
     }
@@ -131,7 +131,8 @@ fn unit_vector(angle: &Value) -> TokenStream {
     }
 }
 
-fn tag(stmt: &Stmt) -> TokenStream {
+/// `.map_err(|e| e.in_group(NAME))?`: tags a core error with the statement's name.
+pub(crate) fn tag(stmt: &Stmt) -> TokenStream {
     let name = stmt.name.to_string();
     quote!(.map_err(|e| e.in_group(#name))?)
 }
@@ -387,6 +388,7 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
         links: plan.links.clone(),
         guides: plan.guides.clone(),
         ground: plan.ground.clone(),
+        owner: plan.owner.clone(),
     };
 
     // Which link axes are needed in position.
@@ -496,6 +498,8 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
             Level::Position => "position",
             Level::Velocity => "position, velocity",
             Level::Acceleration => "position, velocity, acceleration",
+            Level::Forces =>
+                "position, velocity, acceleration, forces (joint reactions and driving efforts)",
         }
     ));
 
@@ -584,6 +588,44 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
         });
     }
     if level >= Level::Acceleration {
+        let forces =
+            (level >= Level::Forces).then(|| crate::kinetostatics::emit(model, plan, &moving));
+        let forces_ty = format_ident!("{}Forces", name);
+        let (forces_field, forces_call, forces_value, loads_param) = match &forces {
+            Some(f) => {
+                items.extend(f.items.clone());
+                methods.extend(f.methods.clone());
+                let arg = &f.loads_arg;
+                (
+                    quote! {
+                        /// Force analysis.
+                        pub forces: #forces_ty<T>,
+                    },
+                    quote!(let forces = self.forces(&position, &velocity, &acceleration #arg)?;),
+                    quote!(forces,),
+                    f.loads_param.clone(),
+                )
+            }
+            None => (quote!(), quote!(), quote!(), quote!()),
+        };
+        let solution_doc = if forces.is_some() {
+            " Position, velocity, acceleration and forces together."
+        } else {
+            " Position, velocity and acceleration together."
+        };
+        let solution_item = quote! {
+            #[doc = #solution_doc]
+            #[derive(Clone, Copy, Debug, PartialEq)]
+            #vis struct #solution_ty<T: ::mechanism::Real = ::core::primitive::f64> {
+                /// Position analysis.
+                pub position: #position_ty<T>,
+                /// Velocity analysis.
+                pub velocity: #velocity_ty<T>,
+                /// Acceleration analysis.
+                pub acceleration: #acceleration_ty<T>,
+                #forces_field
+            }
+        };
         let (code, fields, outs) = emit_rates(&em, &moving, &out, true);
         let acc_doc = format!("Acceleration of [`{name}`]: point accelerations in length units per s^2, link angular accelerations in rad/s^2, slide accelerations in length units per s^2.");
         let (on, ot, oc): (Vec<Ident>, Vec<TokenStream>, Vec<TokenStream>) = unzip3(outs);
@@ -597,16 +639,7 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
                 #(#[doc(hidden)] pub #hn: #ht,)*
             }
 
-            /// Position, velocity and acceleration together.
-            #[derive(Clone, Copy, Debug, PartialEq)]
-            #vis struct #solution_ty<T: ::mechanism::Real = ::core::primitive::f64> {
-                /// Position analysis.
-                pub position: #position_ty<T>,
-                /// Velocity analysis.
-                pub velocity: #velocity_ty<T>,
-                /// Acceleration analysis.
-                pub acceleration: #acceleration_ty<T>,
-            }
+            #solution_item
         });
         methods.extend(quote! {
             /// Solves the acceleration analysis at `pos`, `vel` for the input
@@ -621,13 +654,14 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
                 ::core::result::Result::Ok(#acceleration_ty { #(#on,)* #(#hn,)* })
             }
 
-            /// Position, velocity and acceleration at once.
+            /// Every analysis the definition asks for, at once.
             #[inline]
-            pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error> {
+            pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T> #loads_param) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error> {
                 let position = self.position(input)?;
                 let velocity = self.velocity(&position, rates)?;
                 let acceleration = self.acceleration(&position, &velocity, accels)?;
-                ::core::result::Result::Ok(#solution_ty { position, velocity, acceleration })
+                #forces_call
+                ::core::result::Result::Ok(#solution_ty { position, velocity, acceleration, #forces_value })
             }
         });
     }
@@ -1099,8 +1133,36 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         }))
         .filter(|i| unique(i))
         .collect();
+    let forces_stub = if model.kinetics.declared || model.level == Level::Forces {
+        let forces_ty = format_ident!("{}Forces", name);
+        let loads_ty = format_ident!("{}Loads", name);
+        let loads: Vec<&Ident> = model.kinetics.loads.iter().map(|(n, _)| n).collect();
+        let (loads_item, loads_param) = if loads.is_empty() {
+            (quote!(), quote!())
+        } else {
+            (
+                quote! {
+                    #[allow(non_snake_case, dead_code)]
+                    #vis struct #loads_ty<T = ::core::primitive::f64> { #(pub #loads: T,)* }
+                },
+                quote!(, loads: &#loads_ty<T>),
+            )
+        };
+        quote! {
+            #loads_item
+            #[allow(dead_code)]
+            #vis struct #forces_ty<T: ::mechanism::Real = ::core::primitive::f64> { pub condition: T, pub power_residual: T }
+            #[allow(dead_code, unused_variables)]
+            impl<T: ::mechanism::Real> #name<T> {
+                pub fn forces(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, acc: &#acceleration_ty<T> #loads_param) -> ::core::result::Result<#forces_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
+            }
+        }
+    } else {
+        quote!()
+    };
     quote! {
         #(#errors)*
+        #forces_stub
         #[allow(non_snake_case, dead_code)]
         #vis struct #name<T = ::core::primitive::f64> { #(pub #params: T,)* pub _scalar: ::core::marker::PhantomData<T> }
         impl<T: ::mechanism::Real> ::core::default::Default for #name<T> {

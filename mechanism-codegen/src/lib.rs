@@ -6,6 +6,7 @@
 //! code free of follow-on errors.
 
 pub mod emit;
+pub mod kinetostatics;
 pub mod model;
 pub mod parse;
 pub mod plan;
@@ -39,6 +40,7 @@ pub fn expand(input: TokenStream) -> TokenStream {
         Err(e) => return emit::emit_stub(&model, e),
     };
     validate::geometry_consistent(&model, &plan, &mut errors);
+    validate::kinetics_consistent(&model, &plan, &mut errors);
     if !errors.0.is_empty() {
         return emit::emit_stub(&model, errors.0);
     }

@@ -16,8 +16,10 @@ pub enum Level {
     Position,
     /// `position` and `velocity`.
     Velocity,
-    /// `position`, `velocity`, `acceleration` (the default).
+    /// `position`, `velocity`, `acceleration` (the default without loads).
     Acceleration,
+    /// Everything, and the force analysis (the default with loads).
+    Forces,
 }
 
 /// Assembly mode as written.
@@ -53,6 +55,70 @@ pub struct Model {
     pub dof: Option<LitInt>,
     /// Statements whose arguments were rejected: their names stay defined.
     pub failed: Vec<Failed>,
+    /// Masses, gravity and loads (the force analysis).
+    pub kinetics: Kinetics,
+}
+
+/// What the force analysis needs: masses, gravity and external loads.
+#[derive(Default)]
+pub struct Kinetics {
+    /// `mass LINK { m, at, j }`.
+    pub masses: Vec<MassSpec>,
+    /// `gravity (gx, gy)`, with the span of the keyword.
+    pub gravity: Option<(Span, Value, Value)>,
+    /// `force at P ...`.
+    pub forces: Vec<ForceSpec>,
+    /// `torque on LINK = t`.
+    pub torques: Vec<TorqueSpec>,
+    /// `loads { name = default }`: values supplied per evaluation.
+    pub loads: Vec<(Ident, f64)>,
+    /// A load statement was written (even one that was rejected).
+    pub declared: bool,
+}
+
+/// Mass properties of one link.
+pub struct MassSpec {
+    /// The link.
+    pub link: Ident,
+    /// Mass (M).
+    pub mass: Value,
+    /// Centre of mass: a point of the link.
+    pub at: Ident,
+    /// Moment of inertia about the centre of mass (M L^2); `None`: a point mass.
+    pub inertia: Option<Value>,
+}
+
+/// An external force.
+pub struct ForceSpec {
+    /// Point of application.
+    pub at: Ident,
+    /// The link it acts on (`None`: the only link that has the point).
+    pub on: Option<Ident>,
+    /// The force.
+    pub value: ForceSpecValue,
+}
+
+/// The value of an external force.
+pub enum ForceSpecValue {
+    /// Global components (force units).
+    Components(Value, Value),
+    /// Signed magnitude along a guide's unit direction.
+    Along(Ident, Value),
+}
+
+/// An external couple on a link (force x length, counter-clockwise positive).
+pub struct TorqueSpec {
+    /// The link.
+    pub on: Ident,
+    /// The couple.
+    pub value: Value,
+}
+
+impl Model {
+    /// `true` when the definition asks for the force analysis.
+    pub fn has_forces(&self) -> bool {
+        self.level == Level::Forces
+    }
 }
 
 /// A statement whose arguments were rejected (an error is already reported).
@@ -282,6 +348,9 @@ struct NumberScope<'a> {
     consts: &'a BTreeMap<String, (Ident, f64)>,
     params: &'a [(Ident, f64)],
     names: &'a [String],
+    /// Per-evaluation load values, and whether this place may use them.
+    loads: &'a [(Ident, f64)],
+    allow_loads: bool,
 }
 
 impl Scope for NumberScope<'_> {
@@ -291,8 +360,17 @@ impl Scope for NumberScope<'_> {
     fn is_param(&self, name: &Ident) -> bool {
         self.params.iter().any(|(p, _)| p == name)
     }
+    fn is_load(&self, name: &Ident) -> bool {
+        self.allow_loads && self.loads.iter().any(|(l, _)| l == name)
+    }
     fn not_a_number(&self, name: &Ident) -> syn::Error {
         let s = name.to_string();
+        if self.loads.iter().any(|(l, _)| l == name) {
+            return syn::Error::new(
+                name.span(),
+                format!("`{s}` is a load value (from `loads`): it may appear in `force` and `torque` statements only; dimensions are `params` or `const`"),
+            );
+        }
         if self.names.contains(&s) {
             return syn::Error::new(
                 name.span(),
@@ -680,6 +758,8 @@ fn literal_scope_for<'a>(
         consts,
         params: &[],
         names,
+        loads: &[],
+        allow_loads: false,
     }
 }
 
@@ -702,6 +782,8 @@ pub fn lower(def: Definition) -> (Model, Errors) {
     let mut level_span = None;
     let mut outputs = None;
     let mut dof = None;
+    let mut loads: Vec<(Ident, f64)> = Vec::new();
+    let mut level_written = false;
     // Names of every let, link and slide, for "not a number" messages.
     let mut names = Vec::new();
     for item in &def.items {
@@ -720,6 +802,8 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     consts: &consts,
                     params: &[],
                     names: &names,
+                    loads: &[],
+                    allow_loads: false,
                 };
                 let x = match convert(&c.value, &earlier).map(|v| (v.fold(), v.span)) {
                     Ok((Some(x), _)) => x,
@@ -739,7 +823,8 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                 };
                 consts.insert(c.name.to_string(), (c.name.clone(), x));
             }
-            Item::Params(list) => {
+            Item::Params(list) | Item::Loads(list) => {
+                let is_loads = matches!(item, Item::Loads(_));
                 for p in list {
                     let x = match convert(&p.value, &literal_scope_for(&consts, &names))
                         .map(|v| (v.fold(), v.span))
@@ -754,7 +839,11 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                             0.0
                         }
                     };
-                    params.push((p.name.clone(), x));
+                    if is_loads {
+                        loads.push((p.name.clone(), x));
+                    } else {
+                        params.push((p.name.clone(), x));
+                    }
                 }
             }
             _ => {}
@@ -764,6 +853,16 @@ pub fn lower(def: Definition) -> (Model, Errors) {
         consts: &consts,
         params: &params,
         names: &names,
+        loads: &loads,
+        allow_loads: false,
+    };
+    let load_scope = NumberScope {
+        allow_loads: true,
+        ..scope
+    };
+    let mut kinetics = Kinetics {
+        loads: loads.clone(),
+        ..Kinetics::default()
     };
     let mut stmts = Vec::new();
     let mut failed = Vec::new();
@@ -771,16 +870,18 @@ pub fn lower(def: Definition) -> (Model, Errors) {
         match item {
             Item::Analysis(what) => {
                 level_span = Some(what.span());
+                level_written = true;
                 level = match what.to_string().as_str() {
                     "position" => Level::Position,
                     "velocity" => Level::Velocity,
                     "acceleration" => Level::Acceleration,
+                    "forces" => Level::Forces,
                     other => {
-                        let known = ["position", "velocity", "acceleration"];
+                        let known = ["position", "velocity", "acceleration", "forces"];
                         errors.push(
                             what.span(),
                             format!(
-                                "this definition cannot give the analysis `{other}`; write `position`, `velocity` or `acceleration`{}",
+                                "this definition cannot give the analysis `{other}`; write `position`, `velocity`, `acceleration` or `forces`{}",
                                 did_you_mean(other, known)
                             ),
                         );
@@ -858,24 +959,60 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     slides,
                 });
             }
-            Item::Mass(m) => errors.push(
-                m.link.span(),
-                "`mass` belongs to the force analysis, which this version does not generate yet",
-            ),
-            Item::Gravity(span, _, _) => errors.push(
-                span,
-                "`gravity` belongs to the force analysis, which this version does not generate yet",
-            ),
-            Item::Force(at, _, _) => errors.push(
-                at.span(),
-                "`force` belongs to the force analysis, which this version does not generate yet",
-            ),
-            Item::Torque(on, _) => errors.push(
-                on.span(),
-                "`torque` belongs to the force analysis, which this version does not generate yet",
-            ),
+            Item::Mass(m) => {
+                kinetics.declared = true;
+                if let Some(spec) = lower_mass(&m, &scope, &mut errors) {
+                    kinetics.masses.push(spec);
+                }
+            }
+            Item::Gravity(span, x, y) => {
+                kinetics.declared = true;
+                match (convert(&x, &scope), convert(&y, &scope)) {
+                    (Ok(x), Ok(y)) => kinetics.gravity = Some((span, x, y)),
+                    (Err(e), _) | (_, Err(e)) => errors.0.push(e),
+                }
+            }
+            Item::Force(f) => {
+                kinetics.declared = true;
+                let value = match f.value {
+                    parse::ForceValue::Components(x, y) => {
+                        match (convert(&x, &load_scope), convert(&y, &load_scope)) {
+                            (Ok(x), Ok(y)) => Some(ForceSpecValue::Components(x, y)),
+                            (Err(e), _) | (_, Err(e)) => {
+                                errors.0.push(e);
+                                None
+                            }
+                        }
+                    }
+                    parse::ForceValue::Along(guide, v) => match convert(&v, &load_scope) {
+                        Ok(v) => Some(ForceSpecValue::Along(guide, v)),
+                        Err(e) => {
+                            errors.0.push(e);
+                            None
+                        }
+                    },
+                };
+                if let Some(value) = value {
+                    kinetics.forces.push(ForceSpec {
+                        at: f.at,
+                        on: f.on,
+                        value,
+                    });
+                }
+            }
+            Item::Torque(on, value) => {
+                kinetics.declared = true;
+                match convert(&value, &load_scope) {
+                    Ok(value) => kinetics.torques.push(TorqueSpec { on, value }),
+                    Err(e) => errors.0.push(e),
+                }
+            }
+            Item::Loads(_) => {}
             Item::Params(_) | Item::Const(_) => {}
         }
+    }
+    if kinetics.declared && !level_written {
+        level = Level::Forces;
     }
     (
         Model {
@@ -890,7 +1027,91 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             outputs,
             dof,
             failed,
+            kinetics,
         },
         errors,
     )
+}
+
+/// Lowers `mass LINK { m = .., at = POINT, j = .. }`: `m` and `at` required,
+/// `j` optional; literal values must be positive (`j` may be zero).
+fn lower_mass(m: &parse::Mass, scope: &NumberScope<'_>, errors: &mut Errors) -> Option<MassSpec> {
+    const FIELDS: [&str; 3] = ["m", "at", "j"];
+    let usage = "`mass LINK { m = mass, at = CENTRE_POINT, j = inertia_about_centre }`";
+    let mut mass = None;
+    let mut at = None;
+    let mut inertia = None;
+    let mut ok = true;
+    for (name, arg) in &m.fields {
+        let field = name.to_string();
+        match (field.as_str(), arg) {
+            ("at", Arg::Value(Expr::Path(p), None)) if p.path.get_ident().is_some() => {
+                at = p.path.get_ident().cloned();
+            }
+            ("at", _) => {
+                ok = false;
+                errors.push(name.span(), format!("`at` names the centre of mass, a point of the link (write `let G = point(LINK, from A, d, angle);` and `at = G`); usage: {usage}"));
+            }
+            ("m" | "j", Arg::Value(expr, None)) => match convert(expr, scope) {
+                Ok(v) => {
+                    let literal = v.fold();
+                    let bad = match literal {
+                        Some(x) if field == "m" => !(x > 0.0 && x.is_finite()),
+                        Some(x) => !(x >= 0.0 && x.is_finite()),
+                        None => false,
+                    };
+                    if bad {
+                        ok = false;
+                        errors.0.push(syn::Error::new_spanned(
+                            &v.tokens,
+                            if field == "m" {
+                                format!("a mass must be positive, got {:?}; leave out the `mass` statement for a massless link", literal.unwrap_or_default())
+                            } else {
+                                format!("a moment of inertia must be zero or positive, got {:?}", literal.unwrap_or_default())
+                            },
+                        ));
+                    } else if field == "m" {
+                        mass = Some(v);
+                    } else {
+                        inertia = Some(v);
+                    }
+                }
+                Err(e) => {
+                    ok = false;
+                    errors.0.push(e);
+                }
+            },
+            ("m" | "j", _) => {
+                ok = false;
+                errors.push(
+                    name.span(),
+                    format!("`{field}` takes a number; usage: {usage}"),
+                );
+            }
+            (other, _) => {
+                ok = false;
+                errors.push(
+                    name.span(),
+                    format!(
+                        "unknown mass property `{other}`; write `m` (mass), `at` (centre of mass) or `j` (moment of inertia about it){}",
+                        did_you_mean(other, FIELDS)
+                    ),
+                );
+            }
+        }
+    }
+    if ok && (mass.is_none() || at.is_none()) {
+        let missing = if mass.is_none() { "`m`" } else { "`at`" };
+        errors.push(
+            m.link.span(),
+            format!("`mass` is missing {missing}; usage: {usage}"),
+        );
+        return None;
+    }
+    Some(MassSpec {
+        link: m.link.clone(),
+        mass: mass?,
+        at: at?,
+        inertia: if ok { inertia } else { None },
+    })
 }

@@ -11,9 +11,11 @@
 //!             | 'outputs' '{' IDENT,* '}'
 //!             | 'dof' INT ';'
 //!             | 'let' IDENT '=' IDENT '(' arg,* ')' ('as' links)? ('slide' names)? ';'
-//!             | 'mass' IDENT '{' (IDENT '=' arg),* '}'
+//!             | 'loads' '{' (IDENT '=' expr),* '}'
+//!             | 'mass' IDENT '{' (IDENT '=' arg),* '}' ';'?
 //!             | 'gravity' '(' expr ',' expr ')' ';'
-//!             | 'force' 'at' IDENT '=' '(' expr ',' expr ')' ';'
+//!             | 'force' 'at' IDENT ('on' IDENT)? '=' '(' expr ',' expr ')' ';'
+//!             | 'force' 'at' IDENT ('on' IDENT)? 'along' IDENT '=' expr ';'
 //!             | 'torque' 'on' IDENT '=' expr ';'
 //! arg        := 'from' IDENT | expr ('deg' | 'rad')?
 //! links      := IDENT | '(' IDENT,* ')'
@@ -55,8 +57,10 @@ pub enum Item {
     Mass(Mass),
     /// `gravity (0.0, -9.81);`
     Gravity(Span, Expr, Expr),
-    /// `force at E = (fx, fy);`
-    Force(Ident, Expr, Expr),
+    /// `loads { cut = 0.0 }`: load values the caller supplies per evaluation.
+    Loads(Vec<Assign>),
+    /// `force at E on LINK = (fx, fy);` or `force at E on LINK along GUIDE = f;`
+    Force(Force),
     /// `torque on link3 = t;`
     Torque(Ident, Expr),
 }
@@ -99,6 +103,24 @@ pub struct Mass {
     pub link: Ident,
     /// Its fields.
     pub fields: Vec<(Ident, Arg)>,
+}
+
+/// `force at POINT (on LINK)? (= (fx, fy) | along GUIDE = f);`
+pub struct Force {
+    /// The point of application.
+    pub at: Ident,
+    /// The link it acts on, when given.
+    pub on: Option<Ident>,
+    /// Its value.
+    pub value: ForceValue,
+}
+
+/// The value of a `force` statement.
+pub enum ForceValue {
+    /// Components in the global frame.
+    Components(Expr, Expr),
+    /// A signed magnitude along a guide's direction.
+    Along(Ident, Expr),
 }
 
 fn kw(input: ParseStream, word: &str) -> bool {
@@ -193,7 +215,7 @@ impl Parse for Item {
         let word: Ident = input.parse().map_err(|e| {
             syn::Error::new(
                 e.span(),
-                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `mass`, `gravity`, `force` or `torque`",
+                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force` or `torque`",
             )
         })?;
         match word.to_string().as_str() {
@@ -202,6 +224,12 @@ impl Parse for Item {
                 braced!(content in input);
                 let list = Punctuated::<Assign, Token![,]>::parse_terminated(&content)?;
                 Ok(Item::Params(list.into_iter().collect()))
+            }
+            "loads" => {
+                let content;
+                braced!(content in input);
+                let list = Punctuated::<Assign, Token![,]>::parse_terminated(&content)?;
+                Ok(Item::Loads(list.into_iter().collect()))
             }
             "analysis" => {
                 let what = input.parse()?;
@@ -233,6 +261,9 @@ impl Parse for Item {
                     }
                     content.parse::<Token![,]>()?;
                 }
+                if input.peek(Token![;]) {
+                    input.parse::<Token![;]>()?;
+                }
                 Ok(Item::Mass(Mass { link, fields }))
             }
             "gravity" => {
@@ -246,10 +277,28 @@ impl Parse for Item {
                 }
                 let _: Ident = input.parse()?;
                 let at = input.parse()?;
-                input.parse::<Token![=]>()?;
-                let (x, y) = pair(input)?;
+                let mut on = None;
+                if kw(input, "on") {
+                    let _: Ident = input.parse()?;
+                    on = Some(input.parse()?);
+                }
+                let value = if kw(input, "along") {
+                    let _: Ident = input.parse()?;
+                    let guide = input.parse()?;
+                    input.parse::<Token![=]>()?;
+                    ForceValue::Along(guide, input.parse()?)
+                } else {
+                    input.parse::<Token![=]>().map_err(|e| {
+                        syn::Error::new(
+                            e.span(),
+                            "expected `= (fx, fy)`, `on LINK` or `along GUIDE = f`",
+                        )
+                    })?;
+                    let (x, y) = pair(input)?;
+                    ForceValue::Components(x, y)
+                };
                 input.parse::<Token![;]>()?;
-                Ok(Item::Force(at, x, y))
+                Ok(Item::Force(Force { at, on, value }))
             }
             "torque" => {
                 if !kw(input, "on") {
@@ -265,7 +314,7 @@ impl Parse for Item {
             other => Err(syn::Error::new(
                 word.span(),
                 format!(
-                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `mass`, `gravity`, `force` or `torque`"
+                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force` or `torque`"
                 ),
             )),
         }

@@ -51,6 +51,32 @@ pub struct Plan {
     pub guides: BTreeMap<String, GuideInfo>,
     /// Points on the ground.
     pub ground: Vec<String>,
+    /// The link each point belongs to for the force analysis (`None`: the
+    /// ground). A joint of two links belongs to the first link of the
+    /// statement that defines it; see [`point_owner`].
+    pub owner: BTreeMap<String, Option<String>>,
+}
+
+/// The body a statement's point belongs to when another group is pinned there:
+/// ground points to the ground, a driver's joint to the driven link, a
+/// group's joint to its first link (the link that reaches the point from
+/// the group's first known joint), the reference point of an RPP to its
+/// second link (the yoke), a link point to its link. `None` for statements
+/// that define no point (guides, RPR slides).
+pub fn point_owner(stmt: &Stmt) -> Option<Option<String>> {
+    let link = |k: usize| Some(Some(stmt.links[k].to_string()));
+    match &stmt.kind {
+        Kind::Ground { .. } => Some(None),
+        Kind::Guide { .. } | Kind::Rpr { .. } => None,
+        Kind::Crank { .. }
+        | Kind::Slider { .. }
+        | Kind::Actuator { .. }
+        | Kind::Rrr { .. }
+        | Kind::Rrp { .. }
+        | Kind::Prp { .. } => link(0),
+        Kind::Rpp { .. } => link(1),
+        Kind::Point { link, .. } => Some(Some(link.to_string())),
+    }
 }
 
 /// Names a statement refers to (points, guides, links), with their tokens.
@@ -154,6 +180,12 @@ pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
             );
         }
     }
+    let mut owner = BTreeMap::new();
+    for stmt in &model.stmts {
+        if let Some(body) = point_owner(stmt) {
+            owner.insert(stmt.name.to_string(), body);
+        }
+    }
     for stmt in &model.stmts {
         if let Kind::Point { link, .. } = &stmt.kind {
             if let Some(info) = links.get_mut(&link.to_string()) {
@@ -220,10 +252,30 @@ pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
         links,
         guides,
         ground,
+        owner,
     })
 }
 
 impl Plan {
+    /// The body a point belongs to (`None`: the ground or unknown).
+    pub fn body_of_point(&self, point: &str) -> Option<String> {
+        self.owner.get(point).cloned().flatten()
+    }
+
+    /// The body carrying a guide (`None`: the ground).
+    pub fn body_of_guide(&self, guide: &str) -> Option<String> {
+        self.guides.get(guide).and_then(|g| g.carrier.clone())
+    }
+
+    /// The links that have `point` among their points.
+    pub fn links_with_point(&self, point: &str) -> Vec<String> {
+        self.links
+            .iter()
+            .filter(|(_, info)| info.points.iter().any(|p| p == point))
+            .map(|(name, _)| name.clone())
+            .collect()
+    }
+
     /// `true` when a point never moves.
     pub fn is_ground(&self, point: &str) -> bool {
         self.ground.iter().any(|g| g == point)

@@ -2,7 +2,7 @@
 //! pushing errors with the span of the user's offending token and a hint.
 //! All rules run, so several errors are reported at once.
 
-use crate::model::{did_you_mean, Errors, Kind, Model, Origin};
+use crate::model::{did_you_mean, Errors, ForceSpecValue, Kind, Level, Model, Origin};
 use crate::plan::{references, Plan};
 use std::collections::BTreeMap;
 use syn::Ident;
@@ -42,10 +42,12 @@ impl Category {
 
 /// Prefixes of names the generated code uses for its own locals.
 pub const RESERVED_PREFIXES: &[&str] = &[
-    "vel_", "acc_", "grp_", "axis_", "omega_", "alpha_", "gvel_", "gacc_",
+    "vel_", "acc_", "grp_", "axis_", "omega_", "alpha_", "gvel_", "gacc_", "load_", "rx_", "pw_",
 ];
 /// Names the generated methods use for their arguments.
-pub const RESERVED: &[&str] = &["input", "rates", "accels", "pos", "vel", "acc", "T"];
+pub const RESERVED: &[&str] = &[
+    "input", "rates", "accels", "pos", "vel", "acc", "loads", "gravity", "T",
+];
 
 /// Every defined name with its category and defining token.
 pub fn symbols(model: &Model) -> BTreeMap<String, (Category, Ident)> {
@@ -385,6 +387,173 @@ pub fn geometry_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
                 }
             }
             _ => {}
+        }
+    }
+}
+
+/// `true` for the cylinder of an actuator (a massless two-force member).
+fn is_cylinder(model: &Model, link: &str) -> bool {
+    model.stmts.iter().any(|s| {
+        matches!(s.kind, Kind::Actuator { .. }) && s.links.get(1).is_some_and(|l| l == link)
+    })
+}
+
+/// Checks that `link` names a link that can carry loads; pushes an error otherwise.
+fn loadable_link(
+    model: &Model,
+    plan: &Plan,
+    link: &Ident,
+    what: &str,
+    errors: &mut Errors,
+) -> bool {
+    let name = link.to_string();
+    if !plan.links.contains_key(&name) {
+        let hint = did_you_mean(&name, plan.links.keys().map(String::as_str));
+        let kind = if plan.defined.contains_key(&name) || plan.guides.contains_key(&name) {
+            format!("`{name}` is not a link")
+        } else {
+            format!("cannot find link `{name}`")
+        };
+        errors.push(
+            link.span(),
+            format!("{kind}; {what} belongs to a link (the names after `as`){hint}"),
+        );
+        return false;
+    }
+    if is_cylinder(model, &name) {
+        errors.push(
+            link.span(),
+            format!("`{name}` is an actuator's cylinder, a massless two-force member here; put the load on the link it drives"),
+        );
+        return false;
+    }
+    true
+}
+
+/// Rule (after planning): the force analysis is asked for consistently, masses
+/// sit on links at points of those links, forces act at points of one link
+/// (or name it), guides and links named by loads exist.
+pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
+    let k = &model.kinetics;
+    let loaded = !k.masses.is_empty() || !k.forces.is_empty() || !k.torques.is_empty();
+    if model.level == Level::Forces && !loaded && !k.declared {
+        if let Some(span) = model.level_span {
+            errors.push(span, "`analysis forces` needs something to carry: add `mass LINK { m = .., at = POINT }`, `force at POINT = (fx, fy);` or `torque on LINK = t;`");
+        }
+    }
+    if k.declared && model.level < Level::Forces {
+        if let Some(span) = model.level_span {
+            errors.push(span, "this `analysis` leaves out the force analysis that the `mass`, `force` and `torque` statements ask for; write `analysis forces;` or remove the line");
+        }
+    }
+    if k.gravity.is_some() && k.masses.is_empty() {
+        if let Some((span, _, _)) = &k.gravity {
+            errors.push(*span, "`gravity` acts through masses, and no link has one: add `mass LINK { m = .., at = POINT }`");
+        }
+    }
+    let mut with_mass: BTreeMap<String, Ident> = BTreeMap::new();
+    for m in &k.masses {
+        if !loadable_link(model, plan, &m.link, "a mass", errors) {
+            continue;
+        }
+        let link = m.link.to_string();
+        if let Some(first) = with_mass.get(&link) {
+            errors.push(
+                m.link.span(),
+                format!("`{link}` already has a mass (line of `{first}`); give each link one `mass` statement"),
+            );
+            continue;
+        }
+        with_mass.insert(link.clone(), m.link.clone());
+        let points = &plan.links[&link].points;
+        let at = m.at.to_string();
+        if !points.contains(&at) {
+            errors.push(
+                m.at.span(),
+                format!(
+                    "the centre of mass must be a point of `{link}`, and `{at}` is not; its points are {}; or define one: `let G = point({link}, from {}, distance, angle);`",
+                    points.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(", "),
+                    points.first().map(String::as_str).unwrap_or("A"),
+                ),
+            );
+        }
+    }
+    for f in &k.forces {
+        let at = f.at.to_string();
+        if !plan.owner.contains_key(&at) {
+            let points = plan.owner.keys().map(String::as_str);
+            errors.push(
+                f.at.span(),
+                format!("cannot find point `{at}`{}", did_you_mean(&at, points)),
+            );
+            continue;
+        }
+        match &f.on {
+            Some(link) => {
+                if loadable_link(model, plan, link, "a force", errors) {
+                    let l = link.to_string();
+                    if !plan.links[&l].points.contains(&at) {
+                        errors.push(
+                            f.at.span(),
+                            format!(
+                                "`{at}` is not a point of `{l}`; its points are {}",
+                                plan.links[&l]
+                                    .points
+                                    .iter()
+                                    .map(|p| format!("`{p}`"))
+                                    .collect::<Vec<_>>()
+                                    .join(", ")
+                            ),
+                        );
+                    }
+                }
+            }
+            None => {
+                let links = plan.links_with_point(&at);
+                match links.len() {
+                    0 => errors.push(
+                        f.at.span(),
+                        format!("`{at}` is on no moving link (a force on the ground needs no analysis); apply the force at a point of a link"),
+                    ),
+                    1 => {
+                        if is_cylinder(model, &links[0]) {
+                            errors.push(f.at.span(), format!("`{at}` is on an actuator's cylinder only, a massless two-force member here"));
+                        }
+                    }
+                    _ => errors.push(
+                        f.at.span(),
+                        format!(
+                            "`{at}` joins {}: say which link the force acts on, e.g. `force at {at} on {} = (fx, fy);`",
+                            links.iter().map(|l| format!("`{l}`")).collect::<Vec<_>>().join(" and "),
+                            links[0]
+                        ),
+                    ),
+                }
+            }
+        }
+        if let ForceSpecValue::Along(guide, _) = &f.value {
+            let g = guide.to_string();
+            if !plan.guides.contains_key(&g) {
+                errors.push(
+                    guide.span(),
+                    format!("cannot find guide `{g}`; `along` takes a guide, whose direction the force follows{}", did_you_mean(&g, plan.guides.keys().map(String::as_str))),
+                );
+            }
+        }
+    }
+    for t in &k.torques {
+        loadable_link(model, plan, &t.on, "a torque", errors);
+    }
+    for (load, _) in &k.loads {
+        let name = load.to_string();
+        if model.params.iter().any(|(p, _)| p == load)
+            || model.consts.contains_key(&name)
+            || plan.defined.contains_key(&name)
+        {
+            errors.push(
+                load.span(),
+                format!("`{name}` is already defined; a load value needs a name of its own"),
+            );
         }
     }
 }

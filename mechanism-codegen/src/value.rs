@@ -25,6 +25,8 @@ pub enum ValueKind {
     Lit(f64),
     /// A run-time parameter `self.name`.
     Param(Ident),
+    /// A per-evaluation load value `loads.name` (force analysis only).
+    Load(Ident),
     /// `-x`.
     Neg(Box<Value>),
     /// `x op y` with `op` one of `+ - * /`.
@@ -45,7 +47,7 @@ impl Value {
     pub fn fold(&self) -> Option<f64> {
         match &self.kind {
             ValueKind::Lit(x) => Some(*x),
-            ValueKind::Param(_) => None,
+            ValueKind::Param(_) | ValueKind::Load(_) => None,
             ValueKind::Neg(v) => v.fold().map(|x| -x),
             ValueKind::Bin(a, op, b) => {
                 let (a, b) = (a.fold()?, b.fold()?);
@@ -88,6 +90,7 @@ impl Value {
         match &self.kind {
             ValueKind::Lit(x) => lit(*x),
             ValueKind::Param(name) => quote_spanned!(self.span=> self.#name),
+            ValueKind::Load(name) => quote_spanned!(self.span=> loads.#name),
             ValueKind::Neg(v) => {
                 let v = v.emit();
                 quote!((-#v))
@@ -117,6 +120,10 @@ pub trait Scope {
     fn constant(&self, name: &Ident) -> Option<f64>;
     /// `true` for a run-time parameter.
     fn is_param(&self, name: &Ident) -> bool;
+    /// `true` for a per-evaluation load value (only where loads may appear).
+    fn is_load(&self, _name: &Ident) -> bool {
+        false
+    }
     /// An error for a name that is neither (with a suggestion).
     fn not_a_number(&self, name: &Ident) -> syn::Error;
 }
@@ -147,6 +154,8 @@ pub fn convert(expr: &Expr, scope: &dyn Scope) -> Result<Value, syn::Error> {
                 ValueKind::Lit(x)
             } else if scope.is_param(name) {
                 ValueKind::Param(name.clone())
+            } else if scope.is_load(name) {
+                ValueKind::Load(name.clone())
             } else {
                 return Err(scope.not_a_number(name));
             }

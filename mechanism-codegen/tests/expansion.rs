@@ -5,6 +5,9 @@
 //! - `velocity_angles`: velocity code, angles computed because links are outputs,
 //!   no acceleration code;
 //! - `acceleration_full`: everything; fixed points pass `None`.
+//! - `forces_coupler_mass`: the force analysis with a mass on the coupler only
+//!   and no gravity: inertia terms for `link3` only, no weight terms, no
+//!   loads argument; `forces_gravity_loads`: gravity and a per-call load.
 //!
 //! Review changes with `cargo insta review` (or `INSTA_UPDATE=always`).
 
@@ -66,5 +69,53 @@ fn acceleration_full() {
     let flat: String = code.split_whitespace().collect();
     assert!(flat.contains("crank::velocity(&pos.grp_A,::core::option::Option::None"));
     assert!(flat.contains("rrr::velocity(&pos.grp_B,::core::option::Option::Some(&vel_A),::core::option::Option::None"));
+    insta::assert_snapshot!(code);
+}
+
+#[test]
+fn forces_coupler_mass() {
+    let code = four_bar(quote! {
+        mass link3 { m = 2.0, at = P, j = 0.05 };
+        outputs { B }
+    });
+    assert!(
+        code.contains("fn forces("),
+        "masses ask for the force analysis"
+    );
+    assert!(
+        !code.contains("gravity"),
+        "no gravity statement: no weight terms"
+    );
+    assert!(
+        !code.contains("load_link4 ="),
+        "the rocker carries no mass: no inertia load is built for it"
+    );
+    assert!(
+        code.contains("let P ="),
+        "the centre of mass is computed although not an output"
+    );
+    assert!(
+        !code.contains("loads:"),
+        "no `loads` block: no loads argument"
+    );
+    insta::assert_snapshot!(code);
+}
+
+#[test]
+fn forces_gravity_loads() {
+    let code = four_bar(quote! {
+        loads { brake = 0.0 }
+        mass link3 { m = 2.0, at = P, j = 0.05 };
+        mass link4 { m = 1.0, at = O4 };
+        gravity (0.0, -9810.0);
+        torque on link4 = brake;
+        outputs { B }
+    });
+    assert!(code.contains("let gravity ="));
+    assert!(code.contains("loads: &FourBarLoads<T>"));
+    assert!(
+        !code.contains("pw_inertia_force_link4"),
+        "the rocker's centre of mass is its fixed pivot: no m a term"
+    );
     insta::assert_snapshot!(code);
 }

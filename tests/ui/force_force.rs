@@ -1,4 +1,4 @@
-// Error: `force` is not generated yet.
+// Error: the force acts at a joint of two links and does not say on which.
 use mechanism::mechanism;
 
 mechanism! {

@@ -1,4 +1,4 @@
-// Error: `gravity` is not generated yet.
+// Error: gravity with no mass to act on.
 use mechanism::mechanism;
 
 mechanism! {

@@ -1,4 +1,4 @@
-// Error: `mass` is not generated yet.
+// Error: the centre of mass is not a point of the link.
 use mechanism::mechanism;
 
 mechanism! {
@@ -9,7 +9,7 @@ mechanism! {
         let O4 = ground(ground, 0.0);
         let A = crank(O2, crank, theta2) as link2;
         let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
-        mass link3 { m = 2.0, at = A, j = 0.1 }
+        mass link3 { m = 2.0, at = O4, j = 0.1 }
     }
 }
 

@@ -1,4 +1,4 @@
-// Error: `torque` is not generated yet.
+// Error: a torque on an unknown link (with a suggestion).
 use mechanism::mechanism;
 
 mechanism! {
@@ -9,7 +9,7 @@ mechanism! {
         let O4 = ground(ground, 0.0);
         let A = crank(O2, crank, theta2) as link2;
         let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
-        torque on link4 = 5.0;
+        torque on link5 = 5.0;
     }
 }
 

@@ -1,0 +1,14 @@
+//! An independent high-precision reference for `mechanism`.
+//!
+//! Nothing here shares code with `mechanism-core` or the code `mechanism!`
+//! generates: the arithmetic is double-double ([`Dd`], about 106 bits), the
+//! solvers are written from the equations (loop closure, Newton-Euler), and
+//! the elementary functions are checked against `astro-float` in the tests.
+//! Used by the report, the benchmarks and the stability tests; `std` only.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+mod dd;
+pub mod linear;
+
+pub use dd::Dd;
