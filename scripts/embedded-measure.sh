@@ -33,15 +33,11 @@ scenes=(
   "pos64|pos64|position only, f64"
   "vel64|vel64|position + velocity, f64"
   "acc64|acc64|position + velocity + acceleration, f64"
+  "forces32|forces32|with forces (metres, masses), f32"
+  "forces64|forces64|with forces (metres, masses), f64"
   "crank32|crank32|crank driver alone from an angle, f32"
   "cossin32|cossin32|crank driver alone from (cos, sin), f32"
 )
-has_forces=0
-if grep -q "fn forces" "$root/mechanism-codegen/src/emit.rs" 2>/dev/null && grep -q 'forces32' "$fw/src/bin/probe.rs" && grep -q 'fn scene' <(grep -A3 'feature = "forces32"' "$fw/src/bin/probe.rs"); then
-  has_forces=1
-  scenes+=("forces32|forces32|with forces, f32" "forces64|forces64|with forces, f64")
-fi
-
 measure() { # feature -> "text rodata mean min max"
   local feat="$1"
   (cd "$fw" && if [ -n "$feat" ]; then cargo build -q --release --bin probe --features "$feat"; else cargo build -q --release --bin probe; fi) >&2
@@ -73,9 +69,6 @@ for s in "${scenes[@]}"; do
       -v bt="${T[base]}" -v br="${R[base]}" -v bm="${M[base]}" 'BEGIN {
     split(d, p, ", "); printf "| %s | %s | %d | %d | %.0f (%d-%d) |\n", p[1], p[2], t - bt, r - br, m - bm, lo - bm, hi - bm }'
 done
-if [ "$has_forces" = 0 ]; then
-  echo "| with forces | f32, f64 | TODO | TODO | TODO: the macro has no forces() yet |"
-fi
 echo
 echo "Baseline: .text ${T[base]} bytes, .rodata ${R[base]} bytes, ${M[base]} instructions around an empty call."
 echo

@@ -1,6 +1,6 @@
 //! No heap: a counting global allocator shows that evaluating every example
-//! mechanism of `examples/common/scenes.rs` (position, velocity and
-//! acceleration, f32 and f64, over a sweep of inputs, including poses that
+//! mechanism of `examples/common/scenes.rs` (position, velocity,
+//! acceleration and, where defined, forces; f32 and f64, over a sweep of inputs, including poses that
 //! fail to assemble) performs zero allocations.
 //!
 //! The counter is thread-local so that tests running in parallel (and the
@@ -75,6 +75,7 @@ fn every_scene<T: Real>() -> usize {
         SliderCrank::<T>::default(),
         FiveBar::<T>::default(),
     );
+    let (sm, sf) = (SineMechanism::<T>::default(), ShaperForces::<T>::default());
     for q in sweep() {
         let q = black_box(q);
         count(
@@ -137,6 +138,28 @@ fn every_scene<T: Real>() -> usize {
                 black_box(s);
             }),
         );
+        // With forces (solve includes forces()).
+        count(
+            sm.solve(
+                &SineMechanismInput { phi1: l(q) },
+                &SineMechanismInput { phi1: l(10.0) },
+                &SineMechanismInput { phi1: l(3.0) },
+            )
+            .map(|s| {
+                black_box(s);
+            }),
+        );
+        count(
+            sf.solve(
+                &ShaperForcesInput { crank: l(q) },
+                &ShaperForcesInput { crank: l(1.0) },
+                &ShaperForcesInput { crank: l(0.7) },
+                &ShaperForcesLoads { cut: l(-5000.0) },
+            )
+            .map(|s| {
+                black_box(s);
+            }),
+        );
     }
     ok
 }
@@ -152,8 +175,8 @@ fn every_example_scene_allocates_nothing_f64() {
     let mut ok = 0;
     let n = allocations(|| ok = every_scene::<f64>());
     assert_eq!(n, 0, "{n} allocations during the f64 sweep");
-    // 1081 inputs x 5 scenes; some poses cannot assemble, most do.
-    assert!(ok > 2500, "only {ok} evaluations succeeded");
+    // 1081 inputs x 7 scenes; some poses cannot assemble, most do.
+    assert!(ok > 3500, "only {ok} evaluations succeeded");
 }
 
 #[test]
@@ -161,5 +184,5 @@ fn every_example_scene_allocates_nothing_f32() {
     let mut ok = 0;
     let n = allocations(|| ok = every_scene::<f32>());
     assert_eq!(n, 0, "{n} allocations during the f32 sweep");
-    assert!(ok > 2500, "only {ok} evaluations succeeded");
+    assert!(ok > 3500, "only {ok} evaluations succeeded");
 }

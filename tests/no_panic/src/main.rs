@@ -12,7 +12,8 @@
 //! away at the call site and the check would pass for the wrong reason.
 //!
 //! Checked: `position`, `velocity`, `acceleration` and `solve` of every
-//! example mechanism (`examples/common/scenes.rs`) in f32 and f64, and the
+//! example mechanism (`examples/common/scenes.rs`) in f32 and f64, `solve`
+//! (with the generated `forces()`) of the definitions with masses, and the
 //! f32 kernels `sin_cos_f32` and `sqrt_f32`.
 
 #[path = "../../../examples/common/scenes.rs"]
@@ -89,6 +90,28 @@ checked! {
     fivebar64: FiveBar, FiveBarInput, f64;
 }
 
+/// The definitions with masses: `solve` there also runs the generated
+/// `forces()` (kinetostatics).
+macro_rules! checked_forces {
+    ($($name:ident: $m:ident, $input:ident, $t:ty $(, $loads:ident)?;)*) => {
+        $(
+            #[cfg_attr(feature = "no-panic", no_panic)]
+            #[inline(never)]
+            fn $name(m: &$m<$t>, q: &$input<$t>, w: &$input<$t>, a: &$input<$t> $(, l: &$loads<$t>)?) -> Result<(), Error> {
+                black_box(m.solve(q, w, a $(, l as &$loads<$t>)?)?);
+                Ok(())
+            }
+        )*
+    };
+}
+
+checked_forces! {
+    sine32: SineMechanism, SineMechanismInput, f32;
+    sine64: SineMechanism, SineMechanismInput, f64;
+    shaper_forces32: ShaperForces, ShaperForcesInput, f32, ShaperForcesLoads;
+    shaper_forces64: ShaperForces, ShaperForcesInput, f64, ShaperForcesLoads;
+}
+
 #[cfg_attr(feature = "no-panic", no_panic)]
 #[inline(never)]
 fn kernels(x: f32) -> (f32, f32, f32) {
@@ -116,6 +139,33 @@ macro_rules! run {
     }};
 }
 
+/// Calls one checked force function through a hidden function pointer;
+/// 1 if it succeeded.
+macro_rules! forces {
+    ($f:ident, $m:ident, $input:ident, $t:ty, $field:ident, $q:expr) => {{
+        let m = black_box($m::<$t>::default());
+        let input = |x: f64| $input {
+            $field: black_box(x as $t),
+        };
+        type F = fn(&$m<$t>, &$input<$t>, &$input<$t>, &$input<$t>) -> Result<(), Error>;
+        let f: F = black_box($f);
+        usize::from(f(&m, &input($q), &input(1.5), &input(-0.5)).is_ok())
+    }};
+    ($f:ident, $m:ident, $input:ident, $t:ty, $field:ident, $q:expr, $loads:ident { $lf:ident: $lv:expr }) => {{
+        let m = black_box($m::<$t>::default());
+        let input = |x: f64| $input {
+            $field: black_box(x as $t),
+        };
+        let loads = $loads {
+            $lf: black_box($lv as $t),
+        };
+        type F =
+            fn(&$m<$t>, &$input<$t>, &$input<$t>, &$input<$t>, &$loads<$t>) -> Result<(), Error>;
+        let f: F = black_box($f);
+        usize::from(f(&m, &input($q), &input(1.5), &input(-0.5), &loads).is_ok())
+    }};
+}
+
 fn main() {
     let mut ok = 0;
     for step in 0..8 {
@@ -130,12 +180,32 @@ fn main() {
         ok += run!(slider64, SliderCrank, SliderCrankInput, f64, { theta }, q);
         ok += run!(fivebar32, FiveBar, FiveBarInput, f32, { q1, q2 }, q);
         ok += run!(fivebar64, FiveBar, FiveBarInput, f64, { q1, q2 }, q);
+        ok += forces!(sine32, SineMechanism, SineMechanismInput, f32, phi1, q);
+        ok += forces!(sine64, SineMechanism, SineMechanismInput, f64, phi1, q);
+        ok += forces!(
+            shaper_forces32,
+            ShaperForces,
+            ShaperForcesInput,
+            f32,
+            crank,
+            q,
+            ShaperForcesLoads { cut: -5000.0 }
+        );
+        ok += forces!(
+            shaper_forces64,
+            ShaperForces,
+            ShaperForcesInput,
+            f64,
+            crank,
+            q,
+            ShaperForcesLoads { cut: -5000.0 }
+        );
         let k: fn(f32) -> (f32, f32, f32) = black_box(kernels);
         black_box(k(black_box(q as f32 * 1.0e3)));
     }
     println!(
         "no-panic: {} analyses run ({ok} succeeded); checks {}",
-        8 * 10 * 4,
+        8 * (10 * 4 + 4),
         if cfg!(feature = "no-panic") {
             "on (the link proved them)"
         } else {

@@ -10,8 +10,9 @@
 //! Scenes (f32 or f64, the seed 002 four-bar of `examples/common/scenes.rs`):
 //! `pos*` position only; `vel*` position and velocity; `acc*` position,
 //! velocity and acceleration (`solve`); `forces*` that plus the generated
-//! `forces()` (not yet: see the script); `crank32` / `cossin32` the crank
-//! driver alone from an angle or from `(cos, sin)`.
+//! `forces()` (the same four-bar in metres with masses, `FourBarForces`
+//! below); `crank32` / `cossin32` the crank driver alone from an angle or
+//! from `(cos, sin)`.
 #![no_std]
 #![no_main]
 #![allow(dead_code, unused_imports)]
@@ -26,6 +27,27 @@ mod scenes;
 
 use mechanism::{Point2, Real};
 use scenes::{FourBar, FourBarInput};
+
+#[cfg(any(feature = "forces32", feature = "forces64"))]
+mechanism::mechanism! {
+    /// The seed 002 four-bar in metres with masses (kg, kg m^2): coupler
+    /// 1.2 kg at its midpoint, rocker 0.9 kg at its midpoint, gravity, and a
+    /// 5 N m clockwise couple on the rocker.
+    pub FourBarForces {
+        params { ground = 0.3048, crank = 0.1016, coupler = 0.254, rocker = 0.1778 }
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+        let G3 = point(link3, from A, 0.127, 0 deg);
+        let G4 = point(link4, from O4, 0.0889, 0 deg);
+        mass link3 { m = 1.2, at = G3, j = 0.0065 };
+        mass link4 { m = 0.9, at = G4, j = 0.0024 };
+        gravity (0.0, -9.81);
+        torque on link4 = -5.0;
+    }
+}
 
 /// Marks the start of one evaluation (the trace counts from its entry).
 #[no_mangle]
@@ -80,6 +102,18 @@ fn scene(m: &FourBar<T>, q: T) -> impl Sized {
         &FourBarInput { theta2: q },
         &FourBarInput { theta2: T::lit(250.0) },
         &FourBarInput { theta2: T::lit(2.0e4) },
+    )
+}
+
+/// Position, velocity, acceleration and forces (`solve` of a definition with
+/// masses computes all four).
+#[cfg(any(feature = "forces32", feature = "forces64"))]
+fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
+    let m = black_box(FourBarForces::<T>::default());
+    m.solve(
+        &FourBarForcesInput { theta2: q },
+        &FourBarForcesInput { theta2: T::lit(250.0) },
+        &FourBarForcesInput { theta2: T::lit(2.0e4) },
     )
 }
 
