@@ -24,19 +24,19 @@ elf="$fw/target/$target/release/probe"
 single=(-singlestep)
 if ! qemu-system-arm -help | grep -q -- '-singlestep'; then single=(-accel tcg,one-insn-per-tb=on); fi
 
-# name|feature|description
+# name|feature|scene|scalar
 scenes=(
-  "base||baseline (empty)"
-  "pos32|pos32|position only, f32"
-  "vel32|vel32|position + velocity, f32"
-  "acc32|acc32|position + velocity + acceleration, f32"
-  "pos64|pos64|position only, f64"
-  "vel64|vel64|position + velocity, f64"
-  "acc64|acc64|position + velocity + acceleration, f64"
-  "forces32|forces32|with forces (metres, masses), f32"
-  "forces64|forces64|with forces (metres, masses), f64"
-  "crank32|crank32|crank driver alone from an angle, f32"
-  "cossin32|cossin32|crank driver alone from (cos, sin), f32"
+  "base|||"
+  "pos32|pos32|position only|f32"
+  "vel32|vel32|position + velocity|f32"
+  "acc32|acc32|position + velocity + acceleration|f32"
+  "forces32|forces32|with forces (same four-bar in m, with masses)|f32"
+  "pos64|pos64|position only|f64"
+  "vel64|vel64|position + velocity|f64"
+  "acc64|acc64|position + velocity + acceleration|f64"
+  "forces64|forces64|with forces (same four-bar in m, with masses)|f64"
+  "crank32|crank32|crank driver alone, from an angle|f32"
+  "cossin32|cossin32|crank driver alone, from (cos, sin)|f32"
 )
 measure() { # feature -> "text rodata mean min max"
   local feat="$1"
@@ -56,27 +56,27 @@ measure() { # feature -> "text rodata mean min max"
 
 declare -A T R M LO HI
 for s in "${scenes[@]}"; do
-  IFS='|' read -r name feat desc <<< "$s"
+  IFS='|' read -r name feat desc scalar <<< "$s"
   read -r T[$name] R[$name] M[$name] LO[$name] HI[$name] < <(measure "$feat")
 done
 
 echo "| scene | scalar | .text bytes | .rodata bytes | instructions / evaluation (mean, min-max of 72) |"
 echo "|---|---|---:|---:|---|"
 for s in "${scenes[@]}"; do
-  IFS='|' read -r name feat desc <<< "$s"
+  IFS='|' read -r name feat desc scalar <<< "$s"
   [ "$name" = base ] && continue
-  awk -v d="$desc" -v t="${T[$name]}" -v r="${R[$name]}" -v m="${M[$name]}" -v lo="${LO[$name]}" -v hi="${HI[$name]}" \
+  awk -v d="$desc" -v sc="$scalar" -v t="${T[$name]}" -v r="${R[$name]}" -v m="${M[$name]}" -v lo="${LO[$name]}" -v hi="${HI[$name]}" \
       -v bt="${T[base]}" -v br="${R[base]}" -v bm="${M[base]}" 'BEGIN {
-    split(d, p, ", "); printf "| %s | %s | %d | %d | %.0f (%d-%d) |\n", p[1], p[2], t - bt, r - br, m - bm, lo - bm, hi - bm }'
+    printf "| %s | %s | %d | %d | %.0f (%d-%d) |\n", d, sc, t - bt, r - br, m - bm, lo - bm, hi - bm }'
 done
 echo
 echo "Baseline: .text ${T[base]} bytes, .rodata ${R[base]} bytes, ${M[base]} instructions around an empty call."
 echo
 echo "Where the instructions go (per evaluation, largest first; the inlined generated code is the scene function):"
 for s in "${scenes[@]}"; do
-  IFS='|' read -r name feat desc <<< "$s"
+  IFS='|' read -r name feat desc scalar <<< "$s"
   [ "$name" = base ] && continue
-  echo "- $desc:"
+  echo "- $desc, $scalar:"
   echo '```'
   cat "$work/top-$feat.txt"
   echo '```'

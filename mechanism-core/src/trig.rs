@@ -1,5 +1,7 @@
 //! Sine, cosine and square root of an `f32` computed in `f32` (and integer)
-//! arithmetic only: [`sin_cos_f32`] and [`sqrt_f32`].
+//! arithmetic only: [`sin_cos_f32`] and [`sqrt_f32`]. (libm's `atan2f` is
+//! already single precision throughout: about 80 instructions per call on
+//! the M4F, which a kernel of this kind did not beat.)
 //!
 //! Why: libm's `sinf`/`cosf` evaluate in `f64`. On a core with a
 //! single-precision FPU (Cortex-M4F, thumbv7em-none-eabihf) every `f64`
@@ -23,7 +25,10 @@
 //! # Method
 //!
 //! 1. `|x| < 2^-12`: `(x, 1)`; `|x| <= pi/4`: no reduction.
-//! 2. Otherwise `|x| = (4n + q) pi/2 + r` with `|r| <= pi/4`, computed
+//! 2. `|x| < 24` (within 15 quadrants, the usual crank angles): Cody-Waite in
+//!    f32 with `pi/2` in three parts and the rounding error carried, so that
+//!    `r` is known as `hi + lo` (see [`reduce_small`]); about 20 instructions.
+//! 3. Otherwise `|x| = (4n + q) pi/2 + r` with `|r| <= pi/4`, computed
 //!    exactly enough for every `f32` by the Payne-Hanek scheme in integer
 //!    arithmetic: the 24-bit significand times a 96-bit window of the binary
 //!    expansion of `2/pi` (the window starts where the bits stop contributing
@@ -34,12 +39,12 @@
 //!    truncations; the closest any `f32` comes to a multiple of `pi/2` is far
 //!    above the resolution (94 fraction bits) of the product, so there is no
 //!    catastrophic cancellation anywhere in the range.
-//! 3. `sin r` and `cos r` by their Taylor series through `r^9` and `r^10`
+//! 4. `sin r` and `cos r` by their Taylor series through `r^9` and `r^10`
 //!    (Horner form): the truncation error at `|r| = pi/4` is below
 //!    `(pi/4)^11 / 11! < 1.8e-9` and `(pi/4)^12 / 12! < 1.2e-10`, under 0.05
 //!    ulp of the results there; Taylor rather than minimax coefficients so
 //!    that every coefficient is an exact, checkable `1/n!`.
-//! 4. The quadrant picks `(+-sin r, +-cos r)` and the sign of `x` the sign of
+//! 5. The quadrant picks `(+-sin r, +-cos r)` and the sign of `x` the sign of
 //!    the sine.
 //!
 //! # Square root
@@ -107,8 +112,17 @@ pub fn sin_cos_f32(x: f32) -> (f32, f32) {
     if ax <= PIO4_F32_DOWN {
         return (sin_poly(x), cos_poly(x));
     }
-    let (q, r) = reduce(ax);
-    let (s, c) = (sin_poly(r), cos_poly(r));
+    let (q, hi, lo) = if ax < FAST_LIMIT {
+        reduce_small(ax)
+    } else {
+        let (q, r) = reduce(ax);
+        (q, r, 0.0)
+    };
+    // sin(hi + lo) = sin hi + lo cos hi and cos(hi + lo) = cos hi - lo sin hi
+    // to far below f32 resolution (|lo| is below 2^-20 |hi| + 2^-36), with
+    // cos hi ~ 1 - hi^2/2 and sin hi ~ hi in the correction terms.
+    let s = sin_poly(hi) + lo * (1.0 - 0.5 * hi * hi);
+    let c = cos_poly(hi) - lo * hi;
     let (s, c) = match q & 3 {
         0 => (s, c),
         1 => (c, -s),
@@ -142,9 +156,42 @@ fn bits32(pos: u32) -> u32 {
     // pos <= 166 below, so the word index is at most 5 and idx + 1 <= 6; the
     // mask only tells the compiler so (no bounds check, no panic path).
     let idx = ((pos / 32) & 7) as usize;
-    let pair = (u64::from(TWO_OVER_PI[idx]) << 32)
-        | u64::from(TWO_OVER_PI[(idx + 1) & 7]);
+    let pair = (u64::from(TWO_OVER_PI[idx]) << 32) | u64::from(TWO_OVER_PI[(idx + 1) & 7]);
     ((pair << (pos % 32)) >> 32) as u32
+}
+
+/// Above this, [`reduce`]; below, [`reduce_small`] (at most 15 quadrants).
+const FAST_LIMIT: f32 = 24.0;
+/// `2/pi` rounded to f32: only picks the quadrant (an off-by-one near a
+/// half-quadrant leaves `|r|` a hair above `pi/4`, where the series still hold).
+const FRAC_2_PI: f32 = 0.636_619_75;
+/// `pi/2 = P1 + P2 + P3 + 2.5e-20`: `P1 = 823549 / 2^19` and
+/// `P2 = 696865 / 2^39` have 20 significant bits, so `k P1` and `k P2` are
+/// exact for `k < 16`; `P3` is the rest rounded to f32.
+const P1: f32 = f32::from_bits(0x3FC9_0FD0);
+const P2: f32 = f32::from_bits(0x35AA_2210);
+const P3: f32 = f32::from_bits(0x2B51_846A);
+
+/// Cody-Waite reduction for `pi/4 < ax < 24` in f32 arithmetic:
+/// `(q, hi, lo)` with `ax = (4n + q) pi/2 + hi + lo`, `|hi| <= pi/4` (and a
+/// hair), `lo` the rounding error of `hi` (exact) minus `k P3`.
+///
+/// `ax - k P1` is exact (Sterbenz: `k P1` is within a factor 2 of `ax`), and so
+/// is `k P2`; the difference of the two is split exactly into `hi + err`
+/// (Knuth's two-sum). What remains is the rounding of `k P3` and of
+/// `err - k P3` (below 2^-60 here) and the `2.5e-20 k` left out of `pi/2`:
+/// far below 2^-24 of the smallest `|r|` of any f32 in this range (about
+/// 1.2e-8, at 3 pi/2), so `hi + lo` is `r` to about 2^-40 relative.
+#[inline(always)]
+fn reduce_small(ax: f32) -> (u32, f32, f32) {
+    let k = (ax * FRAC_2_PI + 0.5) as u32;
+    let kf = k as f32;
+    let t1 = ax - kf * P1;
+    let w = kf * P2;
+    let hi = t1 - w;
+    let v = hi - t1;
+    let err = (t1 - (hi - v)) + (-w - v);
+    (k, hi, err - kf * P3)
 }
 
 /// `2^k` for `-126 <= k <= 127`, exactly.
@@ -209,7 +256,8 @@ fn reduce(ax: f32) -> (u32, f32) {
 /// Square root of `x`, at most one representable step from the correctly
 /// rounded result (so within 1.5 ulp; about 3 in 4 results are the correctly
 /// rounded one): `NaN` for `x < 0` or NaN, `x` itself for `+-0` and `+inf`.
-#[inline]
+/// (Not inlined: a handful of call sites per mechanism.)
+#[inline(never)]
 pub fn sqrt_f32(x: f32) -> f32 {
     if x.is_nan() || x < 0.0 {
         return f32::NAN;
@@ -300,10 +348,10 @@ mod tests {
 
     #[test]
     fn every_f32_in_one_turn_either_way_within_2_ulp() {
-        // The range of crank angles: every f32 in [2^-3, 8] (the inputs that
-        // are reduced by one or a few quadrants), and a stride below.
+        // The range of crank angles: every third f32 in [2^-3, 32] (no
+        // reduction, the small-argument path, the switch to the general one).
         let lo = 0.125f32.to_bits();
-        let hi = 8.0f32.to_bits();
+        let hi = 32.0f32.to_bits();
         let ((es, xs_), (ec, xc)) = worst((lo..=hi).step_by(3).map(f32::from_bits));
         assert!(es <= BOUND_ULP, "sin: {es} ulp at {xs_:e}");
         assert!(ec <= BOUND_ULP, "cos: {ec} ulp at {xc:e}");
@@ -323,6 +371,26 @@ mod tests {
         let ((es, xs_), (ec, xc)) = worst(xs.into_iter());
         assert!(es <= BOUND_ULP, "sin: {es} ulp at {xs_:e}");
         assert!(ec <= BOUND_ULP, "cos: {ec} ulp at {xc:e}");
+    }
+
+    #[test]
+    fn the_three_parts_of_pi_over_2() {
+        // The exact values the reduction relies on (20-bit P1 and P2) and the
+        // sum against f64's pi/2 (whose own error is 6e-17).
+        assert_eq!(P1 as f64, 823_549.0 / 2f64.powi(19));
+        assert_eq!(P2 as f64, 696_865.0 / 2f64.powi(39));
+        let sum = P1 as f64 + P2 as f64 + P3 as f64;
+        assert!((sum - core::f64::consts::FRAC_PI_2).abs() < 1e-16);
+    }
+
+    #[test]
+    #[ignore = "exhaustive over the small-argument path: seconds in release"]
+    fn exhaustive_small_path_within_2_ulp() {
+        let lo = PIO4_F32_DOWN.to_bits();
+        let hi = FAST_LIMIT.to_bits() + 16;
+        let ((es, xs_), (ec, xc)) = worst((lo..=hi).map(f32::from_bits));
+        std::println!("small path: worst sin {es:.4} ulp at {xs_:e}; cos {ec:.4} ulp at {xc:e}");
+        assert!(es <= BOUND_ULP && ec <= BOUND_ULP);
     }
 
     #[test]
@@ -380,7 +448,10 @@ mod tests {
         for k in 1..5000u32 {
             let x = (k * k) as f32;
             assert_eq!(sqrt_f32(x), k as f32);
-            for n in [f32::from_bits(x.to_bits() - 1), f32::from_bits(x.to_bits() + 1)] {
+            for n in [
+                f32::from_bits(x.to_bits() - 1),
+                f32::from_bits(x.to_bits() + 1),
+            ] {
                 assert!(sqrt_steps(n) <= 1, "{n:e}");
             }
         }
