@@ -3,6 +3,9 @@
 //! (shorter distal links, a run-time parameter) prints the typed error instead.
 //!
 //! Run: `cargo run --release --example five_bar` (table) or with `-- --csv`.
+//!
+//! Also writes SVG pictures (kinematics, a drawing, an animation) to
+//! `target/plots/five_bar/` and says where on stderr (`docs/plots.md`).
 mod common;
 use common::scenes::{FiveBar, FiveBarInput};
 
@@ -42,4 +45,5 @@ fn main() {
             }
         }
     }
+    common::plots::write_and_report("five_bar", common::plots::five_bar);
 }

@@ -3,6 +3,9 @@
 //!
 //! Run: `cargo run --release --example fourbar` (table) or with `-- --csv`
 //! (CSV only, 17 significant digits).
+//!
+//! Also writes SVG pictures (kinematics, a drawing, an animation) to
+//! `target/plots/fourbar/` and says where on stderr (`docs/plots.md`).
 mod common;
 use common::scenes::{FourBar, FourBarInput};
 use mechanism::geometry::angle_deg_0_360;
@@ -58,4 +61,5 @@ fn main() {
             println!("{}", common::table_row(&row, 14, 4));
         }
     }
+    common::plots::write_and_report("fourbar", common::plots::fourbar);
 }

@@ -3,6 +3,9 @@
 //! theta4 = 168.938 deg at crank 0).
 //!
 //! Run: `cargo run --release --example shaper` (table) or with `-- --csv`.
+//!
+//! Also writes SVG pictures (kinematics, a drawing, an animation) to
+//! `target/plots/shaper/` and says where on stderr (`docs/plots.md`).
 mod common;
 use common::scenes::{Shaper, ShaperInput};
 use mechanism::geometry::{angle_deg_0_360, unit};
@@ -59,4 +62,5 @@ fn main() {
             println!("{}", common::table_row(&row, 11, 6));
         }
     }
+    common::plots::write_and_report("shaper", common::plots::shaper);
 }

@@ -8,6 +8,8 @@
 //! force of 5 kN opposes the ram's motion while the tool is in the work, the
 //! middle 90 % of the stroke.
 //!
+//! Pictures: `target/plots/shaper_forces/` (forces, drawing, animation).
+//!
 //! Run: `cargo run --release --example shaper_forces` or with `-- --csv`.
 mod common;
 use common::scenes::{ShaperForces, ShaperForcesInput, ShaperForcesLoads};
@@ -104,4 +106,5 @@ fn main() {
             println!("{line}");
         }
     }
+    common::plots::write_and_report("shaper_forces", common::plots::shaper_forces);
 }

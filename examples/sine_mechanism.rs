@@ -15,6 +15,8 @@
 //! of block 2 on crank 1 (opposite sign), and its guide forces are
 //! FR4 = FR4' = -m43 / h2 (the couple as two opposite forces h2 apart).
 //!
+//! Pictures: `target/plots/sine_mechanism/` (forces, drawing, animation).
+//!
 //! Run: `cargo run --release --example sine_mechanism` (tables at g = 10, the
 //! document's, and at g = 9.80665), or with `-- --csv` (the g = 10 table as
 //! CSV, 17 significant digits), `-- --csv --standard-gravity` (g = 9.80665).
@@ -92,6 +94,7 @@ fn main() {
         for step in 0..72 {
             println!("{}", common::csv_row(&row(5.0 * step as f64, g)));
         }
+        common::plots::write_and_report("sine_mechanism", common::plots::sine_mechanism);
         return;
     }
     println!(
@@ -101,4 +104,5 @@ fn main() {
     println!("document: FR12x = -r12x (block on crank), FR4 = FR4' = -m43/h2");
     table(10.0);
     table(9.80665);
+    common::plots::write_and_report("sine_mechanism", common::plots::sine_mechanism);
 }

@@ -5,6 +5,9 @@
 //! af = 93.31 at phi1 = 40 deg).
 //!
 //! Run: `cargo run --release --example sixbar` (table) or with `-- --csv`.
+//!
+//! Also writes SVG pictures (kinematics, a drawing, an animation) to
+//! `target/plots/sixbar/` and says where on stderr (`docs/plots.md`).
 mod common;
 use common::scenes::{SixBar, SixBarInput};
 use mechanism::geometry::angle_deg_0_360;
@@ -81,4 +84,5 @@ fn main() {
             println!("{}", common::table_row(&row, 11, 3));
         }
     }
+    common::plots::write_and_report("sixbar", common::plots::sixbar);
 }

@@ -2,6 +2,9 @@
 //! crank pivot, 3000 rpm, a full turn in steps of 10 deg.
 //!
 //! Run: `cargo run --release --example slider_crank` (table) or with `-- --csv`.
+//!
+//! Also writes SVG pictures (kinematics, a drawing, an animation) to
+//! `target/plots/slider_crank/` and says where on stderr (`docs/plots.md`).
 mod common;
 use common::scenes::{SliderCrank, SliderCrankInput};
 use mechanism::geometry::{angle_deg_0_360, unit};
@@ -53,4 +56,5 @@ fn main() {
             println!("{}", common::table_row(&row, 12, 5));
         }
     }
+    common::plots::write_and_report("slider_crank", common::plots::slider_crank);
 }

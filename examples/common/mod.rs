@@ -1,6 +1,7 @@
 //! Shared by the examples: `--csv` detection and full-precision CSV rows.
 #![allow(dead_code)]
 
+pub mod plots;
 pub mod scenes;
 pub mod seed003;
 

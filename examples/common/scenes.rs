@@ -33,7 +33,7 @@ mechanism! {
         let F = rrp(E, 60.0, crank_line, plus) as (link4, block5) slide af;
         let D = point(link4, from E, 35.0, 180 deg);
         let C = rrr(B, 50.0, D, 75.0, left) as (link2, link3);
-        outputs { C, F, link2, link3, link4, af }
+        outputs { C, F, link2, link3, link4, af, A, E, K, B, D, link1 }
     }
 }
 
@@ -51,7 +51,7 @@ mechanism! {
         let cb = rpr(B, C, plus) as (block, link3);
         let D = point(link3, from C, 0.6, 0 deg);
         let E = rrp(D, 0.15, ram, plus) as (link4, ram_block) slide s_ram;
-        outputs { E, link3, link4 }
+        outputs { E, link3, link4, A, C, B, D }
     }
 }
 
@@ -65,7 +65,7 @@ mechanism! {
         let line = guide((0.0, offset), 0 deg);
         let A = crank(O, crank, theta) as link2;
         let B = rrp(A, rod, line, plus) as (link3, slider) slide x;
-        outputs { B, link3, x }
+        outputs { B, link3, x, O, A }
     }
 }
 
@@ -81,7 +81,7 @@ mechanism! {
         let A = crank(O1, proximal, q1) as arm1;
         let C = crank(O2, proximal, q2) as arm2;
         let P = rrr(A, distal, C, distal, left) as (forearm1, forearm2);
-        outputs { P }
+        outputs { P, O1, O2, A, C }
     }
 }
 

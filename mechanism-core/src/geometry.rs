@@ -133,11 +133,15 @@ pub fn positive<T: Real>(x: T, primitive: Primitive, what: &'static str) -> Resu
 pub const SINGULAR_RELATIVE: f64 = 16.0;
 
 /// Checks a determinant against its scale; `Err(Singular)` when
-/// `|det| <= SINGULAR_RELATIVE * eps * scale` or either is not finite.
+/// `|det| <= SINGULAR_RELATIVE * eps * scale`, `scale <= 0`, or either is not
+/// finite.
 #[inline(always)]
 pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, Error> {
     let threshold = T::lit(SINGULAR_RELATIVE) * T::eps() * scale;
-    if det.finite() && scale.finite() && abs(det) > threshold {
+    // `scale > 0` too: a scale that underflowed to zero (columns shorter than
+    // about 1e-154 in f64) would otherwise pass any nonzero `det` and give an
+    // infinite condition.
+    if det.finite() && scale.finite() && scale > T::zero() && abs(det) > threshold {
         Ok(det)
     } else {
         Err(Error::new(
@@ -148,6 +152,37 @@ pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, E
             },
         ))
     }
+}
+
+/// Checks a determinant like [`check_det`] and also returns the rate system's
+/// condition indicator `|det| / scale`: `(det, condition)`.
+///
+/// The indicator is the determinant relative to the product of its columns'
+/// lengths (Hadamard's bound), so it lies in `(16 eps, 1]` whenever the check
+/// passes: `1` when the columns are orthogonal (the best-conditioned pose), and
+/// it falls to `0` at a singular pose (toggle, dead centre, parallel guides).
+/// For the RRR group it is `|sin|` of the angle between the two links (for a
+/// four-bar, the sine of the transmission angle). The rates' relative error is
+/// bounded by about `eps / condition` (see `docs/stability.md`), so a user can
+/// watch it fall as a singular pose approaches.
+#[inline(always)]
+pub fn check_det_condition<T: Real>(
+    det: T,
+    scale: T,
+    primitive: Primitive,
+) -> Result<(T, T), Error> {
+    let det = check_det(det, scale, primitive)?;
+    // The check passed, so `scale` is finite and > 0. Rounding can push the
+    // ratio a few ulp above Hadamard's bound 1: clamp, so the range holds.
+    let condition = abs(det) / scale;
+    Ok((
+        det,
+        if condition > T::one() {
+            T::one()
+        } else {
+            condition
+        },
+    ))
 }
 
 /// `x - y` where `None` stands for a zero vector (a fixed point): with a

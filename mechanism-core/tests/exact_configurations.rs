@@ -704,6 +704,7 @@ fn fuzz<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError
             omega1: pool.x(),
             s_dot: pool.x(),
             vc: pool.vec(),
+            condition: pool.x(),
         };
         for v in [vel.ok(), Some(wild_vel)].into_iter().flatten() {
             let (aa, ga) = (pool.opt::<T>(), pool.ga::<T>());
@@ -729,6 +730,7 @@ fn fuzz<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError
         let wild_vel = rpr::RprVelocity {
             omega: pool.x(),
             s_dot: pool.x(),
+            condition: pool.x(),
         };
         for v in [vel.ok(), Some(wild_vel)].into_iter().flatten() {
             let (aa, ab) = (pool.opt::<T>(), pool.opt::<T>());
@@ -756,6 +758,7 @@ fn fuzz<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError
             s1_dot: pool.x(),
             s2_dot: pool.x(),
             vc: pool.vec(),
+            condition: pool.x(),
         };
         for v in [vel.ok(), Some(wild_vel)].into_iter().flatten() {
             let (ga1, ga2) = (pool.ga::<T>(), pool.ga::<T>());
@@ -797,6 +800,7 @@ fn fuzz<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError
             s1_dot: pool.x(),
             s2_dot: pool.x(),
             vq: pool.vec(),
+            condition: pool.x(),
         };
         for v in [vel.ok(), Some(wild_vel)].into_iter().flatten() {
             let (aa, ga) = (pool.opt::<T>(), pool.ga::<T>());
@@ -865,6 +869,7 @@ fn fuzz<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError
             omega1: pool.x(),
             omega2: pool.x(),
             vc: pool.vec(),
+            condition: pool.x(),
         };
         for v in [vel.ok(), Some(wild_vel)].into_iter().flatten() {
             let (aa, ab) = (pool.opt::<T>(), pool.opt::<T>());
@@ -906,6 +911,7 @@ fn fuzz_rrr_rates<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), Tes
             omega1: pool.x(),
             omega2: pool.x(),
             vc: pool.vec(),
+            condition: pool.x(),
         };
         for v in [vel.ok(), Some(wild_vel)].into_iter().flatten() {
             let (aa, ab) = (pool.opt::<T>(), pool.opt::<T>());

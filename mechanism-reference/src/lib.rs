@@ -9,6 +9,7 @@
 #![warn(missing_docs)]
 
 mod dd;
+pub mod groups;
 pub mod linear;
 
 pub use dd::Dd;

@@ -23,7 +23,7 @@
 use crate::dyad::rrr::{self, RrrPosition};
 use crate::error::{Error, Primitive};
 use crate::geometry::{
-    check_det, cross, difference, dot, finite, finite_vec, length, perp, plus, positive,
+    check_det_condition, cross, difference, dot, finite, finite_vec, length, perp, plus, positive,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -45,6 +45,13 @@ pub struct ActuatorVelocity<T: Real> {
     pub omega2: T,
     /// Velocity of `C` (L/s).
     pub vc: Vector2<T>,
+    /// Condition indicator of the rate system, `|det| / scale` in `(16 eps, 1]`:
+    /// `|cross(r1, r2)| / (l L)`: `|sin|` of the angle between link 1 and the
+    /// cylinder. `1` is the best-conditioned pose, `0` the singular one (below `16
+    /// eps` velocity returns `Singular`); the rates' relative error is about `eps /
+    /// condition` at most (`docs/stability.md`). The same number governs the
+    /// accelerations (same matrix).
+    pub condition: T,
 }
 
 /// Accelerations of the actuator and its link.
@@ -79,13 +86,14 @@ pub fn position<T: Real>(
     rrr::position(a, l, b, length, mode).map_err(|e| Error::new(P, e.fault))
 }
 
-/// Determinant `cross(r1, r2)`, checked against `16 eps |r1| |r2|`, and the
-/// cylinder's length `|r2|` (> 0 when the check passes).
+/// Determinant `cross(r1, r2)`, checked against `16 eps |r1| |r2|`, the
+/// cylinder's length `|r2|` (> 0 when the check passes) and the condition
+/// indicator `|det| / (|r1| |r2|)`.
 #[inline(always)]
-fn determinant<T: Real>(pos: &ActuatorPosition<T>) -> Result<(T, T), Error> {
+fn determinant<T: Real>(pos: &ActuatorPosition<T>) -> Result<(T, T, T), Error> {
     let len = length(&pos.r2);
-    let det = check_det(cross(&pos.r1, &pos.r2), length(&pos.r1) * len, P)?;
-    Ok((det, len))
+    let (det, condition) = check_det_condition(cross(&pos.r1, &pos.r2), length(&pos.r1) * len, P)?;
+    Ok((det, len, condition))
 }
 
 /// Rates from the velocities of `A` and `B` (L/s; `None`: fixed) and the
@@ -105,7 +113,7 @@ pub fn velocity<T: Real>(
     length_dot: T,
 ) -> Result<ActuatorVelocity<T>, Error> {
     let length_dot = finite(length_dot, P, "actuator extension rate")?;
-    let (det, len) = determinant(pos)?;
+    let (det, len, condition) = determinant(pos)?;
     let e2 = pos.r2 / len;
     let w = finite_vec(
         difference(vb, va) + e2 * length_dot,
@@ -119,7 +127,12 @@ pub fn velocity<T: Real>(
         P,
         "actuator velocity of C",
     )?;
-    Ok(ActuatorVelocity { omega1, omega2, vc })
+    Ok(ActuatorVelocity {
+        omega1,
+        omega2,
+        vc,
+        condition,
+    })
 }
 
 /// Accelerations from the accelerations of `A` and `B` (L/s^2; `None`: fixed),
@@ -141,7 +154,7 @@ pub fn acceleration<T: Real>(
 ) -> Result<ActuatorAcceleration<T>, Error> {
     let length_dot = finite(length_dot, P, "actuator extension rate")?;
     let length_ddot = finite(length_ddot, P, "actuator extension acceleration")?;
-    let (det, len) = determinant(pos)?;
+    let (det, len, _) = determinant(pos)?;
     let e2 = pos.r2 / len;
     let w = finite_vec(
         difference(ab, aa) + pos.r1 * (vel.omega1 * vel.omega1)

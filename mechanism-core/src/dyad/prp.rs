@@ -28,7 +28,7 @@
 use crate::driver::slider::{transport_acceleration, transport_velocity};
 use crate::error::{Error, Primitive};
 use crate::geometry::{
-    check_det, cross, difference, finite, finite_point, finite_vec, length, perp, plus,
+    check_det_condition, cross, difference, finite, finite_point, finite_vec, length, perp, plus,
 };
 use crate::guide::{Line, LineAcceleration, LineVelocity};
 use crate::scalar::Real;
@@ -56,6 +56,13 @@ pub struct PrpVelocity<T: Real> {
     pub s2_dot: T,
     /// Absolute velocity of `C` (L/s).
     pub vc: Vector2<T>,
+    /// Condition indicator of the rate system, `|det| / scale` in `(16 eps, 1]`:
+    /// `|cross(dir1, dir2)|`: `|sin|` of the angle between the guides. `1` is the
+    /// best-conditioned pose, `0` the singular one (below `16 eps` velocity returns
+    /// `Singular`); the rates' relative error is about `eps / condition` at most
+    /// (`docs/stability.md`). The same number governs the accelerations (same
+    /// matrix).
+    pub condition: T,
 }
 
 /// Accelerations of the PRP group.
@@ -71,8 +78,8 @@ pub struct PrpAcceleration<T: Real> {
 
 /// Determinant `cross(dir1, dir2)`, checked against `16 eps |dir1| |dir2|`.
 #[inline(always)]
-fn determinant<T: Real>(g1: &Line<T>, g2: &Line<T>) -> Result<T, Error> {
-    check_det(
+fn determinant<T: Real>(g1: &Line<T>, g2: &Line<T>) -> Result<(T, T), Error> {
+    check_det_condition(
         cross(&g1.dir, &g2.dir),
         length(&g1.dir) * length(&g2.dir),
         P,
@@ -101,7 +108,7 @@ pub fn position<T: Real>(
         P,
         "PRP distance between the guides",
     )?;
-    let det = determinant(g1, g2)?;
+    let (det, _) = determinant(g1, g2)?;
     let s1 = finite(cross(&q, &d2) / det, P, "PRP displacement s1")?;
     let s2 = finite(cross(&q, &d1) / det, P, "PRP displacement s2")?;
     let c = finite_point(g1.at(s1, offset1), P, "PRP joint C")?;
@@ -123,7 +130,7 @@ pub fn velocity<T: Real>(
     gv1: Option<&LineVelocity<T>>,
     gv2: Option<&LineVelocity<T>>,
 ) -> Result<PrpVelocity<T>, Error> {
-    let det = determinant(g1, g2)?;
+    let (det, condition) = determinant(g1, g2)?;
     let vm1 = transport_velocity(g1, &pos.c, gv1);
     let vm2 = transport_velocity(g2, &pos.c, gv2);
     let w = finite_vec(
@@ -134,7 +141,12 @@ pub fn velocity<T: Real>(
     let s1_dot = finite(cross(&w, &g2.dir) / det, P, "PRP sliding speed 1")?;
     let s2_dot = finite(cross(&w, &g1.dir) / det, P, "PRP sliding speed 2")?;
     let vc = finite_vec(plus(vm1.as_ref(), g1.dir * s1_dot), P, "PRP velocity of C")?;
-    Ok(PrpVelocity { s1_dot, s2_dot, vc })
+    Ok(PrpVelocity {
+        s1_dot,
+        s2_dot,
+        vc,
+        condition,
+    })
 }
 
 /// Accelerations of the group from the guides' bodies' motions (`gv`/`ga`;
@@ -156,7 +168,7 @@ pub fn acceleration<T: Real>(
     gv2: Option<&LineVelocity<T>>,
     ga2: Option<&LineAcceleration<T>>,
 ) -> Result<PrpAcceleration<T>, Error> {
-    let det = determinant(g1, g2)?;
+    let (det, _) = determinant(g1, g2)?;
     let am1 = transport_acceleration(g1, &pos.c, gv1, ga1, &(g1.dir * vel.s1_dot));
     let am2 = transport_acceleration(g2, &pos.c, gv2, ga2, &(g2.dir * vel.s2_dot));
     let w = finite_vec(

@@ -28,7 +28,7 @@
 use crate::driver::slider::{transport_acceleration, transport_velocity};
 use crate::error::{Error, Primitive};
 use crate::geometry::{
-    check_det, cross, difference, finite, finite_point, finite_vec, length, perp, plus,
+    check_det_condition, cross, difference, finite, finite_point, finite_vec, length, perp, plus,
 };
 use crate::guide::{Line, LineAcceleration, LineVelocity};
 use crate::scalar::Real;
@@ -59,6 +59,13 @@ pub struct RppVelocity<T: Real> {
     pub s2_dot: T,
     /// Absolute velocity of `Q` (L/s).
     pub vq: Vector2<T>,
+    /// Condition indicator of the rate system, `|det| / scale` in `(16 eps, 1]`:
+    /// `|sin beta|`: `|sin|` of the angle between the slot and the guide. `1` is
+    /// the best-conditioned pose, `0` the singular one (below `16 eps` velocity
+    /// returns `Singular`); the rates' relative error is about `eps / condition` at
+    /// most (`docs/stability.md`). The same number governs the accelerations (same
+    /// matrix).
+    pub condition: T,
 }
 
 /// Accelerations of the RPP group.
@@ -74,8 +81,8 @@ pub struct RppAcceleration<T: Real> {
 
 /// Determinant `cross(dir, w) = sin(beta)`, checked against `16 eps |dir| |w|`.
 #[inline(always)]
-fn determinant<T: Real>(dir: &Vector2<T>, w: &Vector2<T>) -> Result<T, Error> {
-    check_det(cross(dir, w), length(dir) * length(w), P)
+fn determinant<T: Real>(dir: &Vector2<T>, w: &Vector2<T>) -> Result<(T, T), Error> {
+    check_det_condition(cross(dir, w), length(dir) * length(w), P)
 }
 
 /// Closes the group: finds `s1`, `s2` with `A = g.at(s2, offset) + s1 w`,
@@ -101,7 +108,7 @@ pub fn position<T: Real>(
         P,
         "RPP distance from the guide",
     )?;
-    let det = determinant(&dir, &w)?;
+    let (det, _) = determinant(&dir, &w)?;
     let s1 = finite(cross(&dir, &q) / det, P, "RPP displacement s1")?;
     let s2 = finite(cross(&q, &w) / det, P, "RPP displacement s2")?;
     let qp = finite_point(g.at(s2, offset), P, "RPP point Q")?;
@@ -130,14 +137,19 @@ pub fn velocity<T: Real>(
     va: Option<&Vector2<T>>,
     gv: Option<&LineVelocity<T>>,
 ) -> Result<RppVelocity<T>, Error> {
-    let det = determinant(&g.dir, &pos.slot)?;
+    let (det, condition) = determinant(&g.dir, &pos.slot)?;
     let vma = transport_velocity(g, a, gv);
     let r = finite_vec(difference(va, vma.as_ref()), P, "RPP relative velocity")?;
     let s1_dot = finite(cross(&g.dir, &r) / det, P, "RPP sliding speed 1")?;
     let s2_dot = finite(cross(&r, &pos.slot) / det, P, "RPP sliding speed 2")?;
     let vmq = transport_velocity(g, &pos.q, gv);
     let vq = finite_vec(plus(vmq.as_ref(), g.dir * s2_dot), P, "RPP velocity of Q")?;
-    Ok(RppVelocity { s1_dot, s2_dot, vq })
+    Ok(RppVelocity {
+        s1_dot,
+        s2_dot,
+        vq,
+        condition,
+    })
 }
 
 /// Accelerations of the group from the acceleration of `A` (L/s^2; `None`:
@@ -158,7 +170,7 @@ pub fn acceleration<T: Real>(
     gv: Option<&LineVelocity<T>>,
     ga: Option<&LineAcceleration<T>>,
 ) -> Result<RppAcceleration<T>, Error> {
-    let det = determinant(&g.dir, &pos.slot)?;
+    let (det, _) = determinant(&g.dir, &pos.slot)?;
     let rel_a = pos.slot * vel.s1_dot + g.dir * vel.s2_dot;
     let ama = transport_acceleration(g, a, gv, ga, &rel_a);
     let r = finite_vec(difference(aa, ama.as_ref()), P, "RPP relative acceleration")?;

@@ -28,7 +28,9 @@
 //! Units: lengths in the user's unit L, rates per second; angular rates in rad/s.
 
 use crate::error::{Error, Fault, Primitive};
-use crate::geometry::{abs, check_det, cross, difference, dot, finite, finite_vec, length, perp};
+use crate::geometry::{
+    abs, check_det_condition, cross, difference, dot, finite, finite_vec, length, perp,
+};
 use crate::mode::Mode;
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -53,6 +55,13 @@ pub struct RprVelocity<T: Real> {
     pub omega: T,
     /// Sliding speed of the block along link 2, relative to it (L/s).
     pub s_dot: T,
+    /// Condition indicator of the rate system, `|det| / scale` in `(16 eps, 1]`:
+    /// `|s| / |A - B|`: `|cos|` of the angle between the slide line and `A - B`.
+    /// `1` is the best-conditioned pose, `0` the singular one (below `16 eps`
+    /// velocity returns `Singular`); the rates' relative error is about `eps /
+    /// condition` at most (`docs/stability.md`). The same number governs the
+    /// accelerations (same matrix).
+    pub condition: T,
 }
 
 /// Accelerations of the RPR group.
@@ -133,8 +142,8 @@ pub fn position<T: Real>(
 /// Determinant of the rate system, `dot(u, A - B) = s`, checked against
 /// `16 eps |u| |A - B|`.
 #[inline(always)]
-fn determinant<T: Real>(pos: &RprPosition<T>, p: &Vector2<T>) -> Result<T, Error> {
-    check_det(dot(&pos.axis, p), length(&pos.axis) * length(p), P)
+fn determinant<T: Real>(pos: &RprPosition<T>, p: &Vector2<T>) -> Result<(T, T), Error> {
+    check_det_condition(dot(&pos.axis, p), length(&pos.axis) * length(p), P)
 }
 
 /// Rates of the group from the velocities of `A` and `B` (L/s; `None`: fixed).
@@ -154,11 +163,15 @@ pub fn velocity<T: Real>(
     vb: Option<&Vector2<T>>,
 ) -> Result<RprVelocity<T>, Error> {
     let p = a - b;
-    let det = determinant(pos, &p)?;
+    let (det, condition) = determinant(pos, &p)?;
     let w = finite_vec(difference(va, vb), P, "RPR joint velocity")?;
     let omega = finite(cross(&pos.axis, &w) / det, P, "RPR angular velocity")?;
     let s_dot = finite(dot(&w, &p) / det, P, "RPR sliding speed")?;
-    Ok(RprVelocity { omega, s_dot })
+    Ok(RprVelocity {
+        omega,
+        s_dot,
+        condition,
+    })
 }
 
 /// Accelerations of the group from the accelerations of `A` and `B` (L/s^2;
@@ -177,7 +190,7 @@ pub fn acceleration<T: Real>(
     ab: Option<&Vector2<T>>,
 ) -> Result<RprAcceleration<T>, Error> {
     let p = a - b;
-    let det = determinant(pos, &p)?;
+    let (det, _) = determinant(pos, &p)?;
     let w = finite_vec(
         difference(aa, ab) + p * (vel.omega * vel.omega)
             - perp(&pos.axis) * (T::lit(2.0) * vel.omega * vel.s_dot),

@@ -30,8 +30,8 @@
 use crate::driver::slider::{transport_acceleration, transport_velocity};
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    check_det, cross, difference, dot, finite, finite_point, finite_vec, length, perp, plus,
-    positive,
+    check_det_condition, cross, difference, dot, finite, finite_point, finite_vec, length, perp,
+    plus, positive,
 };
 use crate::guide::{Line, LineAcceleration, LineVelocity};
 use crate::link::{relative_acceleration, relative_velocity};
@@ -62,6 +62,13 @@ pub struct RrpVelocity<T: Real> {
     pub s_dot: T,
     /// Absolute velocity of `C` (L/s).
     pub vc: Vector2<T>,
+    /// Condition indicator of the rate system, `|det| / scale` in `(16 eps, 1]`:
+    /// `|dot(r1, dir)| / l`: `|cos|` of the angle between link 1 and the guide. `1`
+    /// is the best-conditioned pose, `0` the singular one (below `16 eps` velocity
+    /// returns `Singular`); the rates' relative error is about `eps / condition` at
+    /// most (`docs/stability.md`). The same number governs the accelerations (same
+    /// matrix).
+    pub condition: T,
 }
 
 /// Accelerations of the RRP group.
@@ -125,8 +132,8 @@ pub fn position<T: Real>(
 /// Determinant of the rate system, `dot(r1, dir) = +-sqrt(l^2 - k^2)`, checked
 /// against `16 eps |r1| |dir|`.
 #[inline(always)]
-fn determinant<T: Real>(pos: &RrpPosition<T>, g: &Line<T>) -> Result<T, Error> {
-    check_det(dot(&pos.r1, &g.dir), length(&pos.r1) * length(&g.dir), P)
+fn determinant<T: Real>(pos: &RrpPosition<T>, g: &Line<T>) -> Result<(T, T), Error> {
+    check_det_condition(dot(&pos.r1, &g.dir), length(&pos.r1) * length(&g.dir), P)
 }
 
 /// Rates of the group from the velocity of `A` (L/s; `None`: fixed) and the
@@ -145,7 +152,7 @@ pub fn velocity<T: Real>(
     va: Option<&Vector2<T>>,
     gv: Option<&LineVelocity<T>>,
 ) -> Result<RrpVelocity<T>, Error> {
-    let det = determinant(pos, g)?;
+    let (det, condition) = determinant(pos, g)?;
     let vm = transport_velocity(g, &pos.c, gv);
     let w = finite_vec(difference(vm.as_ref(), va), P, "RRP joint velocity")?;
     let omega1 = finite(cross(&g.dir, &w) / det, P, "RRP angular velocity")?;
@@ -155,7 +162,12 @@ pub fn velocity<T: Real>(
         P,
         "RRP velocity of C",
     )?;
-    Ok(RrpVelocity { omega1, s_dot, vc })
+    Ok(RrpVelocity {
+        omega1,
+        s_dot,
+        vc,
+        condition,
+    })
 }
 
 /// Accelerations of the group from the acceleration of `A` (L/s^2; `None`:
@@ -174,7 +186,7 @@ pub fn acceleration<T: Real>(
     gv: Option<&LineVelocity<T>>,
     ga: Option<&LineAcceleration<T>>,
 ) -> Result<RrpAcceleration<T>, Error> {
-    let det = determinant(pos, g)?;
+    let (det, _) = determinant(pos, g)?;
     let am = transport_acceleration(g, &pos.c, gv, ga, &(g.dir * vel.s_dot));
     let w = finite_vec(
         difference(am.as_ref(), aa) + pos.r1 * (vel.omega1 * vel.omega1),

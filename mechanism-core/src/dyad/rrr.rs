@@ -22,8 +22,8 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, check_det, cross, difference, dot, finite, finite_point, finite_vec, length, perp, plus,
-    positive,
+    abs, check_det_condition, cross, difference, dot, finite, finite_point, finite_vec, length,
+    perp, plus, positive,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -52,6 +52,13 @@ pub struct RrrVelocity<T: Real> {
     pub omega2: T,
     /// Velocity of `C` (L/s).
     pub vc: Vector2<T>,
+    /// Condition indicator of the rate system, `|det| / scale` in `(16 eps, 1]`:
+    /// `|cross(r1, r2)| / (l1 l2)`: `|sin|` of the angle between the two links. `1`
+    /// is the best-conditioned pose, `0` the singular one (below `16 eps` velocity
+    /// returns `Singular`); the rates' relative error is about `eps / condition` at
+    /// most (`docs/stability.md`). The same number governs the accelerations (same
+    /// matrix).
+    pub condition: T,
 }
 
 /// Angular accelerations of the two links and the acceleration of `C`.
@@ -131,8 +138,8 @@ pub fn position<T: Real>(
 /// Determinant of the rate system, `cross(r1, r2) = l1 l2 sin(angle between
 /// the links)`, checked against `16 eps l1 l2`.
 #[inline(always)]
-fn determinant<T: Real>(pos: &RrrPosition<T>) -> Result<T, Error> {
-    check_det(
+fn determinant<T: Real>(pos: &RrrPosition<T>) -> Result<(T, T), Error> {
+    check_det_condition(
         cross(&pos.r1, &pos.r2),
         length(&pos.r1) * length(&pos.r2),
         P,
@@ -150,7 +157,7 @@ pub fn velocity<T: Real>(
     va: Option<&Vector2<T>>,
     vb: Option<&Vector2<T>>,
 ) -> Result<RrrVelocity<T>, Error> {
-    let det = determinant(pos)?;
+    let (det, condition) = determinant(pos)?;
     let dv = finite_vec(difference(vb, va), P, "RRR joint velocity")?;
     let omega1 = finite(dot(&dv, &pos.r2) / det, P, "RRR omega1")?;
     let omega2 = finite(dot(&dv, &pos.r1) / det, P, "RRR omega2")?;
@@ -159,7 +166,12 @@ pub fn velocity<T: Real>(
         P,
         "RRR velocity of C",
     )?;
-    Ok(RrrVelocity { omega1, omega2, vc })
+    Ok(RrrVelocity {
+        omega1,
+        omega2,
+        vc,
+        condition,
+    })
 }
 
 /// Accelerations of the group from the accelerations of `A` and `B` (L/s^2;
@@ -175,7 +187,7 @@ pub fn acceleration<T: Real>(
     aa: Option<&Vector2<T>>,
     ab: Option<&Vector2<T>>,
 ) -> Result<RrrAcceleration<T>, Error> {
-    let det = determinant(pos)?;
+    let (det, _) = determinant(pos)?;
     let da = finite_vec(difference(ab, aa), P, "RRR joint acceleration")?;
     let w = da + pos.r1 * (vel.omega1 * vel.omega1) - pos.r2 * (vel.omega2 * vel.omega2);
     let alpha1 = finite(dot(&w, &pos.r2) / det, P, "RRR alpha1")?;

@@ -1,0 +1,146 @@
+//! `mechanism-plot`: SVG pictures of planar linkages, std-only and dependency-free.
+//!
+//! Two kinds of picture, both written as plain SVG 1.1 text (no system libraries, no
+//! fonts needed at build time; viewers use their own sans-serif font):
+//!
+//! - [`Plot`] / [`Figure`]: line plots of any output against the input (angles, rates,
+//!   accelerations, slider positions, reactions, driving torque), labelled axes with units,
+//!   tick values on a 1-2-5 grid (15/30/45/90 for degrees), a legend, several series per
+//!   panel and several panels per figure.
+//! - [`Sketch`]: a drawing of the mechanism built from solved positions: ground pivots and
+//!   ground guides with hatching, links as bars (two joints) or filled polygons (three or
+//!   more), revolute joints, sliders oriented along their guides, guides carried by links,
+//!   coupler-point paths; one pose as a static drawing, or every pose as an animated SVG
+//!   (SMIL, discrete frames, plays in browsers).
+//!
+//! Bad data (NaN or infinite values, empty or mismatched series, no frames) is a typed
+//! [`PlotError`], never a panic and never a NaN in the SVG. The core crates stay `no_std`;
+//! only the examples and users who want pictures depend on this crate.
+//!
+//! ```
+//! use mechanism_plot::Plot;
+//! let xs: Vec<f64> = (0..=36).map(|k| 10.0 * k as f64).collect();
+//! let ys: Vec<f64> = xs.iter().map(|d| d.to_radians().sin()).collect();
+//! let svg = Plot::new("A sine")
+//!     .x_axis("crank angle", "deg")
+//!     .y_axis("sin", "")
+//!     .series("sin", &xs, &ys)
+//!     .to_svg()
+//!     .unwrap();
+//! assert!(svg.starts_with("<svg"));
+//! ```
+#![forbid(unsafe_code)]
+
+mod plot;
+mod sketch;
+mod svg;
+mod ticks;
+
+pub use plot::{Figure, Plot};
+pub use sketch::{Frame, Sketch};
+pub use ticks::{nice_ticks, Ticks};
+
+use std::fmt;
+
+/// World coordinates of a point `[x, y]`, in the mechanism's length unit, y up.
+pub type Xy = [f64; 2];
+
+/// Everything that can go wrong when making a picture.
+#[derive(Debug)]
+pub enum PlotError {
+    /// A plot (or every panel of a figure) has no series.
+    NoSeries {
+        /// The plot's title.
+        plot: String,
+    },
+    /// A series has no points.
+    EmptySeries {
+        /// The series' name.
+        series: String,
+    },
+    /// A series' x and y slices differ in length.
+    LengthMismatch {
+        /// The series' name.
+        series: String,
+        /// Length of the x values.
+        xs: usize,
+        /// Length of the y values.
+        ys: usize,
+    },
+    /// A value is NaN or infinite.
+    NonFinite {
+        /// What holds the value: a series name, an axis, an element of a sketch.
+        what: String,
+        /// Index of the value in its series or frame.
+        index: usize,
+    },
+    /// An axis range or step set by the caller is unusable (`lo >= hi`, step <= 0, ...).
+    BadRange {
+        /// Which axis.
+        axis: &'static str,
+        /// The offending lower bound (or step).
+        lo: f64,
+        /// The offending upper bound (or step).
+        hi: f64,
+    },
+    /// A sketch has no frames, or the requested frame does not exist.
+    NoFrame {
+        /// The requested index.
+        index: usize,
+        /// The number of frames.
+        frames: usize,
+    },
+    /// A sketch has no geometry at all (nothing to scale the drawing to).
+    NothingToDraw,
+    /// Writing the file failed.
+    Io(std::io::Error),
+}
+
+impl fmt::Display for PlotError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PlotError::NoSeries { plot } => write!(f, "plot `{plot}` has no series"),
+            PlotError::EmptySeries { series } => write!(f, "series `{series}` is empty"),
+            PlotError::LengthMismatch { series, xs, ys } => {
+                write!(f, "series `{series}` has {xs} x values but {ys} y values")
+            }
+            PlotError::NonFinite { what, index } => {
+                write!(f, "{what}: value {index} is NaN or infinite")
+            }
+            PlotError::BadRange { axis, lo, hi } => {
+                write!(f, "{axis} axis: unusable range or step ({lo}, {hi})")
+            }
+            PlotError::NoFrame { index, frames } => {
+                write!(f, "sketch has {frames} frames, frame {index} requested")
+            }
+            PlotError::NothingToDraw => write!(f, "sketch has no geometry to draw"),
+            PlotError::Io(e) => write!(f, "cannot write the SVG file: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for PlotError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            PlotError::Io(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<std::io::Error> for PlotError {
+    fn from(e: std::io::Error) -> Self {
+        PlotError::Io(e)
+    }
+}
+
+/// Writes `text` to `path`, creating the parent directories.
+pub(crate) fn write_file(path: &std::path::Path, text: &str) -> Result<(), PlotError> {
+    if let Some(dir) = path.parent() {
+        if !dir.as_os_str().is_empty() {
+            std::fs::create_dir_all(dir)?;
+        }
+    }
+    std::fs::write(path, text)?;
+    Ok(())
+}
