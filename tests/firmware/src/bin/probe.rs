@@ -92,7 +92,12 @@ fn scene(m: &FourBar<T>, q: T) -> impl Sized {
 #[cfg(any(feature = "vel32", feature = "vel64"))]
 fn scene(m: &FourBar<T>, q: T) -> impl Sized {
     let p = m.position(&FourBarInput { theta2: q })?;
-    let v = m.velocity(&p, &FourBarInput { theta2: T::lit(250.0) })?;
+    let v = m.velocity(
+        &p,
+        &FourBarInput {
+            theta2: T::lit(250.0),
+        },
+    )?;
     Ok::<_, mechanism::Error>((p, v))
 }
 
@@ -100,8 +105,12 @@ fn scene(m: &FourBar<T>, q: T) -> impl Sized {
 fn scene(m: &FourBar<T>, q: T) -> impl Sized {
     m.solve(
         &FourBarInput { theta2: q },
-        &FourBarInput { theta2: T::lit(250.0) },
-        &FourBarInput { theta2: T::lit(2.0e4) },
+        &FourBarInput {
+            theta2: T::lit(250.0),
+        },
+        &FourBarInput {
+            theta2: T::lit(2.0e4),
+        },
     )
 }
 
@@ -112,8 +121,12 @@ fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
     let m = black_box(FourBarForces::<T>::default());
     m.solve(
         &FourBarForcesInput { theta2: q },
-        &FourBarForcesInput { theta2: T::lit(250.0) },
-        &FourBarForcesInput { theta2: T::lit(2.0e4) },
+        &FourBarForcesInput {
+            theta2: T::lit(250.0),
+        },
+        &FourBarForcesInput {
+            theta2: T::lit(2.0e4),
+        },
     )
 }
 
