@@ -50,7 +50,10 @@ measure() { # feature -> "text rodata mean min max"
     -semihosting-config enable=on,target=native -kernel "$elf" \
     "${single[@]}" -d exec,nochain -D "$work/trace.log" </dev/null >&2
   awk -v start="$start" -v end="$end" -f "$root/scripts/embedded-count.awk" "$work/trace.log" > "$work/count.txt"
-  sort -k3 -n -r "$work/count.txt" | grep '^fn ' | head -6 | sed 's/^/    /' > "$work/top-$feat.txt" || true
+  # Largest first, names demangled when the ARM c++filt is there.
+  local filt=cat
+  if command -v arm-none-eabi-c++filt >/dev/null; then filt=arm-none-eabi-c++filt; fi
+  sort -k3 -n -r "$work/count.txt" | grep '^fn ' | head -6 | sed 's/^fn //' | $filt | sed 's/^/    /' > "$work/top-$feat.txt" || true
   echo "$text $rodata $(awk '/^evaluations/{print $4, $6, $8}' "$work/count.txt")"
 }
 

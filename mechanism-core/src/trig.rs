@@ -64,7 +64,7 @@
 //! reduction uses its own table.
 
 /// `pi/4` rounded down to `f32` (0.78539813...), the no-reduction threshold.
-const PIO4_F32_DOWN: f32 = 0.785_398_1;
+const PIO4_F32_DOWN: f32 = f32::from_bits(0x3F49_0FDA);
 
 /// `2^-12`: below it `x` and 1 are the rounded sine and cosine (within 1 ulp).
 const TINY: f32 = 1.0 / 4096.0;
