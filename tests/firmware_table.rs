@@ -3,7 +3,7 @@
 //! under QEMU) compares its f32 and f64 results with.
 //!
 //! The committed table must equal what the host computes now, digit for digit
-//! (17 significant digits round-trip f64 exactly), so it cannot go stale. To
+//! (the shortest round-trip digits of each f64), so it cannot go stale. To
 //! regenerate after an intended change:
 //! `MECHANISM_BLESS=1 cargo test --test firmware_table`.
 #![allow(dead_code)]
@@ -26,7 +26,8 @@ fn table(name: &str, row: fn(f64) -> Result<[f64; 9], mechanism::Error>) -> Stri
     let _ = writeln!(s, "pub const {name}: [[f64; 9]; {}] = [", rows::STEPS);
     for i in 0..rows::STEPS {
         let r = row(rows::angle(i)).expect("the sweeps assemble at every step");
-        let cells: Vec<String> = r.iter().map(|v| format!("{v:.16e}")).collect();
+        // `{:e}`: the shortest digits that read back as the same f64.
+        let cells: Vec<String> = r.iter().map(|v| format!("{v:e}")).collect();
         let _ = writeln!(s, "    [{}],", cells.join(", "));
     }
     s.push_str("];\n");

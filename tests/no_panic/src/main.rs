@@ -17,7 +17,6 @@
 //! f32 kernels `sin_cos_f32` and `sqrt_f32`.
 
 #[path = "../../../examples/common/scenes.rs"]
-#[allow(dead_code)]
 mod scenes;
 
 use mechanism::trig::{sin_cos_f32, sqrt_f32};

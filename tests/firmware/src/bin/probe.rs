@@ -177,5 +177,7 @@ fn main() -> ! {
         black_box(r);
     }
     debug::exit(debug::EXIT_SUCCESS);
-    loop {}
+    loop {
+        cortex_m::asm::wfi();
+    }
 }
