@@ -1269,3 +1269,34 @@ fn five_bar_unreachable_pose_is_a_typed_error() {
     assert!(ok > 0 && err > 0, "both outcomes occur: {ok} Ok, {err} Err");
     println!("five_bar (distal 0.1): {ok} Ok, {err} Err over whole degrees");
 }
+
+/// The generated `condition` of the seed 002 four-bar's velocity is the RRR
+/// group's scaled determinant, `|sin|` of the transmission angle between
+/// coupler and rocker, computed here from the positions alone. Both are
+/// products of a few roundings of unit-size quantities: 1e-14 leaves 50 ulp.
+/// The crank-rocker never reaches toggle, so the indicator stays away from 0:
+/// its minimum is at theta2 = 180 deg (in the grid), where the diagonal
+/// A-O4 is d + a and the law of cosines gives the transmission angle.
+#[test]
+fn velocity_condition_is_the_transmission_angle_sine() {
+    let fb = FourBar::<f64>::default();
+    let mut lowest = f64::MAX;
+    for step in 0..360 {
+        let theta2 = (step as f64).to_radians();
+        let p = fb.position(&FourBarInput { theta2 }).unwrap();
+        let v = fb.velocity(&p, &FourBarInput { theta2: 250.0 }).unwrap();
+        let (coupler, rocker) = (p.B - p.A, p.B - p.O4);
+        let sine =
+            (coupler.x * rocker.y - coupler.y * rocker.x).abs() / (coupler.norm() * rocker.norm());
+        assert!(
+            (v.condition - sine).abs() < 1e-14,
+            "{step}: {} vs {sine}",
+            v.condition
+        );
+        lowest = lowest.min(v.condition);
+    }
+    let (a, b, c, d) = (101.6f64, 254.0f64, 177.8f64, 304.8f64);
+    let cos_mu = (b * b + c * c - (d + a) * (d + a)) / (2.0 * b * c);
+    let worst = (1.0 - cos_mu * cos_mu).sqrt();
+    assert!((lowest - worst).abs() < 1e-14, "lowest {lowest} vs {worst}");
+}

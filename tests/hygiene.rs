@@ -18,7 +18,9 @@ mod shadowed {
     use mechanism::mechanism;
 
     mechanism! {
-        /// A four-bar defined where the prelude is shadowed.
+        /// A four-bar defined where the prelude is shadowed (with its
+        /// generated tests, which must not depend on the prelude either).
+        #[self_test]
         pub Shadowed {
             params { crank = 1.0 }
             const coupler = 3.0;

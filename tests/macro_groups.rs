@@ -54,6 +54,9 @@ mechanism! {
         let A = crank(O, 0.1, phi) as crank_link;
         let rod_line = guide(O, crank_link);
         let C = prp(rod_line, vertical, 0.0, 0.01) as (b1, b2) slide (s1, s2);
+        // At 90 and 270 deg the crank's line is parallel to the vertical
+        // guide and C is at infinity: the macro rejects the default full turn.
+        range phi = (-80 deg, 80 deg);
     }
 }
 

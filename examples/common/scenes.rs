@@ -8,6 +8,7 @@ mechanism! {
     /// Crank-rocker four-bar of seed 002 (mm). Ground O2-O4 = 304.8, crank
     /// O2-A = 101.6, coupler A-B = 254.0, rocker O4-B = 177.8; the document's
     /// branch has B above the line A-O4 (`left`).
+    #[self_test]
     pub FourBar {
         params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
         dof 1;
@@ -23,6 +24,7 @@ mechanism! {
     /// the crank opposite its slide line; the block F slides along the crank's
     /// line and is pinned to the rocker E-F (60) whose other arm E-D is 35; the
     /// RRR group B-C-D (50, 75) closes the loop.
+    #[self_test]
     pub SixBar {
         dof 1;
         let A = ground(0.0, 0.0);
@@ -33,6 +35,9 @@ mechanism! {
         let F = rrp(E, 60.0, crank_line, plus) as (link4, block5) slide af;
         let D = point(link4, from E, 35.0, 180 deg);
         let C = rrr(B, 50.0, D, 75.0, left) as (link2, link3);
+        // F assembles only while the crank line passes within 60 of E
+        // (|sin phi1| <= 6/7): the document's 40..55 deg.
+        range phi1 = (40 deg, 55 deg);
         outputs { C, F, link2, link3, link4, af, A, E, K, B, D, link1 }
     }
 }
@@ -42,6 +47,7 @@ mechanism! {
     /// at B slides on the rocker pivoted at C = (0, -0.275); D on the rocker at
     /// CD = 0.6; the connecting rod DE = 0.15 drives the ram E along y = 0.3
     /// (guide direction 180 deg, as in the document).
+    #[self_test]
     pub Shaper {
         dof 1;
         let A = ground(0.0, 0.0);
@@ -58,6 +64,7 @@ mechanism! {
 mechanism! {
     /// Offset slider-crank (m): crank 0.1, connecting rod 0.4, slide line at
     /// y = 0.02 along +x.
+    #[self_test]
     pub SliderCrank {
         params { crank = 0.1, rod = 0.4, offset = 0.02 }
         dof 1;
@@ -73,6 +80,7 @@ mechanism! {
     /// Two-input five-bar robot (m): cranks of 0.1 about O1 = (0, 0) and
     /// O2 = (0.08, 0), distal links of 0.16 meeting at the end point P above
     /// the base (`left` of the directed line A -> C).
+    #[self_test]
     pub FiveBar {
         params { base = 0.08, proximal = 0.1, distal = 0.16 }
         dof 2;
@@ -81,6 +89,8 @@ mechanism! {
         let A = crank(O1, proximal, q1) as arm1;
         let C = crank(O2, proximal, q2) as arm2;
         let P = rrr(A, distal, C, distal, left) as (forearm1, forearm2);
+        range q1 = (60 deg, 150 deg);
+        range q2 = (0 deg, 90 deg);
         outputs { P, O1, O2, A, C }
     }
 }
@@ -92,6 +102,7 @@ mechanism! {
     /// m2 = G2 / g and m3 = G3 / g at B and on x = 0 (the document's weights
     /// G2 = 40 N, G3 = 100 N with g = 10); no weight loads, as in the document;
     /// the resistance Fr = 400 N acts downward on link 3 along x = 0.
+    #[self_test]
     pub SineMechanism {
         params { crank = 0.1, m2 = 4.0, m3 = 10.0, fr = 400.0 }
         dof 1;
@@ -112,6 +123,7 @@ mechanism! {
     /// massless; gravity 9.81 m/s^2 down. The cutting force on the ram is a
     /// per-evaluation load `cut` (N, along the ram guide's direction, which
     /// points to -x), so the caller applies it on the working stroke only.
+    #[self_test]
     pub ShaperForces {
         params { m3 = 20.0, j3 = 0.6, m4 = 3.0, j4 = 0.005625, m5 = 60.0 }
         loads { cut = 0.0 }

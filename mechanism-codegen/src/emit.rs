@@ -12,13 +12,13 @@ use std::collections::BTreeSet;
 use syn::Ident;
 
 /// Which names the user wants in the output structs.
-struct Outputs {
-    points: Vec<Ident>,
-    links: Vec<Ident>,
-    slides: Vec<(Ident, usize, usize)>, // name, stmt, slot
+pub(crate) struct Outputs {
+    pub(crate) points: Vec<Ident>,
+    pub(crate) links: Vec<Ident>,
+    pub(crate) slides: Vec<(Ident, usize, usize)>, // name, stmt, slot
 }
 
-fn outputs(model: &Model, plan: &Plan) -> Outputs {
+pub(crate) fn outputs(model: &Model, plan: &Plan) -> Outputs {
     let wanted = |name: &Ident| match &model.outputs {
         None => true,
         Some(list) => list.iter().any(|o| o == name),
@@ -61,7 +61,7 @@ fn outputs(model: &Model, plan: &Plan) -> Outputs {
 
 /// Statements the outputs need, directly or through the statements they use.
 /// The rest (a coupler point nobody asked for) is left out.
-fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usize> {
+pub(crate) fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usize> {
     let mut stack: Vec<usize> = crate::kinetostatics::roots(model, plan);
     for p in &out.points {
         stack.extend(plan.defined.get(&p.to_string()));
@@ -560,6 +560,30 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
 
     if level >= Level::Velocity {
         let (code, fields, outs) = emit_rates(&em, &moving, &out, false);
+        let conditions: Vec<Ident> = plan
+            .order
+            .iter()
+            .map(|&i| &model.stmts[i])
+            .filter(|s| {
+                matches!(
+                    s.kind,
+                    Kind::Actuator { .. }
+                        | Kind::Rrr { .. }
+                        | Kind::Rrp { .. }
+                        | Kind::Rpr { .. }
+                        | Kind::Prp { .. }
+                        | Kind::Rpp { .. }
+                )
+            })
+            .map(|s| format_ident!("grp_v_{}", s.name))
+            .collect();
+        let condition = match conditions.split_first() {
+            None => lit(1.0),
+            Some((first, rest)) => rest.iter().fold(
+                quote!(#first.condition),
+                |acc, g| quote!((#acc).min(#g.condition)),
+            ),
+        };
         let vel_doc = format!("Velocity of [`{name}`]: point velocities in length units per second, link angular velocities in rad/s (counter-clockwise positive), slide rates in length units per second.");
         let (on, ot, oc): (Vec<Ident>, Vec<TokenStream>, Vec<TokenStream>) = unzip3(outs);
         let (hn, ht): (Vec<Ident>, Vec<TokenStream>) = fields.into_iter().unzip();
@@ -570,6 +594,13 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
             #vis struct #velocity_ty<T: ::mechanism::Real = ::core::primitive::f64> {
                 #(#[doc = #vel_docs] pub #on: #ot,)*
                 #(#[doc(hidden)] pub #hn: #ht,)*
+                /// Conditioning indicator: the smallest scaled determinant
+                /// `|det| / scale` of the groups' rate systems, in (0, 1]
+                /// (1 for a mechanism without groups). It tends to 0 towards a
+                /// toggle or dead-centre position, where the rates grow as
+                /// 1 / condition; below 16 eps the velocity analysis returns
+                /// `Singular` instead (see `docs/stability.md`).
+                pub condition: T,
                 #[doc(hidden)]
                 pub rates: #input_ty<T>,
             }
@@ -583,7 +614,8 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
                 let rates = *rates;
                 #code
                 #(let #on = #oc;)*
-                ::core::result::Result::Ok(#velocity_ty { #(#on,)* #(#hn,)* rates })
+                let condition = #condition;
+                ::core::result::Result::Ok(#velocity_ty { #(#on,)* #(#hn,)* condition, rates })
             }
         });
     }
@@ -1173,7 +1205,7 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         #[allow(non_snake_case, dead_code)]
         #vis struct #position_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #points: ::mechanism::Point2<T>,)* #(pub #scalars: T,)* }
         #[allow(non_snake_case, dead_code)]
-        #vis struct #velocity_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #points: ::mechanism::Vector2<T>,)* #(pub #scalars: T,)* }
+        #vis struct #velocity_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #points: ::mechanism::Vector2<T>,)* #(pub #scalars: T,)* pub condition: T }
         #[allow(non_snake_case, dead_code)]
         #vis struct #acceleration_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #points: ::mechanism::Vector2<T>,)* #(pub #scalars: T,)* }
         #[allow(dead_code)]

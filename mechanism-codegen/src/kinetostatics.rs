@@ -119,6 +119,18 @@ impl ForceEmitter<'_> {
         }
     }
 
+    /// An outer revolute joint at `point` whose reaction on the group is
+    /// `rx.field`: passes the reaction, negated, to the body that owns the
+    /// point (nothing for the ground) and returns that body.
+    fn pass_revolute(&mut self, point: &Ident, rx: &Ident, field: &str) -> Option<String> {
+        let body = self.plan.body_of_point(&point.to_string());
+        if let Some(b) = &body {
+            let field = format_ident!("{}", field);
+            self.force_on(b, quote!(-#rx.#field), point);
+        }
+        body
+    }
+
     /// The load of `link` as a wrench about `point`.
     fn load_about(&self, link: &Ident, point: &Ident) -> TokenStream {
         let l = link.to_string();
@@ -331,10 +343,7 @@ impl ForceEmitter<'_> {
             Kind::Actuator { a, b, input, .. } => {
                 let load = self.load_about(&links[0], a);
                 self.code.extend(quote!(let #rx = ::mechanism::force::actuator::reactions(&pos.#a, &pos.#b, &pos.#name, &#load) #t;));
-                let body_a = owner(a);
-                if let Some(body) = &body_a {
-                    self.force_on(body, quote!(-#rx.a), a);
-                }
+                let body_a = self.pass_revolute(a, &rx, "a");
                 if let Some(body) = owner(b) {
                     let axis = format_ident!("rx_axis_{}", name);
                     self.code.extend(quote!(let #axis = (pos.#name - pos.#b) / ::mechanism::geometry::length(&(pos.#name - pos.#b));));
@@ -353,13 +362,8 @@ impl ForceEmitter<'_> {
                     self.load_about(&links[1], name),
                 );
                 self.code.extend(quote!(let #rx = ::mechanism::force::rrr::reactions(&pos.#a, &pos.#b, &pos.#name, &#l1, &#l2) #t;));
-                let (ba, bb) = (owner(a), owner(b));
-                if let Some(body) = &ba {
-                    self.force_on(body, quote!(-#rx.a), a);
-                }
-                if let Some(body) = &bb {
-                    self.force_on(body, quote!(-#rx.b), b);
-                }
+                let ba = self.pass_revolute(a, &rx, "a");
+                let bb = self.pass_revolute(b, &rx, "b");
                 reactions.push(revolute(&ba, &links[0], a, quote!(a)));
                 reactions.push(revolute(&bb, &links[1], b, quote!(b)));
                 reactions.push(revolute(
@@ -376,10 +380,7 @@ impl ForceEmitter<'_> {
                     self.load_about(&links[1], name),
                 );
                 self.code.extend(quote!(let #rx = ::mechanism::force::rrp::reactions(&pos.#a, &pos.#name, &pos.#guide.dir, &#l1, &#l2) #t;));
-                let ba = owner(a);
-                if let Some(body) = &ba {
-                    self.force_on(body, quote!(-#rx.a), a);
-                }
+                let ba = self.pass_revolute(a, &rx, "a");
                 let bg = carrier(guide);
                 self.prismatic_on(bg.clone(), quote!(#rx.guide), name);
                 reactions.push(revolute(&ba, &links[0], a, quote!(a)));
@@ -395,13 +396,8 @@ impl ForceEmitter<'_> {
             Kind::Rpr { a, b, .. } => {
                 let (l1, l2) = (self.load_about(&links[0], a), self.load_about(&links[1], a));
                 self.code.extend(quote!(let #rx = ::mechanism::force::rpr::reactions(&pos.#a, &pos.#b, &pos.#g.axis, &#l1, &#l2) #t;));
-                let (ba, bb) = (owner(a), owner(b));
-                if let Some(body) = &ba {
-                    self.force_on(body, quote!(-#rx.a), a);
-                }
-                if let Some(body) = &bb {
-                    self.force_on(body, quote!(-#rx.b), b);
-                }
+                let ba = self.pass_revolute(a, &rx, "a");
+                let bb = self.pass_revolute(b, &rx, "b");
                 reactions.push(revolute(&ba, &links[0], a, quote!(a)));
                 reactions.push(revolute(&bb, &links[1], b, quote!(b)));
                 reactions.push(prismatic(
@@ -434,10 +430,7 @@ impl ForceEmitter<'_> {
             Kind::Rpp { a, guide, .. } => {
                 let (l1, l2) = (self.load_about(&links[0], a), self.load_about(&links[1], a));
                 self.code.extend(quote!(let #rx = ::mechanism::force::rpp::reactions(&pos.#a, &pos.#g.slot, &pos.#guide.dir, &#l1, &#l2) #t;));
-                let ba = owner(a);
-                if let Some(body) = &ba {
-                    self.force_on(body, quote!(-#rx.a), a);
-                }
+                let ba = self.pass_revolute(a, &rx, "a");
                 let bg = carrier(guide);
                 self.prismatic_on(bg.clone(), quote!(#rx.guide), a);
                 reactions.push(revolute(&ba, &links[0], a, quote!(a)));

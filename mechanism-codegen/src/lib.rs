@@ -1,15 +1,19 @@
 //! Code generation for `mechanism!`, as a plain library so it can be unit- and
-//! snapshot-tested: [`parse`] -> [`model`] -> [`validate`] -> [`plan`] -> [`emit`].
+//! snapshot-tested: [`parse`] -> [`model`] -> [`validate`] -> [`plan`] ->
+//! [`check`] (the mechanism assembled over its input range at expansion time)
+//! -> [`emit`] (with [`self_test`], the generated tests of `#[self_test]`).
 //!
 //! Errors are accumulated across stages and reported together, each on the
 //! user's token; on error, stub items with the real names keep the user's own
 //! code free of follow-on errors.
 
+pub mod check;
 pub mod emit;
 pub mod kinetostatics;
 pub mod model;
 pub mod parse;
 pub mod plan;
+pub mod self_test;
 pub mod validate;
 pub mod value;
 
@@ -32,6 +36,8 @@ pub fn expand(input: TokenStream) -> TokenStream {
     validate::has_driver(&model, kinds_failed, &mut errors);
     validate::dof_matches(&model, &mut errors);
     validate::outputs_exist(&model, &mut errors);
+    let inputs = check::inputs(&model, &mut errors);
+    let allowed = check::allowances(&model, &mut errors);
     if !errors.0.is_empty() {
         return emit::emit_stub(&model, errors.0);
     }
@@ -44,5 +50,25 @@ pub fn expand(input: TokenStream) -> TokenStream {
     if !errors.0.is_empty() {
         return emit::emit_stub(&model, errors.0);
     }
-    emit::emit(&model, &plan)
+    let mut findings = check::expansion_check(&model, &plan, &inputs, &allowed);
+    let mut errors = std::mem::take(&mut findings.errors);
+    if let Some(span) = model.checks.self_test {
+        if let Some(e) = self_test::requirements(&model, &inputs, span) {
+            errors.push(e);
+        }
+    }
+    if !errors.is_empty() {
+        return emit::emit_stub(&model, errors);
+    }
+    let mut out = emit::emit(&model, &plan);
+    let check = check::emit_check(&model, &plan, &inputs, &findings.summary);
+    let name = &model.name;
+    out.extend(quote::quote! {
+        impl<T: ::mechanism::Real> #name<T> { #check }
+    });
+    out.extend(findings.warnings.clone());
+    if model.checks.self_test.is_some() {
+        out.extend(self_test::emit(&model, &plan, &inputs, &allowed, &findings));
+    }
+    out
 }

@@ -57,6 +57,8 @@ pub struct Model {
     pub failed: Vec<Failed>,
     /// Masses, gravity and loads (the force analysis).
     pub kinetics: Kinetics,
+    /// Declared input ranges, singular allowances and `#[self_test]`.
+    pub checks: crate::check::Declared,
 }
 
 /// What the force analysis needs: masses, gravity and external loads.
@@ -866,6 +868,10 @@ pub fn lower(def: Definition) -> (Model, Errors) {
     };
     let mut stmts = Vec::new();
     let mut failed = Vec::new();
+    let mut checks = crate::check::Declared {
+        self_test: def.self_test,
+        ..Default::default()
+    };
     for item in def.items {
         match item {
             Item::Analysis(what) => {
@@ -1007,6 +1013,8 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     Err(e) => errors.0.push(e),
                 }
             }
+            Item::Range(r) => checks.ranges.push(r),
+            Item::Allow(span, what, groups) => checks.allow.push((span, what, groups)),
             Item::Loads(_) => {}
             Item::Params(_) | Item::Const(_) => {}
         }
@@ -1028,6 +1036,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             dof,
             failed,
             kinetics,
+            checks,
         },
         errors,
     )

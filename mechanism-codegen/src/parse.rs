@@ -17,6 +17,8 @@
 //!             | 'force' 'at' IDENT ('on' IDENT)? '=' '(' expr ',' expr ')' ';'
 //!             | 'force' 'at' IDENT ('on' IDENT)? 'along' IDENT '=' expr ';'
 //!             | 'torque' 'on' IDENT '=' expr ';'
+//!             | 'range' IDENT '=' '(' arg ',' arg ')' ';'
+//!             | 'allow' 'singular' (IDENT,*)? ';'
 //! arg        := 'from' IDENT | expr ('deg' | 'rad')?
 //! links      := IDENT | '(' IDENT,* ')'
 //! names      := IDENT | '(' IDENT,* ')'
@@ -31,6 +33,8 @@ use syn::{braced, parenthesized, Attribute, Expr, Ident, LitInt, Token, Visibili
 pub struct Definition {
     /// Outer doc comments, copied onto the generated type.
     pub docs: Vec<Attribute>,
+    /// `#[self_test]`: the attribute's span, when given.
+    pub self_test: Option<Span>,
     /// Visibility of the generated items.
     pub vis: Visibility,
     /// Name of the mechanism type.
@@ -63,6 +67,21 @@ pub enum Item {
     Force(Force),
     /// `torque on link3 = t;`
     Torque(Ident, Expr),
+    /// `range theta2 = (-40 deg, 40 deg);`: the input range to check.
+    Range(RangeDecl),
+    /// `allow singular;` / `allow singular B, C;`: the `allow` keyword's
+    /// span, what is allowed, and the groups (empty: all).
+    Allow(Span, Ident, Vec<Ident>),
+}
+
+/// `range INPUT = (lo, hi);`
+pub struct RangeDecl {
+    /// The driver input.
+    pub input: Ident,
+    /// Lower end (with its unit).
+    pub lo: Arg,
+    /// Upper end (with its unit).
+    pub hi: Arg,
 }
 
 /// `name = expr`.
@@ -154,6 +173,13 @@ fn names(input: ParseStream) -> syn::Result<Vec<Ident>> {
     }
 }
 
+fn input_eq(input: ParseStream) -> syn::Result<()> {
+    input
+        .parse::<Token![=]>()
+        .map(|_| ())
+        .map_err(|e| syn::Error::new(e.span(), "expected `=`: `range INPUT = (lo, hi);`"))
+}
+
 fn pair(input: ParseStream) -> syn::Result<(Expr, Expr)> {
     let content;
     parenthesized!(content in input);
@@ -215,7 +241,7 @@ impl Parse for Item {
         let word: Ident = input.parse().map_err(|e| {
             syn::Error::new(
                 e.span(),
-                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force` or `torque`",
+                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range` or `allow`",
             )
         })?;
         match word.to_string().as_str() {
@@ -311,10 +337,40 @@ impl Parse for Item {
                 input.parse::<Token![;]>()?;
                 Ok(Item::Torque(on, value))
             }
+            "range" => {
+                let name = input.parse()?;
+                input_eq(input)?;
+                let content;
+                parenthesized!(content in input);
+                let lo = content.parse()?;
+                content.parse::<Token![,]>()?;
+                let hi = content.parse()?;
+                if !content.is_empty() {
+                    return Err(content.error("a range is `(lo, hi)`: two values"));
+                }
+                input.parse::<Token![;]>()?;
+                Ok(Item::Range(RangeDecl {
+                    input: name,
+                    lo,
+                    hi,
+                }))
+            }
+            "allow" => {
+                let what = input.parse()?;
+                let mut groups = Vec::new();
+                while !input.peek(Token![;]) {
+                    groups.push(input.parse()?);
+                    if input.peek(Token![,]) {
+                        input.parse::<Token![,]>()?;
+                    }
+                }
+                input.parse::<Token![;]>()?;
+                Ok(Item::Allow(word.span(), what, groups))
+            }
             other => Err(syn::Error::new(
                 word.span(),
                 format!(
-                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force` or `torque`"
+                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range` or `allow`"
                 ),
             )),
         }
@@ -323,7 +379,12 @@ impl Parse for Item {
 
 impl Parse for Definition {
     fn parse(input: ParseStream) -> syn::Result<Self> {
-        let docs = input.call(Attribute::parse_outer)?;
+        let mut docs = input.call(Attribute::parse_outer)?;
+        let self_test = docs
+            .iter()
+            .find(|a| a.path().is_ident("self_test"))
+            .map(syn::spanned::Spanned::span);
+        docs.retain(|a| !a.path().is_ident("self_test"));
         let vis = input.parse()?;
         let name = input.parse()?;
         let content;
@@ -334,6 +395,7 @@ impl Parse for Definition {
         }
         Ok(Definition {
             docs,
+            self_test,
             vis,
             name,
             items,

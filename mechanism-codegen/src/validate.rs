@@ -46,7 +46,16 @@ pub const RESERVED_PREFIXES: &[&str] = &[
 ];
 /// Names the generated methods use for their arguments.
 pub const RESERVED: &[&str] = &[
-    "input", "rates", "accels", "pos", "vel", "acc", "loads", "gravity", "T",
+    "input",
+    "rates",
+    "accels",
+    "pos",
+    "vel",
+    "acc",
+    "loads",
+    "gravity",
+    "condition",
+    "T",
 ];
 
 /// Every defined name with its category and defining token.

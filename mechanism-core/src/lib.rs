@@ -26,6 +26,7 @@ pub mod link;
 pub mod linsolve;
 pub mod mode;
 pub mod scalar;
+pub mod sweep;
 pub mod trig;
 
 pub use error::{Error, Fault, Primitive};

@@ -1,0 +1,650 @@
+//! Sweeps of a mechanism's input range: where each group cannot be assembled,
+//! and where its rate system passes through a singular position.
+//!
+//! One algorithm serves two callers, so that they find the same things: the
+//! `mechanism!` macro runs it at expansion time (in `f64`, through the same
+//! position primitives the generated code calls) and turns its findings into
+//! compile errors and warnings; the generated `check()` runs it at run time
+//! through the generated `position()` and returns a fixed-size [`Report`].
+//!
+//! The caller supplies `eval`, which solves the position at one input and
+//! returns either the *scaled determinant* of every checked group's rate
+//! system (a number in [-1, 1], a sine: see [`det_rrr`] and its siblings; 1
+//! for groups that have none) or the index of the group that failed and its
+//! [`Fault`].
+//!
+//! One input (`sweep_1d`): `samples + 1` equally spaced inputs over the range
+//! (3600 for a full turn: 0.1 deg); every change of outcome between two
+//! neighbours (assembles / group `g` fails) is bisected to
+//! `Tolerances::edge` times the range's width, so a reported interval's ends
+//! are accurate to about 1e-10 of the range (3.6e-8 deg on a full turn),
+//! within rounding. A failing interval narrower than a sample step can be
+//! missed. A periodic range (a full turn) joins an interval that runs over its
+//! end with one that starts at its beginning (`[a - 360 deg, b]`).
+//!
+//! Singular positions, between neighbours that both assemble: a change of
+//! sign of a group's scaled determinant is bisected; a sample where its
+//! magnitude is a local minimum (no sign change), and could reach zero if the
+//! determinant is V-shaped there (`f1 - max(f0 - f1, f2 - f1)` below the
+//! threshold), is refined by a golden-section search, and counts as singular
+//! when the minimum is below `Tolerances::singular`. (For the groups with an assembly mode the
+//! determinant keeps its sign and touches zero at a toggle, so the minimum
+//! test is the one that finds them.)
+//!
+//! Two inputs (`sweep_2d`): a `(samples + 1)^2` grid over the box, without
+//! refinement; per group, the number of failing grid points and their bounding
+//! box, and sign changes of the determinant between neighbours along the
+//! second input.
+//!
+//! Input units are the inputs' own (rad for angles, length units for
+//! displacements); `f64` throughout, whatever the scalar `eval` solves in.
+
+use crate::dyad::{rpp::RppPosition, rpr::RprPosition, rrp::RrpPosition, rrr::RrrPosition};
+use crate::error::Fault;
+use crate::geometry::{cross, dot, length};
+use crate::guide::Line;
+use crate::scalar::Real;
+use nalgebra::{Point2, Vector2};
+
+/// Samples of a one-input sweep: 0.1 deg on a full turn.
+pub const SAMPLES_1D: usize = 3600;
+/// Samples per input of a two-input sweep (a 121 x 121 grid).
+pub const SAMPLES_2D: usize = 120;
+
+/// The range of one input.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Range {
+    /// Lower end (rad or length units).
+    pub lo: f64,
+    /// Upper end, `> lo`.
+    pub hi: f64,
+    /// `true` for a full turn: the input at `hi` is the input at `lo`.
+    pub periodic: bool,
+}
+
+/// How finely the sweep resolves what it finds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerances {
+    /// Bisection and golden-section searches stop at this fraction of the
+    /// range's width.
+    pub edge: f64,
+    /// A scaled determinant (a sine) whose magnitude falls below this counts
+    /// as singular.
+    pub singular: f64,
+}
+
+impl Tolerances {
+    /// The tolerances for a scalar with machine epsilon `eps`: edges to
+    /// `max(1e-10, eps)` of the range, singular below `sqrt(eps)` (1.5e-8 in
+    /// `f64`, 3.5e-4 in `f32`). Why `sqrt(eps)`: near a toggle the scaled
+    /// determinant grows like the distance to it (a V), and the searches place
+    /// its minimum to about `eps` of the range at best, where rounding of the
+    /// determinant itself is `eps`; a positive minimum above `sqrt(eps)` is
+    /// a genuine, if poorly conditioned, pose (the rates lose at most half the
+    /// digits there) and is not reported.
+    pub fn for_eps(eps: f64) -> Self {
+        Tolerances {
+            edge: if eps > 1e-10 { eps } else { 1e-10 },
+            singular: sqrt(eps),
+        }
+    }
+}
+
+/// `sqrt` without `std`: Newton's iteration from a power-of-two guess, to
+/// rounding (used for the tolerance only).
+fn sqrt(x: f64) -> f64 {
+    if x <= 0.0 || !x.is_finite() {
+        return 0.0;
+    }
+    let mut y = if x > 1.0 { x } else { 1.0 };
+    for _ in 0..200 {
+        let next = 0.5 * (y + x / y);
+        if next >= y {
+            break;
+        }
+        y = next;
+    }
+    y
+}
+
+/// What one evaluation returns: every checked group's scaled determinant, or
+/// the index of the group that failed and why.
+pub type Outcome<const G: usize> = Result<[f64; G], (usize, Fault)>;
+
+/// A finding.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Event<const D: usize> {
+    /// Group `group` cannot be assembled: for inputs in `[lo, hi]` (one
+    /// input), or at `count` grid points whose bounding box is `[lo, hi]`
+    /// (two inputs). `fault` is the one at the first failing sample.
+    Fails {
+        /// Index of the group.
+        group: usize,
+        /// Lower corner.
+        lo: [f64; D],
+        /// Upper corner.
+        hi: [f64; D],
+        /// The fault at the first failing sample.
+        fault: Fault,
+        /// 1 for an interval; the number of failing grid points in 2D.
+        count: u32,
+    },
+    /// Group `group`'s rate system is singular at input `at` (one input), or
+    /// changes sign `count` times between grid neighbours, first at `at`.
+    Singular {
+        /// Index of the group.
+        group: usize,
+        /// Where.
+        at: [f64; D],
+        /// The smallest scaled determinant found there.
+        det: f64,
+        /// 1 for one input; the number of grid sign changes in 2D.
+        count: u32,
+    },
+}
+
+fn class<const G: usize>(o: &Outcome<G>) -> Option<usize> {
+    match o {
+        Ok(_) => None,
+        Err((g, _)) => Some(*g),
+    }
+}
+
+fn abs(x: f64) -> f64 {
+    if x < 0.0 {
+        -x
+    } else {
+        x
+    }
+}
+
+/// Whether a local minimum `f1` of `|det|` between neighbours `f0`, `f2`
+/// (equal steps) may dip below the singular threshold: the steepest V through
+/// the three samples, `f1 - max(f0 - f1, f2 - f1)`, is its lowest possible
+/// value if the determinant is no steeper than its samples show. A smooth
+/// minimum well above zero (or a constant determinant's rounding noise) is
+/// not refined.
+fn may_reach(f0: f64, f1: f64, f2: f64, tol: &Tolerances) -> bool {
+    let rise = if f0 > f2 { f0 - f1 } else { f2 - f1 };
+    f1 - rise < tol.singular
+}
+
+/// At most this many halvings (a width ratio of 2^-80 is below any tolerance).
+const MAX_STEPS: usize = 80;
+
+/// Sweeps one input over `range` at `samples + 1` points; see the module
+/// documentation. `report` receives every finding, failing intervals in
+/// increasing order of their end (a periodic interval joined across the
+/// range's end comes last).
+pub fn sweep_1d<const G: usize>(
+    range: &Range,
+    samples: usize,
+    tol: &Tolerances,
+    mut eval: impl FnMut(&[f64; 1]) -> Outcome<G>,
+    mut report: impl FnMut(Event<1>),
+) {
+    let n = if samples < 2 { 2 } else { samples };
+    let width = range.hi - range.lo;
+    if width.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) || !width.is_finite() {
+        return;
+    }
+    let step = width / n as f64;
+    let at = |i: usize| {
+        if i == n {
+            range.hi
+        } else {
+            range.lo + step * i as f64
+        }
+    };
+    let edge = tol.edge * width;
+    let mut f = |x: f64| eval(&[x]);
+
+    // Bisects between `a` (outcome class `ca`) and `b` (another class).
+    let bisect_class = |f: &mut dyn FnMut(f64) -> Outcome<G>, mut a: f64, mut b: f64, ca| {
+        for _ in 0..MAX_STEPS {
+            if abs(b - a) <= edge {
+                break;
+            }
+            let m = 0.5 * (a + b);
+            if class(&f(m)) == ca {
+                a = m;
+            } else {
+                b = m;
+            }
+        }
+        0.5 * (a + b)
+    };
+    // Bisects a sign change of group g's determinant (da at a).
+    let bisect_sign =
+        |f: &mut dyn FnMut(f64) -> Outcome<G>, g: usize, mut a: f64, da: f64, mut b: f64| {
+            let mut best = (0.5 * (a + b), f64::INFINITY);
+            for _ in 0..MAX_STEPS {
+                if abs(b - a) <= edge {
+                    break;
+                }
+                let m = 0.5 * (a + b);
+                match f(m) {
+                    Ok(d) => {
+                        if abs(d[g]) < best.1 {
+                            best = (m, abs(d[g]));
+                        }
+                        if (d[g] < 0.0) == (da < 0.0) {
+                            a = m;
+                        } else {
+                            b = m;
+                        }
+                    }
+                    Err(_) => return (m, 0.0),
+                }
+            }
+            (0.5 * (a + b), if best.1.is_finite() { best.1 } else { 0.0 })
+        };
+    // Golden-section search for the smallest |det| of group g in [a, b].
+    let golden = |f: &mut dyn FnMut(f64) -> Outcome<G>, g: usize, mut a: f64, mut b: f64| {
+        const R: f64 = 0.618_033_988_749_894_8;
+        let val = |f: &mut dyn FnMut(f64) -> Outcome<G>, x: f64| match f(x) {
+            Ok(d) => abs(d[g]),
+            Err(_) => f64::INFINITY,
+        };
+        let mut x1 = b - R * (b - a);
+        let mut x2 = a + R * (b - a);
+        let mut f1 = val(f, x1);
+        let mut f2 = val(f, x2);
+        for _ in 0..2 * MAX_STEPS {
+            if abs(b - a) <= edge {
+                break;
+            }
+            if f1 <= f2 {
+                b = x2;
+                x2 = x1;
+                f2 = f1;
+                x1 = b - R * (b - a);
+                f1 = val(f, x1);
+            } else {
+                a = x1;
+                x1 = x2;
+                f1 = f2;
+                x2 = a + R * (b - a);
+                f2 = val(f, x2);
+            }
+        }
+        if f1 <= f2 {
+            (x1, f1)
+        } else {
+            (x2, f2)
+        }
+    };
+
+    let first = f(at(0));
+    let mut prev = (at(0), first);
+    // An open failing interval: (group, start, fault).
+    let mut open: Option<(usize, f64, Fault)> = match first {
+        Err((g, fault)) => Some((g, range.lo, fault)),
+        Ok(_) => None,
+    };
+    // A periodic interval that starts at `lo`, held back to be joined.
+    let mut held: Option<(usize, f64, Fault)> = None;
+    let mut prev2: Option<(f64, [f64; G])> = None;
+    let mut second: Option<[f64; G]> = None;
+    // Sign changed between prev2 and prev, per group.
+    let mut changed = [false; G];
+    if let (Ok(d), false) = (&first, range.periodic) {
+        for (g, x) in d.iter().enumerate() {
+            if abs(*x) < tol.singular {
+                report(Event::Singular {
+                    group: g,
+                    at: [range.lo],
+                    det: *x,
+                    count: 1,
+                });
+            }
+        }
+    }
+    for i in 1..=n {
+        let x = at(i);
+        let cur = f(x);
+        if i == 1 {
+            second = cur.as_ref().ok().copied();
+        }
+        let (cp, cc) = (class(&prev.1), class(&cur));
+        let mut now_changed = [false; G];
+        if cp != cc {
+            let b = bisect_class(&mut f, prev.0, x, cp);
+            if let Some((g, start, fault)) = open.take() {
+                if range.periodic && start == range.lo && held.is_none() {
+                    held = Some((g, b, fault));
+                } else {
+                    report(Event::Fails {
+                        group: g,
+                        lo: [start],
+                        hi: [b],
+                        fault,
+                        count: 1,
+                    });
+                }
+            }
+            if let Err((g, fault)) = cur {
+                open = Some((g, b, fault));
+            }
+            prev2 = None;
+        } else if let (Ok(dp), Ok(dc)) = (&prev.1, &cur) {
+            for g in 0..G {
+                if (dp[g] < 0.0) != (dc[g] < 0.0) && dp[g] != 0.0 && dc[g] != 0.0 {
+                    now_changed[g] = true;
+                    let (q, det) = bisect_sign(&mut f, g, prev.0, dp[g], x);
+                    report(Event::Singular {
+                        group: g,
+                        at: [q],
+                        det,
+                        count: 1,
+                    });
+                } else if let Some((x2, d2)) = prev2 {
+                    let m = abs(dp[g]);
+                    if m <= abs(d2[g])
+                        && m < abs(dc[g])
+                        && !changed[g]
+                        && may_reach(abs(d2[g]), m, abs(dc[g]), tol)
+                    {
+                        let (q, det) = golden(&mut f, g, x2, x);
+                        if det < tol.singular {
+                            report(Event::Singular {
+                                group: g,
+                                at: [q],
+                                det,
+                                count: 1,
+                            });
+                        }
+                    }
+                }
+            }
+            prev2 = Some((prev.0, *dp));
+        } else {
+            prev2 = None;
+        }
+        changed = now_changed;
+        prev = (x, cur);
+    }
+    // Periodic: the sample at `hi` is the one at `lo`; test it as a minimum
+    // between the last step and the first.
+    if range.periodic {
+        if let (Some((x2, d2)), Ok(dn), Some(d1)) = (prev2, &prev.1, second) {
+            for g in 0..G {
+                let m = abs(dn[g]);
+                if m <= abs(d2[g])
+                    && m < abs(d1[g])
+                    && !changed[g]
+                    && may_reach(abs(d2[g]), m, abs(d1[g]), tol)
+                {
+                    let (q, det) = golden(&mut f, g, x2, range.hi + step);
+                    if det < tol.singular {
+                        let q = if q >= range.hi { q - width } else { q };
+                        report(Event::Singular {
+                            group: g,
+                            at: [q],
+                            det,
+                            count: 1,
+                        });
+                    }
+                }
+            }
+        }
+    } else if let Ok(d) = &prev.1 {
+        for (g, x) in d.iter().enumerate() {
+            if abs(*x) < tol.singular {
+                report(Event::Singular {
+                    group: g,
+                    at: [range.hi],
+                    det: *x,
+                    count: 1,
+                });
+            }
+        }
+    }
+    match (open, held) {
+        (Some((g, start, fault)), Some((h, end, hfault))) => {
+            if g == h {
+                report(Event::Fails {
+                    group: g,
+                    lo: [start - width],
+                    hi: [end],
+                    fault,
+                    count: 1,
+                });
+            } else {
+                report(Event::Fails {
+                    group: h,
+                    lo: [range.lo],
+                    hi: [end],
+                    fault: hfault,
+                    count: 1,
+                });
+                report(Event::Fails {
+                    group: g,
+                    lo: [start],
+                    hi: [range.hi],
+                    fault,
+                    count: 1,
+                });
+            }
+        }
+        (Some((g, start, fault)), None) => report(Event::Fails {
+            group: g,
+            lo: [start],
+            hi: [range.hi],
+            fault,
+            count: 1,
+        }),
+        (None, Some((h, end, fault))) => report(Event::Fails {
+            group: h,
+            lo: [range.lo],
+            hi: [end],
+            fault,
+            count: 1,
+        }),
+        (None, None) => {}
+    }
+}
+
+/// Failing grid points of one group: bounding box, first fault, count.
+type Box2 = ([f64; 2], [f64; 2], Fault, u32);
+
+/// Sweeps two inputs over the grid `(samples + 1)^2` of the box `ranges`; see
+/// the module documentation. At most one `Fails` and one `Singular` event per
+/// group, in group order.
+pub fn sweep_2d<const G: usize>(
+    ranges: &[Range; 2],
+    samples: usize,
+    mut eval: impl FnMut(&[f64; 2]) -> Outcome<G>,
+    mut report: impl FnMut(Event<2>),
+) {
+    let n = if samples < 1 { 1 } else { samples };
+    let at = |r: &Range, i: usize| {
+        if i == n {
+            r.hi
+        } else {
+            r.lo + (r.hi - r.lo) / n as f64 * i as f64
+        }
+    };
+    let mut fails: [Option<Box2>; G] = [None; G];
+    let mut sing: [Option<([f64; 2], f64, u32)>; G] = [None; G];
+    for i in 0..=n {
+        let x = at(&ranges[0], i);
+        let mut prev: Option<(f64, [f64; G])> = None;
+        for j in 0..=n {
+            let y = at(&ranges[1], j);
+            match eval(&[x, y]) {
+                Err((g, fault)) => {
+                    if g < G {
+                        let e = fails[g].get_or_insert(([x, y], [x, y], fault, 0));
+                        e.0 = [e.0[0].min(x), e.0[1].min(y)];
+                        e.1 = [e.1[0].max(x), e.1[1].max(y)];
+                        e.3 += 1;
+                    }
+                    prev = None;
+                }
+                Ok(d) => {
+                    if let Some((py, pd)) = prev {
+                        for g in 0..G {
+                            if (pd[g] < 0.0) != (d[g] < 0.0) || d[g] == 0.0 {
+                                let det = if abs(d[g]) < abs(pd[g]) { d[g] } else { pd[g] };
+                                let q = if abs(d[g]) < abs(pd[g]) { y } else { py };
+                                let e = sing[g].get_or_insert(([x, q], det, 0));
+                                e.2 += 1;
+                            }
+                        }
+                    }
+                    prev = Some((y, d));
+                }
+            }
+        }
+    }
+    for g in 0..G {
+        if let Some((lo, hi, fault, count)) = fails[g] {
+            report(Event::Fails {
+                group: g,
+                lo,
+                hi,
+                fault,
+                count,
+            });
+        }
+        if let Some((at, det, count)) = sing[g] {
+            report(Event::Singular {
+                group: g,
+                at,
+                det,
+                count,
+            });
+        }
+    }
+}
+
+/// What a sweep found for one group (the fixed-size summary `check()` returns).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GroupReport<const D: usize> {
+    /// The user's name of the group (the point it defines).
+    pub group: &'static str,
+    /// Failing intervals (one input) or grid points (two inputs); 0 when the
+    /// group assembles over the whole range.
+    pub failures: u32,
+    /// The failing interval with the lowest start (one input), or the
+    /// bounding box of the failing grid points (two inputs).
+    pub failure: Option<([f64; D], [f64; D])>,
+    /// The fault at the first failing sample.
+    pub fault: Option<Fault>,
+    /// Singular positions found (one input), or grid sign changes (two).
+    pub singular: u32,
+    /// The lowest singular input found.
+    pub first_singular: Option<[f64; D]>,
+}
+
+/// What a sweep found, per checked group in solve order; no heap.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Report<const G: usize, const D: usize> {
+    /// The inputs' names.
+    pub inputs: [&'static str; D],
+    /// The ranges swept.
+    pub ranges: [Range; D],
+    /// Per group.
+    pub groups: [GroupReport<D>; G],
+}
+
+impl<const G: usize, const D: usize> Report<G, D> {
+    /// An empty report for the named groups.
+    pub fn new(inputs: [&'static str; D], ranges: [Range; D], names: [&'static str; G]) -> Self {
+        Report {
+            inputs,
+            ranges,
+            groups: names.map(|group| GroupReport {
+                group,
+                failures: 0,
+                failure: None,
+                fault: None,
+                singular: 0,
+                first_singular: None,
+            }),
+        }
+    }
+
+    /// Adds a finding.
+    pub fn record(&mut self, event: &Event<D>) {
+        match *event {
+            Event::Fails {
+                group,
+                lo,
+                hi,
+                fault,
+                count,
+            } => {
+                if let Some(r) = self.groups.get_mut(group) {
+                    r.failures += count;
+                    if r.failure.is_none_or(|(l, _)| lo[0] < l[0]) {
+                        r.failure = Some((lo, hi));
+                        r.fault = Some(fault);
+                    }
+                }
+            }
+            Event::Singular {
+                group, at, count, ..
+            } => {
+                if let Some(r) = self.groups.get_mut(group) {
+                    r.singular += count;
+                    if r.first_singular.is_none_or(|f| at[0] < f[0]) {
+                        r.first_singular = Some(at);
+                    }
+                }
+            }
+        }
+    }
+
+    /// `true` when every group assembles over the whole range.
+    pub fn assembles(&self) -> bool {
+        self.groups.iter().all(|g| g.failures == 0)
+    }
+
+    /// `true` when every group assembles and no singular position was found.
+    pub fn is_clean(&self) -> bool {
+        self.assembles() && self.groups.iter().all(|g| g.singular == 0)
+    }
+}
+
+/// `num / scale`, or 0 (singular) when the scale is zero or either is not finite.
+fn scaled<T: Real>(num: T, scale: T) -> f64 {
+    let (n, s) = (num.as_f64(), scale.as_f64());
+    if s > 0.0 && n.is_finite() && s.is_finite() {
+        let r = n / s;
+        if r.is_finite() {
+            return r;
+        }
+    }
+    0.0
+}
+
+/// RRR group (and linear actuator): `cross(r1, r2) / (|r1| |r2|)`, the sine
+/// of the angle between the two links; zero at a toggle.
+pub fn det_rrr<T: Real>(pos: &RrrPosition<T>) -> f64 {
+    scaled(cross(&pos.r1, &pos.r2), length(&pos.r1) * length(&pos.r2))
+}
+
+/// RRP group: `dot(r1, dir) / |r1|`: zero when link 1 is perpendicular to
+/// the guide.
+pub fn det_rrp<T: Real>(pos: &RrpPosition<T>, g: &Line<T>) -> f64 {
+    scaled(dot(&pos.r1, &g.dir), length(&pos.r1) * length(&g.dir))
+}
+
+/// RPR group: `dot(u, A - B) / |A - B|`: zero when `A` is at the foot of the
+/// perpendicular from `B` on the slide line.
+pub fn det_rpr<T: Real>(pos: &RprPosition<T>, a: &Point2<T>, b: &Point2<T>) -> f64 {
+    let p: Vector2<T> = a - b;
+    scaled(dot(&pos.axis, &p), length(&pos.axis) * length(&p))
+}
+
+/// PRP group: `cross(dir1, dir2)`: zero when the guides are parallel.
+pub fn det_prp<T: Real>(g1: &Line<T>, g2: &Line<T>) -> f64 {
+    scaled(cross(&g1.dir, &g2.dir), length(&g1.dir) * length(&g2.dir))
+}
+
+/// RPP group: `cross(dir, w)`: zero when the slot is parallel to the guide.
+pub fn det_rpp<T: Real>(pos: &RppPosition<T>, g: &Line<T>) -> f64 {
+    scaled(cross(&g.dir, &pos.slot), length(&g.dir) * length(&pos.slot))
+}
