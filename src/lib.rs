@@ -8,3 +8,8 @@
 pub use mechanism_core as core_api;
 pub use mechanism_core::*;
 pub use mechanism_macros::mechanism;
+
+mod batch;
+#[cfg(feature = "rayon")]
+pub use batch::par_solve;
+pub use batch::BatchSplit;

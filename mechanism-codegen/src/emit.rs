@@ -455,7 +455,14 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
     for link in &out.links {
         let info = &plan.links[&link.to_string()];
         let (_, dir) = em.link_direction(&model.stmts[info.stmt], info.index);
-        pos_out_code.extend(quote!(let #link = ::mechanism::geometry::angle(&#dir);));
+        // A crank's angle is its input: reduced to (-pi, pi], no atan2.
+        let value = match &model.stmts[info.stmt].kind {
+            Kind::Crank { input, .. } => {
+                quote!(::mechanism::geometry::wrap_angle(input.#input))
+            }
+            _ => quote!(::mechanism::geometry::angle(&#dir)),
+        };
+        pos_out_code.extend(quote!(let #link = #value;));
         pos_out_fields.push((link.clone(), quote!(T)));
     }
     for (slide, i, slot) in &out.slides {
@@ -698,6 +705,8 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
         });
     }
 
+    // Batch API (structure of arrays, issue 5): see batch.rs.
+    items.extend(crate::batch::emit(model, &inputs, &pos_out_fields));
     quote! {
         #items
         impl<T: ::mechanism::Real> #name<T> {

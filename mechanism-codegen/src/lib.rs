@@ -7,6 +7,7 @@
 //! user's token; on error, stub items with the real names keep the user's own
 //! code free of follow-on errors.
 
+pub mod batch;
 pub mod check;
 pub mod emit;
 pub mod kinetostatics;

@@ -50,6 +50,27 @@ pub fn angle<T: Real>(v: &Vector2<T>) -> T {
     v.y.atan2(v.x)
 }
 
+/// `angle` (rad) reduced to `(-pi, pi]`: `angle - 2 pi k` with `k` the nearest
+/// integer to `angle / 2 pi`. Exact for `|angle| <= pi`; otherwise the error is
+/// the rounding of `2 pi k` (about `|angle| eps`). A crank's link angle is its
+/// input reduced this way, with no `atan2`.
+#[inline]
+pub fn wrap_angle<T: Real>(angle: T) -> T {
+    let pi = T::pi();
+    if angle <= pi && angle > -pi {
+        return angle;
+    }
+    let two_pi = T::two_pi();
+    let reduced = angle - two_pi * (angle / two_pi).round();
+    if reduced <= -pi {
+        reduced + two_pi
+    } else if reduced > pi {
+        reduced - two_pi
+    } else {
+        reduced
+    }
+}
+
 /// Angle of `v` from +x in degrees in `[0, 360)`, the convention of the tables.
 #[inline]
 pub fn angle_deg_0_360<T: Real>(v: &Vector2<T>) -> T {
@@ -183,6 +204,41 @@ pub fn check_det_condition<T: Real>(
             condition
         },
     ))
+}
+
+/// [`check_det`] without square roots: `scale_sq` is the square of the
+/// scale (e.g. `|r1|^2 |r2|^2`), compared as `det^2 > (16 eps)^2 scale_sq`,
+/// the same test as `check_det(det, sqrt(scale_sq))` up to rounding; the
+/// square root is taken only to report an error. Needs `scale_sq` finite:
+/// lengths below about 1e9 (f32) or 1e76 (f64) for an RRR's `|r1|^2 |r2|^2`;
+/// beyond that the test reports `Singular`.
+#[inline(always)]
+pub fn check_det_sq<T: Real>(det: T, scale_sq: T, primitive: Primitive) -> Result<T, Error> {
+    let k = T::lit(SINGULAR_RELATIVE) * T::eps();
+    if det.finite() && scale_sq.finite() && det * det > k * k * scale_sq {
+        Ok(det)
+    } else {
+        Err(Error::new(
+            primitive,
+            Fault::Singular {
+                det: det.as_f64(),
+                scale: scale_sq.sqrt().as_f64(),
+            },
+        ))
+    }
+}
+
+/// The condition indicator `|det| / scale` of [`check_det_condition`] from a
+/// determinant that passed [`check_det_sq`] and the squared scale it was
+/// checked against (one square root), clamped to Hadamard's bound 1.
+#[inline(always)]
+pub fn condition_from_sq<T: Real>(det: T, scale_sq: T) -> T {
+    let condition = abs(det) / scale_sq.sqrt();
+    if condition > T::one() {
+        T::one()
+    } else {
+        condition
+    }
 }
 
 /// `x - y` where `None` stands for a zero vector (a fixed point): with a

@@ -948,3 +948,34 @@ proptest! {
         fuzz_rrr_rates::<f32>(&mut Pool { vals: &vals, bits, i: start })?;
     }
 }
+
+/// `wrap_angle` against exact multiples: inputs `x + 2 pi k` with `x` in
+/// `(-pi, pi]` come back as `x` to the rounding of `2 pi k` (|k| <= 20:
+/// 2.5e-14 at most, so 64 eps times |input| is the bound); `pi` stays `pi`,
+/// `-pi` becomes `pi`; in f32 too.
+#[test]
+fn wrap_angle_reduces_to_minus_pi_pi() {
+    use mechanism_core::geometry::wrap_angle;
+    use std::f64::consts::PI;
+    assert_eq!(wrap_angle(PI), PI);
+    assert_eq!(wrap_angle(-PI), PI);
+    assert_eq!(wrap_angle(0.25), 0.25);
+    for k in -20i32..=20 {
+        for j in 0..50 {
+            let x = -PI + 2.0 * PI * (j as f64 + 0.5) / 50.0;
+            let input = x + 2.0 * PI * k as f64;
+            let got = wrap_angle(input);
+            assert!(got > -PI && got <= PI, "{input} -> {got}");
+            assert!(
+                (got - x).abs() <= 64.0 * f64::EPSILON * input.abs().max(1.0),
+                "{input}: {got} vs {x}"
+            );
+            let got32 = wrap_angle(input as f32);
+            assert!(got32 > -std::f32::consts::PI && got32 <= std::f32::consts::PI);
+            assert!(
+                (f64::from(got32) - x).abs()
+                    <= 64.0 * f64::from(f32::EPSILON) * input.abs().max(1.0)
+            );
+        }
+    }
+}

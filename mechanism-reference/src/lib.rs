@@ -8,8 +8,11 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod constraint;
 mod dd;
+pub mod equations;
 pub mod groups;
 pub mod linear;
+pub mod loop_closure;
 
 pub use dd::Dd;

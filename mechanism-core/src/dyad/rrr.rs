@@ -22,8 +22,8 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, check_det_condition, cross, difference, dot, finite, finite_point, finite_vec, length,
-    perp, plus, positive,
+    abs, check_det_sq, condition_from_sq, cross, difference, dot, finite, finite_point, finite_vec,
+    length, perp, plus, positive,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -138,12 +138,13 @@ pub fn position<T: Real>(
 /// Determinant of the rate system, `cross(r1, r2) = l1 l2 sin(angle between
 /// the links)`, checked against `16 eps l1 l2`.
 #[inline(always)]
+/// The rate system's determinant `cross(r1, r2)`, checked in squared form (no
+/// square roots on the hot path: the lengths are l1, l2), and the squared
+/// scale `l1^2 l2^2` it was checked against.
 fn determinant<T: Real>(pos: &RrrPosition<T>) -> Result<(T, T), Error> {
-    check_det_condition(
-        cross(&pos.r1, &pos.r2),
-        length(&pos.r1) * length(&pos.r2),
-        P,
-    )
+    let scale_sq = dot(&pos.r1, &pos.r1) * dot(&pos.r2, &pos.r2);
+    let det = check_det_sq(cross(&pos.r1, &pos.r2), scale_sq, P)?;
+    Ok((det, scale_sq))
 }
 
 /// Rates of the group from the velocities of `A` and `B` (L/s); `None` means
@@ -157,7 +158,8 @@ pub fn velocity<T: Real>(
     va: Option<&Vector2<T>>,
     vb: Option<&Vector2<T>>,
 ) -> Result<RrrVelocity<T>, Error> {
-    let (det, condition) = determinant(pos)?;
+    let (det, scale_sq) = determinant(pos)?;
+    let condition = condition_from_sq(det, scale_sq);
     let dv = finite_vec(difference(vb, va), P, "RRR joint velocity")?;
     let omega1 = finite(dot(&dv, &pos.r2) / det, P, "RRR omega1")?;
     let omega2 = finite(dot(&dv, &pos.r1) / det, P, "RRR omega2")?;
