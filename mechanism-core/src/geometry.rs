@@ -222,7 +222,7 @@ pub fn check_det_sq<T: Real>(det: T, scale_sq: T, primitive: Primitive) -> Resul
             primitive,
             Fault::Singular {
                 det: det.as_f64(),
-                scale: scale_sq.sqrt().as_f64(),
+                scale: scale_sq.sqrt_kernel().as_f64(),
             },
         ))
     }
@@ -233,7 +233,7 @@ pub fn check_det_sq<T: Real>(det: T, scale_sq: T, primitive: Primitive) -> Resul
 /// checked against (one square root), clamped to Hadamard's bound 1.
 #[inline(always)]
 pub fn condition_from_sq<T: Real>(det: T, scale_sq: T) -> T {
-    let condition = abs(det) / scale_sq.sqrt();
+    let condition = abs(det) / scale_sq.sqrt_kernel();
     if condition > T::one() {
         T::one()
     } else {
