@@ -41,7 +41,7 @@ pub fn abs<T: Real>(x: T) -> T {
 /// components between about 1e-150 and 1e150 (f64).
 #[inline(always)]
 pub fn length<T: Real>(v: &Vector2<T>) -> T {
-    (v.x * v.x + v.y * v.y).sqrt()
+    (v.x * v.x + v.y * v.y).sqrt_kernel()
 }
 
 /// Angle of `v` from +x, counter-clockwise, in radians in `(-pi, pi]`.
@@ -222,7 +222,7 @@ pub fn check_det_sq<T: Real>(det: T, scale_sq: T, primitive: Primitive) -> Resul
             primitive,
             Fault::Singular {
                 det: det.as_f64(),
-                scale: scale_sq.sqrt().as_f64(),
+                scale: scale_sq.sqrt_kernel().as_f64(),
             },
         ))
     }
@@ -233,7 +233,7 @@ pub fn check_det_sq<T: Real>(det: T, scale_sq: T, primitive: Primitive) -> Resul
 /// checked against (one square root), clamped to Hadamard's bound 1.
 #[inline(always)]
 pub fn condition_from_sq<T: Real>(det: T, scale_sq: T) -> T {
-    let condition = abs(det) / scale_sq.sqrt();
+    let condition = abs(det) / scale_sq.sqrt_kernel();
     if condition > T::one() {
         T::one()
     } else {

@@ -27,6 +27,7 @@ pub mod linsolve;
 pub mod mode;
 pub mod scalar;
 pub mod sweep;
+pub mod trig;
 
 pub use error::{Error, Fault, Primitive};
 pub use mode::Mode;

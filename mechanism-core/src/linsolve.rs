@@ -182,6 +182,9 @@ pub fn solve<T: Real, const N: usize>(
                     (p, best)
                 }
             });
+        // p is in k..N by construction; saying so lets the optimizer drop the
+        // bounds checks of the swaps (no panic path: see tests/no_panic).
+        let p = if p < N { p } else { k };
         a.swap(k, p);
         b.swap(k, p);
         scale.swap(k, p);

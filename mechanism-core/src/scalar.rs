@@ -24,6 +24,18 @@ pub trait Real: RealField + Copy {
     fn eps() -> Self;
     /// `true` when the value is neither NaN nor infinite.
     fn finite(self) -> bool;
+    /// `(sin self, cos self)` (radians) computed in this type's own precision:
+    /// `f32` through [`crate::trig::sin_cos_f32`] (within 2 ulp, single-precision
+    /// arithmetic only, so a single-precision FPU does it in hardware), `f64`
+    /// through nalgebra's `sin_cos` (libm, or `std` when enabled). Named apart
+    /// from `ComplexField::sin_cos`, which for `f32` goes through libm's `sinf`,
+    /// whose internals are `f64`.
+    fn sin_cos_kernel(self) -> (Self, Self);
+    /// Square root in this type's own precision: `f32` through
+    /// [`crate::trig::sqrt_f32`] (correctly rounded, FPU divide plus integer
+    /// check, where libm's `sqrtf` is a slow integer routine), `f64` through
+    /// nalgebra's `sqrt`.
+    fn sqrt_kernel(self) -> Self;
 }
 
 impl Real for f64 {
@@ -43,6 +55,14 @@ impl Real for f64 {
     fn finite(self) -> bool {
         self.is_finite()
     }
+    #[inline(always)]
+    fn sin_cos_kernel(self) -> (Self, Self) {
+        <f64 as nalgebra::ComplexField>::sin_cos(self)
+    }
+    #[inline(always)]
+    fn sqrt_kernel(self) -> Self {
+        <f64 as nalgebra::ComplexField>::sqrt(self)
+    }
 }
 
 impl Real for f32 {
@@ -61,5 +81,13 @@ impl Real for f32 {
     #[inline(always)]
     fn finite(self) -> bool {
         self.is_finite()
+    }
+    #[inline(always)]
+    fn sin_cos_kernel(self) -> (Self, Self) {
+        crate::trig::sin_cos_f32(self)
+    }
+    #[inline(always)]
+    fn sqrt_kernel(self) -> Self {
+        crate::trig::sqrt_f32(self)
     }
 }

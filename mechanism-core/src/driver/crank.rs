@@ -7,7 +7,7 @@
 //! skips the trigonometry.
 
 use crate::error::{Error, Primitive};
-use crate::geometry::{finite, finite_point, finite_vec, plus, positive, unit};
+use crate::geometry::{finite, finite_point, finite_vec, plus, positive};
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -36,7 +36,9 @@ pub fn position<T: Real>(
     theta: T,
 ) -> Result<CrankPosition<T>, Error> {
     let theta = finite(theta, P, "crank angle")?;
-    place(pivot, length, unit(theta))
+    // In the scalar's own precision (f32 stays f32: see `crate::trig`).
+    let (sin, cos) = theta.sin_cos_kernel();
+    place(pivot, length, Vector2::new(cos, sin))
 }
 
 /// Places the crank from `(cos theta, sin theta)`, which need not be exactly

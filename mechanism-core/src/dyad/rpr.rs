@@ -116,7 +116,7 @@ pub fn position<T: Real>(
         ));
     }
     let gap = if gap < T::zero() { T::zero() } else { gap };
-    let s = mode.sign::<T>() * (gap * (dist + e)).sqrt();
+    let s = mode.sign::<T>() * (gap * (dist + e)).sqrt_kernel();
     // |p|^2 u = s p - offset perp(p) (expand p = s u + offset perp(u)); divided
     // by |p| to keep magnitudes near |p| (the squares in `length` then overflow
     // no sooner than `dist` itself did), and normalized to remove rounding.

@@ -122,7 +122,7 @@ pub fn position<T: Real>(
     }
     let gap = if gap < T::zero() { T::zero() } else { gap };
     // Half chord, sqrt(l^2 - k^2) factored: no cancellation near tangency.
-    let half = mode.sign::<T>() * (gap * (l + h)).sqrt();
+    let half = mode.sign::<T>() * (gap * (l + h)).sqrt_kernel();
     let r1 = dir * half - n * k;
     let s = finite(t + half, P, "RRP slide displacement s")?;
     let c = finite_point(a + r1, P, "RRP joint C")?;

@@ -126,7 +126,7 @@ pub fn position<T: Real>(
     let clamp = |x: T| if x < T::zero() { T::zero() } else { x };
     // 16 area^2 = (l1+l2+d)(l1+l2-d)(d+l1-l2)(d-l1+l2); h = 2 area / d.
     let area16 = (sum + dist) * clamp(outer) * clamp(inner1) * clamp(inner2);
-    let h = area16.sqrt() / (T::lit(2.0) * dist);
+    let h = area16.sqrt_kernel() / (T::lit(2.0) * dist);
     // Foot of C on AB, from A: (l1^2 - l2^2 + d^2) / (2d) = ((l1-l2)(l1+l2) + d^2) / (2d).
     let along = ((l1 - l2) * sum + dist * dist) / (T::lit(2.0) * dist);
     let e = d / dist;

@@ -1,0 +1,510 @@
+//! Sine, cosine and square root of an `f32` computed in `f32` (and integer)
+//! arithmetic only: [`sin_cos_f32`] and [`sqrt_f32`]. (libm's `atan2f` is
+//! already single precision throughout: about 80 instructions per call on
+//! the M4F, which a kernel of this kind did not beat.)
+//!
+//! Why: libm's `sinf`/`cosf` evaluate in `f64`. On a core with a
+//! single-precision FPU (Cortex-M4F, thumbv7em-none-eabihf) every `f64`
+//! operation is a software routine (`__aeabi_dmul`, `__aeabi_dadd`, ...), so
+//! one `sinf` costs hundreds of instructions and pulls in kilobytes of code.
+//! [`sin_cos_f32`] uses only single-precision multiplies and adds, which the
+//! FPU does in hardware, and 32-bit integer multiplies for range reduction.
+//!
+//! # Domain and accuracy
+//!
+//! Every finite `f32`. The result is within **2 ulp** of the exact sine and
+//! cosine (ulp of `f32` at the exact value's magnitude, with the subnormal
+//! spacing `2^-149` as the floor); non-finite inputs give `(NaN, NaN)`. The
+//! bound is checked against `f64` (`std`'s `sin`/`cos` of the widened input,
+//! which are far more accurate than the bound) by the tests below: exhaustively
+//! over every `f32` in an `#[ignore]`d test (`cargo test --release -p
+//! mechanism-core --lib trig -- --ignored`), and on a dense sample of the
+//! whole range in the ordinary run. The worst error found exhaustively is
+//! stated in `docs/embedded.md`.
+//!
+//! # Method
+//!
+//! 1. `|x| < 2^-12`: `(x, 1)`; `|x| <= pi/4`: no reduction.
+//! 2. `|x| < 24` (within 15 quadrants, the usual crank angles): Cody-Waite in
+//!    f32 with `pi/2` in three parts and the rounding error carried, so that
+//!    `r` is known as `hi + lo` (see [`reduce_small`]); about 20 instructions.
+//! 3. Otherwise `|x| = (4n + q) pi/2 + r` with `|r| <= pi/4`, computed
+//!    exactly enough for every `f32` by the Payne-Hanek scheme in integer
+//!    arithmetic: the 24-bit significand times a 96-bit window of the binary
+//!    expansion of `2/pi` (the window starts where the bits stop contributing
+//!    whole turns), giving `|x| 2/pi mod 4` with at least 94 fraction bits;
+//!    the fraction is rounded to the nearest quadrant, normalized to 64 bits,
+//!    its top 32 bits multiplied by `pi/2` (31 bits) into a 64-bit product
+//!    and converted to `f32` once. The error of `r` is 0.5 ulp from that
+//!    conversion plus about `2^-30 |r|` from the truncations, as long as the
+//!    fraction keeps 32 significant bits of its 64 (at most 32 leading
+//!    zeros). A scan of every `f32` above `pi/4` found at most 29 (the
+//!    closest approach to a multiple of `pi/2`, relative to `pi/2`, is above
+//!    2^-30, at 2.2e10), and the exhaustive test finds the bound met.
+//! 4. `sin r` and `cos r` by their Taylor series through `r^9` and `r^10`
+//!    (Horner form): the truncation error at `|r| = pi/4` is below
+//!    `(pi/4)^11 / 11! < 1.8e-9` and `(pi/4)^12 / 12! < 1.2e-10`, under 0.05
+//!    ulp of the results there; Taylor rather than minimax coefficients so
+//!    that every coefficient is an exact, checkable `1/n!`.
+//! 5. The quadrant picks `(+-sin r, +-cos r)` and the sign of `x` the sign of
+//!    the sine.
+//!
+//! # Square root
+//!
+//! libm's `sqrtf` is an integer routine (about 60 instructions on a
+//! Cortex-M4F), and the FPU's `vsqrt.f32` is out of reach of safe stable Rust
+//! without `std` (`core::f32::math::sqrt` is unstable in Rust 1.95, and libm
+//! has no ARM path). [`sqrt_f32`] takes a bit-level first guess and three
+//! Newton steps with the FPU's divide: the result is at most one step from
+//! the correctly rounded square root (checked against `f64` for every `f32`
+//! by an `#[ignore]`d test). An exact integer test of the neighbours would
+//! make it correctly rounded but costs more than libm's `sqrtf` on the M4F.
+//!
+//! The digits of `2/pi` and `pi/2` below are the standard binary expansions
+//! (hexadecimal, most significant first); the tests check them indirectly:
+//! a wrong word would put large arguments' results far from `f64`'s, whose
+//! reduction uses its own table.
+
+/// `pi/4` rounded down to `f32` (0.78539813...), the no-reduction threshold.
+const PIO4_F32_DOWN: f32 = f32::from_bits(0x3F49_0FDA);
+
+/// `2^-12`: below it `x` and 1 are the rounded sine and cosine (within 1 ulp).
+const TINY: f32 = 1.0 / 4096.0;
+
+/// The binary expansion of `2/pi` after the point, 32 bits per word: enough
+/// for the largest finite `f32` (exponent 127: bits up to about 200 are used).
+const TWO_OVER_PI: [u32; 8] = [
+    0xA2F9_836E,
+    0x4E44_1529,
+    0xFC27_57D1,
+    0xF534_DDC0,
+    0xDB62_9599,
+    0x3C43_9041,
+    0xFE51_63AB,
+    0xDEBB_C561,
+];
+
+/// `pi/2 * 2^30`, rounded to nearest (31 bits).
+const PIO2_Q30: u32 = 0x6487_ED51;
+
+/// Taylor coefficients of `sin`: `-1/3!`, `1/5!`, `-1/7!`, `1/9!`.
+const S3: f32 = -1.0 / 6.0;
+const S5: f32 = 1.0 / 120.0;
+const S7: f32 = -1.0 / 5040.0;
+const S9: f32 = 1.0 / 362_880.0;
+/// Taylor coefficients of `cos`: `1/4!`, `-1/6!`, `1/8!`, `-1/10!`.
+const C4: f32 = 1.0 / 24.0;
+const C6: f32 = -1.0 / 720.0;
+const C8: f32 = 1.0 / 40_320.0;
+const C10: f32 = -1.0 / 3_628_800.0;
+
+/// `(sin x, cos x)` for `x` in radians, within 2 ulp for every finite `f32`
+/// (see the module documentation); `(NaN, NaN)` for a non-finite `x`.
+#[inline]
+pub fn sin_cos_f32(x: f32) -> (f32, f32) {
+    if !x.is_finite() {
+        return (f32::NAN, f32::NAN);
+    }
+    let ax = if x < 0.0 { -x } else { x };
+    if ax < TINY {
+        // sin x = x (1 - x^2/6 + ...) and cos x = 1 - x^2/2 + ... round to x
+        // and 1 here (relative terms below 2^-25); keeps the sign of -0.0.
+        return (x, 1.0);
+    }
+    if ax <= PIO4_F32_DOWN {
+        return (sin_poly(x), cos_poly(x));
+    }
+    let (q, hi, lo) = if ax < FAST_LIMIT {
+        reduce_small(ax)
+    } else {
+        let (q, r) = reduce(ax);
+        (q, r, 0.0)
+    };
+    // sin(hi + lo) = sin hi + lo cos hi and cos(hi + lo) = cos hi - lo sin hi
+    // to far below f32 resolution (|lo| is below 2^-20 |hi| + 2^-36), with
+    // cos hi ~ 1 - hi^2/2 and sin hi ~ hi in the correction terms.
+    let s = sin_poly(hi) + lo * (1.0 - 0.5 * hi * hi);
+    let c = cos_poly(hi) - lo * hi;
+    let (s, c) = match q & 3 {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    };
+    if x < 0.0 {
+        (-s, c)
+    } else {
+        (s, c)
+    }
+}
+
+/// `sin r` for `|r| <= pi/4`.
+#[inline(always)]
+fn sin_poly(r: f32) -> f32 {
+    let r2 = r * r;
+    r + r * r2 * (S3 + r2 * (S5 + r2 * (S7 + r2 * S9)))
+}
+
+/// `cos r` for `|r| <= pi/4`.
+#[inline(always)]
+fn cos_poly(r: f32) -> f32 {
+    let r2 = r * r;
+    1.0 - 0.5 * r2 + r2 * r2 * (C4 + r2 * (C6 + r2 * (C8 + r2 * C10)))
+}
+
+/// The 32 bits of `2/pi` after its first `pos` bits (`pos <= 166`).
+#[inline(always)]
+fn bits32(pos: u32) -> u32 {
+    // pos <= 166 below, so the word index is at most 5 and idx + 1 <= 6; the
+    // mask only tells the compiler so (no bounds check, no panic path).
+    let idx = ((pos / 32) & 7) as usize;
+    let pair = (u64::from(TWO_OVER_PI[idx]) << 32) | u64::from(TWO_OVER_PI[(idx + 1) & 7]);
+    ((pair << (pos % 32)) >> 32) as u32
+}
+
+/// Above this, [`reduce`]; below, [`reduce_small`] (at most 15 quadrants).
+const FAST_LIMIT: f32 = 24.0;
+/// `2/pi` rounded to f32: only picks the quadrant (an off-by-one near a
+/// half-quadrant leaves `|r|` a hair above `pi/4`, where the series still hold).
+const FRAC_2_PI: f32 = 0.636_619_75;
+/// `pi/2 = P1 + P2 + P3 + 2.5e-20`: `P1 = 823549 / 2^19` and
+/// `P2 = 696865 / 2^39` have 20 significant bits, so `k P1` and `k P2` are
+/// exact for `k < 16`; `P3` is the rest rounded to f32.
+const P1: f32 = f32::from_bits(0x3FC9_0FD0);
+const P2: f32 = f32::from_bits(0x35AA_2210);
+const P3: f32 = f32::from_bits(0x2B51_846A);
+
+/// Cody-Waite reduction for `pi/4 < ax < 24` in f32 arithmetic:
+/// `(q, hi, lo)` with `ax = (4n + q) pi/2 + hi + lo`, `|hi| <= pi/4` (and a
+/// hair), `lo` the rounding error of `hi` (exact) minus `k P3`.
+///
+/// `ax - k P1` is exact (Sterbenz: `k P1` is within a factor 2 of `ax`), and so
+/// is `k P2`; the difference of the two is split exactly into `hi + err`
+/// (Knuth's two-sum). What remains is the rounding of `k P3` and of
+/// `err - k P3` (below 2^-60 here) and the `2.5e-20 k` left out of `pi/2`:
+/// far below 2^-24 of the smallest `|r|` of any f32 in this range (about
+/// 1.2e-8, at 3 pi/2), so `hi + lo` is `r` to about 2^-40 relative.
+#[inline(always)]
+fn reduce_small(ax: f32) -> (u32, f32, f32) {
+    let k = (ax * FRAC_2_PI + 0.5) as u32;
+    let kf = k as f32;
+    let t1 = ax - kf * P1;
+    let w = kf * P2;
+    let hi = t1 - w;
+    let v = hi - t1;
+    let err = (t1 - (hi - v)) + (-w - v);
+    (k, hi, err - kf * P3)
+}
+
+/// `2^k` for `-126 <= k <= 127`, exactly.
+#[inline(always)]
+fn pow2(k: i32) -> f32 {
+    f32::from_bits(((127 + k) as u32) << 23)
+}
+
+/// Reduces a finite `ax > pi/4` to `(q, r)` with `ax = (4n + q) pi/2 + r`,
+/// `|r| <= pi/4` (see the module documentation for the error). 32- and
+/// 64-bit integer arithmetic only (a Cortex-M4 multiplies 32 x 32 -> 64 bits
+/// in one instruction).
+#[inline(never)]
+fn reduce(ax: f32) -> (u32, f32) {
+    let bits = ax.to_bits();
+    // ax > pi/4 is normal: the biased exponent is 126..=254.
+    let biased = ((bits >> 23) & 0xFF) as i32;
+    let m = u64::from((bits & 0x007F_FFFF) | 0x0080_0000);
+    // ax = m * 2^e, m a 24-bit integer, e in -24..=104.
+    let e = biased - 150;
+    // Bits of 2/pi at positions <= e - 2 contribute multiples of 4 (whole
+    // turns) to ax * 2/pi: skip them. skip <= 102.
+    let skip = if e > 2 { (e - 2) as u32 } else { 0 };
+    // The 96-bit window w0:w1:w2 of 2/pi after `skip` bits; P = m * window
+    // (< 2^120) as hi:lo (64 bits each), and ax * 2/pi = P * 2^-f (mod the
+    // skipped whole turns) with f = 96 + skip - e, in 94..=120.
+    let (w0, w1, w2) = (bits32(skip), bits32(skip + 32), bits32(skip + 64));
+    let a = m * u64::from(w2);
+    let b = m * u64::from(w1);
+    let c = m * u64::from(w0);
+    let (lo, carry) = a.overflowing_add(b << 32);
+    let hi = c + (b >> 32) + u64::from(carry);
+    let f = (96 + skip as i32 - e) as u32;
+    // Quadrant: bits f and f + 1 of P; fraction: the 64 bits below bit f.
+    let sh = f - 64; // 30..=56
+    let mut q = ((hi >> sh) & 3) as u32;
+    let mut frac = (hi << (64 - sh)) | (lo >> sh);
+    let mut negative = false;
+    if frac >> 63 != 0 {
+        // Round to the nearest quadrant: r is negative.
+        q = q.wrapping_add(1);
+        frac = frac.wrapping_neg();
+        negative = true;
+    }
+    if frac == 0 {
+        return (q, 0.0);
+    }
+    // Normalize the fraction (value frac * 2^-64), keep 32 bits, times pi/2
+    // in fixed point (2^30 pi/2, 31 bits).
+    let lz = frac.leading_zeros();
+    let top = ((frac << lz) >> 32) as u32;
+    let prod = u64::from(top) * u64::from(PIO2_Q30);
+    let lz2 = prod.leading_zeros();
+    let hi32 = ((prod << lz2) >> 32) as u32;
+    // frac * 2^-64 = top * 2^(-32 - lz), so r = prod * 2^(-62 - lz) = hi32 * 2^k,
+    // k = -30 - lz2 - lz, between -94 and -30: 2^k is normal.
+    let k = -30 - (lz2 + lz) as i32;
+    let r = (hi32 as f32) * pow2(k);
+    (q, if negative { -r } else { r })
+}
+
+/// Square root of `x`, at most one representable step from the correctly
+/// rounded result (so within 1.5 ulp; about 3 in 4 results are the correctly
+/// rounded one): `NaN` for `x < 0` or NaN, `x` itself for `+-0` and `+inf`.
+/// (Not inlined: a handful of call sites per mechanism.)
+#[inline(never)]
+pub fn sqrt_f32(x: f32) -> f32 {
+    if x.is_nan() || x < 0.0 {
+        return f32::NAN;
+    }
+    if x == 0.0 || x == f32::INFINITY {
+        return x;
+    }
+    if x < f32::MIN_POSITIVE {
+        // Subnormal: sqrt(x 2^24) 2^-12, both scalings exact.
+        return sqrt_normal(x * pow2(24)) * pow2(-12);
+    }
+    sqrt_normal(x)
+}
+
+/// Square root of a positive normal `x`.
+#[inline(always)]
+fn sqrt_normal(x: f32) -> f32 {
+    // First guess: halve the biased exponent (and, roughly, the logarithm of
+    // the significand); within about 3.5 %.
+    let mut y = f32::from_bits((x.to_bits() >> 1) + 0x1FBD_1DF5);
+    // Newton: the relative error e goes to about e^2 / 2 per step (3.5 % ->
+    // 6e-4 -> 2e-7 -> rounding level).
+    for _ in 0..3 {
+        y = 0.5 * (y + x / y);
+    }
+    y
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+
+    /// Error of `got` against the exact value `want` (f64), in units of the
+    /// f32 spacing at `|want|` (floored at the smallest subnormal spacing).
+    fn ulps(got: f32, want: f64) -> f64 {
+        let w32 = (want as f32).abs();
+        let spacing = if w32 == 0.0 || w32 < f32::MIN_POSITIVE {
+            2f64.powi(-149)
+        } else {
+            // Spacing of f32 at |want|: 2^(exponent - 23); when |want| rounds
+            // up to a power of two, use the smaller spacing below it.
+            let e = ((w32.to_bits() >> 23) & 0xFF) as i32 - 127;
+            let s = 2f64.powi(e - 23);
+            if (w32 as f64) > want.abs() && w32.to_bits() & 0x007F_FFFF == 0 {
+                s / 2.0
+            } else {
+                s
+            }
+        };
+        ((got as f64) - want).abs() / spacing
+    }
+
+    /// The worst errors (sin, cos) over the given inputs, with the arguments.
+    fn worst(xs: impl Iterator<Item = f32>) -> ((f64, f32), (f64, f32)) {
+        let mut ws = (0.0, 0.0f32);
+        let mut wc = (0.0, 0.0f32);
+        for x in xs {
+            let (s, c) = sin_cos_f32(x);
+            let es = ulps(s, (x as f64).sin());
+            let ec = ulps(c, (x as f64).cos());
+            if es > ws.0 {
+                ws = (es, x);
+            }
+            if ec > wc.0 {
+                wc = (ec, x);
+            }
+        }
+        (ws, wc)
+    }
+
+    /// The stated bound.
+    const BOUND_ULP: f64 = 2.0;
+
+    #[test]
+    fn dense_sample_of_every_finite_f32_within_2_ulp() {
+        // Every 997th bit pattern of the positive finite f32 (about 2.1
+        // million arguments spread evenly over all exponents), and their
+        // negatives; 997 is prime so the low significand bits vary.
+        let xs = (0..0x7F80_0000u32)
+            .step_by(997)
+            .map(f32::from_bits)
+            .flat_map(|x| [x, -x]);
+        let ((es, xs_), (ec, xc)) = worst(xs);
+        assert!(es <= BOUND_ULP, "sin: {es} ulp at {xs_:e}");
+        assert!(ec <= BOUND_ULP, "cos: {ec} ulp at {xc:e}");
+    }
+
+    #[test]
+    fn every_f32_in_one_turn_either_way_within_2_ulp() {
+        // The range of crank angles: every third f32 in [2^-3, 32] (no
+        // reduction, the small-argument path, the switch to the general one).
+        let lo = 0.125f32.to_bits();
+        let hi = 32.0f32.to_bits();
+        let ((es, xs_), (ec, xc)) = worst((lo..=hi).step_by(3).map(f32::from_bits));
+        assert!(es <= BOUND_ULP, "sin: {es} ulp at {xs_:e}");
+        assert!(ec <= BOUND_ULP, "cos: {ec} ulp at {xc:e}");
+    }
+
+    #[test]
+    fn hard_cases_near_multiples_of_pi_over_2() {
+        // Arguments nearest to k pi/2 (the cancellation cases of the reduction)
+        // for k up to 2^20, and the f32 neighbours on both sides: the small
+        // result must still be accurate relative to itself.
+        let mut xs = std::vec::Vec::new();
+        for k in 1..(1u32 << 20) {
+            let x = (k as f64 * core::f64::consts::FRAC_PI_2) as f32;
+            let b = x.to_bits();
+            xs.extend([b - 1, b, b + 1].map(f32::from_bits));
+        }
+        let ((es, xs_), (ec, xc)) = worst(xs.into_iter());
+        assert!(es <= BOUND_ULP, "sin: {es} ulp at {xs_:e}");
+        assert!(ec <= BOUND_ULP, "cos: {ec} ulp at {xc:e}");
+    }
+
+    #[test]
+    fn the_three_parts_of_pi_over_2() {
+        // The exact values the reduction relies on (20-bit P1 and P2) and the
+        // sum against f64's pi/2 (whose own error is 6e-17).
+        assert_eq!(P1 as f64, 823_549.0 / 2f64.powi(19));
+        assert_eq!(P2 as f64, 696_865.0 / 2f64.powi(39));
+        let sum = P1 as f64 + P2 as f64 + P3 as f64;
+        assert!((sum - core::f64::consts::FRAC_PI_2).abs() < 1e-16);
+    }
+
+    #[test]
+    #[ignore = "exhaustive over the small-argument path: seconds in release"]
+    fn exhaustive_small_path_within_2_ulp() {
+        let lo = PIO4_F32_DOWN.to_bits();
+        let hi = FAST_LIMIT.to_bits() + 16;
+        let ((es, xs_), (ec, xc)) = worst((lo..=hi).map(f32::from_bits));
+        std::println!("small path: worst sin {es:.4} ulp at {xs_:e}; cos {ec:.4} ulp at {xc:e}");
+        assert!(es <= BOUND_ULP && ec <= BOUND_ULP);
+    }
+
+    #[test]
+    fn special_values() {
+        assert_eq!(sin_cos_f32(0.0), (0.0, 1.0));
+        let (s, c) = sin_cos_f32(-0.0);
+        assert!(s == 0.0 && s.is_sign_negative() && c == 1.0);
+        // The smallest subnormal: sin x = x exactly, cos x = 1.
+        let tiny = f32::from_bits(1);
+        assert_eq!(sin_cos_f32(tiny), (tiny, 1.0));
+        for x in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+            let (s, c) = sin_cos_f32(x);
+            assert!(s.is_nan() && c.is_nan());
+        }
+        // Largest finite: against f64 (uses the last words of the table).
+        for x in [f32::MAX, -f32::MAX] {
+            let (s, c) = sin_cos_f32(x);
+            assert!(ulps(s, (x as f64).sin()) <= BOUND_ULP);
+            assert!(ulps(c, (x as f64).cos()) <= BOUND_ULP);
+        }
+    }
+
+    #[test]
+    fn sin_squared_plus_cos_squared_is_one() {
+        // An identity independent of any reference implementation: with both
+        // within 2 ulp (2 * 2^-24 relative at most), s^2 + c^2 is within about
+        // 4 * 2 * 2^-24 of 1; 1e-6 leaves room for the f32 squaring.
+        for k in 0..100_000 {
+            let x = -1.0e4 + 0.2 * k as f32;
+            let (s, c) = sin_cos_f32(x);
+            let n = (s as f64).powi(2) + (c as f64).powi(2);
+            assert!((n - 1.0).abs() < 1e-6, "{x}: {n}");
+        }
+    }
+
+    /// f64's square root of an f32, rounded to f32, is the correctly rounded
+    /// f32 square root (53 >= 2 * 24 + 2 bits: the double rounding is harmless).
+    fn sqrt_reference(x: f32) -> f32 {
+        (x as f64).sqrt() as f32
+    }
+
+    /// Representable steps between the kernel's square root and the correctly
+    /// rounded one (both positive: bit patterns are ordered like values).
+    fn sqrt_steps(x: f32) -> u32 {
+        sqrt_f32(x).to_bits().abs_diff(sqrt_reference(x).to_bits())
+    }
+
+    #[test]
+    fn sqrt_within_one_step_on_a_dense_sample() {
+        for b in (0..0x7F80_0000u32).step_by(251) {
+            let x = f32::from_bits(b);
+            assert!(sqrt_steps(x) <= 1, "{x:e}");
+        }
+        // Perfect squares and their neighbours (exact results, ties avoided).
+        for k in 1..5000u32 {
+            let x = (k * k) as f32;
+            assert_eq!(sqrt_f32(x), k as f32);
+            for n in [
+                f32::from_bits(x.to_bits() - 1),
+                f32::from_bits(x.to_bits() + 1),
+            ] {
+                assert!(sqrt_steps(n) <= 1, "{n:e}");
+            }
+        }
+    }
+
+    #[test]
+    fn sqrt_special_values() {
+        assert_eq!(sqrt_f32(0.0).to_bits(), 0.0f32.to_bits());
+        assert_eq!(sqrt_f32(-0.0).to_bits(), (-0.0f32).to_bits());
+        assert_eq!(sqrt_f32(f32::INFINITY), f32::INFINITY);
+        assert!(sqrt_f32(-1.0).is_nan() && sqrt_f32(f32::NAN).is_nan());
+        assert!(sqrt_f32(f32::NEG_INFINITY).is_nan());
+        assert!(sqrt_steps(f32::MAX) <= 1 && sqrt_steps(f32::from_bits(1)) <= 1);
+    }
+
+    #[test]
+    #[ignore = "exhaustive over all 2^31 non-negative bit patterns"]
+    fn exhaustive_sqrt_within_one_step() {
+        let worst = (0..0x7F80_0000u32)
+            .map(|b| sqrt_steps(f32::from_bits(b)))
+            .max();
+        assert_eq!(worst, Some(1));
+    }
+
+    #[test]
+    #[ignore = "exhaustive over all 2^31 non-negative bit patterns: minutes in release"]
+    fn exhaustive_every_f32_within_2_ulp() {
+        // Non-negative arguments only: the kernel computes -x as x with the
+        // sine's sign flipped, exactly. Four threads over interleaved chunks.
+        let workers: std::vec::Vec<_> = (0..4u32)
+            .map(|t| {
+                std::thread::spawn(move || {
+                    let lo = t * 0x1FE0_0000;
+                    worst((lo..lo + 0x1FE0_0000).map(f32::from_bits))
+                })
+            })
+            .collect();
+        let mut all = ((0.0, 0.0f32), (0.0, 0.0f32));
+        for w in workers {
+            let (s, c) = w.join().expect("worker");
+            if s.0 > all.0 .0 {
+                all.0 = s;
+            }
+            if c.0 > all.1 .0 {
+                all.1 = c;
+            }
+        }
+        let ((es, xs_), (ec, xc)) = all;
+        std::println!(
+            "worst sin error {es:.4} ulp at {xs_:e}; worst cos error {ec:.4} ulp at {xc:e}"
+        );
+        assert!(es <= BOUND_ULP && ec <= BOUND_ULP);
+    }
+}

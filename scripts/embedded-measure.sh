@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# Code size and instructions per evaluation of the four-bar scenes on a
+# Cortex-M4F (QEMU mps2-an386), written as a Markdown table to stdout.
+#
+# For each scene (a cargo feature of tests/firmware's `probe` binary):
+#  - size: .text (and .rodata) of the probe minus the empty baseline probe;
+#  - instructions: a QEMU single-step trace (-singlestep -d exec,nochain, one
+#    line per executed instruction), counted between the entries of
+#    probe_start and probe_end for each of the 72 evaluations
+#    (scripts/embedded-count.awk), minus the baseline's count (the call
+#    through a function pointer and the marker itself).
+# Needs: qemu-system-arm, binutils-arm-none-eabi (arm-none-eabi-nm/size),
+# rustup target thumbv7em-none-eabihf. Usage: scripts/embedded-measure.sh [--check]
+# --check exits non-zero if a target of docs/embedded.md is missed.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+fw="$root/tests/firmware"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+target=thumbv7em-none-eabihf
+elf="$fw/target/$target/release/probe"
+
+# qemu 7.2 spells one-instruction blocks -singlestep; newer ones -accel tcg,one-insn-per-tb=on.
+single=(-singlestep)
+if ! qemu-system-arm -help | grep -q -- '-singlestep'; then single=(-accel tcg,one-insn-per-tb=on); fi
+
+# name|feature|scene|scalar
+scenes=(
+  "base|||"
+  "pos32|pos32|position only|f32"
+  "vel32|vel32|position + velocity|f32"
+  "acc32|acc32|position + velocity + acceleration|f32"
+  "forces32|forces32|with forces (same four-bar in m, with masses)|f32"
+  "pos64|pos64|position only|f64"
+  "vel64|vel64|position + velocity|f64"
+  "acc64|acc64|position + velocity + acceleration|f64"
+  "forces64|forces64|with forces (same four-bar in m, with masses)|f64"
+  "crank32|crank32|crank driver alone, from an angle|f32"
+  "cossin32|cossin32|crank driver alone, from (cos, sin)|f32"
+)
+measure() { # feature -> "text rodata mean min max"
+  local feat="$1"
+  (cd "$fw" && if [ -n "$feat" ]; then cargo build -q --release --bin probe --features "$feat"; else cargo build -q --release --bin probe; fi) >&2
+  local text rodata start end
+  text=$(arm-none-eabi-size -A "$elf" | awk '$1==".text"{print $2}')
+  rodata=$(arm-none-eabi-size -A "$elf" | awk '$1==".rodata"{print $2}')
+  start=$(arm-none-eabi-nm "$elf" | awk '$3=="probe_start"{print $1}')
+  end=$(arm-none-eabi-nm "$elf" | awk '$3=="probe_end"{print $1}')
+  timeout 300 qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic \
+    -semihosting-config enable=on,target=native -kernel "$elf" \
+    "${single[@]}" -d exec,nochain -D "$work/trace.log" </dev/null >&2
+  awk -v start="$start" -v end="$end" -f "$root/scripts/embedded-count.awk" "$work/trace.log" > "$work/count.txt"
+  # Largest first, names demangled when the ARM c++filt is there.
+  local filt=cat
+  if command -v arm-none-eabi-c++filt >/dev/null; then filt=arm-none-eabi-c++filt; fi
+  sort -k3 -n -r "$work/count.txt" | grep '^fn ' | head -6 | sed 's/^fn //' | $filt | sed 's/^/    /' > "$work/top-$feat.txt" || true
+  echo "$text $rodata $(awk '/^evaluations/{print $4, $6, $8}' "$work/count.txt")"
+}
+
+declare -A T R M LO HI
+for s in "${scenes[@]}"; do
+  IFS='|' read -r name feat desc scalar <<< "$s"
+  read -r T[$name] R[$name] M[$name] LO[$name] HI[$name] < <(measure "$feat")
+done
+
+echo "| scene | scalar | .text bytes | .rodata bytes | instructions / evaluation (mean, min-max of 72) |"
+echo "|---|---|---:|---:|---|"
+for s in "${scenes[@]}"; do
+  IFS='|' read -r name feat desc scalar <<< "$s"
+  [ "$name" = base ] && continue
+  awk -v d="$desc" -v sc="$scalar" -v t="${T[$name]}" -v r="${R[$name]}" -v m="${M[$name]}" -v lo="${LO[$name]}" -v hi="${HI[$name]}" \
+      -v bt="${T[base]}" -v br="${R[base]}" -v bm="${M[base]}" 'BEGIN {
+    printf "| %s | %s | %d | %d | %.0f (%d-%d) |\n", d, sc, t - bt, r - br, m - bm, lo - bm, hi - bm }'
+done
+echo
+echo "Baseline: .text ${T[base]} bytes, .rodata ${R[base]} bytes, ${M[base]} instructions around an empty call."
+echo
+echo "Where the instructions go (per evaluation, largest first; the inlined generated code is the scene function):"
+for s in "${scenes[@]}"; do
+  IFS='|' read -r name feat desc scalar <<< "$s"
+  [ "$name" = base ] && continue
+  echo "- $desc, $scalar:"
+  echo '```'
+  cat "$work/top-$feat.txt"
+  echo '```'
+done
+
+if [ "${1:-}" = --check ]; then
+  fail=0
+  acc=$(awk -v m="${M[acc32]}" -v b="${M[base]}" 'BEGIN{printf "%d", m - b}')
+  pos=$(awk -v m="${M[pos32]}" -v b="${M[base]}" 'BEGIN{printf "%d", m - b}')
+  size=$(( T[acc32] - T[base] ))
+  [ "$acc" -le 800 ] || { echo "target missed: four-bar f32 full scene $acc > 800 instructions" >&2; fail=1; }
+  [ "$size" -le 3072 ] || { echo "target missed: four-bar f32 full scene $size > 3072 bytes of .text" >&2; fail=1; }
+  [ $(( pos * 100 )) -le $(( acc * 40 )) ] || { echo "target missed: position-only $pos > 40% of $acc" >&2; fail=1; }
+  exit $fail
+fi

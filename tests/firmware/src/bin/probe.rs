@@ -1,0 +1,183 @@
+//! Measurement probe for `scripts/embedded-measure.sh`: runs one scene (chosen
+//! by a cargo feature; no feature is the empty baseline) over the 72 crank
+//! angles of the sweeps, each evaluation between the calls `probe_start()` and
+//! `probe_end()`, so that a QEMU single-step trace counts the instructions of
+//! each evaluation, and the `.text` of this binary minus the baseline's is the
+//! code the scene pulls in. The scene is called through a function pointer in
+//! `black_box` and its inputs and result pass through `black_box`, so nothing
+//! is folded at compile time.
+//!
+//! Scenes (f32 or f64, the seed 002 four-bar of `examples/common/scenes.rs`):
+//! `pos*` position only; `vel*` position and velocity; `acc*` position,
+//! velocity and acceleration (`solve`); `forces*` that plus the generated
+//! `forces()` (the same four-bar in metres with masses, `FourBarForces`
+//! below); `crank32` / `cossin32` the crank driver alone from an angle or
+//! from `(cos, sin)`.
+#![no_std]
+#![no_main]
+#![allow(dead_code, unused_imports)]
+
+use core::hint::black_box;
+use cortex_m_rt::entry;
+use cortex_m_semihosting::debug;
+use panic_semihosting as _;
+
+#[path = "../../../../examples/common/scenes.rs"]
+mod scenes;
+
+use mechanism::{Point2, Real};
+use scenes::{FourBar, FourBarInput};
+
+#[cfg(any(feature = "forces32", feature = "forces64"))]
+mechanism::mechanism! {
+    /// The seed 002 four-bar in metres with masses (kg, kg m^2): coupler
+    /// 1.2 kg at its midpoint, rocker 0.9 kg at its midpoint, gravity, and a
+    /// 5 N m clockwise couple on the rocker.
+    pub FourBarForces {
+        params { ground = 0.3048, crank = 0.1016, coupler = 0.254, rocker = 0.1778 }
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+        let G3 = point(link3, from A, 0.127, 0 deg);
+        let G4 = point(link4, from O4, 0.0889, 0 deg);
+        mass link3 { m = 1.2, at = G3, j = 0.0065 };
+        mass link4 { m = 0.9, at = G4, j = 0.0024 };
+        gravity (0.0, -9.81);
+        torque on link4 = -5.0;
+    }
+}
+
+/// Marks the start of one evaluation (the trace counts from its entry).
+#[no_mangle]
+#[inline(never)]
+pub extern "C" fn probe_start() {
+    // An opaque use of a distinct constant: the call can be neither removed
+    // nor merged with `probe_end`.
+    black_box(1u32);
+}
+
+/// Marks the end of one evaluation (the trace stops counting at its entry).
+#[no_mangle]
+#[inline(never)]
+pub extern "C" fn probe_end() {
+    black_box(2u32);
+}
+
+#[cfg(any(
+    feature = "pos32",
+    feature = "vel32",
+    feature = "acc32",
+    feature = "forces32",
+    feature = "crank32",
+    feature = "cossin32"
+))]
+type T = f32;
+#[cfg(not(any(
+    feature = "pos32",
+    feature = "vel32",
+    feature = "acc32",
+    feature = "forces32",
+    feature = "crank32",
+    feature = "cossin32"
+)))]
+type T = f64;
+
+#[cfg(any(feature = "pos32", feature = "pos64"))]
+fn scene(m: &FourBar<T>, q: T) -> impl Sized {
+    m.position(&FourBarInput { theta2: q })
+}
+
+#[cfg(any(feature = "vel32", feature = "vel64"))]
+fn scene(m: &FourBar<T>, q: T) -> impl Sized {
+    let p = m.position(&FourBarInput { theta2: q })?;
+    let v = m.velocity(
+        &p,
+        &FourBarInput {
+            theta2: T::lit(250.0),
+        },
+    )?;
+    Ok::<_, mechanism::Error>((p, v))
+}
+
+#[cfg(any(feature = "acc32", feature = "acc64"))]
+fn scene(m: &FourBar<T>, q: T) -> impl Sized {
+    m.solve(
+        &FourBarInput { theta2: q },
+        &FourBarInput {
+            theta2: T::lit(250.0),
+        },
+        &FourBarInput {
+            theta2: T::lit(2.0e4),
+        },
+    )
+}
+
+/// Position, velocity, acceleration and forces (`solve` of a definition with
+/// masses computes all four).
+#[cfg(any(feature = "forces32", feature = "forces64"))]
+fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
+    let m = black_box(FourBarForces::<T>::default());
+    m.solve(
+        &FourBarForcesInput { theta2: q },
+        &FourBarForcesInput {
+            theta2: T::lit(250.0),
+        },
+        &FourBarForcesInput {
+            theta2: T::lit(2.0e4),
+        },
+    )
+}
+
+#[cfg(feature = "crank32")]
+fn scene(m: &FourBar<T>, q: T) -> impl Sized {
+    mechanism::driver::crank::position(&Point2::origin(), m.crank, q)
+}
+
+/// The crank from `(cos, sin)`, as from an encoder's reading.
+#[cfg(feature = "cossin32")]
+fn scene(m: &FourBar<T>, cs: (T, T)) -> impl Sized {
+    mechanism::driver::crank::position_cos_sin(&Point2::origin(), m.crank, cs.0, cs.1)
+}
+
+/// Baseline: the same calls around a function that does nothing.
+#[cfg(not(any(
+    feature = "pos32",
+    feature = "vel32",
+    feature = "acc32",
+    feature = "forces32",
+    feature = "crank32",
+    feature = "cossin32",
+    feature = "pos64",
+    feature = "vel64",
+    feature = "acc64",
+    feature = "forces64"
+)))]
+fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
+    q
+}
+
+#[entry]
+fn main() -> ! {
+    let m = black_box(FourBar::<T>::default());
+    for i in 0..72u32 {
+        let deg = 5.0 * i as f64;
+        let q = T::lit(deg * (core::f64::consts::PI / 180.0));
+        // An arbitrary non-zero, non-unit pair: the driver normalizes it, and
+        // its cost does not depend on the values (no sine or cosine is linked
+        // into this probe, so its size is the (cos, sin) path alone).
+        #[cfg(feature = "cossin32")]
+        let q = (q, T::lit(1.0) - q);
+        let f = black_box(scene as fn(&_, _) -> _);
+        let q = black_box(q);
+        probe_start();
+        let r = f(&m, q);
+        probe_end();
+        black_box(r);
+    }
+    debug::exit(debug::EXIT_SUCCESS);
+    loop {
+        cortex_m::asm::wfi();
+    }
+}

@@ -1,0 +1,88 @@
+//! The sweeps the firmware checks, shared word for word with the host test
+//! `tests/firmware_table.rs` that writes and re-checks `expected.rs`: one row of
+//! outputs per crank angle, generic over the scalar, widened to `f64`.
+//!
+//! Expects the example scenes as `crate::scenes` (`examples/common/scenes.rs`).
+#![allow(dead_code)]
+
+use crate::scenes::{FourBar, FourBarInput, Shaper, ShaperInput};
+use mechanism::{Error, Real};
+
+/// Number of crank angles in each sweep: 0, 5, ..., 355 deg.
+pub const STEPS: usize = 72;
+
+/// Crank angle of step `i` (rad), rounded to `f32` so that the f32 and f64
+/// evaluations see the same input.
+pub fn angle(i: usize) -> f64 {
+    ((5.0 * i as f64) * (core::f64::consts::PI / 180.0)) as f32 as f64
+}
+
+/// Four-bar (seed 002, mm) columns.
+pub const FOURBAR_COLUMNS: [&str; 9] = [
+    "theta2", "B.x", "B.y", "theta3", "theta4", "omega3", "omega4", "alpha3", "alpha4",
+];
+/// Which four-bar columns are angles (compared modulo 2 pi).
+pub const FOURBAR_ANGLES: [bool; 9] = [true, false, false, true, true, false, false, false, false];
+/// Crank speed (rad/s) and angular acceleration (rad/s^2) of the four-bar
+/// sweep: the example's 250 rad/s and an acceleration whose term is comparable
+/// to the omega^2 term (as in `tests/examples.rs`).
+pub const FOURBAR_MOTION: (f64, f64) = (250.0, 2.0e4);
+
+/// One four-bar row at crank angle `theta` (rad).
+pub fn fourbar_row<T: Real>(theta: f64) -> Result<[f64; 9], Error> {
+    let m = FourBar::<T>::default();
+    let (w, a) = FOURBAR_MOTION;
+    let s = m.solve(
+        &FourBarInput {
+            theta2: T::lit(theta),
+        },
+        &FourBarInput { theta2: T::lit(w) },
+        &FourBarInput { theta2: T::lit(a) },
+    )?;
+    let (p, v, acc) = (&s.position, &s.velocity, &s.acceleration);
+    Ok([
+        theta,
+        p.B.x.as_f64(),
+        p.B.y.as_f64(),
+        p.link3.as_f64(),
+        p.link4.as_f64(),
+        v.link3.as_f64(),
+        v.link4.as_f64(),
+        acc.link3.as_f64(),
+        acc.link4.as_f64(),
+    ])
+}
+
+/// Shaper (seed 001, m) columns.
+pub const SHAPER_COLUMNS: [&str; 9] = [
+    "crank", "E.x", "theta3", "theta4", "omega3", "omega4", "v_E", "alpha3", "a_E",
+];
+/// Which shaper columns are angles (compared modulo 2 pi).
+pub const SHAPER_ANGLES: [bool; 9] = [true, false, true, true, false, false, false, false, false];
+/// Crank speed and acceleration of the shaper sweep (as in `tests/examples.rs`).
+pub const SHAPER_MOTION: (f64, f64) = (1.0, 0.7);
+
+/// One shaper row at crank angle `crank` (rad).
+pub fn shaper_row<T: Real>(crank: f64) -> Result<[f64; 9], Error> {
+    let m = Shaper::<T>::default();
+    let (w, a) = SHAPER_MOTION;
+    let s = m.solve(
+        &ShaperInput {
+            crank: T::lit(crank),
+        },
+        &ShaperInput { crank: T::lit(w) },
+        &ShaperInput { crank: T::lit(a) },
+    )?;
+    let (p, v, acc) = (&s.position, &s.velocity, &s.acceleration);
+    Ok([
+        crank,
+        p.E.x.as_f64(),
+        p.link3.as_f64(),
+        p.link4.as_f64(),
+        v.link3.as_f64(),
+        v.link4.as_f64(),
+        v.E.x.as_f64(),
+        acc.link3.as_f64(),
+        acc.E.x.as_f64(),
+    ])
+}
