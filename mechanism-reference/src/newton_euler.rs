@@ -34,9 +34,11 @@
 //! reference.
 //!
 //! Consistency check: the residual `A x - b` of the assembled system is
-//! recomputed in double-double after the solve and, row by row, compared
-//! with the largest single term of that row (`|A_ij x_j|` or `|b_i|`); above
-//! [`RESIDUAL_TOLERANCE`] the answer is refused ([`ForceError::Inconsistent`]).
+//! recomputed in double-double after the solve; the largest residual of a
+//! force equation is compared with the largest single term (`|A_ij x_j|` or
+//! `|b_i|`) of all force equations, and likewise for the moment equations;
+//! above [`RESIDUAL_TOLERANCE`] the answer is refused
+//! ([`ForceError::Inconsistent`]).
 //!
 //! Nothing here shares code with `mechanism-core` or the generated code: this
 //! is the textbook formulation a general multibody code would assemble.
@@ -46,9 +48,9 @@ use crate::linear::{solve, SingularMatrix};
 use crate::loop_closure::angular_acceleration;
 use crate::Dd;
 
-/// Largest accepted residual of any equation relative to the largest term
-/// of that equation. Elimination with partial pivoting is backward stable:
-/// the residual is a small multiple of the system's size times the
+/// Largest accepted residual of a force (moment) equation relative to the
+/// largest term of the force (moment) equations. Elimination with partial
+/// pivoting is backward stable: the residual is a small multiple of the system's size times the
 /// double-double rounding unit (2^-104 = 4.9e-32) when the pivots grow
 /// little, so 1e-28 leaves room for a growth of a few hundred while staying
 /// 1e12 below what an `f64` answer can reach.
@@ -438,26 +440,38 @@ pub fn solve_forces(sys: &System, s: &State) -> Result<Solution, ForceError> {
     })
 }
 
-/// Largest `|(A x - b)_i|` over the largest term `|A_ij x_j|`, `|b_i|` of
-/// its row (zero for a row whose terms are all zero).
+/// Largest `|(A x - b)_i|` of a force equation over the largest single term
+/// (`|A_ij x_j|` or `|b_i|`) of all force equations, and likewise for the
+/// moment equations (every third row): a normwise backward error per unit,
+/// which pivoted elimination keeps at the rounding level. (Row by row it
+/// is not: an equation whose only term is exactly zero, like a massless
+/// slider block's moment balance, gets a rounding-sized value from the
+/// elimination of the others, relatively 100% of itself.)
 fn relative_residual(a: &[Vec<Dd>], b: &[Dd], x: &[Dd]) -> f64 {
-    let mut worst = 0.0f64;
-    for (row, &bi) in a.iter().zip(b) {
+    let mut worst = [0.0f64; 2];
+    let mut scale = [0.0f64; 2];
+    for (i, (row, &bi)) in a.iter().zip(b).enumerate() {
+        let kind = usize::from(i % 3 == 2);
         let mut r = -bi;
-        let mut scale = bi.abs().to_f64();
+        scale[kind] = scale[kind].max(bi.abs().to_f64());
         for (&aij, &xj) in row.iter().zip(x) {
             let t = aij * xj;
             r += t;
-            scale = scale.max(t.abs().to_f64());
+            scale[kind] = scale[kind].max(t.abs().to_f64());
         }
-        if scale > 0.0 {
-            let rel = r.abs().to_f64() / scale;
-            worst = if rel.is_nan() {
-                f64::INFINITY
-            } else {
-                worst.max(rel)
-            };
-        }
+        let r = r.abs().to_f64();
+        worst[kind] = if r.is_nan() {
+            f64::INFINITY
+        } else {
+            worst[kind].max(r)
+        };
     }
-    worst
+    let rel = |k: usize| {
+        if scale[k] > 0.0 {
+            worst[k] / scale[k]
+        } else {
+            worst[k]
+        }
+    };
+    rel(0).max(rel(1))
 }
