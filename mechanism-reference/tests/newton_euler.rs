@@ -418,3 +418,100 @@ fn bad_descriptions_are_errors() {
         Err(ForceError::BadBody { body: 0 })
     );
 }
+
+/// A slotted lever at rest (the shaper's crank-block-rocker loop, massless):
+/// crank A-B (r at theta about A = (0, 0)), block pinned at B sliding on the
+/// lever pivoted at C = (0, -c) along C -> B, a couple `ml` on the lever.
+/// The block passes only a force normal to the lever through B: the lever's
+/// moment about C gives the normal force of block on lever N = -ml / |B - C|
+/// (along perp(u), u = (B - C) / |B - C|), the slide couple is zero, the
+/// ground's pin force on the lever is -N perp(u), and the crank's torque is
+/// T = N cross(B - A, perp(u)). Exercises a sliding pair between two moving
+/// bodies along a direction given by two moving points.
+#[test]
+fn static_slotted_lever_matches_the_hand_solution() {
+    let (r, c, ml) = (d(0.125), d(0.275), d(300.0));
+    for k in 0..36 {
+        let theta = d(10.0 * k as f64 + 3.0) * Dd::PI / d(180.0);
+        let (s, co) = theta.sin_cos();
+        let b_pt = V2 {
+            x: r * co,
+            y: r * s,
+        };
+        let c_pt = V2 { x: Dd::ZERO, y: -c };
+        let p = [V2::default(), c_pt, b_pt];
+        let zeros = [V2::default(); 3];
+        let massless = |com| Body {
+            mass: Dd::ZERO,
+            com,
+            inertia: Dd::ZERO,
+            turn: None,
+        };
+        // Bodies: 0 crank, 1 block, 2 lever.
+        let sys = System {
+            bodies: vec![massless(0), massless(2), massless(1)],
+            joints: vec![
+                Joint {
+                    from: Link::Ground,
+                    to: Link::Body(0),
+                    pair: Pair::Revolute { at: 0 },
+                },
+                Joint {
+                    from: Link::Body(0),
+                    to: Link::Body(1),
+                    pair: Pair::Revolute { at: 2 },
+                },
+                Joint {
+                    from: Link::Body(1),
+                    to: Link::Body(2),
+                    pair: Pair::Prismatic {
+                        dir: Direction::Segment(1, 2),
+                        about: 2,
+                    },
+                },
+                Joint {
+                    from: Link::Ground,
+                    to: Link::Body(2),
+                    pair: Pair::Revolute { at: 1 },
+                },
+            ],
+            drivers: vec![Driver::Torque { body: 0 }],
+            loads: vec![Load::Couple {
+                body: 2,
+                couple: ml,
+            }],
+            gravity: V2::default(),
+        };
+        let sol = solve_forces(
+            &sys,
+            &State {
+                p: &p,
+                v: &zeros,
+                a: &zeros,
+            },
+        )
+        .expect("regular");
+        let bc = b_pt.minus(c_pt);
+        let len = bc.dot(bc).sqrt();
+        let n = bc.scale(Dd::ONE / len).perp();
+        let normal = -(ml / len);
+        let scale = normal.abs().to_f64();
+        let Reaction::Prismatic {
+            normal: got,
+            moment,
+            force,
+        } = sol.reactions[2]
+        else {
+            panic!("joint 2 is prismatic");
+        };
+        assert!(close(got, normal, scale, 1e-29), "{k}: {got}");
+        assert!(close(force.x, n.x * normal, scale, 1e-29), "{k}");
+        // Couples: the largest force times the lever's size, 0.5 m.
+        assert!(close(moment, Dd::ZERO, scale * 0.5, 1e-29), "{k}: {moment}");
+        let rc = sol.reactions[3].force();
+        assert!(close(rc.x, -(n.x * normal), scale, 1e-29), "{k}");
+        assert!(close(rc.y, -(n.y * normal), scale, 1e-29), "{k}");
+        let t_want = normal * b_pt.cross(n);
+        assert!(close(sol.drives[0], t_want, scale * 0.5, 1e-29), "{k}");
+    }
+}
