@@ -11,6 +11,8 @@
 #[path = "../../benches/common/baselines.rs"]
 mod baselines;
 mod batch;
+/// The forces section: generated force analysis against the Newton-Euler reference.
+mod forces;
 mod generated;
 mod methods;
 mod numpy;
@@ -217,6 +219,11 @@ fn sci(x: f64) -> String {
 fn main() {
     let out_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/report");
     std::fs::create_dir_all(&out_dir).expect("create target/report");
+    if std::env::var_os("REPORT_FORCES_ONLY").is_some() {
+        // The forces section alone (development): not written to summary.md.
+        println!("{}", forces::section(&out_dir));
+        return;
+    }
     let mut md = String::new();
     let _ = writeln!(md, "# Error against run time\n");
     let _ = writeln!(md, "{}\n", machine());
@@ -371,6 +378,7 @@ fn main() {
         }
         let _ = writeln!(md, "- ({} in all)", all_problems.len());
     }
+    md += &forces::section(&out_dir);
     md += &stability::section(&out_dir);
     std::fs::write(out_dir.join("summary.md"), &md).expect("write summary");
     println!("{md}");

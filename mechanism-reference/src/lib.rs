@@ -14,5 +14,6 @@ pub mod equations;
 pub mod groups;
 pub mod linear;
 pub mod loop_closure;
+pub mod newton_euler;
 
 pub use dd::Dd;
