@@ -565,8 +565,26 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
         }
     });
 
+    // The later analyses, generated first: the hidden fields of the velocity
+    // and acceleration structs are only those a later analysis reads
+    // (`vel.NAME`, `acc.NAME`); the rest are locals and never stored.
+    let forces = (level >= Level::Forces).then(|| crate::kinetostatics::emit(model, plan, &moving));
+    let accel_rates = (level >= Level::Acceleration).then(|| emit_rates(&em, &moving, &out, true));
+    let mut later = String::new();
+    if let Some((code, _, _)) = &accel_rates {
+        later.push_str(&code.to_string());
+    }
+    if let Some(f) = &forces {
+        later.push_str(&f.methods.to_string());
+    }
+    let later: String = later.split_whitespace().collect();
+    let read_later = |scope: &str, field: &Ident| reads_field(&later, scope, &field.to_string());
     if level >= Level::Velocity {
         let (code, fields, outs) = emit_rates(&em, &moving, &out, false);
+        let fields: Vec<(Ident, TokenStream)> = fields
+            .into_iter()
+            .filter(|(n, _)| read_later("vel", n))
+            .collect();
         let conditions: Vec<Ident> = plan
             .order
             .iter()
@@ -588,7 +606,7 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
             None => lit(1.0),
             Some((first, rest)) => rest.iter().fold(
                 quote!(#first.condition),
-                |acc, g| quote!((#acc).min(#g.condition)),
+                |acc, g| quote!(::mechanism::geometry::min(#acc, #g.condition)),
             ),
         };
         let vel_doc = format!("Velocity of [`{name}`]: point velocities in length units per second, link angular velocities in rad/s (counter-clockwise positive), slide rates in length units per second.");
@@ -626,9 +644,7 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
             }
         });
     }
-    if level >= Level::Acceleration {
-        let forces =
-            (level >= Level::Forces).then(|| crate::kinetostatics::emit(model, plan, &moving));
+    if let Some((code, fields, outs)) = accel_rates {
         let forces_ty = format_ident!("{}Forces", name);
         let (forces_field, forces_call, forces_value, loads_param) = match &forces {
             Some(f) => {
@@ -665,7 +681,10 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
                 #forces_field
             }
         };
-        let (code, fields, outs) = emit_rates(&em, &moving, &out, true);
+        let fields: Vec<(Ident, TokenStream)> = fields
+            .into_iter()
+            .filter(|(n, _)| read_later("acc", n))
+            .collect();
         let acc_doc = format!("Acceleration of [`{name}`]: point accelerations in length units per s^2, link angular accelerations in rad/s^2, slide accelerations in length units per s^2.");
         let (on, ot, oc): (Vec<Ident>, Vec<TokenStream>, Vec<TokenStream>) = unzip3(outs);
         let (hn, ht): (Vec<Ident>, Vec<TokenStream>) = fields.into_iter().unzip();
@@ -713,6 +732,19 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
             #methods
         }
     }
+}
+
+/// Whether `code` (whitespace removed: the compiler's and proc_macro2's
+/// printers space tokens differently) reads `scope.field`, as whole
+/// identifiers.
+fn reads_field(code: &str, scope: &str, field: &str) -> bool {
+    let ident = |c: char| c.is_alphanumeric() || c == '_';
+    let pat = format!("{scope}.{field}");
+    code.match_indices(&pat).any(|(i, _)| {
+        let before = code[..i].chars().next_back();
+        let after = code[i + pat.len()..].chars().next();
+        !before.is_some_and(ident) && !after.is_some_and(ident)
+    })
 }
 
 fn unzip3<A, B, C>(v: Vec<(A, B, C)>) -> (Vec<A>, Vec<B>, Vec<C>) {
@@ -957,9 +989,10 @@ fn emit_rates(
                         let (ma, mb) = (point_arg(a), point_arg(b));
                         quote!(::mechanism::driver::actuator::acceleration(&pos.#g, &vel.#gv, #ma, #mb, rates.#input, accels.#input))
                     }
-                    (Kind::Rrr { a, b, .. }, false) => {
-                        let (ma, mb) = (point_arg(a), point_arg(b));
-                        quote!(::mechanism::dyad::rrr::velocity(&pos.#g, #ma, #mb))
+                    (Kind::Rrr { a, b, l1, l2, .. }, false) => {
+                        // The link lengths are the determinant's scale: no square root.
+                        let (ma, mb, l1, l2) = (point_arg(a), point_arg(b), l1.emit(), l2.emit());
+                        quote!(::mechanism::dyad::rrr::velocity_lengths(&pos.#g, #l1, #l2, #ma, #mb))
                     }
                     (Kind::Rrr { a, b, .. }, true) => {
                         let (ma, mb) = (point_arg(a), point_arg(b));

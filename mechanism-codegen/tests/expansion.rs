@@ -68,7 +68,8 @@ fn acceleration_full() {
     // O2 and O4 are fixed: the crank and the RRR group get `None` for them.
     let flat: String = code.split_whitespace().collect();
     assert!(flat.contains("crank::velocity(&pos.grp_A,::core::option::Option::None"));
-    assert!(flat.contains("rrr::velocity(&pos.grp_B,::core::option::Option::Some(&vel_A),::core::option::Option::None"));
+    // The RRR's link lengths are its determinant's scale (no square root).
+    assert!(flat.contains("rrr::velocity_lengths(&pos.grp_B,self.coupler,self.rocker,::core::option::Option::Some(&vel_A),::core::option::Option::None"));
     insta::assert_snapshot!(code);
 }
 

@@ -71,21 +71,23 @@ fn place<T: Real>(
 
 /// Velocity of the tip (L/s): `v_pivot + omega perp(r)`; `v_pivot = None`
 /// for a crank on the ground.
+///
+/// Errors: `NonFinite` for a non-finite `omega` or `v_pivot`, or a result
+/// that overflows (one check of the result: `r != 0`, so a non-finite
+/// `omega` makes it non-finite).
 #[inline]
 pub fn velocity<T: Real>(
     pos: &CrankPosition<T>,
     v_pivot: Option<&Vector2<T>>,
     omega: T,
 ) -> Result<Vector2<T>, Error> {
-    let omega = finite(omega, P, "crank speed")?;
-    finite_vec(
-        plus(v_pivot, relative_velocity(&pos.r, omega)),
-        P,
-        "crank tip velocity",
-    )
+    let v = plus(v_pivot, relative_velocity(&pos.r, omega));
+    checked(v, omega.finite(), "crank speed", "crank tip velocity")
 }
 
 /// Acceleration of the tip (L/s^2): `a_pivot + alpha perp(r) - omega^2 r`.
+///
+/// Errors: `NonFinite`, as for [`velocity`].
 #[inline]
 pub fn acceleration<T: Real>(
     pos: &CrankPosition<T>,
@@ -93,11 +95,28 @@ pub fn acceleration<T: Real>(
     omega: T,
     alpha: T,
 ) -> Result<Vector2<T>, Error> {
-    let omega = finite(omega, P, "crank speed")?;
-    let alpha = finite(alpha, P, "crank angular acceleration")?;
-    finite_vec(
-        plus(a_pivot, relative_acceleration(&pos.r, omega, alpha)),
-        P,
+    let a = plus(a_pivot, relative_acceleration(&pos.r, omega, alpha));
+    checked(
+        a,
+        omega.finite() && alpha.finite(),
+        "crank speed or angular acceleration",
         "crank tip acceleration",
     )
+}
+
+/// `Ok(v)` when `v` is finite; otherwise `NonFinite` naming the input
+/// (`inputs_finite` is evaluated on this error path only) or the result.
+#[inline(always)]
+fn checked<T: Real>(
+    v: Vector2<T>,
+    inputs_finite: bool,
+    input: &'static str,
+    result: &'static str,
+) -> Result<Vector2<T>, Error> {
+    if v.x.finite() && v.y.finite() {
+        Ok(v)
+    } else {
+        let what = if inputs_finite { result } else { input };
+        Err(Error::new(P, crate::error::Fault::NonFinite { what }))
+    }
 }

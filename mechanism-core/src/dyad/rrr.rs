@@ -22,8 +22,8 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, check_det_sq, condition_from_sq, cross, difference, dot, finite, finite_point, finite_vec,
-    length, perp, plus, positive,
+    abs, check_det, check_det_sq, cross, difference, dot, finite_point, finite_vec, length, min,
+    perp, plus, positive,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -108,8 +108,8 @@ pub fn position<T: Real>(
     let inner1 = dist + l1 - l2; // < 0: l2 too long
     let inner2 = dist - l1 + l2; // < 0: l1 too long
     let band = T::lit(4.0) * T::eps() * sum;
-    let inner = inner1.min(inner2);
-    if outer.min(inner) < -band {
+    let inner = min(inner1, inner2);
+    if min(outer, inner) < -band {
         let (miss, reach) = if outer <= inner {
             (-outer, sum)
         } else {
@@ -135,20 +135,20 @@ pub fn position<T: Real>(
     Ok(RrrPosition { c, r1, r2: c - b })
 }
 
-/// Determinant of the rate system, `cross(r1, r2) = l1 l2 sin(angle between
-/// the links)`, checked against `16 eps l1 l2`.
-#[inline(always)]
 /// The rate system's determinant `cross(r1, r2)`, checked in squared form (no
-/// square roots on the hot path: the lengths are l1, l2), and the squared
-/// scale `l1^2 l2^2` it was checked against.
-fn determinant<T: Real>(pos: &RrrPosition<T>) -> Result<(T, T), Error> {
+/// square roots: the squared scale is `|r1|^2 |r2|^2`).
+#[inline(always)]
+fn determinant<T: Real>(pos: &RrrPosition<T>) -> Result<T, Error> {
     let scale_sq = dot(&pos.r1, &pos.r1) * dot(&pos.r2, &pos.r2);
-    let det = check_det_sq(cross(&pos.r1, &pos.r2), scale_sq, P)?;
-    Ok((det, scale_sq))
+    check_det_sq(cross(&pos.r1, &pos.r2), scale_sq, P)
 }
 
 /// Rates of the group from the velocities of `A` and `B` (L/s); `None` means
 /// the point is fixed (its terms vanish at compile time).
+///
+/// The scale of the determinant (and of the condition indicator) is
+/// `|r1| |r2|`, one square root; [`velocity_lengths`] takes it from the link
+/// lengths instead.
 ///
 /// Errors: `Singular` when `|cross(r1, r2)| <= 16 eps l1 l2` (toggle: the two
 /// links are aligned); `NonFinite` for a non-finite input.
@@ -158,22 +158,66 @@ pub fn velocity<T: Real>(
     va: Option<&Vector2<T>>,
     vb: Option<&Vector2<T>>,
 ) -> Result<RrrVelocity<T>, Error> {
-    let (det, scale_sq) = determinant(pos)?;
-    let condition = condition_from_sq(det, scale_sq);
-    let dv = finite_vec(difference(vb, va), P, "RRR joint velocity")?;
-    let omega1 = finite(dot(&dv, &pos.r2) / det, P, "RRR omega1")?;
-    let omega2 = finite(dot(&dv, &pos.r1) / det, P, "RRR omega2")?;
-    let vc = finite_vec(
-        plus(va, relative_velocity(&pos.r1, omega1)),
-        P,
-        "RRR velocity of C",
-    )?;
-    Ok(RrrVelocity {
-        omega1,
-        omega2,
-        vc,
-        condition,
-    })
+    let scale = (dot(&pos.r1, &pos.r1) * dot(&pos.r2, &pos.r2)).sqrt_kernel();
+    rates(pos, scale, va, vb)
+}
+
+/// [`velocity`] with the determinant's scale `l1 l2` given as the two link
+/// lengths of the [`position`] call (the generated code knows them), so no
+/// square root is taken: `|r1| = l1` and `|r2| = l2` up to the rounding of
+/// the position (a few eps of the coordinates), which is far below what the
+/// indicator is for (telling `1` from `1e-3` from `16 eps`).
+///
+/// Condition indicator: `|cross(r1, r2)| / (l1 l2)`, clamped to 1.
+/// Errors as for [`velocity`]; `Singular` also for a non-positive or
+/// non-finite `l1 l2`.
+#[inline]
+pub fn velocity_lengths<T: Real>(
+    pos: &RrrPosition<T>,
+    l1: T,
+    l2: T,
+    va: Option<&Vector2<T>>,
+    vb: Option<&Vector2<T>>,
+) -> Result<RrrVelocity<T>, Error> {
+    rates(pos, l1 * l2, va, vb)
+}
+
+/// The rates with the determinant's scale given.
+#[inline(always)]
+fn rates<T: Real>(
+    pos: &RrrPosition<T>,
+    scale: T,
+    va: Option<&Vector2<T>>,
+    vb: Option<&Vector2<T>>,
+) -> Result<RrrVelocity<T>, Error> {
+    let det = check_det(cross(&pos.r1, &pos.r2), scale, P)?;
+    let condition = min(abs(det) / scale, T::one());
+    let dv = difference(vb, va);
+    let omega1 = dot(&dv, &pos.r2) / det;
+    let omega2 = dot(&dv, &pos.r1) / det;
+    let vc = plus(va, relative_velocity(&pos.r1, omega1));
+    // One check for the results: a non-finite `va`, `vb` (so `dv`) makes
+    // `omega1` non-finite (`r2 != 0`), and with it `vc` (`r1 != 0`, and
+    // `va` enters `vc` directly); `omega2` covers `dv` through `r1`.
+    if omega2.finite() && vc.x.finite() && vc.y.finite() {
+        Ok(RrrVelocity {
+            omega1,
+            omega2,
+            vc,
+            condition,
+        })
+    } else {
+        Err(Error::new(
+            P,
+            Fault::NonFinite {
+                what: if dv.x.finite() && dv.y.finite() {
+                    "RRR rates"
+                } else {
+                    "RRR joint velocity"
+                },
+            },
+        ))
+    }
 }
 
 /// Accelerations of the group from the accelerations of `A` and `B` (L/s^2;
@@ -189,17 +233,28 @@ pub fn acceleration<T: Real>(
     aa: Option<&Vector2<T>>,
     ab: Option<&Vector2<T>>,
 ) -> Result<RrrAcceleration<T>, Error> {
-    let (det, _) = determinant(pos)?;
-    let da = finite_vec(difference(ab, aa), P, "RRR joint acceleration")?;
+    let det = determinant(pos)?;
+    let da = difference(ab, aa);
     let w = da + pos.r1 * (vel.omega1 * vel.omega1) - pos.r2 * (vel.omega2 * vel.omega2);
-    let alpha1 = finite(dot(&w, &pos.r2) / det, P, "RRR alpha1")?;
-    let alpha2 = finite(dot(&w, &pos.r1) / det, P, "RRR alpha2")?;
-    let ac = finite_vec(
-        plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1)),
-        P,
-        "RRR acceleration of C",
-    )?;
-    Ok(RrrAcceleration { alpha1, alpha2, ac })
+    let alpha1 = dot(&w, &pos.r2) / det;
+    let alpha2 = dot(&w, &pos.r1) / det;
+    let ac = plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1));
+    // One check, as in `velocity_lengths`: `w` (so `aa`, `ab` and the rates)
+    // propagates into `alpha1`, `ac` and `alpha2`.
+    if alpha2.finite() && ac.x.finite() && ac.y.finite() {
+        Ok(RrrAcceleration { alpha1, alpha2, ac })
+    } else {
+        Err(Error::new(
+            P,
+            Fault::NonFinite {
+                what: if da.x.finite() && da.y.finite() {
+                    "RRR angular accelerations"
+                } else {
+                    "RRR joint acceleration"
+                },
+            },
+        ))
+    }
 }
 
 #[cfg(test)]

@@ -7,12 +7,17 @@
 //! `black_box` and its inputs and result pass through `black_box`, so nothing
 //! is folded at compile time.
 //!
-//! Scenes (f32 or f64, the seed 002 four-bar of `examples/common/scenes.rs`):
-//! `pos*` position only; `vel*` position and velocity; `acc*` position,
-//! velocity and acceleration (`solve`); `forces*` that plus the generated
-//! `forces()` (the same four-bar in metres with masses, `FourBarForces`
-//! below); `crank32` / `cossin32` the crank driver alone from an angle or
-//! from `(cos, sin)`.
+//! Scenes (f32 or f64): the seed 002 four-bar of `examples/common/scenes.rs`
+//! (mm, run-time `params`), each defined here as a user of that scene would
+//! define it: the outputs are the coupler joint `B` and the two link angles
+//! (`outputs { B, link3, link4 }`: no coupler point `P`, no crank angle, which
+//! is the input), and `analysis` stops where the scene stops. `pos*`
+//! position only (`FourBarPos`, `analysis position`); `vel*` position and
+//! velocity (`FourBarVel`, `analysis velocity`); `acc*` position, velocity
+//! and acceleration (`FourBarAcc`, `solve`); `forces*` that plus the
+//! generated `forces()` (the same four-bar in metres with masses,
+//! `FourBarForces` below); `crank32` / `cossin32` the crank driver alone from
+//! an angle or from `(cos, sin)`.
 #![no_std]
 #![no_main]
 #![allow(dead_code, unused_imports)]
@@ -26,7 +31,52 @@ use panic_semihosting as _;
 mod scenes;
 
 use mechanism::{Point2, Real};
-use scenes::{FourBar, FourBarInput};
+use scenes::FourBar;
+
+#[cfg(any(feature = "pos32", feature = "pos64"))]
+mechanism::mechanism! {
+    /// Position only: the coupler joint and the two link angles.
+    pub FourBarPos {
+        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        dof 1;
+        analysis position;
+        outputs { B, link3, link4 }
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+    }
+}
+
+#[cfg(any(feature = "vel32", feature = "vel64"))]
+mechanism::mechanism! {
+    /// Up to velocity: the coupler joint and the two links.
+    pub FourBarVel {
+        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        dof 1;
+        analysis velocity;
+        outputs { B, link3, link4 }
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+    }
+}
+
+#[cfg(any(feature = "acc32", feature = "acc64"))]
+mechanism::mechanism! {
+    /// Up to acceleration: the coupler joint and the two links.
+    pub FourBarAcc {
+        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        dof 1;
+        analysis acceleration;
+        outputs { B, link3, link4 }
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+    }
+}
 
 #[cfg(any(feature = "forces32", feature = "forces64"))]
 mechanism::mechanism! {
@@ -85,16 +135,18 @@ type T = f32;
 type T = f64;
 
 #[cfg(any(feature = "pos32", feature = "pos64"))]
-fn scene(m: &FourBar<T>, q: T) -> impl Sized {
-    m.position(&FourBarInput { theta2: q })
+fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
+    let m = black_box(FourBarPos::<T>::default());
+    m.position(&FourBarPosInput { theta2: q })
 }
 
 #[cfg(any(feature = "vel32", feature = "vel64"))]
-fn scene(m: &FourBar<T>, q: T) -> impl Sized {
-    let p = m.position(&FourBarInput { theta2: q })?;
+fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
+    let m = black_box(FourBarVel::<T>::default());
+    let p = m.position(&FourBarVelInput { theta2: q })?;
     let v = m.velocity(
         &p,
-        &FourBarInput {
+        &FourBarVelInput {
             theta2: T::lit(250.0),
         },
     )?;
@@ -102,13 +154,14 @@ fn scene(m: &FourBar<T>, q: T) -> impl Sized {
 }
 
 #[cfg(any(feature = "acc32", feature = "acc64"))]
-fn scene(m: &FourBar<T>, q: T) -> impl Sized {
+fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
+    let m = black_box(FourBarAcc::<T>::default());
     m.solve(
-        &FourBarInput { theta2: q },
-        &FourBarInput {
+        &FourBarAccInput { theta2: q },
+        &FourBarAccInput {
             theta2: T::lit(250.0),
         },
-        &FourBarInput {
+        &FourBarAccInput {
             theta2: T::lit(2.0e4),
         },
     )
