@@ -215,3 +215,62 @@ fn cross_slide_on_a_carried_guide() {
         close_vec(s.acceleration.C, fd(|t| vel(t).C), 1.0, "aC");
     }
 }
+
+mechanism! {
+    /// The seed 002 four-bar with its crank angle given as (cos, sin).
+    pub EncoderFourBar {
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(304.8, 0.0);
+        let A = crank(O2, 101.6, theta2 as cos_sin) as link2;
+        let B = rrr(A, 254.0, O4, 177.8, left) as (link3, link4);
+        outputs { B, link2, link3, link4 }
+    }
+}
+
+/// `position_cos_sin` against `position` at the same angles, and the rates
+/// from either: the pair is normalized (an encoder's unscaled reading, here
+/// 3.7 times the unit vector), so the only differences are the roundings of
+/// the normalization and of cos/sin themselves: a few ulp of the 254 mm
+/// coupler (1e-12 mm) and of pi (1e-14 rad).
+#[test]
+fn crank_input_as_cos_sin() {
+    let m = EncoderFourBar::<f64>::default();
+    for step in 0..72 {
+        let q = f64::to_radians(5.0 * step as f64);
+        let by_angle = m.position(&EncoderFourBarInput { theta2: q }).unwrap();
+        let reading = mechanism::driver::crank::CosSin {
+            cos: 3.7 * q.cos(),
+            sin: 3.7 * q.sin(),
+        };
+        let by_pair = m
+            .position_cos_sin(&EncoderFourBarCosSin { theta2: reading })
+            .unwrap();
+        assert!((by_angle.B - by_pair.B).norm() < 1e-12, "{step}");
+        for (a, b) in [
+            (by_angle.link2, by_pair.link2),
+            (by_angle.link3, by_pair.link3),
+            (by_angle.link4, by_pair.link4),
+        ] {
+            let d = (a - b).rem_euclid(2.0 * std::f64::consts::PI);
+            assert!(
+                d.min(2.0 * std::f64::consts::PI - d) < 1e-14,
+                "{step}: {a} {b}"
+            );
+        }
+        let rates = EncoderFourBarInput { theta2: 250.0 };
+        let (va, vp) = (
+            m.velocity(&by_angle, &rates).unwrap(),
+            m.velocity(&by_pair, &rates).unwrap(),
+        );
+        assert!(
+            (va.B - vp.B).norm() < 1e-12 * va.B.norm().max(1.0),
+            "{step}"
+        );
+    }
+    // A zero reading is a typed error naming the crank, not a NaN.
+    let zero = mechanism::driver::crank::CosSin { cos: 0.0, sin: 0.0 };
+    let err = m
+        .position_cos_sin(&EncoderFourBarCosSin { theta2: zero })
+        .unwrap_err();
+    assert_eq!(err.group, "A");
+}

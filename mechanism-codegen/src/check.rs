@@ -412,6 +412,7 @@ impl Evaluator<'_> {
                     pivot,
                     radius,
                     input,
+                    ..
                 } => {
                     let c = driver::crank::position(&pt(pivot), num(radius), inp(input))
                         .map_err(fail)?;

@@ -142,6 +142,9 @@ struct Emitter<'a> {
     plan: &'a Plan,
     /// Links whose unit axis is needed in position (points on them, carried guides).
     axes: BTreeSet<String>,
+    /// Emitting `position_cos_sin`: cranks marked `as cos_sin` read
+    /// `input_cs.NAME.cos` and `.sin`.
+    cos_sin: bool,
 }
 
 impl Emitter<'_> {
@@ -222,12 +225,20 @@ impl Emitter<'_> {
                 pivot,
                 radius,
                 input,
+                cos_sin,
             } => {
                 let r = radius.emit();
                 fields.extend([g.clone(), name.clone()]);
-                quote! {
-                    let #g = ::mechanism::driver::crank::position(&#pivot, #r, input.#input) #t;
-                    let #name = #g.tip;
+                if *cos_sin && self.cos_sin {
+                    quote! {
+                        let #g = ::mechanism::driver::crank::position_cos_sin(&#pivot, #r, input_cs.#input.cos, input_cs.#input.sin) #t;
+                        let #name = #g.tip;
+                    }
+                } else {
+                    quote! {
+                        let #g = ::mechanism::driver::crank::position(&#pivot, #r, input.#input) #t;
+                        let #name = #g.tip;
+                    }
                 }
             }
             Kind::Slider {
@@ -407,7 +418,12 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
             _ => {}
         }
     }
-    let em = Emitter { model, plan, axes };
+    let em = Emitter {
+        model,
+        plan,
+        axes,
+        cos_sin: false,
+    };
 
     // Points that move (everything but ground points and points on still links
     // measured from still points).
@@ -446,33 +462,46 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
         pos_code.extend(code);
         pos_fields.extend(fields);
     }
-    // Output locals: link angles and slides.
-    let mut pos_out_code = TokenStream::new();
+    // Output locals: link angles and slides. `cos_sin`: the code for
+    // `position_cos_sin`, where a marked crank's angle is its axis' angle.
+    let out_code = |cos_sin: bool| {
+        let mut code = TokenStream::new();
+        for link in &out.links {
+            let info = &plan.links[&link.to_string()];
+            let (_, dir) = em.link_direction(&model.stmts[info.stmt], info.index);
+            // A crank's angle is its input: reduced to (-pi, pi], no atan2.
+            let value = match &model.stmts[info.stmt].kind {
+                Kind::Crank {
+                    input,
+                    cos_sin: marked,
+                    ..
+                } if !(cos_sin && *marked) => {
+                    quote!(::mechanism::geometry::wrap_angle(input.#input))
+                }
+                _ => quote!(::mechanism::geometry::angle(&#dir)),
+            };
+            code.extend(quote!(let #link = #value;));
+        }
+        for (slide, i, slot) in &out.slides {
+            let g = em.grp(&model.stmts[*i]);
+            let field = match (&model.stmts[*i].kind, slot) {
+                (Kind::Prp { .. }, 0) | (Kind::Rpp { .. }, 0) => quote!(s1),
+                (Kind::Prp { .. }, _) | (Kind::Rpp { .. }, _) => quote!(s2),
+                _ => quote!(s),
+            };
+            code.extend(quote!(let #slide = #g.#field;));
+        }
+        code
+    };
+    let pos_out_code = out_code(false);
     let mut pos_out_fields: Vec<(Ident, TokenStream)> = Vec::new();
     for p in &out.points {
         pos_out_fields.push((p.clone(), quote!(::mechanism::Point2<T>)));
     }
     for link in &out.links {
-        let info = &plan.links[&link.to_string()];
-        let (_, dir) = em.link_direction(&model.stmts[info.stmt], info.index);
-        // A crank's angle is its input: reduced to (-pi, pi], no atan2.
-        let value = match &model.stmts[info.stmt].kind {
-            Kind::Crank { input, .. } => {
-                quote!(::mechanism::geometry::wrap_angle(input.#input))
-            }
-            _ => quote!(::mechanism::geometry::angle(&#dir)),
-        };
-        pos_out_code.extend(quote!(let #link = #value;));
         pos_out_fields.push((link.clone(), quote!(T)));
     }
-    for (slide, i, slot) in &out.slides {
-        let g = em.grp(&model.stmts[*i]);
-        let field = match (&model.stmts[*i].kind, slot) {
-            (Kind::Prp { .. }, 0) | (Kind::Rpp { .. }, 0) => quote!(s1),
-            (Kind::Prp { .. }, _) | (Kind::Rpp { .. }, _) => quote!(s2),
-            _ => quote!(s),
-        };
-        pos_out_code.extend(quote!(let #slide = #g.#field;));
+    for (slide, _, _) in &out.slides {
         pos_out_fields.push((slide.clone(), quote!(T)));
     }
     let out_names: BTreeSet<String> = pos_out_fields.iter().map(|(n, _)| n.to_string()).collect();
@@ -564,6 +593,76 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
             ::core::result::Result::Ok(#position_ty { #(#pos_all,)* input })
         }
     });
+    let marked: Vec<&Ident> = model
+        .stmts
+        .iter()
+        .filter_map(|s| match &s.kind {
+            Kind::Crank {
+                input,
+                cos_sin: true,
+                ..
+            } => Some(input),
+            _ => None,
+        })
+        .collect();
+    if !marked.is_empty() {
+        let em_cs = Emitter {
+            cos_sin: true,
+            axes: em.axes.clone(),
+            ..em
+        };
+        let mut cs_code = TokenStream::new();
+        for &i in &plan.order {
+            cs_code.extend(em_cs.position(&model.stmts[i]).0);
+        }
+        let cs_out = out_code(true);
+        let cs_ty = format_ident!("{}CosSin", name);
+        let field_ty: Vec<TokenStream> = inputs
+            .iter()
+            .map(|i| {
+                if marked.contains(&i) {
+                    quote!(::mechanism::driver::crank::CosSin<T>)
+                } else {
+                    quote!(T)
+                }
+            })
+            .collect();
+        let copied: Vec<TokenStream> = inputs
+            .iter()
+            .map(|i| {
+                if marked.contains(&i) {
+                    quote!(#i: <T as ::mechanism::Real>::lit(0.0))
+                } else {
+                    quote!(#i: input_cs.#i)
+                }
+            })
+            .collect();
+        let cs_doc = format!("Driver inputs of [`{name}`] for `position_cos_sin`: the cranks written `INPUT as cos_sin` take their angle as `(cos, sin)` (need not be unit: it is normalized), the other inputs as in [`{input_ty}`].");
+        items.extend(quote! {
+            #[doc = #cs_doc]
+            #[derive(Clone, Copy, Debug, PartialEq)]
+            #[allow(non_snake_case)]
+            #vis struct #cs_ty<T = ::core::primitive::f64> {
+                #(#[doc = "Driver input."] pub #inputs: #field_ty,)*
+            }
+        });
+        methods.extend(quote! {
+            /// Solves the position analysis with the marked cranks' angles
+            /// given as `(cos, sin)` (no sine or cosine is evaluated for
+            /// them; their link angle, if an output, is one `atan2`). The
+            /// returned position's recorded input holds 0 for those angles;
+            /// `velocity` and `acceleration` do not read it.
+            #[inline]
+            #[allow(non_snake_case, unused_variables)]
+            pub fn position_cos_sin(&self, input: &#cs_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> {
+                let input_cs = *input;
+                let input = #input_ty { #(#copied,)* };
+                #cs_code
+                #cs_out
+                ::core::result::Result::Ok(#position_ty { #(#pos_all,)* input })
+            }
+        });
+    }
 
     // The later analyses, generated first: the hidden fields of the velocity
     // and acceleration structs are only those a later analysis reads
@@ -1257,6 +1356,7 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         #[allow(dead_code, unused_variables)]
         impl<T: ::mechanism::Real> #name<T> {
             pub fn position(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
+            pub fn position_cos_sin(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
             pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
             pub fn acceleration(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#acceleration_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
             pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }

@@ -179,11 +179,13 @@ pub enum Kind {
         angle: Value,
         carrier: Option<Ident>,
     },
-    /// Crank driver.
+    /// Crank driver. `cos_sin`: the definition wrote `INPUT as cos_sin`, so a
+    /// `position_cos_sin` entry point takes this input as `(cos, sin)`.
     Crank {
         pivot: Ident,
         radius: Value,
         input: Ident,
+        cos_sin: bool,
     },
     /// Slider driver.
     Slider {
@@ -433,6 +435,13 @@ impl<'a> Args<'a> {
             Arg::Value(Expr::Path(p), None) if p.path.get_ident().is_some() => {
                 p.path.get_ident().cloned()
             }
+            Arg::Value(Expr::Cast(c), None) if role == "input name" => {
+                self.fail(
+                    c.ty.span(),
+                    "only a crank's angle can be given as `(cos, sin)`: `crank(O, r, INPUT as cos_sin)`; other inputs are plain names".into(),
+                );
+                None
+            }
             Arg::Value(e, _) => {
                 self.fail(e.span(), format!("expected the {role} (a name) here"));
                 None
@@ -442,6 +451,39 @@ impl<'a> Args<'a> {
                 None
             }
         }
+    }
+
+    /// A crank's input: `NAME` (an angle) or `NAME as cos_sin`.
+    fn crank_input(&mut self) -> Option<(Ident, bool)> {
+        if let Some(Arg::Value(Expr::Cast(c), None)) = self.args.clone().next() {
+            self.args.next();
+            let name = match &*c.expr {
+                Expr::Path(p) => p.path.get_ident().cloned(),
+                _ => None,
+            };
+            let form = match &*c.ty {
+                syn::Type::Path(t) => t.path.get_ident().map(Ident::to_string),
+                _ => None,
+            };
+            return match (name, form.as_deref()) {
+                (Some(name), Some("cos_sin")) => Some((name, true)),
+                (None, _) => {
+                    self.fail(c.expr.span(), "expected the input name here".into());
+                    None
+                }
+                (_, other) => {
+                    self.fail(
+                        c.ty.span(),
+                        format!(
+                            "unknown input form `{}`; a crank's angle may be given as `INPUT as cos_sin` (its cosine and sine)",
+                            other.unwrap_or("?")
+                        ),
+                    );
+                    None
+                }
+            };
+        }
+        Some((self.name("input name")?, false))
     }
 
     /// A number (angle units allowed when `angle`).
@@ -669,11 +711,17 @@ fn lower_kind(stmt: &parse::Let, scope: &NumberScope<'_>, errors: &mut Errors) -
                 carrier,
             }
         }
-        "crank" => Kind::Crank {
-            pivot: a.name("pivot point")?,
-            radius: a.length("crank radius")?,
-            input: a.name("input name")?,
-        },
+        "crank" => {
+            let pivot = a.name("pivot point")?;
+            let radius = a.length("crank radius")?;
+            let (input, cos_sin) = a.crank_input()?;
+            Kind::Crank {
+                pivot,
+                radius,
+                input,
+                cos_sin,
+            }
+        }
         "slider" => Kind::Slider {
             guide: a.name("guide")?,
             input: a.name("input name")?,

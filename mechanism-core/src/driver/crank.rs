@@ -41,6 +41,18 @@ pub fn position<T: Real>(
     place(pivot, length, Vector2::new(cos, sin))
 }
 
+/// A crank angle given by its cosine and sine (as an encoder or a resolver
+/// delivers it), for the generated `position_cos_sin` of a definition that
+/// writes `crank(O, r, INPUT as cos_sin)`. The pair need not be exactly unit:
+/// [`position_cos_sin`] normalizes it.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CosSin<T> {
+    /// `cos theta` (any positive multiple of it, together with `sin`).
+    pub cos: T,
+    /// `sin theta`.
+    pub sin: T,
+}
+
 /// Places the crank from `(cos theta, sin theta)`, which need not be exactly
 /// unit: it is normalized (an encoder's pair rarely is).
 ///
