@@ -126,11 +126,11 @@ pub fn sin_cos<T: Real>(x: T) -> (T, T, bool) {
     let (s, c) = if single::<T>() {
         let r = T::lit(r);
         let r2 = r * r;
-        let s = r
-            + r * r2
-                * (T::lit(-1.0 / 6.0)
-                    + r2 * (T::lit(1.0 / 120.0)
-                        + r2 * (T::lit(-1.0 / 5040.0) + r2 * T::lit(1.0 / 362_880.0))));
+        let s = r + r
+            * r2
+            * (T::lit(-1.0 / 6.0)
+                + r2 * (T::lit(1.0 / 120.0)
+                    + r2 * (T::lit(-1.0 / 5040.0) + r2 * T::lit(1.0 / 362_880.0))));
         let c = T::one() - T::lit(0.5) * r2
             + r2 * r2
                 * (T::lit(1.0 / 24.0)
@@ -188,7 +188,8 @@ pub fn atan2<T: Real>(y: T, x: T) -> T {
     let p = if single::<T>() {
         u + u * u2 * (T::lit(-1.0 / 3.0) + u2 * T::lit(1.0 / 5.0))
     } else {
-        u + u * u2
+        u + u
+            * u2
             * (T::lit(-1.0 / 3.0)
                 + u2 * (T::lit(1.0 / 5.0)
                     + u2 * (T::lit(-1.0 / 7.0)
@@ -502,9 +503,19 @@ mod tests {
             worst.1,
             worst.2
         );
-        for (y, x) in [(0.0, 1.0), (0.0, -1.0), (-0.0, -1.0), (1.0, 0.0), (-1.0, -0.0)] {
+        for (y, x) in [
+            (0.0, 1.0),
+            (0.0, -1.0),
+            (-0.0, -1.0),
+            (1.0, 0.0),
+            (-1.0, -0.0),
+        ] {
             let (yt, xt) = (T::lit(y), T::lit(x));
-            assert_eq!(atan2(yt, xt).as_f64(), T::lit(y.atan2(x)).as_f64(), "{y} {x}");
+            assert_eq!(
+                atan2(yt, xt).as_f64(),
+                T::lit(y.atan2(x)).as_f64(),
+                "{y} {x}"
+            );
         }
     }
 
@@ -573,7 +584,10 @@ mod tests {
                 // from a square root and a division chain, each within 1 ulp.
                 // 4 ulp of the largest length.
                 let tol = 4.0 * f64::EPSILON * 512.0;
-                assert!((g.x - s.c.x).abs() < tol && (g.y - s.c.y).abs() < tol, "{th}");
+                assert!(
+                    (g.x - s.c.x).abs() < tol && (g.y - s.c.y).abs() < tol,
+                    "{th}"
+                );
                 let va = Vector2::new(-cr.ry * 10.0, cr.rx * 10.0);
                 let sv = rrr::velocity(&s, Some(&va), None).expect("rates");
                 let (w1, w2) = rrr_rates(&g, -va.x, -va.y);
