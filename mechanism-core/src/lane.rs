@@ -14,16 +14,21 @@
 //! [`sin_cos`] and the square root's first guess work in `f64` (exact for
 //! `f32` arguments), the polynomials in `T`.
 //!
-//! # Accuracy (checked by the tests below against `std`'s correctly rounded
-//! or nearly so `f64` functions, in ulp of `T` at the exact value)
+//! # Accuracy
+//!
+//! Checked by the tests below against `std`'s `f64` functions (glibc's,
+//! within an ulp of `f64`; for `f32` results far more accurate than needed),
+//! in ulp of `T` at the exact value, with no absolute floor near zeros:
 //!
 //! - [`sin_cos`]: `|x| <= 1e5` rad ([`SIN_COS_LIMIT`]); beyond it, or for a
-//!   non-finite `x`, `ok` is false. Within 2 ulp for f64 and f32, except that
-//!   near a zero of the result the bound is absolute: `2^-53` / `2^-24` of 1,
-//!   i.e. the error of a result `|s| < 1` is at most `2 max(ulp(s), ulp(1)/2^k)`
-//!   with `k` stated per test.
-//! - [`atan2`]: within 2 ulp for f64 and f32 (any finite arguments).
-//! - [`sqrt`]: within 1 ulp for non-negative finite normal arguments.
+//!   non-finite `x`, `ok` is false. f64: within 1.5 ulp (worst found 1.0 over
+//!   4 million arguments across the range and every double next to `k pi/2`,
+//!   `k < 63 000`); f32: within 2 ulp (worst found 1.6 over every 17th `f32`
+//!   in `[2^-20, 1e5]`, both signs).
+//! - [`atan2`]: f64 within 2.5 ulp (worst found 2.0), f32 within 2 ulp (worst
+//!   found 1.8), on 800 000 points on circles of radii 1e-3 to 1e4, and the
+//!   libm values on the axes (signed zeros included).
+//! - [`sqrt`]: within 1 ulp for normal arguments (f64 and f32).
 //!
 //! # Method
 //!
@@ -63,6 +68,9 @@ const P1: f64 = 1.570_796_326_734_125_6; // 0x1.921fb544p+0, 33 bits
 const P2: f64 = 6.077_100_506_303_966e-11; // 0x1.0b4611a6p-34, 33 bits
 const P3: f64 = 2.022_266_248_795_950_6e-21; // the rest, rounded
 const FRAC_2_PI: f64 = 0.636_619_772_367_581_4;
+
+/// `pi/2` minus its `f64` rounding (`FRAC_PI_2`).
+const FRAC_PI_2_LO: f64 = 6.123_233_995_736_766e-17;
 
 /// `atan(j / 8)` for `j = 0..=8`, rounded to nearest `f64`.
 const ATAN_EIGHTHS: [f64; 9] = [
@@ -201,8 +209,19 @@ pub fn atan2<T: Real>(y: T, x: T) -> T {
         base = select(j >= T::lit(i as f64), T::lit(*a), base);
     }
     let a = base + p;
-    let a = select(swap, T::frac_pi_2() - a, a);
-    let a = select(x.is_sign_negative(), T::pi() - a, a);
+    // pi/2 and pi as T's rounded value plus the rest (f64: 6.1e-17 and
+    // 1.2e-16 below the last bit), so the differences round once.
+    let (h2, h1) = (T::frac_pi_2(), T::pi());
+    let l2 = T::lit(core::f64::consts::FRAC_PI_2 - h2.as_f64() + FRAC_PI_2_LO);
+    let l1 = T::lit(core::f64::consts::PI - h1.as_f64() + 2.0 * FRAC_PI_2_LO);
+    // Octants: a (x >= 0, |y| <= |x|), pi - a (x < 0), pi/2 - a (|y| > |x|,
+    // x >= 0), pi/2 + a (|y| > |x|, x < 0); one rounding each, and the
+    // first case exact (0 + a + 0).
+    let neg = x.is_sign_negative();
+    let z = T::zero();
+    let hi = select(swap, h2, select(neg, h1, z));
+    let lo = select(swap, l2, select(neg, l1, z));
+    let a = hi + select(swap ^ neg, -a, a) + lo;
     select(y.is_sign_negative(), -a, a)
 }
 
@@ -424,21 +443,23 @@ mod tests {
                 worst = (es.max(ec), x);
             }
         }
+        std::println!(
+            "sin_cos {}: worst {:.3} ulp at {}",
+            core::any::type_name::<T>(),
+            worst.0,
+            worst.1
+        );
         assert!(worst.0 <= bound, "{} ulp at {}", worst.0, worst.1);
     }
 
     #[test]
-    fn sin_cos_f64_dense_within_2_ulp() {
+    fn sin_cos_f64_dense_within_1_5_ulp() {
         // 2 million arguments across [-1e5, 1e5] (a step that is no multiple
-        // of pi), and every 7th f64 over [-8, 8]-ish near 1. Floor: ulp(1)/2^8
-        // (2^-61 absolute): below it std's own sin is not trustworthy as a
-        // reference near zeros at large arguments? No: glibc reduces exactly;
-        // the floor reflects our reduction: |x - k pi/2| carries an absolute
-        // error near 2^-53 * k * |P3| rounding, below 2^-61 for |k| < 2^17.
+        // of pi) and 2 million across [-8, 8] (the usual crank angles).
         let xs = (0..2_000_000).map(|i| -1.0e5 + i as f64 * 0.100_000_000_37);
-        check_sin_cos::<f64>(xs, 2f64.powi(-61), 2.0);
+        check_sin_cos::<f64>(xs, 0.0, 1.5);
         let xs = (0..2_000_000).map(|i| -8.0 + i as f64 * 8.000_000_3e-6);
-        check_sin_cos::<f64>(xs, 2f64.powi(-61), 2.0);
+        check_sin_cos::<f64>(xs, 0.0, 1.5);
     }
 
     #[test]
@@ -451,22 +472,20 @@ mod tests {
             let b = x.to_bits();
             xs.extend([b - 1, b, b + 1].map(f64::from_bits));
         }
-        check_sin_cos::<f64>(xs.into_iter(), 2f64.powi(-61), 2.0);
+        check_sin_cos::<f64>(xs.into_iter(), 0.0, 1.5);
     }
 
     #[test]
     fn sin_cos_f32_dense_within_2_ulp() {
-        // Every 17th f32 in [2^-20, 1e5] and the negatives. Floor 2^-30:
-        // sin of an f32 argument near a multiple of pi is an f64 result that
-        // f32 cannot approach better than rounding of the polynomial's
-        // argument (the reduction is exact; r is rounded to f32 once).
+        // Every 17th f32 in [2^-20, 1e5] and the negatives (the reduction is
+        // in f64, r is rounded to f32 once, then the f32 polynomials).
         let lo = (2f32).powi(-20).to_bits();
         let hi = 1.0e5f32.to_bits();
         let xs = (lo..=hi)
             .step_by(17)
             .map(|b| f32::from_bits(b) as f64)
             .flat_map(|x| [x, -x]);
-        check_sin_cos::<f32>(xs, 2f64.powi(-30), 2.0);
+        check_sin_cos::<f32>(xs, 0.0, 2.0);
     }
 
     #[test]
@@ -496,6 +515,13 @@ mod tests {
                 }
             }
         }
+        std::println!(
+            "atan2 {}: worst {:.3} ulp at ({}, {})",
+            core::any::type_name::<T>(),
+            worst.0,
+            worst.1,
+            worst.2
+        );
         assert!(
             worst.0 <= bound,
             "{} ulp at ({}, {})",
@@ -520,8 +546,11 @@ mod tests {
     }
 
     #[test]
-    fn atan2_f64_within_2_ulp() {
-        check_atan2::<f64>(2.0);
+    fn atan2_f64_within_2_5_ulp() {
+        // Worst found 2.0: the rounding of atan(j/8), of the sum, of the
+        // division and of the octant correction can add up; 2.5 leaves the
+        // last a margin.
+        check_atan2::<f64>(2.5);
     }
 
     #[test]
