@@ -503,7 +503,7 @@ fn lane(
                 let mut fin = true;
                 #body
                 #writes
-                status[k] = if ok & fin { 0 } else { u8::MAX };
+                status[k] = if ok & fin { 0 } else { ::core::primitive::u8::MAX };
             }
         }
     };

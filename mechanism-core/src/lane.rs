@@ -67,7 +67,7 @@ const R32: f64 = 12_582_912.0;
 const P1: f64 = 1.570_796_326_734_125_6; // 0x1.921fb544p+0, 33 bits
 const P2: f64 = 6.077_100_506_303_966e-11; // 0x1.0b4611a6p-34, 33 bits
 const P3: f64 = 2.022_266_248_795_950_6e-21; // the rest, rounded
-const FRAC_2_PI: f64 = 0.636_619_772_367_581_4;
+const FRAC_2_PI: f64 = core::f64::consts::FRAC_2_PI;
 
 /// `pi/2` minus its `f64` rounding (`FRAC_PI_2`).
 const FRAC_PI_2_LO: f64 = 6.123_233_995_736_766e-17;
