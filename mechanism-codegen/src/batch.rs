@@ -489,7 +489,7 @@ fn lane(
         /// must evaluate the element again.
         #[doc(hidden)]
         #[inline]
-        #[allow(non_snake_case, unused_variables, clippy::too_many_arguments)]
+        #[allow(non_snake_case, unused_variables, dead_code, clippy::too_many_arguments)]
         fn __lane_batch(&self, #(#ins: &[T],)* #(#params_out: &mut [T],)* status: &mut [::core::primitive::u8]) {
             let mut n = status.len();
             #(n = ::core::cmp::min(n, #ins.len());)*
