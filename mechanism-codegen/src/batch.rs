@@ -437,6 +437,27 @@ fn lane(
             }
             _ => return None,
         }
+        // Every value the scalar path checks is checked here too (finite),
+        // outputs or not: an element the kernel accepts is one the scalar
+        // path accepts.
+        let mut checked = vec![px, py];
+        if vel {
+            checked.extend([vx, vy]);
+        }
+        if acc {
+            checked.extend([ax_, ay_]);
+        }
+        for link in &stmt.links {
+            if let Some(l) = links.get(&link.to_string()) {
+                if vel {
+                    checked.push(l.omega.clone());
+                }
+                if acc {
+                    checked.push(l.alpha.clone());
+                }
+            }
+        }
+        body.extend(quote!(#(fin &= #real::finite(#checked);)*));
         points.insert(name.to_string(), ());
     }
     // Outputs: (slice, value) per level.
