@@ -438,8 +438,10 @@ fn lane(
             _ => return None,
         }
         // Every value the scalar path checks is checked here too (finite),
-        // outputs or not: an element the kernel accepts is one the scalar
-        // path accepts.
+        // outputs or not, so that an element the kernel accepts is one the
+        // scalar path accepts: summed (one add each), the sum is finite
+        // unless one of them is not (or, harmlessly, the sum overflows:
+        // the element then goes to the scalar path).
         let mut checked = vec![px, py];
         if vel {
             checked.extend([vx, vy]);
@@ -457,7 +459,7 @@ fn lane(
                 }
             }
         }
-        body.extend(quote!(#(fin &= #real::finite(#checked);)*));
+        body.extend(quote!(#(chk = chk + #checked;)*));
         points.insert(name.to_string(), ());
     }
     // Outputs: (slice, value) per level.
@@ -493,10 +495,9 @@ fn lane(
                 vec![(format_ident!("{}_{}", prefixes[li], o), v)]
             };
             for (f, v) in pairs {
+                // Angles are finite where their arguments are (checked above).
                 writes.extend(quote! {
-                    let val = #v;
-                    fin &= #real::finite(val);
-                    #f[k] = val;
+                    #f[k] = #v;
                 });
                 params_out.push(f);
             }
@@ -521,10 +522,11 @@ fn lane(
             let zero = #real::lit(0.0);
             for k in 0..n {
                 let mut ok = true;
-                let mut fin = true;
+                let mut chk = zero;
                 #body
                 #writes
-                status[k] = if ok & fin { 0 } else { ::core::primitive::u8::MAX };
+                ok &= #real::finite(chk);
+                status[k] = if ok { 0 } else { ::core::primitive::u8::MAX };
             }
         }
     };
