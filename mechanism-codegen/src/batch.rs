@@ -459,7 +459,7 @@ fn lane(
                 }
             }
         }
-        body.extend(quote!(#(chk = chk + #checked;)*));
+        body.extend(quote!(#(chk += #checked;)*));
         points.insert(name.to_string(), ());
     }
     // Outputs: (slice, value) per level.
