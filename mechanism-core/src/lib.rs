@@ -22,6 +22,7 @@ pub mod error;
 pub mod force;
 pub mod geometry;
 pub mod guide;
+pub mod lane;
 pub mod link;
 pub mod linsolve;
 pub mod mode;
