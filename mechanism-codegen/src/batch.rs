@@ -292,6 +292,7 @@ fn lane(
                 pivot,
                 radius,
                 input,
+                ..
             } => {
                 if !known(pivot) {
                     return None;
