@@ -25,16 +25,15 @@ pub trait Real: RealField + Copy {
     /// `true` when the value is neither NaN nor infinite.
     fn finite(self) -> bool;
     /// `(sin self, cos self)` (radians) computed in this type's own precision:
-    /// `f32` through [`crate::trig::sin_cos_f32`] (within 2 ulp, single-precision
-    /// arithmetic only, so a single-precision FPU does it in hardware), `f64`
-    /// through nalgebra's `sin_cos` (libm, or `std` when enabled). Named apart
-    /// from `ComplexField::sin_cos`, which for `f32` goes through libm's `sinf`,
-    /// whose internals are `f64`.
+    /// `f32` on 32-bit ARM through [`crate::trig::sin_cos_f32`] (within 2 ulp,
+    /// single-precision arithmetic only, so a single-precision FPU does it in
+    /// hardware; libm's `sinf` computes in `f64`, software there), elsewhere
+    /// and for `f64` through nalgebra's `sin_cos` (libm, or `std` when enabled).
     fn sin_cos_kernel(self) -> (Self, Self);
-    /// Square root in this type's own precision: `f32` through
-    /// [`crate::trig::sqrt_f32`] (correctly rounded, FPU divide plus integer
-    /// check, where libm's `sqrtf` is a slow integer routine), `f64` through
-    /// nalgebra's `sqrt`.
+    /// Square root in this type's own precision: `f32` on 32-bit ARM through
+    /// [`crate::trig::sqrt_f32`] (FPU divide and Newton steps, where libm's
+    /// `sqrtf` is a slow integer routine), elsewhere and for `f64` through
+    /// nalgebra's `sqrt` (the hardware instruction).
     fn sqrt_kernel(self) -> Self;
 }
 
@@ -84,10 +83,29 @@ impl Real for f32 {
     }
     #[inline(always)]
     fn sin_cos_kernel(self) -> (Self, Self) {
-        crate::trig::sin_cos_f32(self)
+        // On 32-bit ARM (Cortex-M: single-precision FPU or none) libm's
+        // `sinf`/`cosf` compute in software doubles: use the f32 kernel. Where
+        // doubles are hardware (x86-64, AArch64), libm's is faster.
+        #[cfg(target_arch = "arm")]
+        {
+            crate::trig::sin_cos_f32(self)
+        }
+        #[cfg(not(target_arch = "arm"))]
+        {
+            <f32 as nalgebra::ComplexField>::sin_cos(self)
+        }
     }
     #[inline(always)]
     fn sqrt_kernel(self) -> Self {
-        crate::trig::sqrt_f32(self)
+        // libm's `sqrtf` is an integer routine on 32-bit ARM; elsewhere it is
+        // the hardware instruction, faster than the kernel's Newton steps.
+        #[cfg(target_arch = "arm")]
+        {
+            crate::trig::sqrt_f32(self)
+        }
+        #[cfg(not(target_arch = "arm"))]
+        {
+            <f32 as nalgebra::ComplexField>::sqrt(self)
+        }
     }
 }
