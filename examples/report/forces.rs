@@ -224,56 +224,7 @@ fn scenes() -> Vec<ForceScene> {
             grid: grid(),
             rate: 2.0 * PI,
             accel: 0.0,
-            linkage: Linkage {
-                points: vec![
-                    fixed(0.0, 0.0),
-                    fixed(0.0, -0.275),
-                    fixed(0.0, 0.3),
-                    fixed(-1.0, 0.3),
-                    Point::Unknown,
-                    Point::Unknown,
-                    Point::Unknown,
-                ],
-                constraints: vec![
-                    Constraint::Crank {
-                        p: 4,
-                        o: 0,
-                        r: 0.125,
-                        input: 0,
-                    },
-                    Constraint::OnLine { p: 5, q1: 1, q2: 4 },
-                    Constraint::Distance {
-                        p: 5,
-                        q: 1,
-                        len: 0.6,
-                    },
-                    Constraint::Distance {
-                        p: 6,
-                        q: 5,
-                        len: 0.15,
-                    },
-                    Constraint::OnFixedLine {
-                        p: 6,
-                        origin: V2::new(0.0, 0.3),
-                        dir: V2::new(-1.0, 0.0),
-                    },
-                ],
-                sides: vec![
-                    Side::Ahead {
-                        p: 5,
-                        a: 1,
-                        from: 1,
-                        to: 4,
-                    },
-                    Side::Ahead {
-                        p: 6,
-                        a: 5,
-                        from: 2,
-                        to: 3,
-                    },
-                ],
-                scale: 0.6,
-            },
+            linkage: crate::reference::shaper_linkage(),
             first_guess: vec![
                 (0.0, 0.0),
                 (0.0, -0.275),

@@ -267,57 +267,7 @@ pub fn scenes() -> Vec<Scene> {
             grid: deg_grid(0.0, 360.0, 3600),
             rates: vec![1.0],
             accels: vec![0.7],
-            // 0 A, 1 C, 2 G0, 3 G1 (ram guide points), 4 B, 5 D, 6 E
-            linkage: Linkage {
-                points: vec![
-                    fixed(0.0, 0.0),
-                    fixed(0.0, -0.275),
-                    fixed(0.0, 0.3),
-                    fixed(-1.0, 0.3),
-                    Point::Unknown,
-                    Point::Unknown,
-                    Point::Unknown,
-                ],
-                constraints: vec![
-                    Constraint::Crank {
-                        p: 4,
-                        o: 0,
-                        r: 0.125,
-                        input: 0,
-                    },
-                    Constraint::OnLine { p: 5, q1: 1, q2: 4 },
-                    Constraint::Distance {
-                        p: 5,
-                        q: 1,
-                        len: 0.6,
-                    },
-                    Constraint::Distance {
-                        p: 6,
-                        q: 5,
-                        len: 0.15,
-                    },
-                    Constraint::OnFixedLine {
-                        p: 6,
-                        origin: V2::new(0.0, 0.3),
-                        dir: V2::new(-1.0, 0.0),
-                    },
-                ],
-                sides: vec![
-                    Side::Ahead {
-                        p: 5,
-                        a: 1,
-                        from: 1,
-                        to: 4,
-                    },
-                    Side::Ahead {
-                        p: 6,
-                        a: 5,
-                        from: 2,
-                        to: 3,
-                    },
-                ],
-                scale: 0.6,
-            },
+            linkage: shaper_linkage(),
             columns_of: |p, v, a| {
                 let [ex, ey] = point_items(p, v, a, 6);
                 by_order(vec![ex, ey, ang(p, v, a, 1, 4), ang(p, v, a, 5, 6)])
@@ -459,4 +409,59 @@ pub fn residual(scene: &Scene, inputs: &[f64], points: &[(f64, f64)]) -> f64 {
         .collect();
     let f = equations::residual(&scene.linkage, &p, &q);
     equations::relative_residual(&scene.linkage, &f)
+}
+
+/// The shaper of seed 001 as points and constraints (m): 0 A, 1 C, 2 and 3
+/// the ram guide's points, 4 B, 5 D, 6 E. Shared with the forces section.
+pub fn shaper_linkage() -> Linkage {
+    Linkage {
+        points: vec![
+            fixed(0.0, 0.0),
+            fixed(0.0, -0.275),
+            fixed(0.0, 0.3),
+            fixed(-1.0, 0.3),
+            Point::Unknown,
+            Point::Unknown,
+            Point::Unknown,
+        ],
+        constraints: vec![
+            Constraint::Crank {
+                p: 4,
+                o: 0,
+                r: 0.125,
+                input: 0,
+            },
+            Constraint::OnLine { p: 5, q1: 1, q2: 4 },
+            Constraint::Distance {
+                p: 5,
+                q: 1,
+                len: 0.6,
+            },
+            Constraint::Distance {
+                p: 6,
+                q: 5,
+                len: 0.15,
+            },
+            Constraint::OnFixedLine {
+                p: 6,
+                origin: V2::new(0.0, 0.3),
+                dir: V2::new(-1.0, 0.0),
+            },
+        ],
+        sides: vec![
+            Side::Ahead {
+                p: 5,
+                a: 1,
+                from: 1,
+                to: 4,
+            },
+            Side::Ahead {
+                p: 6,
+                a: 5,
+                from: 2,
+                to: 3,
+            },
+        ],
+        scale: 0.6,
+    }
 }
