@@ -80,6 +80,16 @@ macro_rules! gen_method {
     }};
 }
 
+/// [`gen_method!`] in `f64` and in `f32` (families and names given per
+/// precision), pushed onto `$v`: the two share the definition, the sample
+/// function and the summed outputs.
+macro_rules! gen_pair {
+    ($v:expr, $scene:expr, $ty:ident, $in:ident { $($f:ident),* }, $sample:path, [$fam64:expr, $name64:expr], [$fam32:expr, $name32:expr], |$s:ident| $sum:expr) => {
+        $v.push(gen_method!($scene, $ty, $in { $($f),* }, f64, F64, $sample, $fam64, $name64, |$s| $sum));
+        $v.push(gen_method!($scene, $ty, $in { $($f),* }, f32, F32, $sample, $fam32, $name32, |$s| $sum));
+    };
+}
+
 fn fourbar_out_sample(q: f64, o: &FourBarOut<f64>) -> Sample {
     let a = (CRANK * q.cos(), CRANK * q.sin());
     let b = (a.0 + COUPLER * o.t3.cos(), a.1 + COUPLER * o.t3.sin());
@@ -169,15 +179,14 @@ pub fn for_scene<'a>(scene: &'a Scene, out_dir: &Path) -> Vec<Method<'a>> {
     let mut v = Vec::new();
     match scene.name {
         "FourBar" => {
-            v.push(gen_method!(
+            gen_pair!(
+                v,
                 scene,
                 FourBar,
                 FourBarInput { theta2 },
-                f64,
-                F64,
                 generated::fourbar,
-                "generated f64",
-                "generated f64",
+                ["generated f64", "generated f64"],
+                ["generated f32", "generated f32"],
                 |s| s.position.B.x
                     + s.position.B.y
                     + s.position.link3
@@ -190,61 +199,22 @@ pub fn for_scene<'a>(scene: &'a Scene, out_dir: &Path) -> Vec<Method<'a>> {
                     + s.acceleration.B.y
                     + s.acceleration.link3
                     + s.acceleration.link4
-            ));
-            v.push(gen_method!(
-                scene,
-                FourBar,
-                FourBarInput { theta2 },
-                f32,
-                F32,
-                generated::fourbar,
-                "generated f32",
-                "generated f32",
-                |s| s.position.B.x
-                    + s.position.B.y
-                    + s.position.link3
-                    + s.position.link4
-                    + s.velocity.B.x
-                    + s.velocity.B.y
-                    + s.velocity.link3
-                    + s.velocity.link4
-                    + s.acceleration.B.x
-                    + s.acceleration.B.y
-                    + s.acceleration.link3
-                    + s.acceleration.link4
-            ));
-            v.push(gen_method!(
+            );
+            gen_pair!(
+                v,
                 scene,
                 FourBarPoints,
                 FourBarPointsInput { theta2 },
-                f64,
-                F64,
                 generated::fourbar_points,
-                "generated, no angles",
-                "generated f64, no angle outputs",
+                ["generated, no angles", "generated f64, no angle outputs"],
+                ["generated, no angles", "generated f32, no angle outputs"],
                 |s| s.position.B.x
                     + s.position.B.y
                     + s.velocity.B.x
                     + s.velocity.B.y
                     + s.acceleration.B.x
                     + s.acceleration.B.y
-            ));
-            v.push(gen_method!(
-                scene,
-                FourBarPoints,
-                FourBarPointsInput { theta2 },
-                f32,
-                F32,
-                generated::fourbar_points,
-                "generated, no angles",
-                "generated f32, no angle outputs",
-                |s| s.position.B.x
-                    + s.position.B.y
-                    + s.velocity.B.x
-                    + s.velocity.B.y
-                    + s.acceleration.B.x
-                    + s.acceleration.B.y
-            ));
+            );
             v.extend(crate::batch::fourbar(scene));
             let (w, a) = (scene.rates[0], scene.accels[0]);
             let grid = &scene.grid;
@@ -349,15 +319,14 @@ pub fn for_scene<'a>(scene: &'a Scene, out_dir: &Path) -> Vec<Method<'a>> {
             }
         }
         "SixBar" => {
-            v.push(gen_method!(
+            gen_pair!(
+                v,
                 scene,
                 SixBar,
                 SixBarInput { phi1 },
-                f64,
-                F64,
                 generated::sixbar,
-                "generated f64",
-                "generated f64",
+                ["generated f64", "generated f64"],
+                ["generated f32", "generated f32"],
                 |s| s.position.C.x
                     + s.position.F.y
                     + s.position.link2
@@ -365,35 +334,17 @@ pub fn for_scene<'a>(scene: &'a Scene, out_dir: &Path) -> Vec<Method<'a>> {
                     + s.velocity.link3
                     + s.acceleration.C.y
                     + s.acceleration.af
-            ));
-            v.push(gen_method!(
-                scene,
-                SixBar,
-                SixBarInput { phi1 },
-                f32,
-                F32,
-                generated::sixbar,
-                "generated f32",
-                "generated f32",
-                |s| s.position.C.x
-                    + s.position.F.y
-                    + s.position.link2
-                    + s.velocity.C.x
-                    + s.velocity.link3
-                    + s.acceleration.C.y
-                    + s.acceleration.af
-            ));
+            );
         }
         "Shaper" => {
-            v.push(gen_method!(
+            gen_pair!(
+                v,
                 scene,
                 Shaper,
                 ShaperInput { crank },
-                f64,
-                F64,
                 generated::shaper,
-                "generated f64",
-                "generated f64",
+                ["generated f64", "generated f64"],
+                ["generated f32", "generated f32"],
                 |s| s.position.E.x
                     + s.position.link3
                     + s.position.link4
@@ -401,92 +352,41 @@ pub fn for_scene<'a>(scene: &'a Scene, out_dir: &Path) -> Vec<Method<'a>> {
                     + s.velocity.link3
                     + s.acceleration.E.x
                     + s.acceleration.link4
-            ));
-            v.push(gen_method!(
-                scene,
-                Shaper,
-                ShaperInput { crank },
-                f32,
-                F32,
-                generated::shaper,
-                "generated f32",
-                "generated f32",
-                |s| s.position.E.x
-                    + s.position.link3
-                    + s.position.link4
-                    + s.velocity.E.x
-                    + s.velocity.link3
-                    + s.acceleration.E.x
-                    + s.acceleration.link4
-            ));
+            );
         }
         "SliderCrank" => {
-            v.push(gen_method!(
+            gen_pair!(
+                v,
                 scene,
                 SliderCrank,
                 SliderCrankInput { theta },
-                f64,
-                F64,
                 generated::slider_crank,
-                "generated f64",
-                "generated f64",
+                ["generated f64", "generated f64"],
+                ["generated f32", "generated f32"],
                 |s| s.position.B.x
                     + s.position.link3
                     + s.velocity.B.x
                     + s.velocity.link3
                     + s.acceleration.B.x
                     + s.acceleration.link3
-            ));
-            v.push(gen_method!(
-                scene,
-                SliderCrank,
-                SliderCrankInput { theta },
-                f32,
-                F32,
-                generated::slider_crank,
-                "generated f32",
-                "generated f32",
-                |s| s.position.B.x
-                    + s.position.link3
-                    + s.velocity.B.x
-                    + s.velocity.link3
-                    + s.acceleration.B.x
-                    + s.acceleration.link3
-            ));
+            );
         }
         "FiveBar" => {
-            v.push(gen_method!(
+            gen_pair!(
+                v,
                 scene,
                 FiveBar,
                 FiveBarInput { q1, q2 },
-                f64,
-                F64,
                 generated::five_bar,
-                "generated f64",
-                "generated f64",
+                ["generated f64", "generated f64"],
+                ["generated f32", "generated f32"],
                 |s| s.position.P.x
                     + s.position.P.y
                     + s.velocity.P.x
                     + s.velocity.P.y
                     + s.acceleration.P.x
                     + s.acceleration.P.y
-            ));
-            v.push(gen_method!(
-                scene,
-                FiveBar,
-                FiveBarInput { q1, q2 },
-                f32,
-                F32,
-                generated::five_bar,
-                "generated f32",
-                "generated f32",
-                |s| s.position.P.x
-                    + s.position.P.y
-                    + s.velocity.P.x
-                    + s.velocity.P.y
-                    + s.acceleration.P.x
-                    + s.acceleration.P.y
-            ));
+            );
         }
         _ => {}
     }
