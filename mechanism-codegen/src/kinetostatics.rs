@@ -186,8 +186,7 @@ impl ForceEmitter<'_> {
             let weight = format_ident!("pw_weight_{}", link);
             let v_g = self.velocity(at);
             let mut force_terms = Vec::new();
-            let accelerates = v_g.is_some();
-            if accelerates {
+            if v_g.is_some() {
                 let a = format_ident!("acc_{}", at);
                 self.code
                     .extend(quote!(let #inertia_force = acc.#a * (-#mass);));
@@ -208,10 +207,8 @@ impl ForceEmitter<'_> {
                 _ => None,
             };
             if let Some(v) = &v_g {
-                if accelerates {
-                    self.power
-                        .push(quote!(::mechanism::geometry::dot(&#inertia_force, &#v)));
-                }
+                self.power
+                    .push(quote!(::mechanism::geometry::dot(&#inertia_force, &#v)));
                 if k.gravity.is_some() {
                     self.power
                         .push(quote!(::mechanism::geometry::dot(&#weight, &#v)));
