@@ -444,7 +444,7 @@ fn stiff_group_defeats_naive_elimination() {
 /// each quantity's largest magnitude over the turn. f32 rounds at 6e-8
 /// relative; the kinematics (sin/cos, the RPR and RRP closures, the
 /// accelerations) and two chained 6x6 solves amplify that by a few tens
-/// (measured: 1.9e-6), so the bound is 1e-5, about 80 f32 ulps; a term
+/// (measured: 2.1e-6), so the bound is 1e-5, about 80 f32 ulps; a term
 /// missing in one precision would be off by its full size, > 1e-2.
 #[test]
 fn shaper_forces_f32_against_f64() {
