@@ -376,7 +376,11 @@ fn opt_point(
 }
 
 /// Expands a valid, planned model.
-pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
+/// `readers`: the other generated code that reads position fields (the
+/// run-time `check()` and the `#[self_test]` tests), so that the position
+/// struct keeps, besides the outputs, exactly the fields some later code
+/// reads (`pos.NAME`).
+pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     let name = &model.name;
     let vis = &model.vis;
     let docs = &model.docs;
@@ -504,11 +508,41 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
     for (slide, _, _) in &out.slides {
         pos_out_fields.push((slide.clone(), quote!(T)));
     }
+    // The later analyses, generated first: the hidden fields of the
+    // position, velocity and acceleration structs are only those a later
+    // analysis (or `check()`, or the self-tests) reads (`pos.NAME`,
+    // `vel.NAME`, `acc.NAME`); the rest are locals and never stored.
+    let level = model.level;
+    let forces = (level >= Level::Forces).then(|| crate::kinetostatics::emit(model, plan, &moving));
+    let accel_rates = (level >= Level::Acceleration).then(|| emit_rates(&em, &moving, &out, true));
+    let vel_rates = (level >= Level::Velocity).then(|| emit_rates(&em, &moving, &out, false));
+    let mut later = String::from(readers);
+    if let Some((code, _, _)) = &vel_rates {
+        later.push_str(&code.to_string());
+    }
+    if let Some((code, _, _)) = &accel_rates {
+        later.push_str(&code.to_string());
+    }
+    if let Some(f) = &forces {
+        later.push_str(&f.methods.to_string());
+    }
+    let later: String = later.split_whitespace().collect();
+    let read_later = |scope: &str, field: &Ident| reads_field(&later, scope, &field.to_string());
     let out_names: BTreeSet<String> = pos_out_fields.iter().map(|(n, _)| n.to_string()).collect();
     let hidden_pos: Vec<&Ident> = pos_fields
         .iter()
-        .filter(|f| !out_names.contains(&f.to_string()))
+        .filter(|f| !out_names.contains(&f.to_string()) && read_later("pos", f))
         .collect();
+    // The inputs, kept when a later analysis reads them (a slider's position).
+    let keep_input = read_later("pos", &format_ident!("input"));
+    let (input_field, input_init) = if keep_input {
+        (
+            quote!(#[doc(hidden)] pub input: #input_ty<T>,),
+            quote!(input,),
+        )
+    } else {
+        (TokenStream::new(), TokenStream::new())
+    };
     let hidden_pos_types: Vec<TokenStream> = hidden_pos
         .iter()
         .map(|f| position_field_type(model, f))
@@ -516,7 +550,6 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
     let (pos_out_names, pos_out_types): (Vec<Ident>, Vec<TokenStream>) =
         pos_out_fields.iter().cloned().unzip();
 
-    let level = model.level;
     let pos_docs = output_docs(&out, 0);
     let vel_docs = output_docs(&out, 1);
     let acc_docs = output_docs(&out, 2);
@@ -572,8 +605,7 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
         #vis struct #position_ty<T: ::mechanism::Real = ::core::primitive::f64> {
             #(#[doc = #pos_docs] pub #pos_out_names: #pos_out_types,)*
             #(#[doc(hidden)] pub #hidden_pos: #hidden_pos_types,)*
-            #[doc(hidden)]
-            pub input: #input_ty<T>,
+            #input_field
         }
     });
     let pos_all: Vec<&Ident> = pos_out_names
@@ -590,7 +622,7 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
             let input = *input;
             #pos_code
             #pos_out_code
-            ::core::result::Result::Ok(#position_ty { #(#pos_all,)* input })
+            ::core::result::Result::Ok(#position_ty { #(#pos_all,)* #input_init })
         }
     });
     let marked: Vec<&Ident> = model
@@ -637,6 +669,11 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
                 }
             })
             .collect();
+        let cs_input = if keep_input {
+            quote!(let input = #input_ty { #(#copied,)* };)
+        } else {
+            TokenStream::new()
+        };
         let cs_doc = format!("Driver inputs of [`{name}`] for `position_cos_sin`: the cranks written `INPUT as cos_sin` take their angle as `(cos, sin)` (need not be unit: it is normalized), the other inputs as in [`{input_ty}`].");
         items.extend(quote! {
             #[doc = #cs_doc]
@@ -649,37 +686,22 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
         methods.extend(quote! {
             /// Solves the position analysis with the marked cranks' angles
             /// given as `(cos, sin)` (no sine or cosine is evaluated for
-            /// them; their link angle, if an output, is one `atan2`). The
-            /// returned position's recorded input holds 0 for those angles;
-            /// `velocity` and `acceleration` do not read it.
+            /// them; their link angle, if an output, is one `atan2`). Where
+            /// the position records the inputs (for a slider driver's rates),
+            /// the marked cranks' entries are 0: nothing reads them.
             #[inline]
             #[allow(non_snake_case, unused_variables)]
             pub fn position_cos_sin(&self, input: &#cs_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> {
                 let input_cs = *input;
-                let input = #input_ty { #(#copied,)* };
+                #cs_input
                 #cs_code
                 #cs_out
-                ::core::result::Result::Ok(#position_ty { #(#pos_all,)* input })
+                ::core::result::Result::Ok(#position_ty { #(#pos_all,)* #input_init })
             }
         });
     }
 
-    // The later analyses, generated first: the hidden fields of the velocity
-    // and acceleration structs are only those a later analysis reads
-    // (`vel.NAME`, `acc.NAME`); the rest are locals and never stored.
-    let forces = (level >= Level::Forces).then(|| crate::kinetostatics::emit(model, plan, &moving));
-    let accel_rates = (level >= Level::Acceleration).then(|| emit_rates(&em, &moving, &out, true));
-    let mut later = String::new();
-    if let Some((code, _, _)) = &accel_rates {
-        later.push_str(&code.to_string());
-    }
-    if let Some(f) = &forces {
-        later.push_str(&f.methods.to_string());
-    }
-    let later: String = later.split_whitespace().collect();
-    let read_later = |scope: &str, field: &Ident| reads_field(&later, scope, &field.to_string());
-    if level >= Level::Velocity {
-        let (code, fields, outs) = emit_rates(&em, &moving, &out, false);
+    if let Some((code, fields, outs)) = vel_rates {
         let fields: Vec<(Ident, TokenStream)> = fields
             .into_iter()
             .filter(|(n, _)| read_later("vel", n))

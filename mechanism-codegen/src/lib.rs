@@ -61,15 +61,26 @@ pub fn expand(input: TokenStream) -> TokenStream {
     if !errors.is_empty() {
         return emit::emit_stub(&model, errors);
     }
-    let mut out = emit::emit(&model, &plan);
     let check = check::emit_check(&model, &plan, &inputs, &findings.summary);
+    let self_tests = model
+        .checks
+        .self_test
+        .map(|_| self_test::emit(&model, &plan, &inputs, &allowed, &findings));
+    // The position struct keeps the fields these read (`pos.NAME`).
+    let readers = format!(
+        "{} {}",
+        check,
+        self_tests
+            .as_ref()
+            .map(|t| t.to_string())
+            .unwrap_or_default()
+    );
+    let mut out = emit::emit(&model, &plan, &readers);
     let name = &model.name;
     out.extend(quote::quote! {
         impl<T: ::mechanism::Real> #name<T> { #check }
     });
     out.extend(findings.warnings.clone());
-    if model.checks.self_test.is_some() {
-        out.extend(self_test::emit(&model, &plan, &inputs, &allowed, &findings));
-    }
+    out.extend(self_tests);
     out
 }

@@ -109,6 +109,19 @@ pub fn unit<T: Real>(angle: T) -> Vector2<T> {
     Vector2::new(c, s)
 }
 
+/// Whether every value of `xs` is finite: the one test each primitive makes
+/// of its results on the ordinary path (a non-finite input reaches them).
+///
+/// `is_finite` on each value: it compiles to integer operations on the bits,
+/// which run beside the floating-point work. A float-only form (the sum of
+/// `x * 0` is zero exactly when every `x` is finite) executes fewer
+/// instructions but competes for the floating-point units: on the x86-64
+/// development machine it made the four-bar's solve 5 to 9 % slower.
+#[inline(always)]
+pub fn all_finite<T: Real, const N: usize>(xs: [T; N]) -> bool {
+    xs.iter().all(|x| x.finite())
+}
+
 /// Returns `Err(NonFinite)` unless `x` is finite.
 #[inline(always)]
 pub fn finite<T: Real>(x: T, primitive: Primitive, what: &'static str) -> Result<T, Error> {
@@ -176,7 +189,9 @@ pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, E
     // `scale > 0` too: a scale that underflowed to zero (columns shorter than
     // about 1e-154 in f64) would otherwise pass any nonzero `det` and give an
     // infinite condition.
-    if det.finite() && scale.finite() && scale > T::zero() && abs(det) > threshold {
+    // `abs(det) > threshold` is false for a NaN `det` or a NaN or infinite
+    // `scale`; an infinite `det` with a finite scale is left to `all_finite`.
+    if abs(det) > threshold && scale > T::zero() && all_finite([det]) {
         Ok(det)
     } else {
         Err(Error::new(

@@ -27,7 +27,8 @@
 //! magnitude is a local minimum (no sign change), and could reach zero if the
 //! determinant is V-shaped there (`f1 - max(f0 - f1, f2 - f1)` below the
 //! threshold), is refined by a golden-section search, and counts as singular
-//! when the minimum is below `Tolerances::singular`. (For the groups with an assembly mode the
+//! when the minimum is below `Tolerances::singular`; positions found within a
+//! sample step of each other count once. (For the groups with an assembly mode the
 //! determinant keeps its sign and touches zero at a toggle, so the minimum
 //! test is the one that finds them.)
 //!
@@ -189,6 +190,20 @@ pub fn sweep_1d<const G: usize>(
         return;
     }
     let step = width / n as f64;
+    // One singular position per group per sample step: where the scaled
+    // determinant is at rounding level (a clamped toggle) a sample can take
+    // either sign, and the sign-change bisection and the minimum search may
+    // then both find the same position.
+    let mut last_singular = [f64::NAN; G];
+    let mut report = |e: Event<1>| {
+        if let Event::Singular { group, at, .. } = &e {
+            if abs(at[0] - last_singular[*group]) < step {
+                return;
+            }
+            last_singular[*group] = at[0];
+        }
+        report(e)
+    };
     let at = |i: usize| {
         if i == n {
             range.hi

@@ -6,8 +6,8 @@
 //! has `(cos theta, sin theta)` (an encoder often does), [`position_cos_sin`]
 //! skips the trigonometry.
 
-use crate::error::{Error, Primitive};
-use crate::geometry::{finite, finite_point, finite_vec, plus, positive};
+use crate::error::{Error, Fault, Primitive};
+use crate::geometry::{all_finite, finite_vec, plus, positive};
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -35,10 +35,10 @@ pub fn position<T: Real>(
     length: T,
     theta: T,
 ) -> Result<CrankPosition<T>, Error> {
-    let theta = finite(theta, P, "crank angle")?;
-    // In the scalar's own precision (f32 stays f32: see `crate::trig`).
+    // In the scalar's own precision (f32 stays f32: see `crate::trig`). A
+    // non-finite angle gives NaN here, caught by `place`'s one test.
     let (sin, cos) = theta.sin_cos_kernel();
-    place(pivot, length, Vector2::new(cos, sin))
+    place(pivot, length, Vector2::new(cos, sin), theta.finite())
 }
 
 /// A crank angle given by its cosine and sine (as an encoder or a resolver
@@ -66,19 +66,47 @@ pub fn position_cos_sin<T: Real>(
 ) -> Result<CrankPosition<T>, Error> {
     let v = finite_vec(Vector2::new(cos, sin), P, "crank (cos, sin)")?;
     let norm = positive(crate::geometry::length(&v), P, "crank |(cos, sin)|")?;
-    place(pivot, length, v / norm)
+    place(pivot, length, v / norm, true)
 }
 
+/// The crank at unit `axis`: two comparisons on the ordinary path (a
+/// positive length, a finite tip); a non-finite angle, length or pivot makes
+/// the tip non-finite and is told apart on the cold path.
+/// `angle_finite` is evaluated lazily by the optimizer (only the error path
+/// reads it).
 #[inline(always)]
 fn place<T: Real>(
     pivot: &Point2<T>,
     length: T,
     axis: Vector2<T>,
+    angle_finite: bool,
 ) -> Result<CrankPosition<T>, Error> {
-    let length = positive(length, P, "crank length")?;
     let r = axis * length;
-    let tip = finite_point(pivot + r, P, "crank tip")?;
-    Ok(CrankPosition { tip, r, axis })
+    let tip = pivot + r;
+    if length > T::zero() && all_finite([tip.x, tip.y]) {
+        Ok(CrankPosition { tip, r, axis })
+    } else {
+        Err(bad_placement(length, angle_finite))
+    }
+}
+
+/// Why [`place`] failed, in the order of the doc comments: the angle, then
+/// the length, then the tip (a non-finite pivot or an overflow).
+#[cold]
+#[inline(never)]
+fn bad_placement<T: Real>(length: T, angle_finite: bool) -> Error {
+    if !angle_finite {
+        return Error::new(
+            P,
+            Fault::NonFinite {
+                what: "crank angle",
+            },
+        );
+    }
+    match positive(length, P, "crank length") {
+        Err(e) => e,
+        Ok(_) => Error::new(P, Fault::NonFinite { what: "crank tip" }),
+    }
 }
 
 /// Velocity of the tip (L/s): `v_pivot + omega perp(r)`; `v_pivot = None`
@@ -125,10 +153,10 @@ fn checked<T: Real>(
     input: &'static str,
     result: &'static str,
 ) -> Result<Vector2<T>, Error> {
-    if v.x.finite() && v.y.finite() {
+    if all_finite([v.x, v.y]) {
         Ok(v)
     } else {
         let what = if inputs_finite { result } else { input };
-        Err(Error::new(P, crate::error::Fault::NonFinite { what }))
+        Err(Error::new(P, Fault::NonFinite { what }))
     }
 }

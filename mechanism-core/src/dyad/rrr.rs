@@ -8,11 +8,21 @@
 //!          A ---- B
 //! ```
 //!
-//! Position uses the law of cosines in vector form (no trigonometry): with
-//! `d = B - A`, the foot of `C` on `AB` is at `a = (l1^2 - l2^2 + |d|^2) / (2|d|)`
-//! from `A`, and the height is `h = 2 * area / |d|`, the area from Heron's
-//! formula in the factored form `(l1+l2+d)(l1+l2-d)(d+l1-l2)(d-l1+l2)`, which
-//! loses no digits to cancellation near the edge of assembly.
+//! Position uses the law of cosines in vector form on squared lengths (no
+//! trigonometry, one square root): with `d = B - A` and `D = |d|^2`, the foot
+//! of `C` on `AB` is at `k / (2 sqrt D)` from `A`, `k = l1^2 - l2^2 + D =
+//! (l1 - l2)(l1 + l2) + D`, and the height is `sqrt(16 area^2) / (2 sqrt D)`,
+//! Heron's formula as `16 area^2 = ((l1+l2)^2 - D) (D - (l1-l2)^2)`: each
+//! factor is the difference of two quantities known to a rounding or two,
+//! clamped at zero inside the rounding band, so the group never returns NaN
+//! where it assembles (the textbook `sqrt(l1^2 - a^2)` does, one ulp inside
+//! the edge). Near the edge the height's relative error grows as
+//! `eps / delta` (`delta` the relative distance to the edge), which is the
+//! conditioning of the problem itself for inputs known to an ulp: the same
+//! as the form with `l1 + l2 - |d|`, one square root more
+//! (`tests/stability/assembly.rs`). Both lengths lie along `d / sqrt D`, so
+//! `r1 = C - A = (k d + s sqrt(16 area^2) perp(d)) / (2 D)`, `s = +-1` the
+//! mode: no normalized vector, one reciprocal.
 //!
 //! Rates: differentiating `A + r1 = B + r2` (with `r1 = C - A`, `r2 = C - B`)
 //! gives `w1 perp(r1) - w2 perp(r2) = vB - vA`; dotting with `r2` and `r1`
@@ -22,8 +32,8 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, check_det, check_det_sq, cross, difference, dot, finite_point, finite_vec, length, min,
-    perp, plus, positive,
+    abs, all_finite, check_det, cross, difference, dot, finite_vec, length, min, perp, plus,
+    positive,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -59,6 +69,10 @@ pub struct RrrVelocity<T: Real> {
     /// most (`docs/stability.md`). The same number governs the accelerations (same
     /// matrix).
     pub condition: T,
+    /// `1 / cross(r1, r2)` at the position these rates were computed at
+    /// (1/L^2): [`acceleration`] has the same matrix and reuses it, so it
+    /// neither recomputes nor re-checks the determinant.
+    pub inv_det: T,
 }
 
 /// Angular accelerations of the two links and the acceleration of `C`.
@@ -77,10 +91,10 @@ pub struct RrrAcceleration<T: Real> {
 ///
 /// Errors: `NonPositive` for `l1` or `l2 <= 0`; `NonFinite` for non-finite
 /// points; `CannotAssemble` when `|B - A|` lies outside `[|l1 - l2|, l1 + l2]`
-/// by more than `4 eps (l1 + l2)` (inside that rounding band the joint is put on
-/// the line, `h = 0`); `Singular` when `A` and `B` coincide (the direction of
+/// by more than `4 eps (l1 + l2)` (inside that rounding band the joint is put
+/// on the line, `h = 0`); `Singular` when `A` and `B` coincide (the direction of
 /// the line is undefined).
-#[inline]
+#[inline(always)]
 pub fn position<T: Real>(
     a: &Point2<T>,
     l1: T,
@@ -88,59 +102,87 @@ pub fn position<T: Real>(
     l2: T,
     mode: Mode,
 ) -> Result<RrrPosition<T>, Error> {
-    let l1 = positive(l1, P, "RRR length l1")?;
-    let l2 = positive(l2, P, "RRR length l2")?;
-    let d = finite_vec(b - a, P, "RRR joint distance")?;
-    let dist = length(&d);
+    let d = b - a;
+    let dsq = dot(&d, &d);
     let sum = l1 + l2;
-    // Also catches NaN (dist was checked finite, but stay defensive).
-    if dist.partial_cmp(&T::zero()) != Some(core::cmp::Ordering::Greater) {
-        return Err(Error::new(
+    let diff = l1 - l2;
+    // The ordinary case in three comparisons (NaN fails each); anything else
+    // is sorted out on the cold path, in the order of the doc comment.
+    if !(l1 > T::zero() && l2 > T::zero() && dsq > T::zero()) {
+        return Err(bad_input(&d, l1, l2).unwrap_or(Error::new(
             P,
             Fault::Singular {
                 det: 0.0,
                 scale: sum.as_f64(),
             },
-        ));
+        )));
     }
-    // Heron's factors; each negative one means the triangle does not close.
-    let outer = sum - dist; // < 0: too far apart
-    let inner1 = dist + l1 - l2; // < 0: l2 too long
-    let inner2 = dist - l1 + l2; // < 0: l1 too long
-    let band = T::lit(4.0) * T::eps() * sum;
-    let inner = min(inner1, inner2);
-    if min(outer, inner) < -band {
+    // Heron's factors; a negative one means the triangle does not close.
+    let outer = sum * sum - dsq; // < 0: too far apart
+    let inner = dsq - diff * diff; // < 0: one link too long
+                                   // The band `4 eps (l1 + l2)` on `|d|`, to first order on `D`: `D` moves
+                                   // by `2 |d| delta` when `|d|` moves by `delta`, and `|d|` is `l1 + l2` or
+                                   // `|l1 - l2|` at the two edges.
+    let band = T::lit(8.0) * T::eps() * sum;
+    if outer < -(band * sum) || inner < -(band * abs(diff)) {
+        return Err(cannot_assemble(&d, l1, l2));
+    }
+    let clamp = |x: T| if x < T::zero() { T::zero() } else { x };
+    // sqrt(16 area^2) = 4 area, signed by the mode.
+    let height = mode.sign::<T>() * (clamp(outer) * clamp(inner)).sqrt_kernel();
+    let along = diff * sum + dsq;
+    // The reciprocal runs beside the square root (one rounding more than two
+    // divisions, off the critical path).
+    let inv_2dsq = T::one() / (T::lit(2.0) * dsq);
+    let r1 = (d * along + perp(&d) * height) * inv_2dsq;
+    let c = a + r1;
+    // One test for every non-finite input that got this far (an infinite
+    // length or coordinate makes `c` NaN or infinite) and for overflow.
+    if !all_finite([c.x, c.y]) {
+        return Err(bad_input(&d, l1, l2).unwrap_or(Error::new(
+            P,
+            Fault::NonFinite {
+                what: "RRR joint C",
+            },
+        )));
+    }
+    Ok(RrrPosition { c, r1, r2: c - b })
+}
+
+/// The input error of a [`position`] call, if its inputs are bad: `l1`, then
+/// `l2` not positive or not finite, then `B - A` not finite (cold path).
+#[cold]
+#[inline(never)]
+fn bad_input<T: Real>(d: &Vector2<T>, l1: T, l2: T) -> Option<Error> {
+    positive(l1, P, "RRR length l1")
+        .and(positive(l2, P, "RRR length l2"))
+        .and(finite_vec(*d, P, "RRR joint distance"))
+        .err()
+}
+
+/// The error of a [`position`] call whose triangle does not close by more
+/// than the rounding band: `CannotAssemble` with the miss (L) and the
+/// violated reach, unless an input is bad (an infinite `B - A` also lands
+/// here).
+#[cold]
+#[inline(never)]
+fn cannot_assemble<T: Real>(d: &Vector2<T>, l1: T, l2: T) -> Error {
+    bad_input(d, l1, l2).unwrap_or_else(|| {
+        let dist = length(d);
+        let (outer, inner) = (l1 + l2 - dist, dist - abs(l1 - l2));
         let (miss, reach) = if outer <= inner {
-            (-outer, sum)
+            (-outer, l1 + l2)
         } else {
             (-inner, abs(l1 - l2))
         };
-        return Err(Error::new(
+        Error::new(
             P,
             Fault::CannotAssemble {
                 miss: miss.as_f64(),
                 reach: reach.as_f64(),
             },
-        ));
-    }
-    let clamp = |x: T| if x < T::zero() { T::zero() } else { x };
-    // 16 area^2 = (l1+l2+d)(l1+l2-d)(d+l1-l2)(d-l1+l2); h = 2 area / d.
-    let area16 = (sum + dist) * clamp(outer) * clamp(inner1) * clamp(inner2);
-    let h = area16.sqrt_kernel() / (T::lit(2.0) * dist);
-    // Foot of C on AB, from A: (l1^2 - l2^2 + d^2) / (2d) = ((l1-l2)(l1+l2) + d^2) / (2d).
-    let along = ((l1 - l2) * sum + dist * dist) / (T::lit(2.0) * dist);
-    let e = d / dist;
-    let r1 = e * along + perp(&e) * (mode.sign::<T>() * h);
-    let c = finite_point(a + r1, P, "RRR joint C")?;
-    Ok(RrrPosition { c, r1, r2: c - b })
-}
-
-/// The rate system's determinant `cross(r1, r2)`, checked in squared form (no
-/// square roots: the squared scale is `|r1|^2 |r2|^2`).
-#[inline(always)]
-fn determinant<T: Real>(pos: &RrrPosition<T>) -> Result<T, Error> {
-    let scale_sq = dot(&pos.r1, &pos.r1) * dot(&pos.r2, &pos.r2);
-    check_det_sq(cross(&pos.r1, &pos.r2), scale_sq, P)
+        )
+    })
 }
 
 /// Rates of the group from the velocities of `A` and `B` (L/s); `None` means
@@ -192,19 +234,21 @@ fn rates<T: Real>(
 ) -> Result<RrrVelocity<T>, Error> {
     let det = check_det(cross(&pos.r1, &pos.r2), scale, P)?;
     let condition = min(abs(det) / scale, T::one());
+    let inv_det = T::one() / det;
     let dv = difference(vb, va);
-    let omega1 = dot(&dv, &pos.r2) / det;
-    let omega2 = dot(&dv, &pos.r1) / det;
+    let omega1 = dot(&dv, &pos.r2) * inv_det;
+    let omega2 = dot(&dv, &pos.r1) * inv_det;
     let vc = plus(va, relative_velocity(&pos.r1, omega1));
     // One check for the results: a non-finite `va`, `vb` (so `dv`) makes
     // `omega1` non-finite (`r2 != 0`), and with it `vc` (`r1 != 0`, and
     // `va` enters `vc` directly); `omega2` covers `dv` through `r1`.
-    if omega2.finite() && vc.x.finite() && vc.y.finite() {
+    if all_finite([omega2, vc.x, vc.y]) {
         Ok(RrrVelocity {
             omega1,
             omega2,
             vc,
             condition,
+            inv_det,
         })
     } else {
         Err(Error::new(
@@ -224,8 +268,11 @@ fn rates<T: Real>(
 /// `None`: fixed) and the rates.
 ///
 /// Differentiating once more: `alpha1 perp(r1) - alpha2 perp(r2) =
-/// aB - aA + omega1^2 r1 - omega2^2 r2`, the same matrix as for the rates.
-/// Errors as for [`velocity`].
+/// aB - aA + omega1^2 r1 - omega2^2 r2`, the same matrix as for the rates,
+/// whose inverse determinant `vel.inv_det` is reused: `vel` must be the
+/// result of [`velocity`] or [`velocity_lengths`] at this `pos` (which
+/// checked the matrix; it is not re-checked here).
+/// Errors: `NonFinite` for a non-finite input or an overflow.
 #[inline]
 pub fn acceleration<T: Real>(
     pos: &RrrPosition<T>,
@@ -233,15 +280,14 @@ pub fn acceleration<T: Real>(
     aa: Option<&Vector2<T>>,
     ab: Option<&Vector2<T>>,
 ) -> Result<RrrAcceleration<T>, Error> {
-    let det = determinant(pos)?;
     let da = difference(ab, aa);
     let w = da + pos.r1 * (vel.omega1 * vel.omega1) - pos.r2 * (vel.omega2 * vel.omega2);
-    let alpha1 = dot(&w, &pos.r2) / det;
-    let alpha2 = dot(&w, &pos.r1) / det;
+    let alpha1 = dot(&w, &pos.r2) * vel.inv_det;
+    let alpha2 = dot(&w, &pos.r1) * vel.inv_det;
     let ac = plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1));
     // One check, as in `velocity_lengths`: `w` (so `aa`, `ab` and the rates)
     // propagates into `alpha1`, `ac` and `alpha2`.
-    if alpha2.finite() && ac.x.finite() && ac.y.finite() {
+    if all_finite([alpha2, ac.x, ac.y]) {
         Ok(RrrAcceleration { alpha1, alpha2, ac })
     } else {
         Err(Error::new(
