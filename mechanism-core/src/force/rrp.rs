@@ -18,7 +18,7 @@
 
 use crate::error::{Error, Primitive};
 use crate::force::body::Wrench;
-use crate::force::group::{self, unit_direction, Connection, Joint, Pair};
+use crate::force::group::{self, unit_direction, Pair};
 use crate::force::PrismaticReaction;
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -54,22 +54,15 @@ pub fn reactions<T: Real>(
     load2: &Wrench<T>,
 ) -> Result<RrpReactions<T>, Error> {
     let dir = unit_direction(dir, P, "RRP guide direction")?;
-    let joints = [
-        Joint {
-            pair: Pair::Revolute { point: *a },
-            connection: Connection::OutsideToLink1,
-        },
-        Joint {
-            pair: Pair::Revolute { point: *c },
-            connection: Connection::Link1ToLink2,
-        },
-        Joint {
-            pair: Pair::Prismatic { point: *c, dir },
-            connection: Connection::OutsideToLink2,
-        },
-    ];
-    let s = group::solve(&joints, c, load1, load2, P)?;
-    let [[ax, ay], [cx, cy], [n, m]] = s.unknowns;
+    let s = group::solve_inner_revolute(
+        &Pair::Revolute { point: *a },
+        &Pair::Prismatic { point: *c, dir },
+        c,
+        load1,
+        load2,
+        P,
+    )?;
+    let [[ax, ay], [n, m], [cx, cy]] = s.unknowns;
     Ok(RrpReactions {
         a: Vector2::new(ax, ay),
         c: Vector2::new(cx, cy),

@@ -19,7 +19,7 @@
 
 use crate::error::{Error, Primitive};
 use crate::force::body::Wrench;
-use crate::force::group::{self, Connection, Joint, Pair};
+use crate::force::group::{self, Pair};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
 
@@ -53,21 +53,14 @@ pub fn reactions<T: Real>(
     load1: &Wrench<T>,
     load2: &Wrench<T>,
 ) -> Result<RrrReactions<T>, Error> {
-    let joints = [
-        Joint {
-            pair: Pair::Revolute { point: *a },
-            connection: Connection::OutsideToLink1,
-        },
-        Joint {
-            pair: Pair::Revolute { point: *b },
-            connection: Connection::OutsideToLink2,
-        },
-        Joint {
-            pair: Pair::Revolute { point: *c },
-            connection: Connection::Link1ToLink2,
-        },
-    ];
-    let s = group::solve(&joints, c, load1, load2, P)?;
+    let s = group::solve_inner_revolute(
+        &Pair::Revolute { point: *a },
+        &Pair::Revolute { point: *b },
+        c,
+        load1,
+        load2,
+        P,
+    )?;
     let [[ax, ay], [bx, by], [cx, cy]] = s.unknowns;
     Ok(RrrReactions {
         a: Vector2::new(ax, ay),
