@@ -118,15 +118,15 @@ fn back_substitute<T: Real, const N: usize>(u: &[[T; N]; N], y: &[T; N]) -> [T; 
 /// same order: `x_k` needs only `y_k` and the `x_j`, `j > k`, already stored).
 #[inline]
 fn back_substitute_in_place<T: Real, const N: usize>(u: &[[T; N]; N], y: &mut [T; N]) {
+    // Index loops (every index is below `N` by its range): the iterator form
+    // (`skip` on a `zip`) compiles to a slower loop at `opt-level = "s"`.
     for k in (0..N).rev() {
         let row = &u[k];
-        let (head, tail) = y.split_at_mut(k + 1);
-        let rest = row
-            .iter()
-            .skip(k + 1)
-            .zip(tail.iter())
-            .fold(head[k], |acc, (&ukj, &xj)| acc - ukj * xj);
-        head[k] = rest / row[k];
+        let mut acc = y[k];
+        for j in k + 1..N {
+            acc -= row[j] * y[j];
+        }
+        y[k] = acc / row[k];
     }
 }
 
@@ -218,6 +218,9 @@ pub fn solve_in_place<T: Real, const N: usize>(
         // bounds checks of the exchange (no panic path: see tests/no_panic).
         let p = if p < N { p } else { k };
         if p != k {
+            // Two rows of the same array: indices are the plain way (every
+            // one is below `N`).
+            #[allow(clippy::needless_range_loop)]
             for j in k..N {
                 let t = a[k][j];
                 a[k][j] = a[p][j];
@@ -253,8 +256,8 @@ pub fn solve_in_place<T: Real, const N: usize>(
             let e = row[k];
             if e != T::zero() {
                 let m = e / pivot;
-                for (v, &pv) in row.iter_mut().zip(pivot_row.iter()).skip(k + 1) {
-                    *v -= m * pv;
+                for j in k + 1..N {
+                    row[j] -= m * pivot_row[j];
                 }
                 *bi -= m * bk;
             }
