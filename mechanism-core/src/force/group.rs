@@ -23,7 +23,9 @@
 //!
 //! This is the textbook formulation (Artobolevsky; seed 003 writes the same
 //! equations for an RRR group, though it eliminates the inner joint by hand and
-//! keeps four); here the elimination is left to [`crate::linsolve::solve`].
+//! keeps four); here the elimination is left to [`crate::linsolve`]: all of it
+//! in [`solve`], all but the inner joint's exact step in
+//! [`solve_inner_revolute`].
 
 use crate::error::{Error, Fault, Primitive};
 use crate::force::body::Wrench;

@@ -35,7 +35,8 @@ pub struct PrpReactions<T: Real> {
     pub guide2: PrismaticReaction<T>,
     /// Force of link 1 on link 2 at `C` (link 1 receives `-c`).
     pub c: Vector2<T>,
-    /// Conditioning indicator, see [`crate::linsolve::Solution::min_pivot_ratio`].
+    /// Conditioning indicator: [`crate::linsolve::Solution::min_pivot_ratio`] of
+    /// the reduced 4x4 system of [`crate::force::group::solve_inner_revolute`].
     pub min_pivot_ratio: T,
 }
 

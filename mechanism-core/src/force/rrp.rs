@@ -35,7 +35,8 @@ pub struct RrpReactions<T: Real> {
     /// Reaction of the guide (outside body) on the block: normal force along
     /// `perp(dir)` through `C`, couple about `C`.
     pub guide: PrismaticReaction<T>,
-    /// Conditioning indicator, see [`crate::linsolve::Solution::min_pivot_ratio`].
+    /// Conditioning indicator: [`crate::linsolve::Solution::min_pivot_ratio`] of
+    /// the reduced 4x4 system of [`crate::force::group::solve_inner_revolute`].
     pub min_pivot_ratio: T,
 }
 
