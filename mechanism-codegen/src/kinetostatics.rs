@@ -483,9 +483,10 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
     }
     let condition = match conditions.split_first() {
         None => lit(1.0),
-        Some((first, rest)) => rest
-            .iter()
-            .fold(first.clone(), |acc, c| quote!((#acc).min(#c))),
+        Some((first, rest)) => rest.iter().fold(
+            first.clone(),
+            |acc, c| quote!(::mechanism::geometry::min(#acc, #c)),
+        ),
     };
     let terms: Vec<Ident> = (0..em.power.len())
         .map(|k| format_ident!("pw_{}", k))
@@ -501,14 +502,14 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
             },
             |acc, t| quote!(#acc + #t),
         );
-        let first = &terms[0];
-        let scale = terms.iter().skip(1).fold(
-            quote!(::mechanism::geometry::abs(#first)),
-            |acc, t| quote!((#acc).max(::mechanism::geometry::abs(#t))),
-        );
+        // The largest |term| by comparisons (`RealField::max` would call
+        // libm's `fmaxf`, about 20 instructions a call on a Cortex-M4F); a
+        // NaN term is skipped, as `max` skips it, and shows in the sum.
         quote! {{
             #(let #terms = #power_exprs;)*
-            let pw_scale = #scale;
+            let pw_scale = [#(::mechanism::geometry::abs(#terms)),*]
+                .into_iter()
+                .fold(<T as ::mechanism::Real>::lit(0.0), |m, a| if a > m { a } else { m });
             if pw_scale > <T as ::mechanism::Real>::lit(0.0) {
                 ::mechanism::geometry::abs(#sum) / pw_scale
             } else {

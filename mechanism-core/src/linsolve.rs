@@ -109,24 +109,33 @@ fn row_max<T: Real>(row: &[T]) -> T {
 /// are ignored): `x_k = (y_k - sum_{j>k} u_kj x_j) / u_kk`.
 #[inline]
 fn back_substitute<T: Real, const N: usize>(u: &[[T; N]; N], y: &[T; N]) -> [T; N] {
-    let mut x = [T::zero(); N];
+    let mut x = *y;
+    back_substitute_in_place(u, &mut x);
+    x
+}
+
+/// [`back_substitute`] overwriting `y` with `x` (the same operations in the
+/// same order: `x_k` needs only `y_k` and the `x_j`, `j > k`, already stored).
+#[inline]
+fn back_substitute_in_place<T: Real, const N: usize>(u: &[[T; N]; N], y: &mut [T; N]) {
+    // Index loops (every index is below `N` by its range): the iterator form
+    // (`skip` on a `zip`) compiles to a slower loop at `opt-level = "s"`.
     for k in (0..N).rev() {
         let row = &u[k];
-        let rest = row
-            .iter()
-            .zip(x.iter())
-            .skip(k + 1)
-            .fold(y[k], |acc, (&ukj, &xj)| acc - ukj * xj);
-        x[k] = rest / row[k];
+        let mut acc = y[k];
+        for j in k + 1..N {
+            acc -= row[j] * y[j];
+        }
+        y[k] = acc / row[k];
     }
-    x
 }
 
 /// Solves `A x = b` (`a[i][j]` is row `i`, column `j`) by Gaussian elimination
 /// with row equilibration and partial pivoting; see the module documentation.
 ///
 /// Cost: about `2 N^3 / 3` multiply-adds plus `N^2` divisions for the scaling;
-/// everything lives on the stack (`a` and `b` are taken by value).
+/// everything lives on the stack (`a` and `b` are taken by value). The work is
+/// [`solve_in_place`]'s, which this wraps; the two give identical results.
 ///
 /// Errors (with [`Primitive::LinearSystem`]):
 /// - `NonFinite { what: "linear system input" }` when any entry of `a` or `b`
@@ -139,11 +148,34 @@ fn back_substitute<T: Real, const N: usize>(u: &[[T; N]; N], y: &[T; N]) -> [T; 
 ///   `det / scale` is the relative pivot;
 /// - `NonFinite { what: "linear system solution" }` when the solution
 ///   overflows.
+#[inline]
 pub fn solve<T: Real, const N: usize>(
     mut a: [[T; N]; N],
     mut b: [T; N],
 ) -> Result<Solution<T, N>, Error> {
-    check_input(&a, &b)?;
+    let min_pivot_ratio = solve_in_place(&mut a, &mut b)?;
+    Ok(Solution {
+        x: b,
+        min_pivot_ratio,
+    })
+}
+
+/// [`solve`] without moving arrays: eliminates in `a` and `b` where they are
+/// and leaves the solution `x` in `b`; returns
+/// [`Solution::min_pivot_ratio`]. On return `a` holds the row-equilibrated,
+/// row-permuted upper-triangular factor on and above its diagonal and
+/// unspecified values below it; `b` is unspecified after an error.
+///
+/// Rows are exchanged element by element, and only in the columns still
+/// active (`k..N` at step `k`; the columns before are eliminated and never
+/// read again), so the elimination moves no whole rows or arrays. Errors and
+/// results: those of [`solve`], bit for bit.
+#[inline]
+pub fn solve_in_place<T: Real, const N: usize>(
+    a: &mut [[T; N]; N],
+    b: &mut [T; N],
+) -> Result<T, Error> {
+    check_input(a, b)?;
 
     // Row equilibration; `scale[i]` travels with row `i` through the swaps.
     let mut scale = [T::zero(); N];
@@ -183,11 +215,20 @@ pub fn solve<T: Real, const N: usize>(
                 }
             });
         // p is in k..N by construction; saying so lets the optimizer drop the
-        // bounds checks of the swaps (no panic path: see tests/no_panic).
+        // bounds checks of the exchange (no panic path: see tests/no_panic).
         let p = if p < N { p } else { k };
-        a.swap(k, p);
-        b.swap(k, p);
-        scale.swap(k, p);
+        if p != k {
+            // Two rows of the same array: indices are the plain way (every
+            // one is below `N`).
+            #[allow(clippy::needless_range_loop)]
+            for j in k..N {
+                let t = a[k][j];
+                a[k][j] = a[p][j];
+                a[p][j] = t;
+            }
+            b.swap(k, p);
+            scale.swap(k, p);
+        }
         let pivot = a[k][k];
         if best < min_pivot_ratio {
             min_pivot_ratio = best;
@@ -203,22 +244,37 @@ pub fn solve<T: Real, const N: usize>(
                 },
             ));
         }
-        let pivot_row = a[k];
-        let bk = b[k];
-        for (row, bi) in a.iter_mut().zip(b.iter_mut()).skip(k + 1) {
-            let m = row[k] / pivot;
-            if m != T::zero() {
-                for (v, &pv) in row.iter_mut().zip(pivot_row.iter()).skip(k + 1) {
-                    *v -= m * pv;
+        // The pivot row is read in place (rows `..=k`), the rows below are
+        // updated (rows `k + 1..`); a zero entry below the pivot (frequent:
+        // the kinetostatic systems are sparse) skips its row.
+        let (upper, lower) = a.split_at_mut(k + 1);
+        let (b_upper, b_lower) = b.split_at_mut(k + 1);
+        let (Some(pivot_row), Some(&bk)) = (upper.last(), b_upper.last()) else {
+            continue;
+        };
+        for (row, bi) in lower.iter_mut().zip(b_lower.iter_mut()) {
+            let e = row[k];
+            if e != T::zero() {
+                let m = e / pivot;
+                for j in k + 1..N {
+                    row[j] -= m * pivot_row[j];
                 }
                 *bi -= m * bk;
             }
-            row[k] = T::zero();
         }
     }
 
-    let x = check_output(back_substitute(&a, &b))?;
-    Ok(Solution { x, min_pivot_ratio })
+    back_substitute_in_place(a, b);
+    if b.iter().all(|v| v.finite()) {
+        Ok(min_pivot_ratio)
+    } else {
+        Err(Error::new(
+            P,
+            Fault::NonFinite {
+                what: "linear system solution",
+            },
+        ))
+    }
 }
 
 /// REFERENCE ONLY, DO NOT USE: naive Gaussian elimination with neither

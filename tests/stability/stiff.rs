@@ -137,8 +137,16 @@ pub fn stiff_case(angle: f64) -> StiffCase {
         .ok()
         .filter(|x| x.iter().all(|v| v.is_finite()));
     let pivoted = solve_pivoted_unscaled(sys.matrix, sys.rhs);
-    // Sanity: the core's own solve on the assembled system is the same.
-    debug_assert_eq!(solve(sys.matrix, sys.rhs).map(|s| s.x).ok(), Some(ours));
+    // Sanity: the core's general 6x6 solve on the assembled system is as
+    // accurate as the group's own (`force::rrr` eliminates the inner joint
+    // exactly and solves the remaining 4x4, so the two round differently;
+    // `ours` is held to 8 eps by the sweep below, and so is this).
+    let general = solve(sys.matrix, sys.rhs).expect("regular pose").x;
+    assert!(
+        err(&general) <= 8.0 * EPS,
+        "general solve: {:e}",
+        err(&general)
+    );
     StiffCase {
         angle,
         min_pivot_ratio: r.min_pivot_ratio,

@@ -23,14 +23,15 @@
 //!
 //! This is the textbook formulation (Artobolevsky; seed 003 writes the same
 //! equations for an RRR group, though it eliminates the inner joint by hand and
-//! keeps four); here the elimination is left to [`crate::linsolve::solve`].
+//! keeps four); here the elimination is left to [`crate::linsolve`]: all of it
+//! in [`solve`], all but the inner joint's exact step in
+//! [`solve_inner_revolute`].
 
 use crate::error::{Error, Fault, Primitive};
 use crate::force::body::Wrench;
 use crate::geometry::{cross, length, perp};
 use crate::linsolve;
 use crate::scalar::Real;
-use core::array::from_fn;
 use nalgebra::{Point2, Vector2};
 
 /// Which two bodies a joint connects, in the order "giver -> receiver": the
@@ -153,6 +154,25 @@ fn signs<T: Real>(connection: Connection) -> [T; 2] {
     }
 }
 
+/// `L` of [`GroupSystem::couple_scale`]: the largest distance from `about` to
+/// one of `points`, or 1 when all coincide with it.
+#[inline(always)]
+fn couple_scale_of<T: Real>(points: &[Point2<T>], about: &Point2<T>) -> T {
+    let reach = points.iter().fold(T::zero(), |m, p| {
+        let d = length(&(p - about));
+        if d > m {
+            d
+        } else {
+            m
+        }
+    });
+    if reach > T::zero() {
+        reach
+    } else {
+        T::one()
+    }
+}
+
 /// Builds the system; `load1`, `load2` are the known loads on links 1 and 2
 /// as wrenches about `about` (the same point for both).
 pub fn assemble<T: Real>(
@@ -161,28 +181,23 @@ pub fn assemble<T: Real>(
     load1: &Wrench<T>,
     load2: &Wrench<T>,
 ) -> GroupSystem<T> {
-    let reach = joints.iter().fold(T::zero(), |m, j| {
-        let d = length(&(point_of(&j.pair) - about));
-        if d > m {
-            d
-        } else {
-            m
+    let couple_scale = couple_scale_of(&joints.map(|j| point_of(&j.pair)), about);
+    let mut matrix = [[T::zero(); 6]; 6];
+    // Joint `k` fills columns `2k`, `2k + 1`; its receiver's rows get the
+    // effects times the sign, the other link's rows the same with its sign.
+    for (k, joint) in joints.iter().enumerate() {
+        let effect = effects(&joint.pair, about, couple_scale);
+        let sign = signs::<T>(joint.connection);
+        for (rows, &s) in matrix.chunks_exact_mut(3).zip(sign.iter()) {
+            for (row, i) in rows.iter_mut().zip(0..3) {
+                for (u, e) in effect.iter().enumerate() {
+                    if let Some(v) = row.get_mut(2 * k + u) {
+                        *v = s * e[i];
+                    }
+                }
+            }
         }
-    });
-    let couple_scale = if reach > T::zero() { reach } else { T::one() };
-    let per_joint: [([[T; 3]; 2], [T; 2]); 3] =
-        joints.map(|j| (effects(&j.pair, about, couple_scale), signs(j.connection)));
-    let matrix = from_fn(|i| {
-        from_fn(|j| {
-            per_joint
-                .get(j / 2)
-                .and_then(|(effect, sign)| {
-                    let e = effect.get(j % 2)?.get(i % 3)?;
-                    Some(*sign.get(i / 3)? * *e)
-                })
-                .unwrap_or(T::zero())
-        })
-    });
+    }
     let rhs = [
         -load1.force.x,
         -load1.force.y,
@@ -198,49 +213,54 @@ pub fn assemble<T: Real>(
     }
 }
 
-/// Solves a group: assembles with [`assemble`] and solves with
-/// [`linsolve::solve`] (row equilibration and partial pivoting).
-///
-/// Errors, tagged with `primitive`: `NonFinite` when a load, a joint's
-/// geometry or the result is not finite; `Singular` when the pose admits no
-/// unique reactions (a relative pivot `<= 6 eps`, see [`linsolve::solve`]).
-pub fn solve<T: Real>(
-    joints: &[Joint<T>; 3],
+/// `Err(NonFinite)` (tagged with `primitive`) unless both loads, the pairs'
+/// geometry and `about` are finite.
+#[inline]
+fn check_finite<T: Real>(
+    pairs: &[&Pair<T>],
     about: &Point2<T>,
     load1: &Wrench<T>,
     load2: &Wrench<T>,
     primitive: Primitive,
-) -> Result<GroupSolution<T>, Error> {
+) -> Result<(), Error> {
     if !(load1.is_finite() && load2.is_finite()) {
         return Err(Error::new(
             primitive,
             Fault::NonFinite { what: "group load" },
         ));
     }
-    let geometry_finite = joints.iter().all(|j| match j.pair {
+    let geometry_finite = pairs.iter().all(|pair| match **pair {
         Pair::Revolute { point } => point.x.finite() && point.y.finite(),
         Pair::Prismatic { point, dir } => {
             point.x.finite() && point.y.finite() && dir.x.finite() && dir.y.finite()
         }
     }) && about.x.finite()
         && about.y.finite();
-    if !geometry_finite {
-        return Err(Error::new(
+    if geometry_finite {
+        Ok(())
+    } else {
+        Err(Error::new(
             primitive,
             Fault::NonFinite {
                 what: "group geometry",
             },
-        ));
+        ))
     }
-    let system = assemble(joints, about, load1, load2);
-    let solution =
-        linsolve::solve(system.matrix, system.rhs).map_err(|e| Error::new(primitive, e.fault))?;
-    let [x0, x1, x2, x3, x4, x5] = solution.x;
-    let pairs = [[x0, x1], [x2, x3], [x4, x5]];
-    let mut unknowns = pairs;
-    for (u, j) in unknowns.iter_mut().zip(joints.iter()) {
-        if let Pair::Prismatic { .. } = j.pair {
-            u[1] *= system.couple_scale;
+}
+
+/// Multiplies the couple unknown of each prismatic pair back by `L` and
+/// checks that every reaction is finite.
+#[inline]
+fn finish<T: Real>(
+    mut unknowns: [[T; 2]; 3],
+    pairs: [&Pair<T>; 3],
+    couple_scale: T,
+    min_pivot_ratio: T,
+    primitive: Primitive,
+) -> Result<GroupSolution<T>, Error> {
+    for (u, pair) in unknowns.iter_mut().zip(pairs.iter()) {
+        if let Pair::Prismatic { .. } = pair {
+            u[1] *= couple_scale;
         }
     }
     if !unknowns.iter().flatten().all(|v| v.finite()) {
@@ -253,6 +273,133 @@ pub fn solve<T: Real>(
     }
     Ok(GroupSolution {
         unknowns,
-        min_pivot_ratio: solution.min_pivot_ratio,
+        min_pivot_ratio,
     })
+}
+
+/// Solves a group: assembles with [`assemble`] and solves with
+/// [`linsolve::solve_in_place`] (row equilibration and partial pivoting). The
+/// general path, for any three joints; the groups whose inner joint is a
+/// revolute use [`solve_inner_revolute`], a quarter of the work.
+///
+/// Errors, tagged with `primitive`: `NonFinite` when a load, a joint's
+/// geometry or the result is not finite; `Singular` when the pose admits no
+/// unique reactions (a relative pivot `<= 6 eps`, see [`linsolve::solve`]).
+pub fn solve<T: Real>(
+    joints: &[Joint<T>; 3],
+    about: &Point2<T>,
+    load1: &Wrench<T>,
+    load2: &Wrench<T>,
+    primitive: Primitive,
+) -> Result<GroupSolution<T>, Error> {
+    let [j0, j1, j2] = joints;
+    check_finite(
+        &[&j0.pair, &j1.pair, &j2.pair],
+        about,
+        load1,
+        load2,
+        primitive,
+    )?;
+    let GroupSystem {
+        mut matrix,
+        mut rhs,
+        couple_scale,
+    } = assemble(joints, about, load1, load2);
+    let min_pivot_ratio = linsolve::solve_in_place(&mut matrix, &mut rhs)
+        .map_err(|e| Error::new(primitive, e.fault))?;
+    let [x0, x1, x2, x3, x4, x5] = rhs;
+    finish(
+        [[x0, x1], [x2, x3], [x4, x5]],
+        [&j0.pair, &j1.pair, &j2.pair],
+        couple_scale,
+        min_pivot_ratio,
+        primitive,
+    )
+}
+
+/// Solves a group whose inner joint (link 1 -> link 2) is a revolute at
+/// `about`, with moments about it: the RRR, RRP and PRP groups. `outer1` is
+/// the pair from the outside to link 1, `outer2` from the outside to link 2.
+/// Returns the unknowns in the order `[outer1, outer2, inner]` (inner:
+/// `[Fx, Fy]`, the force of link 1 on link 2).
+///
+/// The same equations as [`solve`], with the inner joint eliminated exactly
+/// before any rounding can matter. With moments about the inner joint's centre
+/// its force `F_c` appears only in the force rows, with coefficient `-1` in
+/// link 1's and `+1` in link 2's. Those two `+1` are pivots of relative size
+/// 1 (the largest entry of their equilibrated rows) and the first choice of
+/// scaled partial pivoting; eliminating them adds link 1's force rows to link
+/// 2's (multipliers `±1`, exact on the matrix since the two rows share no other
+/// column) and leaves the 4x4 system of the outer unknowns
+///
+/// ```text
+/// [ E1f  E2f ] [u1]   [-(F1 + F2)]     group force balance (2 rows)
+/// [ E1m   0  ] [u2] = [ -M1      ]     link 1 moment about the inner joint
+/// [  0   E2m ]        [ -M2      ]     link 2 moment about the inner joint
+/// ```
+///
+/// (`Eif`, `Eim`: the force and moment rows of outer pair `i`'s effects, as in
+/// [`assemble`]), solved by [`linsolve::solve_in_place`] with its own row
+/// equilibration and partial pivoting; then `F_c = -F2 - E2f u2` (link 2's
+/// force balance). `min_pivot_ratio` is that 4x4 solve's (the two eliminated
+/// pivots are 1): the smallest pivot, relative to the largest entry of its
+/// row of the reduced system. It tends to 0 at the same singular poses as the
+/// 6x6 system's (toggle, link perpendicular to a guide, parallel guides); at a
+/// given pose it need not equal the 6x6 elimination's, whose pivot order can
+/// differ.
+///
+/// Cost: about a quarter of [`solve`]'s (a 4x4 instead of a 6x6 elimination,
+/// and no square root when both outer pairs are revolutes).
+///
+/// Errors, tagged with `primitive`: `NonFinite` when a load, a pair's geometry
+/// or the result is not finite; `Singular` when the pose admits no unique
+/// reactions (a relative pivot `<= 4 eps` in the 4x4 system).
+#[inline]
+pub fn solve_inner_revolute<T: Real>(
+    outer1: &Pair<T>,
+    outer2: &Pair<T>,
+    about: &Point2<T>,
+    load1: &Wrench<T>,
+    load2: &Wrench<T>,
+    primitive: Primitive,
+) -> Result<GroupSolution<T>, Error> {
+    check_finite(&[outer1, outer2], about, load1, load2, primitive)?;
+    let any_prismatic =
+        matches!(outer1, Pair::Prismatic { .. }) || matches!(outer2, Pair::Prismatic { .. });
+    // The same `L` as `assemble` (the inner joint is at `about`, distance 0);
+    // revolutes have no couple column and need none.
+    let couple_scale = if any_prismatic {
+        couple_scale_of(&[point_of(outer1), point_of(outer2)], about)
+    } else {
+        T::one()
+    };
+    let [e1u, e1v] = effects(outer1, about, couple_scale);
+    let [e2u, e2v] = effects(outer2, about, couple_scale);
+    let zero = T::zero();
+    let mut matrix = [
+        [e1u[0], e1v[0], e2u[0], e2v[0]],
+        [e1u[1], e1v[1], e2u[1], e2v[1]],
+        [e1u[2], e1v[2], zero, zero],
+        [zero, zero, e2u[2], e2v[2]],
+    ];
+    let mut rhs = [
+        -(load1.force.x + load2.force.x),
+        -(load1.force.y + load2.force.y),
+        -load1.moment,
+        -load2.moment,
+    ];
+    let min_pivot_ratio = linsolve::solve_in_place(&mut matrix, &mut rhs)
+        .map_err(|e| Error::new(primitive, e.fault))?;
+    let [u1a, u1b, u2a, u2b] = rhs;
+    // Link 2's force balance: E2f u2 + F_c = -F2.
+    let cx = -load2.force.x - (e2u[0] * u2a + e2v[0] * u2b);
+    let cy = -load2.force.y - (e2u[1] * u2a + e2v[1] * u2b);
+    let inner = Pair::Revolute { point: *about };
+    finish(
+        [[u1a, u1b], [u2a, u2b], [cx, cy]],
+        [outer1, outer2, &inner],
+        couple_scale,
+        min_pivot_ratio,
+        primitive,
+    )
 }

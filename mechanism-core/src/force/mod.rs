@@ -6,7 +6,9 @@
 //! (`-m a_G` through the centre of mass `G`, couple `-J alpha`) plus the weight
 //! (`m g` through `G`) plus the unknown joint reactions are in equilibrium
 //! (three equations: `Fx`, `Fy`, moment). A class II group has two links and
-//! three pairs of two unknowns each: a 6x6 system ([`group`]); a driver link
+//! three pairs of two unknowns each: a 6x6 system ([`group`]; the RRR, RRP
+//! and PRP groups, whose inner joint is a revolute, eliminate its force exactly
+//! and solve the remaining 4x4, see [`group::solve_inner_revolute`]); a driver link
 //! adds its driving effort to its pivot's two unknowns: 3x3. Groups are solved
 //! in the reverse of the kinematic order (the last group first), each passing
 //! its outer reactions, negated, to the links it is attached to.
@@ -52,7 +54,8 @@
 //!
 //! Errors: `NonFinite` for non-finite loads or geometry, `NonPositive` for a
 //! zero guide direction, `Singular` when the pose admits no unique reactions
-//! (relative pivot below `6 eps` for the groups, `3 eps` for the actuator), each
+//! (relative pivot below `6 eps` for the RPR and RPP groups, `4 eps` for the
+//! others, `3 eps` for the actuator), each
 //! tagged with the group's [`crate::Primitive`].
 
 pub mod actuator;

@@ -17,7 +17,7 @@
 
 use crate::error::{Error, Primitive};
 use crate::force::body::Wrench;
-use crate::force::group::{self, unit_direction, Connection, Joint, Pair};
+use crate::force::group::{self, unit_direction, Pair};
 use crate::force::PrismaticReaction;
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -35,7 +35,8 @@ pub struct PrpReactions<T: Real> {
     pub guide2: PrismaticReaction<T>,
     /// Force of link 1 on link 2 at `C` (link 1 receives `-c`).
     pub c: Vector2<T>,
-    /// Conditioning indicator, see [`crate::linsolve::Solution::min_pivot_ratio`].
+    /// Conditioning indicator: [`crate::linsolve::Solution::min_pivot_ratio`] of
+    /// the reduced 4x4 system of [`crate::force::group::solve_inner_revolute`].
     pub min_pivot_ratio: T,
 }
 
@@ -55,27 +56,20 @@ pub fn reactions<T: Real>(
 ) -> Result<PrpReactions<T>, Error> {
     let dir1 = unit_direction(dir1, P, "PRP guide 1 direction")?;
     let dir2 = unit_direction(dir2, P, "PRP guide 2 direction")?;
-    let joints = [
-        Joint {
-            pair: Pair::Prismatic {
-                point: *c,
-                dir: dir1,
-            },
-            connection: Connection::OutsideToLink1,
+    let s = group::solve_inner_revolute(
+        &Pair::Prismatic {
+            point: *c,
+            dir: dir1,
         },
-        Joint {
-            pair: Pair::Prismatic {
-                point: *c,
-                dir: dir2,
-            },
-            connection: Connection::OutsideToLink2,
+        &Pair::Prismatic {
+            point: *c,
+            dir: dir2,
         },
-        Joint {
-            pair: Pair::Revolute { point: *c },
-            connection: Connection::Link1ToLink2,
-        },
-    ];
-    let s = group::solve(&joints, c, load1, load2, P)?;
+        c,
+        load1,
+        load2,
+        P,
+    )?;
     let [[n1, m1], [n2, m2], [cx, cy]] = s.unknowns;
     Ok(PrpReactions {
         guide1: PrismaticReaction::new(n1, m1, &dir1),

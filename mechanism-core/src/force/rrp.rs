@@ -18,7 +18,7 @@
 
 use crate::error::{Error, Primitive};
 use crate::force::body::Wrench;
-use crate::force::group::{self, unit_direction, Connection, Joint, Pair};
+use crate::force::group::{self, unit_direction, Pair};
 use crate::force::PrismaticReaction;
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -35,7 +35,8 @@ pub struct RrpReactions<T: Real> {
     /// Reaction of the guide (outside body) on the block: normal force along
     /// `perp(dir)` through `C`, couple about `C`.
     pub guide: PrismaticReaction<T>,
-    /// Conditioning indicator, see [`crate::linsolve::Solution::min_pivot_ratio`].
+    /// Conditioning indicator: [`crate::linsolve::Solution::min_pivot_ratio`] of
+    /// the reduced 4x4 system of [`crate::force::group::solve_inner_revolute`].
     pub min_pivot_ratio: T,
 }
 
@@ -54,22 +55,15 @@ pub fn reactions<T: Real>(
     load2: &Wrench<T>,
 ) -> Result<RrpReactions<T>, Error> {
     let dir = unit_direction(dir, P, "RRP guide direction")?;
-    let joints = [
-        Joint {
-            pair: Pair::Revolute { point: *a },
-            connection: Connection::OutsideToLink1,
-        },
-        Joint {
-            pair: Pair::Revolute { point: *c },
-            connection: Connection::Link1ToLink2,
-        },
-        Joint {
-            pair: Pair::Prismatic { point: *c, dir },
-            connection: Connection::OutsideToLink2,
-        },
-    ];
-    let s = group::solve(&joints, c, load1, load2, P)?;
-    let [[ax, ay], [cx, cy], [n, m]] = s.unknowns;
+    let s = group::solve_inner_revolute(
+        &Pair::Revolute { point: *a },
+        &Pair::Prismatic { point: *c, dir },
+        c,
+        load1,
+        load2,
+        P,
+    )?;
+    let [[ax, ay], [n, m], [cx, cy]] = s.unknowns;
     Ok(RrpReactions {
         a: Vector2::new(ax, ay),
         c: Vector2::new(cx, cy),

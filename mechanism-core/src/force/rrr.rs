@@ -19,7 +19,7 @@
 
 use crate::error::{Error, Primitive};
 use crate::force::body::Wrench;
-use crate::force::group::{self, Connection, Joint, Pair};
+use crate::force::group::{self, Pair};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
 
@@ -34,7 +34,8 @@ pub struct RrrReactions<T: Real> {
     pub b: Vector2<T>,
     /// Force of link 1 on link 2 at `C` (link 1 receives `-c`).
     pub c: Vector2<T>,
-    /// Conditioning indicator, see [`crate::linsolve::Solution::min_pivot_ratio`].
+    /// Conditioning indicator: [`crate::linsolve::Solution::min_pivot_ratio`] of
+    /// the reduced 4x4 system of [`crate::force::group::solve_inner_revolute`].
     pub min_pivot_ratio: T,
 }
 
@@ -53,21 +54,14 @@ pub fn reactions<T: Real>(
     load1: &Wrench<T>,
     load2: &Wrench<T>,
 ) -> Result<RrrReactions<T>, Error> {
-    let joints = [
-        Joint {
-            pair: Pair::Revolute { point: *a },
-            connection: Connection::OutsideToLink1,
-        },
-        Joint {
-            pair: Pair::Revolute { point: *b },
-            connection: Connection::OutsideToLink2,
-        },
-        Joint {
-            pair: Pair::Revolute { point: *c },
-            connection: Connection::Link1ToLink2,
-        },
-    ];
-    let s = group::solve(&joints, c, load1, load2, P)?;
+    let s = group::solve_inner_revolute(
+        &Pair::Revolute { point: *a },
+        &Pair::Revolute { point: *b },
+        c,
+        load1,
+        load2,
+        P,
+    )?;
     let [[ax, ay], [bx, by], [cx, cy]] = s.unknowns;
     Ok(RrrReactions {
         a: Vector2::new(ax, ay),
