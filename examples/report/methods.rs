@@ -215,7 +215,6 @@ pub fn for_scene<'a>(scene: &'a Scene, out_dir: &Path) -> Vec<Method<'a>> {
                     + s.acceleration.B.x
                     + s.acceleration.B.y
             );
-            v.extend(crate::batch::fourbar(scene));
             let (w, a) = (scene.rates[0], scene.accels[0]);
             let grid = &scene.grid;
             // Hand-written closed form, f64 and f32.
@@ -390,6 +389,7 @@ pub fn for_scene<'a>(scene: &'a Scene, out_dir: &Path) -> Vec<Method<'a>> {
         }
         _ => {}
     }
+    v.extend(crate::batch::for_scene(scene));
     v
 }
 

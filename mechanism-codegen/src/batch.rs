@@ -18,8 +18,8 @@
 //! No early return inside the loop: the per-element work is straight-line
 //! apart from the checks inside the primitives.
 
-use crate::model::{Kind, Level, Local, Mode, Model};
-use crate::value::lit;
+use crate::model::{Kind, Level, Local, Mode, Model, Origin};
+use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use std::collections::BTreeMap;
@@ -150,16 +150,22 @@ pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -
         .iter()
         .map(|f| quote!(let #f = self.#f.split_at(mid);))
         .collect();
-    let (lane_method, lane_call, lane_skip) =
-        match lane(model, &all_in, inputs, outputs, levels.len()) {
+    let (lane_method, lane_call, lane_skip, has_lane) =
+        match lane(model, &all_in, outputs, levels.len()) {
             Some((m, c)) => (
                 m,
                 c,
                 quote!(if b.status[k] == 0 {
                     continue;
                 }),
+                true,
             ),
-            None => (TokenStream::new(), TokenStream::new(), TokenStream::new()),
+            None => (
+                TokenStream::new(),
+                TokenStream::new(),
+                TokenStream::new(),
+                false,
+            ),
         };
     let method_doc = format!(
         "Evaluates every element of [`{batch_ty}`]: outputs into its slices (zero where an element failed), a status byte per element; returns the number of failed elements. No allocation, no early return, no panic."
@@ -222,6 +228,18 @@ pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -
                 }
                 failed
             }
+
+            /// The vectorized kernel of [`Self::solve_batch`] alone (for
+            /// tests): writes the outputs of the elements it accepts with
+            /// status 0 and status 255 for the others (their outputs are
+            /// meaningless); returns `false`, touching nothing, when the
+            /// definition has no lane version.
+            #[doc(hidden)]
+            #[allow(non_snake_case, unused_variables)]
+            pub fn __solve_batch_lane_only(&self, b: &mut #batch_ty<'_, T>) -> bool {
+                #lane_call
+                #has_lane
+            }
             #lane_method
         }
     }
@@ -236,19 +254,57 @@ fn pv(prefix: &str, name: &Ident) -> (Ident, Ident) {
     )
 }
 
-/// A link in the lane code: unit axis, angle expression, rate and acceleration names.
+/// A link in the lane code: unit axis, angle expression, angular velocity
+/// and acceleration (expressions: a link that turns with a guide's body uses
+/// that body's, a link that never turns `zero`).
 struct LaneLink {
     axis: (TokenStream, TokenStream),
     angle: TokenStream,
-    omega: Ident,
-    alpha: Ident,
+    omega: TokenStream,
+    alpha: TokenStream,
+}
+
+/// A guide in the lane code: the `mechanism::lane::Line` local, the body's
+/// motion as `Option<&LineVelocity>` / `Option<&LineAcceleration>`
+/// expressions (`None` for a fixed guide, so its terms fold away), and the
+/// body's angular velocity and acceleration (for the blocks sliding on it).
+struct LaneGuide {
+    line: Ident,
+    gv: TokenStream,
+    ga: TokenStream,
+    omega: TokenStream,
+    alpha: TokenStream,
+}
+
+/// A unit vector at `angle` as two expressions: literals when the angle is
+/// literal, else a local computed once before the loop (named `id`) with the
+/// scalar `geometry::unit`, as the scalar path does.
+fn unit(angle: &Value, id: Ident, pre: &mut TokenStream) -> (TokenStream, TokenStream) {
+    match angle.fold() {
+        Some(a) => {
+            let (s, c) = a.sin_cos();
+            (lit(c), lit(s))
+        }
+        None => {
+            let a = angle.emit();
+            pre.extend(quote!(let #id = ::mechanism::geometry::unit(#a);));
+            (quote!(#id.x), quote!(#id.y))
+        }
+    }
+}
+
+fn sign(mode: &Mode) -> TokenStream {
+    lit(match mode {
+        Mode::Plus => 1.0,
+        Mode::Minus => -1.0,
+    })
 }
 
 /// The vectorizable kernel (`__lane_batch`) and the code that calls it, when
-/// every statement of the definition has a lane version (ground points,
-/// cranks, RRR groups, points on their links with literal polar or any
-/// Cartesian coordinates); `None` otherwise (the batch is then evaluated by
-/// the scalar path alone).
+/// every statement the outputs need has a lane version (every kind of
+/// statement has one: ground points, guides, cranks, sliders, actuators, the
+/// five groups, points on links); `None` otherwise (the batch is then
+/// evaluated by the scalar path alone).
 ///
 /// The kernel takes every slice as its own argument (so the compiler knows
 /// they do not overlap: no run-time alias checks that would stop the
@@ -257,21 +313,37 @@ struct LaneLink {
 /// evaluated again by the scalar path, which writes zeros and the real
 /// status). The checks of `mechanism::lane` are stricter than the scalar
 /// ones, so an element the kernel accepts is one the scalar path accepts.
+/// Values that do not depend on the element (a guide's direction given by a
+/// run-time parameter) are computed once, before the loop, by the scalar
+/// functions the scalar path uses.
 fn lane(
     model: &Model,
     all_in: &[&Ident],
-    inputs: &[Ident],
     outputs: &[(Ident, TokenStream)],
     levels: usize,
 ) -> Option<(TokenStream, TokenStream)> {
     let plan = crate::plan::plan(model).ok()?;
+    // Only the statements the outputs need, as in the scalar path (a failing
+    // statement nobody asked for must not send elements to the scalar path).
+    let needed = {
+        let out = crate::emit::outputs(model, &plan);
+        crate::emit::needed_statements(model, &plan, &out)
+    };
     let real = quote!(<T as ::mechanism::Real>);
+    let ln = quote!(::mechanism::lane);
+    let none = quote!(::core::option::Option::None);
+    let mut pre = TokenStream::new();
     let mut body = TokenStream::new();
     let mut points: BTreeMap<String, ()> = BTreeMap::new();
     let mut links: BTreeMap<String, LaneLink> = BTreeMap::new();
+    let mut guides: BTreeMap<String, LaneGuide> = BTreeMap::new();
+    // Slide displacements by name: value at each level.
+    let mut slides: BTreeMap<String, [TokenStream; 3]> = BTreeMap::new();
     let vel = levels > 1;
     let acc = levels > 2;
-    for &i in &plan.order {
+    let zero = quote!(zero);
+    let still = || (quote!(zero), quote!(zero));
+    for &i in plan.order.iter().filter(|i| needed.contains(i)) {
         let stmt = &model.stmts[i];
         let name = &stmt.name;
         let (px, py) = pv("p", name);
@@ -279,6 +351,25 @@ fn lane(
         let (ax_, ay_) = pv("a", name);
         let g = format_ident!("g_{}", name);
         let known = |p: &Ident| points.contains_key(&p.to_string());
+        // Point `p`'s position, velocity and acceleration locals.
+        let point = |p: &Ident| (pv("p", p), pv("v", p), pv("a", p));
+        let link_of = |k: usize| stmt.links.get(k).map(|l| l.to_string());
+        let own_rates = |k: usize| -> Option<(Ident, Ident)> {
+            let l = stmt.links.get(k)?;
+            Some((format_ident!("w_{}", l), format_ident!("al_{}", l)))
+        };
+        // Slide locals of slot `k`: (position, velocity, acceleration).
+        let slide_ids = |k: usize| {
+            (
+                format_ident!("s{}_{}", k, name),
+                format_ident!("sd{}_{}", k, name),
+                format_ident!("sdd{}_{}", k, name),
+            )
+        };
+        let mut defines_point = true;
+        let mut checked: Vec<TokenStream> = Vec::new();
+        let mut new_links: Vec<(String, LaneLink)> = Vec::new();
+        let mut new_slides: Vec<(usize, [TokenStream; 3])> = Vec::new();
         match &stmt.kind {
             Kind::Ground { x, y } => {
                 let (x, y) = (x.emit(), y.emit());
@@ -287,6 +378,77 @@ fn lane(
                     let #vx = zero; let #vy = zero;
                     let #ax_ = zero; let #ay_ = zero;
                 });
+            }
+            Kind::Guide {
+                origin,
+                angle,
+                carrier,
+            } => {
+                defines_point = false;
+                let line = format_ident!("ln_{}", name);
+                let ((ox, oy), (ovx, ovy), (oax, oay)) = match origin {
+                    Origin::Point(p) => {
+                        if !known(p) {
+                            return None;
+                        }
+                        let ((a, b), (c, d), (e, f)) = point(p);
+                        (
+                            (quote!(#a), quote!(#b)),
+                            (quote!(#c), quote!(#d)),
+                            (quote!(#e), quote!(#f)),
+                        )
+                    }
+                    Origin::Coords(x, y) => ((x.emit(), y.emit()), still(), still()),
+                };
+                let guide = match carrier {
+                    None => {
+                        let (dx, dy) = unit(angle, format_ident!("u_{}", name), &mut pre);
+                        body.extend(quote! {
+                            let #line = #ln::Line { ox: #ox, oy: #oy, dx: #dx, dy: #dy };
+                        });
+                        LaneGuide {
+                            line,
+                            gv: none.clone(),
+                            ga: none.clone(),
+                            omega: zero.clone(),
+                            alpha: zero.clone(),
+                        }
+                    }
+                    Some(link) => {
+                        let l = links.get(&link.to_string())?;
+                        let (axx, axy) = &l.axis;
+                        if angle.fold() == Some(0.0) {
+                            body.extend(quote! {
+                                let #line = #ln::Line { ox: #ox, oy: #oy, dx: #axx, dy: #axy };
+                            });
+                        } else {
+                            let (lx, ly) = unit(angle, format_ident!("u_{}", name), &mut pre);
+                            body.extend(quote! {
+                                let #line = #ln::carried(#ox, #oy, (#axx, #axy), (#lx, #ly));
+                            });
+                        }
+                        let (gv, ga) = (format_ident!("gv_{}", name), format_ident!("ga_{}", name));
+                        let (omega, alpha) = (l.omega.clone(), l.alpha.clone());
+                        if vel {
+                            body.extend(quote! {
+                                let #gv = #ln::LineVelocity { vx: #ovx, vy: #ovy, omega: #omega };
+                            });
+                        }
+                        if acc {
+                            body.extend(quote! {
+                                let #ga = #ln::LineAcceleration { ax: #oax, ay: #oay, alpha: #alpha };
+                            });
+                        }
+                        LaneGuide {
+                            line,
+                            gv: quote!(::core::option::Option::Some(&#gv)),
+                            ga: quote!(::core::option::Option::Some(&#ga)),
+                            omega,
+                            alpha,
+                        }
+                    }
+                };
+                guides.insert(name.to_string(), guide);
             }
             Kind::Crank {
                 pivot,
@@ -297,16 +459,12 @@ fn lane(
                 if !known(pivot) {
                     return None;
                 }
-                let (ppx, ppy) = pv("p", pivot);
-                let (pvx, pvy) = pv("v", pivot);
-                let (pax, pay) = pv("a", pivot);
+                let ((ppx, ppy), (pvx, pvy), (pax, pay)) = point(pivot);
                 let r = radius.emit();
                 let th = format_ident!("in_{}", input);
-                let link = stmt.links.first()?;
-                let omega = format_ident!("w_{}", link);
-                let alpha = format_ident!("al_{}", link);
+                let (omega, alpha) = own_rates(0)?;
                 body.extend(quote! {
-                    let #g = ::mechanism::lane::crank(#ppx, #ppy, #r, #th[k]);
+                    let #g = #ln::crank(#ppx, #ppy, #r, #th[k]);
                     ok &= #g.ok;
                     let #px = #g.x; let #py = #g.y;
                 });
@@ -314,89 +472,356 @@ fn lane(
                     let rate = format_ident!("rate_{}", input);
                     body.extend(quote! {
                         let #omega = #rate[k];
-                        let (tx, ty) = ::mechanism::lane::rel_vel(#g.rx, #g.ry, #omega);
+                        let (tx, ty) = #ln::rel_vel(#g.rx, #g.ry, #omega);
                         let #vx = #pvx + tx; let #vy = #pvy + ty;
                     });
+                    checked.push(quote!(#omega));
                 }
                 if acc {
                     let accel = format_ident!("accel_{}", input);
                     body.extend(quote! {
                         let #alpha = #accel[k];
-                        let (tx, ty) = ::mechanism::lane::rel_acc(#g.rx, #g.ry, #omega, #alpha);
+                        let (tx, ty) = #ln::rel_acc(#g.rx, #g.ry, #omega, #alpha);
                         let #ax_ = #pax + tx; let #ay_ = #pay + ty;
                     });
+                    checked.push(quote!(#alpha));
                 }
-                links.insert(
-                    link.to_string(),
+                new_links.push((
+                    link_of(0)?,
                     LaneLink {
                         axis: (quote!(#g.ux), quote!(#g.uy)),
-                        angle: quote!(::mechanism::lane::wrap_angle(#th[k])),
-                        omega,
-                        alpha,
+                        angle: quote!(#ln::wrap_angle(#th[k])),
+                        omega: quote!(#omega),
+                        alpha: quote!(#alpha),
                     },
-                );
+                ));
             }
-            Kind::Rrr { a, l1, b, l2, mode } => {
+            Kind::Slider {
+                guide,
+                input,
+                offset,
+            } => {
+                let gd = guides.get(&guide.to_string())?;
+                let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
+                let o = offset.emit();
+                let s = format_ident!("in_{}", input);
+                body.extend(quote! {
+                    let (#px, #py) = #ln::slider(&#line, #o, #s[k]);
+                });
+                checked.push(quote!(#s[k]));
+                if vel {
+                    let rate = format_ident!("rate_{}", input);
+                    body.extend(quote! {
+                        let (#vx, #vy) = #ln::slider_velocity(&#line, #px, #py, #rate[k], #gv);
+                    });
+                    checked.push(quote!(#rate[k]));
+                }
+                if acc {
+                    let (rate, accel) = (
+                        format_ident!("rate_{}", input),
+                        format_ident!("accel_{}", input),
+                    );
+                    body.extend(quote! {
+                        let (#ax_, #ay_) = #ln::slider_acceleration(&#line, #px, #py, #rate[k], #accel[k], #gv, #ga);
+                    });
+                    checked.push(quote!(#accel[k]));
+                }
+                new_links.push((
+                    link_of(0)?,
+                    LaneLink {
+                        axis: (quote!(#line.dx), quote!(#line.dy)),
+                        angle: quote!(#ln::atan2(#line.dy, #line.dx)),
+                        omega: gd.omega.clone(),
+                        alpha: gd.alpha.clone(),
+                    },
+                ));
+            }
+            Kind::Rrr { a, l1, b, mode, .. }
+            | Kind::Actuator {
+                a, l: l1, b, mode, ..
+            } => {
                 if !known(a) || !known(b) || stmt.links.len() != 2 {
                     return None;
                 }
-                let (apx, apy) = pv("p", a);
-                let (bpx, bpy) = pv("p", b);
-                let (avx, avy) = pv("v", a);
-                let (bvx, bvy) = pv("v", b);
-                let (aax, aay) = pv("a", a);
-                let (bax, bay) = pv("a", b);
-                let (l1, l2) = (l1.emit(), l2.emit());
-                let sign = lit(match mode {
-                    Mode::Plus => 1.0,
-                    Mode::Minus => -1.0,
-                });
-                let (w1, w2) = (
-                    format_ident!("w_{}", stmt.links[0]),
-                    format_ident!("w_{}", stmt.links[1]),
-                );
-                let (al1, al2) = (
-                    format_ident!("al_{}", stmt.links[0]),
-                    format_ident!("al_{}", stmt.links[1]),
-                );
+                let actuator = match &stmt.kind {
+                    Kind::Actuator { input, .. } => Some(input),
+                    _ => None,
+                };
+                let ((apx, apy), (avx, avy), (aax, aay)) = point(a);
+                let ((bpx, bpy), (bvx, bvy), (bax, bay)) = point(b);
+                let l1 = l1.emit();
+                let l2 = match (&stmt.kind, actuator) {
+                    (Kind::Rrr { l2, .. }, _) => l2.emit(),
+                    (_, Some(input)) => {
+                        let s = format_ident!("in_{}", input);
+                        checked.push(quote!(#s[k]));
+                        quote!(#s[k])
+                    }
+                    _ => return None,
+                };
+                let sign = sign(mode);
+                let (w1, al1) = own_rates(0)?;
+                let (w2, al2) = own_rates(1)?;
                 body.extend(quote! {
-                    let #g = ::mechanism::lane::rrr(#apx, #apy, #l1, #bpx, #bpy, #l2, #sign);
+                    let #g = #ln::rrr(#apx, #apy, #l1, #bpx, #bpy, #l2, #sign);
                     ok &= #g.ok;
                     let #px = #g.x; let #py = #g.y;
                 });
                 if vel {
+                    let rates = match actuator {
+                        None => quote!(#ln::rrr_rates(&#g, #bvx - #avx, #bvy - #avy)),
+                        Some(input) => {
+                            let rate = format_ident!("rate_{}", input);
+                            checked.push(quote!(#rate[k]));
+                            quote!(#ln::actuator_rates(&#g, #bvx - #avx, #bvy - #avy, #l2, #rate[k]))
+                        }
+                    };
                     body.extend(quote! {
                         ok &= #g.ok_rate;
-                        let (#w1, #w2) = ::mechanism::lane::rrr_rates(&#g, #bvx - #avx, #bvy - #avy);
-                        let (tx, ty) = ::mechanism::lane::rel_vel(#g.r1x, #g.r1y, #w1);
+                        let (#w1, #w2) = #rates;
+                        let (tx, ty) = #ln::rel_vel(#g.r1x, #g.r1y, #w1);
                         let #vx = #avx + tx; let #vy = #avy + ty;
                     });
+                    checked.extend([quote!(#w1), quote!(#w2)]);
+                }
+                if acc {
+                    let accels = match actuator {
+                        None => quote!(#ln::rrr_accels(&#g, #bax - #aax, #bay - #aay, #w1, #w2)),
+                        Some(input) => {
+                            let (rate, accel) = (
+                                format_ident!("rate_{}", input),
+                                format_ident!("accel_{}", input),
+                            );
+                            checked.push(quote!(#accel[k]));
+                            quote!(#ln::actuator_accels(&#g, #bax - #aax, #bay - #aay, #l2, #rate[k], #accel[k], #w1, #w2))
+                        }
+                    };
+                    body.extend(quote! {
+                        let (#al1, #al2) = #accels;
+                        let (tx, ty) = #ln::rel_acc(#g.r1x, #g.r1y, #w1, #al1);
+                        let #ax_ = #aax + tx; let #ay_ = #aay + ty;
+                    });
+                    checked.extend([quote!(#al1), quote!(#al2)]);
+                }
+                new_links.push((
+                    link_of(0)?,
+                    LaneLink {
+                        axis: (quote!((#g.r1x / #l1)), quote!((#g.r1y / #l1))),
+                        angle: quote!(#ln::atan2(#g.r1y, #g.r1x)),
+                        omega: quote!(#w1),
+                        alpha: quote!(#al1),
+                    },
+                ));
+                new_links.push((
+                    link_of(1)?,
+                    LaneLink {
+                        axis: (quote!((#g.r2x / #l2)), quote!((#g.r2y / #l2))),
+                        angle: quote!(#ln::atan2(#g.r2y, #g.r2x)),
+                        omega: quote!(#w2),
+                        alpha: quote!(#al2),
+                    },
+                ));
+            }
+            Kind::Rrp {
+                a,
+                l,
+                guide,
+                mode,
+                offset,
+            } => {
+                if !known(a) {
+                    return None;
+                }
+                let gd = guides.get(&guide.to_string())?;
+                let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
+                let ((apx, apy), (avx, avy), (aax, aay)) = point(a);
+                let (l, o, sign) = (l.emit(), offset.emit(), sign(mode));
+                let (w1, al1) = own_rates(0)?;
+                let (s, sd, sdd) = slide_ids(0);
+                body.extend(quote! {
+                    let #g = #ln::rrp(#apx, #apy, #l, &#line, #o, #sign);
+                    ok &= #g.ok;
+                    let #px = #g.x; let #py = #g.y;
+                    let #s = #g.s;
+                });
+                checked.push(quote!(#s));
+                if vel {
+                    body.extend(quote! {
+                        ok &= #g.ok_rate;
+                        let (#w1, #sd, #vx, #vy) = #ln::rrp_rates(&#g, &#line, #avx, #avy, #gv);
+                    });
+                    checked.extend([quote!(#w1), quote!(#sd)]);
                 }
                 if acc {
                     body.extend(quote! {
-                        let (#al1, #al2) = ::mechanism::lane::rrr_accels(&#g, #bax - #aax, #bay - #aay, #w1, #w2);
-                        let (tx, ty) = ::mechanism::lane::rel_acc(#g.r1x, #g.r1y, #w1, #al1);
-                        let #ax_ = #aax + tx; let #ay_ = #aay + ty;
+                        let (#al1, #sdd, #ax_, #ay_) = #ln::rrp_accels(&#g, &#line, #aax, #aay, #w1, #sd, #gv, #ga);
                     });
+                    checked.extend([quote!(#al1), quote!(#sdd)]);
                 }
-                links.insert(
-                    stmt.links[0].to_string(),
+                new_slides.push((0, [quote!(#s), quote!(#sd), quote!(#sdd)]));
+                new_links.push((
+                    link_of(0)?,
                     LaneLink {
-                        axis: (quote!((#g.r1x / #l1)), quote!((#g.r1y / #l1))),
-                        angle: quote!(::mechanism::lane::atan2(#g.r1y, #g.r1x)),
-                        omega: w1,
-                        alpha: al1,
+                        axis: (quote!((#g.r1x / #l)), quote!((#g.r1y / #l))),
+                        angle: quote!(#ln::atan2(#g.r1y, #g.r1x)),
+                        omega: quote!(#w1),
+                        alpha: quote!(#al1),
                     },
-                );
-                links.insert(
-                    stmt.links[1].to_string(),
+                ));
+                new_links.push((
+                    link_of(1)?,
                     LaneLink {
-                        axis: (quote!((#g.r2x / #l2)), quote!((#g.r2y / #l2))),
-                        angle: quote!(::mechanism::lane::atan2(#g.r2y, #g.r2x)),
-                        omega: w2,
-                        alpha: al2,
+                        axis: (quote!(#line.dx), quote!(#line.dy)),
+                        angle: quote!(#ln::atan2(#line.dy, #line.dx)),
+                        omega: gd.omega.clone(),
+                        alpha: gd.alpha.clone(),
                     },
-                );
+                ));
+            }
+            Kind::Rpr { a, b, mode, offset } => {
+                if !known(a) || !known(b) {
+                    return None;
+                }
+                defines_point = false;
+                let ((apx, apy), (avx, avy), (aax, aay)) = point(a);
+                let ((bpx, bpy), (bvx, bvy), (bax, bay)) = point(b);
+                let (o, sign) = (offset.emit(), sign(mode));
+                let (w, al) = own_rates(0)?;
+                let (s, sd, sdd) = slide_ids(0);
+                body.extend(quote! {
+                    let #g = #ln::rpr(#apx, #apy, #bpx, #bpy, #o, #sign);
+                    ok &= #g.ok;
+                    let #s = #g.s;
+                });
+                checked.extend([quote!(#s), quote!(#g.ux), quote!(#g.uy)]);
+                if vel {
+                    body.extend(quote! {
+                        ok &= #g.ok_rate;
+                        let (#w, #sd) = #ln::rpr_rates(&#g, #avx - #bvx, #avy - #bvy);
+                    });
+                    checked.extend([quote!(#w), quote!(#sd)]);
+                }
+                if acc {
+                    body.extend(quote! {
+                        let (#al, #sdd) = #ln::rpr_accels(&#g, #aax - #bax, #aay - #bay, #w, #sd);
+                    });
+                    checked.extend([quote!(#al), quote!(#sdd)]);
+                }
+                new_slides.push((0, [quote!(#s), quote!(#sd), quote!(#sdd)]));
+                for k in 0..2 {
+                    new_links.push((
+                        link_of(k)?,
+                        LaneLink {
+                            axis: (quote!(#g.ux), quote!(#g.uy)),
+                            angle: quote!(#ln::atan2(#g.uy, #g.ux)),
+                            omega: quote!(#w),
+                            alpha: quote!(#al),
+                        },
+                    ));
+                }
+            }
+            Kind::Prp {
+                g1,
+                g2,
+                offset1,
+                offset2,
+            } => {
+                let (d1, d2) = (guides.get(&g1.to_string())?, guides.get(&g2.to_string())?);
+                let (l1, gv1, ga1) = (&d1.line, &d1.gv, &d1.ga);
+                let (l2, gv2, ga2) = (&d2.line, &d2.gv, &d2.ga);
+                let (o1, o2) = (offset1.emit(), offset2.emit());
+                let (s1, sd1, sdd1) = slide_ids(0);
+                let (s2, sd2, sdd2) = slide_ids(1);
+                body.extend(quote! {
+                    let #g = #ln::prp(&#l1, #o1, &#l2, #o2);
+                    ok &= #g.ok;
+                    let #px = #g.x; let #py = #g.y;
+                    let #s1 = #g.s1; let #s2 = #g.s2;
+                });
+                checked.extend([quote!(#s1), quote!(#s2)]);
+                if vel {
+                    body.extend(quote! {
+                        let (#sd1, #sd2, #vx, #vy) = #ln::prp_rates(&#g, &#l1, &#l2, #gv1, #gv2);
+                    });
+                    checked.extend([quote!(#sd1), quote!(#sd2)]);
+                }
+                if acc {
+                    body.extend(quote! {
+                        let (#sdd1, #sdd2, #ax_, #ay_) = #ln::prp_accels(&#g, &#l1, &#l2, #sd1, #sd2, #gv1, #ga1, #gv2, #ga2);
+                    });
+                    checked.extend([quote!(#sdd1), quote!(#sdd2)]);
+                }
+                new_slides.push((0, [quote!(#s1), quote!(#sd1), quote!(#sdd1)]));
+                new_slides.push((1, [quote!(#s2), quote!(#sd2), quote!(#sdd2)]));
+                for (k, (d, l)) in [(d1, l1), (d2, l2)].into_iter().enumerate() {
+                    new_links.push((
+                        link_of(k)?,
+                        LaneLink {
+                            axis: (quote!(#l.dx), quote!(#l.dy)),
+                            angle: quote!(#ln::atan2(#l.dy, #l.dx)),
+                            omega: d.omega.clone(),
+                            alpha: d.alpha.clone(),
+                        },
+                    ));
+                }
+            }
+            Kind::Rpp {
+                a,
+                guide,
+                slot,
+                offset,
+            } => {
+                if !known(a) {
+                    return None;
+                }
+                let gd = guides.get(&guide.to_string())?;
+                let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
+                let ((apx, apy), (avx, avy), (aax, aay)) = point(a);
+                let (lx, ly) = unit(slot, format_ident!("u_{}", name), &mut pre);
+                let o = offset.emit();
+                let (s1, sd1, sdd1) = slide_ids(0);
+                let (s2, sd2, sdd2) = slide_ids(1);
+                body.extend(quote! {
+                    let #g = #ln::rpp(#apx, #apy, &#line, #o, #lx, #ly);
+                    ok &= #g.ok;
+                    let #px = #g.x; let #py = #g.y;
+                    let #s1 = #g.s1; let #s2 = #g.s2;
+                });
+                checked.extend([quote!(#s1), quote!(#s2)]);
+                if vel {
+                    body.extend(quote! {
+                        let (#sd1, #sd2, #vx, #vy) = #ln::rpp_rates(&#g, &#line, #apx, #apy, #avx, #avy, #gv);
+                    });
+                    checked.extend([quote!(#sd1), quote!(#sd2)]);
+                }
+                if acc {
+                    body.extend(quote! {
+                        let (#sdd1, #sdd2, #ax_, #ay_) = #ln::rpp_accels(&#g, &#line, #apx, #apy, #aax, #aay, #sd1, #sd2, #gv, #ga);
+                    });
+                    checked.extend([quote!(#sdd1), quote!(#sdd2)]);
+                }
+                new_slides.push((0, [quote!(#s1), quote!(#sd1), quote!(#sdd1)]));
+                new_slides.push((1, [quote!(#s2), quote!(#sd2), quote!(#sdd2)]));
+                // Link 1 (the block) along the slot, link 2 (the yoke) along
+                // the guide, as in the scalar path.
+                new_links.push((
+                    link_of(0)?,
+                    LaneLink {
+                        axis: (quote!(#g.wx), quote!(#g.wy)),
+                        angle: quote!(#ln::atan2(#g.wy, #g.wx)),
+                        omega: gd.omega.clone(),
+                        alpha: gd.alpha.clone(),
+                    },
+                ));
+                new_links.push((
+                    link_of(1)?,
+                    LaneLink {
+                        axis: (quote!(#line.dx), quote!(#line.dy)),
+                        angle: quote!(#ln::atan2(#line.dy, #line.dx)),
+                        omega: gd.omega.clone(),
+                        alpha: gd.alpha.clone(),
+                    },
+                ));
             }
             Kind::Point { link, from, local } => {
                 let l = links.get(&link.to_string())?;
@@ -405,16 +830,23 @@ fn lane(
                 }
                 let (lx, ly) = match local {
                     Local::Cartesian(x, y) => (x.emit(), y.emit()),
-                    Local::Polar(d, a) => {
-                        let (d, a) = (d.fold()?, a.fold()?);
-                        let (s, c) = a.sin_cos();
-                        (lit(d * c), lit(d * s))
-                    }
+                    Local::Polar(d, a) => match (d.fold(), a.fold()) {
+                        (Some(d), Some(a)) => {
+                            let (s, c) = a.sin_cos();
+                            (lit(d * c), lit(d * s))
+                        }
+                        _ => {
+                            // Once, before the loop, as the scalar path does.
+                            let (ux, uy) = unit(a, format_ident!("u_{}", name), &mut pre);
+                            let d = d.emit();
+                            let lp = format_ident!("lp_{}", name);
+                            pre.extend(quote!(let #lp = (#ux * #d, #uy * #d);));
+                            (quote!(#lp.0), quote!(#lp.1))
+                        }
+                    },
                 };
                 let (ux, uy) = &l.axis;
-                let (fpx, fpy) = pv("p", from);
-                let (fvx, fvy) = pv("v", from);
-                let (fax, fay) = pv("a", from);
+                let ((fpx, fpy), (fvx, fvy), (fax, fay)) = point(from);
                 let (ox, oy) = pv("o", name);
                 body.extend(quote! {
                     let (lx, ly) = (#lx, #ly);
@@ -425,43 +857,47 @@ fn lane(
                 let (omega, alpha) = (&l.omega, &l.alpha);
                 if vel {
                     body.extend(quote! {
-                        let (tx, ty) = ::mechanism::lane::rel_vel(#ox, #oy, #omega);
+                        let (tx, ty) = #ln::rel_vel(#ox, #oy, #omega);
                         let #vx = #fvx + tx; let #vy = #fvy + ty;
                     });
                 }
                 if acc {
                     body.extend(quote! {
-                        let (tx, ty) = ::mechanism::lane::rel_acc(#ox, #oy, #omega, #alpha);
+                        let (tx, ty) = #ln::rel_acc(#ox, #oy, #omega, #alpha);
                         let #ax_ = #fax + tx; let #ay_ = #fay + ty;
                     });
                 }
             }
-            _ => return None,
         }
         // Every value the scalar path checks is checked here too (finite),
         // outputs or not, so that an element the kernel accepts is one the
         // scalar path accepts: summed (one add each), the sum is finite
         // unless one of them is not (or, harmlessly, the sum overflows:
         // the element then goes to the scalar path).
-        let mut checked = vec![px, py];
-        if vel {
-            checked.extend([vx, vy]);
-        }
-        if acc {
-            checked.extend([ax_, ay_]);
-        }
-        for link in &stmt.links {
-            if let Some(l) = links.get(&link.to_string()) {
-                if vel {
-                    checked.push(l.omega.clone());
-                }
-                if acc {
-                    checked.push(l.alpha.clone());
-                }
+        if defines_point {
+            checked.extend([quote!(#px), quote!(#py)]);
+            if vel {
+                checked.extend([quote!(#vx), quote!(#vy)]);
             }
+            if acc {
+                checked.extend([quote!(#ax_), quote!(#ay_)]);
+            }
+            points.insert(name.to_string(), ());
         }
         body.extend(quote!(#(chk += #checked;)*));
-        points.insert(name.to_string(), ());
+        for (l, info) in new_links {
+            links.insert(l, info);
+        }
+        for (slot, values) in new_slides {
+            let slide = match (&stmt.kind, stmt.slides.get(slot)) {
+                (_, Some(Some(s))) => Some(s.to_string()),
+                (Kind::Rpr { .. }, _) => Some(name.to_string()),
+                _ => None,
+            };
+            if let Some(s) = slide {
+                slides.insert(s, values);
+            }
+        }
     }
     // Outputs: (slice, value) per level.
     let mut params_out: Vec<Ident> = Vec::new();
@@ -481,17 +917,14 @@ fn lane(
                     (format_ident!("{}_{}_y", prefixes[li], o), quote!(#y)),
                 ]
             } else {
-                let l = links.get(&o.to_string())?;
-                let v = match li {
-                    0 => l.angle.clone(),
-                    1 => {
-                        let w = &l.omega;
-                        quote!(#w)
-                    }
-                    _ => {
-                        let a = &l.alpha;
-                        quote!(#a)
-                    }
+                let v = match (links.get(&o.to_string()), slides.get(&o.to_string())) {
+                    (Some(l), _) => match li {
+                        0 => l.angle.clone(),
+                        1 => l.omega.clone(),
+                        _ => l.alpha.clone(),
+                    },
+                    (None, Some(s)) => s[li].clone(),
+                    (None, None) => return None,
                 };
                 vec![(format_ident!("{}_{}", prefixes[li], o), v)]
             };
@@ -504,7 +937,6 @@ fn lane(
             }
         }
     }
-    let _ = inputs;
     let ins: Vec<&Ident> = all_in.to_vec();
     let method = quote! {
         /// The vectorizable part of [`Self::solve_batch`] (see `mechanism::lane`):
@@ -521,6 +953,7 @@ fn lane(
             #(let #params_out = &mut #params_out[..n];)*
             let status = &mut status[..n];
             let zero = #real::lit(0.0);
+            #pre
             for k in 0..n {
                 let mut ok = true;
                 let mut chk = zero;
