@@ -19,6 +19,15 @@
 //! `s = t + m sqrt((l - |k|)(l + |k|))` (`m = +1` for `Plus`), the factored
 //! form losing no digits near tangency (`|k| = l`).
 //!
+//! Near tangency the half chord `sqrt(l^2 - k^2)` amplifies an error `dk` of
+//! `k` by `|k| / sqrt(l^2 - k^2)`, so `l - |k|` is formed from `k` carried as
+//! `kh + kl` (the products' and sums' rounding errors kept by Dekker's product
+//! and Knuth's two-sum: no fused multiply-add needed), and from the guide's
+//! direction divided by its length: a direction rounded from `(cos, sin)`
+//! is off unit length by up to an ulp, which taken as exact scales `k` by the
+//! same relative amount. In the f32 six-bar (`docs/stability.md`, "f32
+//! six-bar") the two together were half of the largest rate error.
+//!
 //! Rates: differentiating `A + r1 = C` (`r1 = C - A`, turning at `omega1`) and
 //! `C = g.at(s, offset)` on a guide body moving at `(v_origin, omega)` gives
 //! `omega1 perp(r1) - s_dot dir = v_body(C) - vA`, a 2x2 system with columns
@@ -104,11 +113,24 @@ pub fn position<T: Real>(
     let dir = finite_vec(g.dir, P, "RRP guide direction")?;
     let p = finite_vec(a - g.origin, P, "RRP distance from the guide origin")?;
     let n = perp(&dir);
-    let t = dot(&p, &dir);
-    // Signed distance of A from the offset line (left positive).
-    let k = dot(&p, &n) - offset;
-    let h = if k < T::zero() { -k } else { k };
-    let gap = l - h; // < 0: the circle about A misses the line
+    // Half of `|dir|^2 - 1`, exactly enough: a direction rounded from
+    // (cos, sin) is off unit length by up to about one ulp, and taken as it is
+    // that scales `k` and moves the joint by `l eps / sqrt(gap)` near
+    // tangency (see the module documentation). Dividing by `|dir|` is done to
+    // first order, `x / |dir| = x - x he`, whose error `(3/8)(2 he)^2 x` is
+    // below the rounding while `|dir|^2 - 1` is below `sqrt(eps)`.
+    let he = half_excess(&dir);
+    // Signed distance of A from the offset line (left positive) as `kh + kl`:
+    // `dot(p, n) / |dir| - offset`, with the roundings of the products and
+    // sums carried in `kl` (they are what `gap` is made of near tangency).
+    let (q1, e1) = two_product(p.y, dir.x);
+    let (q2, e2) = two_product(p.x, dir.y);
+    let (pn, e3) = two_sum(q1, -q2);
+    let (kh, e4) = two_sum(pn, -offset);
+    let kl = (e1 - e2 + e3 + e4) - pn * he;
+    let (h, hl) = if kh < T::zero() { (-kh, -kl) } else { (kh, kl) };
+    // `l - h` is exact where it matters (h within a factor 2 of l: Sterbenz).
+    let gap = (l - h) - hl; // < 0: the circle about A misses the line
     let band = T::lit(4.0) * T::eps() * l;
     // (A NaN `gap`, from an overflowing product, flows on to the finite checks.)
     if gap < -band {
@@ -123,10 +145,60 @@ pub fn position<T: Real>(
     let gap = if gap < T::zero() { T::zero() } else { gap };
     // Half chord, sqrt(l^2 - k^2) factored: no cancellation near tangency.
     let half = mode.sign::<T>() * (gap * (l + h)).sqrt_kernel();
-    let r1 = dir * half - n * k;
-    let s = finite(t + half, P, "RRP slide displacement s")?;
+    let k = kh + kl;
+    // `dir half - n k` over `|dir|`, and `t = dot(p, dir) / |dir|`.
+    let r = dir * half - n * k;
+    let r1 = r - r * he;
+    let t = dot(&p, &dir);
+    let s = finite((t - t * he) + half, P, "RRP slide displacement s")?;
     let c = finite_point(a + r1, P, "RRP joint C")?;
     Ok(RrpPosition { c, r1, s })
+}
+
+/// `(|v|^2 - 1) / 2` for a vector within a few ulp of unit length, with an
+/// error far below `eps` (error-free squares; `|v|^2` rounds into `[1/2, 2]`,
+/// where subtracting 1 is exact).
+#[inline(always)]
+fn half_excess<T: Real>(v: &Vector2<T>) -> T {
+    let (xx, ex) = two_product(v.x, v.x);
+    let (yy, ey) = two_product(v.y, v.y);
+    let (ss, es) = two_sum(xx, yy);
+    ((ss - T::one()) + (es + ex + ey)) * T::lit(0.5)
+}
+
+/// `a + b = s + e` exactly, `s` the rounded sum (Knuth's two-sum: six
+/// additions, no branch; exact in binary floating point without overflow).
+#[inline(always)]
+fn two_sum<T: Real>(a: T, b: T) -> (T, T) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// `a b = p + e` exactly, `p` the rounded product (Dekker's product with
+/// Veltkamp's split, no fused multiply-add needed: the targets this crate is
+/// for, e.g. a Cortex-M4F through libm, have no fast one). Exact unless a
+/// factor exceeds about `max / 2^13` (f32: 4e34) or the product underflows.
+#[inline(always)]
+fn two_product<T: Real>(a: T, b: T) -> (T, T) {
+    let p = a * b;
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
+}
+
+/// Veltkamp's split `a = hi + lo`, each with at most half the significand's
+/// bits (so products of halves are exact): constant `2^ceil(p/2) + 1`, `p` the
+/// significand's bits (24 for f32, 53 for f64).
+#[inline(always)]
+fn split<T: Real>(a: T) -> (T, T) {
+    let c = if T::eps() > T::lit(1e-10) {
+        T::lit(4097.0)
+    } else {
+        T::lit(134_217_729.0)
+    } * a;
+    let hi = c - (c - a);
+    (hi, a - hi)
 }
 
 /// Determinant of the rate system, `dot(r1, dir) = +-sqrt(l^2 - k^2)`, checked
