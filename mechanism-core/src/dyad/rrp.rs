@@ -20,13 +20,14 @@
 //! form losing no digits near tangency (`|k| = l`).
 //!
 //! Near tangency the half chord `sqrt(l^2 - k^2)` amplifies an error `dk` of
-//! `k` by `|k| / sqrt(l^2 - k^2)`, so `l - |k|` is formed from `k` carried as
-//! `kh + kl` (the products' and sums' rounding errors kept by Dekker's product
-//! and Knuth's two-sum: no fused multiply-add needed), and from the guide's
-//! direction divided by its length: a direction rounded from `(cos, sin)`
-//! is off unit length by up to an ulp, which taken as exact scales `k` by the
-//! same relative amount. In the f32 six-bar (`docs/stability.md`, "f32
-//! six-bar") the two together were half of the largest rate error.
+//! `k` by `|k| / sqrt(l^2 - k^2)`. In f32, where that matters, `l - |k|` is
+//! then formed from `k` carried as `kh + kl` (the products' and sums'
+//! rounding errors kept by Dekker's product and Knuth's two-sum: no fused
+//! multiply-add needed), and from the guide's direction divided by its
+//! length: a direction rounded from `(cos, sin)` is off unit length by up to
+//! an ulp, which taken as exact scales `k` by the same relative amount. In
+//! the f32 six-bar (`docs/stability.md`, "f32 six-bar") the two together were
+//! half of the largest rate error.
 //!
 //! Rates: differentiating `A + r1 = C` (`r1 = C - A`, turning at `omega1`) and
 //! `C = g.at(s, offset)` on a guide body moving at `(v_origin, omega)` gives
@@ -39,8 +40,8 @@
 use crate::driver::slider::{transport_acceleration, transport_velocity};
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    check_det_condition, cross, difference, dot, finite, finite_point, finite_vec, length, perp,
-    plus, positive,
+    abs, check_det_condition, cross, difference, dot, finite, finite_point, finite_vec, length,
+    perp, plus, positive,
 };
 use crate::guide::{Line, LineAcceleration, LineVelocity};
 use crate::link::{relative_acceleration, relative_velocity};
@@ -113,21 +114,27 @@ pub fn position<T: Real>(
     let dir = finite_vec(g.dir, P, "RRP guide direction")?;
     let p = finite_vec(a - g.origin, P, "RRP distance from the guide origin")?;
     let n = perp(&dir);
-    // Half of `|dir|^2 - 1`, exactly enough: a direction rounded from
-    // (cos, sin) is off unit length by up to about one ulp, and taken as it is
-    // that scales `k` and moves the joint by `l eps / sqrt(gap)` near
-    // tangency (see the module documentation). Dividing by `|dir|` is done to
-    // first order, `x / |dir| = x - x he`, whose error `(3/8)(2 he)^2 x` is
-    // below the rounding while `|dir|^2 - 1` is below `sqrt(eps)`.
-    let he = half_excess(&dir);
-    // Signed distance of A from the offset line (left positive) as `kh + kl`:
-    // `dot(p, n) / |dir| - offset`, with the roundings of the products and
-    // sums carried in `kl` (they are what `gap` is made of near tangency).
-    let (q1, e1) = two_product(p.y, dir.x);
-    let (q2, e2) = two_product(p.x, dir.y);
-    let (pn, e3) = two_sum(q1, -q2);
-    let (kh, e4) = two_sum(pn, -offset);
-    let kl = (e1 - e2 + e3 + e4) - pn * he;
+    let k0 = dot(&p, &n) - offset;
+    // Near tangency (`l - |k| < l / 4`, where the half chord amplifies an
+    // error of `k` by more than 1.1) and in f32, `k` is carried as `kh + kl`:
+    // `dot(p, n) / |dir| - offset` with the roundings of the products and sums
+    // kept, and the division by `|dir|` done to first order, `x / |dir| =
+    // x - x he` with `he = (|dir|^2 - 1) / 2` computed exactly enough (its
+    // error `(3/8)(2 he)^2 x` is below the rounding while `|dir|^2 - 1` is
+    // below `sqrt(eps)`; a direction rounded from `(cos, sin)` is off unit
+    // length by about an ulp). Elsewhere both corrections stay below an ulp.
+    let (kh, kl, he) = if compensated::<T>() && l - abs(k0) < T::lit(0.25) * l {
+        let (xh, xl) = split(dir.x);
+        let (yh, yl) = split(dir.y);
+        let he = half_excess(dir.x, xh, xl, dir.y, yh, yl);
+        let (q1, e1) = two_product_split(p.y, dir.x, xh, xl);
+        let (q2, e2) = two_product_split(p.x, dir.y, yh, yl);
+        let (pn, e3) = two_sum(q1, -q2);
+        let (kh, e4) = two_sum(pn, -offset);
+        (kh, (e1 - e2 + e3 + e4) - pn * he, he)
+    } else {
+        (k0, T::zero(), T::zero())
+    };
     let (h, hl) = if kh < T::zero() { (-kh, -kl) } else { (kh, kl) };
     // `l - h` is exact where it matters (h within a factor 2 of l: Sterbenz).
     let gap = (l - h) - hl; // < 0: the circle about A misses the line
@@ -148,20 +155,35 @@ pub fn position<T: Real>(
     let k = kh + kl;
     // `dir half - n k` over `|dir|`, and `t = dot(p, dir) / |dir|`.
     let r = dir * half - n * k;
-    let r1 = r - r * he;
     let t = dot(&p, &dir);
-    let s = finite((t - t * he) + half, P, "RRP slide displacement s")?;
+    let (r1, t) = if he != T::zero() {
+        (r - r * he, t - t * he)
+    } else {
+        (r, t)
+    };
+    let s = finite(t + half, P, "RRP slide displacement s")?;
     let c = finite_point(a + r1, P, "RRP joint C")?;
     Ok(RrpPosition { c, r1, s })
 }
 
+/// Whether [`position`] carries rounding errors near tangency: for `f32`
+/// (24-bit significand), where without it the f32 six-bar's largest rate
+/// error was 7.3e-6 instead of 3.7e-6 (`docs/stability.md`, "f32 six-bar");
+/// not for `f64`, whose rounding is `2^29` times finer (the f64 six-bar is
+/// within 1.3e-14 without it) and where it would cost about a fifth of a
+/// six-bar evaluation. A constant after inlining (no branch at run time).
+#[inline(always)]
+fn compensated<T: Real>() -> bool {
+    T::eps() > T::lit(1e-10)
+}
+
 /// `(|v|^2 - 1) / 2` for a vector within a few ulp of unit length, with an
 /// error far below `eps` (error-free squares; `|v|^2` rounds into `[1/2, 2]`,
-/// where subtracting 1 is exact).
+/// where subtracting 1 is exact). `v = (x, y)` with both components split.
 #[inline(always)]
-fn half_excess<T: Real>(v: &Vector2<T>) -> T {
-    let (xx, ex) = two_product(v.x, v.x);
-    let (yy, ey) = two_product(v.y, v.y);
+fn half_excess<T: Real>(x: T, xh: T, xl: T, y: T, yh: T, yl: T) -> T {
+    let (xx, ex) = two_product_split(x, x, xh, xl);
+    let (yy, ey) = two_product_split(y, y, yh, yl);
     let (ss, es) = two_sum(xx, yy);
     ((ss - T::one()) + (es + ex + ey)) * T::lit(0.5)
 }
@@ -175,15 +197,16 @@ fn two_sum<T: Real>(a: T, b: T) -> (T, T) {
     (s, (a - (s - bb)) + (b - bb))
 }
 
-/// `a b = p + e` exactly, `p` the rounded product (Dekker's product with
-/// Veltkamp's split, no fused multiply-add needed: the targets this crate is
-/// for, e.g. a Cortex-M4F through libm, have no fast one). Exact unless a
-/// factor exceeds about `max / 2^13` (f32: 4e34) or the product underflows.
+/// `a b = p + e` exactly, `p` the rounded product, `b = bh + bl` given split
+/// (Dekker's product with Veltkamp's split, no fused multiply-add needed: the
+/// targets this crate is for, e.g. a Cortex-M4F through libm, have no fast
+/// one). Exact unless a factor exceeds about `max / 2^13` (f32: 4e34; the
+/// split then overflows and the NaN ends as a `NonFinite` error) or the
+/// product underflows.
 #[inline(always)]
-fn two_product<T: Real>(a: T, b: T) -> (T, T) {
+fn two_product_split<T: Real>(a: T, b: T, bh: T, bl: T) -> (T, T) {
     let p = a * b;
     let (ah, al) = split(a);
-    let (bh, bl) = split(b);
     (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
 }
 
