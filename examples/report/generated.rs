@@ -203,3 +203,16 @@ pub fn five_bar<T: Real>(m: &FiveBar<T>, q: &[f64], w: &[f64], a: &[f64]) -> Opt
         ],
     })
 }
+
+/// The f64 generated code of the scene named `name` at one point (the
+/// definitions' own parameters); `None` for an unknown name or an error.
+pub fn f64_sample(name: &str, q: &[f64], w: &[f64], a: &[f64]) -> Option<Sample> {
+    match name {
+        "FourBar" => fourbar(&FourBar::<f64>::default(), q, w, a),
+        "SixBar" => sixbar(&SixBar::<f64>::default(), q, w, a),
+        "Shaper" => shaper(&Shaper::<f64>::default(), q, w, a),
+        "SliderCrank" => slider_crank(&SliderCrank::<f64>::default(), q, w, a),
+        "FiveBar" => five_bar(&FiveBar::<f64>::default(), q, w, a),
+        _ => None,
+    }
+}

@@ -137,6 +137,57 @@ fn errors(
     e
 }
 
+/// Half an ulp of a cosine or sine in [0.5, 1) (f32): the angle by which a
+/// correctly rounded f32 `(cos, sin)` pair can be turned from the exact one
+/// per component (rad).
+pub const COS_SIN_HALF_ULP: f64 = 1.0 / 33_554_432.0;
+
+/// The f32 floor of a scene: how far its outputs move (relative to the column
+/// scales, positions and rates apart) when one input angle is turned by
+/// [`COS_SIN_HALF_ULP`], the worst over the grid (at the f32-rounded inputs)
+/// and the inputs, from the f64 generated code (accurate to about 1e-14, far
+/// below the differences). It is the conditioning times the rounding of the
+/// f32 cos/sin that every f32 evaluation starts from; the actual rounding of
+/// a pair can turn it by up to about `sqrt(2)` times as much, and also changes
+/// its length by as much (which the code can and should compensate).
+fn cos_sin_floor(
+    scene: &Scene,
+    grid32: &[Vec<f64>],
+    w: &[f64],
+    a: &[f64],
+    scale: &[f64],
+) -> (f64, f64) {
+    let (mut pos, mut rate) = (0.0f64, 0.0f64);
+    for q in grid32 {
+        let Some(base) = generated::f64_sample(scene.name, q, w, a) else {
+            continue;
+        };
+        for j in 0..q.len() {
+            let mut qj = q.clone();
+            qj[j] += COS_SIN_HALF_ULP;
+            let Some(p) = generated::f64_sample(scene.name, &qj, w, a) else {
+                continue;
+            };
+            for (k, c) in scene.columns.iter().enumerate() {
+                let (Some(x), Some(y)) = (base.cols[k], p.cols[k]) else {
+                    continue;
+                };
+                let d = if c.kind == Kind::Angle && c.order == 0 {
+                    wrap(y - x).abs()
+                } else {
+                    (y - x).abs()
+                } / scale[k];
+                if c.order == 0 && c.kind != Kind::Angle {
+                    pos = pos.max(d);
+                } else if c.order > 0 {
+                    rate = rate.max(d);
+                }
+            }
+        }
+    }
+    (pos, rate)
+}
+
 /// The reference at one grid point: columns and residual (`None`: failed).
 type RefPoint = Option<(Vec<Dd>, f64)>;
 
@@ -272,6 +323,7 @@ fn main() {
         all_problems.extend(p64);
         all_problems.extend(p32);
         let scale = scales(&scene, &ref64);
+        let floor = cos_sin_floor(&scene, &grid32, &rates32, &accels32, &scale);
         let max_res = ref64.iter().flatten().map(|r| r.1).fold(0.0f64, f64::max);
         for m in ms.iter_mut() {
             let (g, r) = match m.precision {
@@ -364,8 +416,15 @@ fn main() {
             csv,
         )
         .expect("write csv");
-        let _ = writeln!(md, "\nPlot: `target/report/{file}`.\n");
-        target_lines.extend(methods::targets(&scene, &ms));
+        let _ = writeln!(
+            md,
+            "\nf32 floor (conditioning times the rounding of the f32 cos/sin: every input \
+             turned by 2^-25 rad, f64 code): positions {}, rates {} (relative, as in the table).\n",
+            sci(floor.0),
+            sci(floor.1)
+        );
+        let _ = writeln!(md, "Plot: `target/report/{file}`.\n");
+        target_lines.extend(methods::targets(&scene, &ms, floor));
     }
     let _ = writeln!(md, "## Targets (issue 5)\n");
     for l in &target_lines {

@@ -410,7 +410,8 @@ fn ok(b: bool) -> &'static str {
 }
 
 /// The issue's targets for one scene, as sentences with the measured figures.
-pub fn targets(scene: &Scene, ms: &[Method]) -> Vec<String> {
+/// `floor`: the f32 floor of the scene (positions, rates; `main::cos_sin_floor`).
+pub fn targets(scene: &Scene, ms: &[Method], floor: (f64, f64)) -> Vec<String> {
     let mut out = Vec::new();
     let find = |name: &str| ms.iter().find(|m| m.name == name);
     for m in ms.iter().filter(|m| m.family.starts_with("generated")) {
@@ -425,12 +426,15 @@ pub fn targets(scene: &Scene, ms: &[Method]) -> Vec<String> {
                 ok(e.angle_abs <= 1e-14 && e.rate_rel <= 1e-13 && e.failures == 0)
             ),
             Precision::F32 => format!(
-                "{} {}: angles {:.1e} rad, positions {:.1e}, rates {:.1e} relative (target 2e-6): {}",
+                "{} {}: angles {:.1e} rad, positions {:.1e}, rates {:.1e} relative (target 2e-6; \
+                 f32 floor from the cos/sin rounding: positions {:.1e}, rates {:.1e}): {}",
                 scene.name,
                 m.name,
                 e.angle_abs,
                 e.pos_rel,
                 e.rate_rel,
+                floor.0,
+                floor.1,
                 ok(e.angle_abs.max(e.rate_rel).max(e.pos_rel) <= 2e-6 && e.failures == 0)
             ),
         };

@@ -19,6 +19,16 @@
 //! `s = t + m sqrt((l - |k|)(l + |k|))` (`m = +1` for `Plus`), the factored
 //! form losing no digits near tangency (`|k| = l`).
 //!
+//! Near tangency the half chord `sqrt(l^2 - k^2)` amplifies an error `dk` of
+//! `k` by `|k| / sqrt(l^2 - k^2)`. In f32, where that matters, `l - |k|` is
+//! then formed from `k` carried as `kh + kl` (the products' and sums'
+//! rounding errors kept by Dekker's product and Knuth's two-sum: no fused
+//! multiply-add needed), and from the guide's direction divided by its
+//! length: a direction rounded from `(cos, sin)` is off unit length by up to
+//! an ulp, which taken as exact scales `k` by the same relative amount. In
+//! the f32 six-bar (`docs/stability.md`, "f32 six-bar") the two together were
+//! half of the largest rate error.
+//!
 //! Rates: differentiating `A + r1 = C` (`r1 = C - A`, turning at `omega1`) and
 //! `C = g.at(s, offset)` on a guide body moving at `(v_origin, omega)` gives
 //! `omega1 perp(r1) - s_dot dir = v_body(C) - vA`, a 2x2 system with columns
@@ -30,8 +40,8 @@
 use crate::driver::slider::{transport_acceleration, transport_velocity};
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    check_det_condition, cross, difference, dot, finite, finite_point, finite_vec, length, perp,
-    plus, positive,
+    abs, check_det_condition, cross, difference, dot, finite, finite_point, finite_vec, length,
+    perp, plus, positive,
 };
 use crate::guide::{Line, LineAcceleration, LineVelocity};
 use crate::link::{relative_acceleration, relative_velocity};
@@ -104,11 +114,30 @@ pub fn position<T: Real>(
     let dir = finite_vec(g.dir, P, "RRP guide direction")?;
     let p = finite_vec(a - g.origin, P, "RRP distance from the guide origin")?;
     let n = perp(&dir);
-    let t = dot(&p, &dir);
-    // Signed distance of A from the offset line (left positive).
-    let k = dot(&p, &n) - offset;
-    let h = if k < T::zero() { -k } else { k };
-    let gap = l - h; // < 0: the circle about A misses the line
+    let k0 = dot(&p, &n) - offset;
+    // Near tangency (`l - |k| < l / 4`, where the half chord amplifies an
+    // error of `k` by more than 1.1) and in f32, `k` is carried as `kh + kl`:
+    // `dot(p, n) / |dir| - offset` with the roundings of the products and sums
+    // kept, and the division by `|dir|` done to first order, `x / |dir| =
+    // x - x he` with `he = (|dir|^2 - 1) / 2` computed exactly enough (its
+    // error `(3/8)(2 he)^2 x` is below the rounding while `|dir|^2 - 1` is
+    // below `sqrt(eps)`; a direction rounded from `(cos, sin)` is off unit
+    // length by about an ulp). Elsewhere both corrections stay below an ulp.
+    let (kh, kl, he) = if compensated::<T>() && l - abs(k0) < T::lit(0.25) * l {
+        let (xh, xl) = split(dir.x);
+        let (yh, yl) = split(dir.y);
+        let he = half_excess(dir.x, xh, xl, dir.y, yh, yl);
+        let (q1, e1) = two_product_split(p.y, dir.x, xh, xl);
+        let (q2, e2) = two_product_split(p.x, dir.y, yh, yl);
+        let (pn, e3) = two_sum(q1, -q2);
+        let (kh, e4) = two_sum(pn, -offset);
+        (kh, (e1 - e2 + e3 + e4) - pn * he, he)
+    } else {
+        (k0, T::zero(), T::zero())
+    };
+    let (h, hl) = if kh < T::zero() { (-kh, -kl) } else { (kh, kl) };
+    // `l - h` is exact where it matters (h within a factor 2 of l: Sterbenz).
+    let gap = (l - h) - hl; // < 0: the circle about A misses the line
     let band = T::lit(4.0) * T::eps() * l;
     // (A NaN `gap`, from an overflowing product, flows on to the finite checks.)
     if gap < -band {
@@ -123,10 +152,76 @@ pub fn position<T: Real>(
     let gap = if gap < T::zero() { T::zero() } else { gap };
     // Half chord, sqrt(l^2 - k^2) factored: no cancellation near tangency.
     let half = mode.sign::<T>() * (gap * (l + h)).sqrt_kernel();
-    let r1 = dir * half - n * k;
+    let k = kh + kl;
+    // `dir half - n k` over `|dir|`, and `t = dot(p, dir) / |dir|`.
+    let r = dir * half - n * k;
+    let t = dot(&p, &dir);
+    let (r1, t) = if he != T::zero() {
+        (r - r * he, t - t * he)
+    } else {
+        (r, t)
+    };
     let s = finite(t + half, P, "RRP slide displacement s")?;
     let c = finite_point(a + r1, P, "RRP joint C")?;
     Ok(RrpPosition { c, r1, s })
+}
+
+/// Whether [`position`] carries rounding errors near tangency: for `f32`
+/// (24-bit significand), where without it the f32 six-bar's largest rate
+/// error was 7.3e-6 instead of 3.7e-6 (`docs/stability.md`, "f32 six-bar");
+/// not for `f64`, whose rounding is `2^29` times finer (the f64 six-bar is
+/// within 1.3e-14 without it) and where it would cost about a fifth of a
+/// six-bar evaluation. A constant after inlining (no branch at run time).
+#[inline(always)]
+fn compensated<T: Real>() -> bool {
+    T::eps() > T::lit(1e-10)
+}
+
+/// `(|v|^2 - 1) / 2` for a vector within a few ulp of unit length, with an
+/// error far below `eps` (error-free squares; `|v|^2` rounds into `[1/2, 2]`,
+/// where subtracting 1 is exact). `v = (x, y)` with both components split.
+#[inline(always)]
+fn half_excess<T: Real>(x: T, xh: T, xl: T, y: T, yh: T, yl: T) -> T {
+    let (xx, ex) = two_product_split(x, x, xh, xl);
+    let (yy, ey) = two_product_split(y, y, yh, yl);
+    let (ss, es) = two_sum(xx, yy);
+    ((ss - T::one()) + (es + ex + ey)) * T::lit(0.5)
+}
+
+/// `a + b = s + e` exactly, `s` the rounded sum (Knuth's two-sum: six
+/// additions, no branch; exact in binary floating point without overflow).
+#[inline(always)]
+fn two_sum<T: Real>(a: T, b: T) -> (T, T) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// `a b = p + e` exactly, `p` the rounded product, `b = bh + bl` given split
+/// (Dekker's product with Veltkamp's split, no fused multiply-add needed: the
+/// targets this crate is for, e.g. a Cortex-M4F through libm, have no fast
+/// one). Exact unless a factor exceeds about `max / 2^13` (f32: 4e34; the
+/// split then overflows and the NaN ends as a `NonFinite` error) or the
+/// product underflows.
+#[inline(always)]
+fn two_product_split<T: Real>(a: T, b: T, bh: T, bl: T) -> (T, T) {
+    let p = a * b;
+    let (ah, al) = split(a);
+    (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
+}
+
+/// Veltkamp's split `a = hi + lo`, each with at most half the significand's
+/// bits (so products of halves are exact): constant `2^ceil(p/2) + 1`, `p` the
+/// significand's bits (24 for f32, 53 for f64).
+#[inline(always)]
+fn split<T: Real>(a: T) -> (T, T) {
+    let c = if T::eps() > T::lit(1e-10) {
+        T::lit(4097.0)
+    } else {
+        T::lit(134_217_729.0)
+    } * a;
+    let hi = c - (c - a);
+    (hi, a - hi)
 }
 
 /// Determinant of the rate system, `dot(r1, dir) = +-sqrt(l^2 - k^2)`, checked
