@@ -317,6 +317,7 @@ fn ccv<A: Real, B: Real>(p: &rrr::RrrVelocity<A>) -> rrr::RrrVelocity<B> {
         omega2: c(p.omega2),
         vc: cv(&p.vc),
         condition: c(p.condition),
+        inv_det: c(p.inv_det),
     }
 }
 
@@ -517,6 +518,8 @@ fn chain(phi: f64, w: f64, al: f64, m: &[M; NS], ax: Ax) -> [f64; 24] {
             omega2: r(p.omega2),
             vc: rv(p.vc),
             condition: p.condition,
+            // Internal state of the group (like `condition`), not an output.
+            inv_det: p.inv_det,
         }
     });
     let ba = st!(m[10], s_ba(&b, w, al), rv);
