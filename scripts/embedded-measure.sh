@@ -24,23 +24,31 @@ elf="$fw/target/$target/release/probe"
 single=(-singlestep)
 if ! qemu-system-arm -help | grep -q -- '-singlestep'; then single=(-accel tcg,one-insn-per-tb=on); fi
 
-# name|feature|scene|scalar
+# name|feature|scene|scalar|opt-level (the firmware profile's unless given)
+# Each row is measured against the empty baseline of its scalar and
+# opt-level (base64/base32, and base32s for the opt-level "s" rows).
 scenes=(
-  "base|||"
-  "pos32|pos32|position only|f32"
-  "vel32|vel32|position + velocity|f32"
-  "acc32|acc32|position + velocity + acceleration|f32"
-  "forces32|forces32|with forces (same four-bar in m, with masses)|f32"
-  "pos64|pos64|position only|f64"
-  "vel64|vel64|position + velocity|f64"
-  "acc64|acc64|position + velocity + acceleration|f64"
-  "forces64|forces64|with forces (same four-bar in m, with masses)|f64"
-  "crank32|crank32|crank driver alone, from an angle|f32"
-  "cossin32|cossin32|crank driver alone, from (cos, sin)|f32"
+  "base64|||f64|"
+  "base32|base32||f32|"
+  "pos32|pos32|position only|f32|"
+  "vel32|vel32|position + velocity|f32|"
+  "acc32|acc32|position + velocity + acceleration|f32|"
+  "forces32|forces32|with forces (same four-bar in m, with masses)|f32|"
+  "pos64|pos64|position only|f64|"
+  "vel64|vel64|position + velocity|f64|"
+  "acc64|acc64|position + velocity + acceleration|f64|"
+  "forces64|forces64|with forces (same four-bar in m, with masses)|f64|"
+  "crank32|crank32|crank driver alone, from an angle|f32|"
+  "cossin32|cossin32|crank driver alone, from (cos, sin)|f32|"
+  "base32s|base32||f32|s"
+  "pos32s|pos32|position only, opt-level \"s\"|f32|s"
+  "acc32s|acc32|position + velocity + acceleration, opt-level \"s\"|f32|s"
 )
-measure() { # feature -> "text rodata mean min max"
-  local feat="$1"
-  (cd "$fw" && if [ -n "$feat" ]; then cargo build -q --release --bin probe --features "$feat"; else cargo build -q --release --bin probe; fi) >&2
+measure() { # feature opt-level -> "text rodata mean min max"
+  local feat="$1" opt="$2" name="$3"
+  local env=()
+  [ -n "$opt" ] && env=(CARGO_PROFILE_RELEASE_OPT_LEVEL="$opt")
+  (cd "$fw" && env "${env[@]}" cargo build -q --release --bin probe ${feat:+--features "$feat"}) >&2
   local text rodata start end
   text=$(arm-none-eabi-size -A "$elf" | awk '$1==".text"{print $2}')
   rodata=$(arm-none-eabi-size -A "$elf" | awk '$1==".rodata"{print $2}')
@@ -53,43 +61,49 @@ measure() { # feature -> "text rodata mean min max"
   # Largest first, names demangled when the ARM c++filt is there.
   local filt=cat
   if command -v arm-none-eabi-c++filt >/dev/null; then filt=arm-none-eabi-c++filt; fi
-  sort -k3 -n -r "$work/count.txt" | grep '^fn ' | head -6 | sed 's/^fn //' | $filt | sed 's/^/    /' > "$work/top-$feat.txt" || true
+  sort -k3 -n -r "$work/count.txt" | grep '^fn ' | head -6 | sed 's/^fn //' | $filt | sed 's/^/    /' > "$work/top-$name.txt" || true
   echo "$text $rodata $(awk '/^evaluations/{print $4, $6, $8}' "$work/count.txt")"
+}
+base_of() { # scalar opt -> baseline row name
+  if [ "$1" = f64 ]; then echo base64; elif [ "$2" = s ]; then echo base32s; else echo base32; fi
 }
 
 declare -A T R M LO HI
 for s in "${scenes[@]}"; do
-  IFS='|' read -r name feat desc scalar <<< "$s"
-  read -r T[$name] R[$name] M[$name] LO[$name] HI[$name] < <(measure "$feat")
+  IFS='|' read -r name feat desc scalar opt <<< "$s"
+  read -r T[$name] R[$name] M[$name] LO[$name] HI[$name] < <(measure "$feat" "$opt" "$name")
 done
 
 echo "| scene | scalar | .text bytes | .rodata bytes | instructions / evaluation (mean, min-max of 72) |"
 echo "|---|---|---:|---:|---|"
 for s in "${scenes[@]}"; do
-  IFS='|' read -r name feat desc scalar <<< "$s"
-  [ "$name" = base ] && continue
+  IFS='|' read -r name feat desc scalar opt <<< "$s"
+  [ -z "$desc" ] && continue
+  b=$(base_of "$scalar" "$opt")
   awk -v d="$desc" -v sc="$scalar" -v t="${T[$name]}" -v r="${R[$name]}" -v m="${M[$name]}" -v lo="${LO[$name]}" -v hi="${HI[$name]}" \
-      -v bt="${T[base]}" -v br="${R[base]}" -v bm="${M[base]}" 'BEGIN {
+      -v bt="${T[$b]}" -v br="${R[$b]}" -v bm="${M[$b]}" 'BEGIN {
     printf "| %s | %s | %d | %d | %.0f (%d-%d) |\n", d, sc, t - bt, r - br, m - bm, lo - bm, hi - bm }'
 done
 echo
-echo "Baseline: .text ${T[base]} bytes, .rodata ${R[base]} bytes, ${M[base]} instructions around an empty call."
+for b in base64 base32 base32s; do
+  echo "Baseline $b: .text ${T[$b]} bytes, .rodata ${R[$b]} bytes, ${M[$b]} instructions around an empty call."
+done
 echo
 echo "Where the instructions go (per evaluation, largest first; the inlined generated code is the scene function):"
 for s in "${scenes[@]}"; do
-  IFS='|' read -r name feat desc scalar <<< "$s"
-  [ "$name" = base ] && continue
+  IFS='|' read -r name feat desc scalar opt <<< "$s"
+  [ -z "$desc" ] && continue
   echo "- $desc, $scalar:"
   echo '```'
-  cat "$work/top-$feat.txt"
+  cat "$work/top-$name.txt"
   echo '```'
 done
 
 if [ "${1:-}" = --check ]; then
   fail=0
-  acc=$(awk -v m="${M[acc32]}" -v b="${M[base]}" 'BEGIN{printf "%d", m - b}')
-  pos=$(awk -v m="${M[pos32]}" -v b="${M[base]}" 'BEGIN{printf "%d", m - b}')
-  size=$(( T[acc32] - T[base] ))
+  acc=$(awk -v m="${M[acc32]}" -v b="${M[base32]}" 'BEGIN{printf "%d", m - b}')
+  pos=$(awk -v m="${M[pos32]}" -v b="${M[base32]}" 'BEGIN{printf "%d", m - b}')
+  size=$(( T[acc32] - T[base32] ))
   [ "$acc" -le 800 ] || { echo "target missed: four-bar f32 full scene $acc > 800 instructions" >&2; fail=1; }
   [ "$size" -le 3072 ] || { echo "target missed: four-bar f32 full scene $size > 3072 bytes of .text" >&2; fail=1; }
   [ $(( pos * 100 )) -le $(( acc * 40 )) ] || { echo "target missed: position-only $pos > 40% of $acc" >&2; fail=1; }
