@@ -288,6 +288,53 @@ fn sqrt_normal(x: f32) -> f32 {
     y
 }
 
+/// `pi/2 = PIO2_HI + PIO2_LO` to about 6e-17: `PIO2_HI` is `pi/2` rounded to
+/// f32 (1.57079637), `PIO2_LO` the rest (-4.37e-8) rounded to f32.
+const PIO2_HI: f32 = f32::from_bits(0x3FC9_0FDB);
+const PIO2_LO: f32 = f32::from_bits(0xB33B_BD2E);
+/// `pi = PI_HI + PI_LO` likewise (3.14159274 and -8.74e-8).
+const PI_HI: f32 = f32::from_bits(0x4049_0FDB);
+const PI_LO: f32 = f32::from_bits(0xB3BB_BD2E);
+
+/// `atan t = t + t^3 (A3 + A5 s + ... + A17 s^7)`, `s = t^2`, on `[0, 1]`:
+/// the minimax approximation for the relative error (see [`atan2_f32`]).
+const A3: f32 = f32::from_bits(0xBEAA_AA9F);
+const A5: f32 = f32::from_bits(0x3E4C_C8F2);
+const A7: f32 = f32::from_bits(0xBE12_1056);
+const A9: f32 = f32::from_bits(0x3DE0_4894);
+const A11: f32 = f32::from_bits(0xBDAC_1216);
+const A13: f32 = f32::from_bits(0x3D6D_5C91);
+const A15: f32 = f32::from_bits(0xBCFF_827C);
+const A17: f32 = f32::from_bits(0x3C33_1D2D);
+const A19: f32 = f32::from_bits(0xBAEB_ED18);
+
+/// `atan2(y, x)` (rad, in `[-pi, pi]`), single-precision arithmetic only.
+#[inline(never)]
+pub fn atan2_f32(y: f32, x: f32) -> f32 {
+    let (ax, ay) = (x.abs(), y.abs());
+    let swap = ay > ax;
+    let (mn, mx) = if swap { (ax, ay) } else { (ay, ax) };
+    let mut t = mn / mx;
+    if t.is_nan() {
+        // A NaN argument, both zero (0/0) or both infinite (inf/inf).
+        if x.is_nan() || y.is_nan() {
+            return x + y;
+        }
+        t = if mx == 0.0 { 0.0 } else { 1.0 };
+    }
+    let s = t * t;
+    let p = A3
+        + s * (A5 + s * (A7 + s * (A9 + s * (A11 + s * (A13 + s * (A15 + s * (A17 + s * A19)))))));
+    let c = t * s * p;
+    let r = match (swap, x.is_sign_negative()) {
+        (false, false) => t + c,
+        (false, true) => (PI_LO - (t + c)) + PI_HI,
+        (true, false) => (PIO2_HI - t) + (PIO2_LO - c),
+        (true, true) => (PIO2_LO + (t + c)) + PIO2_HI,
+    };
+    r.copysign(y)
+}
+
 #[cfg(test)]
 mod tests {
     extern crate std;
@@ -506,5 +553,48 @@ mod tests {
             "worst sin error {es:.4} ulp at {xs_:e}; worst cos error {ec:.4} ulp at {xc:e}"
         );
         assert!(es <= BOUND_ULP && ec <= BOUND_ULP);
+    }
+
+    /// Error of [`atan2_f32`] against `f64` (`std`'s `atan2` of the widened
+    /// arguments, correct to about 1 ulp of f64: far below the f32 bound).
+    fn atan2_err(y: f32, x: f32) -> f64 {
+        ulps(atan2_f32(y, x), (y as f64).atan2(x as f64))
+    }
+
+    /// The worst error over the given `(y, x)` pairs, with the pair.
+    fn worst_atan2(pairs: impl Iterator<Item = (f32, f32)>) -> (f64, f32, f32) {
+        let mut w = (0.0, 0.0f32, 0.0f32);
+        for (y, x) in pairs {
+            let e = atan2_err(y, x);
+            // `!(e <= w)` also catches a NaN error (a NaN result).
+            if !(e <= w.0) {
+                w = (e, y, x);
+            }
+        }
+        w
+    }
+
+    /// `(y, x)`, `(y, -x)`, `(-y, x)`, `(-y, -x)`: the four fix-ups.
+    fn four_signs((y, x): (f32, f32)) -> [(f32, f32); 4] {
+        [(y, x), (y, -x), (-y, x), (-y, -x)]
+    }
+
+    #[test]
+    #[ignore = "experiment"]
+    fn atan2_experiment() {
+        // t near 1 and across [0, 1], both orders, all signs.
+        let xs = [1.0f32, 1.3, 1.5, 1.7, 1.9999, 1.123_456_7, 1.000_001];
+        for x in xs {
+            let lo = (x * 1e-3).to_bits();
+            let hi = (x * 1e3).to_bits();
+            for k in 0..4 {
+                let w = worst_atan2(
+                    (lo..=hi)
+                        .step_by(7)
+                        .map(move |b| four_signs((f32::from_bits(b), x))[k]),
+                );
+                std::println!("x = {x} signs {k}: {w:?}");
+            }
+        }
     }
 }
