@@ -38,8 +38,8 @@ pub trait Real: RealField + Copy {
     /// `atan2(self, x)`: the angle (rad, in `[-pi, pi]`) of the vector
     /// `(x, self)` from +x, counter-clockwise, with libm's conventions for
     /// signed zeros, infinities and NaN. `f32` on 32-bit ARM through
-    /// [`crate::trig::atan2_f32`] (within 2 ulp, about 55 instructions on a
-    /// Cortex-M4F against libm's 80), elsewhere and for `f64` through
+    /// [`crate::trig::atan2_f32`] (within 2 ulp, about 52 instructions on a
+    /// Cortex-M4F against libm's 81), elsewhere and for `f64` through
     /// nalgebra's `atan2` (libm, or `std` when enabled).
     fn atan2_kernel(self, x: Self) -> Self;
 }

@@ -64,7 +64,7 @@
 //! `atanf`, which reduces its argument to one of four intervals (a division
 //! and a table), special-case tests on the bit patterns of both arguments,
 //! about 80 instructions per call on a Cortex-M4F. [`atan2_f32`] takes one
-//! division to `[0, 1]` and one polynomial there, about 55 (see its
+//! division to `[0, 1]` and one polynomial there, about 52 (see its
 //! documentation for the method and the error).
 //!
 //! The digits of `2/pi` and `pi/2` below are the standard binary expansions
