@@ -60,7 +60,7 @@ pub fn length<T: Real>(v: &Vector2<T>) -> T {
 /// Angle of `v` from +x, counter-clockwise, in radians in `(-pi, pi]`.
 #[inline(always)]
 pub fn angle<T: Real>(v: &Vector2<T>) -> T {
-    v.y.atan2(v.x)
+    v.y.atan2_kernel(v.x)
 }
 
 /// `angle` (rad) reduced to `(-pi, pi]`: `angle - 2 pi k` with `k` the nearest

@@ -14,12 +14,12 @@
 //! Checked: `position`, `velocity`, `acceleration` and `solve` of every
 //! example mechanism (`examples/common/scenes.rs`) in f32 and f64, `solve`
 //! (with the generated `forces()`) of the definitions with masses, and the
-//! f32 kernels `sin_cos_f32` and `sqrt_f32`.
+//! f32 kernels `sin_cos_f32`, `sqrt_f32` and `atan2_f32`.
 
 #[path = "../../../examples/common/scenes.rs"]
 mod scenes;
 
-use mechanism::trig::{sin_cos_f32, sqrt_f32};
+use mechanism::trig::{atan2_f32, sin_cos_f32, sqrt_f32};
 use mechanism::Error;
 #[cfg(feature = "no-panic")]
 use no_panic::no_panic;
@@ -113,9 +113,9 @@ checked_forces! {
 
 #[cfg_attr(feature = "no-panic", no_panic)]
 #[inline(never)]
-fn kernels(x: f32) -> (f32, f32, f32) {
+fn kernels(x: f32) -> (f32, f32, f32, f32) {
     let (s, c) = sin_cos_f32(x);
-    (s, c, sqrt_f32(x))
+    (s, c, sqrt_f32(x), atan2_f32(s, x))
 }
 
 /// Calls all four analyses of one mechanism through function pointers hidden
@@ -199,7 +199,7 @@ fn main() {
             q,
             ShaperForcesLoads { cut: -5000.0 }
         );
-        let k: fn(f32) -> (f32, f32, f32) = black_box(kernels);
+        let k: fn(f32) -> (f32, f32, f32, f32) = black_box(kernels);
         black_box(k(black_box(q as f32 * 1.0e3)));
     }
     println!(
