@@ -154,10 +154,13 @@ pub fn position<T: Real>(
 #[cold]
 #[inline(never)]
 fn bad_input<T: Real>(d: &Vector2<T>, l1: T, l2: T) -> Option<Error> {
-    positive(l1, P, "RRR length l1")
-        .and(positive(l2, P, "RRR length l2"))
-        .and(finite_vec(*d, P, "RRR joint distance"))
-        .err()
+    if let Err(e) = positive(l1, P, "RRR length l1") {
+        return Some(e);
+    }
+    if let Err(e) = positive(l2, P, "RRR length l2") {
+        return Some(e);
+    }
+    finite_vec(*d, P, "RRR joint distance").err()
 }
 
 /// The error of a [`position`] call whose triangle does not close by more
