@@ -37,10 +37,10 @@ pub trait Real: RealField + Copy {
     fn sqrt_kernel(self) -> Self;
     /// `atan2(self, x)`: the angle (rad, in `[-pi, pi]`) of the vector
     /// `(x, self)` from +x, counter-clockwise, with libm's conventions for
-    /// signed zeros, infinities and NaN. `f32` on 32-bit ARM through
-    /// [`crate::trig::atan2_f32`] (within 2 ulp, about 52 instructions on a
-    /// Cortex-M4F against libm's 81), elsewhere and for `f64` through
-    /// nalgebra's `atan2` (libm, or `std` when enabled).
+    /// signed zeros, infinities and NaN. `f32` through
+    /// [`crate::trig::atan2_f32`] (within 2 ulp; cheaper than libm's on a
+    /// Cortex-M4F and on x86-64), `f64` through nalgebra's `atan2` (libm, or
+    /// `std` when enabled).
     fn atan2_kernel(self, x: Self) -> Self;
 }
 
@@ -123,14 +123,9 @@ impl Real for f32 {
     fn atan2_kernel(self, x: Self) -> Self {
         // libm's `atan2f` is single precision too, but a general routine
         // (an `atanf` call, four reduction intervals, more special-case
-        // tests); the kernel is cheaper on a Cortex-M4F. Elsewhere libm's.
-        #[cfg(target_arch = "arm")]
-        {
-            crate::trig::atan2_f32(self, x)
-        }
-        #[cfg(not(target_arch = "arm"))]
-        {
-            <f32 as nalgebra::RealField>::atan2(self, x)
-        }
+        // tests); the kernel is cheaper everywhere measured: about 52
+        // instructions against 81 on a Cortex-M4F, 6.5 ns against 10 ns
+        // (glibc) on the x86-64 development machine.
+        crate::trig::atan2_f32(self, x)
     }
 }
