@@ -1,6 +1,9 @@
 //! Criterion benchmarks of the generated code of every example scene, f32 and
-//! f64: one evaluation (position + velocity + acceleration) and a 3600-point
-//! sweep over the input range. `cargo bench --bench scenes`.
+//! f64: each analysis alone at one input (`position`, `velocity` at a given
+//! position, `acceleration` at a given position and velocity, and `forces`
+//! for the scenes with masses), one whole evaluation (`solve`) and a
+//! 3600-point sweep of `solve` over the input range.
+//! `cargo bench --bench scenes`.
 
 #[path = "../examples/common/scenes.rs"]
 mod scenes;
@@ -27,12 +30,27 @@ macro_rules! bench_scene {
         bench_scene!(@prec g, $ty, $in, $field, $lo, $hi, $w, $a, f32);
         g.finish();
     }};
+    // Each analysis alone, from the previous ones' results.
+    (@analyses $g:ident, $m:ident, $one:ident, $w:ident, $a:ident, $t:ty) => {{
+        let pos = $m.position(&$one).expect("the bench input assembles");
+        let vel = $m.velocity(&pos, &$w).expect("regular");
+        $g.bench_function(BenchmarkId::new("position", stringify!($t)), |b| {
+            b.iter(|| $m.position(black_box(&$one)))
+        });
+        $g.bench_function(BenchmarkId::new("velocity", stringify!($t)), |b| {
+            b.iter(|| $m.velocity(black_box(&pos), &$w))
+        });
+        $g.bench_function(BenchmarkId::new("acceleration", stringify!($t)), |b| {
+            b.iter(|| $m.acceleration(black_box(&pos), &vel, &$a))
+        });
+    }};
     (@prec $g:ident, $ty:ident, $in:ident, $field:ident, $lo:expr, $hi:expr, $w:expr, $a:expr, $t:ty) => {{
         let m = $ty::<$t>::default();
         let inputs: Vec<$in<$t>> = grid($lo, $hi).into_iter().map(|q| $in { $field: q as $t }).collect();
         let (w, a) = ($in { $field: $w as $t }, $in { $field: $a as $t });
         let one = inputs[N / 3];
         $g.throughput(Throughput::Elements(1));
+        bench_scene!(@analyses $g, m, one, w, a, $t);
         $g.bench_function(BenchmarkId::new("one", stringify!($t)), |b| {
             b.iter(|| m.solve(black_box(&one), &w, &a))
         });
@@ -117,6 +135,7 @@ fn scenes(c: &mut Criterion) {
             let a = FiveBarInput { q1: 2.0, q2: -0.5 };
             let one = inputs[N / 3];
             g.throughput(Throughput::Elements(1));
+            bench_scene!(@analyses g, m, one, w, a, $t);
             g.bench_function(BenchmarkId::new("one", stringify!($t)), |b| {
                 b.iter(|| m.solve(black_box(&one), &w, &a))
             });
@@ -133,6 +152,53 @@ fn scenes(c: &mut Criterion) {
     five!(f64);
     five!(f32);
     g.finish();
+    forces(c);
+}
+
+/// The force analysis alone (at a given position, velocity and
+/// acceleration) and the whole `solve` of the two scenes with masses.
+fn forces(c: &mut Criterion) {
+    macro_rules! with_masses {
+        ($label:expr, $ty:ident, $in:ident, $field:ident, $w:expr, $a:expr, ($($loads:tt)*)) => {{
+            let mut g = c.benchmark_group($label);
+            g.throughput(Throughput::Elements(1));
+            with_masses!(@prec g, $ty, $in, $field, $w, $a, ($($loads)*), f64);
+            with_masses!(@prec g, $ty, $in, $field, $w, $a, ($($loads)*), f32);
+            g.finish();
+        }};
+        (@prec $g:ident, $ty:ident, $in:ident, $field:ident, $w:expr, $a:expr, ($($loads:tt)*), $t:ty) => {{
+            let m = $ty::<$t>::default();
+            let one = $in { $field: 1.0 as $t };
+            let (w, a) = ($in { $field: $w as $t }, $in { $field: $a as $t });
+            let pos = m.position(&one).expect("the bench input assembles");
+            let vel = m.velocity(&pos, &w).expect("regular");
+            let acc = m.acceleration(&pos, &vel, &a).expect("regular");
+            $g.bench_function(BenchmarkId::new("forces", stringify!($t)), |b| {
+                b.iter(|| m.forces(black_box(&pos), &vel, &acc $($loads)*))
+            });
+            $g.bench_function(BenchmarkId::new("one", stringify!($t)), |b| {
+                b.iter(|| m.solve(black_box(&one), &w, &a $($loads)*))
+            });
+        }};
+    }
+    with_masses!(
+        "SineMechanism",
+        SineMechanism,
+        SineMechanismInput,
+        phi1,
+        10.0,
+        0.0,
+        ()
+    );
+    with_masses!(
+        "ShaperForces",
+        ShaperForces,
+        ShaperForcesInput,
+        crank,
+        1.0,
+        0.7,
+        (, &ShaperForcesLoads { cut: 5000.0 })
+    );
 }
 
 criterion_group!(benches, scenes);
