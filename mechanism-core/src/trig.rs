@@ -75,12 +75,13 @@
 /// `pi/4` rounded down to `f32` (0.78539813...), the no-reduction threshold.
 const PIO4_F32_DOWN: f32 = f32::from_bits(0x3F49_0FDA);
 
-/// `2^-12`: below it `x` and 1 are the rounded sine and cosine (within 1 ulp).
-const TINY: f32 = 1.0 / 4096.0;
-
-/// The binary expansion of `2/pi` after the point, 32 bits per word: enough
-/// for the largest finite `f32` (exponent 127: bits up to about 200 are used).
+/// The binary expansion of `2/pi` after the point, 32 bits per word, behind
+/// one word of zeros (`TWO_OVER_PI[i]` holds bits `32 i - 31 ..= 32 i` after
+/// the point; the zeros are "bits" `-31 ..= 0`): the windows of [`reduce`]
+/// start between bit -20 and bit 103 and are 96 bits long, so the last word
+/// used holds bits 193..=224.
 const TWO_OVER_PI: [u32; 8] = [
+    0,
     0xA2F9_836E,
     0x4E44_1529,
     0xFC27_57D1,
@@ -88,7 +89,6 @@ const TWO_OVER_PI: [u32; 8] = [
     0xDB62_9599,
     0x3C43_9041,
     0xFE51_63AB,
-    0xDEBB_C561,
 ];
 
 /// `pi/2 * 2^30`, rounded to nearest (31 bits).
@@ -107,21 +107,20 @@ const C10: f32 = -1.0 / 3_628_800.0;
 
 /// `(sin x, cos x)` for `x` in radians, within 2 ulp for every finite `f32`
 /// (see the module documentation); `(NaN, NaN)` for a non-finite `x`.
+///
+/// One evaluation of the two polynomials serves every path: an argument that
+/// needs no reduction is the reduced one with `q = 0`, `lo = 0` (the terms in
+/// `lo` then add exact zeros), and the quadrant and the sign of `x` are
+/// applied by swapping and flipping sign bits.
 #[inline]
 pub fn sin_cos_f32(x: f32) -> (f32, f32) {
     if !x.is_finite() {
         return (f32::NAN, f32::NAN);
     }
-    let ax = if x < 0.0 { -x } else { x };
-    if ax < TINY {
-        // sin x = x (1 - x^2/6 + ...) and cos x = 1 - x^2/2 + ... round to x
-        // and 1 here (relative terms below 2^-25); keeps the sign of -0.0.
-        return (x, 1.0);
-    }
-    if ax <= PIO4_F32_DOWN {
-        return (sin_poly(x), cos_poly(x));
-    }
-    let (q, hi, lo) = if ax < FAST_LIMIT {
+    let ax = x.abs();
+    let (q, hi, lo) = if ax <= PIO4_F32_DOWN {
+        (0, ax, 0.0)
+    } else if ax < FAST_LIMIT {
         reduce_small(ax)
     } else {
         let (q, r) = reduce(ax);
@@ -129,20 +128,20 @@ pub fn sin_cos_f32(x: f32) -> (f32, f32) {
     };
     // sin(hi + lo) = sin hi + lo cos hi and cos(hi + lo) = cos hi - lo sin hi
     // to far below f32 resolution (|lo| is below 2^-20 |hi| + 2^-36), with
-    // cos hi ~ 1 - hi^2/2 and sin hi ~ hi in the correction terms.
+    // cos hi ~ 1 - hi^2/2 and sin hi ~ hi in the correction terms. For
+    // |x| < 2^-12 the series give x and 1 correctly rounded (the terms past
+    // the first are below 2^-25 relative; x^2 may underflow to 0, exactly).
     let s = sin_poly(hi) + lo * (1.0 - 0.5 * hi * hi);
     let c = cos_poly(hi) - lo * hi;
-    let (s, c) = match q & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    };
-    if x < 0.0 {
-        (-s, c)
-    } else {
-        (s, c)
-    }
+    // Quadrant q: (s, c), (c, -s), (-s, -c), (-c, s); then sin(-x) = -sin x
+    // (by the sign bit, so -0.0 keeps its sign).
+    let (s, c) = if q & 1 == 0 { (s, c) } else { (c, s) };
+    let s_flip = ((q & 2) << 30) ^ (x.to_bits() & 0x8000_0000);
+    let c_flip = (q.wrapping_add(1) & 2) << 30;
+    (
+        f32::from_bits(s.to_bits() ^ s_flip),
+        f32::from_bits(c.to_bits() ^ c_flip),
+    )
 }
 
 /// `sin r` for `|r| <= pi/4`.
@@ -157,16 +156,6 @@ fn sin_poly(r: f32) -> f32 {
 fn cos_poly(r: f32) -> f32 {
     let r2 = r * r;
     1.0 - 0.5 * r2 + r2 * r2 * (C4 + r2 * (C6 + r2 * (C8 + r2 * C10)))
-}
-
-/// The 32 bits of `2/pi` after its first `pos` bits (`pos <= 166`).
-#[inline(always)]
-fn bits32(pos: u32) -> u32 {
-    // pos <= 166 below, so the word index is at most 5 and idx + 1 <= 6; the
-    // mask only tells the compiler so (no bounds check, no panic path).
-    let idx = ((pos / 32) & 7) as usize;
-    let pair = (u64::from(TWO_OVER_PI[idx]) << 32) | u64::from(TWO_OVER_PI[(idx + 1) & 7]);
-    ((pair << (pos % 32)) >> 32) as u32
 }
 
 /// Above this, [`reduce`]; below, [`reduce_small`] (at most 15 quadrants).
@@ -209,54 +198,59 @@ fn pow2(k: i32) -> f32 {
     f32::from_bits(((127 + k) as u32) << 23)
 }
 
-/// Reduces a finite `ax > pi/4` to `(q, r)` with `ax = (4n + q) pi/2 + r`,
-/// `|r| <= pi/4` (see the module documentation for the error). 32- and
-/// 64-bit integer arithmetic only (a Cortex-M4 multiplies 32 x 32 -> 64 bits
-/// in one instruction).
+/// Reduces a finite `ax >= 24` (any finite `ax > pi/4` works) to `(q, r)`
+/// with `ax = (4n + q) pi/2 + r`, `|r| <= pi/4` (see the module
+/// documentation for the error). 32-bit integer arithmetic and three
+/// 32 x 32 multiplies (a Cortex-M4 multiplies 32 x 32 -> 64 bits in one
+/// instruction).
 #[inline(never)]
 fn reduce(ax: f32) -> (u32, f32) {
     let bits = ax.to_bits();
-    // ax > pi/4 is normal: the biased exponent is 126..=254.
-    let biased = ((bits >> 23) & 0xFF) as i32;
-    let m = u64::from((bits & 0x007F_FFFF) | 0x0080_0000);
-    // ax = m * 2^e, m a 24-bit integer, e in -24..=104.
-    let e = biased - 150;
-    // Bits of 2/pi at positions <= e - 2 contribute multiples of 4 (whole
-    // turns) to ax * 2/pi: skip them. skip <= 102.
-    let skip = if e > 2 { (e - 2) as u32 } else { 0 };
-    // The 96-bit window w0:w1:w2 of 2/pi after `skip` bits; P = m * window
-    // (< 2^120) as hi:lo (64 bits each), and ax * 2/pi = P * 2^-f (mod the
-    // skipped whole turns) with f = 96 + skip - e, in 94..=120.
-    let (w0, w1, w2) = (bits32(skip), bits32(skip + 32), bits32(skip + 64));
-    let a = m * u64::from(w2);
-    let b = m * u64::from(w1);
-    let c = m * u64::from(w0);
-    let (lo, carry) = a.overflowing_add(b << 32);
-    let hi = c + (b >> 32) + u64::from(carry);
-    let f = (96 + skip as i32 - e) as u32;
-    // Quadrant: bits f and f + 1 of P; fraction: the 64 bits below bit f.
-    let sh = f - 64; // 30..=56
-    let mut q = ((hi >> sh) & 3) as u32;
-    let mut frac = (hi << (64 - sh)) | (lo >> sh);
-    let mut negative = false;
-    if frac >> 63 != 0 {
+    // ax = m * 2^e, m a 24-bit integer; ax > pi/4 is normal: the biased
+    // exponent is 126..=254 and e = biased - 150 in -24..=104.
+    let m = (bits & 0x007F_FFFF) | 0x0080_0000;
+    // The 96-bit window W of 2/pi from bit e - 1 to bit e + 94 after the
+    // point (bits before the point are zeros): the bits before it contribute
+    // multiples of 4 (whole turns) to ax * 2/pi, and with it
+    // ax * 2/pi = m W 2^-94 (mod 4), truncated by less than m 2^-94 < 2^-70.
+    // In the table the window starts `pos = e + 30` bits in (11..=134).
+    let pos = ((bits >> 23) & 0xFF).wrapping_sub(120);
+    let (idx, sh) = ((pos / 32) as usize, pos % 32);
+    // `& 7` only tells the compiler that the index is in range (idx <= 4).
+    let word = |j: usize| {
+        let (a, b) = (TWO_OVER_PI[(idx + j) & 7], TWO_OVER_PI[(idx + j + 1) & 7]);
+        (a << sh) | ((b >> 1) >> (31 - sh))
+    };
+    let (w0, w1, w2) = (word(0), word(1), word(2));
+    // The low 96 bits p2:p1:p0 of m W (the higher ones are whole turns).
+    let a = u64::from(m) * u64::from(w2);
+    let b = u64::from(m) * u64::from(w1) + (a >> 32);
+    let p2 = m.wrapping_mul(w0).wrapping_add((b >> 32) as u32);
+    let (p1, p0) = (b as u32, a as u32);
+    // Quadrant: bits 94 and 95 (the top two of p2); fraction: the 64 bits
+    // below them.
+    let mut q = p2 >> 30;
+    let mut frac = (u64::from((p2 << 2) | (p1 >> 30)) << 32) | u64::from((p1 << 2) | (p0 >> 30));
+    let negative = frac >> 63 != 0;
+    if negative {
         // Round to the nearest quadrant: r is negative.
         q = q.wrapping_add(1);
         frac = frac.wrapping_neg();
-        negative = true;
-    }
-    if frac == 0 {
-        return (q, 0.0);
     }
     // Normalize the fraction (value frac * 2^-64), keep 32 bits, times pi/2
-    // in fixed point (2^30 pi/2, 31 bits).
-    let lz = frac.leading_zeros();
-    let top = ((frac << lz) >> 32) as u32;
+    // in fixed point (2^30 pi/2, 31 bits). Its top word is never zero: it
+    // has at most 29 leading zeros for every finite f32 (module
+    // documentation); `& 31` only keeps the shifts in range.
+    let (fh, fl) = ((frac >> 32) as u32, frac as u32);
+    let lz = fh.leading_zeros() & 31;
+    let top = (fh << lz) | ((fl >> 1) >> (31 - lz));
     let prod = u64::from(top) * u64::from(PIO2_Q30);
-    let lz2 = prod.leading_zeros();
-    let hi32 = ((prod << lz2) >> 32) as u32;
+    // top >= 2^31 and PIO2_Q30 >= 2^30: prod >= 2^61, 1 or 2 leading zeros.
+    let (ph, pl) = ((prod >> 32) as u32, prod as u32);
+    let lz2 = ph.leading_zeros() & 31;
+    let hi32 = (ph << lz2) | ((pl >> 1) >> (31 - lz2));
     // frac * 2^-64 = top * 2^(-32 - lz), so r = prod * 2^(-62 - lz) = hi32 * 2^k,
-    // k = -30 - lz2 - lz, between -94 and -30: 2^k is normal.
+    // k = -30 - lz2 - lz, between -63 and -31: 2^k is normal.
     let k = -30 - (lz2 + lz) as i32;
     let r = (hi32 as f32) * pow2(k);
     (q, if negative { -r } else { r })
