@@ -269,8 +269,10 @@ pub fn sqrt_f32(x: f32) -> f32 {
         return x;
     }
     if x < f32::MIN_POSITIVE {
-        // Subnormal: sqrt(x 2^24) 2^-12, both scalings exact.
-        return sqrt_normal(x * pow2(24)) * pow2(-12);
+        // Subnormal: sqrt(x 2^24) 2^-12, both scalings exact; x 2^24 is
+        // normal, so this recursion is one level deep (and keeps a single
+        // copy of the Newton steps in the code).
+        return sqrt_f32(x * pow2(24)) * pow2(-12);
     }
     sqrt_normal(x)
 }
