@@ -22,7 +22,7 @@
 //!
 //! # Method
 //!
-//! 1. `|x| < 2^-12`: `(x, 1)`; `|x| <= pi/4`: no reduction.
+//! 1. `|x| <= pi/4`: no reduction (`q = 0`, `r = |x|`).
 //! 2. `|x| < 24` (within 15 quadrants, the usual crank angles): Cody-Waite in
 //!    f32 with `pi/2` in three parts and the rounding error carried, so that
 //!    `r` is known as `hi + lo` (see [`reduce_small`]); about 20 instructions.
@@ -30,10 +30,11 @@
 //!    exactly enough for every `f32` by the Payne-Hanek scheme in integer
 //!    arithmetic: the 24-bit significand times a 96-bit window of the binary
 //!    expansion of `2/pi` (the window starts where the bits stop contributing
-//!    whole turns), giving `|x| 2/pi mod 4` with at least 94 fraction bits;
-//!    the fraction is rounded to the nearest quadrant, normalized to 64 bits,
-//!    its top 32 bits multiplied by `pi/2` (31 bits) into a 64-bit product
-//!    and converted to `f32` once. The error of `r` is 0.5 ulp from that
+//!    whole turns, with zeros in front for small arguments, so that the
+//!    binary point of the product is always at bit 94), giving `|x| 2/pi mod
+//!    4` to within `2^-70`; the 64-bit fraction is rounded to the nearest
+//!    quadrant, normalized, its top 32 bits multiplied by `pi/2` (31 bits)
+//!    into a 64-bit product and converted to `f32` once. The error of `r` is 0.5 ulp from that
 //!    conversion plus about `2^-30 |r|` from the truncations, as long as the
 //!    fraction keeps 32 significant bits of its 64 (at most 32 leading
 //!    zeros). A scan of every `f32` above `pi/4` found at most 29 (the
@@ -44,8 +45,12 @@
 //!    `(pi/4)^11 / 11! < 1.8e-9` and `(pi/4)^12 / 12! < 1.2e-10`, under 0.05
 //!    ulp of the results there; Taylor rather than minimax coefficients so
 //!    that every coefficient is an exact, checkable `1/n!`.
+//!    One evaluation serves all three cases (the inline code is not
+//!    duplicated per path): no reduction is `q = 0` with the correction `lo`
+//!    of the reduced argument zero. For `|x| < 2^-12` the series round to
+//!    `x` and 1 (the second terms are below `2^-25` relative).
 //! 5. The quadrant picks `(+-sin r, +-cos r)` and the sign of `x` the sign of
-//!    the sine.
+//!    the sine (swaps and sign-bit flips, no branches).
 //!
 //! # Square root
 //!
