@@ -22,7 +22,10 @@
 //!
 //! # Method
 //!
-//! 1. `|x| <= pi/4`: no reduction (`q = 0`, `r = |x|`).
+//! 1. (Once a separate case, now part of 2.) `|x| < pi/4` (and a hair) needs
+//!    no reduction: the reduction of 2 gives `q = 0`, `hi = |x|`, `lo = 0`
+//!    there, exactly, so no branch of its own (fewer instructions on the
+//!    whole, and smaller).
 //! 2. `|x| < 24` (within 15 quadrants, the usual crank angles): Cody-Waite in
 //!    f32 with `pi/2` in three parts and the rounding error carried, so that
 //!    `r` is known as `hi + lo` (see [`reduce_small`]); about 20 instructions.
@@ -34,10 +37,12 @@
 //!    binary point of the product is always at bit 94), giving `|x| 2/pi mod
 //!    4` to within `2^-70`; the 64-bit fraction is rounded to the nearest
 //!    quadrant, normalized, its top 32 bits multiplied by `pi/2` (31 bits)
-//!    into a 64-bit product and converted to `f32` once. The error of `r` is 0.5 ulp from that
-//!    conversion plus about `2^-30 |r|` from the truncations, as long as the
-//!    fraction keeps 32 significant bits of its 64 (at most 32 leading
-//!    zeros). A scan of every `f32` above `pi/4` found at most 29 (the
+//!    into a 64-bit product whose top 32 bits (from bit 31) are converted to
+//!    `f32` once. The error of `r` is 0.5 ulp from that conversion plus below
+//!    `2^-29 |r|` from the truncations (the fraction's and the product's,
+//!    `2^-31` and `2^-30`, and `pi/2`'s rounding, `2^-31.6`), as long as the
+//!    fraction keeps 32 significant bits of its 64 (its top word is not
+//!    zero). A scan of every `f32` above `pi/4` found at most 29 (the
 //!    closest approach to a multiple of `pi/2`, relative to `pi/2`, is above
 //!    2^-30, at 2.2e10), and the exhaustive test finds the bound met.
 //! 4. `sin r` and `cos r` by their Taylor series through `r^9` and `r^10`
@@ -76,9 +81,6 @@
 //! (hexadecimal, most significant first); the tests check them indirectly:
 //! a wrong word would put large arguments' results far from `f64`'s, whose
 //! reduction uses its own table.
-
-/// `pi/4` rounded down to `f32` (0.78539813...), the no-reduction threshold.
-const PIO4_F32_DOWN: f32 = f32::from_bits(0x3F49_0FDA);
 
 /// The binary expansion of `2/pi` after the point, 32 bits per word, behind
 /// one word of zeros (`TWO_OVER_PI[i]` holds bits `32 i - 31 ..= 32 i` after
@@ -123,9 +125,7 @@ pub fn sin_cos_f32(x: f32) -> (f32, f32) {
         return (f32::NAN, f32::NAN);
     }
     let ax = x.abs();
-    let (q, hi, lo) = if ax <= PIO4_F32_DOWN {
-        (0, ax, 0.0)
-    } else if ax < FAST_LIMIT {
+    let (q, hi, lo) = if ax < FAST_LIMIT {
         reduce_small(ax)
     } else {
         let (q, r) = reduce(ax);
@@ -175,7 +175,7 @@ const P1: f32 = f32::from_bits(0x3FC9_0FD0);
 const P2: f32 = f32::from_bits(0x35AA_2210);
 const P3: f32 = f32::from_bits(0x2B51_846A);
 
-/// Cody-Waite reduction for `pi/4 < ax < 24` in f32 arithmetic:
+/// Cody-Waite reduction for `0 <= ax < 24` in f32 arithmetic:
 /// `(q, hi, lo)` with `ax = (4n + q) pi/2 + hi + lo`, `|hi| <= pi/4` (and a
 /// hair), `lo` the rounding error of `hi` (exact) minus `k P3`.
 ///
@@ -184,7 +184,8 @@ const P3: f32 = f32::from_bits(0x2B51_846A);
 /// (Knuth's two-sum). What remains is the rounding of `k P3` and of
 /// `err - k P3` (below 2^-60 here) and the `2.5e-20 k` left out of `pi/2`:
 /// far below 2^-24 of the smallest `|r|` of any f32 in this range (about
-/// 1.2e-8, at 3 pi/2), so `hi + lo` is `r` to about 2^-40 relative.
+/// 1.2e-8, at 3 pi/2), so `hi + lo` is `r` to about 2^-40 relative. For
+/// `k = 0` (`ax` below about `pi/4`) every step is exact: `hi = ax`, `lo = 0`.
 #[inline(always)]
 fn reduce_small(ax: f32) -> (u32, f32, f32) {
     let k = (ax * FRAC_2_PI + 0.5) as u32;
@@ -220,12 +221,11 @@ fn reduce(ax: f32) -> (u32, f32) {
     // ax * 2/pi = m W 2^-94 (mod 4), truncated by less than m 2^-94 < 2^-70.
     // In the table the window starts `pos = e + 30` bits in (11..=134).
     let pos = ((bits >> 23) & 0xFF).wrapping_sub(120);
-    let (idx, sh) = ((pos / 32) as usize, pos % 32);
-    // `& 7` only tells the compiler that the index is in range (idx <= 4).
-    let word = |j: usize| {
-        let (a, b) = (TWO_OVER_PI[(idx + j) & 7], TWO_OVER_PI[(idx + j + 1) & 7]);
-        (a << sh) | ((b >> 1) >> (31 - sh))
-    };
+    // `min` only tells the compiler that the words are in range (pos / 32
+    // <= 4 already).
+    let (idx, sh) = (((pos / 32) as usize).min(4), pos % 32);
+    let t = &TWO_OVER_PI[idx..idx + 4];
+    let word = |j: usize| (t[j] << sh) | ((t[j + 1] >> 1) >> (31 - sh));
     let (w0, w1, w2) = (word(0), word(1), word(2));
     // The low 96 bits p2:p1:p0 of m W (the higher ones are whole turns).
     let a = u64::from(m) * u64::from(w2);
@@ -250,13 +250,13 @@ fn reduce(ax: f32) -> (u32, f32) {
     let lz = fh.leading_zeros() & 31;
     let top = (fh << lz) | ((fl >> 1) >> (31 - lz));
     let prod = u64::from(top) * u64::from(PIO2_Q30);
-    // top >= 2^31 and PIO2_Q30 >= 2^30: prod >= 2^61, 1 or 2 leading zeros.
-    let (ph, pl) = ((prod >> 32) as u32, prod as u32);
-    let lz2 = ph.leading_zeros() & 31;
-    let hi32 = (ph << lz2) | ((pl >> 1) >> (31 - lz2));
+    // top >= 2^31 and PIO2_Q30 >= 2^30: 2^61 <= prod < 2^63, so its top 32
+    // bits from bit 31 have 31 or 32 significant ones (truncated by less
+    // than 2^-30 relative), rounded once to f32 by the conversion.
+    let hi32 = (prod >> 31) as u32;
     // frac * 2^-64 = top * 2^(-32 - lz), so r = prod * 2^(-62 - lz) = hi32 * 2^k,
-    // k = -30 - lz2 - lz, between -63 and -31: 2^k is normal.
-    let k = -30 - (lz2 + lz) as i32;
+    // k = -31 - lz, between -62 and -31: 2^k is normal.
+    let k = -31 - lz as i32;
     let r = (hi32 as f32) * pow2(k);
     (q, if negative { -r } else { r })
 }
@@ -494,9 +494,10 @@ mod tests {
     }
 
     #[test]
-    #[ignore = "exhaustive over the small-argument path: seconds in release"]
+    #[ignore = "exhaustive over the small-argument path [0, 24]: a minute in release"]
     fn exhaustive_small_path_within_2_ulp() {
-        let lo = PIO4_F32_DOWN.to_bits();
+        // From 0: the path also serves the arguments that need no reduction.
+        let lo = 0;
         let hi = FAST_LIMIT.to_bits() + 16;
         let ((es, xs_), (ec, xc)) = worst((lo..=hi).map(f32::from_bits));
         std::println!("small path: worst sin {es:.4} ulp at {xs_:e}; cos {ec:.4} ulp at {xc:e}");
