@@ -22,7 +22,10 @@
 //!
 //! # Method
 //!
-//! 1. `|x| < 2^-12`: `(x, 1)`; `|x| <= pi/4`: no reduction.
+//! 1. (Once a separate case, now part of 2.) `|x| < pi/4` (and a hair) needs
+//!    no reduction: the reduction of 2 gives `q = 0`, `hi = |x|`, `lo = 0`
+//!    there, exactly, so no branch of its own (fewer instructions on the
+//!    whole, and smaller).
 //! 2. `|x| < 24` (within 15 quadrants, the usual crank angles): Cody-Waite in
 //!    f32 with `pi/2` in three parts and the rounding error carried, so that
 //!    `r` is known as `hi + lo` (see [`reduce_small`]); about 20 instructions.
@@ -30,13 +33,16 @@
 //!    exactly enough for every `f32` by the Payne-Hanek scheme in integer
 //!    arithmetic: the 24-bit significand times a 96-bit window of the binary
 //!    expansion of `2/pi` (the window starts where the bits stop contributing
-//!    whole turns), giving `|x| 2/pi mod 4` with at least 94 fraction bits;
-//!    the fraction is rounded to the nearest quadrant, normalized to 64 bits,
-//!    its top 32 bits multiplied by `pi/2` (31 bits) into a 64-bit product
-//!    and converted to `f32` once. The error of `r` is 0.5 ulp from that
-//!    conversion plus about `2^-30 |r|` from the truncations, as long as the
-//!    fraction keeps 32 significant bits of its 64 (at most 32 leading
-//!    zeros). A scan of every `f32` above `pi/4` found at most 29 (the
+//!    whole turns, with zeros in front for small arguments, so that the
+//!    binary point of the product is always at bit 94), giving `|x| 2/pi mod
+//!    4` to within `2^-70`; the 64-bit fraction is rounded to the nearest
+//!    quadrant, normalized, its top 32 bits multiplied by `pi/2` (31 bits)
+//!    into a 64-bit product whose top 32 bits (from bit 31) are converted to
+//!    `f32` once. The error of `r` is 0.5 ulp from that conversion plus below
+//!    `2^-29 |r|` from the truncations (the fraction's and the product's,
+//!    `2^-31` and `2^-30`, and `pi/2`'s rounding, `2^-31.6`), as long as the
+//!    fraction keeps 32 significant bits of its 64 (its top word is not
+//!    zero). A scan of every `f32` above `pi/4` found at most 29 (the
 //!    closest approach to a multiple of `pi/2`, relative to `pi/2`, is above
 //!    2^-30, at 2.2e10), and the exhaustive test finds the bound met.
 //! 4. `sin r` and `cos r` by their Taylor series through `r^9` and `r^10`
@@ -44,8 +50,12 @@
 //!    `(pi/4)^11 / 11! < 1.8e-9` and `(pi/4)^12 / 12! < 1.2e-10`, under 0.05
 //!    ulp of the results there; Taylor rather than minimax coefficients so
 //!    that every coefficient is an exact, checkable `1/n!`.
+//!    One evaluation serves all three cases (the inline code is not
+//!    duplicated per path): no reduction is `q = 0` with the correction `lo`
+//!    of the reduced argument zero. For `|x| < 2^-12` the series round to
+//!    `x` and 1 (the second terms are below `2^-25` relative).
 //! 5. The quadrant picks `(+-sin r, +-cos r)` and the sign of `x` the sign of
-//!    the sine.
+//!    the sine (swaps and sign-bit flips, no branches).
 //!
 //! # Square root
 //!
@@ -72,15 +82,13 @@
 //! a wrong word would put large arguments' results far from `f64`'s, whose
 //! reduction uses its own table.
 
-/// `pi/4` rounded down to `f32` (0.78539813...), the no-reduction threshold.
-const PIO4_F32_DOWN: f32 = f32::from_bits(0x3F49_0FDA);
-
-/// `2^-12`: below it `x` and 1 are the rounded sine and cosine (within 1 ulp).
-const TINY: f32 = 1.0 / 4096.0;
-
-/// The binary expansion of `2/pi` after the point, 32 bits per word: enough
-/// for the largest finite `f32` (exponent 127: bits up to about 200 are used).
+/// The binary expansion of `2/pi` after the point, 32 bits per word, behind
+/// one word of zeros (`TWO_OVER_PI[i]` holds bits `32 i - 31 ..= 32 i` after
+/// the point; the zeros are "bits" `-31 ..= 0`): the windows of [`reduce`]
+/// start between bit -20 and bit 103 and are 96 bits long, so the last word
+/// used holds bits 193..=224.
 const TWO_OVER_PI: [u32; 8] = [
+    0,
     0xA2F9_836E,
     0x4E44_1529,
     0xFC27_57D1,
@@ -88,7 +96,6 @@ const TWO_OVER_PI: [u32; 8] = [
     0xDB62_9599,
     0x3C43_9041,
     0xFE51_63AB,
-    0xDEBB_C561,
 ];
 
 /// `pi/2 * 2^30`, rounded to nearest (31 bits).
@@ -107,20 +114,17 @@ const C10: f32 = -1.0 / 3_628_800.0;
 
 /// `(sin x, cos x)` for `x` in radians, within 2 ulp for every finite `f32`
 /// (see the module documentation); `(NaN, NaN)` for a non-finite `x`.
+///
+/// One evaluation of the two polynomials serves every path: an argument that
+/// needs no reduction is the reduced one with `q = 0`, `lo = 0` (the terms in
+/// `lo` then add exact zeros), and the quadrant and the sign of `x` are
+/// applied by swapping and flipping sign bits.
 #[inline]
 pub fn sin_cos_f32(x: f32) -> (f32, f32) {
     if !x.is_finite() {
         return (f32::NAN, f32::NAN);
     }
-    let ax = if x < 0.0 { -x } else { x };
-    if ax < TINY {
-        // sin x = x (1 - x^2/6 + ...) and cos x = 1 - x^2/2 + ... round to x
-        // and 1 here (relative terms below 2^-25); keeps the sign of -0.0.
-        return (x, 1.0);
-    }
-    if ax <= PIO4_F32_DOWN {
-        return (sin_poly(x), cos_poly(x));
-    }
+    let ax = x.abs();
     let (q, hi, lo) = if ax < FAST_LIMIT {
         reduce_small(ax)
     } else {
@@ -129,20 +133,20 @@ pub fn sin_cos_f32(x: f32) -> (f32, f32) {
     };
     // sin(hi + lo) = sin hi + lo cos hi and cos(hi + lo) = cos hi - lo sin hi
     // to far below f32 resolution (|lo| is below 2^-20 |hi| + 2^-36), with
-    // cos hi ~ 1 - hi^2/2 and sin hi ~ hi in the correction terms.
+    // cos hi ~ 1 - hi^2/2 and sin hi ~ hi in the correction terms. For
+    // |x| < 2^-12 the series give x and 1 correctly rounded (the terms past
+    // the first are below 2^-25 relative; x^2 may underflow to 0, exactly).
     let s = sin_poly(hi) + lo * (1.0 - 0.5 * hi * hi);
     let c = cos_poly(hi) - lo * hi;
-    let (s, c) = match q & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    };
-    if x < 0.0 {
-        (-s, c)
-    } else {
-        (s, c)
-    }
+    // Quadrant q: (s, c), (c, -s), (-s, -c), (-c, s); then sin(-x) = -sin x
+    // (by the sign bit, so -0.0 keeps its sign).
+    let (s, c) = if q & 1 == 0 { (s, c) } else { (c, s) };
+    let s_flip = ((q & 2) << 30) ^ (x.to_bits() & 0x8000_0000);
+    let c_flip = (q.wrapping_add(1) & 2) << 30;
+    (
+        f32::from_bits(s.to_bits() ^ s_flip),
+        f32::from_bits(c.to_bits() ^ c_flip),
+    )
 }
 
 /// `sin r` for `|r| <= pi/4`.
@@ -159,16 +163,6 @@ fn cos_poly(r: f32) -> f32 {
     1.0 - 0.5 * r2 + r2 * r2 * (C4 + r2 * (C6 + r2 * (C8 + r2 * C10)))
 }
 
-/// The 32 bits of `2/pi` after its first `pos` bits (`pos <= 166`).
-#[inline(always)]
-fn bits32(pos: u32) -> u32 {
-    // pos <= 166 below, so the word index is at most 5 and idx + 1 <= 6; the
-    // mask only tells the compiler so (no bounds check, no panic path).
-    let idx = ((pos / 32) & 7) as usize;
-    let pair = (u64::from(TWO_OVER_PI[idx]) << 32) | u64::from(TWO_OVER_PI[(idx + 1) & 7]);
-    ((pair << (pos % 32)) >> 32) as u32
-}
-
 /// Above this, [`reduce`]; below, [`reduce_small`] (at most 15 quadrants).
 const FAST_LIMIT: f32 = 24.0;
 /// `2/pi` rounded to f32: only picks the quadrant (an off-by-one near a
@@ -181,7 +175,7 @@ const P1: f32 = f32::from_bits(0x3FC9_0FD0);
 const P2: f32 = f32::from_bits(0x35AA_2210);
 const P3: f32 = f32::from_bits(0x2B51_846A);
 
-/// Cody-Waite reduction for `pi/4 < ax < 24` in f32 arithmetic:
+/// Cody-Waite reduction for `0 <= ax < 24` in f32 arithmetic:
 /// `(q, hi, lo)` with `ax = (4n + q) pi/2 + hi + lo`, `|hi| <= pi/4` (and a
 /// hair), `lo` the rounding error of `hi` (exact) minus `k P3`.
 ///
@@ -190,7 +184,8 @@ const P3: f32 = f32::from_bits(0x2B51_846A);
 /// (Knuth's two-sum). What remains is the rounding of `k P3` and of
 /// `err - k P3` (below 2^-60 here) and the `2.5e-20 k` left out of `pi/2`:
 /// far below 2^-24 of the smallest `|r|` of any f32 in this range (about
-/// 1.2e-8, at 3 pi/2), so `hi + lo` is `r` to about 2^-40 relative.
+/// 1.2e-8, at 3 pi/2), so `hi + lo` is `r` to about 2^-40 relative. For
+/// `k = 0` (`ax` below about `pi/4`) every step is exact: `hi = ax`, `lo = 0`.
 #[inline(always)]
 fn reduce_small(ax: f32) -> (u32, f32, f32) {
     let k = (ax * FRAC_2_PI + 0.5) as u32;
@@ -209,55 +204,59 @@ fn pow2(k: i32) -> f32 {
     f32::from_bits(((127 + k) as u32) << 23)
 }
 
-/// Reduces a finite `ax > pi/4` to `(q, r)` with `ax = (4n + q) pi/2 + r`,
-/// `|r| <= pi/4` (see the module documentation for the error). 32- and
-/// 64-bit integer arithmetic only (a Cortex-M4 multiplies 32 x 32 -> 64 bits
-/// in one instruction).
+/// Reduces a finite `ax >= 24` (any finite `ax > pi/4` works) to `(q, r)`
+/// with `ax = (4n + q) pi/2 + r`, `|r| <= pi/4` (see the module
+/// documentation for the error). 32-bit integer arithmetic and three
+/// 32 x 32 multiplies (a Cortex-M4 multiplies 32 x 32 -> 64 bits in one
+/// instruction).
 #[inline(never)]
 fn reduce(ax: f32) -> (u32, f32) {
     let bits = ax.to_bits();
-    // ax > pi/4 is normal: the biased exponent is 126..=254.
-    let biased = ((bits >> 23) & 0xFF) as i32;
-    let m = u64::from((bits & 0x007F_FFFF) | 0x0080_0000);
-    // ax = m * 2^e, m a 24-bit integer, e in -24..=104.
-    let e = biased - 150;
-    // Bits of 2/pi at positions <= e - 2 contribute multiples of 4 (whole
-    // turns) to ax * 2/pi: skip them. skip <= 102.
-    let skip = if e > 2 { (e - 2) as u32 } else { 0 };
-    // The 96-bit window w0:w1:w2 of 2/pi after `skip` bits; P = m * window
-    // (< 2^120) as hi:lo (64 bits each), and ax * 2/pi = P * 2^-f (mod the
-    // skipped whole turns) with f = 96 + skip - e, in 94..=120.
-    let (w0, w1, w2) = (bits32(skip), bits32(skip + 32), bits32(skip + 64));
-    let a = m * u64::from(w2);
-    let b = m * u64::from(w1);
-    let c = m * u64::from(w0);
-    let (lo, carry) = a.overflowing_add(b << 32);
-    let hi = c + (b >> 32) + u64::from(carry);
-    let f = (96 + skip as i32 - e) as u32;
-    // Quadrant: bits f and f + 1 of P; fraction: the 64 bits below bit f.
-    let sh = f - 64; // 30..=56
-    let mut q = ((hi >> sh) & 3) as u32;
-    let mut frac = (hi << (64 - sh)) | (lo >> sh);
-    let mut negative = false;
-    if frac >> 63 != 0 {
+    // ax = m * 2^e, m a 24-bit integer; ax > pi/4 is normal: the biased
+    // exponent is 126..=254 and e = biased - 150 in -24..=104.
+    let m = (bits & 0x007F_FFFF) | 0x0080_0000;
+    // The 96-bit window W of 2/pi from bit e - 1 to bit e + 94 after the
+    // point (bits before the point are zeros): the bits before it contribute
+    // multiples of 4 (whole turns) to ax * 2/pi, and with it
+    // ax * 2/pi = m W 2^-94 (mod 4), truncated by less than m 2^-94 < 2^-70.
+    // In the table the window starts `pos = e + 30` bits in (11..=134).
+    let pos = ((bits >> 23) & 0xFF).wrapping_sub(120);
+    // `min` only tells the compiler that the words are in range (pos / 32
+    // <= 4 already).
+    let (idx, sh) = (((pos / 32) as usize).min(4), pos % 32);
+    let t = &TWO_OVER_PI[idx..idx + 4];
+    let word = |j: usize| (t[j] << sh) | ((t[j + 1] >> 1) >> (31 - sh));
+    let (w0, w1, w2) = (word(0), word(1), word(2));
+    // The low 96 bits p2:p1:p0 of m W (the higher ones are whole turns).
+    let a = u64::from(m) * u64::from(w2);
+    let b = u64::from(m) * u64::from(w1) + (a >> 32);
+    let p2 = m.wrapping_mul(w0).wrapping_add((b >> 32) as u32);
+    let (p1, p0) = (b as u32, a as u32);
+    // Quadrant: bits 94 and 95 (the top two of p2); fraction: the 64 bits
+    // below them.
+    let mut q = p2 >> 30;
+    let mut frac = (u64::from((p2 << 2) | (p1 >> 30)) << 32) | u64::from((p1 << 2) | (p0 >> 30));
+    let negative = frac >> 63 != 0;
+    if negative {
         // Round to the nearest quadrant: r is negative.
         q = q.wrapping_add(1);
         frac = frac.wrapping_neg();
-        negative = true;
-    }
-    if frac == 0 {
-        return (q, 0.0);
     }
     // Normalize the fraction (value frac * 2^-64), keep 32 bits, times pi/2
-    // in fixed point (2^30 pi/2, 31 bits).
-    let lz = frac.leading_zeros();
-    let top = ((frac << lz) >> 32) as u32;
+    // in fixed point (2^30 pi/2, 31 bits). Its top word is never zero: it
+    // has at most 29 leading zeros for every finite f32 (module
+    // documentation); `& 31` only keeps the shifts in range.
+    let (fh, fl) = ((frac >> 32) as u32, frac as u32);
+    let lz = fh.leading_zeros() & 31;
+    let top = (fh << lz) | ((fl >> 1) >> (31 - lz));
     let prod = u64::from(top) * u64::from(PIO2_Q30);
-    let lz2 = prod.leading_zeros();
-    let hi32 = ((prod << lz2) >> 32) as u32;
+    // top >= 2^31 and PIO2_Q30 >= 2^30: 2^61 <= prod < 2^63, so its top 32
+    // bits from bit 31 have 31 or 32 significant ones (truncated by less
+    // than 2^-30 relative), rounded once to f32 by the conversion.
+    let hi32 = (prod >> 31) as u32;
     // frac * 2^-64 = top * 2^(-32 - lz), so r = prod * 2^(-62 - lz) = hi32 * 2^k,
-    // k = -30 - lz2 - lz, between -94 and -30: 2^k is normal.
-    let k = -30 - (lz2 + lz) as i32;
+    // k = -31 - lz, between -62 and -31: 2^k is normal.
+    let k = -31 - lz as i32;
     let r = (hi32 as f32) * pow2(k);
     (q, if negative { -r } else { r })
 }
@@ -275,8 +274,10 @@ pub fn sqrt_f32(x: f32) -> f32 {
         return x;
     }
     if x < f32::MIN_POSITIVE {
-        // Subnormal: sqrt(x 2^24) 2^-12, both scalings exact.
-        return sqrt_normal(x * pow2(24)) * pow2(-12);
+        // Subnormal: sqrt(x 2^24) 2^-12, both scalings exact; x 2^24 is
+        // normal, so this recursion is one level deep (and keeps a single
+        // copy of the Newton steps in the code).
+        return sqrt_f32(x * pow2(24)) * pow2(-12);
     }
     sqrt_normal(x)
 }
@@ -493,9 +494,10 @@ mod tests {
     }
 
     #[test]
-    #[ignore = "exhaustive over the small-argument path: seconds in release"]
+    #[ignore = "exhaustive over the small-argument path [0, 24]: a minute in release"]
     fn exhaustive_small_path_within_2_ulp() {
-        let lo = PIO4_F32_DOWN.to_bits();
+        // From 0: the path also serves the arguments that need no reduction.
+        let lo = 0;
         let hi = FAST_LIMIT.to_bits() + 16;
         let ((es, xs_), (ec, xc)) = worst((lo..=hi).map(f32::from_bits));
         std::println!("small path: worst sin {es:.4} ulp at {xs_:e}; cos {ec:.4} ulp at {xc:e}");

@@ -95,18 +95,24 @@ fn place<T: Real>(
 #[cold]
 #[inline(never)]
 fn bad_placement<T: Real>(length: T, angle_finite: bool) -> Error {
-    if !angle_finite {
-        return Error::new(
-            P,
-            Fault::NonFinite {
-                what: "crank angle",
-            },
-        );
-    }
-    match positive(length, P, "crank length") {
-        Err(e) => e,
-        Ok(_) => Error::new(P, Fault::NonFinite { what: "crank tip" }),
-    }
+    // One construction of each fault kind (the cold code stays small).
+    let length_ok = length.finite() && length > T::zero();
+    let what = if !angle_finite {
+        "crank angle"
+    } else if length_ok {
+        "crank tip"
+    } else {
+        "crank length"
+    };
+    let fault = if angle_finite && length.finite() && !length_ok {
+        Fault::NonPositive {
+            what,
+            value: length.as_f64(),
+        }
+    } else {
+        Fault::NonFinite { what }
+    };
+    Error::new(P, fault)
 }
 
 /// Velocity of the tip (L/s): `v_pivot + omega perp(r)`; `v_pivot = None`

@@ -32,8 +32,7 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, all_finite, check_det, cross, difference, dot, finite_vec, length, min, perp, plus,
-    positive,
+    abs, all_finite, check_det, cross, difference, dot, length, min, perp, plus,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -109,13 +108,7 @@ pub fn position<T: Real>(
     // The ordinary case in three comparisons (NaN fails each); anything else
     // is sorted out on the cold path, in the order of the doc comment.
     if !(l1 > T::zero() && l2 > T::zero() && dsq > T::zero()) {
-        return Err(bad_input(&d, l1, l2).unwrap_or(Error::new(
-            P,
-            Fault::Singular {
-                det: 0.0,
-                scale: sum.as_f64(),
-            },
-        )));
+        return Err(position_error(d, l1, l2, Check::Degenerate));
     }
     // Heron's factors; a negative one means the triangle does not close.
     let outer = sum * sum - dsq; // < 0: too far apart
@@ -125,7 +118,7 @@ pub fn position<T: Real>(
                                    // `|l1 - l2|` at the two edges.
     let band = T::lit(8.0) * T::eps() * sum;
     if outer < -(band * sum) || inner < -(band * abs(diff)) {
-        return Err(cannot_assemble(&d, l1, l2));
+        return Err(position_error(d, l1, l2, Check::Reach));
     }
     let clamp = |x: T| if x < T::zero() { T::zero() } else { x };
     // sqrt(16 area^2) = 4 area, signed by the mode.
@@ -139,53 +132,77 @@ pub fn position<T: Real>(
     // One test for every non-finite input that got this far (an infinite
     // length or coordinate makes `c` NaN or infinite) and for overflow.
     if !all_finite([c.x, c.y]) {
-        return Err(bad_input(&d, l1, l2).unwrap_or(Error::new(
-            P,
-            Fault::NonFinite {
-                what: "RRR joint C",
-            },
-        )));
+        return Err(position_error(d, l1, l2, Check::JointFinite));
     }
     Ok(RrrPosition { c, r1, r2: c - b })
 }
 
-/// The input error of a [`position`] call, if its inputs are bad: `l1`, then
-/// `l2` not positive or not finite, then `B - A` not finite (cold path).
-#[cold]
-#[inline(never)]
-fn bad_input<T: Real>(d: &Vector2<T>, l1: T, l2: T) -> Option<Error> {
-    if let Err(e) = positive(l1, P, "RRR length l1") {
-        return Some(e);
-    }
-    if let Err(e) = positive(l2, P, "RRR length l2") {
-        return Some(e);
-    }
-    finite_vec(*d, P, "RRR joint distance").err()
+/// Which check of [`position`] failed (the cold path's only knowledge of
+/// the call site).
+#[derive(Clone, Copy)]
+enum Check {
+    /// Positive lengths and `A != B`.
+    Degenerate,
+    /// The triangle closes (within the rounding band).
+    Reach,
+    /// `C` is finite.
+    JointFinite,
 }
 
-/// The error of a [`position`] call whose triangle does not close by more
-/// than the rounding band: `CannotAssemble` with the miss (L) and the
-/// violated reach, unless an input is bad (an infinite `B - A` also lands
-/// here).
+/// The error of a failed [`position`] call, one cold function for every
+/// check (cold path). An input error first, in the order of the doc comment:
+/// `l1`, then `l2` not positive or not finite, then `B - A` not finite (an
+/// infinite one fails any of the checks). Otherwise the check's own fault:
+/// `Singular` (`A = B`) with the scale `l1 + l2`; `CannotAssemble` with the
+/// miss (L) and the violated reach; `NonFinite` for `C` (an overflow).
 #[cold]
 #[inline(never)]
-fn cannot_assemble<T: Real>(d: &Vector2<T>, l1: T, l2: T) -> Error {
-    bad_input(d, l1, l2).unwrap_or_else(|| {
-        let dist = length(d);
-        let (outer, inner) = (l1 + l2 - dist, dist - abs(l1 - l2));
-        let (miss, reach) = if outer <= inner {
-            (-outer, l1 + l2)
+fn position_error<T: Real>(d: Vector2<T>, l1: T, l2: T, failed: Check) -> Error {
+    let good = |x: T| x.finite() && x > T::zero();
+    let fault = if !(good(l1) && good(l2)) {
+        // The first bad length.
+        let (what, x) = if good(l1) {
+            ("RRR length l2", l2)
         } else {
-            (-inner, abs(l1 - l2))
+            ("RRR length l1", l1)
         };
-        Error::new(
-            P,
-            Fault::CannotAssemble {
-                miss: miss.as_f64(),
-                reach: reach.as_f64(),
+        if x.finite() {
+            Fault::NonPositive {
+                what,
+                value: x.as_f64(),
+            }
+        } else {
+            Fault::NonFinite { what }
+        }
+    } else if !all_finite([d.x, d.y]) {
+        Fault::NonFinite {
+            what: "RRR joint distance",
+        }
+    } else {
+        match failed {
+            Check::Degenerate => Fault::Singular {
+                det: 0.0,
+                scale: (l1 + l2).as_f64(),
             },
-        )
-    })
+            Check::Reach => {
+                let dist = length(&d);
+                let (outer, inner) = (l1 + l2 - dist, dist - abs(l1 - l2));
+                let (miss, reach) = if outer <= inner {
+                    (-outer, l1 + l2)
+                } else {
+                    (-inner, abs(l1 - l2))
+                };
+                Fault::CannotAssemble {
+                    miss: miss.as_f64(),
+                    reach: reach.as_f64(),
+                }
+            }
+            Check::JointFinite => Fault::NonFinite {
+                what: "RRR joint C",
+            },
+        }
+    };
+    Error::new(P, fault)
 }
 
 /// Rates of the group from the velocities of `A` and `B` (L/s); `None` means
