@@ -51,8 +51,8 @@ if __name__ == "__main__":
 # atan' = 1/(1 + x^2): g(d) = 1/(a + b d + d^2), a = 1 + c^2, b = 2c, has
 # g_0 = 1/a, g_1 = -b g_0 / a, g_k = -(b g_{k-1} + g_{k-2}) / a, and
 # f_{k+1} = g_k / (k + 1). Printed as F: [[f64; 9]; 65] = [f1 hi, f1 lo,
-# f2, ..., f8] (f1 in double-double, the rest rounded to f64).
-def taylor(c, n=8):
+# f2, ..., f7, c] (f1 in double-double, the rest rounded to f64; c = j/64).
+def taylor(c, n=7):
     a, b = 1 + c * c, 2 * c
     g = [1 / a]
     g.append(-b * g[0] / a)
@@ -68,6 +68,6 @@ if __name__ == "__main__":
             continue
         f = taylor(D(j) / 64)
         h, l = dd(f[0])
-        row = [h, l] + [float(v) for v in f[1:]]
+        row = [h, l] + [float(v) for v in f[1:]] + [j / 64]
         print("    [" + ", ".join(repr(v) for v in row) + "],")
     print("];")
