@@ -99,7 +99,7 @@ pub fn atan2_f64(y: f64, x: f64) -> f64 {
     let swap = ay > ax;
     let (mn, mx) = if swap { (ax, ay) } else { (ay, ax) };
     let case = usize::from(swap) | (usize::from(x.is_sign_negative()) << 1);
-    let r = if mx >= MX_LO && mx < MX_HI {
+    let r = if (MX_LO..MX_HI).contains(&mx) {
         reduced(mn, mx, case)
     } else {
         rare(mn, mx, case, y, x)
@@ -171,6 +171,9 @@ fn rare(mn: f64, mx: f64, case: usize, y: f64, x: f64) -> f64 {
 /// `(hi, lo)` of `atan(c_j)`, `pi/2 - atan(c_j)`, `pi - atan(c_j)`,
 /// `pi/2 + atan(c_j)` (cases 0 to 3), `c_j` as [`C`]; printed by
 /// `scripts/atan2-f64-table.py`.
+// The entries for c = 0 and 1 are pi/4, pi/2, pi, 3 pi/4 rounded: printed by
+// the script like the others, not spelled as the `core` constants.
+#[allow(clippy::approx_constant)]
 #[rustfmt::skip]
 const T: [[(f64, f64); 65]; 4] = [
     [
@@ -527,7 +530,7 @@ mod tests {
     // scaling), forms t = mn/mx in double-double, halves the angle three
     // times (atan x = 2 atan(x / (1 + sqrt(1 + x^2)))) to |x| <= tan(pi/32)
     // and sums the Taylor series to 2^-110; then the octant's pi/2 or pi
-    // (double-double literals: pi = 3.141592653589793 + 1.2246467991473532e-16,
+    // (double-double: pi = fl(pi) + 1.2246467991473532e-16,
     // the standard split). It shares no step with the kernel (no table, no
     // j/32 reduction); `reference_agrees_with_std` checks it against std's.
 
@@ -577,8 +580,8 @@ mod tests {
     }
 
     const ONE: Dd = Dd(1.0, 0.0);
-    const PI: Dd = Dd(3.141_592_653_589_793, 1.224_646_799_147_353_2e-16);
-    const PIO2: Dd = Dd(1.570_796_326_794_896_6, 6.123_233_995_736_766e-17);
+    const PI: Dd = Dd(core::f64::consts::PI, 1.224_646_799_147_353_2e-16);
+    const PIO2: Dd = Dd(core::f64::consts::FRAC_PI_2, 6.123_233_995_736_766e-17);
 
     /// `atan t` for `0 <= t <= 1` in double-double.
     fn atan_dd(t: Dd) -> Dd {
