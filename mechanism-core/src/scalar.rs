@@ -40,7 +40,7 @@ pub trait Real: RealField + Copy {
     /// signed zeros, infinities and NaN. `f32` through
     /// [`crate::trig::atan2_f32`] (within 2 ulp; cheaper than libm's on a
     /// Cortex-M4F and on x86-64), `f64` through [`crate::trig64::atan2_f64`]
-    /// (within 1.7 ulp; about 1.5 times glibc's speed on x86-64).
+    /// (within 1.9 ulp; 1.5 to 2 times glibc's speed on x86-64).
     fn atan2_kernel(self, x: Self) -> Self;
 }
 
