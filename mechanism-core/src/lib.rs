@@ -29,6 +29,7 @@ pub mod mode;
 pub mod scalar;
 pub mod sweep;
 pub mod trig;
+pub mod trig64;
 
 pub use error::{Error, Fault, Primitive};
 pub use mode::Mode;

@@ -39,8 +39,8 @@ pub trait Real: RealField + Copy {
     /// `(x, self)` from +x, counter-clockwise, with libm's conventions for
     /// signed zeros, infinities and NaN. `f32` through
     /// [`crate::trig::atan2_f32`] (within 2 ulp; cheaper than libm's on a
-    /// Cortex-M4F and on x86-64), `f64` through nalgebra's `atan2` (libm, or
-    /// `std` when enabled).
+    /// Cortex-M4F and on x86-64), `f64` through [`crate::trig64::atan2_f64`]
+    /// (within 1.9 ulp; 1.5 to 2 times glibc's speed on x86-64).
     fn atan2_kernel(self, x: Self) -> Self;
 }
 
@@ -71,7 +71,7 @@ impl Real for f64 {
     }
     #[inline(always)]
     fn atan2_kernel(self, x: Self) -> Self {
-        <f64 as nalgebra::RealField>::atan2(self, x)
+        crate::trig64::atan2_f64(self, x)
     }
 }
 

@@ -14,7 +14,8 @@
 //! Checked: `position`, `velocity`, `acceleration` and `solve` of every
 //! example mechanism (`examples/common/scenes.rs`) in f32 and f64, `solve`
 //! (with the generated `forces()`) of the definitions with masses, and the
-//! f32 kernels `sin_cos_f32`, `sqrt_f32` and `atan2_f32`.
+//! f32 kernels `sin_cos_f32`, `sqrt_f32` and `atan2_f32`, and the f64 kernel
+//! `trig64::atan2_f64`.
 
 #[path = "../../../examples/common/scenes.rs"]
 mod scenes;
@@ -118,6 +119,12 @@ fn kernels(x: f32) -> (f32, f32, f32, f32) {
     (s, c, sqrt_f32(x), atan2_f32(s, x))
 }
 
+#[cfg_attr(feature = "no-panic", no_panic)]
+#[inline(never)]
+fn kernel64(y: f64, x: f64) -> f64 {
+    mechanism::trig64::atan2_f64(y, x)
+}
+
 /// Calls all four analyses of one mechanism through function pointers hidden
 /// from the optimizer; returns how many succeeded.
 macro_rules! run {
@@ -201,6 +208,8 @@ fn main() {
         );
         let k: fn(f32) -> (f32, f32, f32, f32) = black_box(kernels);
         black_box(k(black_box(q as f32 * 1.0e3)));
+        let k64: fn(f64, f64) -> f64 = black_box(kernel64);
+        black_box(k64(black_box(q - 2.0), black_box(1.0 - q)));
     }
     println!(
         "no-panic: {} analyses run ({ok} succeeded); checks {}",
