@@ -40,7 +40,8 @@ pub trait Real: RealField + Copy {
     /// signed zeros, infinities and NaN. `f32` through
     /// [`crate::trig::atan2_f32`] (within 2 ulp; cheaper than libm's on a
     /// Cortex-M4F and on x86-64), `f64` through [`crate::trig64::atan2_f64`]
-    /// (within 1.9 ulp; 1.5 to 2 times glibc's speed on x86-64).
+    /// (within 1.9 ulp; 1.5 to 2 times glibc's speed on x86-64) except on
+    /// 32-bit ARM (libm there: the kernel's tables are 8.8 kB).
     fn atan2_kernel(self, x: Self) -> Self;
 }
 
@@ -71,7 +72,16 @@ impl Real for f64 {
     }
     #[inline(always)]
     fn atan2_kernel(self, x: Self) -> Self {
-        crate::trig64::atan2_f64(self, x)
+        // The kernel's tables are 8.8 kB of read-only data: not on 32-bit
+        // ARM, where f64 is software arithmetic anyway and flash is small.
+        #[cfg(not(target_arch = "arm"))]
+        {
+            crate::trig64::atan2_f64(self, x)
+        }
+        #[cfg(target_arch = "arm")]
+        {
+            <f64 as nalgebra::RealField>::atan2(self, x)
+        }
     }
 }
 
