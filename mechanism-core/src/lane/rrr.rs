@@ -39,30 +39,32 @@ pub struct Rrr<T> {
 /// scalar path, which puts `C` on the line).
 #[inline(always)]
 pub fn rrr<T: Real>(ax: T, ay: T, l1: T, bx: T, by: T, l2: T, sign: T) -> Rrr<T> {
+    // The scalar primitive's formula (Heron on squared lengths, one square
+    // root, one reciprocal; see `dyad::rrr`), with its failures as flags.
     let (dx, dy) = (bx - ax, by - ay);
-    let d2 = dx * dx + dy * dy;
-    let dist0 = sqrt(d2);
-    let spread = dist0 > T::zero();
-    let dist = select(spread, dist0, T::one());
+    let dsq = dx * dx + dy * dy;
+    let spread = dsq > T::zero();
     let sum = l1 + l2;
-    let outer = sum - dist;
-    let inner1 = dist + l1 - l2;
-    let inner2 = dist - l1 + l2;
-    let band = T::lit(4.0) * T::eps() * sum;
+    let diff = l1 - l2;
+    let outer = sum * sum - dsq;
+    let inner = dsq - diff * diff;
+    // Strictly inside the scalar's rounding band (which it accepts down to
+    // minus the band): an element accepted here is accepted there.
+    let band = T::lit(8.0) * T::eps() * sum;
+    let adiff = select(diff < T::zero(), -diff, diff);
     let ok = spread
         & (l1 > T::zero())
         & (l2 > T::zero())
-        & (outer > band)
-        & (inner1 > band)
-        & (inner2 > band);
+        & (outer > band * sum)
+        & (inner > band * adiff);
     let clamp = |x: T| select(x < T::zero(), T::zero(), x);
-    let area16 = (sum + dist) * clamp(outer) * clamp(inner1) * clamp(inner2);
-    let inv2d = T::one() / (T::lit(2.0) * dist);
-    let h = sqrt(area16) * inv2d;
-    let along = ((l1 - l2) * sum + dist * dist) * inv2d;
-    let (ex, ey) = (dx / dist, dy / dist);
-    let sh = sign * h;
-    let (r1x, r1y) = (ex * along - ey * sh, ey * along + ex * sh);
+    let height = sign * sqrt(clamp(outer) * clamp(inner));
+    let along = diff * sum + dsq;
+    let inv_2dsq = T::one() / (T::lit(2.0) * select(spread, dsq, T::one()));
+    let (r1x, r1y) = (
+        (dx * along - dy * height) * inv_2dsq,
+        (dy * along + dx * height) * inv_2dsq,
+    );
     let (x, y) = (ax + r1x, ay + r1y);
     let (r2x, r2y) = (x - bx, y - by);
     let det = r1x * r2y - r1y * r2x;
