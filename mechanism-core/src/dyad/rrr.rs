@@ -113,9 +113,10 @@ pub fn position<T: Real>(
     // Heron's factors; a negative one means the triangle does not close.
     let outer = sum * sum - dsq; // < 0: too far apart
     let inner = dsq - diff * diff; // < 0: one link too long
-                                   // The band `4 eps (l1 + l2)` on `|d|`, to first order on `D`: `D` moves
-                                   // by `2 |d| delta` when `|d|` moves by `delta`, and `|d|` is `l1 + l2` or
-                                   // `|l1 - l2|` at the two edges.
+
+    // The band `4 eps (l1 + l2)` on `|d|`, to first order on `D`: `D` moves
+    // by `2 |d| delta` when `|d|` moves by `delta`, and `|d|` is `l1 + l2` or
+    // `|l1 - l2|` at the two edges.
     let band = T::lit(8.0) * T::eps() * sum;
     if outer < -(band * sum) || inner < -(band * abs(diff)) {
         return Err(position_error(d, l1, l2, Check::Reach));
