@@ -167,6 +167,16 @@ pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -
                 false,
             ),
         };
+    let lane_block_skip = if has_lane {
+        quote!(
+            if b.status[start..end].iter().fold(0u8, |acc, s| acc | s) == 0 {
+                start = end;
+                continue;
+            }
+        )
+    } else {
+        TokenStream::new()
+    };
     let method_doc = format!(
         "Evaluates every element of [`{batch_ty}`]: outputs into its slices (zero where an element failed), a status byte per element; returns the number of failed elements. No allocation, no early return, no panic."
     );
@@ -218,13 +228,22 @@ pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -
                 let zero = <T as ::mechanism::Real>::lit(0.0);
                 let mut failed = 0usize;
                 #lane_call
-                for k in 0..n {
-                    #lane_skip
-                    #eval
-                    let code = #status_expr;
-                    #(#writes)*
-                    b.status[k] = code;
-                    failed += (code != 0) as usize;
+                // The elements the kernel did not accept (or all, without a
+                // kernel), through the scalar path; blocks of 64 the kernel
+                // accepted whole are skipped with one OR of their statuses.
+                let mut start = 0usize;
+                while start < n {
+                    let end = ::core::cmp::min(start + 64, n);
+                    #lane_block_skip
+                    for k in start..end {
+                        #lane_skip
+                        #eval
+                        let code = #status_expr;
+                        #(#writes)*
+                        b.status[k] = code;
+                        failed += (code != 0) as usize;
+                    }
+                    start = end;
                 }
                 failed
             }
