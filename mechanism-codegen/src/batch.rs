@@ -283,6 +283,30 @@ struct LaneLink {
     alpha: TokenStream,
 }
 
+impl LaneLink {
+    /// A link along the vector `(x, y)`, divided by `length` when given (a
+    /// unit vector otherwise): its axis, its angle (`lane::atan2` of the
+    /// vector: a positive factor does not change it), its rates.
+    fn along(
+        ln: &TokenStream,
+        (x, y): (TokenStream, TokenStream),
+        length: Option<&TokenStream>,
+        omega: TokenStream,
+        alpha: TokenStream,
+    ) -> LaneLink {
+        let axis = match length {
+            Some(l) => (quote!((#x / #l)), quote!((#y / #l))),
+            None => (x.clone(), y.clone()),
+        };
+        LaneLink {
+            axis,
+            angle: quote!(#ln::atan2(#y, #x)),
+            omega,
+            alpha,
+        }
+    }
+}
+
 /// A guide in the lane code: the `mechanism::lane::Line` local, the body's
 /// motion as `Option<&LineVelocity>` / `Option<&LineAcceleration>`
 /// expressions (`None` for a fixed guide, so its terms fold away), and the
@@ -547,12 +571,13 @@ fn lane(
                 }
                 new_links.push((
                     link_of(0)?,
-                    LaneLink {
-                        axis: (quote!(#line.dx), quote!(#line.dy)),
-                        angle: quote!(#ln::atan2(#line.dy, #line.dx)),
-                        omega: gd.omega.clone(),
-                        alpha: gd.alpha.clone(),
-                    },
+                    LaneLink::along(
+                        &ln,
+                        (quote!(#line.dx), quote!(#line.dy)),
+                        None,
+                        gd.omega.clone(),
+                        gd.alpha.clone(),
+                    ),
                 ));
             }
             Kind::Rrr { a, l1, b, mode, .. }
@@ -624,21 +649,23 @@ fn lane(
                 }
                 new_links.push((
                     link_of(0)?,
-                    LaneLink {
-                        axis: (quote!((#g.r1x / #l1)), quote!((#g.r1y / #l1))),
-                        angle: quote!(#ln::atan2(#g.r1y, #g.r1x)),
-                        omega: quote!(#w1),
-                        alpha: quote!(#al1),
-                    },
+                    LaneLink::along(
+                        &ln,
+                        (quote!(#g.r1x), quote!(#g.r1y)),
+                        Some(&quote!(#l1)),
+                        quote!(#w1),
+                        quote!(#al1),
+                    ),
                 ));
                 new_links.push((
                     link_of(1)?,
-                    LaneLink {
-                        axis: (quote!((#g.r2x / #l2)), quote!((#g.r2y / #l2))),
-                        angle: quote!(#ln::atan2(#g.r2y, #g.r2x)),
-                        omega: quote!(#w2),
-                        alpha: quote!(#al2),
-                    },
+                    LaneLink::along(
+                        &ln,
+                        (quote!(#g.r2x), quote!(#g.r2y)),
+                        Some(&quote!(#l2)),
+                        quote!(#w2),
+                        quote!(#al2),
+                    ),
                 ));
             }
             Kind::Rrp {
@@ -680,21 +707,23 @@ fn lane(
                 new_slides.push((0, [quote!(#s), quote!(#sd), quote!(#sdd)]));
                 new_links.push((
                     link_of(0)?,
-                    LaneLink {
-                        axis: (quote!((#g.r1x / #l)), quote!((#g.r1y / #l))),
-                        angle: quote!(#ln::atan2(#g.r1y, #g.r1x)),
-                        omega: quote!(#w1),
-                        alpha: quote!(#al1),
-                    },
+                    LaneLink::along(
+                        &ln,
+                        (quote!(#g.r1x), quote!(#g.r1y)),
+                        Some(&quote!(#l)),
+                        quote!(#w1),
+                        quote!(#al1),
+                    ),
                 ));
                 new_links.push((
                     link_of(1)?,
-                    LaneLink {
-                        axis: (quote!(#line.dx), quote!(#line.dy)),
-                        angle: quote!(#ln::atan2(#line.dy, #line.dx)),
-                        omega: gd.omega.clone(),
-                        alpha: gd.alpha.clone(),
-                    },
+                    LaneLink::along(
+                        &ln,
+                        (quote!(#line.dx), quote!(#line.dy)),
+                        None,
+                        gd.omega.clone(),
+                        gd.alpha.clone(),
+                    ),
                 ));
             }
             Kind::Rpr { a, b, mode, offset } => {
@@ -730,12 +759,13 @@ fn lane(
                 for k in 0..2 {
                     new_links.push((
                         link_of(k)?,
-                        LaneLink {
-                            axis: (quote!(#g.ux), quote!(#g.uy)),
-                            angle: quote!(#ln::atan2(#g.uy, #g.ux)),
-                            omega: quote!(#w),
-                            alpha: quote!(#al),
-                        },
+                        LaneLink::along(
+                            &ln,
+                            (quote!(#g.ux), quote!(#g.uy)),
+                            None,
+                            quote!(#w),
+                            quote!(#al),
+                        ),
                     ));
                 }
             }
@@ -775,12 +805,13 @@ fn lane(
                 for (k, (d, l)) in [(d1, l1), (d2, l2)].into_iter().enumerate() {
                     new_links.push((
                         link_of(k)?,
-                        LaneLink {
-                            axis: (quote!(#l.dx), quote!(#l.dy)),
-                            angle: quote!(#ln::atan2(#l.dy, #l.dx)),
-                            omega: d.omega.clone(),
-                            alpha: d.alpha.clone(),
-                        },
+                        LaneLink::along(
+                            &ln,
+                            (quote!(#l.dx), quote!(#l.dy)),
+                            None,
+                            d.omega.clone(),
+                            d.alpha.clone(),
+                        ),
                     ));
                 }
             }
@@ -825,21 +856,23 @@ fn lane(
                 // the guide, as in the scalar path.
                 new_links.push((
                     link_of(0)?,
-                    LaneLink {
-                        axis: (quote!(#g.wx), quote!(#g.wy)),
-                        angle: quote!(#ln::atan2(#g.wy, #g.wx)),
-                        omega: gd.omega.clone(),
-                        alpha: gd.alpha.clone(),
-                    },
+                    LaneLink::along(
+                        &ln,
+                        (quote!(#g.wx), quote!(#g.wy)),
+                        None,
+                        gd.omega.clone(),
+                        gd.alpha.clone(),
+                    ),
                 ));
                 new_links.push((
                     link_of(1)?,
-                    LaneLink {
-                        axis: (quote!(#line.dx), quote!(#line.dy)),
-                        angle: quote!(#ln::atan2(#line.dy, #line.dx)),
-                        omega: gd.omega.clone(),
-                        alpha: gd.alpha.clone(),
-                    },
+                    LaneLink::along(
+                        &ln,
+                        (quote!(#line.dx), quote!(#line.dy)),
+                        None,
+                        gd.omega.clone(),
+                        gd.alpha.clone(),
+                    ),
                 ));
             }
             Kind::Point { link, from, local } => {
