@@ -235,47 +235,6 @@ pub fn check_det_condition<T: Real>(
     ))
 }
 
-/// [`check_det`] without square roots: `scale_sq` is the square of the
-/// scale (e.g. `|r1|^2 |r2|^2`), compared as `det^2 > (16 eps)^2 scale_sq`,
-/// the same test as `check_det(det, sqrt(scale_sq))` up to rounding; the
-/// square root is taken only to report an error. Needs `scale_sq` finite:
-/// lengths below about 1e9 (f32) or 1e76 (f64) for an RRR's `|r1|^2 |r2|^2`;
-/// beyond that the test reports `Singular`.
-///
-/// No separate finiteness tests: the one comparison is false for a NaN
-/// `det` or `scale_sq` and for an infinite `scale_sq`; an infinite `det`
-/// would pass only with a finite `scale_sq`, which Hadamard's bound
-/// `det^2 <= scale_sq` (the caller's scale is the product of the columns'
-/// lengths) rules out.
-#[inline(always)]
-pub fn check_det_sq<T: Real>(det: T, scale_sq: T, primitive: Primitive) -> Result<T, Error> {
-    let k = T::lit(SINGULAR_RELATIVE) * T::eps();
-    if det * det > k * k * scale_sq {
-        Ok(det)
-    } else {
-        Err(Error::new(
-            primitive,
-            Fault::Singular {
-                det: det.as_f64(),
-                scale: scale_sq.sqrt_kernel().as_f64(),
-            },
-        ))
-    }
-}
-
-/// The condition indicator `|det| / scale` of [`check_det_condition`] from a
-/// determinant that passed [`check_det_sq`] and the squared scale it was
-/// checked against (one square root), clamped to Hadamard's bound 1.
-#[inline(always)]
-pub fn condition_from_sq<T: Real>(det: T, scale_sq: T) -> T {
-    let condition = abs(det) / scale_sq.sqrt_kernel();
-    if condition > T::one() {
-        T::one()
-    } else {
-        condition
-    }
-}
-
 /// `x - y` where `None` stands for a zero vector (a fixed point): with a
 /// constant `None`, the missing terms vanish at compile time.
 #[inline(always)]

@@ -28,7 +28,7 @@
 //!    whole, and smaller).
 //! 2. `|x| < 24` (within 15 quadrants, the usual crank angles): Cody-Waite in
 //!    f32 with `pi/2` in three parts and the rounding error carried, so that
-//!    `r` is known as `hi + lo` (see [`reduce_small`]); about 20 instructions.
+//!    `r` is known as `hi + lo` (see `reduce_small`); about 20 instructions.
 //! 3. Otherwise `|x| = (4n + q) pi/2 + r` with `|r| <= pi/4`, computed
 //!    exactly enough for every `f32` by the Payne-Hanek scheme in integer
 //!    arithmetic: the 24-bit significand times a 96-bit window of the binary
