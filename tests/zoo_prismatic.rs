@@ -1,0 +1,270 @@
+//! Prismatic pairs and linear drives in mechanisms none of the examples
+//! define, with masses and loads, checked only against laws the generated
+//! code does not use (as `tests/zoo.rs` does for revolute chains): Newton-Euler
+//! for every body, with each prismatic reaction applied as its normal force
+//! at its stated reference point plus its couple, and the power balance.
+//!
+//! - `PistonDriven`: an offset engine driven by the piston force (a `slider`
+//!   driver): the RRR group turns the crank against a load torque.
+//! - `LoadedBoom`: a boom lifted by a hydraulic `actuator` (the drive is the
+//!   cylinder's axial force; the massless cylinder is a two-force member).
+//! - `LoadedYoke`: a Scotch yoke (`rpp`): the block in the yoke's slot and the
+//!   yoke on its vertical guide, a resisting force along that guide.
+//!
+//! Tolerance 1e-13 of the largest term, as in `tests/zoo.rs` (each residual
+//! sums a handful of products of values good to a few eps times the
+//! conditioning of their systems; the poses keep the relative pivots above
+//! 0.05; measured worst below 2e-15).
+use mechanism::mechanism;
+use mechanism::{force::PrismaticReaction, Point2, Vector2};
+
+mechanism! {
+    /// Offset engine (m, kg, N) driven by the force on its piston: crank
+    /// 0.1 about O, rod 0.4, slide line y = 0.01; a 15 N m load torque on
+    /// the crank, gravity.
+    pub PistonDriven {
+        dof 1;
+        let O = ground(0.0, 0.0);
+        let line = guide((0.0, 0.01), 0 deg);
+        let P = slider(line, s) as piston;
+        let A = rrr(P, 0.4, O, 0.1, right) as (rod, crank);
+        let Gr = point(rod, from P, 0.15, 0 deg);
+        let Gc = point(crank, from O, 0.02, 0 deg);
+        mass piston { m = 0.5, at = P };
+        mass rod { m = 0.9, at = Gr, j = 0.012 };
+        mass crank { m = 2.0, at = Gc, j = 0.02 };
+        torque on crank = -15.0;
+        gravity (0.0, -9.81);
+        range s = (0.32, 0.48);
+    }
+}
+
+mechanism! {
+    /// Boom (m, kg, N) pivoted at A and lifted by a cylinder from B to C,
+    /// 120 kg, a 2 kN load at its tip, gravity.
+    pub LoadedBoom {
+        dof 1;
+        let A = ground(0.0, 0.0);
+        let B = ground(0.8, -0.2);
+        let C = actuator(A, 1.2, B, len, left) as (boom, cylinder);
+        let tip = point(boom, from A, 2.5, 10 deg);
+        let Gb = point(boom, from A, 1.2, 5 deg);
+        mass boom { m = 120.0, at = Gb, j = 60.0 };
+        gravity (0.0, -9.81);
+        force at tip = (0.0, -2000.0);
+        range len = (0.9, 1.6);
+    }
+}
+
+mechanism! {
+    /// Scotch yoke (m, kg, N): crank 0.1, a 0.2 kg block, a 3 kg yoke, a
+    /// 40 N force resisting the yoke's upward motion along its guide.
+    pub LoadedYoke {
+        dof 1;
+        let O = ground(0.0, 0.0);
+        let vertical = guide(O, 90 deg);
+        let A = crank(O, 0.1, phi) as crank_link;
+        let Q = rpp(A, vertical, -90 deg) as (block, yoke) slide (s_slot, s_yoke);
+        let Gy = point(yoke, from Q, (0.0, 0.05));
+        mass yoke { m = 3.0, at = Gy, j = 0.01 };
+        mass block { m = 0.2, at = A };
+        gravity (0.0, -9.81);
+        force at Gy on yoke along vertical = -40.0;
+    }
+}
+
+const G: Vector2<f64> = Vector2::new(0.0, -9.81);
+const TOL: f64 = 1e-13;
+
+fn cross(a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+/// One body's loads: forces at points and couples; `balances` asserts zero
+/// net force and moment (about the origin) relative to the largest term.
+#[derive(Default)]
+struct Body {
+    forces: Vec<(Point2<f64>, Vector2<f64>)>,
+    couples: Vec<f64>,
+}
+
+impl Body {
+    fn force(mut self, at: Point2<f64>, f: Vector2<f64>) -> Self {
+        self.forces.push((at, f));
+        self
+    }
+    fn couple(mut self, c: f64) -> Self {
+        self.couples.push(c);
+        self
+    }
+    /// A prismatic reaction on this body (`sign` +1) or its opposite (-1):
+    /// its normal force at its reference point `at`, and its couple.
+    fn prismatic(self, r: &PrismaticReaction<f64>, at: Point2<f64>, sign: f64) -> Self {
+        self.force(at, r.force * sign).couple(r.moment * sign)
+    }
+    /// Weight and inertia of mass `m`, inertia `j` about centre `g`.
+    fn inertia(self, m: f64, j: f64, g: Point2<f64>, a_g: Vector2<f64>, alpha: f64) -> Self {
+        self.force(g, G * m - a_g * m).couple(-j * alpha)
+    }
+    fn balances(&self, what: &str) {
+        let mut sum = Vector2::zeros();
+        let mut moment = 0.0;
+        let (mut fscale, mut mscale) = (0.0f64, 0.0f64);
+        for (p, f) in &self.forces {
+            sum += f;
+            moment += cross(&p.coords, f);
+            fscale = fscale.max(f.norm());
+            mscale = mscale.max(p.coords.norm() * f.norm());
+        }
+        for c in &self.couples {
+            moment += c;
+            mscale = mscale.max(c.abs());
+        }
+        assert!(
+            sum.norm() <= TOL * fscale,
+            "{what}: net force {sum:?} (scale {fscale:e})"
+        );
+        assert!(
+            moment.abs() <= TOL * mscale,
+            "{what}: net moment {moment:e} (scale {mscale:e})"
+        );
+    }
+}
+
+fn power_balances(terms: &[f64], what: &str) {
+    let scale = terms.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+    let sum: f64 = terms.iter().sum();
+    assert!(
+        sum.abs() <= TOL * scale,
+        "{what}: power residual {sum:e} of {scale:e}: {terms:?}"
+    );
+}
+
+/// Power of weight and inertia of one body.
+fn inertial(m: f64, j: f64, vg: Vector2<f64>, ag: Vector2<f64>, omega: f64, alpha: f64) -> f64 {
+    (G * m - ag * m).dot(&vg) - j * alpha * omega
+}
+
+#[test]
+fn piston_driven_engine_balances() {
+    let m = PistonDriven::<f64>::default();
+    let dir = Vector2::new(1.0, 0.0);
+    let mut checked = 0;
+    for k in 0..=32 {
+        let (s0, sd, sdd) = (0.32 + 0.005 * k as f64, 1.5, -40.0);
+        let s = m
+            .solve(
+                &PistonDrivenInput { s: s0 },
+                &PistonDrivenInput { s: sd },
+                &PistonDrivenInput { s: sdd },
+            )
+            .unwrap();
+        let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+        if f.condition < 0.05 {
+            continue;
+        }
+        checked += 1;
+        Body::default()
+            .prismatic(&f.r_ground_piston, p.P, 1.0)
+            .force(p.P, -f.r_piston_rod)
+            .force(p.P, dir * f.drive_s)
+            .inertia(0.5, 0.0, p.P, a.P, 0.0)
+            .balances("piston");
+        Body::default()
+            .force(p.P, f.r_piston_rod)
+            .force(p.A, -f.r_rod_crank)
+            .inertia(0.9, 0.012, p.Gr, a.Gr, a.rod)
+            .balances("rod");
+        Body::default()
+            .force(p.O, f.r_ground_crank)
+            .force(p.A, f.r_rod_crank)
+            .couple(-15.0)
+            .inertia(2.0, 0.02, p.Gc, a.Gc, a.crank)
+            .balances("crank");
+        power_balances(
+            &[
+                f.drive_s * sd,
+                -15.0 * v.crank,
+                inertial(0.5, 0.0, v.P, a.P, 0.0, 0.0),
+                inertial(0.9, 0.012, v.Gr, a.Gr, v.rod, a.rod),
+                inertial(2.0, 0.02, v.Gc, a.Gc, v.crank, a.crank),
+            ],
+            "PistonDriven",
+        );
+    }
+    assert!(checked >= 25, "only {checked} of 33 poses checked");
+}
+
+#[test]
+fn boom_lifted_by_its_cylinder_balances() {
+    let m = LoadedBoom::<f64>::default();
+    for k in 0..=35 {
+        let (l0, ld, ldd) = (0.9 + 0.02 * k as f64, 0.05, 0.3);
+        let s = m
+            .solve(
+                &LoadedBoomInput { len: l0 },
+                &LoadedBoomInput { len: ld },
+                &LoadedBoomInput { len: ldd },
+            )
+            .unwrap();
+        let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+        let axis = (p.C - p.B) / (p.C - p.B).norm();
+        let tip = Vector2::new(0.0, -2000.0);
+        Body::default()
+            .force(p.A, f.r_ground_boom)
+            .force(p.C, axis * f.drive_len)
+            .force(p.tip, tip)
+            .inertia(120.0, 60.0, p.Gb, a.Gb, a.boom)
+            .balances("boom");
+        power_balances(
+            &[
+                f.drive_len * ld,
+                tip.dot(&v.tip),
+                inertial(120.0, 60.0, v.Gb, a.Gb, v.boom, a.boom),
+            ],
+            "LoadedBoom",
+        );
+    }
+}
+
+#[test]
+fn scotch_yoke_with_masses_balances() {
+    let m = LoadedYoke::<f64>::default();
+    let up = Vector2::new(0.0, 1.0);
+    for k in 0..72 {
+        let (q, w, al) = (f64::to_radians(5.0 * k as f64 + 1.0), 30.0, 200.0);
+        let s = m
+            .solve(
+                &LoadedYokeInput { phi: q },
+                &LoadedYokeInput { phi: w },
+                &LoadedYokeInput { phi: al },
+            )
+            .unwrap();
+        let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+        Body::default()
+            .force(p.O, f.r_ground_crank_link)
+            .force(p.A, -f.r_crank_link_block)
+            .couple(f.drive_phi)
+            .balances("crank (massless)");
+        Body::default()
+            .force(p.A, f.r_crank_link_block)
+            .prismatic(&f.r_block_yoke, p.A, -1.0)
+            .inertia(0.2, 0.0, p.A, a.A, a.block)
+            .balances("block");
+        Body::default()
+            .prismatic(&f.r_block_yoke, p.A, 1.0)
+            .prismatic(&f.r_ground_yoke, p.A, 1.0)
+            .force(p.Gy, up * -40.0)
+            .inertia(3.0, 0.01, p.Gy, a.Gy, a.yoke)
+            .balances("yoke");
+        power_balances(
+            &[
+                f.drive_phi * w,
+                -40.0 * up.dot(&v.Gy),
+                inertial(0.2, 0.0, v.A, a.A, v.block, a.block),
+                inertial(3.0, 0.01, v.Gy, a.Gy, v.yoke, a.yoke),
+            ],
+            "LoadedYoke",
+        );
+    }
+}
