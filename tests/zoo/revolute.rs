@@ -1,31 +1,8 @@
-//! Mechanisms that none of the examples define, checked only against laws the
-//! generated code does not use: Newton-Euler for every link (the reactions
-//! the force analysis returns, the loads and the inertia terms must sum to
-//! zero force and moment on each body), the power balance (the drives' power
-//! equals minus the power of every load, weight and inertia term), the
-//! constraint lengths, and central finite differences of the generated
-//! position and velocity.
-//!
-//! - `WattII`: a four-bar whose rocker is a ternary link driving a second
-//!   RRR group (two loops; the rocker carries three joints, so the second
-//!   group's reactions reach the first group's force system as loads).
-//! - `StephensonIII`: a four-bar whose coupler point drives an RRR group
-//!   (the ternary link is the coupler, moving on both sides).
-//! - `LoadedFiveBar`: two cranks (two degrees of freedom, two drive torques)
-//!   with masses on all four moving links.
-//!
-//! Tolerances. Equilibrium and power: each residual is a sum of a handful of
-//! products of generated values, every value within a few eps times the
-//! conditioning of its linear system (the poses below keep the relative
-//! pivots above 0.05), so the residuals are a few hundred eps of the largest
-//! term at most: 1e-13 (450 eps; the worst measured is below 4e-15, 18 eps).
-//! A missing or wrong term shows at its own size: the smallest term here is
-//! about 1e-3 of the largest, 1e10 times the tolerance. Finite differences:
-//! `h = 1e-5` gives a truncation error of about `h^2` times the third
-//! derivative (1e-10 of the scale) and a rounding error of `eps / h` (2e-11);
-//! 1e-7 of the scale leaves room and catches a wrong term (order 1e-1).
+//! Revolute chains: `WattII`, `StephensonIII`, `LoadedFiveBar` (see `main.rs`).
+
+use crate::common::*;
 use mechanism::mechanism;
-use mechanism::{Point2, Vector2};
+use mechanism::Vector2;
 
 mechanism! {
     /// Watt II six-bar (m, kg, N): crank O2-A, coupler A-B, ternary rocker
@@ -105,99 +82,6 @@ mechanism! {
     }
 }
 
-const G: Vector2<f64> = Vector2::new(0.0, -9.81);
-const TOL: f64 = 1e-13;
-
-fn cross(a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
-    a.x * b.y - a.y * b.x
-}
-
-/// One link's loads: forces applied at points (reactions, weights, external
-/// forces, inertia forces `-m a_G`) and couples (external, `-J alpha`).
-#[derive(Default)]
-struct Body {
-    forces: Vec<(Point2<f64>, Vector2<f64>)>,
-    couples: Vec<f64>,
-}
-
-impl Body {
-    fn force(mut self, at: Point2<f64>, f: Vector2<f64>) -> Self {
-        self.forces.push((at, f));
-        self
-    }
-    fn couple(mut self, c: f64) -> Self {
-        self.couples.push(c);
-        self
-    }
-    /// Inertia and weight of a link of mass `m`, inertia `j` about its centre
-    /// `g` (acceleration `a_g`, angular acceleration `alpha`), gravity `grav`.
-    fn inertia(
-        self,
-        m: f64,
-        j: f64,
-        g: Point2<f64>,
-        a_g: Vector2<f64>,
-        alpha: f64,
-        grav: Vector2<f64>,
-    ) -> Self {
-        self.force(g, grav * m - a_g * m).couple(-j * alpha)
-    }
-    /// Asserts zero net force and zero net moment (about the origin), each
-    /// relative to the largest single term; `what` names the link.
-    fn balances(&self, what: &str) {
-        let mut sum = Vector2::zeros();
-        let mut moment = 0.0;
-        let (mut fscale, mut mscale) = (0.0f64, 0.0f64);
-        for (p, f) in &self.forces {
-            sum += f;
-            let m = cross(&p.coords, f);
-            moment += m;
-            fscale = fscale.max(f.norm());
-            mscale = mscale.max(m.abs()).max(p.coords.norm() * f.norm());
-        }
-        for c in &self.couples {
-            moment += c;
-            mscale = mscale.max(c.abs());
-        }
-        assert!(
-            sum.norm() <= TOL * fscale,
-            "{what}: net force {sum:?} (scale {fscale:e})"
-        );
-        assert!(
-            moment.abs() <= TOL * mscale,
-            "{what}: net moment {moment:e} (scale {mscale:e})"
-        );
-    }
-}
-
-/// Asserts that the powers in `terms` sum to zero, relative to the largest.
-fn power_balances(terms: &[f64], what: &str) {
-    let scale = terms.iter().fold(0.0f64, |m, t| m.max(t.abs()));
-    let sum: f64 = terms.iter().sum();
-    assert!(
-        sum.abs() <= TOL * scale,
-        "{what}: power residual {sum:e} of {scale:e}: {terms:?}"
-    );
-}
-
-fn assert_len(a: Point2<f64>, b: Point2<f64>, l: f64, what: &str) {
-    // Lengths to a few eps of the link (the dyads close to rounding).
-    assert!(
-        ((a - b).norm() - l).abs() <= 1e-14 * l.max(1.0),
-        "{what}: {} vs {l}",
-        (a - b).norm()
-    );
-}
-
-/// Finite-difference step and tolerance (see the module documentation).
-const H: f64 = 1e-5;
-fn close_fd(got: Vector2<f64>, fd: Vector2<f64>, scale: f64, what: &str) {
-    assert!(
-        (got - fd).norm() <= 1e-7 * scale.max(1.0),
-        "{what}: {got:?} vs {fd:?}"
-    );
-}
-
 #[test]
 fn watt_ii_closes_differentiates_and_balances() {
     let m = WattII::<f64>::default();
@@ -262,18 +146,14 @@ fn watt_ii_closes_differentiates_and_balances() {
             .inertia(0.7, 0.004, p.G6, a.G6, a.output, G)
             .balances("output");
 
-        let inertial =
-            |mass: f64, j: f64, vg: Vector2<f64>, ag: Vector2<f64>, om: f64, alpha: f64| {
-                (G * mass - ag * mass).dot(&vg) - j * alpha * om
-            };
         power_balances(
             &[
                 f.drive_theta * v.crank,
-                inertial(0.8, 0.0012, v.G2, a.G2, v.crank, a.crank),
-                inertial(1.6, 0.021, v.G3, a.G3, v.coupler, a.coupler),
-                inertial(1.1, 0.009, v.G4, a.G4, v.rocker, a.rocker),
-                inertial(1.3, 0.014, v.G5, a.G5, v.coupler2, a.coupler2),
-                inertial(0.7, 0.004, v.G6, a.G6, v.output, a.output),
+                inertial(0.8, 0.0012, v.G2, a.G2, v.crank, a.crank, G),
+                inertial(1.6, 0.021, v.G3, a.G3, v.coupler, a.coupler, G),
+                inertial(1.1, 0.009, v.G4, a.G4, v.rocker, a.rocker, G),
+                inertial(1.3, 0.014, v.G5, a.G5, v.coupler2, a.coupler2, G),
+                inertial(0.7, 0.004, v.G6, a.G6, v.output, a.output, G),
                 ext.dot(&v.G5),
                 -4.0 * v.output,
             ],
@@ -412,18 +292,14 @@ fn five_bar_with_two_drives_balances() {
                 .force(p.P, f.r_forearm1_forearm2)
                 .inertia(0.45, 0.001, p.G4, a.G4, a.forearm2, G)
                 .balances("forearm2");
-            let inertial =
-                |mass: f64, j: f64, vg: Vector2<f64>, ag: Vector2<f64>, om: f64, alpha: f64| {
-                    (G * mass - ag * mass).dot(&vg) - j * alpha * om
-                };
             power_balances(
                 &[
                     f.drive_q1 * w1,
                     f.drive_q2 * w2,
-                    inertial(0.3, 0.0004, v.G1, a.G1, v.arm1, a.arm1),
-                    inertial(0.3, 0.0004, v.G2, a.G2, v.arm2, a.arm2),
-                    inertial(0.45, 0.001, v.G3, a.G3, v.forearm1, a.forearm1),
-                    inertial(0.45, 0.001, v.G4, a.G4, v.forearm2, a.forearm2),
+                    inertial(0.3, 0.0004, v.G1, a.G1, v.arm1, a.arm1, G),
+                    inertial(0.3, 0.0004, v.G2, a.G2, v.arm2, a.arm2, G),
+                    inertial(0.45, 0.001, v.G3, a.G3, v.forearm1, a.forearm1, G),
+                    inertial(0.45, 0.001, v.G4, a.G4, v.forearm2, a.forearm2, G),
                     ext.dot(&v.P),
                 ],
                 "LoadedFiveBar",

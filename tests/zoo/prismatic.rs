@@ -1,22 +1,10 @@
-//! Prismatic pairs and linear drives in mechanisms none of the examples
-//! define, with masses and loads, checked only against laws the generated
-//! code does not use (as `tests/zoo.rs` does for revolute chains): Newton-Euler
-//! for every body, with each prismatic reaction applied as its normal force
-//! at its stated reference point plus its couple, and the power balance.
-//!
-//! - `PistonDriven`: an offset engine driven by the piston force (a `slider`
-//!   driver): the RRR group turns the crank against a load torque.
-//! - `LoadedBoom`: a boom lifted by a hydraulic `actuator` (the drive is the
-//!   cylinder's axial force; the massless cylinder is a two-force member).
-//! - `LoadedYoke`: a Scotch yoke (`rpp`): the block in the yoke's slot and the
-//!   yoke on its vertical guide, a resisting force along that guide.
-//!
-//! Tolerance 1e-13 of the largest term, as in `tests/zoo.rs` (each residual
-//! sums a handful of products of values good to a few eps times the
-//! conditioning of their systems; the poses keep the relative pivots above
-//! 0.05; measured worst below 2e-15).
+//! Prismatic pairs and linear drives: `PistonDriven`, `LoadedBoom`,
+//! `LoadedYoke` (see `main.rs`). Each prismatic reaction is applied as its
+//! normal force at its stated reference point plus its couple.
+
+use crate::common::*;
 use mechanism::mechanism;
-use mechanism::{force::PrismaticReaction, Point2, Vector2};
+use mechanism::Vector2;
 
 mechanism! {
     /// Offset engine (m, kg, N) driven by the force on its piston: crank
@@ -73,78 +61,6 @@ mechanism! {
     }
 }
 
-const G: Vector2<f64> = Vector2::new(0.0, -9.81);
-const TOL: f64 = 1e-13;
-
-fn cross(a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
-    a.x * b.y - a.y * b.x
-}
-
-/// One body's loads: forces at points and couples; `balances` asserts zero
-/// net force and moment (about the origin) relative to the largest term.
-#[derive(Default)]
-struct Body {
-    forces: Vec<(Point2<f64>, Vector2<f64>)>,
-    couples: Vec<f64>,
-}
-
-impl Body {
-    fn force(mut self, at: Point2<f64>, f: Vector2<f64>) -> Self {
-        self.forces.push((at, f));
-        self
-    }
-    fn couple(mut self, c: f64) -> Self {
-        self.couples.push(c);
-        self
-    }
-    /// A prismatic reaction on this body (`sign` +1) or its opposite (-1):
-    /// its normal force at its reference point `at`, and its couple.
-    fn prismatic(self, r: &PrismaticReaction<f64>, at: Point2<f64>, sign: f64) -> Self {
-        self.force(at, r.force * sign).couple(r.moment * sign)
-    }
-    /// Weight and inertia of mass `m`, inertia `j` about centre `g`.
-    fn inertia(self, m: f64, j: f64, g: Point2<f64>, a_g: Vector2<f64>, alpha: f64) -> Self {
-        self.force(g, G * m - a_g * m).couple(-j * alpha)
-    }
-    fn balances(&self, what: &str) {
-        let mut sum = Vector2::zeros();
-        let mut moment = 0.0;
-        let (mut fscale, mut mscale) = (0.0f64, 0.0f64);
-        for (p, f) in &self.forces {
-            sum += f;
-            moment += cross(&p.coords, f);
-            fscale = fscale.max(f.norm());
-            mscale = mscale.max(p.coords.norm() * f.norm());
-        }
-        for c in &self.couples {
-            moment += c;
-            mscale = mscale.max(c.abs());
-        }
-        assert!(
-            sum.norm() <= TOL * fscale,
-            "{what}: net force {sum:?} (scale {fscale:e})"
-        );
-        assert!(
-            moment.abs() <= TOL * mscale,
-            "{what}: net moment {moment:e} (scale {mscale:e})"
-        );
-    }
-}
-
-fn power_balances(terms: &[f64], what: &str) {
-    let scale = terms.iter().fold(0.0f64, |m, t| m.max(t.abs()));
-    let sum: f64 = terms.iter().sum();
-    assert!(
-        sum.abs() <= TOL * scale,
-        "{what}: power residual {sum:e} of {scale:e}: {terms:?}"
-    );
-}
-
-/// Power of weight and inertia of one body.
-fn inertial(m: f64, j: f64, vg: Vector2<f64>, ag: Vector2<f64>, omega: f64, alpha: f64) -> f64 {
-    (G * m - ag * m).dot(&vg) - j * alpha * omega
-}
-
 #[test]
 fn piston_driven_engine_balances() {
     let m = PistonDriven::<f64>::default();
@@ -168,26 +84,26 @@ fn piston_driven_engine_balances() {
             .prismatic(&f.r_ground_piston, p.P, 1.0)
             .force(p.P, -f.r_piston_rod)
             .force(p.P, dir * f.drive_s)
-            .inertia(0.5, 0.0, p.P, a.P, 0.0)
+            .inertia(0.5, 0.0, p.P, a.P, 0.0, G)
             .balances("piston");
         Body::default()
             .force(p.P, f.r_piston_rod)
             .force(p.A, -f.r_rod_crank)
-            .inertia(0.9, 0.012, p.Gr, a.Gr, a.rod)
+            .inertia(0.9, 0.012, p.Gr, a.Gr, a.rod, G)
             .balances("rod");
         Body::default()
             .force(p.O, f.r_ground_crank)
             .force(p.A, f.r_rod_crank)
             .couple(-15.0)
-            .inertia(2.0, 0.02, p.Gc, a.Gc, a.crank)
+            .inertia(2.0, 0.02, p.Gc, a.Gc, a.crank, G)
             .balances("crank");
         power_balances(
             &[
                 f.drive_s * sd,
                 -15.0 * v.crank,
-                inertial(0.5, 0.0, v.P, a.P, 0.0, 0.0),
-                inertial(0.9, 0.012, v.Gr, a.Gr, v.rod, a.rod),
-                inertial(2.0, 0.02, v.Gc, a.Gc, v.crank, a.crank),
+                inertial(0.5, 0.0, v.P, a.P, 0.0, 0.0, G),
+                inertial(0.9, 0.012, v.Gr, a.Gr, v.rod, a.rod, G),
+                inertial(2.0, 0.02, v.Gc, a.Gc, v.crank, a.crank, G),
             ],
             "PistonDriven",
         );
@@ -214,13 +130,13 @@ fn boom_lifted_by_its_cylinder_balances() {
             .force(p.A, f.r_ground_boom)
             .force(p.C, axis * f.drive_len)
             .force(p.tip, tip)
-            .inertia(120.0, 60.0, p.Gb, a.Gb, a.boom)
+            .inertia(120.0, 60.0, p.Gb, a.Gb, a.boom, G)
             .balances("boom");
         power_balances(
             &[
                 f.drive_len * ld,
                 tip.dot(&v.tip),
-                inertial(120.0, 60.0, v.Gb, a.Gb, v.boom, a.boom),
+                inertial(120.0, 60.0, v.Gb, a.Gb, v.boom, a.boom, G),
             ],
             "LoadedBoom",
         );
@@ -249,20 +165,20 @@ fn scotch_yoke_with_masses_balances() {
         Body::default()
             .force(p.A, f.r_crank_link_block)
             .prismatic(&f.r_block_yoke, p.A, -1.0)
-            .inertia(0.2, 0.0, p.A, a.A, a.block)
+            .inertia(0.2, 0.0, p.A, a.A, a.block, G)
             .balances("block");
         Body::default()
             .prismatic(&f.r_block_yoke, p.A, 1.0)
             .prismatic(&f.r_ground_yoke, p.A, 1.0)
             .force(p.Gy, up * -40.0)
-            .inertia(3.0, 0.01, p.Gy, a.Gy, a.yoke)
+            .inertia(3.0, 0.01, p.Gy, a.Gy, a.yoke, G)
             .balances("yoke");
         power_balances(
             &[
                 f.drive_phi * w,
                 -40.0 * up.dot(&v.Gy),
-                inertial(0.2, 0.0, v.A, a.A, v.block, a.block),
-                inertial(3.0, 0.01, v.Gy, a.Gy, v.yoke, a.yoke),
+                inertial(0.2, 0.0, v.A, a.A, v.block, a.block, G),
+                inertial(3.0, 0.01, v.Gy, a.Gy, v.yoke, a.yoke, G),
             ],
             "LoadedYoke",
         );
