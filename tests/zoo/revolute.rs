@@ -308,3 +308,70 @@ fn five_bar_with_two_drives_balances() {
     }
     assert!(checked >= 50, "only {checked} of 100 poses checked");
 }
+
+mechanism! {
+    /// `StephensonIII` with a short last group (0.16 + 0.15 against a
+    /// distance from P to O6 of 0.205 to 0.356 over the turn): it cannot
+    /// close over part of the turn, and passes through both edges of its
+    /// assembly (full extension) twice per turn.
+    pub StephensonEdge {
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(0.30, 0.0);
+        let O6 = ground(0.05, 0.42);
+        let A = crank(O2, 0.08, theta) as crank;
+        let B = rrr(A, 0.26, O4, 0.20, left) as (coupler, rocker);
+        let P = point(coupler, from A, 0.15, 40 deg);
+        let C = rrr(P, 0.16, O6, 0.15, right) as (link5, link6);
+        let G3 = point(coupler, from A, 0.12, 15 deg);
+        let G5 = point(link5, from P, 0.08, 0 deg);
+        mass coupler { m = 2.0, at = G3, j = 0.015 };
+        mass link5 { m = 0.9, at = G5, j = 0.006 };
+        mass link6 { m = 0.6, at = C, j = 0.003 };
+        gravity (0.0, -9.81);
+        // The compile-time check (over the declared range) passes; the
+        // test below sweeps the whole turn at run time.
+        range theta = (-29 deg, 196 deg);
+    }
+}
+
+/// `StephensonEdge` over a fine turn (0.01 deg) in f64 and f32, with a crank
+/// rate and acceleration: every pose is either a full solution with no NaN
+/// or infinity anywhere (forces included), or a typed error naming the last
+/// group; both occur, and the solutions next to the edges (where the
+/// reactions grow without bound) stay finite.
+#[test]
+fn stephenson_iii_fine_turn_is_finite_or_a_typed_error() {
+    fn turn<T: mechanism::Real>() -> (usize, usize)
+    where
+        StephensonEdgeSolution<T>: core::fmt::Debug,
+    {
+        let m = StephensonEdge::<T>::default();
+        let (mut ok, mut failed) = (0, 0);
+        for k in 0..36_000 {
+            let q = T::lit(f64::to_radians(0.01 * k as f64));
+            let i = |x: T| StephensonEdgeInput { theta: x };
+            match m.solve(&i(q), &i(T::lit(-8.0)), &i(T::lit(15.0))) {
+                Ok(s) => {
+                    let text = format!("{s:?}");
+                    assert!(
+                        !text.contains("NaN") && !text.contains("inf"),
+                        "at step {k}: {text}"
+                    );
+                    ok += 1;
+                }
+                Err(e) => {
+                    assert_eq!(e.group, "C", "at step {k}: {e}");
+                    failed += 1;
+                }
+            }
+        }
+        (ok, failed)
+    }
+    for (name, (ok, failed)) in [("f64", turn::<f64>()), ("f32", turn::<f32>())] {
+        assert!(
+            ok > 1000 && failed > 1000,
+            "{name}: {ok} solved, {failed} typed errors"
+        );
+    }
+}
