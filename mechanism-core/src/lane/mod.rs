@@ -59,9 +59,13 @@
 //!   octant corrections by selects.
 //! - `sqrt`: the bit-level first guess of `1/sqrt(x)` (shift the `f64` bit
 //!   pattern right by one, subtract from `0x5FE6_EB50_C7B5_37A9`; within 3.5 %),
-//!   four Newton steps `y (3/2 - x y^2 / 2)` (relative error 3.5e-2 -> 1.8e-3
-//!   -> 4.8e-6 -> 3.5e-11 -> rounding), `s = x y` and one correction
-//!   `s + y (x - s^2) / 2`.
+//!   Newton steps `y (3/2 - x y^2 / 2)` (relative error 3.5e-2 -> 1.8e-3
+//!   -> 4.8e-6 -> 3.5e-11; three for f64, two for f32), `s = x y` and one
+//!   correction `s + y (x - s^2) / 2`, which squares the relative error of
+//!   `s` (f64: about 1e-21; f32: about 2e-11), far below the last bit.
+//! - The polynomials are evaluated by Estrin's scheme (pairs of terms, then
+//!   powers of the square), which shortens the chain of dependent
+//!   operations that a long vectorized loop body waits on.
 
 use crate::scalar::Real;
 
