@@ -30,6 +30,12 @@ use syn::Ident;
 /// types (`Point2<T>` for points, `T` otherwise; velocity and acceleration
 /// outputs have the same names).
 pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -> TokenStream {
+    let kept: Vec<(Ident, TokenStream)> = outputs
+        .iter()
+        .filter(|(o, _)| !given(model, o))
+        .cloned()
+        .collect();
+    let outputs = &kept[..];
     let name = &model.name;
     let vis = &model.vis;
     let batch_ty = format_ident!("{}Batch", name);
@@ -264,6 +270,19 @@ pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -
     }
 }
 
+/// `true` for an output the batch leaves out because the caller has it
+/// already: a ground point (its position is in the definition, its
+/// velocity and acceleration are zero) and the link of a crank (its angle is
+/// the element's input, its rates the input's rates). Writing them for every
+/// element would be memory traffic only.
+fn given(model: &Model, output: &Ident) -> bool {
+    model.stmts.iter().any(|s| match &s.kind {
+        Kind::Ground { .. } => s.name == *output,
+        Kind::Crank { .. } => s.links.first() == Some(output),
+        _ => false,
+    })
+}
+
 /// Per-statement names of the lane code: a point's position, velocity and
 /// acceleration components.
 fn pv(prefix: &str, name: &Ident) -> (Ident, Ident) {
@@ -332,6 +351,21 @@ fn unit(angle: &Value, id: Ident, pre: &mut TokenStream) -> (TokenStream, TokenS
             let a = angle.emit();
             pre.extend(quote!(let #id = ::mechanism::geometry::unit(#a);));
             (quote!(#id.x), quote!(#id.y))
+        }
+    }
+}
+
+/// The sum of `terms` as a balanced tree of additions (`(a + b) + (c + d)`):
+/// the same check as adding them one by one, with a dependency chain of
+/// `log2(n)` additions instead of `n`, which a long loop body waits on.
+fn tree_sum(terms: &[TokenStream]) -> Option<TokenStream> {
+    match terms {
+        [] => None,
+        [t] => Some(t.clone()),
+        _ => {
+            let (lo, hi) = terms.split_at(terms.len() / 2);
+            let (a, b) = (tree_sum(lo)?, tree_sum(hi)?);
+            Some(quote!((#a + #b)))
         }
     }
 }
@@ -936,7 +970,9 @@ fn lane(
             }
             points.insert(name.to_string(), ());
         }
-        body.extend(quote!(#(chk += #checked;)*));
+        if let Some(sum) = tree_sum(&checked) {
+            body.extend(quote!(chk += #sum;));
+        }
         for (l, info) in new_links {
             links.insert(l, info);
         }
