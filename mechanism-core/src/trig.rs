@@ -611,7 +611,9 @@ mod tests {
     /// Representable steps between the kernel's square root and the correctly
     /// rounded one (both positive: bit patterns are ordered like values).
     fn sqrt_steps(x: f32) -> u32 {
-        sqrt_f32_soft(x).to_bits().abs_diff(sqrt_reference(x).to_bits())
+        sqrt_f32_soft(x)
+            .to_bits()
+            .abs_diff(sqrt_reference(x).to_bits())
     }
 
     #[test]
