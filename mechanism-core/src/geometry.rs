@@ -117,8 +117,23 @@ pub fn unit<T: Real>(angle: T) -> Vector2<T> {
 /// `x * 0` is zero exactly when every `x` is finite) executes fewer
 /// instructions but competes for the floating-point units: on the x86-64
 /// development machine it made the four-bar's solve 5 to 9 % slower.
+///
+/// Except for `f32` on 32-bit ARM with a hardware floating-point ABI
+/// (Cortex-M4F and the like): there the float-only form is taken, one
+/// multiply-add per value and one comparison (the integer form moves each
+/// value to a core register and tests its bits, five instructions): on the
+/// four-bar's full solve it saves about 170 bytes and 40 instructions per
+/// evaluation (`docs/embedded.md` section 4). Not for `f64` there, nor on an
+/// FPU-less core, where each multiply would be a software routine.
 #[inline(always)]
 pub fn all_finite<T: Real, const N: usize>(xs: [T; N]) -> bool {
+    #[cfg(all(target_arch = "arm", target_abi = "eabihf"))]
+    if core::mem::size_of::<T>() == 4 {
+        // `x * 0` is a zero for finite `x` and NaN for an infinity or NaN;
+        // a sum of zeros is a zero, and NaN compares unequal to it.
+        let zero = T::zero();
+        return xs.iter().fold(zero, |acc, &x| acc + x * zero) == zero;
+    }
     xs.iter().all(|x| x.finite())
 }
 

@@ -160,50 +160,53 @@ enum Check {
 #[inline(never)]
 fn position_error<T: Real>(d: Vector2<T>, l1: T, l2: T, failed: Check) -> Error {
     let good = |x: T| x.finite() && x > T::zero();
-    let fault = if !(good(l1) && good(l2)) {
+    let sum = l1 + l2;
+    let diff = abs(l1 - l2);
+    // The fault as (kind, name, first value, second value), widened to `f64`
+    // once at the end (one copy of the conversion in the code).
+    let (kind, what, a, b) = if !(good(l1) && good(l2)) {
         // The first bad length.
         let (what, x) = if good(l1) {
             ("RRR length l2", l2)
         } else {
             ("RRR length l1", l1)
         };
-        if x.finite() {
-            Fault::NonPositive {
-                what,
-                value: x.as_f64(),
-            }
-        } else {
-            Fault::NonFinite { what }
-        }
+        (Kind::Input, what, x, x)
     } else if !all_finite([d.x, d.y]) {
-        Fault::NonFinite {
-            what: "RRR joint distance",
-        }
+        (Kind::NonFinite, "RRR joint distance", sum, sum)
     } else {
         match failed {
-            Check::Degenerate => Fault::Singular {
-                det: 0.0,
-                scale: (l1 + l2).as_f64(),
-            },
+            Check::Degenerate => (Kind::Singular, "", T::zero(), sum),
             Check::Reach => {
                 let dist = length(&d);
-                let (outer, inner) = (l1 + l2 - dist, dist - abs(l1 - l2));
-                let (miss, reach) = if outer <= inner {
-                    (-outer, l1 + l2)
+                let (outer, inner) = (sum - dist, dist - diff);
+                if outer <= inner {
+                    (Kind::Reach, "", -outer, sum)
                 } else {
-                    (-inner, abs(l1 - l2))
-                };
-                Fault::CannotAssemble {
-                    miss: miss.as_f64(),
-                    reach: reach.as_f64(),
+                    (Kind::Reach, "", -inner, diff)
                 }
             }
-            Check::JointFinite => Fault::NonFinite {
-                what: "RRR joint C",
-            },
+            Check::JointFinite => (Kind::NonFinite, "RRR joint C", sum, sum),
         }
     };
+    let (a, b) = (a.as_f64(), b.as_f64());
+    let fault = match kind {
+        Kind::Input if a.is_finite() => Fault::NonPositive { what, value: a },
+        Kind::Input | Kind::NonFinite => Fault::NonFinite { what },
+        Kind::Singular => Fault::Singular { det: a, scale: b },
+        Kind::Reach => Fault::CannotAssemble { miss: a, reach: b },
+    };
     Error::new(P, fault)
+}
+
+/// The fault kinds of [`position_error`]: `Input` is `NonPositive` for a
+/// finite value, else `NonFinite`.
+#[derive(Clone, Copy)]
+enum Kind {
+    Input,
+    NonFinite,
+    Singular,
+    Reach,
 }
 
 /// Rates of the group from the velocities of `A` and `B` (L/s); `None` means

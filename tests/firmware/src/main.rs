@@ -138,9 +138,53 @@ fn check(
     }
 }
 
+/// `mechanism::trig::sqrt_f32` on this core against the exact square root,
+/// for 20 000 positive `f32` spread over the whole range (subnormals to
+/// `f32::MAX`): correctly rounded on the Cortex-M4F (the FPU's `vsqrt.f32`),
+/// at most one representable step away on the Cortex-M3 (the software
+/// kernel, as documented). Exact test, no tolerance: `y` is within `k` steps
+/// of the correctly rounded root when `x` lies strictly between the squares
+/// of the midpoints just outside `y - k steps` and `y + k steps`; those
+/// midpoints have 25 significant bits, so their squares (50 bits) and the
+/// comparison are exact in `f64`.
+fn check_sqrt() -> bool {
+    let k = if cfg!(target_abi = "eabihf") { 0 } else { 1 };
+    let mut worst_bad = None;
+    for i in 1..=20_000u32 {
+        let bits = i * (0x7F80_0000 / 20_001);
+        let x = f32::from_bits(bits);
+        let y = mechanism::trig::sqrt_f32(x);
+        let at = |b: u32| f32::from_bits(b) as f64;
+        let yb = y.to_bits();
+        let (lo, hi) = (yb - k, yb + k);
+        let mid_lo = (at(lo - 1) + at(lo)) / 2.0;
+        let mid_hi = (at(hi) + at(hi + 1)) / 2.0;
+        let xd = x as f64;
+        if !(mid_lo * mid_lo < xd && xd < mid_hi * mid_hi) {
+            worst_bad = Some((x, y));
+            break;
+        }
+    }
+    let what = if k == 0 {
+        "correctly rounded"
+    } else {
+        "within one step"
+    };
+    match worst_bad {
+        None => {
+            hprintln!("ok   sqrt_f32: 20000 arguments, each {}", what);
+            true
+        }
+        Some((x, y)) => {
+            hprintln!("FAIL sqrt_f32({:e}) = {:e}: not {}", x, y, what);
+            false
+        }
+    }
+}
+
 #[entry]
 fn main() -> ! {
-    let mut ok = true;
+    let mut ok = check_sqrt();
     ok &= check(
         "fourbar",
         &expected::FOURBAR,
