@@ -19,12 +19,17 @@
 //!   solver is backward stable: its residual is a few rounding units of the
 //!   terms it sums, whatever the conditioning (near a singular pose the
 //!   reactions grow and so does the yardstick). Observed: below `8 eps`.
-//! - power balance: `1e-12` relative to the sum of the absolute values of the
-//!   power terms. Positions, rates and reactions each carry relative errors of
-//!   a few eps times the condition number, which the samples bound (poses with a
-//!   relative kinematic determinant below 0.05 or `min_pivot_ratio < 0.01` are
-//!   rejected), so errors stay below `~1e-13`; 1e-12 still catches any sign or
-//!   lever-arm mistake (those are errors of order 1).
+//! - power balance: `1e-10` relative to the gross power (the absolute values
+//!   of the power terms and of the products inside each link's power; see
+//!   `check_power`). Positions, rates and reactions each carry relative errors
+//!   of a few eps times the condition number, which the samples bound (poses
+//!   with a relative kinematic determinant below 0.05 or `min_pivot_ratio <
+//!   0.01` are rejected), but a link's load can itself be a small difference
+//!   (a weight, an external force and a couple nearly cancelling), and the
+//!   reactions' rounding follows the parts, not the difference: over 200 000
+//!   random cases per test the worst was 2.1e-11 (`1e-12` of the terms alone
+//!   failed about once in 100 000 cases, so now and then in CI). 1e-10 still
+//!   catches any sign or lever-arm mistake (those are errors of order 1).
 //! - seed 003: the print has two decimals; the exact solution of its inputs
 //!   (rational arithmetic) differs from the print by at most 0.0030 N, and our
 //!   f64 result from the exact one by ~1e-12 N, so 0.005 N. In f32, the
@@ -704,6 +709,11 @@ impl Motion {
     fn power(&self, w: &Wrench<f64>, about: &P) -> f64 {
         w.power(&self.at(about).0, self.omega)
     }
+    /// The sum of the absolute values of the products in [`Motion::power`].
+    fn gross(&self, w: &Wrench<f64>, about: &P) -> f64 {
+        let v = self.at(about).0;
+        (w.force.x * v.x).abs() + (w.force.y * v.y).abs() + (w.moment * self.omega).abs()
+    }
 }
 
 /// Inertia and weight of a link of mass `m`, moment of inertia `j` about its
@@ -712,12 +722,16 @@ fn inertia(m: f64, j: f64, g: &P, link: &Motion, about: &P) -> Wrench<f64> {
     inertia_and_gravity(m, j, g, &link.at(g).1, link.alpha, Some(&GRAVITY), about)
 }
 
-/// `sum(terms) = 0` to `1e-12 * sum |terms|`.
-fn check_power(terms: &[f64]) -> Result<(), TestCaseError> {
+/// `sum(terms) = 0` to `1e-10` of the gross power: the sum of the terms'
+/// absolute values and of the absolute values of the products inside each
+/// link's power (`gross`, from [`Motion::gross`]). A link's power can be a
+/// small difference of large products, and the reactions' rounding follows
+/// the products (see the module documentation for the bound).
+fn check_power(terms: &[f64], gross: &[f64]) -> Result<(), TestCaseError> {
     let sum: f64 = terms.iter().sum();
-    let scale: f64 = terms.iter().map(|t| t.abs()).sum();
+    let scale: f64 = terms.iter().chain(gross).map(|t| t.abs()).sum();
     prop_assert!(
-        sum.abs() <= 1e-12 * scale,
+        sum.abs() <= 1e-10 * scale,
         "power residual {:e} of {scale:e}: {terms:?}",
         sum.abs()
     );
@@ -822,7 +836,7 @@ proptest! {
             k.crank.power(&own, &k.o),
             coupler.power(&load1, &c),
             rocker.power(&load2, &c),
-        ])?;
+        ], &[k.crank.gross(&own, &k.o), coupler.gross(&load1, &c), rocker.gross(&load2, &c)])?;
     }
 
     /// Slider-crank: crank + RRP on a fixed guide (the piston loaded by a gas
@@ -859,7 +873,7 @@ proptest! {
             k.crank.power(&own, &k.o),
             rod.power(&load1, &c),
             piston.power(&load2, &c),
-        ])?;
+        ], &[k.crank.gross(&own, &k.o), rod.gross(&load1, &c), piston.gross(&load2, &c)])?;
     }
 
     /// Crank and slotted lever: crank + RPR (block on the crank pin slides
@@ -896,7 +910,7 @@ proptest! {
             k.crank.power(&own, &k.o),
             block.power(&load1, &a),
             rocker.power(&load2, &a),
-        ])?;
+        ], &[k.crank.gross(&own, &k.o), block.gross(&load1, &a), rocker.gross(&load2, &a)])?;
     }
 
     /// Scotch yoke: crank + RPP (block on the crank pin slides in the slot of
@@ -930,7 +944,7 @@ proptest! {
             k.crank.power(&own, &k.o),
             block.power(&load1, &a),
             yoke.power(&load2, &a),
-        ])?;
+        ], &[k.crank.gross(&own, &k.o), block.gross(&load1, &a), yoke.gross(&load2, &a)])?;
     }
 
     /// Slotted crank + PRP: block 1 slides in a slot along the crank (a guide
@@ -974,7 +988,7 @@ proptest! {
             k.crank.power(&own, &k.o),
             block1.power(&load1, &c),
             block2.power(&load2, &c),
-        ])?;
+        ], &[k.crank.gross(&own, &k.o), block1.gross(&load1, &c), block2.gross(&load2, &c)])?;
     }
 
     /// Slider driver + RRR: the block's pin is the RRR's joint A.
@@ -1011,7 +1025,7 @@ proptest! {
             block.power(&own, &a),
             link1.power(&load1, &c),
             link2.power(&load2, &c),
-        ])?;
+        ], &[block.gross(&own, &a), link1.gross(&load1, &c), link2.gross(&load2, &c)])?;
     }
 
     /// Linear actuator turning a loaded arm (the cylinder massless).
@@ -1033,6 +1047,6 @@ proptest! {
             .with_couple(te);
         let r = force::actuator::reactions(&a, &b, &pos.c, &load).unwrap();
         prop_assume!(r.min_pivot_ratio > 0.01);
-        check_power(&[r.axial * len_dot, arm.power(&load, &a)])?;
+        check_power(&[r.axial * len_dot, arm.power(&load, &a)], &[arm.gross(&load, &a)])?;
     }
 }
