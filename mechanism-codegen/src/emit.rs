@@ -616,7 +616,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
         /// Solves the position analysis for the driver inputs (rad or length units).
         ///
         /// Errors name the group that cannot be assembled or is singular.
-        #[inline]
+        #[inline(always)]
         #[allow(non_snake_case, unused_variables)]
         pub fn position(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> {
             let input = *input;
@@ -689,7 +689,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             /// them; their link angle, if an output, is one `atan2`). Where
             /// the position records the inputs (for a slider driver's rates),
             /// the marked cranks' entries are 0: nothing reads them.
-            #[inline]
+            #[inline(always)]
             #[allow(non_snake_case, unused_variables)]
             pub fn position_cos_sin(&self, input: &#cs_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> {
                 let input_cs = *input;
@@ -754,7 +754,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
         methods.extend(quote! {
             /// Solves the velocity analysis at `pos` for the input rates
             /// (rad/s or length units per second).
-            #[inline]
+            #[inline(always)]
             #[allow(non_snake_case, unused_variables)]
             pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error> {
                 let rates = *rates;
@@ -823,7 +823,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
         methods.extend(quote! {
             /// Solves the acceleration analysis at `pos`, `vel` for the input
             /// accelerations (rad/s^2 or length units per s^2).
-            #[inline]
+            #[inline(always)]
             #[allow(non_snake_case, unused_variables)]
             pub fn acceleration(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#acceleration_ty<T>, ::mechanism::Error> {
                 let accels = *accels;
@@ -834,10 +834,11 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             }
 
             /// Every analysis the definition asks for, at once.
-            // Always inlined: its result (every analysis' struct) is large,
-            // and returned through memory when the call stays a call; in a
-            // sweep inlining saves about a quarter of the four-bar's time
-            // (docs/performance.md).
+            // Always inlined, as the analyses and the primitives are: their
+            // results are large structs, returned through memory when a call
+            // stays a call (in the report's program the compiler kept them
+            // calls, and the six-bar and shaper took 1.6 times as long;
+            // docs/performance.md).
             #[inline(always)]
             pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T> #loads_param) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error> {
                 let position = self.position(input)?;

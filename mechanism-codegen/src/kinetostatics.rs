@@ -573,7 +573,7 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
         ///
         /// Errors name the group whose force system is singular or whose
         /// loads are not finite.
-        #[inline]
+        #[inline(always)]
         #[allow(non_snake_case, unused_variables, clippy::too_many_arguments)]
         pub fn forces(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, acc: &#acceleration_ty<T> #loads_param) -> ::core::result::Result<#forces_ty<T>, ::mechanism::Error> {
             #code

@@ -39,7 +39,7 @@ pub fn local_offset<T: Real>(axis: &Vector2<T>, local: &Vector2<T>) -> Vector2<T
 /// Position of a point fixed on a link: `origin + local_offset(axis, local)`.
 ///
 /// `axis` must be a unit vector. Errors: `NonFinite` when the result is not finite.
-#[inline]
+#[inline(always)]
 pub fn point_position<T: Real>(
     origin: &Point2<T>,
     axis: &Vector2<T>,
@@ -49,13 +49,13 @@ pub fn point_position<T: Real>(
 }
 
 /// Velocity of a point relative to the link origin, checked finite (L/s).
-#[inline]
+#[inline(always)]
 pub fn point_velocity<T: Real>(offset: &Vector2<T>, omega: T) -> Result<Vector2<T>, Error> {
     finite_vec(relative_velocity(offset, omega), P, "link point velocity")
 }
 
 /// Acceleration of a point relative to the link origin, checked finite (L/s^2).
-#[inline]
+#[inline(always)]
 pub fn point_acceleration<T: Real>(
     offset: &Vector2<T>,
     omega: T,

@@ -72,7 +72,7 @@ pub struct ActuatorAcceleration<T: Real> {
 /// `length <= 0`; `NonFinite`; `CannotAssemble` when `|B - A|` lies outside
 /// `[|l - length|, l + length]` beyond rounding; `Singular` when `A` and `B`
 /// coincide. See [`crate::dyad::rrr::position`].
-#[inline]
+#[inline(always)]
 pub fn position<T: Real>(
     a: &Point2<T>,
     l: T,
@@ -105,7 +105,7 @@ fn determinant<T: Real>(pos: &ActuatorPosition<T>) -> Result<(T, T, T), Error> {
 ///
 /// Errors: `Singular` when `|cross(r1, r2)| <= 16 eps |r1| |r2|` (link 1 and the
 /// cylinder aligned); `NonFinite` for a non-finite input or result.
-#[inline]
+#[inline(always)]
 pub fn velocity<T: Real>(
     pos: &ActuatorPosition<T>,
     va: Option<&Vector2<T>>,
@@ -143,7 +143,7 @@ pub fn velocity<T: Real>(
 /// `alpha1 perp(r1) - alpha2 perp(r2) = aB - aA + omega1^2 r1 - omega2^2 r2 +
 /// L'' e2 + 2 L' omega2 perp(e2)`, the same matrix as for the rates.
 /// Errors as for [`velocity`].
-#[inline]
+#[inline(always)]
 pub fn acceleration<T: Real>(
     pos: &ActuatorPosition<T>,
     vel: &ActuatorVelocity<T>,

@@ -29,7 +29,7 @@ pub struct CrankPosition<T: Real> {
 ///
 /// Errors: `NonPositive` for `length <= 0`; `NonFinite` for a non-finite angle
 /// or pivot.
-#[inline]
+#[inline(always)]
 pub fn position<T: Real>(
     pivot: &Point2<T>,
     length: T,
@@ -57,7 +57,7 @@ pub struct CosSin<T> {
 /// unit: it is normalized (an encoder's pair rarely is).
 ///
 /// Errors: `NonFinite`; `NonPositive` for `length <= 0` or a zero pair.
-#[inline]
+#[inline(always)]
 pub fn position_cos_sin<T: Real>(
     pivot: &Point2<T>,
     length: T,
@@ -121,7 +121,7 @@ fn bad_placement<T: Real>(length: T, angle_finite: bool) -> Error {
 /// Errors: `NonFinite` for a non-finite `omega` or `v_pivot`, or a result
 /// that overflows (one check of the result: `r != 0`, so a non-finite
 /// `omega` makes it non-finite).
-#[inline]
+#[inline(always)]
 pub fn velocity<T: Real>(
     pos: &CrankPosition<T>,
     v_pivot: Option<&Vector2<T>>,
@@ -134,7 +134,7 @@ pub fn velocity<T: Real>(
 /// Acceleration of the tip (L/s^2): `a_pivot + alpha perp(r) - omega^2 r`.
 ///
 /// Errors: `NonFinite`, as for [`velocity`].
-#[inline]
+#[inline(always)]
 pub fn acceleration<T: Real>(
     pos: &CrankPosition<T>,
     a_pivot: Option<&Vector2<T>>,

@@ -80,7 +80,7 @@ pub fn transport_acceleration<T: Real>(
 /// `g.dir` must be a unit vector.
 ///
 /// Errors: `NonFinite` for a non-finite input or result.
-#[inline]
+#[inline(always)]
 pub fn position<T: Real>(g: &Line<T>, offset: T, s: T) -> Result<SliderPosition<T>, Error> {
     let s = finite(s, P, "slider displacement")?;
     let offset = finite(offset, P, "slider pin offset")?;
@@ -92,7 +92,7 @@ pub fn position<T: Real>(g: &Line<T>, offset: T, s: T) -> Result<SliderPosition<
 /// then simply `s_dot dir`). `s` is only checked (the pin's place is `pos.p`).
 ///
 /// Errors: `NonFinite` for a non-finite input or result.
-#[inline]
+#[inline(always)]
 pub fn velocity<T: Real>(
     pos: &SliderPosition<T>,
     g: &Line<T>,
@@ -114,7 +114,7 @@ pub fn velocity<T: Real>(
 /// zero body accelerations (`a_origin = 0`, `alpha = 0`).
 ///
 /// Errors: `NonFinite` for a non-finite input or result.
-#[inline]
+#[inline(always)]
 pub fn acceleration<T: Real>(
     pos: &SliderPosition<T>,
     g: &Line<T>,

@@ -92,7 +92,7 @@ fn determinant<T: Real>(g1: &Line<T>, g2: &Line<T>) -> Result<(T, T), Error> {
 ///
 /// Errors: `NonFinite` for non-finite inputs or results; `Singular` when the
 /// guides are parallel to rounding (`|cross(dir1, dir2)| <= 16 eps`).
-#[inline]
+#[inline(always)]
 pub fn position<T: Real>(
     g1: &Line<T>,
     offset1: T,
@@ -122,7 +122,7 @@ pub fn position<T: Real>(
 ///
 /// Errors: `Singular` for parallel guides; `NonFinite` for a non-finite input
 /// or result.
-#[inline]
+#[inline(always)]
 pub fn velocity<T: Real>(
     pos: &PrpPosition<T>,
     g1: &Line<T>,
@@ -157,7 +157,7 @@ pub fn velocity<T: Real>(
 /// [a_body1(C) + 2 omega1 s1_dot perp(dir1)]`, the same matrix as for the rates.
 /// Errors as for [`velocity`].
 #[allow(clippy::too_many_arguments)]
-#[inline]
+#[inline(always)]
 pub fn acceleration<T: Real>(
     pos: &PrpPosition<T>,
     g1: &Line<T>,

@@ -91,7 +91,7 @@ fn determinant<T: Real>(dir: &Vector2<T>, w: &Vector2<T>) -> Result<(T, T), Erro
 ///
 /// Errors: `NonFinite` for non-finite inputs or results; `Singular` when the
 /// slot is parallel to the guide to rounding (`|sin beta| <= 16 eps`).
-#[inline]
+#[inline(always)]
 pub fn position<T: Real>(
     a: &Point2<T>,
     g: &Line<T>,
@@ -129,7 +129,7 @@ pub fn position<T: Real>(
 ///
 /// Errors: `Singular` when the slot is parallel to the guide; `NonFinite` for a
 /// non-finite input or result.
-#[inline]
+#[inline(always)]
 pub fn velocity<T: Real>(
     pos: &RppPosition<T>,
     a: &Point2<T>,
@@ -160,7 +160,7 @@ pub fn velocity<T: Real>(
 /// `s1_ddot w + s2_ddot dir = aA - a_body(A) - 2 omega perp(s1_dot w + s2_dot dir)`,
 /// the same matrix; `aq = a_body(Q) + 2 omega s2_dot perp(dir) + s2_ddot dir`.
 /// Errors as for [`velocity`].
-#[inline]
+#[inline(always)]
 pub fn acceleration<T: Real>(
     pos: &RppPosition<T>,
     a: &Point2<T>,

@@ -84,7 +84,7 @@ pub struct RprAcceleration<T: Real> {
 /// `|offset|` about `B` by more than `4 eps |offset|` (inside that rounding band
 /// `s = 0`); `Singular` when `A` and `B` coincide (the axis is undefined; with
 /// `offset != 0` that is `CannotAssemble`).
-#[inline]
+#[inline(always)]
 pub fn position<T: Real>(
     a: &Point2<T>,
     b: &Point2<T>,
@@ -154,7 +154,7 @@ fn determinant<T: Real>(pos: &RprPosition<T>, p: &Vector2<T>) -> Result<(T, T), 
 /// Errors: `Singular` when `|s| <= 16 eps |A - B|` (`A` at the foot of the
 /// perpendicular from `B` on the slide line: both columns along `u`);
 /// `NonFinite` for a non-finite input or result.
-#[inline]
+#[inline(always)]
 pub fn velocity<T: Real>(
     pos: &RprPosition<T>,
     a: &Point2<T>,
@@ -180,7 +180,7 @@ pub fn velocity<T: Real>(
 /// Differentiating once more: `s_ddot u + alpha perp(A - B) = aA - aB -
 /// 2 omega s_dot perp(u) + omega^2 (A - B)` (Coriolis and centripetal terms),
 /// the same matrix as for the rates. Errors as for [`velocity`].
-#[inline]
+#[inline(always)]
 pub fn acceleration<T: Real>(
     pos: &RprPosition<T>,
     a: &Point2<T>,

@@ -101,7 +101,7 @@ pub struct RrpAcceleration<T: Real> {
 /// `CannotAssemble { miss: |k| - l, reach: l }` when `A` lies farther than `l`
 /// from the offset line (distance `|k|`) by more than `4 eps l` (inside that
 /// rounding band `C` is put at `F`, the tangent position).
-#[inline]
+#[inline(always)]
 pub fn position<T: Real>(
     a: &Point2<T>,
     l: T,
@@ -240,7 +240,7 @@ fn determinant<T: Real>(pos: &RrpPosition<T>, g: &Line<T>) -> Result<(T, T), Err
 ///
 /// Errors: `Singular` when `|dot(r1, dir)| <= 16 eps l` (link 1 perpendicular to
 /// the guide: tangency); `NonFinite` for a non-finite input or result.
-#[inline]
+#[inline(always)]
 pub fn velocity<T: Real>(
     pos: &RrpPosition<T>,
     g: &Line<T>,
@@ -272,7 +272,7 @@ pub fn velocity<T: Real>(
 /// Differentiating once more (the guide direction turns at the body's `omega`):
 /// `alpha1 perp(r1) - s_ddot dir = a_body(C) + 2 omega s_dot perp(dir) - aA +
 /// omega1^2 r1`, the same matrix as for the rates. Errors as for [`velocity`].
-#[inline]
+#[inline(always)]
 pub fn acceleration<T: Real>(
     pos: &RrpPosition<T>,
     g: &Line<T>,

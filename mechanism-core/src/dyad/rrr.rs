@@ -218,7 +218,7 @@ enum Kind {
 ///
 /// Errors: `Singular` when `|cross(r1, r2)| <= 16 eps l1 l2` (toggle: the two
 /// links are aligned); `NonFinite` for a non-finite input.
-#[inline]
+#[inline(always)]
 pub fn velocity<T: Real>(
     pos: &RrrPosition<T>,
     va: Option<&Vector2<T>>,
@@ -237,7 +237,7 @@ pub fn velocity<T: Real>(
 /// Condition indicator: `|cross(r1, r2)| / (l1 l2)`, clamped to 1.
 /// Errors as for [`velocity`]; `Singular` also for a non-positive or
 /// non-finite `l1 l2`.
-#[inline]
+#[inline(always)]
 pub fn velocity_lengths<T: Real>(
     pos: &RrrPosition<T>,
     l1: T,
@@ -297,7 +297,7 @@ fn rates<T: Real>(
 /// result of [`velocity`] or [`velocity_lengths`] at this `pos` (which
 /// checked the matrix; it is not re-checked here).
 /// Errors: `NonFinite` for a non-finite input or an overflow.
-#[inline]
+#[inline(always)]
 pub fn acceleration<T: Real>(
     pos: &RrrPosition<T>,
     vel: &RrrVelocity<T>,
