@@ -29,6 +29,9 @@
 //!   yoke on its vertical guide, a resisting force along that guide; each
 //!   prismatic reaction is applied as its normal force at its stated
 //!   reference point plus its couple.
+//! - `SlottedRocker`: an RPR (the crank's block on the rocker) and an RRP
+//!   whose guide is a slot carried by the rocker: the slot's reaction loads
+//!   the moving rocker, which also carries the block's.
 //!
 //! Tolerances. Equilibrium and power: each residual is a sum of a handful of
 //! products of generated values, every value within a few eps times the

@@ -61,6 +61,34 @@ mechanism! {
     }
 }
 
+mechanism! {
+    /// A slotted rocker (m, kg, N): the crank's block slides along the rocker
+    /// (RPR about O4); the rocker carries a slot at right angles through its
+    /// point D, in which a slider closes an RRP group with a link from O6.
+    /// The slot is a guide carried by a moving link, so its reaction loads
+    /// the rocker, which also carries the block's. Masses on every moving
+    /// body but the crank, gravity, a force on the slider along the slot.
+    pub SlottedRocker {
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(0.0, -0.3);
+        let O6 = ground(0.35, 0.1);
+        let A = crank(O2, 0.1, theta) as crank;
+        let s = rpr(A, O4, plus) as (block, rocker);
+        let D = point(rocker, from O4, 0.5, 0 deg);
+        let slot = guide(D, rocker, 90 deg);
+        let E = rrp(O6, 0.25, slot, plus) as (link5, slider5) slide u;
+        let G4 = point(rocker, from O4, 0.3, 0 deg);
+        let G5 = point(link5, from O6, 0.12, 0 deg);
+        mass rocker { m = 2.0, at = G4, j = 0.05 };
+        mass block { m = 0.3, at = A };
+        mass link5 { m = 0.6, at = G5, j = 0.004 };
+        mass slider5 { m = 0.4, at = E };
+        gravity (0.0, -9.81);
+        force at E on slider5 along slot = -20.0;
+    }
+}
+
 #[test]
 fn piston_driven_engine_balances() {
     let m = PistonDriven::<f64>::default();
@@ -183,4 +211,75 @@ fn scotch_yoke_with_masses_balances() {
             "LoadedYoke",
         );
     }
+}
+
+#[test]
+fn slotted_rocker_with_a_carried_guide_balances() {
+    let m = SlottedRocker::<f64>::default();
+    let (w, al) = (5.0, 2.0);
+    let mut checked = 0;
+    for k in 0..72 {
+        let q = f64::to_radians(5.0 * k as f64 + 0.5);
+        let at = |t: f64| SlottedRockerInput {
+            theta: q + w * t + 0.5 * al * t * t,
+        };
+        let rate = |t: f64| SlottedRockerInput { theta: w + al * t };
+        let s = m
+            .solve(&at(0.0), &rate(0.0), &SlottedRockerInput { theta: al })
+            .unwrap();
+        let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+        if f.condition < 0.05 || v.condition < 0.05 {
+            continue;
+        }
+        checked += 1;
+        assert_len(p.E, p.O6, 0.25, "link5");
+        let pos = |t: f64| m.position(&at(t)).unwrap();
+        let vel = |t: f64| m.velocity(&pos(t), &rate(t)).unwrap();
+        close_fd(v.E, (pos(H).E - pos(-H).E) / (2.0 * H), 10.0, "vE");
+        close_fd(a.E, (vel(H).E - vel(-H).E) / (2.0 * H), 100.0, "aE");
+
+        // The slot's direction: the rocker's axis turned by 90 degrees.
+        let axis = (p.D - p.O4) / (p.D - p.O4).norm();
+        let slot = Vector2::new(-axis.y, axis.x);
+        let push = slot * -20.0;
+        Body::default()
+            .force(p.O2, f.r_ground_crank)
+            .force(p.A, -f.r_crank_block)
+            .couple(f.drive_theta)
+            .balances("crank (massless)");
+        Body::default()
+            .force(p.A, f.r_crank_block)
+            .prismatic(&f.r_block_rocker, p.A, -1.0)
+            .inertia(0.3, 0.0, p.A, a.A, a.block, G)
+            .balances("block");
+        Body::default()
+            .force(p.O4, f.r_ground_rocker)
+            .prismatic(&f.r_block_rocker, p.A, 1.0)
+            .prismatic(&f.r_rocker_slider5, p.E, -1.0)
+            .inertia(2.0, 0.05, p.G4, a.G4, a.rocker, G)
+            .balances("rocker (carries the slot)");
+        Body::default()
+            .force(p.O6, f.r_ground_link5)
+            .force(p.E, -f.r_link5_slider5)
+            .inertia(0.6, 0.004, p.G5, a.G5, a.link5, G)
+            .balances("link5");
+        Body::default()
+            .force(p.E, f.r_link5_slider5)
+            .prismatic(&f.r_rocker_slider5, p.E, 1.0)
+            .force(p.E, push)
+            .inertia(0.4, 0.0, p.E, a.E, a.slider5, G)
+            .balances("slider5");
+        power_balances(
+            &[
+                f.drive_theta * w,
+                inertial(0.3, 0.0, v.A, a.A, v.block, a.block, G),
+                inertial(2.0, 0.05, v.G4, a.G4, v.rocker, a.rocker, G),
+                inertial(0.6, 0.004, v.G5, a.G5, v.link5, a.link5, G),
+                inertial(0.4, 0.0, v.E, a.E, v.slider5, a.slider5, G),
+                push.dot(&v.E),
+            ],
+            "SlottedRocker",
+        );
+    }
+    assert!(checked >= 36, "only {checked} of 72 poses checked");
 }
