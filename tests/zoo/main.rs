@@ -15,9 +15,10 @@
 //!   (the ternary link is the coupler, moving on both sides).
 //! - `LoadedFiveBar`: two cranks (two degrees of freedom, two drive torques)
 //!   with masses on all four moving links.
-//! - `StephensonEdge`: a last group that cannot close over part of the turn,
-//!   swept at 0.01 deg in f64 and f32: a full finite solution (forces
-//!   included) or a typed error naming the group, at every step.
+//! - `StephensonIII` with its last group shortened (run-time parameters) so
+//!   that it cannot close over part of the turn, swept at 0.01 deg in f64
+//!   and f32: a full finite solution (forces included) or a typed error
+//!   naming the group, at every step.
 //!
 //! Prismatic pairs and linear drives (`prismatic.rs`):
 //!

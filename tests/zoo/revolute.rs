@@ -35,10 +35,12 @@ mechanism! {
 
 mechanism! {
     /// Stephenson III six-bar (m, kg, N): a four-bar O2-A-B-O4 whose coupler
-    /// point P drives the RRR group P-C-O6. Point masses and inertias on the
-    /// coupler and the last two links, no gravity, a force at C on the last
-    /// link.
+    /// point P drives the RRR group P-C-O6 (links `l5`, `l6`: run-time
+    /// parameters, shortened by the edge test below). Point masses and
+    /// inertias on the coupler and the last two links, no gravity, a force at
+    /// C on the last link.
     pub StephensonIII {
+        params { l5 = 0.28, l6 = 0.24 }
         dof 1;
         let O2 = ground(0.0, 0.0);
         let O4 = ground(0.30, 0.0);
@@ -46,7 +48,7 @@ mechanism! {
         let A = crank(O2, 0.08, theta) as crank;
         let B = rrr(A, 0.26, O4, 0.20, left) as (coupler, rocker);
         let P = point(coupler, from A, 0.15, 40 deg);
-        let C = rrr(P, 0.28, O6, 0.24, right) as (link5, link6);
+        let C = rrr(P, l5, O6, l6, right) as (link5, link6);
         let G3 = point(coupler, from A, 0.12, 15 deg);
         let G5 = point(link5, from P, 0.14, 0 deg);
         let G6 = point(link6, from O6, 0.12, 0 deg);
@@ -309,48 +311,29 @@ fn five_bar_with_two_drives_balances() {
     assert!(checked >= 50, "only {checked} of 100 poses checked");
 }
 
-mechanism! {
-    /// `StephensonIII` with a short last group (0.16 + 0.15 against a
-    /// distance from P to O6 of 0.205 to 0.356 over the turn): it cannot
-    /// close over part of the turn, and passes through both edges of its
-    /// assembly (full extension) twice per turn.
-    pub StephensonEdge {
-        dof 1;
-        let O2 = ground(0.0, 0.0);
-        let O4 = ground(0.30, 0.0);
-        let O6 = ground(0.05, 0.42);
-        let A = crank(O2, 0.08, theta) as crank;
-        let B = rrr(A, 0.26, O4, 0.20, left) as (coupler, rocker);
-        let P = point(coupler, from A, 0.15, 40 deg);
-        let C = rrr(P, 0.16, O6, 0.15, right) as (link5, link6);
-        let G3 = point(coupler, from A, 0.12, 15 deg);
-        let G5 = point(link5, from P, 0.08, 0 deg);
-        mass coupler { m = 2.0, at = G3, j = 0.015 };
-        mass link5 { m = 0.9, at = G5, j = 0.006 };
-        mass link6 { m = 0.6, at = C, j = 0.003 };
-        gravity (0.0, -9.81);
-        // The compile-time check (over the declared range) passes; the
-        // test below sweeps the whole turn at run time.
-        range theta = (-29 deg, 196 deg);
-    }
-}
-
-/// `StephensonEdge` over a fine turn (0.01 deg) in f64 and f32, with a crank
-/// rate and acceleration: every pose is either a full solution with no NaN
-/// or infinity anywhere (forces included), or a typed error naming the last
-/// group; both occur, and the solutions next to the edges (where the
-/// reactions grow without bound) stay finite.
+/// `StephensonIII` with a short last group (`l5 = 0.16`, `l6 = 0.15`,
+/// against a distance from P to O6 of 0.205 to 0.356 over the turn: it
+/// cannot close over part of the turn and passes through both edges of its
+/// assembly, full extension, twice per turn), over a fine turn (0.01 deg) in
+/// f64 and f32, with a crank rate and acceleration: every pose is either a
+/// full solution with no NaN or infinity anywhere (forces included), or a
+/// typed error naming the last group; both occur, and the solutions next to
+/// the edges (where the reactions grow without bound) stay finite.
 #[test]
 fn stephenson_iii_fine_turn_is_finite_or_a_typed_error() {
     fn turn<T: mechanism::Real>() -> (usize, usize)
     where
-        StephensonEdgeSolution<T>: core::fmt::Debug,
+        StephensonIIISolution<T>: core::fmt::Debug,
     {
-        let m = StephensonEdge::<T>::default();
+        let m = StephensonIII::<T> {
+            l5: T::lit(0.16),
+            l6: T::lit(0.15),
+            ..Default::default()
+        };
         let (mut ok, mut failed) = (0, 0);
         for k in 0..36_000 {
             let q = T::lit(f64::to_radians(0.01 * k as f64));
-            let i = |x: T| StephensonEdgeInput { theta: x };
+            let i = |x: T| StephensonIIIInput { theta: x };
             match m.solve(&i(q), &i(T::lit(-8.0)), &i(T::lit(15.0))) {
                 Ok(s) => {
                     let text = format!("{s:?}");
