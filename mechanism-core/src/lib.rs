@@ -20,6 +20,7 @@
 
 pub mod driver;
 pub mod dyad;
+mod eft;
 pub mod error;
 pub mod force;
 pub mod geometry;

@@ -10,6 +10,7 @@
 
 use super::guide::{difference, transport_acceleration, transport_velocity};
 use super::{select, sqrt, Line, LineAcceleration, LineVelocity};
+use crate::eft::{compensated, half_excess, split, two_product_split, two_sum};
 use crate::geometry::SINGULAR_RELATIVE;
 use crate::scalar::Real;
 
@@ -45,14 +46,39 @@ pub fn rrp<T: Real>(ax: T, ay: T, l: T, g: &Line<T>, offset: T, sign: T) -> Rrp<
     let t = px * g.dx + py * g.dy;
     // perp(dir) = (-dy, dx).
     let k = py * g.dx - px * g.dy - offset;
-    let h = select(k < T::zero(), -k, k);
-    let gap = l - h;
+    // In f32, `k` is carried as `kh + kl` and the direction is divided by
+    // its length to first order (`x / |dir| = x - x he`), as the scalar
+    // primitive does near tangency (see there); here for every element, no
+    // branch. The f64 code is the plain form (`compensated` folds at compile
+    // time).
+    let (kh, kl, he) = if compensated::<T>() {
+        let (xh, xl) = split(g.dx);
+        let (yh, yl) = split(g.dy);
+        let he = half_excess(g.dx, xh, xl, g.dy, yh, yl);
+        let (q1, e1) = two_product_split(py, g.dx, xh, xl);
+        let (q2, e2) = two_product_split(px, g.dy, yh, yl);
+        let (pn, e3) = two_sum(q1, -q2);
+        let (kh, e4) = two_sum(pn, -offset);
+        (kh, (e1 - e2 + e3 + e4) - pn * he, he)
+    } else {
+        (k, T::zero(), T::zero())
+    };
+    let negative = kh < T::zero();
+    let (h, hl) = (select(negative, -kh, kh), select(negative, -kl, kl));
+    // `l - h` is exact where it matters (Sterbenz), as in the scalar form.
+    let gap = (l - h) - hl;
     let band = T::lit(4.0) * T::eps() * l;
     let ok = (l > T::zero()) & (gap > band);
     let gap = select(gap > T::zero(), gap, T::zero());
     let half = sign * sqrt(gap * (l + h));
+    let k = kh + kl;
     let r1x = g.dx * half + g.dy * k;
     let r1y = g.dy * half - g.dx * k;
+    let (r1x, r1y, t) = if compensated::<T>() {
+        (r1x - r1x * he, r1y - r1y * he, t - t * he)
+    } else {
+        (r1x, r1y, t)
+    };
     let det = r1x * g.dx + r1y * g.dy;
     let scale_sq = (r1x * r1x + r1y * r1y) * (g.dx * g.dx + g.dy * g.dy);
     let kk = T::lit(2.0 * SINGULAR_RELATIVE) * T::eps();

@@ -1,0 +1,66 @@
+//! Error-free transformations (Knuth's two-sum, Dekker's product with
+//! Veltkamp's split) for the places where one rounding matters: the RRP
+//! group's distance from its guide in `f32` near tangency (scalar
+//! [`crate::dyad::rrp::position`] and [`crate::lane::rrp`]). Branch-free and
+//! without fused multiply-add, so they vectorize and run on a Cortex-M4F.
+
+use crate::scalar::Real;
+
+/// Whether the RRP position ([`crate::dyad::rrp::position`], and its lane
+/// version [`crate::lane::rrp`]) carries rounding errors: for `f32`
+/// (24-bit significand), where without it the f32 six-bar's largest rate
+/// error was 7.3e-6 instead of 3.7e-6 (`docs/stability.md`, "f32 six-bar");
+/// not for `f64`, whose rounding is `2^29` times finer (the f64 six-bar is
+/// within 1.3e-14 without it) and where it would cost about a fifth of a
+/// six-bar evaluation. A constant after inlining (no branch at run time).
+#[inline(always)]
+pub(crate) fn compensated<T: Real>() -> bool {
+    T::eps() > T::lit(1e-10)
+}
+
+/// `(|v|^2 - 1) / 2` for a vector within a few ulp of unit length, with an
+/// error far below `eps` (error-free squares; `|v|^2` rounds into `[1/2, 2]`,
+/// where subtracting 1 is exact). `v = (x, y)` with both components split.
+#[inline(always)]
+pub(crate) fn half_excess<T: Real>(x: T, xh: T, xl: T, y: T, yh: T, yl: T) -> T {
+    let (xx, ex) = two_product_split(x, x, xh, xl);
+    let (yy, ey) = two_product_split(y, y, yh, yl);
+    let (ss, es) = two_sum(xx, yy);
+    ((ss - T::one()) + (es + ex + ey)) * T::lit(0.5)
+}
+
+/// `a + b = s + e` exactly, `s` the rounded sum (Knuth's two-sum: six
+/// additions, no branch; exact in binary floating point without overflow).
+#[inline(always)]
+pub(crate) fn two_sum<T: Real>(a: T, b: T) -> (T, T) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// `a b = p + e` exactly, `p` the rounded product, `b = bh + bl` given split
+/// (Dekker's product with Veltkamp's split, no fused multiply-add needed: the
+/// targets this crate is for, e.g. a Cortex-M4F through libm, have no fast
+/// one). Exact unless a factor exceeds about `max / 2^13` (f32: 4e34; the
+/// split then overflows and the NaN ends as a `NonFinite` error) or the
+/// product underflows.
+#[inline(always)]
+pub(crate) fn two_product_split<T: Real>(a: T, b: T, bh: T, bl: T) -> (T, T) {
+    let p = a * b;
+    let (ah, al) = split(a);
+    (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
+}
+
+/// Veltkamp's split `a = hi + lo`, each with at most half the significand's
+/// bits (so products of halves are exact): constant `2^ceil(p/2) + 1`, `p` the
+/// significand's bits (24 for f32, 53 for f64).
+#[inline(always)]
+pub(crate) fn split<T: Real>(a: T) -> (T, T) {
+    let c = if T::eps() > T::lit(1e-10) {
+        T::lit(4097.0)
+    } else {
+        T::lit(134_217_729.0)
+    } * a;
+    let hi = c - (c - a);
+    (hi, a - hi)
+}
