@@ -30,6 +30,7 @@ pub mod link;
 pub mod linsolve;
 pub mod mode;
 pub mod scalar;
+pub mod sincos64;
 pub mod sweep;
 pub mod trig;
 pub mod trig64;
