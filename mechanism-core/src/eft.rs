@@ -1,8 +1,10 @@
 //! Error-free transformations (Knuth's two-sum, Dekker's product with
 //! Veltkamp's split) for the places where one rounding matters: the RRP
 //! group's distance from its guide in `f32` near tangency (scalar
-//! [`crate::dyad::rrp::position`] and [`crate::lane::rrp`]). Branch-free and
-//! without fused multiply-add, so they vectorize and run on a Cortex-M4F.
+//! [`crate::dyad::rrp::position`] and [`crate::lane::rrp`]), and the
+//! Cody-Waite reduction of the sine and cosine kernels ([`reduce`]:
+//! [`crate::sincos64`], [`crate::lane::sin_cos`]). Branch-free and without
+//! fused multiply-add, so they vectorize and run on a Cortex-M4F.
 
 use crate::scalar::Real;
 
@@ -63,4 +65,23 @@ pub(crate) fn split<T: Real>(a: T) -> (T, T) {
     } * a;
     let hi = c - (c - a);
     (hi, a - hi)
+}
+
+/// `x - k (p1 + p2 + p3)` as `r + rt` (`|rt| <= ulp(r) / 2`), for `k` an
+/// integer with `k p1` and `k p2` exact (`p1`, `p2` with at most `53 - b`
+/// significant bits for `|k| < 2^b`) and `x - k p1` exact (Sterbenz: `x` and
+/// `k p1` within a factor of 2, or `k = 0`): the difference with `k p2` is
+/// split exactly (two-sum) and `k p3` subtracted from its error term, so the
+/// reduced argument is good to about `2^-100` relative whatever the
+/// cancellation. Cody and Waite's scheme with Dekker's correction.
+#[inline(always)]
+pub(crate) fn reduce(x: f64, k: f64, p1: f64, p2: f64, p3: f64) -> (f64, f64) {
+    let t = x - k * p1;
+    let w = k * p2;
+    let hi = t - w;
+    let v = hi - t;
+    let err = (t - (hi - v)) + (-w - v);
+    let lo = err - k * p3;
+    let r = hi + lo;
+    (r, (hi - r) + lo)
 }

@@ -51,10 +51,10 @@ pub const SIN_COS_F64_LIMIT: f64 = 1.0e5;
 const INV_PI_32: f64 = 32.0 / core::f64::consts::PI;
 /// `1.5 2^52`: `(x + R52) - R52` rounds `|x| < 2^51` to an integer.
 const R52: f64 = 6_755_399_441_055_744.0;
-/// `pi/32 = Q1 + Q2 + Q3`.
-const Q1: f64 = 1.570_796_326_734_125_6 / 16.0;
-const Q2: f64 = 6.077_100_506_303_966e-11 / 16.0;
-const Q3: f64 = 2.022_266_248_795_950_6e-21 / 16.0;
+/// `pi/32 = Q1 + Q2 + Q3`: the parts of `pi/2` of [`crate::lane`] over 16.
+const Q1: f64 = crate::lane::P1 / 16.0;
+const Q2: f64 = crate::lane::P2 / 16.0;
+const Q3: f64 = crate::lane::P3 / 16.0;
 
 /// `[sin hi, sin lo, cos hi, cos lo]` of `i pi/32`, `i = 0..=15`, each value
 /// in double-double (hi the nearest `f64`, lo the nearest to the rest).
@@ -165,14 +165,7 @@ pub fn sin_cos_f64(x: f64) -> (f64, f64) {
         return rare(x);
     }
     let jf = (x * INV_PI_32 + R52) - R52;
-    let t = x - jf * Q1;
-    let w = jf * Q2;
-    let hi = t - w;
-    let v = hi - t;
-    let err = (t - (hi - v)) + (-w - v);
-    let lo = err - jf * Q3;
-    let r = hi + lo;
-    let rt = (hi - r) + lo;
+    let (r, rt) = crate::eft::reduce(x, jf, Q1, Q2, Q3);
     let r2 = r * r;
     let ps = -1.0 / 6.0 + r2 * (1.0 / 120.0 + r2 * (-1.0 / 5040.0 + r2 * (1.0 / 362_880.0)));
     let pc = -0.5 + r2 * (1.0 / 24.0 + r2 * (-1.0 / 720.0 + r2 * (1.0 / 40_320.0)));
