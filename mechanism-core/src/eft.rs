@@ -6,7 +6,7 @@
 //! [`crate::sincos64`], [`crate::lane::sin_cos`]). Branch-free and without
 //! fused multiply-add, so they vectorize and run on a Cortex-M4F.
 
-use crate::scalar::Real;
+use crate::scalar::{single, Real};
 
 /// Whether the RRP position ([`crate::dyad::rrp::position`], and its lane
 /// version [`crate::lane::rrp`]) carries rounding errors: for `f32`
@@ -17,7 +17,7 @@ use crate::scalar::Real;
 /// six-bar evaluation. A constant after inlining (no branch at run time).
 #[inline(always)]
 pub(crate) fn compensated<T: Real>() -> bool {
-    T::eps() > T::lit(1e-10)
+    single::<T>()
 }
 
 /// `(|v|^2 - 1) / 2` for a vector within a few ulp of unit length, with an
@@ -58,7 +58,7 @@ pub(crate) fn two_product_split<T: Real>(a: T, b: T, bh: T, bl: T) -> (T, T) {
 /// significand's bits (24 for f32, 53 for f64).
 #[inline(always)]
 pub(crate) fn split<T: Real>(a: T) -> (T, T) {
-    let c = if T::eps() > T::lit(1e-10) {
+    let c = if single::<T>() {
         T::lit(4097.0)
     } else {
         T::lit(134_217_729.0)

@@ -14,6 +14,15 @@
 
 use nalgebra::RealField;
 
+/// `true` when `T` is `f32` (24-bit significand), `false` for `f64`: a
+/// comparison of constants that folds at compile time, for the places whose
+/// method depends on the precision (polynomial degrees, rounding constants,
+/// compensated sums).
+#[inline(always)]
+pub(crate) fn single<T: Real>() -> bool {
+    T::eps() > T::lit(1e-10)
+}
+
 /// A floating-point scalar: `f32` or `f64`.
 pub trait Real: RealField + Copy {
     /// Converts an `f64` literal (rounding to nearest for `f32`).

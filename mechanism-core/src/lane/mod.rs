@@ -67,7 +67,7 @@
 //!   powers of the square), which shortens the chain of dependent
 //!   operations that a long vectorized loop body waits on.
 
-use crate::scalar::Real;
+use crate::scalar::{single, Real};
 
 mod actuator;
 mod crank;
@@ -121,12 +121,6 @@ const ATAN_EIGHTHS: [f64; 9] = [
     0.718_829_999_621_624_5,
     core::f64::consts::FRAC_PI_4,
 ];
-
-/// `true` when `T` is `f32` (folds at compile time).
-#[inline(always)]
-fn single<T: Real>() -> bool {
-    T::eps() > T::lit(1e-10)
-}
 
 /// `a` where `c`, else `b`: both are computed; a blend in vector code.
 #[inline(always)]
