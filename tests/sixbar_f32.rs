@@ -305,11 +305,7 @@ fn crv<A: Real, B: Real>(p: &rrp::RrpVelocity<A>) -> rrp::RrpVelocity<B> {
     }
 }
 fn ccp<A: Real, B: Real>(p: &rrr::RrrPosition<A>) -> rrr::RrrPosition<B> {
-    rrr::RrrPosition {
-        c: cp(&p.c),
-        r1: cv(&p.r1),
-        r2: cv(&p.r2),
-    }
+    rrr::RrrPosition::new(cp(&p.c), cv(&p.r1), cv(&p.r2))
 }
 fn ccv<A: Real, B: Real>(p: &rrr::RrrVelocity<A>) -> rrr::RrrVelocity<B> {
     rrr::RrrVelocity {
@@ -493,11 +489,7 @@ fn chain(phi: f64, w: f64, al: f64, m: &[M; NS], ax: Ax) -> [f64; 24] {
     });
     let d = st!(m[3], s_d(&f.r1), rp);
     let cc = st!(m[4], s_rrr(&b, &d), |p: rrr::RrrPosition<f64>| {
-        rrr::RrrPosition {
-            c: rp(p.c),
-            r1: rv(p.r1),
-            r2: rv(p.r2),
-        }
+        rrr::RrrPosition::new(rp(p.c), rv(p.r1), rv(p.r2))
     });
     let l2 = st!(m[5], s_ang(&cc.r1), r);
     let l3 = st!(m[5], s_ang(&cc.r2), r);

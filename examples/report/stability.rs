@@ -217,11 +217,7 @@ fn rrr_rates() -> Vec<(f64, f64)> {
             let beta = kappa.asin();
             let r1 = Vector2::new(l1 * phi.cos(), l1 * phi.sin());
             let r2 = Vector2::new(l2 * (phi + beta).cos(), l2 * (phi + beta).sin());
-            let pos = rrr::RrrPosition {
-                c: p(0.0, 0.0) + r1,
-                r1,
-                r2,
-            };
+            let pos = rrr::RrrPosition::new(p(0.0, 0.0) + r1, r1, r2);
             let v = rrr::velocity(&pos, Some(&va), Some(&vb)).ok()?;
             let (r1d, r2d) = (refg::v(r1.x, r1.y), refg::v(r2.x, r2.y));
             let kd = refg::cross(r1d, r2d).abs() / (refg::norm(r1d) * refg::norm(r2d));

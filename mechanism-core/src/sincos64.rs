@@ -172,15 +172,26 @@ pub fn sin_cos_f64(x: f64) -> (f64, f64) {
     let sr = r + (r * r2 * ps + rt);
     let cm = r2 * pc - rt * r;
     let j = jf as i64;
-    let [si, si_lo, ci, ci_lo] = TABLE[(j & 15) as usize];
+    // The row's sine and cosine turned by the quadrant `q = (j >> 4) & 3`,
+    // i.e. of `q pi/2 + (j & 15) pi/32`: `(s, c)` becomes `(c, -s)`,
+    // `(-s, -c)`, `(-c, s)` for `q = 1, 2, 3`. Swaps and sign flips are exact,
+    // and they depend on `j` only, so they run beside the polynomials
+    // (a `match` on the result put a jump table on the critical path).
+    let [s0, s0_lo, c0, c0_lo] = TABLE[(j & 15) as usize];
+    let swap = j & 16 != 0;
+    let sin_sign = (((j >> 5) & 1) as u64) << 63;
+    let cos_sign = ((((j >> 4) + 1) >> 1 & 1) as u64) << 63;
+    let turn = |x: f64, sign: u64| f64::from_bits(x.to_bits() ^ sign);
+    let (si, si_lo, ci, ci_lo) = if swap {
+        (c0, c0_lo, s0, s0_lo)
+    } else {
+        (s0, s0_lo, c0, c0_lo)
+    };
+    let (si, si_lo) = (turn(si, sin_sign), turn(si_lo, sin_sign));
+    let (ci, ci_lo) = (turn(ci, cos_sign), turn(ci_lo, cos_sign));
     let s = si + (si_lo + (si * cm + ci * sr));
     let c = ci + (ci_lo + (ci * cm - si * sr));
-    match (j >> 4) & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    }
+    (s, c)
 }
 
 /// Zeros, NaN, infinite and large arguments: libm's.

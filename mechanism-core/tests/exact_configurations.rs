@@ -691,7 +691,7 @@ fn fuzz<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError
     // RRR
     let pos = rrr::position(&pool.pt::<T>(), pool.x(), &pool.pt(), pool.x(), pool.mode());
     ensure_finite!("rrr position", pos, |o| [
-        o.c.x, o.c.y, o.r1.x, o.r1.y, o.r2.x, o.r2.y
+        o.c.x, o.c.y, o.r1.x, o.r1.y, o.r2.x, o.r2.y, o.det
     ]);
 
     // RRP
@@ -858,13 +858,9 @@ fn fuzz<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError
     // Actuator
     let pos = actuator::position(&pool.pt::<T>(), pool.x(), &pool.pt(), pool.x(), pool.mode());
     ensure_finite!("actuator position", pos, |o| [
-        o.c.x, o.c.y, o.r1.x, o.r1.y, o.r2.x, o.r2.y
+        o.c.x, o.c.y, o.r1.x, o.r1.y, o.r2.x, o.r2.y, o.det
     ]);
-    let wild_pos = actuator::ActuatorPosition {
-        c: pool.pt(),
-        r1: pool.vec(),
-        r2: pool.vec(),
-    };
+    let wild_pos = actuator::ActuatorPosition::new(pool.pt(), pool.vec(), pool.vec());
     for p in [pos.ok(), Some(wild_pos)].into_iter().flatten() {
         let (va, vb) = (pool.opt::<T>(), pool.opt::<T>());
         let ld = pool.x::<T>();
@@ -903,11 +899,7 @@ fn fuzz<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError
 /// `Ok` before `rrr.rs` checked its rates.
 fn fuzz_rrr_rates<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError> {
     let pos = rrr::position(&pool.pt::<T>(), pool.x(), &pool.pt(), pool.x(), pool.mode());
-    let wild_pos = rrr::RrrPosition {
-        c: pool.pt(),
-        r1: pool.vec(),
-        r2: pool.vec(),
-    };
+    let wild_pos = rrr::RrrPosition::new(pool.pt(), pool.vec(), pool.vec());
     for p in [pos.ok(), Some(wild_pos)].into_iter().flatten() {
         let (va, vb) = (pool.opt::<T>(), pool.opt::<T>());
         let vel = rrr::velocity(&p, va.as_ref(), vb.as_ref());

@@ -111,7 +111,7 @@ fn rrr_rates_near_toggle() {
             let r1 = vec2(l1 * phi.cos(), l1 * phi.sin());
             let r2 = vec2(l2 * (phi + beta).cos(), l2 * (phi + beta).sin());
             let a = p(0.2, 0.1);
-            let pos = rrr::RrrPosition { c: a + r1, r1, r2 };
+            let pos = rrr::RrrPosition::new(a + r1, r1, r2);
             let got = rrr::velocity(&pos, Some(&va), Some(&vb))
                 .map(|v| ([v.omega1, v.omega2], v.condition));
             let (r1d, r2d) = (dvv(&r1), dvv(&r2));
@@ -286,11 +286,7 @@ fn actuator_rates_near_dead_centre() {
             };
             let r1 = vec2(l * phi.cos(), l * phi.sin());
             let r2 = vec2(len * (phi + beta).cos(), len * (phi + beta).sin());
-            let pos = rrr::RrrPosition {
-                c: p(0.0, 0.0) + r1,
-                r1,
-                r2,
-            };
+            let pos = rrr::RrrPosition::new(p(0.0, 0.0) + r1, r1, r2);
             let got = actuator::velocity(&pos, Some(&va), Some(&vb), ldot)
                 .map(|v| ([v.omega1, v.omega2], v.condition));
             let (r1d, r2d) = (dvv(&r1), dvv(&r2));

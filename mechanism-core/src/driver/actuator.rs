@@ -23,7 +23,7 @@
 use crate::dyad::rrr::{self, RrrPosition};
 use crate::error::{Error, Primitive};
 use crate::geometry::{
-    check_det_condition, cross, difference, dot, finite, finite_vec, length, perp, plus, positive,
+    check_det_condition, difference, dot, finite, finite_vec, length, perp, plus, positive,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -92,7 +92,7 @@ pub fn position<T: Real>(
 #[inline(always)]
 fn determinant<T: Real>(pos: &ActuatorPosition<T>) -> Result<(T, T, T), Error> {
     let len = length(&pos.r2);
-    let (det, condition) = check_det_condition(cross(&pos.r1, &pos.r2), length(&pos.r1) * len, P)?;
+    let (det, condition) = check_det_condition(pos.det, length(&pos.r1) * len, P)?;
     Ok((det, len, condition))
 }
 

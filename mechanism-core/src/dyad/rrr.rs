@@ -50,6 +50,29 @@ pub struct RrrPosition<T: Real> {
     pub r1: Vector2<T>,
     /// `C - B`: link 2 as a vector, length `l2` (L). Its direction is link 2's axis.
     pub r2: Vector2<T>,
+    /// `cross(r1, r2)` (L^2): the determinant of the rate system (twice the
+    /// signed area of the triangle A, C, B; positive for [`Mode::Plus`]).
+    /// [`position`] takes it from its square root, `height / 2`, which equals
+    /// `cross(r1, r2)` exactly in real arithmetic and up to `O(eps l1 l2)` in
+    /// floating point (both carry the same rounded height), so [`velocity`]'s
+    /// reciprocal starts right after the square root instead of waiting for
+    /// `C`, `r2` and the cross product. A position built by hand must set it
+    /// to `cross(r1, r2)`: use [`RrrPosition::new`].
+    pub det: T,
+}
+
+impl<T: Real> RrrPosition<T> {
+    /// A position from its joint and link vectors (a hand-made or transformed
+    /// one), with `det = cross(r1, r2)`.
+    #[inline]
+    pub fn new(c: Point2<T>, r1: Vector2<T>, r2: Vector2<T>) -> Self {
+        RrrPosition {
+            c,
+            r1,
+            r2,
+            det: cross(&r1, &r2),
+        }
+    }
 }
 
 /// Angular velocities of the two links and the velocity of `C`.
@@ -135,7 +158,14 @@ pub fn position<T: Real>(
     if !all_finite([c.x, c.y]) {
         return Err(position_error(d, l1, l2, Check::JointFinite));
     }
-    Ok(RrrPosition { c, r1, r2: c - b })
+    // cross(r1, r2) = cross(B - A, r1) = height cross(d, perp(d)) / (2 |d|^2)
+    // = height / 2 (substitute r1 above; r2 = r1 - d).
+    Ok(RrrPosition {
+        c,
+        r1,
+        r2: c - b,
+        det: T::lit(0.5) * height,
+    })
 }
 
 /// Which check of [`position`] failed (the cold path's only knowledge of
@@ -256,7 +286,7 @@ fn rates<T: Real>(
     va: Option<&Vector2<T>>,
     vb: Option<&Vector2<T>>,
 ) -> Result<RrrVelocity<T>, Error> {
-    let det = check_det(cross(&pos.r1, &pos.r2), scale, P)?;
+    let det = check_det(pos.det, scale, P)?;
     let condition = min(abs(det) / scale, T::one());
     let inv_det = T::one() / det;
     let dv = difference(vb, va);
