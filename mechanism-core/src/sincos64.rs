@@ -177,18 +177,18 @@ pub fn sin_cos_f64(x: f64) -> (f64, f64) {
     // `(-s, -c)`, `(-c, s)` for `q = 1, 2, 3`. Swaps and sign flips are exact,
     // and they depend on `j` only, so they run beside the polynomials
     // (a `match` on the result put a jump table on the critical path).
+    // The swap is a bit select on a mask, not a branch: sweeps in random
+    // order would mispredict half of them.
     let [s0, s0_lo, c0, c0_lo] = TABLE[(j & 15) as usize];
-    let swap = j & 16 != 0;
+    let swap = (((j >> 4) & 1) as u64).wrapping_neg();
     let sin_sign = (((j >> 5) & 1) as u64) << 63;
-    let cos_sign = ((((j >> 4) + 1) >> 1 & 1) as u64) << 63;
-    let turn = |x: f64, sign: u64| f64::from_bits(x.to_bits() ^ sign);
-    let (si, si_lo, ci, ci_lo) = if swap {
-        (c0, c0_lo, s0, s0_lo)
-    } else {
-        (s0, s0_lo, c0, c0_lo)
+    let cos_sign = (((((j >> 4) + 1) >> 1) & 1) as u64) << 63;
+    let pick = |keep: f64, other: f64, sign: u64| {
+        let (k, o) = (keep.to_bits(), other.to_bits());
+        f64::from_bits((k ^ ((k ^ o) & swap)) ^ sign)
     };
-    let (si, si_lo) = (turn(si, sin_sign), turn(si_lo, sin_sign));
-    let (ci, ci_lo) = (turn(ci, cos_sign), turn(ci_lo, cos_sign));
+    let (si, si_lo) = (pick(s0, c0, sin_sign), pick(s0_lo, c0_lo, sin_sign));
+    let (ci, ci_lo) = (pick(c0, s0, cos_sign), pick(c0_lo, s0_lo, cos_sign));
     let s = si + (si_lo + (si * cm + ci * sr));
     let c = ci + (ci_lo + (ci * cm - si * sr));
     (s, c)
