@@ -361,6 +361,55 @@ pub fn acceleration<T: Real>(
 mod tests {
     use super::*;
 
+    /// `det` (from the square root) against `cross(r1, r2)` of the returned
+    /// vectors, from well-conditioned poses to `|sin|` of the links' angle
+    /// `1e-7`, near the origin and `1e3` lengths away from it, both modes.
+    /// The two agree up to the rounding of `r1` and `r2`: `r2 = (A + r1) -
+    /// B` is rounded at the coordinates' magnitude `M = max |A|, |B|, |C|`,
+    /// so each component is off by at most about `2 eps (l + M)` and the
+    /// cross product by `4 eps (l1 + M) (l2 + M)`; the bound is twice that.
+    /// A sign error, a factor (`height` instead of `height / 2`) or a
+    /// relative change of 1e-9 fails it.
+    #[test]
+    fn det_is_the_cross_product_of_the_link_vectors() {
+        let mut compared = 0;
+        for &offset in &[0.0, 1.0e3] {
+            for k in 0..8 {
+                // Angle between the links: 1.5 rad, then 0.1 down to 1e-7 rad (toggle).
+                let gamma = if k == 0 { 1.5 } else { 10f64.powi(-k) };
+                for &(l1, l2) in &[(3.0, 4.0), (1.0, 7.5), (250.0, 0.5)] {
+                    for turn in 0..6 {
+                        let phi = 0.3 + turn as f64;
+                        let a = Point2::new(offset + 0.25, -offset / 3.0);
+                        let r1 = Vector2::new(l1 * phi.cos(), l1 * phi.sin());
+                        let r2 = Vector2::new(l2 * (phi + gamma).cos(), l2 * (phi + gamma).sin());
+                        let b = a + r1 - r2;
+                        for mode in [Mode::Plus, Mode::Minus] {
+                            let Ok(p) = position(&a, l1, &b, l2, mode) else {
+                                continue;
+                            };
+                            let m = a.coords.norm().max(b.coords.norm()).max(p.c.coords.norm());
+                            let bound = 8.0 * f64::EPSILON * (l1 + m) * (l2 + m);
+                            let cr = cross(&p.r1, &p.r2);
+                            assert!(
+                                (p.det - cr).abs() <= bound,
+                                "det {} cross {cr} bound {bound}",
+                                p.det
+                            );
+                            assert!(
+                                p.det * mode.sign::<f64>() >= 0.0,
+                                "det {} for {mode:?}",
+                                p.det
+                            );
+                            compared += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert!(compared > 500, "only {compared} poses compared");
+    }
+
     #[test]
     fn three_four_five_triangle_is_exact() {
         // A=(0,0), B=(5,0), l1=3, l2=4: C=(1.8, 2.4) on the left (Plus).
