@@ -126,37 +126,57 @@ impl<T> Error<T> {
     }
 }
 
-impl From<Fault<f32>> for Fault<f64> {
-    /// Widens the numbers to `f64` (exact: every `f32` is an `f64`).
+impl<T: Real> Fault<T> {
+    /// The same fault with its numbers widened to `f64` (exact for `f32` and
+    /// `f64`), for code that collects faults of either precision (the sweep
+    /// of [`crate::sweep`], the generated `check`).
     #[inline]
-    fn from(fault: Fault<f32>) -> Self {
-        match fault {
+    pub fn to_f64(self) -> Fault<f64> {
+        match self {
             Fault::CannotAssemble { miss, reach } => Fault::CannotAssemble {
-                miss: f64::from(miss),
-                reach: f64::from(reach),
+                miss: miss.as_f64(),
+                reach: reach.as_f64(),
             },
             Fault::Singular { det, scale } => Fault::Singular {
-                det: f64::from(det),
-                scale: f64::from(scale),
+                det: det.as_f64(),
+                scale: scale.as_f64(),
             },
             Fault::NonFinite { what } => Fault::NonFinite { what },
             Fault::NonPositive { what, value } => Fault::NonPositive {
                 what,
-                value: f64::from(value),
+                value: value.as_f64(),
             },
         }
     }
 }
 
+impl<T: Real> Error<T> {
+    /// The same error with its numbers widened to `f64` (exact); the group
+    /// and primitive are kept.
+    #[inline]
+    pub fn to_f64(self) -> Error<f64> {
+        Error {
+            group: self.group,
+            primitive: self.primitive,
+            fault: self.fault.to_f64(),
+        }
+    }
+}
+
+impl From<Fault<f32>> for Fault<f64> {
+    /// Widens the numbers to `f64` (exact: every `f32` is an `f64`).
+    #[inline]
+    fn from(fault: Fault<f32>) -> Self {
+        fault.to_f64()
+    }
+}
+
 impl From<Error<f32>> for Error<f64> {
-    /// Widens the numbers to `f64` (exact); the group and primitive are kept.
+    /// Widens the numbers to `f64` (exact), so `?` on an `Error<f32>` works in
+    /// a function returning `Error<f64>`; the group and primitive are kept.
     #[inline]
     fn from(e: Error<f32>) -> Self {
-        Error {
-            group: e.group,
-            primitive: e.primitive,
-            fault: e.fault.into(),
-        }
+        e.to_f64()
     }
 }
 

@@ -1,6 +1,7 @@
 //! The sweeps the firmware checks, shared word for word with the host test
 //! `tests/firmware_table.rs` that writes and re-checks `expected.rs`: one row of
-//! outputs per crank angle, generic over the scalar, widened to `f64`.
+//! outputs per crank angle, generic over the scalar, widened to `f64` (the
+//! values and the error's numbers).
 //!
 //! Expects the example scenes as `crate::scenes` (`examples/common/scenes.rs`).
 #![allow(dead_code)]
@@ -38,7 +39,8 @@ pub fn fourbar_row<T: Real>(theta: f64) -> Result<[f64; 9], Error> {
         },
         &FourBarInput { theta2: T::lit(w) },
         &FourBarInput { theta2: T::lit(a) },
-    )?;
+    )
+    .map_err(Error::to_f64)?;
     let (p, v, acc) = (&s.position, &s.velocity, &s.acceleration);
     Ok([
         theta,
@@ -72,7 +74,8 @@ pub fn shaper_row<T: Real>(crank: f64) -> Result<[f64; 9], Error> {
         },
         &ShaperInput { crank: T::lit(w) },
         &ShaperInput { crank: T::lit(a) },
-    )?;
+    )
+    .map_err(Error::to_f64)?;
     let (p, v, acc) = (&s.position, &s.velocity, &s.acceleration);
     Ok([
         crank,
