@@ -217,3 +217,77 @@ impl<T: Real> fmt::Display for Error<T> {
 }
 
 impl<T: Real> core::error::Error for Error<T> {}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+    use crate::{driver::crank, dyad::rrr, Mode, Point2};
+    use std::string::ToString;
+
+    /// RRR with `|B - A| = 10` and links 2 and 3: out of reach by exactly
+    /// 10 - 5 = 5 (every number exact in both precisions).
+    fn too_far<T: Real>() -> Error<T> {
+        let (a, b) = (Point2::new(T::zero(), T::zero()), Point2::new(T::lit(10.0), T::zero()));
+        match rrr::position(&a, T::lit(2.0), &b, T::lit(3.0), Mode::Plus) {
+            Err(e) => e,
+            Ok(_) => panic!("a joint 10 away cannot be reached by links 2 and 3"),
+        }
+    }
+
+    #[test]
+    fn f32_error_carries_f32_values_and_widens_exactly() {
+        let e32: Error<f32> = too_far::<f32>();
+        assert_eq!(
+            e32.fault,
+            Fault::CannotAssemble {
+                miss: 5.0f32,
+                reach: 5.0f32
+            }
+        );
+        // `From` (what `?` uses) and `to_f64` agree with the f64 computation.
+        let widened: Error<f64> = e32.into();
+        assert_eq!(widened, too_far::<f64>());
+        assert_eq!(e32.to_f64(), widened);
+        // A value that is not a short decimal keeps its f32 bits when widened.
+        let e = Error::new(
+            Primitive::Crank,
+            Fault::NonPositive {
+                what: "x",
+                value: -0.1f32,
+            },
+        )
+        .in_group("A");
+        let w: Error<f64> = e.into();
+        assert_eq!(w.group, "A");
+        assert_eq!(
+            w.fault,
+            Fault::NonPositive {
+                what: "x",
+                value: -0.1f32 as f64
+            }
+        );
+    }
+
+    #[test]
+    fn display_prints_each_precision_in_its_own_digits() {
+        // Same text for both precisions when the numbers are exact.
+        let want = "RRR: cannot assemble: the known joints are 5e0 outside the reachable range (bound 5e0)";
+        assert_eq!(too_far::<f32>().to_string(), want);
+        assert_eq!(too_far::<f64>().to_string(), want);
+        // -0.1 as f32 prints as the shortest f32 decimal, not as the f64
+        // expansion of its bits (-1.0000000149011612e-1).
+        let e = match crank::position(&Point2::new(0.0f32, 0.0), -0.1f32, 0.5) {
+            Err(e) => e.in_group("A"),
+            Ok(_) => panic!("a negative crank length is an error"),
+        };
+        assert_eq!(
+            e.to_string(),
+            "group `A` (crank): crank length must be positive, got -1e-1"
+        );
+        assert_eq!(
+            e.to_f64().to_string(),
+            "group `A` (crank): crank length must be positive, got -1.0000000149011612e-1"
+        );
+    }
+}
