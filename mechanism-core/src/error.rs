@@ -228,7 +228,10 @@ mod tests {
     /// RRR with `|B - A| = 10` and links 2 and 3: out of reach by exactly
     /// 10 - 5 = 5 (every number exact in both precisions).
     fn too_far<T: Real>() -> Error<T> {
-        let (a, b) = (Point2::new(T::zero(), T::zero()), Point2::new(T::lit(10.0), T::zero()));
+        let (a, b) = (
+            Point2::new(T::zero(), T::zero()),
+            Point2::new(T::lit(10.0), T::zero()),
+        );
         match rrr::position(&a, T::lit(2.0), &b, T::lit(3.0), Mode::Plus) {
             Err(e) => e,
             Ok(_) => panic!("a joint 10 away cannot be reached by links 2 and 3"),

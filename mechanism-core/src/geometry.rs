@@ -178,13 +178,7 @@ pub fn positive<T: Real>(x: T, primitive: Primitive, what: &'static str) -> Resu
     if x > T::zero() {
         Ok(x)
     } else {
-        Err(Error::new(
-            primitive,
-            Fault::NonPositive {
-                what,
-                value: x,
-            },
-        ))
+        Err(Error::new(primitive, Fault::NonPositive { what, value: x }))
     }
 }
 

@@ -408,7 +408,11 @@ fn check_f32_vs_f64<C: Case>(case: &C, tol: f64) -> Result<(), TestCaseError> {
 fn check_closure<C: Case>(case: &C) -> Result<(), TestCaseError> {
     for (name, eps, got) in [
         ("f64", f64::EPSILON, case.residual::<f64>()),
-        ("f32", f32::EPSILON as f64, case.residual::<f32>().map_err(Error::from)),
+        (
+            "f32",
+            f32::EPSILON as f64,
+            case.residual::<f32>().map_err(Error::from),
+        ),
     ] {
         let (res, scale) = got.map_err(|e| TestCaseError::fail(format!("{name}: {e}")))?;
         prop_assert!(

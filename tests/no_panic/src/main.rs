@@ -165,8 +165,13 @@ macro_rules! forces {
         let loads = $loads {
             $lf: black_box($lv as $t),
         };
-        type F =
-            fn(&$m<$t>, &$input<$t>, &$input<$t>, &$input<$t>, &$loads<$t>) -> Result<(), Error<$t>>;
+        type F = fn(
+            &$m<$t>,
+            &$input<$t>,
+            &$input<$t>,
+            &$input<$t>,
+            &$loads<$t>,
+        ) -> Result<(), Error<$t>>;
         let f: F = black_box($f);
         usize::from(f(&m, &input($q), &input(1.5), &input(-0.5), &loads).is_ok())
     }};
