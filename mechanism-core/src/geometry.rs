@@ -203,13 +203,7 @@ pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, E
     if abs(det) > threshold && scale > T::zero() && all_finite([det]) {
         Ok(det)
     } else {
-        Err(Error::new(
-            primitive,
-            Fault::Singular {
-                det: det,
-                scale: scale,
-            },
-        ))
+        Err(Error::new(primitive, Fault::Singular { det, scale }))
     }
 }
 
