@@ -162,11 +162,13 @@ const FOURBAR_COLUMNS: &[(&str, Kind)] = &[
 
 fn fourbar<T: Real>(q: &[f64], w: &[f64], a: &[f64]) -> Result<Sample, Error> {
     let m = FourBar::<T>::default();
-    let s = m.solve(
-        &FourBarInput { theta2: lit(q[0]) },
-        &FourBarInput { theta2: lit(w[0]) },
-        &FourBarInput { theta2: lit(a[0]) },
-    )?;
+    let s = m
+        .solve(
+            &FourBarInput { theta2: lit(q[0]) },
+            &FourBarInput { theta2: lit(w[0]) },
+            &FourBarInput { theta2: lit(a[0]) },
+        )
+        .map_err(Error::to_f64)?;
     let (p, v, ac) = (&s.position, &s.velocity, &s.acceleration);
     let (o2, o4, pa, pb) = (pt(&p.O2), pt(&p.O4), pt(&p.A), pt(&p.B));
     let (l2, l3, l4) = (p.link2.as_f64(), p.link3.as_f64(), p.link4.as_f64());
@@ -221,11 +223,13 @@ const SIXBAR_COLUMNS: &[(&str, Kind)] = &[
 
 fn sixbar<T: Real>(q: &[f64], w: &[f64], a: &[f64]) -> Result<Sample, Error> {
     let m = SixBar::<T>::default();
-    let s = m.solve(
-        &SixBarInput { phi1: lit(q[0]) },
-        &SixBarInput { phi1: lit(w[0]) },
-        &SixBarInput { phi1: lit(a[0]) },
-    )?;
+    let s = m
+        .solve(
+            &SixBarInput { phi1: lit(q[0]) },
+            &SixBarInput { phi1: lit(w[0]) },
+            &SixBarInput { phi1: lit(a[0]) },
+        )
+        .map_err(Error::to_f64)?;
     let (p, v, ac) = (&s.position, &s.velocity, &s.acceleration);
     let (pa, pe, pk, pb) = (pt(&p.A), pt(&p.E), pt(&p.K), pt(&p.B));
     let (pf, pd, pc) = (pt(&p.F), pt(&p.D), pt(&p.C));
@@ -300,11 +304,13 @@ const SHAPER_COLUMNS: &[(&str, Kind)] = &[
 
 fn shaper<T: Real>(q: &[f64], w: &[f64], a: &[f64]) -> Result<Sample, Error> {
     let m = Shaper::<T>::default();
-    let s = m.solve(
-        &ShaperInput { crank: lit(q[0]) },
-        &ShaperInput { crank: lit(w[0]) },
-        &ShaperInput { crank: lit(a[0]) },
-    )?;
+    let s = m
+        .solve(
+            &ShaperInput { crank: lit(q[0]) },
+            &ShaperInput { crank: lit(w[0]) },
+            &ShaperInput { crank: lit(a[0]) },
+        )
+        .map_err(Error::to_f64)?;
     let (p, v, ac) = (&s.position, &s.velocity, &s.acceleration);
     let (pa, pc, pb, pd, pe) = (pt(&p.A), pt(&p.C), pt(&p.B), pt(&p.D), pt(&p.E));
     let (l3, l4) = (p.link3.as_f64(), p.link4.as_f64());
@@ -360,11 +366,13 @@ const SLIDER_COLUMNS: &[(&str, Kind)] = &[
 
 fn slider_crank<T: Real>(q: &[f64], w: &[f64], a: &[f64]) -> Result<Sample, Error> {
     let m = SliderCrank::<T>::default();
-    let s = m.solve(
-        &SliderCrankInput { theta: lit(q[0]) },
-        &SliderCrankInput { theta: lit(w[0]) },
-        &SliderCrankInput { theta: lit(a[0]) },
-    )?;
+    let s = m
+        .solve(
+            &SliderCrankInput { theta: lit(q[0]) },
+            &SliderCrankInput { theta: lit(w[0]) },
+            &SliderCrankInput { theta: lit(a[0]) },
+        )
+        .map_err(Error::to_f64)?;
     let (p, v, ac) = (&s.position, &s.velocity, &s.acceleration);
     let (po, pa, pb) = (pt(&p.O), pt(&p.A), pt(&p.B));
     let (l3, x) = (p.link3.as_f64(), p.x.as_f64());
@@ -401,7 +409,9 @@ fn five_bar<T: Real>(q: &[f64], w: &[f64], a: &[f64]) -> Result<Sample, Error> {
         q1: lit(x[0]),
         q2: lit(x[1]),
     };
-    let s = m.solve(&input(q), &input(w), &input(a))?;
+    let s = m
+        .solve(&input(q), &input(w), &input(a))
+        .map_err(Error::to_f64)?;
     let (p, v, ac) = (&s.position, &s.velocity, &s.acceleration);
     let (o1, o2, pa, pc, pp) = (pt(&p.O1), pt(&p.O2), pt(&p.A), pt(&p.C), pt(&p.P));
     Ok(Sample {

@@ -63,7 +63,7 @@ fn sweep() -> impl Iterator<Item = f64> {
 fn every_scene<T: Real>() -> usize {
     let l = T::lit;
     let mut ok = 0;
-    let mut count = |r: Result<(), mechanism::Error>| {
+    let mut count = |r: Result<(), mechanism::Error<T>>| {
         if black_box(r).is_ok() {
             ok += 1;
         }

@@ -1188,7 +1188,7 @@ pub fn emit_check(model: &Model, plan: &Plan, inputs: &[Input], summary: &str) -
                     ::core::result::Result::Ok(pos) => ::core::result::Result::Ok([#(#dets),*]),
                     ::core::result::Result::Err(e) => ::core::result::Result::Err((
                         match e.group { #(#group_names => #indices,)* _ => 0 },
-                        e.fault,
+                        e.fault.to_f64(),
                     )),
                 }
             };

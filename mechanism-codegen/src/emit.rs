@@ -618,7 +618,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
         /// Errors name the group that cannot be assembled or is singular.
         #[inline(always)]
         #[allow(non_snake_case, unused_variables)]
-        pub fn position(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> {
+        pub fn position(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error<T>> {
             let input = *input;
             #pos_code
             #pos_out_code
@@ -691,7 +691,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             /// the marked cranks' entries are 0: nothing reads them.
             #[inline(always)]
             #[allow(non_snake_case, unused_variables)]
-            pub fn position_cos_sin(&self, input: &#cs_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> {
+            pub fn position_cos_sin(&self, input: &#cs_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error<T>> {
                 let input_cs = *input;
                 #cs_input
                 #cs_code
@@ -756,7 +756,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             /// (rad/s or length units per second).
             #[inline(always)]
             #[allow(non_snake_case, unused_variables)]
-            pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error> {
+            pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error<T>> {
                 let rates = *rates;
                 #code
                 #(let #on = #oc;)*
@@ -825,7 +825,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             /// accelerations (rad/s^2 or length units per s^2).
             #[inline(always)]
             #[allow(non_snake_case, unused_variables)]
-            pub fn acceleration(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#acceleration_ty<T>, ::mechanism::Error> {
+            pub fn acceleration(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#acceleration_ty<T>, ::mechanism::Error<T>> {
                 let accels = *accels;
                 let rates = vel.rates;
                 #code
@@ -840,7 +840,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             // calls, and the six-bar and shaper took 1.6 times as long;
             // docs/performance.md).
             #[inline(always)]
-            pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T> #loads_param) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error> {
+            pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T> #loads_param) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error<T>> {
                 let position = self.position(input)?;
                 let velocity = self.velocity(&position, rates)?;
                 let acceleration = self.acceleration(&position, &velocity, accels)?;
@@ -1354,7 +1354,7 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
             #vis struct #forces_ty<T: ::mechanism::Real = ::core::primitive::f64> { pub condition: T, pub power_residual: T }
             #[allow(dead_code, unused_variables)]
             impl<T: ::mechanism::Real> #name<T> {
-                pub fn forces(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, acc: &#acceleration_ty<T> #loads_param) -> ::core::result::Result<#forces_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
+                pub fn forces(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, acc: &#acceleration_ty<T> #loads_param) -> ::core::result::Result<#forces_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
             }
         }
     } else {
@@ -1382,11 +1382,11 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         }
         #[allow(dead_code, unused_variables)]
         impl<T: ::mechanism::Real> #name<T> {
-            pub fn position(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
-            pub fn position_cos_sin(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
-            pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
-            pub fn acceleration(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#acceleration_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
-            pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error> { ::core::unimplemented!() }
+            pub fn position(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
+            pub fn position_cos_sin(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
+            pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
+            pub fn acceleration(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#acceleration_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
+            pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
         }
     }
 }

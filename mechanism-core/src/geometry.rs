@@ -139,7 +139,7 @@ pub fn all_finite<T: Real, const N: usize>(xs: [T; N]) -> bool {
 
 /// Returns `Err(NonFinite)` unless `x` is finite.
 #[inline(always)]
-pub fn finite<T: Real>(x: T, primitive: Primitive, what: &'static str) -> Result<T, Error> {
+pub fn finite<T: Real>(x: T, primitive: Primitive, what: &'static str) -> Result<T, Error<T>> {
     if x.finite() {
         Ok(x)
     } else {
@@ -153,7 +153,7 @@ pub fn finite_vec<T: Real>(
     v: Vector2<T>,
     primitive: Primitive,
     what: &'static str,
-) -> Result<Vector2<T>, Error> {
+) -> Result<Vector2<T>, Error<T>> {
     if v.x.finite() && v.y.finite() {
         Ok(v)
     } else {
@@ -167,24 +167,18 @@ pub fn finite_point<T: Real>(
     p: Point2<T>,
     primitive: Primitive,
     what: &'static str,
-) -> Result<Point2<T>, Error> {
+) -> Result<Point2<T>, Error<T>> {
     finite_vec(p.coords, primitive, what).map(Point2::from)
 }
 
 /// Returns `Err(NonPositive)` unless `x` is finite and `> 0`.
 #[inline(always)]
-pub fn positive<T: Real>(x: T, primitive: Primitive, what: &'static str) -> Result<T, Error> {
+pub fn positive<T: Real>(x: T, primitive: Primitive, what: &'static str) -> Result<T, Error<T>> {
     let x = finite(x, primitive, what)?;
     if x > T::zero() {
         Ok(x)
     } else {
-        Err(Error::new(
-            primitive,
-            Fault::NonPositive {
-                what,
-                value: x.as_f64(),
-            },
-        ))
+        Err(Error::new(primitive, Fault::NonPositive { what, value: x }))
     }
 }
 
@@ -199,7 +193,7 @@ pub const SINGULAR_RELATIVE: f64 = 16.0;
 /// `|det| <= SINGULAR_RELATIVE * eps * scale`, `scale <= 0`, or either is not
 /// finite.
 #[inline(always)]
-pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, Error> {
+pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, Error<T>> {
     let threshold = T::lit(SINGULAR_RELATIVE) * T::eps() * scale;
     // `scale > 0` too: a scale that underflowed to zero (columns shorter than
     // about 1e-154 in f64) would otherwise pass any nonzero `det` and give an
@@ -209,13 +203,7 @@ pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, E
     if abs(det) > threshold && scale > T::zero() && all_finite([det]) {
         Ok(det)
     } else {
-        Err(Error::new(
-            primitive,
-            Fault::Singular {
-                det: det.as_f64(),
-                scale: scale.as_f64(),
-            },
-        ))
+        Err(Error::new(primitive, Fault::Singular { det, scale }))
     }
 }
 
@@ -235,7 +223,7 @@ pub fn check_det_condition<T: Real>(
     det: T,
     scale: T,
     primitive: Primitive,
-) -> Result<(T, T), Error> {
+) -> Result<(T, T), Error<T>> {
     let det = check_det(det, scale, primitive)?;
     // The check passed, so `scale` is finite and > 0. Rounding can push the
     // ratio a few ulp above Hadamard's bound 1: clamp, so the range holds.

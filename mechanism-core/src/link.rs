@@ -44,13 +44,13 @@ pub fn point_position<T: Real>(
     origin: &Point2<T>,
     axis: &Vector2<T>,
     local: &Vector2<T>,
-) -> Result<Point2<T>, Error> {
+) -> Result<Point2<T>, Error<T>> {
     finite_point(origin + local_offset(axis, local), P, "link point")
 }
 
 /// Velocity of a point relative to the link origin, checked finite (L/s).
 #[inline(always)]
-pub fn point_velocity<T: Real>(offset: &Vector2<T>, omega: T) -> Result<Vector2<T>, Error> {
+pub fn point_velocity<T: Real>(offset: &Vector2<T>, omega: T) -> Result<Vector2<T>, Error<T>> {
     finite_vec(relative_velocity(offset, omega), P, "link point velocity")
 }
 
@@ -60,7 +60,7 @@ pub fn point_acceleration<T: Real>(
     offset: &Vector2<T>,
     omega: T,
     alpha: T,
-) -> Result<Vector2<T>, Error> {
+) -> Result<Vector2<T>, Error<T>> {
     finite_vec(
         relative_acceleration(offset, omega, alpha),
         P,

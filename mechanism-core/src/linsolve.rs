@@ -63,7 +63,7 @@ pub const PIVOT_TOLERANCE: f64 = 1.0;
 
 /// `Err(NonFinite)` unless every entry of `a` and `b` is finite.
 #[inline]
-fn check_input<T: Real, const N: usize>(a: &[[T; N]; N], b: &[T; N]) -> Result<(), Error> {
+fn check_input<T: Real, const N: usize>(a: &[[T; N]; N], b: &[T; N]) -> Result<(), Error<T>> {
     let finite = a.iter().flatten().chain(b.iter()).all(|v| v.finite());
     if finite {
         Ok(())
@@ -79,7 +79,7 @@ fn check_input<T: Real, const N: usize>(a: &[[T; N]; N], b: &[T; N]) -> Result<(
 
 /// `Ok(x)` unless some entry of `x` is not finite (overflow in elimination).
 #[inline]
-fn check_output<T: Real, const N: usize>(x: [T; N]) -> Result<[T; N], Error> {
+fn check_output<T: Real, const N: usize>(x: [T; N]) -> Result<[T; N], Error<T>> {
     if x.iter().all(|v| v.finite()) {
         Ok(x)
     } else {
@@ -152,7 +152,7 @@ fn back_substitute_in_place<T: Real, const N: usize>(u: &[[T; N]; N], y: &mut [T
 pub fn solve<T: Real, const N: usize>(
     mut a: [[T; N]; N],
     mut b: [T; N],
-) -> Result<Solution<T, N>, Error> {
+) -> Result<Solution<T, N>, Error<T>> {
     let min_pivot_ratio = solve_in_place(&mut a, &mut b)?;
     Ok(Solution {
         x: b,
@@ -174,7 +174,7 @@ pub fn solve<T: Real, const N: usize>(
 pub fn solve_in_place<T: Real, const N: usize>(
     a: &mut [[T; N]; N],
     b: &mut [T; N],
-) -> Result<T, Error> {
+) -> Result<T, Error<T>> {
     check_input(a, b)?;
 
     // Row equilibration; `scale[i]` travels with row `i` through the swaps.
@@ -186,8 +186,8 @@ pub fn solve_in_place<T: Real, const N: usize>(
             return Err(Error::new(
                 P,
                 Fault::Singular {
-                    det: 0.0,
-                    scale: 0.0,
+                    det: T::zero(),
+                    scale: T::zero(),
                 },
             ));
         }
@@ -239,8 +239,8 @@ pub fn solve_in_place<T: Real, const N: usize>(
             return Err(Error::new(
                 P,
                 Fault::Singular {
-                    det: (pivot * scale[k]).as_f64(),
-                    scale: scale[k].as_f64(),
+                    det: pivot * scale[k],
+                    scale: scale[k],
                 },
             ));
         }
@@ -291,7 +291,7 @@ pub fn solve_in_place<T: Real, const N: usize>(
 pub fn solve_unpivoted_unscaled<T: Real, const N: usize>(
     mut a: [[T; N]; N],
     mut b: [T; N],
-) -> Result<[T; N], Error> {
+) -> Result<[T; N], Error<T>> {
     check_input(&a, &b)?;
     for k in 0..N {
         let pivot = a[k][k];
@@ -299,8 +299,8 @@ pub fn solve_unpivoted_unscaled<T: Real, const N: usize>(
             return Err(Error::new(
                 P,
                 Fault::Singular {
-                    det: 0.0,
-                    scale: 0.0,
+                    det: T::zero(),
+                    scale: T::zero(),
                 },
             ));
         }

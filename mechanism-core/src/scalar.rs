@@ -3,7 +3,8 @@
 //! [`Real`] is nalgebra's [`RealField`] (so results are ordinary `Point2<T>` /
 //! `Vector2<T>` that users can feed to the rest of nalgebra) plus the three
 //! things the primitives need that `RealField` does not name unambiguously:
-//! converting a literal, widening to `f64` for error reports, and machine epsilon.
+//! converting a literal, widening to `f64` (for the sweep's conditioning
+//! figures and the generated self-test), and machine epsilon.
 //!
 //! Why not a scalar trait of our own from scratch: users want nalgebra types at
 //! the API, and nalgebra's arithmetic on `Vector2<T>` needs `RealField`-like
@@ -23,11 +24,14 @@ pub(crate) fn single<T: Real>() -> bool {
     T::eps() > T::lit(1e-10)
 }
 
-/// A floating-point scalar: `f32` or `f64`.
-pub trait Real: RealField + Copy {
+/// A floating-point scalar: `f32` or `f64`. `LowerExp` (`{:e}`) so that an
+/// [`Error<T>`](crate::Error) prints its numbers in their own precision
+/// from generic code.
+pub trait Real: RealField + Copy + core::fmt::LowerExp {
     /// Converts an `f64` literal (rounding to nearest for `f32`).
     fn lit(x: f64) -> Self;
-    /// Widens to `f64` (exact for both implementations); used in error values.
+    /// Widens to `f64` (exact for both implementations); used where results
+    /// of either precision are compared in `f64` (sweep, self-test).
     fn as_f64(self) -> f64;
     /// Machine epsilon: the gap between 1 and the next representable number.
     fn eps() -> Self;

@@ -109,7 +109,8 @@ fn sqrt(x: f64) -> f64 {
 }
 
 /// What one evaluation returns: every checked group's scaled determinant, or
-/// the index of the group that failed and why.
+/// the index of the group that failed and why (the fault widened to `f64`
+/// with [`Fault::to_f64`] when the scene is `f32`).
 pub type Outcome<const G: usize> = Result<[f64; G], (usize, Fault)>;
 
 /// A finding.

@@ -270,10 +270,10 @@ impl Snapshot {
 
 trait Case: core::fmt::Debug {
     /// Positions and analytic rates at time `t`, computed in `T`.
-    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error>;
+    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error<T>>;
     /// Largest loop-closure residual at `t = 0` and the scale it is judged by
     /// (both L), computed in f64 from the `T` inputs and outputs.
-    fn residual<T: Real>(&self) -> Result<(f64, f64), Error>;
+    fn residual<T: Real>(&self) -> Result<(f64, f64), Error<T>>;
 }
 
 fn max_abs(xs: &[f64]) -> f64 {
@@ -408,7 +408,11 @@ fn check_f32_vs_f64<C: Case>(case: &C, tol: f64) -> Result<(), TestCaseError> {
 fn check_closure<C: Case>(case: &C) -> Result<(), TestCaseError> {
     for (name, eps, got) in [
         ("f64", f64::EPSILON, case.residual::<f64>()),
-        ("f32", f32::EPSILON as f64, case.residual::<f32>()),
+        (
+            "f32",
+            f32::EPSILON as f64,
+            case.residual::<f32>().map_err(Error::from),
+        ),
     ] {
         let (res, scale) = got.map_err(|e| TestCaseError::fail(format!("{name}: {e}")))?;
         prop_assert!(
@@ -492,7 +496,7 @@ fn rrr_conditioning(a: V, l1: f64, b: V, l2: f64, mode: Mode) -> f64 {
 }
 
 impl Case for RrrCase {
-    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error> {
+    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error<T>> {
         let a = pt_t::<T>(self.ma.at(self.a0, t));
         let b = pt_t::<T>(self.mb.at(self.b0, t));
         let pos = rrr::position(&a, lit(self.l1), &b, lit(self.l2), self.mode)?;
@@ -509,7 +513,7 @@ impl Case for RrrCase {
         s.acc.extend([acc.alpha1.as_f64(), acc.alpha2.as_f64()]);
         Ok(s)
     }
-    fn residual<T: Real>(&self) -> Result<(f64, f64), Error> {
+    fn residual<T: Real>(&self) -> Result<(f64, f64), Error<T>> {
         let (a, b) = (pt_t::<T>(self.a0), pt_t::<T>(self.b0));
         let (l1, l2) = (lit::<T>(self.l1), lit::<T>(self.l2));
         let pos = rrr::position(&a, l1, &b, l2, self.mode)?;
@@ -550,7 +554,7 @@ prop_compose! {
 }
 
 impl Case for RrpCase {
-    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error> {
+    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error<T>> {
         let a = pt_t::<T>(self.ma.at(self.a0, t));
         let g = self.g.line::<T>(t);
         let pos = rrp::position(&a, lit(self.l), &g, lit(self.offset), self.mode)?;
@@ -568,7 +572,7 @@ impl Case for RrpCase {
         s.acc.extend([acc.s_ddot.as_f64(), acc.alpha1.as_f64()]);
         Ok(s)
     }
-    fn residual<T: Real>(&self) -> Result<(f64, f64), Error> {
+    fn residual<T: Real>(&self) -> Result<(f64, f64), Error<T>> {
         let a = pt_t::<T>(self.a0);
         let g = self.g.line::<T>(0.0);
         let (l, e) = (lit::<T>(self.l), lit::<T>(self.offset));
@@ -610,7 +614,7 @@ prop_compose! {
 }
 
 impl Case for RprCase {
-    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error> {
+    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error<T>> {
         let a = pt_t::<T>(self.ma.at(self.a0, t));
         let b = pt_t::<T>(self.mb.at(self.b0, t));
         let pos = rpr::position(&a, &b, lit(self.offset), self.mode)?;
@@ -625,7 +629,7 @@ impl Case for RprCase {
         s.acc.extend([acc.s_ddot.as_f64(), acc.alpha.as_f64()]);
         Ok(s)
     }
-    fn residual<T: Real>(&self) -> Result<(f64, f64), Error> {
+    fn residual<T: Real>(&self) -> Result<(f64, f64), Error<T>> {
         let (a, b) = (pt_t::<T>(self.a0), pt_t::<T>(self.b0));
         let e = lit::<T>(self.offset);
         let pos = rpr::position(&a, &b, e, self.mode)?;
@@ -662,7 +666,7 @@ impl PrpCase {
 }
 
 impl Case for PrpCase {
-    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error> {
+    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error<T>> {
         let (g1, g2) = (self.g1.line::<T>(t), self.g2.line::<T>(t));
         let (e1, e2) = (lit::<T>(self.offset1), lit::<T>(self.offset2));
         let pos = prp::position(&g1, e1, &g2, e2)?;
@@ -688,7 +692,7 @@ impl Case for PrpCase {
         s.acc.extend([acc.s1_ddot.as_f64(), acc.s2_ddot.as_f64()]);
         Ok(s)
     }
-    fn residual<T: Real>(&self) -> Result<(f64, f64), Error> {
+    fn residual<T: Real>(&self) -> Result<(f64, f64), Error<T>> {
         let (g1, g2) = (self.g1.line::<T>(0.0), self.g2.line::<T>(0.0));
         let (e1, e2) = (lit::<T>(self.offset1), lit::<T>(self.offset2));
         let pos = prp::position(&g1, e1, &g2, e2)?;
@@ -741,7 +745,7 @@ prop_compose! {
 }
 
 impl Case for RppCase {
-    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error> {
+    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error<T>> {
         let a = pt_t::<T>(self.ma.at(self.a0, t));
         let g = self.g.line::<T>(t);
         let local = vec_t::<T>(unit(self.beta));
@@ -763,7 +767,7 @@ impl Case for RppCase {
         s.acc.push(self.g.al0);
         Ok(s)
     }
-    fn residual<T: Real>(&self) -> Result<(f64, f64), Error> {
+    fn residual<T: Real>(&self) -> Result<(f64, f64), Error<T>> {
         let a = pt_t::<T>(self.a0);
         let g = self.g.line::<T>(0.0);
         let e = lit::<T>(self.offset);
@@ -806,7 +810,7 @@ prop_compose! {
 }
 
 impl Case for CrankCase {
-    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error> {
+    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error<T>> {
         let o = pt_t::<T>(self.mo.at(self.o0, t));
         let pos = crank::position(&o, lit(self.r), lit(self.theta.x(t)))?;
         let omega = lit::<T>(self.theta.v(t));
@@ -821,7 +825,7 @@ impl Case for CrankCase {
         s.acc.push(self.theta.a0);
         Ok(s)
     }
-    fn residual<T: Real>(&self) -> Result<(f64, f64), Error> {
+    fn residual<T: Real>(&self) -> Result<(f64, f64), Error<T>> {
         let o = pt_t::<T>(self.o0);
         let r = lit::<T>(self.r);
         let pos = crank::position(&o, r, lit(self.theta.x0))?;
@@ -851,7 +855,7 @@ prop_compose! {
 }
 
 impl Case for SliderCase {
-    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error> {
+    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error<T>> {
         let g = self.g.line::<T>(t);
         let (s, sd, sdd) = (
             lit::<T>(self.s.x(t)),
@@ -868,7 +872,7 @@ impl Case for SliderCase {
         snap.acc_v(wide_v(&a));
         Ok(snap)
     }
-    fn residual<T: Real>(&self) -> Result<(f64, f64), Error> {
+    fn residual<T: Real>(&self) -> Result<(f64, f64), Error<T>> {
         let g = self.g.line::<T>(0.0);
         let (e, s) = (lit::<T>(self.offset), lit::<T>(self.s.x0));
         let pos = slider::position(&g, e, s)?;
@@ -899,7 +903,7 @@ prop_compose! {
 }
 
 impl Case for ActuatorCase {
-    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error> {
+    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error<T>> {
         let a = pt_t::<T>(self.ma.at(self.a0, t));
         let b = pt_t::<T>(self.mb.at(self.b0, t));
         let pos = actuator::position(&a, lit(self.l), &b, lit(self.len.x(t)), self.mode)?;
@@ -918,7 +922,7 @@ impl Case for ActuatorCase {
         s.acc.extend([acc.alpha1.as_f64(), acc.alpha2.as_f64()]);
         Ok(s)
     }
-    fn residual<T: Real>(&self) -> Result<(f64, f64), Error> {
+    fn residual<T: Real>(&self) -> Result<(f64, f64), Error<T>> {
         let (a, b) = (pt_t::<T>(self.a0), pt_t::<T>(self.b0));
         let (l, len) = (lit::<T>(self.l), lit::<T>(self.len.x0));
         let pos = actuator::position(&a, l, &b, len, self.mode)?;
@@ -950,7 +954,7 @@ prop_compose! {
 }
 
 impl Case for LinkPointCase {
-    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error> {
+    fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error<T>> {
         let o = pt_t::<T>(self.mo.at(self.o0, t));
         let axis = vec_t::<T>(unit(self.theta.x(t)));
         let p = link::point_position(&o, &axis, &vec_t(self.local))?;
@@ -965,7 +969,7 @@ impl Case for LinkPointCase {
         s.acc_v(a);
         Ok(s)
     }
-    fn residual<T: Real>(&self) -> Result<(f64, f64), Error> {
+    fn residual<T: Real>(&self) -> Result<(f64, f64), Error<T>> {
         let o = pt_t::<T>(self.o0);
         let axis = vec_t::<T>(unit(self.theta.x0));
         let local = vec_t::<T>(self.local);
@@ -1047,7 +1051,7 @@ fn finite_differences_catch_a_missing_coriolis_term() {
     #[derive(Debug)]
     struct Broken(SliderCase);
     impl Case for Broken {
-        fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error> {
+        fn snapshot<T: Real>(&self, t: f64) -> Result<Snapshot, Error<T>> {
             let mut s = self.0.snapshot::<T>(t)?;
             // Remove 2 omega s_dot perp(dir) from the acceleration.
             let theta = self.0.g.theta0 + self.0.g.w0 * t + 0.5 * self.0.g.al0 * t * t;
@@ -1056,7 +1060,7 @@ fn finite_differences_catch_a_missing_coriolis_term() {
             s.acc[1] -= cor.y;
             Ok(s)
         }
-        fn residual<T: Real>(&self) -> Result<(f64, f64), Error> {
+        fn residual<T: Real>(&self) -> Result<(f64, f64), Error<T>> {
             self.0.residual::<T>()
         }
     }

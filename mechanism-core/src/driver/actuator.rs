@@ -79,7 +79,7 @@ pub fn position<T: Real>(
     b: &Point2<T>,
     length: T,
     mode: Mode,
-) -> Result<ActuatorPosition<T>, Error> {
+) -> Result<ActuatorPosition<T>, Error<T>> {
     let l = positive(l, P, "actuator link length l")?;
     let length = positive(length, P, "actuator length")?;
     finite_vec(b - a, P, "actuator joint distance")?;
@@ -90,7 +90,7 @@ pub fn position<T: Real>(
 /// cylinder's length `|r2|` (> 0 when the check passes) and the condition
 /// indicator `|det| / (|r1| |r2|)`.
 #[inline(always)]
-fn determinant<T: Real>(pos: &ActuatorPosition<T>) -> Result<(T, T, T), Error> {
+fn determinant<T: Real>(pos: &ActuatorPosition<T>) -> Result<(T, T, T), Error<T>> {
     let len = length(&pos.r2);
     let (det, condition) = check_det_condition(pos.det, length(&pos.r1) * len, P)?;
     Ok((det, len, condition))
@@ -111,7 +111,7 @@ pub fn velocity<T: Real>(
     va: Option<&Vector2<T>>,
     vb: Option<&Vector2<T>>,
     length_dot: T,
-) -> Result<ActuatorVelocity<T>, Error> {
+) -> Result<ActuatorVelocity<T>, Error<T>> {
     let length_dot = finite(length_dot, P, "actuator extension rate")?;
     let (det, len, condition) = determinant(pos)?;
     let e2 = pos.r2 / len;
@@ -151,7 +151,7 @@ pub fn acceleration<T: Real>(
     ab: Option<&Vector2<T>>,
     length_dot: T,
     length_ddot: T,
-) -> Result<ActuatorAcceleration<T>, Error> {
+) -> Result<ActuatorAcceleration<T>, Error<T>> {
     let length_dot = finite(length_dot, P, "actuator extension rate")?;
     let length_ddot = finite(length_ddot, P, "actuator extension acceleration")?;
     let (det, len, _) = determinant(pos)?;

@@ -34,7 +34,7 @@ pub fn position<T: Real>(
     pivot: &Point2<T>,
     length: T,
     theta: T,
-) -> Result<CrankPosition<T>, Error> {
+) -> Result<CrankPosition<T>, Error<T>> {
     // In the scalar's own precision (f32 stays f32: see `crate::trig`). A
     // non-finite angle gives NaN here, caught by `place`'s one test.
     let (sin, cos) = theta.sin_cos_kernel();
@@ -63,7 +63,7 @@ pub fn position_cos_sin<T: Real>(
     length: T,
     cos: T,
     sin: T,
-) -> Result<CrankPosition<T>, Error> {
+) -> Result<CrankPosition<T>, Error<T>> {
     let v = finite_vec(Vector2::new(cos, sin), P, "crank (cos, sin)")?;
     let norm = positive(crate::geometry::length(&v), P, "crank |(cos, sin)|")?;
     place(pivot, length, v / norm, true)
@@ -80,7 +80,7 @@ fn place<T: Real>(
     length: T,
     axis: Vector2<T>,
     angle_finite: bool,
-) -> Result<CrankPosition<T>, Error> {
+) -> Result<CrankPosition<T>, Error<T>> {
     let r = axis * length;
     let tip = pivot + r;
     if length > T::zero() && all_finite([tip.x, tip.y]) {
@@ -94,7 +94,7 @@ fn place<T: Real>(
 /// the length, then the tip (a non-finite pivot or an overflow).
 #[cold]
 #[inline(never)]
-fn bad_placement<T: Real>(length: T, angle_finite: bool) -> Error {
+fn bad_placement<T: Real>(length: T, angle_finite: bool) -> Error<T> {
     // One construction of each fault kind (the cold code stays small).
     let length_ok = length.finite() && length > T::zero();
     let what = if !angle_finite {
@@ -107,7 +107,7 @@ fn bad_placement<T: Real>(length: T, angle_finite: bool) -> Error {
     let fault = if angle_finite && length.finite() && !length_ok {
         Fault::NonPositive {
             what,
-            value: length.as_f64(),
+            value: length,
         }
     } else {
         Fault::NonFinite { what }
@@ -126,7 +126,7 @@ pub fn velocity<T: Real>(
     pos: &CrankPosition<T>,
     v_pivot: Option<&Vector2<T>>,
     omega: T,
-) -> Result<Vector2<T>, Error> {
+) -> Result<Vector2<T>, Error<T>> {
     let v = plus(v_pivot, relative_velocity(&pos.r, omega));
     checked(v, omega.finite(), "crank speed", "crank tip velocity")
 }
@@ -140,7 +140,7 @@ pub fn acceleration<T: Real>(
     a_pivot: Option<&Vector2<T>>,
     omega: T,
     alpha: T,
-) -> Result<Vector2<T>, Error> {
+) -> Result<Vector2<T>, Error<T>> {
     let a = plus(a_pivot, relative_acceleration(&pos.r, omega, alpha));
     checked(
         a,
@@ -158,7 +158,7 @@ fn checked<T: Real>(
     inputs_finite: bool,
     input: &'static str,
     result: &'static str,
-) -> Result<Vector2<T>, Error> {
+) -> Result<Vector2<T>, Error<T>> {
     if all_finite([v.x, v.y]) {
         Ok(v)
     } else {

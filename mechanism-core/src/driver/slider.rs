@@ -81,7 +81,7 @@ pub fn transport_acceleration<T: Real>(
 ///
 /// Errors: `NonFinite` for a non-finite input or result.
 #[inline(always)]
-pub fn position<T: Real>(g: &Line<T>, offset: T, s: T) -> Result<SliderPosition<T>, Error> {
+pub fn position<T: Real>(g: &Line<T>, offset: T, s: T) -> Result<SliderPosition<T>, Error<T>> {
     let s = finite(s, P, "slider displacement")?;
     let offset = finite(offset, P, "slider pin offset")?;
     let p = finite_point(g.at(s, offset), P, "slider pin")?;
@@ -99,7 +99,7 @@ pub fn velocity<T: Real>(
     s: T,
     s_dot: T,
     gv: Option<&LineVelocity<T>>,
-) -> Result<Vector2<T>, Error> {
+) -> Result<Vector2<T>, Error<T>> {
     finite(s, P, "slider displacement")?;
     let s_dot = finite(s_dot, P, "slider speed")?;
     let vm = transport_velocity(g, &pos.p, gv);
@@ -123,7 +123,7 @@ pub fn acceleration<T: Real>(
     s_ddot: T,
     gv: Option<&LineVelocity<T>>,
     ga: Option<&LineAcceleration<T>>,
-) -> Result<Vector2<T>, Error> {
+) -> Result<Vector2<T>, Error<T>> {
     finite(s, P, "slider displacement")?;
     let s_dot = finite(s_dot, P, "slider speed")?;
     let s_ddot = finite(s_ddot, P, "slider acceleration")?;

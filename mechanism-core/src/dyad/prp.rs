@@ -78,7 +78,7 @@ pub struct PrpAcceleration<T: Real> {
 
 /// Determinant `cross(dir1, dir2)`, checked against `16 eps |dir1| |dir2|`.
 #[inline(always)]
-fn determinant<T: Real>(g1: &Line<T>, g2: &Line<T>) -> Result<(T, T), Error> {
+fn determinant<T: Real>(g1: &Line<T>, g2: &Line<T>) -> Result<(T, T), Error<T>> {
     check_det_condition(
         cross(&g1.dir, &g2.dir),
         length(&g1.dir) * length(&g2.dir),
@@ -98,7 +98,7 @@ pub fn position<T: Real>(
     offset1: T,
     g2: &Line<T>,
     offset2: T,
-) -> Result<PrpPosition<T>, Error> {
+) -> Result<PrpPosition<T>, Error<T>> {
     let offset1 = finite(offset1, P, "PRP offset 1")?;
     let offset2 = finite(offset2, P, "PRP offset 2")?;
     let d1 = finite_vec(g1.dir, P, "PRP guide 1 direction")?;
@@ -129,7 +129,7 @@ pub fn velocity<T: Real>(
     g2: &Line<T>,
     gv1: Option<&LineVelocity<T>>,
     gv2: Option<&LineVelocity<T>>,
-) -> Result<PrpVelocity<T>, Error> {
+) -> Result<PrpVelocity<T>, Error<T>> {
     let (det, condition) = determinant(g1, g2)?;
     let vm1 = transport_velocity(g1, &pos.c, gv1);
     let vm2 = transport_velocity(g2, &pos.c, gv2);
@@ -167,7 +167,7 @@ pub fn acceleration<T: Real>(
     ga1: Option<&LineAcceleration<T>>,
     gv2: Option<&LineVelocity<T>>,
     ga2: Option<&LineAcceleration<T>>,
-) -> Result<PrpAcceleration<T>, Error> {
+) -> Result<PrpAcceleration<T>, Error<T>> {
     let (det, _) = determinant(g1, g2)?;
     let am1 = transport_acceleration(g1, &pos.c, gv1, ga1, &(g1.dir * vel.s1_dot));
     let am2 = transport_acceleration(g2, &pos.c, gv2, ga2, &(g2.dir * vel.s2_dot));

@@ -81,7 +81,7 @@ pub struct RppAcceleration<T: Real> {
 
 /// Determinant `cross(dir, w) = sin(beta)`, checked against `16 eps |dir| |w|`.
 #[inline(always)]
-fn determinant<T: Real>(dir: &Vector2<T>, w: &Vector2<T>) -> Result<(T, T), Error> {
+fn determinant<T: Real>(dir: &Vector2<T>, w: &Vector2<T>) -> Result<(T, T), Error<T>> {
     check_det_condition(cross(dir, w), length(dir) * length(w), P)
 }
 
@@ -97,7 +97,7 @@ pub fn position<T: Real>(
     g: &Line<T>,
     offset: T,
     slot_dir_local: &Vector2<T>,
-) -> Result<RppPosition<T>, Error> {
+) -> Result<RppPosition<T>, Error<T>> {
     let offset = finite(offset, P, "RPP guide offset")?;
     let dir = finite_vec(g.dir, P, "RPP guide direction")?;
     let local = finite_vec(*slot_dir_local, P, "RPP slot direction")?;
@@ -136,7 +136,7 @@ pub fn velocity<T: Real>(
     g: &Line<T>,
     va: Option<&Vector2<T>>,
     gv: Option<&LineVelocity<T>>,
-) -> Result<RppVelocity<T>, Error> {
+) -> Result<RppVelocity<T>, Error<T>> {
     let (det, condition) = determinant(&g.dir, &pos.slot)?;
     let vma = transport_velocity(g, a, gv);
     let r = finite_vec(difference(va, vma.as_ref()), P, "RPP relative velocity")?;
@@ -169,7 +169,7 @@ pub fn acceleration<T: Real>(
     aa: Option<&Vector2<T>>,
     gv: Option<&LineVelocity<T>>,
     ga: Option<&LineAcceleration<T>>,
-) -> Result<RppAcceleration<T>, Error> {
+) -> Result<RppAcceleration<T>, Error<T>> {
     let (det, _) = determinant(&g.dir, &pos.slot)?;
     let rel_a = pos.slot * vel.s1_dot + g.dir * vel.s2_dot;
     let ama = transport_acceleration(g, a, gv, ga, &rel_a);

@@ -90,7 +90,7 @@ pub fn position<T: Real>(
     b: &Point2<T>,
     offset: T,
     mode: Mode,
-) -> Result<RprPosition<T>, Error> {
+) -> Result<RprPosition<T>, Error<T>> {
     let offset = finite(offset, P, "RPR slide offset")?;
     let p = finite_vec(a - b, P, "RPR joint distance")?;
     let dist = finite(length(&p), P, "RPR joint distance")?;
@@ -101,8 +101,8 @@ pub fn position<T: Real>(
         return Err(Error::new(
             P,
             Fault::CannotAssemble {
-                miss: (-gap).as_f64(),
-                reach: e.as_f64(),
+                miss: -gap,
+                reach: e,
             },
         ));
     }
@@ -110,8 +110,8 @@ pub fn position<T: Real>(
         return Err(Error::new(
             P,
             Fault::Singular {
-                det: 0.0,
-                scale: 0.0,
+                det: T::zero(),
+                scale: T::zero(),
             },
         ));
     }
@@ -129,8 +129,8 @@ pub fn position<T: Real>(
         return Err(Error::new(
             P,
             Fault::Singular {
-                det: 0.0,
-                scale: dist.as_f64(),
+                det: T::zero(),
+                scale: dist,
             },
         ));
     }
@@ -142,7 +142,7 @@ pub fn position<T: Real>(
 /// Determinant of the rate system, `dot(u, A - B) = s`, checked against
 /// `16 eps |u| |A - B|`.
 #[inline(always)]
-fn determinant<T: Real>(pos: &RprPosition<T>, p: &Vector2<T>) -> Result<(T, T), Error> {
+fn determinant<T: Real>(pos: &RprPosition<T>, p: &Vector2<T>) -> Result<(T, T), Error<T>> {
     check_det_condition(dot(&pos.axis, p), length(&pos.axis) * length(p), P)
 }
 
@@ -161,7 +161,7 @@ pub fn velocity<T: Real>(
     b: &Point2<T>,
     va: Option<&Vector2<T>>,
     vb: Option<&Vector2<T>>,
-) -> Result<RprVelocity<T>, Error> {
+) -> Result<RprVelocity<T>, Error<T>> {
     let p = a - b;
     let (det, condition) = determinant(pos, &p)?;
     let w = finite_vec(difference(va, vb), P, "RPR joint velocity")?;
@@ -188,7 +188,7 @@ pub fn acceleration<T: Real>(
     vel: &RprVelocity<T>,
     aa: Option<&Vector2<T>>,
     ab: Option<&Vector2<T>>,
-) -> Result<RprAcceleration<T>, Error> {
+) -> Result<RprAcceleration<T>, Error<T>> {
     let p = a - b;
     let (det, _) = determinant(pos, &p)?;
     let w = finite_vec(

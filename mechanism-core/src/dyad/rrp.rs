@@ -109,7 +109,7 @@ pub fn position<T: Real>(
     g: &Line<T>,
     offset: T,
     mode: Mode,
-) -> Result<RrpPosition<T>, Error> {
+) -> Result<RrpPosition<T>, Error<T>> {
     let l = positive(l, P, "RRP length l")?;
     let offset = finite(offset, P, "RRP guide offset")?;
     let dir = finite_vec(g.dir, P, "RRP guide direction")?;
@@ -145,8 +145,8 @@ pub fn position<T: Real>(
         return Err(Error::new(
             P,
             Fault::CannotAssemble {
-                miss: (-gap).as_f64(),
-                reach: l.as_f64(),
+                miss: -gap,
+                reach: l,
             },
         ));
     }
@@ -170,7 +170,7 @@ pub fn position<T: Real>(
 /// Determinant of the rate system, `dot(r1, dir) = +-sqrt(l^2 - k^2)`, checked
 /// against `16 eps |r1| |dir|`.
 #[inline(always)]
-fn determinant<T: Real>(pos: &RrpPosition<T>, g: &Line<T>) -> Result<(T, T), Error> {
+fn determinant<T: Real>(pos: &RrpPosition<T>, g: &Line<T>) -> Result<(T, T), Error<T>> {
     check_det_condition(dot(&pos.r1, &g.dir), length(&pos.r1) * length(&g.dir), P)
 }
 
@@ -189,7 +189,7 @@ pub fn velocity<T: Real>(
     g: &Line<T>,
     va: Option<&Vector2<T>>,
     gv: Option<&LineVelocity<T>>,
-) -> Result<RrpVelocity<T>, Error> {
+) -> Result<RrpVelocity<T>, Error<T>> {
     let (det, condition) = determinant(pos, g)?;
     let vm = transport_velocity(g, &pos.c, gv);
     let w = finite_vec(difference(vm.as_ref(), va), P, "RRP joint velocity")?;
@@ -223,7 +223,7 @@ pub fn acceleration<T: Real>(
     aa: Option<&Vector2<T>>,
     gv: Option<&LineVelocity<T>>,
     ga: Option<&LineAcceleration<T>>,
-) -> Result<RrpAcceleration<T>, Error> {
+) -> Result<RrpAcceleration<T>, Error<T>> {
     let (det, _) = determinant(pos, g)?;
     let am = transport_acceleration(g, &pos.c, gv, ga, &(g.dir * vel.s_dot));
     let w = finite_vec(

@@ -123,7 +123,7 @@ pub fn position<T: Real>(
     b: &Point2<T>,
     l2: T,
     mode: Mode,
-) -> Result<RrrPosition<T>, Error> {
+) -> Result<RrrPosition<T>, Error<T>> {
     let d = b - a;
     let dsq = dot(&d, &d);
     let sum = l1 + l2;
@@ -188,12 +188,12 @@ enum Check {
 /// miss (L) and the violated reach; `NonFinite` for `C` (an overflow).
 #[cold]
 #[inline(never)]
-fn position_error<T: Real>(d: Vector2<T>, l1: T, l2: T, failed: Check) -> Error {
+fn position_error<T: Real>(d: Vector2<T>, l1: T, l2: T, failed: Check) -> Error<T> {
     let good = |x: T| x.finite() && x > T::zero();
     let sum = l1 + l2;
     let diff = abs(l1 - l2);
-    // The fault as (kind, name, first value, second value), widened to `f64`
-    // once at the end (one copy of the conversion in the code).
+    // The fault as (kind, name, first value, second value), built once at
+    // the end (one construction of each fault kind in the code).
     let (kind, what, a, b) = if !(good(l1) && good(l2)) {
         // The first bad length.
         let (what, x) = if good(l1) {
@@ -219,9 +219,8 @@ fn position_error<T: Real>(d: Vector2<T>, l1: T, l2: T, failed: Check) -> Error 
             Check::JointFinite => (Kind::NonFinite, "RRR joint C", sum, sum),
         }
     };
-    let (a, b) = (a.as_f64(), b.as_f64());
     let fault = match kind {
-        Kind::Input if a.is_finite() => Fault::NonPositive { what, value: a },
+        Kind::Input if a.finite() => Fault::NonPositive { what, value: a },
         Kind::Input | Kind::NonFinite => Fault::NonFinite { what },
         Kind::Singular => Fault::Singular { det: a, scale: b },
         Kind::Reach => Fault::CannotAssemble { miss: a, reach: b },
@@ -253,7 +252,7 @@ pub fn velocity<T: Real>(
     pos: &RrrPosition<T>,
     va: Option<&Vector2<T>>,
     vb: Option<&Vector2<T>>,
-) -> Result<RrrVelocity<T>, Error> {
+) -> Result<RrrVelocity<T>, Error<T>> {
     let scale = (dot(&pos.r1, &pos.r1) * dot(&pos.r2, &pos.r2)).sqrt_kernel();
     rates(pos, scale, va, vb)
 }
@@ -274,7 +273,7 @@ pub fn velocity_lengths<T: Real>(
     l2: T,
     va: Option<&Vector2<T>>,
     vb: Option<&Vector2<T>>,
-) -> Result<RrrVelocity<T>, Error> {
+) -> Result<RrrVelocity<T>, Error<T>> {
     rates(pos, l1 * l2, va, vb)
 }
 
@@ -285,7 +284,7 @@ fn rates<T: Real>(
     scale: T,
     va: Option<&Vector2<T>>,
     vb: Option<&Vector2<T>>,
-) -> Result<RrrVelocity<T>, Error> {
+) -> Result<RrrVelocity<T>, Error<T>> {
     let det = check_det(pos.det, scale, P)?;
     let condition = min(abs(det) / scale, T::one());
     let inv_det = T::one() / det;
@@ -333,7 +332,7 @@ pub fn acceleration<T: Real>(
     vel: &RrrVelocity<T>,
     aa: Option<&Vector2<T>>,
     ab: Option<&Vector2<T>>,
-) -> Result<RrrAcceleration<T>, Error> {
+) -> Result<RrrAcceleration<T>, Error<T>> {
     let da = difference(ab, aa);
     let w = da + pos.r1 * (vel.omega1 * vel.omega1) - pos.r2 * (vel.omega2 * vel.omega2);
     let alpha1 = dot(&w, &pos.r2) * vel.inv_det;

@@ -54,7 +54,7 @@ pub fn reactions<T: Real>(
     b: &Point2<T>,
     c: &Point2<T>,
     load: &Wrench<T>,
-) -> Result<ActuatorReactions<T>, Error> {
+) -> Result<ActuatorReactions<T>, Error<T>> {
     if !load.is_finite() {
         return Err(Error::new(
             P,

@@ -36,7 +36,7 @@ pub struct CrankReactions<T: Real> {
 ///
 /// Errors ([`Primitive::Crank`]): `NonFinite` for a non-finite load.
 #[inline]
-pub fn reactions<T: Real>(load: &Wrench<T>) -> Result<CrankReactions<T>, Error> {
+pub fn reactions<T: Real>(load: &Wrench<T>) -> Result<CrankReactions<T>, Error<T>> {
     if !load.is_finite() {
         return Err(Error::new(P, Fault::NonFinite { what: "crank load" }));
     }

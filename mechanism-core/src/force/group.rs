@@ -109,7 +109,7 @@ pub fn unit_direction<T: Real>(
     dir: &Vector2<T>,
     primitive: Primitive,
     what: &'static str,
-) -> Result<Vector2<T>, Error> {
+) -> Result<Vector2<T>, Error<T>> {
     let dir = crate::geometry::finite_vec(*dir, primitive, what)?;
     let norm = crate::geometry::positive(length(&dir), primitive, what)?;
     Ok(dir / norm)
@@ -222,7 +222,7 @@ fn check_finite<T: Real>(
     load1: &Wrench<T>,
     load2: &Wrench<T>,
     primitive: Primitive,
-) -> Result<(), Error> {
+) -> Result<(), Error<T>> {
     if !(load1.is_finite() && load2.is_finite()) {
         return Err(Error::new(
             primitive,
@@ -257,7 +257,7 @@ fn finish<T: Real>(
     couple_scale: T,
     min_pivot_ratio: T,
     primitive: Primitive,
-) -> Result<GroupSolution<T>, Error> {
+) -> Result<GroupSolution<T>, Error<T>> {
     for (u, pair) in unknowns.iter_mut().zip(pairs.iter()) {
         if let Pair::Prismatic { .. } = pair {
             u[1] *= couple_scale;
@@ -291,7 +291,7 @@ pub fn solve<T: Real>(
     load1: &Wrench<T>,
     load2: &Wrench<T>,
     primitive: Primitive,
-) -> Result<GroupSolution<T>, Error> {
+) -> Result<GroupSolution<T>, Error<T>> {
     let [j0, j1, j2] = joints;
     check_finite(
         &[&j0.pair, &j1.pair, &j2.pair],
@@ -362,7 +362,7 @@ pub fn solve_inner_revolute<T: Real>(
     load1: &Wrench<T>,
     load2: &Wrench<T>,
     primitive: Primitive,
-) -> Result<GroupSolution<T>, Error> {
+) -> Result<GroupSolution<T>, Error<T>> {
     check_finite(&[outer1, outer2], about, load1, load2, primitive)?;
     let any_prismatic =
         matches!(outer1, Pair::Prismatic { .. }) || matches!(outer2, Pair::Prismatic { .. });

@@ -53,7 +53,7 @@ pub fn reactions<T: Real>(
     dir2: &Vector2<T>,
     load1: &Wrench<T>,
     load2: &Wrench<T>,
-) -> Result<PrpReactions<T>, Error> {
+) -> Result<PrpReactions<T>, Error<T>> {
     let dir1 = unit_direction(dir1, P, "PRP guide 1 direction")?;
     let dir2 = unit_direction(dir2, P, "PRP guide 2 direction")?;
     let s = group::solve_inner_revolute(

@@ -56,7 +56,7 @@ pub fn reactions<T: Real>(
     guide_dir: &Vector2<T>,
     load1: &Wrench<T>,
     load2: &Wrench<T>,
-) -> Result<RppReactions<T>, Error> {
+) -> Result<RppReactions<T>, Error<T>> {
     let slot_dir = unit_direction(slot_dir, P, "RPP slot direction")?;
     let guide_dir = unit_direction(guide_dir, P, "RPP guide direction")?;
     let joints = [

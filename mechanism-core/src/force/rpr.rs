@@ -54,7 +54,7 @@ pub fn reactions<T: Real>(
     dir: &Vector2<T>,
     load1: &Wrench<T>,
     load2: &Wrench<T>,
-) -> Result<RprReactions<T>, Error> {
+) -> Result<RprReactions<T>, Error<T>> {
     let dir = unit_direction(dir, P, "RPR slide direction")?;
     let joints = [
         Joint {

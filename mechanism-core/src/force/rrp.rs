@@ -53,7 +53,7 @@ pub fn reactions<T: Real>(
     dir: &Vector2<T>,
     load1: &Wrench<T>,
     load2: &Wrench<T>,
-) -> Result<RrpReactions<T>, Error> {
+) -> Result<RrpReactions<T>, Error<T>> {
     let dir = unit_direction(dir, P, "RRP guide direction")?;
     let s = group::solve_inner_revolute(
         &Pair::Revolute { point: *a },

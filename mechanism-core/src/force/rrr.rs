@@ -53,7 +53,7 @@ pub fn reactions<T: Real>(
     c: &Point2<T>,
     load1: &Wrench<T>,
     load2: &Wrench<T>,
-) -> Result<RrrReactions<T>, Error> {
+) -> Result<RrrReactions<T>, Error<T>> {
     let s = group::solve_inner_revolute(
         &Pair::Revolute { point: *a },
         &Pair::Revolute { point: *b },

@@ -40,7 +40,10 @@ pub struct SliderReactions<T: Real> {
 ///
 /// Errors ([`Primitive::Slider`]): `NonFinite`; `NonPositive` for a zero `dir`.
 #[inline]
-pub fn reactions<T: Real>(dir: &Vector2<T>, load: &Wrench<T>) -> Result<SliderReactions<T>, Error> {
+pub fn reactions<T: Real>(
+    dir: &Vector2<T>,
+    load: &Wrench<T>,
+) -> Result<SliderReactions<T>, Error<T>> {
     let dir = unit_direction(dir, P, "slider guide direction")?;
     if !load.is_finite() {
         return Err(Error::new(

@@ -1,6 +1,7 @@
 //! The sweeps the firmware checks, shared word for word with the host test
 //! `tests/firmware_table.rs` that writes and re-checks `expected.rs`: one row of
-//! outputs per crank angle, generic over the scalar, widened to `f64`.
+//! outputs per crank angle, generic over the scalar, widened to `f64` (the
+//! values and the error's numbers).
 //!
 //! Expects the example scenes as `crate::scenes` (`examples/common/scenes.rs`).
 #![allow(dead_code)]
@@ -32,13 +33,15 @@ pub const FOURBAR_MOTION: (f64, f64) = (250.0, 2.0e4);
 pub fn fourbar_row<T: Real>(theta: f64) -> Result<[f64; 9], Error> {
     let m = FourBar::<T>::default();
     let (w, a) = FOURBAR_MOTION;
-    let s = m.solve(
-        &FourBarInput {
-            theta2: T::lit(theta),
-        },
-        &FourBarInput { theta2: T::lit(w) },
-        &FourBarInput { theta2: T::lit(a) },
-    )?;
+    let s = m
+        .solve(
+            &FourBarInput {
+                theta2: T::lit(theta),
+            },
+            &FourBarInput { theta2: T::lit(w) },
+            &FourBarInput { theta2: T::lit(a) },
+        )
+        .map_err(Error::to_f64)?;
     let (p, v, acc) = (&s.position, &s.velocity, &s.acceleration);
     Ok([
         theta,
@@ -66,13 +69,15 @@ pub const SHAPER_MOTION: (f64, f64) = (1.0, 0.7);
 pub fn shaper_row<T: Real>(crank: f64) -> Result<[f64; 9], Error> {
     let m = Shaper::<T>::default();
     let (w, a) = SHAPER_MOTION;
-    let s = m.solve(
-        &ShaperInput {
-            crank: T::lit(crank),
-        },
-        &ShaperInput { crank: T::lit(w) },
-        &ShaperInput { crank: T::lit(a) },
-    )?;
+    let s = m
+        .solve(
+            &ShaperInput {
+                crank: T::lit(crank),
+            },
+            &ShaperInput { crank: T::lit(w) },
+            &ShaperInput { crank: T::lit(a) },
+        )
+        .map_err(Error::to_f64)?;
     let (p, v, acc) = (&s.position, &s.velocity, &s.acceleration);
     Ok([
         crank,

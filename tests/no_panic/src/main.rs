@@ -37,13 +37,13 @@ macro_rules! checked {
                 use super::*;
                 #[cfg_attr(feature = "no-panic", no_panic)]
                 #[inline(never)]
-                pub fn position(m: &$m<$t>, q: &$input<$t>) -> Result<(), Error> {
+                pub fn position(m: &$m<$t>, q: &$input<$t>) -> Result<(), Error<$t>> {
                     black_box(m.position(q)?);
                     Ok(())
                 }
                 #[cfg_attr(feature = "no-panic", no_panic)]
                 #[inline(never)]
-                pub fn velocity(m: &$m<$t>, q: &$input<$t>, w: &$input<$t>) -> Result<(), Error> {
+                pub fn velocity(m: &$m<$t>, q: &$input<$t>, w: &$input<$t>) -> Result<(), Error<$t>> {
                     let p = m.position(q)?;
                     black_box(m.velocity(&p, w)?);
                     Ok(())
@@ -55,7 +55,7 @@ macro_rules! checked {
                     q: &$input<$t>,
                     w: &$input<$t>,
                     a: &$input<$t>,
-                ) -> Result<(), Error> {
+                ) -> Result<(), Error<$t>> {
                     let p = m.position(q)?;
                     let v = m.velocity(&p, w)?;
                     black_box(m.acceleration(&p, &v, a)?);
@@ -68,7 +68,7 @@ macro_rules! checked {
                     q: &$input<$t>,
                     w: &$input<$t>,
                     a: &$input<$t>,
-                ) -> Result<(), Error> {
+                ) -> Result<(), Error<$t>> {
                     black_box(m.solve(q, w, a)?);
                     Ok(())
                 }
@@ -97,7 +97,7 @@ macro_rules! checked_forces {
         $(
             #[cfg_attr(feature = "no-panic", no_panic)]
             #[inline(never)]
-            fn $name(m: &$m<$t>, q: &$input<$t>, w: &$input<$t>, a: &$input<$t> $(, l: &$loads<$t>)?) -> Result<(), Error> {
+            fn $name(m: &$m<$t>, q: &$input<$t>, w: &$input<$t>, a: &$input<$t> $(, l: &$loads<$t>)?) -> Result<(), Error<$t>> {
                 black_box(m.solve(q, w, a $(, l as &$loads<$t>)?)?);
                 Ok(())
             }
@@ -132,10 +132,10 @@ macro_rules! run {
         let m = black_box($m::<$t>::default());
         let input = |x: f64| $input { $($field: black_box(x as $t)),* };
         let (q, w, a) = (input($q), input(1.5), input(-0.5));
-        let p: fn(&$m<$t>, &$input<$t>) -> Result<(), Error> = black_box($module::position);
-        let v: fn(&$m<$t>, &$input<$t>, &$input<$t>) -> Result<(), Error> =
+        let p: fn(&$m<$t>, &$input<$t>) -> Result<(), Error<$t>> = black_box($module::position);
+        let v: fn(&$m<$t>, &$input<$t>, &$input<$t>) -> Result<(), Error<$t>> =
             black_box($module::velocity);
-        type Full = fn(&$m<$t>, &$input<$t>, &$input<$t>, &$input<$t>) -> Result<(), Error>;
+        type Full = fn(&$m<$t>, &$input<$t>, &$input<$t>, &$input<$t>) -> Result<(), Error<$t>>;
         let acc: Full = black_box($module::acceleration);
         let s: Full = black_box($module::solve);
         [p(&m, &q), v(&m, &q, &w), acc(&m, &q, &w, &a), s(&m, &q, &w, &a)]
@@ -153,7 +153,7 @@ macro_rules! forces {
         let input = |x: f64| $input {
             $field: black_box(x as $t),
         };
-        type F = fn(&$m<$t>, &$input<$t>, &$input<$t>, &$input<$t>) -> Result<(), Error>;
+        type F = fn(&$m<$t>, &$input<$t>, &$input<$t>, &$input<$t>) -> Result<(), Error<$t>>;
         let f: F = black_box($f);
         usize::from(f(&m, &input($q), &input(1.5), &input(-0.5)).is_ok())
     }};
@@ -165,8 +165,13 @@ macro_rules! forces {
         let loads = $loads {
             $lf: black_box($lv as $t),
         };
-        type F =
-            fn(&$m<$t>, &$input<$t>, &$input<$t>, &$input<$t>, &$loads<$t>) -> Result<(), Error>;
+        type F = fn(
+            &$m<$t>,
+            &$input<$t>,
+            &$input<$t>,
+            &$input<$t>,
+            &$loads<$t>,
+        ) -> Result<(), Error<$t>>;
         let f: F = black_box($f);
         usize::from(f(&m, &input($q), &input(1.5), &input(-0.5), &loads).is_ok())
     }};

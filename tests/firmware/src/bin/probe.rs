@@ -153,7 +153,7 @@ fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
             theta2: T::lit(250.0),
         },
     )?;
-    Ok::<_, mechanism::Error>((p, v))
+    Ok::<_, mechanism::Error<T>>((p, v))
 }
 
 #[cfg(any(feature = "acc32", feature = "acc64"))]
