@@ -159,11 +159,13 @@ pub fn position<T: Real>(
         return Err(position_error(d, l1, l2, Check::JointFinite));
     }
     // cross(r1, r2) = cross(B - A, r1) = height cross(d, perp(d)) / (2 |d|^2)
-    // = height / 2 (substitute r1 above; r2 = r1 - d).
+    // = height / 2 (substitute r1 above; r2 = r1 - d). `r2` as `r1 - d`
+    // rather than `C - B`: link-sized vectors only (no rounding at the
+    // coordinates' magnitude), and it does not wait for `C`.
     Ok(RrrPosition {
         c,
         r1,
-        r2: c - b,
+        r2: r1 - d,
         det: T::lit(0.5) * height,
     })
 }
