@@ -185,7 +185,7 @@ pub fn sin_cos<T: Real>(x: T) -> (T, T, bool) {
             + r8 * ((1.0 / 479_001_600.0 + r2 * (-1.0 / 87_178_291_200.0))
                 + r4 * (1.0 / 20_922_789_888_000.0 + r2 * (-1.0 / 6_402_373_705_728_000.0)));
         // sin(r + rt) = sin r + rt cos r, cos(r + rt) = cos r - rt sin r, to
-        // far below the last bit (|rt| <= ulp(r) / 2).
+        // far below the last bit (|rt| about ulp(r) / 2 at most).
         let s = r + (r * r2 * ps + rt * (1.0 - 0.5 * r2));
         let c = 1.0 - 0.5 * r2 + (r2 * r2 * pc - rt * r);
         (T::lit(s), T::lit(c))
