@@ -310,7 +310,7 @@ fn actuator_rates_near_dead_centre() {
 /// sqrt(delta)`, a relative `eps / delta = eps / kappa^2`-order change in the
 /// determinant. Bound: `8 eps / kappa^2` with `kappa` the exact condition,
 /// equivalently `1 eps / delta` with `delta` the relative distance to the
-/// edge of assembly (measured 4.3 and 0.52, `docs/stability.md`). Exactly at
+/// edge of assembly (measured 2.9 and 0.36, `docs/stability.md`). Exactly at
 /// the edge, `Singular` with `det = 0`.
 #[test]
 fn rrr_end_to_end_rates_near_toggle() {
@@ -336,7 +336,7 @@ fn rrr_end_to_end_rates_near_toggle() {
                 / size;
             // Near the outer edge kappa^2 ~ 8 delta for these lengths, so the
             // two forms of the bound are the same statement; measured worst
-            // err kappa^2 / eps = 4.3, err delta / eps = 0.52.
+            // err kappa^2 / eps = 2.9, err delta / eps = 0.36.
             assert!(err <= 8.0 * EPS / (kd * kd), "delta {delta:e}: {err:e}");
             assert!(err <= EPS / delta, "delta {delta:e}: {err:e}");
             worst = worst.max(err * kd * kd / EPS);
