@@ -365,12 +365,13 @@ mod tests {
     /// `det` (from the square root) against `cross(r1, r2)` of the returned
     /// vectors, from well-conditioned poses to `|sin|` of the links' angle
     /// `1e-7`, near the origin and `1e3` lengths away from it, both modes.
-    /// The two agree up to the rounding of `r1` and `r2`: `r2 = (A + r1) -
-    /// B` is rounded at the coordinates' magnitude `M = max |A|, |B|, |C|`,
-    /// so each component is off by at most about `2 eps (l + M)` and the
-    /// cross product by `4 eps (l1 + M) (l2 + M)`; the bound is twice that.
-    /// A sign error, a factor (`height` instead of `height / 2`) or a
-    /// relative change of 1e-9 fails it.
+    /// Both come from the same rounded `B - A` and height; they differ by the
+    /// rounding of `r1`, of `r2 = r1 - (B - A)` (components below `l1 + l2`
+    /// in size) and of the cross product: at most about `2 eps (l1 + l2)^2`,
+    /// whatever the distance from the origin (measured 0.52 of
+    /// `eps (l1 + l2)^2`). A sign error, a factor (`height` instead of
+    /// `height / 2`), a relative change of 1e-9 or `r2` taken as `C - B`
+    /// (rounded at the coordinates' magnitude, 1e3 away) fails it.
     #[test]
     fn det_is_the_cross_product_of_the_link_vectors() {
         let mut compared = 0;
@@ -389,8 +390,7 @@ mod tests {
                             let Ok(p) = position(&a, l1, &b, l2, mode) else {
                                 continue;
                             };
-                            let m = a.coords.norm().max(b.coords.norm()).max(p.c.coords.norm());
-                            let bound = 8.0 * f64::EPSILON * (l1 + m) * (l2 + m);
+                            let bound = 2.0 * f64::EPSILON * (l1 + l2) * (l1 + l2);
                             let cr = cross(&p.r1, &p.r2);
                             assert!(
                                 (p.det - cr).abs() <= bound,
