@@ -33,6 +33,10 @@
 //! - `SlottedRocker`: an RPR (the crank's block on the rocker) and an RRP
 //!   whose guide is a slot carried by the rocker: the slot's reaction loads
 //!   the moving rocker, which also carries the block's.
+//! - `LoadedCrossSlide`: a PRP group whose first guide is the crank's own
+//!   line (carried by the crank) and whose second is fixed: both prismatic
+//!   reactions and the pin between the blocks, with a resisting force
+//!   along the fixed guide.
 //!
 //! Tolerances. Equilibrium and power: each residual is a sum of a handful of
 //! products of generated values, every value within a few eps times the

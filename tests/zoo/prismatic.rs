@@ -1,5 +1,5 @@
 //! Prismatic pairs and linear drives: `PistonDriven`, `LoadedBoom`,
-//! `LoadedYoke` (see `main.rs`). Each prismatic reaction is applied as its
+//! `LoadedYoke`, `SlottedRocker`, `LoadedCrossSlide` (see `main.rs`). Each prismatic reaction is applied as its
 //! normal force at its stated reference point plus its couple.
 
 use crate::common::*;
@@ -86,6 +86,31 @@ mechanism! {
         mass slider5 { m = 0.4, at = E };
         gravity (0.0, -9.81);
         force at E on slider5 along slot = -20.0;
+    }
+}
+
+mechanism! {
+    /// A cross-slide (m, kg, N): a PRP group joins a block on the crank's
+    /// own line (a guide carried by the crank) and a block on a fixed
+    /// vertical guide through (0.3, 0); the joint C is 0.01 off the vertical
+    /// guide's line. Masses on the crank and both blocks, gravity, a 30 N
+    /// force resisting the vertical block's upward motion.
+    pub LoadedCrossSlide {
+        dof 1;
+        let O = ground(0.0, 0.0);
+        let V = ground(0.3, 0.0);
+        let vertical = guide(V, 90 deg);
+        let A = crank(O, 0.1, phi) as crank_link;
+        let rod_line = guide(O, crank_link);
+        let C = prp(rod_line, vertical, 0.0, 0.01) as (b1, b2) slide (s1, s2);
+        let Gc = point(crank_link, from O, 0.05, 0 deg);
+        let G2 = point(b2, from C, (0.0, 0.04));
+        mass crank_link { m = 0.8, at = Gc, j = 0.002 };
+        mass b1 { m = 0.25, at = C };
+        mass b2 { m = 1.5, at = G2, j = 0.006 };
+        gravity (0.0, -9.81);
+        force at G2 on b2 along vertical = -30.0;
+        range phi = (-80 deg, 80 deg);
     }
 }
 
@@ -282,4 +307,74 @@ fn slotted_rocker_with_a_carried_guide_balances() {
         );
     }
     assert!(checked >= 36, "only {checked} of 72 poses checked");
+}
+
+#[test]
+fn cross_slide_with_a_carried_guide_balances() {
+    let m = LoadedCrossSlide::<f64>::default();
+    let (w, al) = (4.0, -3.0);
+    let up = Vector2::new(0.0, 1.0);
+    let mut checked = 0;
+    for k in 0..64 {
+        // -78.75 .. 78.75 deg, inside the definition's range.
+        let q = f64::to_radians(-78.75 + 2.5 * k as f64);
+        let at = |t: f64| LoadedCrossSlideInput {
+            phi: q + w * t + 0.5 * al * t * t,
+        };
+        let rate = |t: f64| LoadedCrossSlideInput { phi: w + al * t };
+        let s = m
+            .solve(&at(0.0), &rate(0.0), &LoadedCrossSlideInput { phi: al })
+            .unwrap();
+        let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+        if f.condition < 0.05 || v.condition < 0.05 {
+            continue;
+        }
+        checked += 1;
+        // C.y goes as tan(phi): near +-79 deg its third time derivative
+        // reaches about 1e5 m/s^3 (sec^2 phi = 26, w = 4 rad/s), so the
+        // central difference's truncation, H^2 / 6 times that, is 1.3e-6
+        // with the shared H = 1e-5, above the 1e-6 of `close_fd`; h = 1e-6
+        // makes it 1.3e-8, and the rounding, eps |C| / h, stays near 1e-10.
+        let h = 1e-6;
+        let pos = |t: f64| m.position(&at(t)).unwrap();
+        let vel = |t: f64| m.velocity(&pos(t), &rate(t)).unwrap();
+        close_fd(v.C, (pos(h).C - pos(-h).C) / (2.0 * h), 10.0, "vC");
+        close_fd(a.C, (vel(h).C - vel(-h).C) / (2.0 * h), 100.0, "aC");
+        // C stays 0.01 off the vertical guide's line x = 0.3.
+        assert!(
+            ((p.C.x - 0.3).abs() - 0.01).abs() <= 1e-15,
+            "C.x = {}",
+            p.C.x
+        );
+
+        let push = up * -30.0;
+        Body::default()
+            .force(p.O, f.r_ground_crank_link)
+            .prismatic(&f.r_crank_link_b1, p.C, -1.0)
+            .couple(f.drive_phi)
+            .inertia(0.8, 0.002, p.Gc, a.Gc, a.crank_link, G)
+            .balances("crank (carries the rod line)");
+        Body::default()
+            .prismatic(&f.r_crank_link_b1, p.C, 1.0)
+            .force(p.C, -f.r_b1_b2)
+            .inertia(0.25, 0.0, p.C, a.C, a.b1, G)
+            .balances("b1");
+        Body::default()
+            .force(p.C, f.r_b1_b2)
+            .prismatic(&f.r_ground_b2, p.C, 1.0)
+            .force(p.G2, push)
+            .inertia(1.5, 0.006, p.G2, a.G2, a.b2, G)
+            .balances("b2");
+        power_balances(
+            &[
+                f.drive_phi * w,
+                push.dot(&v.G2),
+                inertial(0.8, 0.002, v.Gc, a.Gc, v.crank_link, a.crank_link, G),
+                inertial(0.25, 0.0, v.C, a.C, v.b1, a.b1, G),
+                inertial(1.5, 0.006, v.G2, a.G2, v.b2, a.b2, G),
+            ],
+            "LoadedCrossSlide",
+        );
+    }
+    assert!(checked >= 48, "only {checked} of 64 poses checked");
 }
