@@ -1,6 +1,7 @@
 //! Prismatic pairs and linear drives: `PistonDriven`, `LoadedBoom`,
-//! `LoadedYoke`, `SlottedRocker`, `LoadedCrossSlide` (see `main.rs`). Each prismatic reaction is applied as its
-//! normal force at its stated reference point plus its couple.
+//! `LoadedYoke`, `SlottedRocker`, `LoadedCrossSlide` (see `main.rs`). Each
+//! prismatic reaction is applied as its normal force at its stated reference
+//! point plus its couple.
 
 use crate::common::*;
 use mechanism::mechanism;
