@@ -37,6 +37,10 @@
 //!   line (carried by the crank) and whose second is fixed: both prismatic
 //!   reactions and the pin between the blocks, with a resisting force
 //!   along the fixed guide.
+//! - `CarriedYoke`: an RPP whose guide is the crank's own line: a frame
+//!   slides along it with a slot at right angles, in which a block pinned
+//!   to the ground slides; the frame's reaction (force and couple) loads
+//!   the crank.
 //!
 //! Tolerances. Equilibrium and power: each residual is a sum of a handful of
 //! products of generated values, every value within a few eps times the

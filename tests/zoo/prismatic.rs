@@ -1,7 +1,7 @@
 //! Prismatic pairs and linear drives: `PistonDriven`, `LoadedBoom`,
-//! `LoadedYoke`, `SlottedRocker`, `LoadedCrossSlide` (see `main.rs`). Each
-//! prismatic reaction is applied as its normal force at its stated reference
-//! point plus its couple.
+//! `LoadedYoke`, `SlottedRocker`, `LoadedCrossSlide`, `CarriedYoke` (see
+//! `main.rs`). Each prismatic reaction is applied as its normal force at its
+//! stated reference point plus its couple.
 
 use crate::common::*;
 use mechanism::mechanism;
@@ -112,6 +112,30 @@ mechanism! {
         gravity (0.0, -9.81);
         force at G2 on b2 along vertical = -30.0;
         range phi = (-80 deg, 80 deg);
+    }
+}
+
+mechanism! {
+    /// An RPP on a carried guide (m, kg, N): a frame slides along the
+    /// crank's own line and has a slot at right angles to it, in which a
+    /// block pinned to the ground at P slides. The guide is carried by the
+    /// crank, so the frame's reaction along it loads the crank. Masses on
+    /// the crank and the frame, gravity, a force on the frame along the
+    /// crank's line.
+    pub CarriedYoke {
+        dof 1;
+        let O = ground(0.0, 0.0);
+        let P = ground(0.25, 0.05);
+        let A = crank(O, 0.1, phi) as crank_link;
+        let line = guide(A, crank_link);
+        let Q = rpp(P, line, 90 deg) as (block, frame) slide (s_slot, s_frame);
+        let Gc = point(crank_link, from O, 0.04, 0 deg);
+        let Gf = point(frame, from Q, (0.03, 0.01));
+        mass crank_link { m = 0.6, at = Gc, j = 0.001 };
+        mass block { m = 0.1, at = P };
+        mass frame { m = 1.2, at = Gf, j = 0.004 };
+        gravity (0.0, -9.81);
+        force at Gf on frame along line = -8.0;
     }
 }
 
@@ -378,4 +402,65 @@ fn cross_slide_with_a_carried_guide_balances() {
         );
     }
     assert!(checked >= 48, "only {checked} of 64 poses checked");
+}
+
+#[test]
+fn yoke_on_a_carried_guide_balances() {
+    let m = CarriedYoke::<f64>::default();
+    let (w, al) = (6.0, 1.5);
+    let mut checked = 0;
+    for k in 0..72 {
+        let q = f64::to_radians(5.0 * k as f64 + 2.5);
+        let at = |t: f64| CarriedYokeInput {
+            phi: q + w * t + 0.5 * al * t * t,
+        };
+        let rate = |t: f64| CarriedYokeInput { phi: w + al * t };
+        let s = m
+            .solve(&at(0.0), &rate(0.0), &CarriedYokeInput { phi: al })
+            .unwrap();
+        let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+        if f.condition < 0.05 || v.condition < 0.05 {
+            continue;
+        }
+        checked += 1;
+        let pos = |t: f64| m.position(&at(t)).unwrap();
+        let vel = |t: f64| m.velocity(&pos(t), &rate(t)).unwrap();
+        close_fd(v.Q, (pos(H).Q - pos(-H).Q) / (2.0 * H), 10.0, "vQ");
+        close_fd(a.Q, (vel(H).Q - vel(-H).Q) / (2.0 * H), 100.0, "aQ");
+        // Q is on the crank's line and P on the slot through Q at right
+        // angles to it: Q is the foot of the perpendicular from P.
+        let u = (p.A - p.O) / (p.A - p.O).norm();
+        assert!(cross(&u, &(p.Q - p.O)).abs() <= 1e-15, "Q off the line");
+        assert!(u.dot(&(p.P - p.Q)).abs() <= 1e-15, "P off the slot");
+
+        let push = u * -8.0;
+        Body::default()
+            .force(p.O, f.r_ground_crank_link)
+            .prismatic(&f.r_crank_link_frame, p.P, -1.0)
+            .couple(f.drive_phi)
+            .inertia(0.6, 0.001, p.Gc, a.Gc, a.crank_link, G)
+            .balances("crank (carries the frame's guide)");
+        Body::default()
+            .force(p.P, f.r_ground_block)
+            .prismatic(&f.r_block_frame, p.P, -1.0)
+            .inertia(0.1, 0.0, p.P, a.P, a.block, G)
+            .balances("block");
+        Body::default()
+            .prismatic(&f.r_block_frame, p.P, 1.0)
+            .prismatic(&f.r_crank_link_frame, p.P, 1.0)
+            .force(p.Gf, push)
+            .inertia(1.2, 0.004, p.Gf, a.Gf, a.frame, G)
+            .balances("frame");
+        power_balances(
+            &[
+                f.drive_phi * w,
+                push.dot(&v.Gf),
+                inertial(0.6, 0.001, v.Gc, a.Gc, v.crank_link, a.crank_link, G),
+                inertial(0.1, 0.0, v.P, a.P, v.block, a.block, G),
+                inertial(1.2, 0.004, v.Gf, a.Gf, v.frame, a.frame, G),
+            ],
+            "CarriedYoke",
+        );
+    }
+    assert!(checked >= 60, "only {checked} of 72 poses checked");
 }
