@@ -42,6 +42,15 @@
 //!   to the ground slides; the frame's reaction (force and couple) loads
 //!   the crank.
 //!
+//! Groups whose outer joints all move (`floating.rs`):
+//!
+//! - `FloatingCylinder`: an RPR between a four-bar's coupler and rocker (both
+//!   pins of the sleeve-and-rod pair move), and an RRP pinned to the crank
+//!   whose block runs in a slot carried by the rod. The sleeve's and the
+//!   block's centres are off their pins, so both prismatic couples are
+//!   non-zero; a pull along the rod, a force along the slot, a couple on the
+//!   rocker.
+//!
 //! Tolerances. Equilibrium and power: each residual is a sum of a handful of
 //! products of generated values, every value within a few eps times the
 //! conditioning of its linear system (the poses below keep the relative
@@ -54,5 +63,6 @@
 //! 1e-7 of the scale leaves room and catches a wrong term (order 1e-1).
 
 mod common;
+mod floating;
 mod prismatic;
 mod revolute;
