@@ -128,6 +128,27 @@ mechanism! {
     }
 }
 
+mechanism! {
+    /// A floating cylinder (m): an RPR between a four-bar's coupler point P
+    /// and rocker point E (both pins of the group move) and an RRP pinned to
+    /// the crank whose block runs in a slot carried by the rod (its pin and
+    /// its guide both move). The kinematics of `tests/zoo/floating.rs`.
+    pub Floating {
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(0.4, 0.0);
+        let A = crank(O2, 0.1, theta) as crank;
+        let B = rrr(A, 0.35, O4, 0.25, left) as (coupler, rocker);
+        let P = point(coupler, from A, 0.2, 25 deg);
+        let E = point(rocker, from O4, 0.12, -40 deg);
+        let s = rpr(P, E, plus) as (sleeve, rod);
+        let slot = guide(E, rod, 90 deg);
+        let K = point(crank, from O2, 0.06, 90 deg);
+        let F = rrp(K, 0.5, slot, plus) as (link7, slider7) slide u;
+        outputs { P, E, F, rod, link7, s, u }
+    }
+}
+
 /// `(worst error in eps of the column scale times condition^2, lane rejects
 /// of elements the scalar path solves, failed elements)`.
 type Found = (f64, usize, usize);
@@ -625,4 +646,20 @@ fn rrp_on_a_carried_guide_and_rpr_with_offset() {
             4
         );
     }
+}
+
+#[test]
+fn rpr_and_rrp_with_every_outer_joint_moving() {
+    one_input!(
+        Floating::<f64>::default(),
+        Floating::<f32>::default(),
+        Floating,
+        theta,
+        [P, E, F],
+        [rod, link7, s, u],
+        angles(2000),
+        100,
+        200,
+        4
+    );
 }

@@ -131,6 +131,16 @@ fn unit_vector(angle: &Value) -> TokenStream {
     }
 }
 
+/// The local variable of the position code that holds the user's name
+/// `name` (a point, a guide, a link angle or a slide): `pos_NAME`. A bare
+/// `let NAME = ..` would be a pattern, not a binding, wherever a constant,
+/// static or unit struct of that name is in scope (`const G: f64 = 9.81;`
+/// beside a point `G`), and would not compile. The velocity and acceleration
+/// code already use `vel_NAME` and `acc_NAME`.
+fn local(name: &Ident) -> Ident {
+    format_ident!("pos_{}", name)
+}
+
 /// `.map_err(|e| e.in_group(NAME))?`: tags a core error with the statement's name.
 pub(crate) fn tag(stmt: &Stmt) -> TokenStream {
     let name = stmt.name.to_string();
@@ -152,14 +162,18 @@ impl Emitter<'_> {
         format_ident!("grp_{}", stmt.name)
     }
 
-    /// Unit axis and raw direction of link `index` of `stmt`, in position scope.
+    /// Unit axis and raw direction of link `index` of `stmt`, in position
+    /// scope (guides by their locals, [`local`]).
     fn link_direction(&self, stmt: &Stmt, index: usize) -> (TokenStream, TokenStream) {
         let g = self.grp(stmt);
         match (&stmt.kind, index) {
             (Kind::Crank { .. }, _) | (Kind::Rpr { .. }, _) => (quote!(#g.axis), quote!(#g.axis)),
             (Kind::Slider { guide, .. }, _)
             | (Kind::Rrp { guide, .. }, 1)
-            | (Kind::Rpp { guide, .. }, 1) => (quote!(#guide.dir), quote!(#guide.dir)),
+            | (Kind::Rpp { guide, .. }, 1) => {
+                let guide = local(guide);
+                (quote!(#guide.dir), quote!(#guide.dir))
+            }
             (Kind::Actuator { l, .. }, 0)
             | (Kind::Rrp { l, .. }, 0)
             | (Kind::Rrr { l1: l, .. }, 0) => {
@@ -171,8 +185,10 @@ impl Emitter<'_> {
                 (quote!(#g.r2 / #l2), quote!(#g.r2))
             }
             (Kind::Actuator { input, .. }, _) => (quote!(#g.r2 / input.#input), quote!(#g.r2)),
-            (Kind::Prp { g1, .. }, 0) => (quote!(#g1.dir), quote!(#g1.dir)),
-            (Kind::Prp { g2, .. }, _) => (quote!(#g2.dir), quote!(#g2.dir)),
+            (Kind::Prp { g1: guide, .. }, 0) | (Kind::Prp { g2: guide, .. }, _) => {
+                let guide = local(guide);
+                (quote!(#guide.dir), quote!(#guide.dir))
+            }
             (Kind::Rpp { .. }, _) => (quote!(#g.slot), quote!(#g.slot)),
             _ => (
                 quote!(::mechanism::Vector2::x()),
@@ -182,16 +198,18 @@ impl Emitter<'_> {
     }
 
     /// Position statements for one statement; returns (code, fields) where
-    /// fields are the locals to keep in the position struct.
-    fn position(&self, stmt: &Stmt) -> (TokenStream, Vec<Ident>) {
-        let name = &stmt.name;
+    /// fields are the values the position struct may keep, as (field name,
+    /// local variable).
+    fn position(&self, stmt: &Stmt) -> (TokenStream, Vec<(Ident, Ident)>) {
+        let name = &local(&stmt.name);
+        let own = (stmt.name.clone(), name.clone());
         let g = self.grp(stmt);
         let t = tag(stmt);
         let mut fields = vec![];
         let code = match &stmt.kind {
             Kind::Ground { x, y } => {
                 let (x, y) = (x.emit(), y.emit());
-                fields.push(name.clone());
+                fields.push(own);
                 quote!(let #name = ::mechanism::Point2::new(#x, #y);)
             }
             Kind::Guide {
@@ -200,7 +218,10 @@ impl Emitter<'_> {
                 carrier,
             } => {
                 let origin = match origin {
-                    Origin::Point(p) => quote!(#p),
+                    Origin::Point(p) => {
+                        let p = local(p);
+                        quote!(#p)
+                    }
                     Origin::Coords(x, y) => {
                         let (x, y) = (x.emit(), y.emit());
                         quote!(::mechanism::Point2::new(#x, #y))
@@ -218,7 +239,7 @@ impl Emitter<'_> {
                         }
                     }
                 };
-                fields.push(name.clone());
+                fields.push(own);
                 quote!(let #name = ::mechanism::guide::Line { origin: #origin, dir: #dir };)
             }
             Kind::Crank {
@@ -227,16 +248,16 @@ impl Emitter<'_> {
                 input,
                 cos_sin,
             } => {
-                let r = radius.emit();
-                fields.extend([g.clone(), name.clone()]);
+                let (r, pivot_l) = (radius.emit(), local(pivot));
+                fields.extend([(g.clone(), g.clone()), own]);
                 if *cos_sin && self.cos_sin {
                     quote! {
-                        let #g = ::mechanism::driver::crank::position_cos_sin(&#pivot, #r, input_cs.#input.cos, input_cs.#input.sin) #t;
+                        let #g = ::mechanism::driver::crank::position_cos_sin(&#pivot_l, #r, input_cs.#input.cos, input_cs.#input.sin) #t;
                         let #name = #g.tip;
                     }
                 } else {
                     quote! {
-                        let #g = ::mechanism::driver::crank::position(&#pivot, #r, input.#input) #t;
+                        let #g = ::mechanism::driver::crank::position(&#pivot_l, #r, input.#input) #t;
                         let #name = #g.tip;
                     }
                 }
@@ -246,10 +267,10 @@ impl Emitter<'_> {
                 input,
                 offset,
             } => {
-                let o = offset.emit();
-                fields.extend([g.clone(), name.clone()]);
+                let (o, guide_l) = (offset.emit(), local(guide));
+                fields.extend([(g.clone(), g.clone()), own]);
                 quote! {
-                    let #g = ::mechanism::driver::slider::position(&#guide, #o, input.#input) #t;
+                    let #g = ::mechanism::driver::slider::position(&#guide_l, #o, input.#input) #t;
                     let #name = #g.p;
                 }
             }
@@ -261,17 +282,19 @@ impl Emitter<'_> {
                 mode,
             } => {
                 let (l, m) = (l.emit(), mode_tokens(*mode));
-                fields.extend([g.clone(), name.clone()]);
+                let (a_l, b_l) = (local(a), local(b));
+                fields.extend([(g.clone(), g.clone()), own]);
                 quote! {
-                    let #g = ::mechanism::driver::actuator::position(&#a, #l, &#b, input.#input, #m) #t;
+                    let #g = ::mechanism::driver::actuator::position(&#a_l, #l, &#b_l, input.#input, #m) #t;
                     let #name = #g.c;
                 }
             }
             Kind::Rrr { a, l1, b, l2, mode } => {
                 let (l1, l2, m) = (l1.emit(), l2.emit(), mode_tokens(*mode));
-                fields.extend([g.clone(), name.clone()]);
+                let (a_l, b_l) = (local(a), local(b));
+                fields.extend([(g.clone(), g.clone()), own]);
                 quote! {
-                    let #g = ::mechanism::dyad::rrr::position(&#a, #l1, &#b, #l2, #m) #t;
+                    let #g = ::mechanism::dyad::rrr::position(&#a_l, #l1, &#b_l, #l2, #m) #t;
                     let #name = #g.c;
                 }
             }
@@ -283,17 +306,19 @@ impl Emitter<'_> {
                 offset,
             } => {
                 let (l, m, o) = (l.emit(), mode_tokens(*mode), offset.emit());
-                fields.extend([g.clone(), name.clone()]);
+                let (a_l, guide_l) = (local(a), local(guide));
+                fields.extend([(g.clone(), g.clone()), own]);
                 quote! {
-                    let #g = ::mechanism::dyad::rrp::position(&#a, #l, &#guide, #o, #m) #t;
+                    let #g = ::mechanism::dyad::rrp::position(&#a_l, #l, &#guide_l, #o, #m) #t;
                     let #name = #g.c;
                 }
             }
             Kind::Rpr { a, b, mode, offset } => {
                 let (m, o) = (mode_tokens(*mode), offset.emit());
-                fields.push(g.clone());
+                let (a_l, b_l) = (local(a), local(b));
+                fields.push((g.clone(), g.clone()));
                 quote! {
-                    let #g = ::mechanism::dyad::rpr::position(&#a, &#b, #o, #m) #t;
+                    let #g = ::mechanism::dyad::rpr::position(&#a_l, &#b_l, #o, #m) #t;
                 }
             }
             Kind::Prp {
@@ -303,9 +328,10 @@ impl Emitter<'_> {
                 offset2,
             } => {
                 let (o1, o2) = (offset1.emit(), offset2.emit());
-                fields.extend([g.clone(), name.clone()]);
+                let (g1_l, g2_l) = (local(g1), local(g2));
+                fields.extend([(g.clone(), g.clone()), own]);
                 quote! {
-                    let #g = ::mechanism::dyad::prp::position(&#g1, #o1, &#g2, #o2) #t;
+                    let #g = ::mechanism::dyad::prp::position(&#g1_l, #o1, &#g2_l, #o2) #t;
                     let #name = #g.c;
                 }
             }
@@ -316,15 +342,21 @@ impl Emitter<'_> {
                 offset,
             } => {
                 let (u, o) = (unit_vector(slot), offset.emit());
-                fields.extend([g.clone(), name.clone()]);
+                let (a_l, guide_l) = (local(a), local(guide));
+                fields.extend([(g.clone(), g.clone()), own]);
                 quote! {
-                    let #g = ::mechanism::dyad::rpp::position(&#a, &#guide, #o, &#u) #t;
+                    let #g = ::mechanism::dyad::rpp::position(&#a_l, &#guide_l, #o, &#u) #t;
                     let #name = #g.q;
                 }
             }
-            Kind::Point { link, from, local } => {
+            Kind::Point {
+                link,
+                from,
+                local: offset,
+            } => {
                 let axis = format_ident!("axis_{}", link);
-                let local = match local {
+                let from_l = local(from);
+                let offset = match offset {
                     Local::Cartesian(x, y) => {
                         let (x, y) = (x.emit(), y.emit());
                         quote!(::mechanism::Vector2::new(#x, #y))
@@ -341,9 +373,9 @@ impl Emitter<'_> {
                         }
                     },
                 };
-                fields.push(name.clone());
+                fields.push(own);
                 quote! {
-                    let #name = ::mechanism::link::point_position(&#from, &#axis, &#local) #t;
+                    let #name = ::mechanism::link::point_position(&#from_l, &#axis, &#offset) #t;
                 }
             }
         };
@@ -354,7 +386,7 @@ impl Emitter<'_> {
                 let axis = format_ident!("axis_{}", link);
                 let (unit, _) = self.link_direction(stmt, j);
                 axes.extend(quote!(let #axis = #unit;));
-                fields.push(axis);
+                fields.push((axis.clone(), axis));
             }
         }
         (quote!(#code #axes), fields)
@@ -460,7 +492,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
 
     // ---------------- position ----------------
     let mut pos_code = TokenStream::new();
-    let mut pos_fields: Vec<Ident> = Vec::new();
+    let mut pos_fields: Vec<(Ident, Ident)> = Vec::new();
     for &i in &plan.order {
         let (code, fields) = em.position(&model.stmts[i]);
         pos_code.extend(code);
@@ -484,7 +516,8 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
                 }
                 _ => quote!(::mechanism::geometry::angle(&#dir)),
             };
-            code.extend(quote!(let #link = #value;));
+            let l = local(link);
+            code.extend(quote!(let #l = #value;));
         }
         for (slide, i, slot) in &out.slides {
             let g = em.grp(&model.stmts[*i]);
@@ -493,7 +526,8 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
                 (Kind::Prp { .. }, _) | (Kind::Rpp { .. }, _) => quote!(s2),
                 _ => quote!(s),
             };
-            code.extend(quote!(let #slide = #g.#field;));
+            let l = local(slide);
+            code.extend(quote!(let #l = #g.#field;));
         }
         code
     };
@@ -529,10 +563,11 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     let later: String = later.split_whitespace().collect();
     let read_later = |scope: &str, field: &Ident| reads_field(&later, scope, &field.to_string());
     let out_names: BTreeSet<String> = pos_out_fields.iter().map(|(n, _)| n.to_string()).collect();
-    let hidden_pos: Vec<&Ident> = pos_fields
+    let (hidden_pos, hidden_pos_locals): (Vec<&Ident>, Vec<&Ident>) = pos_fields
         .iter()
-        .filter(|f| !out_names.contains(&f.to_string()) && read_later("pos", f))
-        .collect();
+        .filter(|(f, _)| !out_names.contains(&f.to_string()) && read_later("pos", f))
+        .map(|(f, l)| (f, l))
+        .unzip();
     // The inputs, kept when a later analysis reads them (a slider's position).
     let keep_input = read_later("pos", &format_ident!("input"));
     let (input_field, input_init) = if keep_input {
@@ -608,9 +643,26 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             #input_field
         }
     });
+    // Field names and the position code's locals that hold them.
     let pos_all: Vec<&Ident> = pos_out_names
         .iter()
         .chain(hidden_pos.iter().copied())
+        .collect();
+    let pos_out_locals: Vec<Ident> = pos_out_names.iter().map(local).collect();
+    let pos_init: Vec<TokenStream> = pos_all
+        .iter()
+        .zip(
+            pos_out_locals
+                .iter()
+                .chain(hidden_pos_locals.iter().copied()),
+        )
+        .map(|(field, value)| {
+            if field == &value {
+                quote!(#field)
+            } else {
+                quote!(#field: #value)
+            }
+        })
         .collect();
     methods.extend(quote! {
         /// Solves the position analysis for the driver inputs (rad or length units).
@@ -622,7 +674,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             let input = *input;
             #pos_code
             #pos_out_code
-            ::core::result::Result::Ok(#position_ty { #(#pos_all,)* #input_init })
+            ::core::result::Result::Ok(#position_ty { #(#pos_init,)* #input_init })
         }
     });
     let marked: Vec<&Ident> = model
@@ -696,7 +748,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
                 #cs_input
                 #cs_code
                 #cs_out
-                ::core::result::Result::Ok(#position_ty { #(#pos_all,)* #input_init })
+                ::core::result::Result::Ok(#position_ty { #(#pos_init,)* #input_init })
             }
         });
     }
@@ -759,9 +811,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error<T>> {
                 let rates = *rates;
                 #code
-                #(let #on = #oc;)*
-                let condition = #condition;
-                ::core::result::Result::Ok(#velocity_ty { #(#on,)* #(#hn,)* condition, rates })
+                ::core::result::Result::Ok(#velocity_ty { #(#on: #oc,)* #(#hn,)* condition: #condition, rates })
             }
         });
     }
@@ -829,8 +879,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
                 let accels = *accels;
                 let rates = vel.rates;
                 #code
-                #(let #on = #oc;)*
-                ::core::result::Result::Ok(#acceleration_ty { #(#on,)* #(#hn,)* })
+                ::core::result::Result::Ok(#acceleration_ty { #(#on: #oc,)* #(#hn,)* })
             }
 
             /// Every analysis the definition asks for, at once.

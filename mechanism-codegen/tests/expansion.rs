@@ -55,7 +55,7 @@ fn velocity_angles() {
     assert!(!code.contains("fn acceleration"));
     assert!(code.contains("geometry::angle"), "link angles are outputs");
     assert!(
-        !code.contains("let P ="),
+        !code.contains("let pos_P ="),
         "P is not an output and nothing needs it: left out"
     );
     insta::assert_snapshot!(code);
@@ -92,7 +92,7 @@ fn forces_coupler_mass() {
         "the rocker carries no mass: no inertia load is built for it"
     );
     assert!(
-        code.contains("let P ="),
+        code.contains("let pos_P ="),
         "the centre of mass is computed although not an output"
     );
     assert!(
