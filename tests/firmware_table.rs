@@ -1,5 +1,6 @@
 //! Writes and checks `tests/firmware/src/expected.rs`, the host's f64 values of
-//! the four-bar and shaper sweeps that the firmware (`tests/firmware`, run
+//! the four-bar and shaper sweeps and of the shaper's force analysis that the
+//! firmware (`tests/firmware`, run
 //! under QEMU) compares its f32 and f64 results with.
 //!
 //! The committed table must equal what the host computes now, digit for digit
@@ -44,6 +45,8 @@ fn generate() -> String {
     s.push_str(&table("FOURBAR", rows::fourbar_row::<f64>));
     s.push('\n');
     s.push_str(&table("SHAPER", rows::shaper_row::<f64>));
+    s.push('\n');
+    s.push_str(&table("SHAPER_FORCES", rows::shaper_forces_row::<f64>));
     s
 }
 
@@ -80,7 +83,7 @@ fn committed_table_matches_the_host() {
     let committed = std::fs::read_to_string(PATH).unwrap_or_default();
     let (a, b) = (numbers(&committed), numbers(&now));
     assert_eq!(a.len(), b.len(), "{PATH} is stale (shape): regenerate with MECHANISM_BLESS=1 cargo test --test firmware_table");
-    for table in 0..2 {
+    for table in 0..3 {
         let rows = table * rows::STEPS * 9..(table + 1) * rows::STEPS * 9;
         let (a, b) = (&a[rows.clone()], &b[rows]);
         for col in 0..9 {

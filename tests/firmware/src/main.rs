@@ -1,5 +1,6 @@
-//! The four-bar and shaper sweeps of `rows.rs`, in `f32` and `f64`, on a
-//! Cortex-M under QEMU, against the host's `f64` values in `expected.rs`.
+//! The four-bar and shaper sweeps of `rows.rs` and the shaper's force analysis
+//! (crank torque, joint reactions), in `f32` and `f64`, on a Cortex-M under
+//! QEMU, against the host's `f64` values in `expected.rs`.
 //! Prints the worst difference per sweep and exits non-zero on a mismatch (a
 //! panic exits non-zero too).
 //!
@@ -41,6 +42,15 @@ const TOL64: f64 = 32.0 * f64::EPSILON;
 /// 5e-6 leaves a factor of 2 over the worst seen on the host. The f32 sine and
 /// cosine are `mechanism::trig::sin_cos_f32` (2 ulp).
 const TOL32: f64 = 5e-6;
+
+/// f32 force analysis against the host's f64, relative to each column's
+/// largest value: the kinematics' error (above) goes through the groups'
+/// force systems, whose pivots stay above about 0.1 over the shaper's turn;
+/// the report (`docs/report.md`, ShaperForces) measures the generated f32
+/// forces at up to 2.4e-6 of a column's largest value against the
+/// double-double reference over 3600 poses. 1e-5 is 4 times that; a wrong
+/// term moves a reaction by a mass times an acceleration, orders more.
+const TOL32_FORCES: f64 = 1e-5;
 
 /// Worst difference of one sweep, relative to its column's scale, and where.
 struct Worst {
@@ -219,6 +229,24 @@ fn main() -> ! {
         &rows::SHAPER_COLUMNS,
         rows::shaper_row::<f32>,
         TOL32,
+        "f32",
+    );
+    ok &= check(
+        "forces ",
+        &expected::SHAPER_FORCES,
+        &rows::SHAPER_FORCES_ANGLES,
+        &rows::SHAPER_FORCES_COLUMNS,
+        rows::shaper_forces_row::<f64>,
+        TOL64,
+        "f64",
+    );
+    ok &= check(
+        "forces ",
+        &expected::SHAPER_FORCES,
+        &rows::SHAPER_FORCES_ANGLES,
+        &rows::SHAPER_FORCES_COLUMNS,
+        rows::shaper_forces_row::<f32>,
+        TOL32_FORCES,
         "f32",
     );
     hprintln!(

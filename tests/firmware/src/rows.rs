@@ -6,7 +6,9 @@
 //! Expects the example scenes as `crate::scenes` (`examples/common/scenes.rs`).
 #![allow(dead_code)]
 
-use crate::scenes::{FourBar, FourBarInput, Shaper, ShaperInput};
+use crate::scenes::{
+    FourBar, FourBarInput, Shaper, ShaperForces, ShaperForcesInput, ShaperForcesLoads, ShaperInput,
+};
 use mechanism::{Error, Real};
 
 /// Number of crank angles in each sweep: 0, 5, ..., 355 deg.
@@ -89,5 +91,54 @@ pub fn shaper_row<T: Real>(crank: f64) -> Result<[f64; 9], Error> {
         v.E.x.as_f64(),
         acc.link3.as_f64(),
         acc.E.x.as_f64(),
+    ])
+}
+
+/// Shaper with masses (seed 001, m, kg, N) columns: the crank torque and the
+/// joint reactions (N, N m).
+pub const SHAPER_FORCES_COLUMNS: [&str; 9] = [
+    "crank",
+    "drive_crank",
+    "r_ground_link2.x",
+    "r_ground_link2.y",
+    "r_ground_link3.x",
+    "r_ground_link3.y",
+    "r_link3_link4.x",
+    "r_block_link3.normal",
+    "r_ground_ram_block.normal",
+];
+/// Which force columns are angles (compared modulo 2 pi).
+pub const SHAPER_FORCES_ANGLES: [bool; 9] =
+    [true, false, false, false, false, false, false, false, false];
+/// Crank speed (rad/s, the example's 60 rpm), angular acceleration (rad/s^2:
+/// non-zero, so the crank's own term is in the torque) and the cutting load
+/// (N, along the ram guide) of the force sweep.
+pub const SHAPER_FORCES_MOTION: (f64, f64, f64) = (2.0 * core::f64::consts::PI, 3.0, 2000.0);
+
+/// One row of the shaper's force analysis at crank angle `crank` (rad).
+pub fn shaper_forces_row<T: Real>(crank: f64) -> Result<[f64; 9], Error> {
+    let m = ShaperForces::<T>::default();
+    let (w, a, cut) = SHAPER_FORCES_MOTION;
+    let s = m
+        .solve(
+            &ShaperForcesInput {
+                crank: T::lit(crank),
+            },
+            &ShaperForcesInput { crank: T::lit(w) },
+            &ShaperForcesInput { crank: T::lit(a) },
+            &ShaperForcesLoads { cut: T::lit(cut) },
+        )
+        .map_err(Error::to_f64)?;
+    let f = &s.forces;
+    Ok([
+        crank,
+        f.drive_crank.as_f64(),
+        f.r_ground_link2.x.as_f64(),
+        f.r_ground_link2.y.as_f64(),
+        f.r_ground_link3.x.as_f64(),
+        f.r_ground_link3.y.as_f64(),
+        f.r_link3_link4.x.as_f64(),
+        f.r_block_link3.normal.as_f64(),
+        f.r_ground_ram_block.normal.as_f64(),
     ])
 }
