@@ -553,6 +553,29 @@ pub fn emit(
     } else {
         quote!()
     };
+    // The finite difference of velocities exists only where velocities do
+    // (`analysis position;` generates no `velocity`).
+    let fd_vel = if velocity {
+        quote! {
+            /// Central difference of velocities along `q + W t + A t^2 / 2`.
+            fn fd_vel(m: &#name<f64>, q: [f64; #d], scale: f64) -> Option<[f64; #k]> {
+                let at = |t: f64| -> Option<[f64; #k]> {
+                    let mut x = q;
+                    let mut w = W;
+                    for i in 0..#d { x[i] += W[i] * t + 0.5 * A[i] * t * t; w[i] += A[i] * t; }
+                    let p = m.position(&input(x)).ok()?;
+                    m.velocity(&p, &input(w)).ok().map(|v| rate_row(&v))
+                };
+                let h = scale * H_MIN;
+                let (a, b) = (at(h)?, at(-h)?);
+                let mut d = [0.0; #k];
+                for j in 0..#k { d[j] = (a[j] - b[j]) / (2.0 * h); }
+                Some(d)
+            }
+        }
+    } else {
+        quote!()
+    };
     let mut rate_impls = TokenStream::new();
     for (level, ty) in [
         (Level::Velocity, "Velocity"),
@@ -669,22 +692,7 @@ pub fn emit(
                 }
                 Some(d)
             }
-            /// Central difference of velocities along `q + W t + A t^2 / 2`.
-            fn fd_vel(m: &#name<f64>, q: [f64; #d], scale: f64) -> Option<[f64; #k]> {
-                let at = |t: f64| -> Option<[f64; #k]> {
-                    let mut x = q;
-                    let mut w = W;
-                    for i in 0..#d { x[i] += W[i] * t + 0.5 * A[i] * t * t; w[i] += A[i] * t; }
-                    let p = m.position(&input(x)).ok()?;
-                    m.velocity(&p, &input(w)).ok().map(|v| rate_row(&v))
-                };
-                let h = scale * H_MIN;
-                let (a, b) = (at(h)?, at(-h)?);
-                let mut d = [0.0; #k];
-                for j in 0..#k { d[j] = (a[j] - b[j]) / (2.0 * h); }
-                Some(d)
-            }
-
+            #fd_vel
             /// `check()` with the default parameters: every group assembles
             /// over the range, and the singular positions are those the macro
             /// found at expansion time (same sweep; to 1e-6 of the range: at a
@@ -774,3 +782,4 @@ fn snake(s: &str) -> String {
     }
     out
 }
+
