@@ -46,6 +46,19 @@ pub fn requirements(_model: &Model, inputs: &[Input], span: Span) -> Option<syn:
             "`#[self_test]` sweeps one or two inputs; this mechanism has more",
         ));
     }
+    // Two inputs are swept (and `check()` generated) over a declared box
+    // only: a crank's default full turn does not count (`check::emit_check`).
+    if inputs.len() == 2 {
+        if let Some(i) = inputs.iter().find(|i| !i.declared) {
+            return Some(syn::Error::new(
+                span,
+                format!(
+                    "`#[self_test]` sweeps the box of a two-input mechanism's declared ranges, and `{0}` has none (a crank's default full turn is used only when it is the only input): declare it, e.g. `range {0} = (0 deg, 360 deg);`",
+                    i.name
+                ),
+            ));
+        }
+    }
     None
 }
 
@@ -783,3 +796,27 @@ fn snake(s: &str) -> String {
     out
 }
 
+#[cfg(test)]
+mod tests {
+    /// A two-input mechanism whose crank keeps its default full turn has no
+    /// `check()` (two inputs are swept over a declared box only), so
+    /// `#[self_test]` must say so instead of generating a call to it.
+    #[test]
+    fn two_inputs_need_both_ranges() {
+        let out = crate::expand(quote::quote! {
+            #[self_test]
+            pub SliderOnCarried {
+                let O = ground(0.0, 0.0);
+                let A = crank(O, 0.1, theta) as link2;
+                let g = guide(O, link2, 20 deg);
+                let P = slider(g, s, 0.01) as block;
+                range s = (0.0, 0.2);
+            }
+        })
+        .to_string();
+        assert!(
+            out.contains("compile_error") && out.contains("and `theta` has none"),
+            "{out}"
+        );
+    }
+}
