@@ -76,6 +76,34 @@ pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -
             }
         }
     }
+    // A point `P` gives the slices `pos_P_x` and `pos_P_y`, a link angle or
+    // slide `s` the slice `pos_s`: a scalar output named `P_x` or `P_y`
+    // beside a point output `P` would declare a field twice (rustc's errors
+    // then point into the macro). Say which names meet instead.
+    let mut errors = TokenStream::new();
+    for (o, ty) in outputs {
+        if ty.to_string().contains("Point2") {
+            continue;
+        }
+        let s = o.to_string();
+        let point = outputs.iter().find(|(p, t)| {
+            t.to_string().contains("Point2") && [format!("{p}_x"), format!("{p}_y")].contains(&s)
+        });
+        if let Some((p, _)) = point {
+            errors.extend(
+                syn::Error::new(
+                    o.span(),
+                    format!(
+                        "`{s}` and the coordinates of point `{p}` get the same field `pos_{s}` in the batch API (`{name}Batch`: a point's slices are `pos_{p}_x` and `pos_{p}_y`): rename `{s}`, e.g. `{s}_s`"
+                    ),
+                )
+                .to_compile_error(),
+            );
+        }
+    }
+    if !errors.is_empty() {
+        return errors;
+    }
     let all_in: Vec<&Ident> = in_names.iter().flatten().collect();
     let out_names: Vec<&Ident> = out_fields.iter().map(|f| &f.0).collect();
     let doc = format!(
@@ -1056,4 +1084,29 @@ fn lane(
         self.__lane_batch(#(b.#ins,)* #(&mut *b.#params_out,)* &mut *b.status);
     };
     Some((method, call))
+}
+
+#[cfg(test)]
+mod name_tests {
+    /// A slide named `B_x` beside a point `B`: both would be the batch
+    /// field `pos_B_x`. One clear error on the slide's name, not rustc's
+    /// duplicate-field errors inside the macro.
+    #[test]
+    fn scalar_named_like_a_point_coordinate() {
+        let out = crate::expand(quote::quote! {
+            pub SlideNamedLikeCoord {
+                let O = ground(0.0, 0.0);
+                let line = guide(O, 0 deg);
+                let A = crank(O, 0.1, theta) as link2;
+                let B = rrp(A, 0.4, line, plus) as (link3, slider) slide B_x;
+            }
+        })
+        .to_string();
+        assert!(out.contains("compile_error"), "{out}");
+        assert!(
+            out.contains("`B_x` and the coordinates of point `B`"),
+            "{out}"
+        );
+        assert_eq!(out.matches("compile_error").count(), 1, "{out}");
+    }
 }

@@ -584,6 +584,21 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
         .collect();
     let (pos_out_names, pos_out_types): (Vec<Ident>, Vec<TokenStream>) =
         pos_out_fields.iter().cloned().unzip();
+    // A struct none of whose fields has the type `T` (`outputs { }`, or only
+    // what no later code reads) needs a marker, or rustc rejects the unused
+    // parameter.
+    let marker = |empty: bool| {
+        if empty {
+            (
+                quote!(#[doc(hidden)] pub _scalar: ::core::marker::PhantomData<T>,),
+                quote!(_scalar: ::core::marker::PhantomData,),
+            )
+        } else {
+            (TokenStream::new(), TokenStream::new())
+        }
+    };
+    let (pos_marker, pos_marker_init) =
+        marker(pos_out_names.is_empty() && hidden_pos.is_empty() && !keep_input);
 
     let pos_docs = output_docs(&out, 0);
     let vel_docs = output_docs(&out, 1);
@@ -641,6 +656,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             #(#[doc = #pos_docs] pub #pos_out_names: #pos_out_types,)*
             #(#[doc(hidden)] pub #hidden_pos: #hidden_pos_types,)*
             #input_field
+            #pos_marker
         }
     });
     // Field names and the position code's locals that hold them.
@@ -674,7 +690,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             let input = *input;
             #pos_code
             #pos_out_code
-            ::core::result::Result::Ok(#position_ty { #(#pos_init,)* #input_init })
+            ::core::result::Result::Ok(#position_ty { #(#pos_init,)* #input_init #pos_marker_init })
         }
     });
     let marked: Vec<&Ident> = model
@@ -748,7 +764,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
                 #cs_input
                 #cs_code
                 #cs_out
-                ::core::result::Result::Ok(#position_ty { #(#pos_init,)* #input_init })
+                ::core::result::Result::Ok(#position_ty { #(#pos_init,)* #input_init #pos_marker_init })
             }
         });
     }
@@ -859,6 +875,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
         let acc_doc = format!("Acceleration of [`{name}`]: point accelerations in length units per s^2, link angular accelerations in rad/s^2, slide accelerations in length units per s^2.");
         let (on, ot, oc): (Vec<Ident>, Vec<TokenStream>, Vec<TokenStream>) = unzip3(outs);
         let (hn, ht): (Vec<Ident>, Vec<TokenStream>) = fields.into_iter().unzip();
+        let (acc_marker, acc_marker_init) = marker(on.is_empty() && hn.is_empty());
         items.extend(quote! {
             #[doc = #acc_doc]
             #[derive(Clone, Copy, Debug, PartialEq)]
@@ -866,6 +883,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             #vis struct #acceleration_ty<T: ::mechanism::Real = ::core::primitive::f64> {
                 #(#[doc = #acc_docs] pub #on: #ot,)*
                 #(#[doc(hidden)] pub #hn: #ht,)*
+                #acc_marker
             }
 
             #solution_item
@@ -879,7 +897,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
                 let accels = *accels;
                 let rates = vel.rates;
                 #code
-                ::core::result::Result::Ok(#acceleration_ty { #(#on: #oc,)* #(#hn,)* })
+                ::core::result::Result::Ok(#acceleration_ty { #(#on: #oc,)* #(#hn,)* #acc_marker_init })
             }
 
             /// Every analysis the definition asks for, at once.

@@ -46,6 +46,19 @@ pub fn requirements(_model: &Model, inputs: &[Input], span: Span) -> Option<syn:
             "`#[self_test]` sweeps one or two inputs; this mechanism has more",
         ));
     }
+    // Two inputs are swept (and `check()` generated) over a declared box
+    // only: a crank's default full turn does not count (`check::emit_check`).
+    if inputs.len() == 2 {
+        if let Some(i) = inputs.iter().find(|i| !i.declared) {
+            return Some(syn::Error::new(
+                span,
+                format!(
+                    "`#[self_test]` sweeps the box of a two-input mechanism's declared ranges, and `{0}` has none (a crank's default full turn is used only when it is the only input): declare it, e.g. `range {0} = (0 deg, 360 deg);`",
+                    i.name
+                ),
+            ));
+        }
+    }
     None
 }
 
@@ -553,6 +566,29 @@ pub fn emit(
     } else {
         quote!()
     };
+    // The finite difference of velocities exists only where velocities do
+    // (`analysis position;` generates no `velocity`).
+    let fd_vel = if velocity {
+        quote! {
+            /// Central difference of velocities along `q + W t + A t^2 / 2`.
+            fn fd_vel(m: &#name<f64>, q: [f64; #d], scale: f64) -> Option<[f64; #k]> {
+                let at = |t: f64| -> Option<[f64; #k]> {
+                    let mut x = q;
+                    let mut w = W;
+                    for i in 0..#d { x[i] += W[i] * t + 0.5 * A[i] * t * t; w[i] += A[i] * t; }
+                    let p = m.position(&input(x)).ok()?;
+                    m.velocity(&p, &input(w)).ok().map(|v| rate_row(&v))
+                };
+                let h = scale * H_MIN;
+                let (a, b) = (at(h)?, at(-h)?);
+                let mut d = [0.0; #k];
+                for j in 0..#k { d[j] = (a[j] - b[j]) / (2.0 * h); }
+                Some(d)
+            }
+        }
+    } else {
+        quote!()
+    };
     let mut rate_impls = TokenStream::new();
     for (level, ty) in [
         (Level::Velocity, "Velocity"),
@@ -669,22 +705,7 @@ pub fn emit(
                 }
                 Some(d)
             }
-            /// Central difference of velocities along `q + W t + A t^2 / 2`.
-            fn fd_vel(m: &#name<f64>, q: [f64; #d], scale: f64) -> Option<[f64; #k]> {
-                let at = |t: f64| -> Option<[f64; #k]> {
-                    let mut x = q;
-                    let mut w = W;
-                    for i in 0..#d { x[i] += W[i] * t + 0.5 * A[i] * t * t; w[i] += A[i] * t; }
-                    let p = m.position(&input(x)).ok()?;
-                    m.velocity(&p, &input(w)).ok().map(|v| rate_row(&v))
-                };
-                let h = scale * H_MIN;
-                let (a, b) = (at(h)?, at(-h)?);
-                let mut d = [0.0; #k];
-                for j in 0..#k { d[j] = (a[j] - b[j]) / (2.0 * h); }
-                Some(d)
-            }
-
+            #fd_vel
             /// `check()` with the default parameters: every group assembles
             /// over the range, and the singular positions are those the macro
             /// found at expansion time (same sweep; to 1e-6 of the range: at a
@@ -773,4 +794,29 @@ fn snake(s: &str) -> String {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    /// A two-input mechanism whose crank keeps its default full turn has no
+    /// `check()` (two inputs are swept over a declared box only), so
+    /// `#[self_test]` must say so instead of generating a call to it.
+    #[test]
+    fn two_inputs_need_both_ranges() {
+        let out = crate::expand(quote::quote! {
+            #[self_test]
+            pub SliderOnCarried {
+                let O = ground(0.0, 0.0);
+                let A = crank(O, 0.1, theta) as link2;
+                let g = guide(O, link2, 20 deg);
+                let P = slider(g, s, 0.01) as block;
+                range s = (0.0, 0.2);
+            }
+        })
+        .to_string();
+        assert!(
+            out.contains("compile_error") && out.contains("and `theta` has none"),
+            "{out}"
+        );
+    }
 }
