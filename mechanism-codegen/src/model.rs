@@ -605,7 +605,8 @@ impl<'a> Args<'a> {
     }
 }
 
-fn usage(kind: &str) -> &'static str {
+/// How a statement kind is written (for messages); "" for an unknown kind.
+pub fn usage(kind: &str) -> &'static str {
     match kind {
         "ground" => "ground(x, y)",
         "guide" => "guide(POINT or (x, y), angle) or guide(POINT, LINK[, angle])",
@@ -823,6 +824,23 @@ fn input_position(kind: &str) -> Option<usize> {
     }
 }
 
+/// Reports the second `word` statement of a definition (`outputs`, `dof`,
+/// `analysis`, `gravity`: each says one thing, so a second one would silently
+/// replace the first).
+fn once(seen: &mut BTreeMap<&'static str, Span>, word: &'static str, span: Span, errors: &mut Errors) {
+    if seen.insert(word, span).is_some() {
+        let hint = match word {
+            "outputs" => "list every output in the first `outputs { .. }` and remove this one",
+            "gravity" => "keep one `gravity (gx, gy);`",
+            _ => "remove one of them",
+        };
+        errors.push(
+            span,
+            format!("`{word}` may appear once in a definition, and this is the second; {hint}"),
+        );
+    }
+}
+
 /// Lowers a parsed definition. Returns the model (possibly partial) and errors.
 pub fn lower(def: Definition) -> (Model, Errors) {
     let mut errors = Errors::default();
@@ -920,9 +938,12 @@ pub fn lower(def: Definition) -> (Model, Errors) {
         self_test: def.self_test,
         ..Default::default()
     };
+    // Statements that may appear once, by keyword.
+    let mut seen = BTreeMap::new();
     for item in def.items {
         match item {
-            Item::Analysis(what) => {
+            Item::Analysis(span, what) => {
+                once(&mut seen, "analysis", span, &mut errors);
                 level_span = Some(what.span());
                 level_written = true;
                 level = match what.to_string().as_str() {
@@ -943,8 +964,14 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     }
                 };
             }
-            Item::Outputs(list) => outputs = Some(list),
-            Item::Dof(n) => dof = Some(n),
+            Item::Outputs(span, list) => {
+                once(&mut seen, "outputs", span, &mut errors);
+                outputs = Some(list);
+            }
+            Item::Dof(span, n) => {
+                once(&mut seen, "dof", span, &mut errors);
+                dof = Some(n);
+            }
             Item::Let(l) => {
                 let Some(kind) = lower_kind(&l, &scope, &mut errors) else {
                     // Keep the names the statement meant to define, so that the
@@ -1021,6 +1048,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             }
             Item::Gravity(span, x, y) => {
                 kinetics.declared = true;
+                once(&mut seen, "gravity", span, &mut errors);
                 match (convert(&x, &scope), convert(&y, &scope)) {
                     (Ok(x), Ok(y)) => kinetics.gravity = Some((span, x, y)),
                     (Err(e), _) | (_, Err(e)) => errors.0.push(e),
@@ -1099,8 +1127,18 @@ fn lower_mass(m: &parse::Mass, scope: &NumberScope<'_>, errors: &mut Errors) -> 
     let mut at = None;
     let mut inertia = None;
     let mut ok = true;
+    let mut given: Vec<String> = Vec::new();
     for (name, arg) in &m.fields {
         let field = name.to_string();
+        if FIELDS.contains(&field.as_str()) && given.contains(&field) {
+            ok = false;
+            errors.push(
+                name.span(),
+                format!("`{field}` is given twice in this `mass`; keep one"),
+            );
+            continue;
+        }
+        given.push(field.clone());
         match (field.as_str(), arg) {
             ("at", Arg::Value(Expr::Path(p), None)) if p.path.get_ident().is_some() => {
                 at = p.path.get_ident().cloned();
