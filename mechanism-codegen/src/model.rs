@@ -3,7 +3,7 @@
 //! positivity here; names are resolved across statements in `validate`.
 
 use crate::parse::{self, Arg, Definition, Item};
-use crate::value::{convert, Scope, Value};
+use crate::value::{Scope, Value, ValueKind};
 use proc_macro2::Span;
 use std::collections::BTreeMap;
 use syn::spanned::Spanned;
@@ -394,6 +394,48 @@ impl Scope for NumberScope<'_> {
                 did_you_mean(&s, all.iter().map(String::as_str))
             ),
         )
+    }
+}
+
+/// Converts a user expression ([`crate::value::convert`]) and rejects a value
+/// that is not a finite number: a literal too large for `f64`, a division by
+/// an expression that folds to zero, or a folded result that overflows. Such a
+/// value would put infinities or NaN into the expansion-time check and the
+/// generated literals, so it is an error on the user's tokens.
+fn convert(expr: &Expr, scope: &dyn Scope) -> Result<Value, syn::Error> {
+    let v = crate::value::convert(expr, scope)?;
+    finite(&v)?;
+    if let Some(x) = v.fold() {
+        if !x.is_finite() {
+            return Err(syn::Error::new_spanned(
+                &v.tokens,
+                format!("this evaluates to {x}, not a finite number; dimensions must be finite"),
+            ));
+        }
+    }
+    Ok(v)
+}
+
+/// The first non-finite literal or division by zero inside `v`.
+fn finite(v: &Value) -> Result<(), syn::Error> {
+    match &v.kind {
+        ValueKind::Lit(x) if !x.is_finite() => Err(syn::Error::new_spanned(
+            &v.tokens,
+            format!("`{}` is not a finite number (too large for an f64, it rounds to {x}); dimensions must be finite", v.tokens),
+        )),
+        ValueKind::Neg(a) => finite(a),
+        ValueKind::Bin(a, op, b) => {
+            finite(a)?;
+            finite(b)?;
+            if *op == '/' && b.fold() == Some(0.0) {
+                return Err(syn::Error::new_spanned(
+                    &v.tokens,
+                    format!("division by zero: `{}` is 0, so this is not a finite number; dimensions must be finite", b.tokens),
+                ));
+            }
+            Ok(())
+        }
+        _ => Ok(()),
     }
 }
 
@@ -879,13 +921,17 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                         errors.push(span, "a `const` must be a number known at compile time: a literal, or arithmetic on literals and earlier constants");
                         0.0
                     }
-                    Err(e) => {
+                    Err(e) if e.to_string().starts_with("cannot find") => {
                         errors.0.push(syn::Error::new(
                             e.span(),
                             format!(
                                 "{e} (a `const` may use literals and constants defined before it)"
                             ),
                         ));
+                        0.0
+                    }
+                    Err(e) => {
+                        errors.0.push(e);
                         0.0
                     }
                 };
@@ -902,8 +948,12 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                             errors.push(span, "a parameter's default must be a literal number (or arithmetic on literals and constants)");
                             0.0
                         }
-                        Err(e) => {
+                        Err(e) if e.to_string().starts_with("cannot find") => {
                             errors.0.push(syn::Error::new(e.span(), format!("{e} (a parameter's default may use literals and constants only)")));
+                            0.0
+                        }
+                        Err(e) => {
+                            errors.0.push(e);
                             0.0
                         }
                     };
