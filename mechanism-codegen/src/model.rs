@@ -351,7 +351,7 @@ pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str
 struct NumberScope<'a> {
     consts: &'a BTreeMap<String, (Ident, f64)>,
     params: &'a [(Ident, f64)],
-    names: &'a [String],
+    names: &'a [(String, &'static str)],
     /// Per-evaluation load values, and whether this place may use them.
     loads: &'a [(Ident, f64)],
     allow_loads: bool,
@@ -375,10 +375,15 @@ impl Scope for NumberScope<'_> {
                 format!("`{s}` is a load value (from `loads`): it may appear in `force` and `torque` statements only; dimensions are `params` or `const`"),
             );
         }
-        if self.names.contains(&s) {
+        if let Some((_, what)) = self.names.iter().find(|(n, _)| *n == s) {
+            let why = match *what {
+                "a driver input" => " (its value is given at run time, in the input struct)",
+                "a slide displacement" => " (the mechanism finds it)",
+                _ => "",
+            };
             return syn::Error::new(
                 name.span(),
-                format!("`{s}` is a point, link or guide, not a number; dimensions are numbers, `params` or `const` names"),
+                format!("`{s}` is {what}{why}, not a dimension; dimensions are numbers, `params` or `const` names"),
             );
         }
         let all = self
@@ -845,7 +850,7 @@ fn lower_kind(stmt: &parse::Let, scope: &NumberScope<'_>, errors: &mut Errors) -
 
 fn literal_scope_for<'a>(
     consts: &'a BTreeMap<String, (Ident, f64)>,
-    names: &'a [String],
+    names: &'a [(String, &'static str)],
 ) -> NumberScope<'a> {
     NumberScope {
         consts,
@@ -895,11 +900,31 @@ pub fn lower(def: Definition) -> (Model, Errors) {
     let mut loads: Vec<(Ident, f64)> = Vec::new();
     let mut level_written = false;
     // Names of every let, link and slide, for "not a number" messages.
-    let mut names = Vec::new();
+    let mut names: Vec<(String, &'static str)> = Vec::new();
     for item in &def.items {
         if let Item::Let(l) = item {
-            names.push(l.name.to_string());
-            names.extend(l.links.iter().map(Ident::to_string));
+            let kind = l.kind.to_string();
+            let what = match kind.as_str() {
+                "guide" => "a guide",
+                "rpr" => "a slide displacement",
+                _ => "a point",
+            };
+            names.push((l.name.to_string(), what));
+            names.extend(l.links.iter().map(|n| (n.to_string(), "a link")));
+            names.extend(l.slides.iter().map(|n| (n.to_string(), "a slide displacement")));
+            let input = input_position(&kind)
+                .and_then(|i| l.args.get(i))
+                .and_then(|a| match a {
+                    Arg::Value(Expr::Path(p), None) => p.path.get_ident(),
+                    Arg::Value(Expr::Cast(c), None) => match &*c.expr {
+                        Expr::Path(p) => p.path.get_ident(),
+                        _ => None,
+                    },
+                    _ => None,
+                });
+            if let Some(input) = input {
+                names.push((input.to_string(), "a driver input"));
+            }
         }
     }
     // Constants and parameter defaults first (they may appear anywhere). A
