@@ -834,6 +834,17 @@ fn lower_kind(stmt: &parse::Let, scope: &NumberScope<'_>, errors: &mut Errors) -
                         .ok()?;
                     Local::Cartesian(x, y)
                 }
+                Some(Arg::Value(Expr::Tuple(t), _)) => {
+                    a.fail(
+                        t.span(),
+                        format!(
+                            "a point's local coordinates are `(x, y)`, two numbers, not {}; usage: `{}`",
+                            t.elems.len(),
+                            a.usage
+                        ),
+                    );
+                    return None;
+                }
                 _ => Local::Polar(a.number("distance", false)?, a.number("angle", true)?),
             };
             Kind::Point { link, from, local }
