@@ -58,9 +58,11 @@ pub const RESERVED: &[&str] = &[
     "T",
 ];
 
-/// Every defined name with its category and defining token.
+/// Every defined name with its category and defining token. A name defined
+/// twice (an error of its own, from [`unique_names`]) keeps its first
+/// meaning, so its uses raise no second error.
 pub fn symbols(model: &Model) -> BTreeMap<String, (Category, Ident)> {
-    let mut table = BTreeMap::new();
+    let mut table = Table(BTreeMap::new());
     for (name, _) in &model.params {
         table.insert(name.to_string(), (Category::Param, name.clone()));
     }
@@ -101,7 +103,16 @@ pub fn symbols(model: &Model) -> BTreeMap<String, (Category, Ident)> {
             table.insert(input.to_string(), (Category::Input, input.clone()));
         }
     }
-    table
+    table.0
+}
+
+/// A symbol table where the first definition of a name stays.
+struct Table(BTreeMap<String, (Category, Ident)>);
+
+impl Table {
+    fn insert(&mut self, name: String, entry: (Category, Ident)) {
+        self.0.entry(name).or_insert(entry);
+    }
 }
 
 /// Rule: a name is defined once (points, links, slides, inputs, parameters and
