@@ -173,8 +173,10 @@ pub fn reserved_names(model: &Model, errors: &mut Errors) {
 }
 
 /// Rule: every reference names something defined, of the right category, and
-/// not the statement itself.
+/// not the statement itself (and, [`distinct_joints`], a group's two known
+/// joints are two places).
 pub fn references_resolve(model: &Model, errors: &mut Errors) {
+    distinct_joints(model, errors);
     let table = symbols(model);
     for stmt in &model.stmts {
         let expected: Vec<(&Ident, Category)> = match &stmt.kind {
@@ -240,6 +242,47 @@ pub fn references_resolve(model: &Model, errors: &mut Errors) {
                         format!("{what} `{name}`{}", did_you_mean(&name, candidates)),
                     );
                 }
+            }
+        }
+    }
+}
+
+/// The literal coordinates of a ground point, when it is one.
+fn literal_ground(model: &Model, name: &Ident) -> Option<(f64, f64)> {
+    model.stmts.iter().find_map(|s| match &s.kind {
+        Kind::Ground { x, y } if s.name == *name => Some((x.fold()?, y.fold()?)),
+        _ => None,
+    })
+}
+
+/// Rule: the two known joints of a group (or the two guides of a PRP) are two
+/// different points (guides), and not two ground points at the same place.
+pub fn distinct_joints(model: &Model, errors: &mut Errors) {
+    for stmt in &model.stmts {
+        let (a, b, what) = match &stmt.kind {
+            Kind::Rrr { a, b, .. } => (a, b, "known joints"),
+            Kind::Rpr { a, b, .. } => (a, b, "points (the block's pin and the link's pivot)"),
+            Kind::Actuator { a, b, .. } => (a, b, "points (the link's pivot and the cylinder's base)"),
+            Kind::Prp { g1, g2, .. } => (g1, g2, "guides"),
+            _ => continue,
+        };
+        let kind = &stmt.kind_token;
+        if a == b {
+            errors.push(
+                b.span(),
+                format!("`{b}` is given twice: the two {what} of this `{kind}` must be different"),
+            );
+            continue;
+        }
+        if let (Some(pa), Some(pb)) = (literal_ground(model, a), literal_ground(model, b)) {
+            if pa == pb {
+                errors.push(
+                    b.span(),
+                    format!(
+                        "`{a}` and `{b}` are both the ground point ({}, {}): the two {what} of this `{kind}` must be at different places; move one",
+                        pa.0, pa.1
+                    ),
+                );
             }
         }
     }
