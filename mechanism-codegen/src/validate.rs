@@ -361,8 +361,17 @@ pub fn outputs_exist(model: &Model, errors: &mut Errors) {
         return;
     };
     let table = symbols(model);
+    let mut listed: Vec<String> = Vec::new();
     for o in outputs {
         let name = o.to_string();
+        if listed.contains(&name) {
+            errors.push(
+                o.span(),
+                format!("`{name}` is listed twice in `outputs`; remove this one"),
+            );
+            continue;
+        }
+        listed.push(name.clone());
         match table.get(&name) {
             Some((Category::Point | Category::Link | Category::Slide, _)) => {}
             Some((cat, _)) => errors.push(
@@ -472,6 +481,13 @@ fn loadable_link(
     let name = link.to_string();
     if !plan.links.contains_key(&name) {
         let hint = did_you_mean(&name, plan.links.keys().map(String::as_str));
+        if name == "ground" || name == "frame" {
+            errors.push(
+                link.span(),
+                format!("`{name}` is the frame, which is fixed: {what} on it moves nothing; put it on a moving link (the names after `as`){hint}"),
+            );
+            return false;
+        }
         let kind = if plan.defined.contains_key(&name) || plan.guides.contains_key(&name) {
             format!("`{name}` is not a link")
         } else {
@@ -520,10 +536,10 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
             continue;
         }
         let link = m.link.to_string();
-        if let Some(first) = with_mass.get(&link) {
+        if with_mass.contains_key(&link) {
             errors.push(
                 m.link.span(),
-                format!("`{link}` already has a mass (line of `{first}`); give each link one `mass` statement"),
+                format!("`{link}` already has a mass (its first `mass` statement comes earlier); give each link one `mass` statement: merge the two"),
             );
             continue;
         }
@@ -597,9 +613,13 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
         if let ForceSpecValue::Along(guide, _) = &f.value {
             let g = guide.to_string();
             if !plan.guides.contains_key(&g) {
+                let what = match symbols(model).get(&g) {
+                    Some((cat, _)) => format!("`{g}` is {}, not a guide", cat.article()),
+                    None => format!("cannot find guide `{g}`"),
+                };
                 errors.push(
                     guide.span(),
-                    format!("cannot find guide `{g}`; `along` takes a guide, whose direction the force follows{}", did_you_mean(&g, plan.guides.keys().map(String::as_str))),
+                    format!("{what}; `along` takes a guide, whose direction the force follows{}", did_you_mean(&g, plan.guides.keys().map(String::as_str))),
                 );
             }
         }
