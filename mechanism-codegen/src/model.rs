@@ -409,16 +409,20 @@ impl Scope for NumberScope<'_> {
 /// generated literals, so it is an error on the user's tokens.
 fn convert(expr: &Expr, scope: &dyn Scope) -> Result<Value, syn::Error> {
     let v = crate::value::convert(expr, scope)?;
-    finite(&v)?;
-    if let Some(x) = v.fold() {
-        if !x.is_finite() {
-            return Err(syn::Error::new_spanned(
-                &v.tokens,
-                format!("this evaluates to {x}, not a finite number; dimensions must be finite"),
-            ));
-        }
-    }
+    check_finite(&v)?;
     Ok(v)
+}
+
+/// An error when `v` is, or contains, a value that is not a finite number.
+fn check_finite(v: &Value) -> Result<(), syn::Error> {
+    finite(v)?;
+    match v.fold() {
+        Some(x) if !x.is_finite() => Err(syn::Error::new_spanned(
+            &v.tokens,
+            format!("this evaluates to {x}, not a finite number; dimensions must be finite"),
+        )),
+        _ => Ok(()),
+    }
 }
 
 /// The first non-finite literal or division by zero inside `v`.
@@ -885,7 +889,12 @@ fn input_position(kind: &str) -> Option<usize> {
 /// Reports the second `word` statement of a definition (`outputs`, `dof`,
 /// `analysis`, `gravity`: each says one thing, so a second one would silently
 /// replace the first).
-fn once(seen: &mut BTreeMap<&'static str, Span>, word: &'static str, span: Span, errors: &mut Errors) {
+fn once(
+    seen: &mut BTreeMap<&'static str, Span>,
+    word: &'static str,
+    span: Span,
+    errors: &mut Errors,
+) {
     if seen.insert(word, span).is_some() {
         let hint = match word {
             "outputs" => "list every output in the first `outputs { .. }` and remove this one",
@@ -922,7 +931,11 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             };
             names.push((l.name.to_string(), what));
             names.extend(l.links.iter().map(|n| (n.to_string(), "a link")));
-            names.extend(l.slides.iter().map(|n| (n.to_string(), "a slide displacement")));
+            names.extend(
+                l.slides
+                    .iter()
+                    .map(|n| (n.to_string(), "a slide displacement")),
+            );
             let input = input_position(&kind)
                 .and_then(|i| l.args.get(i))
                 .and_then(|a| match a {
@@ -1052,6 +1065,9 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             }
             Item::Outputs(span, list) => {
                 once(&mut seen, "outputs", span, &mut errors);
+                if list.is_empty() {
+                    errors.push(span, "`outputs { }` lists nothing, so the analysis would return nothing; name the points, links and slides to return, or remove the line (the default is every named thing)");
+                }
                 outputs = Some(list);
             }
             Item::Dof(span, n) => {
@@ -1078,7 +1094,16 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     continue;
                 };
                 let want_links = kind.link_count();
-                if l.links.len() > want_links {
+                if want_links == 0 && !l.links.is_empty() {
+                    errors.push(
+                        l.links[0].span(),
+                        format!(
+                            "`{}` creates no link, so there is nothing to name after `as`; remove `as {}`",
+                            l.kind,
+                            l.links.iter().map(Ident::to_string).collect::<Vec<_>>().join(", ")
+                        ),
+                    );
+                } else if l.links.len() > want_links {
                     errors.push(
                         l.links[want_links.min(l.links.len() - 1)].span(),
                         format!(
@@ -1175,7 +1200,20 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     Err(e) => errors.0.push(e),
                 }
             }
-            Item::Range(r) => checks.ranges.push(r),
+            Item::Range(r) => {
+                // The checks read the bounds; a bound that is no finite number
+                // is reported here, the rest (units, names) there.
+                let infinite = [&r.lo, &r.hi].into_iter().find_map(|bound| match bound {
+                    Arg::Value(e, _) => crate::value::convert(e, &scope)
+                        .ok()
+                        .and_then(|v| check_finite(&v).err()),
+                    Arg::From(_) => None,
+                });
+                match infinite {
+                    Some(e) => errors.0.push(e),
+                    None => checks.ranges.push(r),
+                }
+            }
             Item::Allow(span, what, groups) => checks.allow.push((span, what, groups)),
             Item::Loads(_) => {}
             Item::Params(_) | Item::Const(_) => {}

@@ -145,8 +145,8 @@ pub enum ForceValue {
 
 /// The words that begin a statement (besides `let` and `const`).
 const STATEMENTS: &[&str] = &[
-    "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque",
-    "range", "allow",
+    "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "range",
+    "allow",
 ];
 
 fn kw(input: ParseStream, word: &str) -> bool {
@@ -196,9 +196,7 @@ fn pair(input: ParseStream, usage: &str) -> syn::Result<(Expr, Expr)> {
     let content;
     parenthesized!(content in input);
     let x: Expr = content.parse()?;
-    content
-        .parse::<Token![,]>()
-        .map_err(|e| two(e.span()))?;
+    content.parse::<Token![,]>().map_err(|e| two(e.span()))?;
     let y: Expr = content.parse()?;
     if !content.is_empty() {
         return Err(two(content.span()));
@@ -236,7 +234,10 @@ impl Parse for Item {
             let kind: Ident = input.parse().map_err(|e| {
                 syn::Error::new(
                     e.span(),
-                    format!("expected the statement kind after `let {name} =`: one of {}", crate::model::KINDS.join(", ")),
+                    format!(
+                        "expected the statement kind after `let {name} =`: one of {}",
+                        crate::model::KINDS.join(", ")
+                    ),
                 )
             })?;
             if !input.peek(syn::token::Paren) {
@@ -268,7 +269,14 @@ impl Parse for Item {
             input.parse::<Token![;]>().map_err(|e| {
                 syn::Error::new(
                     e.span(),
-                    format!("expected `;` to end the statement `let {name} = {kind}(..)`{}", if links.is_empty() { " (or `as LINK` to name its link)" } else { "" }),
+                    format!(
+                        "expected `;` to end the statement `let {name} = {kind}(..)`{}",
+                        if links.is_empty() {
+                            " (or `as LINK` to name its link)"
+                        } else {
+                            ""
+                        }
+                    ),
                 )
             })?;
             return Ok(Item::Let(Let {
@@ -444,10 +452,22 @@ impl Parse for Definition {
             .iter()
             .find(|a| a.path().is_ident("self_test"))
             .map(syn::spanned::Spanned::span);
+        if let Some(second) = docs
+            .iter()
+            .filter(|a| a.path().is_ident("self_test"))
+            .nth(1)
+        {
+            return Err(syn::Error::new_spanned(
+                second,
+                "`#[self_test]` may appear once; remove this one",
+            ));
+        }
         docs.retain(|a| !a.path().is_ident("self_test"));
         if let Some(other) = docs.iter().find(|a| !a.path().is_ident("doc")) {
             let path = other.path();
-            let word = quote::ToTokens::to_token_stream(path).to_string().replace(' ', "");
+            let word = quote::ToTokens::to_token_stream(path)
+                .to_string()
+                .replace(' ', "");
             return Err(syn::Error::new_spanned(
                 other,
                 format!(

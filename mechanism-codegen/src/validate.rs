@@ -262,7 +262,9 @@ pub fn distinct_joints(model: &Model, errors: &mut Errors) {
         let (a, b, what) = match &stmt.kind {
             Kind::Rrr { a, b, .. } => (a, b, "known joints"),
             Kind::Rpr { a, b, .. } => (a, b, "points (the block's pin and the link's pivot)"),
-            Kind::Actuator { a, b, .. } => (a, b, "points (the link's pivot and the cylinder's base)"),
+            Kind::Actuator { a, b, .. } => {
+                (a, b, "points (the link's pivot and the cylinder's base)")
+            }
             Kind::Prp { g1, g2, .. } => (g1, g2, "guides"),
             _ => continue,
         };
@@ -619,7 +621,10 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
                 };
                 errors.push(
                     guide.span(),
-                    format!("{what}; `along` takes a guide, whose direction the force follows{}", did_you_mean(&g, plan.guides.keys().map(String::as_str))),
+                    format!(
+                        "{what}; `along` takes a guide, whose direction the force follows{}",
+                        did_you_mean(&g, plan.guides.keys().map(String::as_str))
+                    ),
                 );
             }
         }
