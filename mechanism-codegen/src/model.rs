@@ -888,14 +888,15 @@ fn input_position(kind: &str) -> Option<usize> {
 
 /// Reports the second `word` statement of a definition (`outputs`, `dof`,
 /// `analysis`, `gravity`: each says one thing, so a second one would silently
-/// replace the first).
+/// replace the first). Returns `true` for the first, which is the one kept (so
+/// the second's content raises no further errors).
 fn once(
     seen: &mut BTreeMap<&'static str, Span>,
     word: &'static str,
     span: Span,
     errors: &mut Errors,
-) {
-    if seen.insert(word, span).is_some() {
+) -> bool {
+    if seen.contains_key(word) {
         let hint = match word {
             "outputs" => "list every output in the first `outputs { .. }` and remove this one",
             "gravity" => "keep one `gravity (gx, gy);`",
@@ -905,7 +906,10 @@ fn once(
             span,
             format!("`{word}` may appear once in a definition, and this is the second; {hint}"),
         );
+        return false;
     }
+    seen.insert(word, span);
+    true
 }
 
 /// Lowers a parsed definition. Returns the model (possibly partial) and errors.
@@ -1042,7 +1046,9 @@ pub fn lower(def: Definition) -> (Model, Errors) {
     for item in def.items {
         match item {
             Item::Analysis(span, what) => {
-                once(&mut seen, "analysis", span, &mut errors);
+                if !once(&mut seen, "analysis", span, &mut errors) {
+                    continue;
+                }
                 level_span = Some(what.span());
                 level_written = true;
                 level = match what.to_string().as_str() {
@@ -1064,14 +1070,18 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                 };
             }
             Item::Outputs(span, list) => {
-                once(&mut seen, "outputs", span, &mut errors);
+                if !once(&mut seen, "outputs", span, &mut errors) {
+                    continue;
+                }
                 if list.is_empty() {
                     errors.push(span, "`outputs { }` lists nothing, so the analysis would return nothing; name the points, links and slides to return, or remove the line (the default is every named thing)");
                 }
                 outputs = Some(list);
             }
             Item::Dof(span, n) => {
-                once(&mut seen, "dof", span, &mut errors);
+                if !once(&mut seen, "dof", span, &mut errors) {
+                    continue;
+                }
                 dof = Some(n);
             }
             Item::Let(l) => {
@@ -1159,7 +1169,9 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             }
             Item::Gravity(span, x, y) => {
                 kinetics.declared = true;
-                once(&mut seen, "gravity", span, &mut errors);
+                if !once(&mut seen, "gravity", span, &mut errors) {
+                    continue;
+                }
                 match (convert(&x, &scope), convert(&y, &scope)) {
                     (Ok(x), Ok(y)) => kinetics.gravity = Some((span, x, y)),
                     (Err(e), _) | (_, Err(e)) => errors.0.push(e),

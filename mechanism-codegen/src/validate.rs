@@ -206,6 +206,15 @@ pub fn references_resolve(model: &Model, errors: &mut Errors) {
         for (r, want) in expected {
             let name = r.to_string();
             let own_link = stmt.links.iter().any(|l| *l == name);
+            // A link of this statement named like another statement's point
+            // or link is a duplicate name (reported by `unique_names`), and
+            // the reference means the other one: no second error.
+            let defined_elsewhere = model.stmts.iter().any(|s| {
+                !std::ptr::eq(s, stmt) && (s.name == name || s.links.iter().any(|l| *l == name))
+            });
+            if own_link && stmt.name != name && defined_elsewhere {
+                continue;
+            }
             if stmt.name == name || own_link {
                 errors.push(
                     r.span(),

@@ -401,6 +401,18 @@ fn cases() -> Vec<Case> {
             says: &["dof", "once"],
         },
         Case {
+            name: "two dof statements, the second wrong",
+            src: four_bar("    dof 1;\n    dof 2;"),
+            at: "^dof 2",
+            says: &["dof", "once"],
+        },
+        Case {
+            name: "a group's own link named like its known joint",
+            src: four_bar("    let D = rrr(A, 50.0, O4, 90.0, left) as (A, link6);"),
+            at: "as (^A, link6)",
+            says: &["`A`", "twice"],
+        },
+        Case {
             name: "gravity twice",
             src: loaded("    gravity (0.0, -9.81);\n    gravity (0.0, -9.80);"),
             at: "^gravity (0.0, -9.80)",
