@@ -110,6 +110,9 @@ pub struct Let {
 }
 
 /// A call argument.
+// `syn::Expr` is larger with proc-macro2's `span-locations` (the codegen tests
+// enable it to check error positions); these live only while the macro runs.
+#[allow(clippy::large_enum_variant)]
 pub enum Arg {
     /// `from X`: the point a link point is measured from.
     From(Ident),
@@ -136,6 +139,9 @@ pub struct Force {
 }
 
 /// The value of a `force` statement.
+// `syn::Expr` is larger with proc-macro2's `span-locations` (the codegen tests
+// enable it to check error positions); these live only while the macro runs.
+#[allow(clippy::large_enum_variant)]
 pub enum ForceValue {
     /// Components in the global frame.
     Components(Expr, Expr),
