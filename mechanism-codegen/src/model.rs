@@ -3,7 +3,7 @@
 //! positivity here; names are resolved across statements in `validate`.
 
 use crate::parse::{self, Arg, Definition, Item};
-use crate::value::{convert, Scope, Value};
+use crate::value::{Scope, Value, ValueKind};
 use proc_macro2::Span;
 use std::collections::BTreeMap;
 use syn::spanned::Spanned;
@@ -351,7 +351,7 @@ pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str
 struct NumberScope<'a> {
     consts: &'a BTreeMap<String, (Ident, f64)>,
     params: &'a [(Ident, f64)],
-    names: &'a [String],
+    names: &'a [(String, &'static str)],
     /// Per-evaluation load values, and whether this place may use them.
     loads: &'a [(Ident, f64)],
     allow_loads: bool,
@@ -375,10 +375,15 @@ impl Scope for NumberScope<'_> {
                 format!("`{s}` is a load value (from `loads`): it may appear in `force` and `torque` statements only; dimensions are `params` or `const`"),
             );
         }
-        if self.names.contains(&s) {
+        if let Some((_, what)) = self.names.iter().find(|(n, _)| *n == s) {
+            let why = match *what {
+                "a driver input" => " (its value is given at run time, in the input struct)",
+                "a slide displacement" => " (the mechanism finds it)",
+                _ => "",
+            };
             return syn::Error::new(
                 name.span(),
-                format!("`{s}` is a point, link or guide, not a number; dimensions are numbers, `params` or `const` names"),
+                format!("`{s}` is {what}{why}, not a dimension; dimensions are numbers, `params` or `const` names"),
             );
         }
         let all = self
@@ -394,6 +399,52 @@ impl Scope for NumberScope<'_> {
                 did_you_mean(&s, all.iter().map(String::as_str))
             ),
         )
+    }
+}
+
+/// Converts a user expression ([`crate::value::convert`]) and rejects a value
+/// that is not a finite number: a literal too large for `f64`, a division by
+/// an expression that folds to zero, or a folded result that overflows. Such a
+/// value would put infinities or NaN into the expansion-time check and the
+/// generated literals, so it is an error on the user's tokens.
+fn convert(expr: &Expr, scope: &dyn Scope) -> Result<Value, syn::Error> {
+    let v = crate::value::convert(expr, scope)?;
+    check_finite(&v)?;
+    Ok(v)
+}
+
+/// An error when `v` is, or contains, a value that is not a finite number.
+fn check_finite(v: &Value) -> Result<(), syn::Error> {
+    finite(v)?;
+    match v.fold() {
+        Some(x) if !x.is_finite() => Err(syn::Error::new_spanned(
+            &v.tokens,
+            format!("this evaluates to {x}, not a finite number; dimensions must be finite"),
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// The first non-finite literal or division by zero inside `v`.
+fn finite(v: &Value) -> Result<(), syn::Error> {
+    match &v.kind {
+        ValueKind::Lit(x) if !x.is_finite() => Err(syn::Error::new_spanned(
+            &v.tokens,
+            format!("`{}` is not a finite number (too large for an f64, it rounds to {x}); dimensions must be finite", v.tokens),
+        )),
+        ValueKind::Neg(a) => finite(a),
+        ValueKind::Bin(a, op, b) => {
+            finite(a)?;
+            finite(b)?;
+            if *op == '/' && b.fold() == Some(0.0) {
+                return Err(syn::Error::new_spanned(
+                    &v.tokens,
+                    format!("division by zero: `{}` is 0, so this is not a finite number; dimensions must be finite", b.tokens),
+                ));
+            }
+            Ok(())
+        }
+        _ => Ok(()),
     }
 }
 
@@ -605,7 +656,8 @@ impl<'a> Args<'a> {
     }
 }
 
-fn usage(kind: &str) -> &'static str {
+/// How a statement kind is written (for messages); "" for an unknown kind.
+pub fn usage(kind: &str) -> &'static str {
     match kind {
         "ground" => "ground(x, y)",
         "guide" => "guide(POINT or (x, y), angle) or guide(POINT, LINK[, angle])",
@@ -786,6 +838,17 @@ fn lower_kind(stmt: &parse::Let, scope: &NumberScope<'_>, errors: &mut Errors) -
                         .ok()?;
                     Local::Cartesian(x, y)
                 }
+                Some(Arg::Value(Expr::Tuple(t), _)) => {
+                    a.fail(
+                        t.span(),
+                        format!(
+                            "a point's local coordinates are `(x, y)`, two numbers, not {}; usage: `{}`",
+                            t.elems.len(),
+                            a.usage
+                        ),
+                    );
+                    return None;
+                }
                 _ => Local::Polar(a.number("distance", false)?, a.number("angle", true)?),
             };
             Kind::Point { link, from, local }
@@ -802,7 +865,7 @@ fn lower_kind(stmt: &parse::Let, scope: &NumberScope<'_>, errors: &mut Errors) -
 
 fn literal_scope_for<'a>(
     consts: &'a BTreeMap<String, (Ident, f64)>,
-    names: &'a [String],
+    names: &'a [(String, &'static str)],
 ) -> NumberScope<'a> {
     NumberScope {
         consts,
@@ -823,6 +886,32 @@ fn input_position(kind: &str) -> Option<usize> {
     }
 }
 
+/// Reports the second `word` statement of a definition (`outputs`, `dof`,
+/// `analysis`, `gravity`: each says one thing, so a second one would silently
+/// replace the first). Returns `true` for the first, which is the one kept (so
+/// the second's content raises no further errors).
+fn once(
+    seen: &mut BTreeMap<&'static str, Span>,
+    word: &'static str,
+    span: Span,
+    errors: &mut Errors,
+) -> bool {
+    if seen.contains_key(word) {
+        let hint = match word {
+            "outputs" => "list every output in the first `outputs { .. }` and remove this one",
+            "gravity" => "keep one `gravity (gx, gy);`",
+            _ => "remove one of them",
+        };
+        errors.push(
+            span,
+            format!("`{word}` may appear once in a definition, and this is the second; {hint}"),
+        );
+        return false;
+    }
+    seen.insert(word, span);
+    true
+}
+
 /// Lowers a parsed definition. Returns the model (possibly partial) and errors.
 pub fn lower(def: Definition) -> (Model, Errors) {
     let mut errors = Errors::default();
@@ -835,11 +924,35 @@ pub fn lower(def: Definition) -> (Model, Errors) {
     let mut loads: Vec<(Ident, f64)> = Vec::new();
     let mut level_written = false;
     // Names of every let, link and slide, for "not a number" messages.
-    let mut names = Vec::new();
+    let mut names: Vec<(String, &'static str)> = Vec::new();
     for item in &def.items {
         if let Item::Let(l) = item {
-            names.push(l.name.to_string());
-            names.extend(l.links.iter().map(Ident::to_string));
+            let kind = l.kind.to_string();
+            let what = match kind.as_str() {
+                "guide" => "a guide",
+                "rpr" => "a slide displacement",
+                _ => "a point",
+            };
+            names.push((l.name.to_string(), what));
+            names.extend(l.links.iter().map(|n| (n.to_string(), "a link")));
+            names.extend(
+                l.slides
+                    .iter()
+                    .map(|n| (n.to_string(), "a slide displacement")),
+            );
+            let input = input_position(&kind)
+                .and_then(|i| l.args.get(i))
+                .and_then(|a| match a {
+                    Arg::Value(Expr::Path(p), None) => p.path.get_ident(),
+                    Arg::Value(Expr::Cast(c), None) => match &*c.expr {
+                        Expr::Path(p) => p.path.get_ident(),
+                        _ => None,
+                    },
+                    _ => None,
+                });
+            if let Some(input) = input {
+                names.push((input.to_string(), "a driver input"));
+            }
         }
     }
     // Constants and parameter defaults first (they may appear anywhere). A
@@ -861,13 +974,17 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                         errors.push(span, "a `const` must be a number known at compile time: a literal, or arithmetic on literals and earlier constants");
                         0.0
                     }
-                    Err(e) => {
+                    Err(e) if e.to_string().starts_with("cannot find") => {
                         errors.0.push(syn::Error::new(
                             e.span(),
                             format!(
                                 "{e} (a `const` may use literals and constants defined before it)"
                             ),
                         ));
+                        0.0
+                    }
+                    Err(e) => {
+                        errors.0.push(e);
                         0.0
                     }
                 };
@@ -884,8 +1001,12 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                             errors.push(span, "a parameter's default must be a literal number (or arithmetic on literals and constants)");
                             0.0
                         }
-                        Err(e) => {
+                        Err(e) if e.to_string().starts_with("cannot find") => {
                             errors.0.push(syn::Error::new(e.span(), format!("{e} (a parameter's default may use literals and constants only)")));
+                            0.0
+                        }
+                        Err(e) => {
+                            errors.0.push(e);
                             0.0
                         }
                     };
@@ -920,9 +1041,14 @@ pub fn lower(def: Definition) -> (Model, Errors) {
         self_test: def.self_test,
         ..Default::default()
     };
+    // Statements that may appear once, by keyword.
+    let mut seen = BTreeMap::new();
     for item in def.items {
         match item {
-            Item::Analysis(what) => {
+            Item::Analysis(span, what) => {
+                if !once(&mut seen, "analysis", span, &mut errors) {
+                    continue;
+                }
                 level_span = Some(what.span());
                 level_written = true;
                 level = match what.to_string().as_str() {
@@ -943,8 +1069,21 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     }
                 };
             }
-            Item::Outputs(list) => outputs = Some(list),
-            Item::Dof(n) => dof = Some(n),
+            Item::Outputs(span, list) => {
+                if !once(&mut seen, "outputs", span, &mut errors) {
+                    continue;
+                }
+                if list.is_empty() {
+                    errors.push(span, "`outputs { }` lists nothing, so the analysis would return nothing; name the points, links and slides to return, or remove the line (the default is every named thing)");
+                }
+                outputs = Some(list);
+            }
+            Item::Dof(span, n) => {
+                if !once(&mut seen, "dof", span, &mut errors) {
+                    continue;
+                }
+                dof = Some(n);
+            }
             Item::Let(l) => {
                 let Some(kind) = lower_kind(&l, &scope, &mut errors) else {
                     // Keep the names the statement meant to define, so that the
@@ -965,7 +1104,16 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     continue;
                 };
                 let want_links = kind.link_count();
-                if l.links.len() > want_links {
+                if want_links == 0 && !l.links.is_empty() {
+                    errors.push(
+                        l.links[0].span(),
+                        format!(
+                            "`{}` creates no link, so there is nothing to name after `as`; remove `as {}`",
+                            l.kind,
+                            l.links.iter().map(Ident::to_string).collect::<Vec<_>>().join(", ")
+                        ),
+                    );
+                } else if l.links.len() > want_links {
                     errors.push(
                         l.links[want_links.min(l.links.len() - 1)].span(),
                         format!(
@@ -1021,6 +1169,9 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             }
             Item::Gravity(span, x, y) => {
                 kinetics.declared = true;
+                if !once(&mut seen, "gravity", span, &mut errors) {
+                    continue;
+                }
                 match (convert(&x, &scope), convert(&y, &scope)) {
                     (Ok(x), Ok(y)) => kinetics.gravity = Some((span, x, y)),
                     (Err(e), _) | (_, Err(e)) => errors.0.push(e),
@@ -1061,7 +1212,20 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     Err(e) => errors.0.push(e),
                 }
             }
-            Item::Range(r) => checks.ranges.push(r),
+            Item::Range(r) => {
+                // The checks read the bounds; a bound that is no finite number
+                // is reported here, the rest (units, names) there.
+                let infinite = [&r.lo, &r.hi].into_iter().find_map(|bound| match bound {
+                    Arg::Value(e, _) => crate::value::convert(e, &scope)
+                        .ok()
+                        .and_then(|v| check_finite(&v).err()),
+                    Arg::From(_) => None,
+                });
+                match infinite {
+                    Some(e) => errors.0.push(e),
+                    None => checks.ranges.push(r),
+                }
+            }
             Item::Allow(span, what, groups) => checks.allow.push((span, what, groups)),
             Item::Loads(_) => {}
             Item::Params(_) | Item::Const(_) => {}
@@ -1099,8 +1263,18 @@ fn lower_mass(m: &parse::Mass, scope: &NumberScope<'_>, errors: &mut Errors) -> 
     let mut at = None;
     let mut inertia = None;
     let mut ok = true;
+    let mut given: Vec<String> = Vec::new();
     for (name, arg) in &m.fields {
         let field = name.to_string();
+        if FIELDS.contains(&field.as_str()) && given.contains(&field) {
+            ok = false;
+            errors.push(
+                name.span(),
+                format!("`{field}` is given twice in this `mass`; keep one"),
+            );
+            continue;
+        }
+        given.push(field.clone());
         match (field.as_str(), arg) {
             ("at", Arg::Value(Expr::Path(p), None)) if p.path.get_ident().is_some() => {
                 at = p.path.get_ident().cloned();

@@ -49,12 +49,13 @@ pub enum Item {
     Params(Vec<Assign>),
     /// `const a = 1.0;`: a compile-time constant, folded into the code.
     Const(Assign),
-    /// `analysis velocity;`
-    Analysis(Ident),
-    /// `outputs { B, link3 }`
-    Outputs(Vec<Ident>),
-    /// `dof 1;`: the mobility the author computed; checked.
-    Dof(LitInt),
+    /// `analysis velocity;`, with the keyword's span.
+    Analysis(Span, Ident),
+    /// `outputs { B, link3 }`, with the keyword's span.
+    Outputs(Span, Vec<Ident>),
+    /// `dof 1;`: the mobility the author computed (checked), with the
+    /// keyword's span.
+    Dof(Span, LitInt),
     /// `let NAME = KIND(args) as (links) slide (names);`
     Let(Let),
     /// `mass link3 { m = 20.0, at = P, j = 1.2 }`
@@ -109,6 +110,9 @@ pub struct Let {
 }
 
 /// A call argument.
+// `syn::Expr` is larger with proc-macro2's `span-locations` (the codegen tests
+// enable it to check error positions); these live only while the macro runs.
+#[allow(clippy::large_enum_variant)]
 pub enum Arg {
     /// `from X`: the point a link point is measured from.
     From(Ident),
@@ -135,12 +139,21 @@ pub struct Force {
 }
 
 /// The value of a `force` statement.
+// `syn::Expr` is larger with proc-macro2's `span-locations` (the codegen tests
+// enable it to check error positions); these live only while the macro runs.
+#[allow(clippy::large_enum_variant)]
 pub enum ForceValue {
     /// Components in the global frame.
     Components(Expr, Expr),
     /// A signed magnitude along a guide's direction.
     Along(Ident, Expr),
 }
+
+/// The words that begin a statement (besides `let` and `const`).
+const STATEMENTS: &[&str] = &[
+    "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "range",
+    "allow",
+];
 
 fn kw(input: ParseStream, word: &str) -> bool {
     input.peek(Ident) && input.fork().parse::<Ident>().is_ok_and(|i| i == word)
@@ -180,19 +193,32 @@ fn input_eq(input: ParseStream) -> syn::Result<()> {
         .map_err(|e| syn::Error::new(e.span(), "expected `=`: `range INPUT = (lo, hi);`"))
 }
 
-fn pair(input: ParseStream) -> syn::Result<(Expr, Expr)> {
+/// `(x, y)`: two components; `usage` shows the whole statement.
+fn pair(input: ParseStream, usage: &str) -> syn::Result<(Expr, Expr)> {
+    let two = |span| syn::Error::new(span, format!("expected two components: {usage}"));
+    if !input.peek(syn::token::Paren) {
+        return Err(two(input.span()));
+    }
     let content;
     parenthesized!(content in input);
     let x: Expr = content.parse()?;
-    content.parse::<Token![,]>()?;
+    content.parse::<Token![,]>().map_err(|e| two(e.span()))?;
     let y: Expr = content.parse()?;
+    if !content.is_empty() {
+        return Err(two(content.span()));
+    }
     Ok((x, y))
 }
 
 impl Parse for Assign {
     fn parse(input: ParseStream) -> syn::Result<Self> {
-        let name = input.parse()?;
-        input.parse::<Token![=]>()?;
+        let name: Ident = input.parse()?;
+        input.parse::<Token![=]>().map_err(|e| {
+            syn::Error::new(
+                e.span(),
+                format!("expected `=` and a value after `{name}`: `{name} = 1.0` (every parameter, constant and load has a default)"),
+            )
+        })?;
         Ok(Assign {
             name,
             value: input.parse()?,
@@ -204,9 +230,33 @@ impl Parse for Item {
     fn parse(input: ParseStream) -> syn::Result<Self> {
         if input.peek(Token![let]) {
             input.parse::<Token![let]>()?;
-            let name: Ident = input.parse()?;
+            let name: Ident = input.parse().map_err(|e| {
+                syn::Error::new(
+                    e.span(),
+                    "expected the name this statement defines (a letter first): `let NAME = KIND(args);`",
+                )
+            })?;
             input.parse::<Token![=]>()?;
-            let kind: Ident = input.parse()?;
+            let kind: Ident = input.parse().map_err(|e| {
+                syn::Error::new(
+                    e.span(),
+                    format!(
+                        "expected the statement kind after `let {name} =`: one of {}",
+                        crate::model::KINDS.join(", ")
+                    ),
+                )
+            })?;
+            if !input.peek(syn::token::Paren) {
+                let usage = crate::model::usage(&kind.to_string());
+                let usage = if usage.is_empty() {
+                    String::new()
+                } else {
+                    format!(": `{usage}`")
+                };
+                return Err(input.error(format!(
+                    "expected `(`: the arguments of `{kind}` go in parentheses{usage}"
+                )));
+            }
             let content;
             let paren = parenthesized!(content in input);
             let args = Punctuated::<Arg, Token![,]>::parse_terminated(&content)?
@@ -222,7 +272,19 @@ impl Parse for Item {
                 let _: Ident = input.parse()?;
                 slides = names(input)?;
             }
-            input.parse::<Token![;]>()?;
+            input.parse::<Token![;]>().map_err(|e| {
+                syn::Error::new(
+                    e.span(),
+                    format!(
+                        "expected `;` to end the statement `let {name} = {kind}(..)`{}",
+                        if links.is_empty() {
+                            " (or `as LINK` to name its link)"
+                        } else {
+                            ""
+                        }
+                    ),
+                )
+            })?;
             return Ok(Item::Let(Let {
                 name,
                 kind,
@@ -234,6 +296,14 @@ impl Parse for Item {
         }
         if input.peek(Token![const]) {
             input.parse::<Token![const]>()?;
+            if input.peek(Ident) && input.peek2(Token![:]) {
+                let name: Ident = input.parse()?;
+                let colon = input.parse::<Token![:]>()?;
+                return Err(syn::Error::new(
+                    colon.span,
+                    format!("a `const` takes no type (its value is a number, folded at compile time): write `const {name} = value;`"),
+                ));
+            }
             let assign = input.parse()?;
             input.parse::<Token![;]>()?;
             return Ok(Item::Const(assign));
@@ -260,18 +330,21 @@ impl Parse for Item {
             "analysis" => {
                 let what = input.parse()?;
                 input.parse::<Token![;]>()?;
-                Ok(Item::Analysis(what))
+                Ok(Item::Analysis(word.span(), what))
             }
             "outputs" => {
+                if !input.peek(syn::token::Brace) {
+                    return Err(input.error("expected `{`: the outputs are listed in braces, `outputs { B, link3 }`"));
+                }
                 let content;
                 braced!(content in input);
                 let list = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
-                Ok(Item::Outputs(list.into_iter().collect()))
+                Ok(Item::Outputs(word.span(), list.into_iter().collect()))
             }
             "dof" => {
                 let n = input.parse()?;
                 input.parse::<Token![;]>()?;
-                Ok(Item::Dof(n))
+                Ok(Item::Dof(word.span(), n))
             }
             "mass" => {
                 let link = input.parse()?;
@@ -293,7 +366,7 @@ impl Parse for Item {
                 Ok(Item::Mass(Mass { link, fields }))
             }
             "gravity" => {
-                let (x, y) = pair(input)?;
+                let (x, y) = pair(input, "`gravity (gx, gy);`")?;
                 input.parse::<Token![;]>()?;
                 Ok(Item::Gravity(word.span(), x, y))
             }
@@ -320,7 +393,7 @@ impl Parse for Item {
                             "expected `= (fx, fy)`, `on LINK` or `along GUIDE = f`",
                         )
                     })?;
-                    let (x, y) = pair(input)?;
+                    let (x, y) = pair(input, "`force at POINT = (fx, fy);`")?;
                     ForceValue::Components(x, y)
                 };
                 input.parse::<Token![;]>()?;
@@ -370,7 +443,8 @@ impl Parse for Item {
             other => Err(syn::Error::new(
                 word.span(),
                 format!(
-                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range` or `allow`"
+                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range` or `allow`{}",
+                    crate::model::did_you_mean(other, STATEMENTS.iter().copied())
                 ),
             )),
         }
@@ -384,9 +458,37 @@ impl Parse for Definition {
             .iter()
             .find(|a| a.path().is_ident("self_test"))
             .map(syn::spanned::Spanned::span);
+        if let Some(second) = docs
+            .iter()
+            .filter(|a| a.path().is_ident("self_test"))
+            .nth(1)
+        {
+            return Err(syn::Error::new_spanned(
+                second,
+                "`#[self_test]` may appear once; remove this one",
+            ));
+        }
         docs.retain(|a| !a.path().is_ident("self_test"));
+        if let Some(other) = docs.iter().find(|a| !a.path().is_ident("doc")) {
+            let path = other.path();
+            let word = quote::ToTokens::to_token_stream(path)
+                .to_string()
+                .replace(' ', "");
+            return Err(syn::Error::new_spanned(
+                other,
+                format!(
+                    "unknown attribute `#[{word}]`; a definition takes doc comments (`///`) and `#[self_test]`{}",
+                    crate::model::did_you_mean(&word, ["self_test"])
+                ),
+            ));
+        }
         let vis = input.parse()?;
-        let name = input.parse()?;
+        let name = input.parse().map_err(|e| {
+            syn::Error::new(
+                e.span(),
+                "expected the mechanism's type name: `pub FourBar { ... }`",
+            )
+        })?;
         let content;
         braced!(content in input);
         let mut items = Vec::new();

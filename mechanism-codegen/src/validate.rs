@@ -58,9 +58,11 @@ pub const RESERVED: &[&str] = &[
     "T",
 ];
 
-/// Every defined name with its category and defining token.
+/// Every defined name with its category and defining token. A name defined
+/// twice (an error of its own, from [`unique_names`]) keeps its first
+/// meaning, so its uses raise no second error.
 pub fn symbols(model: &Model) -> BTreeMap<String, (Category, Ident)> {
-    let mut table = BTreeMap::new();
+    let mut table = Table(BTreeMap::new());
     for (name, _) in &model.params {
         table.insert(name.to_string(), (Category::Param, name.clone()));
     }
@@ -101,7 +103,16 @@ pub fn symbols(model: &Model) -> BTreeMap<String, (Category, Ident)> {
             table.insert(input.to_string(), (Category::Input, input.clone()));
         }
     }
-    table
+    table.0
+}
+
+/// A symbol table where the first definition of a name stays.
+struct Table(BTreeMap<String, (Category, Ident)>);
+
+impl Table {
+    fn insert(&mut self, name: String, entry: (Category, Ident)) {
+        self.0.entry(name).or_insert(entry);
+    }
 }
 
 /// Rule: a name is defined once (points, links, slides, inputs, parameters and
@@ -162,8 +173,10 @@ pub fn reserved_names(model: &Model, errors: &mut Errors) {
 }
 
 /// Rule: every reference names something defined, of the right category, and
-/// not the statement itself.
+/// not the statement itself (and, [`distinct_joints`], a group's two known
+/// joints are two places).
 pub fn references_resolve(model: &Model, errors: &mut Errors) {
+    distinct_joints(model, errors);
     let table = symbols(model);
     for stmt in &model.stmts {
         let expected: Vec<(&Ident, Category)> = match &stmt.kind {
@@ -193,6 +206,15 @@ pub fn references_resolve(model: &Model, errors: &mut Errors) {
         for (r, want) in expected {
             let name = r.to_string();
             let own_link = stmt.links.iter().any(|l| *l == name);
+            // A link of this statement named like another statement's point
+            // or link is a duplicate name (reported by `unique_names`), and
+            // the reference means the other one: no second error.
+            let defined_elsewhere = model.stmts.iter().any(|s| {
+                !std::ptr::eq(s, stmt) && (s.name == name || s.links.iter().any(|l| *l == name))
+            });
+            if own_link && stmt.name != name && defined_elsewhere {
+                continue;
+            }
             if stmt.name == name || own_link {
                 errors.push(
                     r.span(),
@@ -229,6 +251,49 @@ pub fn references_resolve(model: &Model, errors: &mut Errors) {
                         format!("{what} `{name}`{}", did_you_mean(&name, candidates)),
                     );
                 }
+            }
+        }
+    }
+}
+
+/// The literal coordinates of a ground point, when it is one.
+fn literal_ground(model: &Model, name: &Ident) -> Option<(f64, f64)> {
+    model.stmts.iter().find_map(|s| match &s.kind {
+        Kind::Ground { x, y } if s.name == *name => Some((x.fold()?, y.fold()?)),
+        _ => None,
+    })
+}
+
+/// Rule: the two known joints of a group (or the two guides of a PRP) are two
+/// different points (guides), and not two ground points at the same place.
+pub fn distinct_joints(model: &Model, errors: &mut Errors) {
+    for stmt in &model.stmts {
+        let (a, b, what) = match &stmt.kind {
+            Kind::Rrr { a, b, .. } => (a, b, "known joints"),
+            Kind::Rpr { a, b, .. } => (a, b, "points (the block's pin and the link's pivot)"),
+            Kind::Actuator { a, b, .. } => {
+                (a, b, "points (the link's pivot and the cylinder's base)")
+            }
+            Kind::Prp { g1, g2, .. } => (g1, g2, "guides"),
+            _ => continue,
+        };
+        let kind = &stmt.kind_token;
+        if a == b {
+            errors.push(
+                b.span(),
+                format!("`{b}` is given twice: the two {what} of this `{kind}` must be different"),
+            );
+            continue;
+        }
+        if let (Some(pa), Some(pb)) = (literal_ground(model, a), literal_ground(model, b)) {
+            if pa == pb {
+                errors.push(
+                    b.span(),
+                    format!(
+                        "`{a}` and `{b}` are both the ground point ({}, {}): the two {what} of this `{kind}` must be at different places; move one",
+                        pa.0, pa.1
+                    ),
+                );
             }
         }
     }
@@ -307,8 +372,17 @@ pub fn outputs_exist(model: &Model, errors: &mut Errors) {
         return;
     };
     let table = symbols(model);
+    let mut listed: Vec<String> = Vec::new();
     for o in outputs {
         let name = o.to_string();
+        if listed.contains(&name) {
+            errors.push(
+                o.span(),
+                format!("`{name}` is listed twice in `outputs`; remove this one"),
+            );
+            continue;
+        }
+        listed.push(name.clone());
         match table.get(&name) {
             Some((Category::Point | Category::Link | Category::Slide, _)) => {}
             Some((cat, _)) => errors.push(
@@ -418,6 +492,13 @@ fn loadable_link(
     let name = link.to_string();
     if !plan.links.contains_key(&name) {
         let hint = did_you_mean(&name, plan.links.keys().map(String::as_str));
+        if name == "ground" || name == "frame" {
+            errors.push(
+                link.span(),
+                format!("`{name}` is the frame, which is fixed: {what} on it moves nothing; put it on a moving link (the names after `as`){hint}"),
+            );
+            return false;
+        }
         let kind = if plan.defined.contains_key(&name) || plan.guides.contains_key(&name) {
             format!("`{name}` is not a link")
         } else {
@@ -466,10 +547,10 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
             continue;
         }
         let link = m.link.to_string();
-        if let Some(first) = with_mass.get(&link) {
+        if with_mass.contains_key(&link) {
             errors.push(
                 m.link.span(),
-                format!("`{link}` already has a mass (line of `{first}`); give each link one `mass` statement"),
+                format!("`{link}` already has a mass (its first `mass` statement comes earlier); give each link one `mass` statement: merge the two"),
             );
             continue;
         }
@@ -543,9 +624,16 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
         if let ForceSpecValue::Along(guide, _) = &f.value {
             let g = guide.to_string();
             if !plan.guides.contains_key(&g) {
+                let what = match symbols(model).get(&g) {
+                    Some((cat, _)) => format!("`{g}` is {}, not a guide", cat.article()),
+                    None => format!("cannot find guide `{g}`"),
+                };
                 errors.push(
                     guide.span(),
-                    format!("cannot find guide `{g}`; `along` takes a guide, whose direction the force follows{}", did_you_mean(&g, plan.guides.keys().map(String::as_str))),
+                    format!(
+                        "{what}; `along` takes a guide, whose direction the force follows{}",
+                        did_you_mean(&g, plan.guides.keys().map(String::as_str))
+                    ),
                 );
             }
         }

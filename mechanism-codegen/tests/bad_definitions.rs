@@ -1,0 +1,703 @@
+//! Bad definitions, fed straight to the macro logic (`expand`, no rustc): each
+//! must give exactly one `compile_error!` (no follow-on errors), without
+//! panicking, whose message names the problem (and the fix, where there is
+//! one), and whose span starts at the offending user token.
+//!
+//! Each case marks the token the error must start at with `^` inside its `at`
+//! snippet, which must occur exactly once in the source. The source positions
+//! come from `proc-macro2`'s `span-locations` (enabled for the tests only).
+//!
+//! `BAD_DEFS_PRINT=1 cargo test -p mechanism-codegen --test bad_definitions --
+//! --nocapture` prints every message.
+
+use proc_macro2::{TokenStream, TokenTree};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::str::FromStr;
+
+/// One bad definition and what its error must be.
+struct Case {
+    name: &'static str,
+    src: String,
+    /// A snippet of `src` with `^` before the token the error starts at.
+    at: &'static str,
+    /// Substrings the message must contain.
+    says: &'static [&'static str],
+}
+
+/// One `compile_error!` found in the expansion.
+#[derive(Debug)]
+struct Found {
+    message: String,
+    line: usize,
+    column: usize,
+}
+
+fn find_errors(stream: TokenStream, out: &mut Vec<Found>) {
+    let tokens: Vec<TokenTree> = stream.into_iter().collect();
+    for (i, t) in tokens.iter().enumerate() {
+        match t {
+            TokenTree::Ident(id) if id == "compile_error" => {
+                if let (Some(TokenTree::Punct(bang)), Some(TokenTree::Group(g))) =
+                    (tokens.get(i + 1), tokens.get(i + 2))
+                {
+                    if bang.as_char() == '!' {
+                        let lit = g.stream().to_string();
+                        let message = syn::parse_str::<syn::LitStr>(&lit)
+                            .map(|l| l.value())
+                            .unwrap_or(lit);
+                        let start = id.span().start();
+                        out.push(Found {
+                            message,
+                            line: start.line,
+                            column: start.column,
+                        });
+                    }
+                }
+            }
+            TokenTree::Group(g) => find_errors(g.stream(), out),
+            _ => {}
+        }
+    }
+}
+
+/// Line (1-based) and column (0-based, in characters) of the `^` of `at`.
+fn expected_position(src: &str, at: &str) -> Result<(usize, usize), String> {
+    let caret = at.find('^').ok_or("`at` has no `^`")?;
+    let snippet = at.replace('^', "");
+    let hits: Vec<usize> = src.match_indices(&snippet).map(|(i, _)| i).collect();
+    if hits.len() != 1 {
+        return Err(format!(
+            "`at` snippet {snippet:?} occurs {} times",
+            hits.len()
+        ));
+    }
+    let offset = hits[0] + caret;
+    let before = &src[..offset];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().unwrap_or("").chars().count();
+    Ok((line, column))
+}
+
+/// The source text from a position to the end of its line (for reports).
+fn text_at(src: &str, line: usize, column: usize) -> String {
+    src.lines()
+        .nth(line.wrapping_sub(1))
+        .map(|l| l.chars().skip(column).collect())
+        .unwrap_or_default()
+}
+
+/// Runs one case; `Err` describes what is wrong.
+fn run(case: &Case, print: bool) -> Result<(), String> {
+    let tokens = TokenStream::from_str(&case.src).map_err(|e| format!("bad test source: {e}"))?;
+    let out = catch_unwind(AssertUnwindSafe(|| mechanism_codegen::expand(tokens)))
+        .map_err(|_| "expand panicked".to_string())?;
+    let mut found = Vec::new();
+    find_errors(out, &mut found);
+    if print {
+        println!("--- {}", case.name);
+        for f in &found {
+            println!(
+                "  {}:{} `{}`\n    {}",
+                f.line,
+                f.column,
+                text_at(&case.src, f.line, f.column),
+                f.message
+            );
+        }
+    }
+    let (line, column) = expected_position(&case.src, case.at)?;
+    let [f] = found.as_slice() else {
+        return Err(format!(
+            "{} errors, want 1: {:#?}",
+            found.len(),
+            found.iter().map(|f| &f.message).collect::<Vec<_>>()
+        ));
+    };
+    let mut problems = Vec::new();
+    if (f.line, f.column) != (line, column) {
+        problems.push(format!(
+            "span at {}:{} `{}`, want {line}:{column} `{}`",
+            f.line,
+            f.column,
+            text_at(&case.src, f.line, f.column),
+            text_at(&case.src, line, column)
+        ));
+    }
+    for s in case.says {
+        if !f.message.contains(s) {
+            problems.push(format!("message lacks {s:?}"));
+        }
+    }
+    if problems.is_empty() {
+        Ok(())
+    } else {
+        Err(format!(
+            "{}\n    message: {}",
+            problems.join("; "),
+            f.message
+        ))
+    }
+}
+
+/// A crank-rocker four-bar (Grashof: 40 + 130 < 120 + 100, so the crank turns
+/// fully and the expansion-time check passes) with `extra` lines appended.
+fn four_bar(extra: &str) -> String {
+    format!(
+        "pub M {{
+    let O2 = ground(0.0, 0.0);
+    let O4 = ground(130.0, 0.0);
+    let A = crank(O2, 40.0, theta) as link2;
+    let B = rrr(A, 120.0, O4, 100.0, left) as (link3, link4);
+{extra}
+}}"
+    )
+}
+
+/// The four-bar with a slider-crank beside it: a fixed guide `line`, a coupler
+/// point `P` on `link3` and masses, for the force-analysis cases.
+fn loaded(extra: &str) -> String {
+    four_bar(&format!(
+        "    let line = guide((0.0, -50.0), 0 deg);
+    let C = rrp(A, 150.0, line, plus) as (rod, ram) slide x;
+    let P = point(link3, from A, 60.0, 20 deg);
+    mass link3 {{ m = 2.0, at = P, j = 0.1 }};
+{extra}"
+    ))
+}
+
+fn body(text: &str) -> String {
+    format!("pub M {{\n{text}\n}}")
+}
+
+fn cases() -> Vec<Case> {
+    vec![
+        // ---- syntax ----
+        Case {
+            name: "missing semicolon after a let",
+            src: body(
+                "    let O2 = ground(0.0, 0.0)
+    let O4 = ground(130.0, 0.0);
+    let A = crank(O2, 40.0, theta) as link2;
+    let B = rrr(A, 120.0, O4, 100.0, left) as (link3, link4);",
+            ),
+            at: "0.0)\n    ^let O4",
+            says: &["`;`"],
+        },
+        Case {
+            name: "missing comma between arguments",
+            src: four_bar("    let C = rrr(A 120.0, O4, 100.0, left) as (link5, link6);"),
+            at: "rrr(A ^120.0",
+            says: &["`,`"],
+        },
+        Case {
+            name: "comma instead of semicolon",
+            src: four_bar("    let Q = ground(1.0, 2.0),"),
+            at: "ground(1.0, 2.0)^,",
+            says: &["`;`"],
+        },
+        Case {
+            name: "trailing name after the link names",
+            src: four_bar("    let D = rrr(B, 50.0, O4, 90.0, left) as (link5, link6) link7;"),
+            at: "link6) ^link7",
+            says: &["`;`"],
+        },
+        Case {
+            name: "a number where the point name goes",
+            src: four_bar("    let 5 = ground(1.0, 2.0);"),
+            at: "let ^5 =",
+            says: &["name"],
+        },
+        Case {
+            name: "`==` in a let",
+            src: four_bar("    let Q == ground(1.0, 2.0);"),
+            at: "let Q =^= ground",
+            says: &["statement kind", "`let Q =`"],
+        },
+        Case {
+            name: "brackets instead of parentheses",
+            src: four_bar("    let Q = ground[1.0, 2.0];"),
+            at: "ground^[",
+            says: &["(", ")"],
+        },
+        Case {
+            name: "no parentheses",
+            src: four_bar("    let Q = ground 1.0, 2.0;"),
+            at: "ground ^1.0",
+            says: &["("],
+        },
+        Case {
+            name: "statement kind capitalized",
+            src: four_bar("    let D = Crank(O4, 30.0, phi) as link5;"),
+            at: "let D = ^Crank",
+            says: &["unknown statement kind `Crank`", "did you mean `crank`?"],
+        },
+        Case {
+            name: "statement kind misspelled",
+            src: four_bar("    let D = rpp_(A, line, 0 deg);"),
+            at: "let D = ^rpp_",
+            says: &["unknown statement kind", "did you mean `rpp`?"],
+        },
+        Case {
+            name: "unknown item keyword",
+            src: four_bar("    joint A;"),
+            at: "^joint A",
+            says: &["unknown statement `joint`"],
+        },
+        Case {
+            name: "item keyword misspelled",
+            src: four_bar("    output { B }"),
+            at: "^output {",
+            says: &["unknown statement `output`", "did you mean `outputs`?"],
+        },
+        Case {
+            name: "a Rust item inside the definition",
+            src: four_bar("    fn helper() {}"),
+            at: "^fn helper",
+            says: &["expected a statement"],
+        },
+        Case {
+            name: "`deg` on a link length",
+            src: four_bar("    let D = rrr(B, 50.0 deg, O4, 90.0, left) as (link5, link6);"),
+            at: "50.0 ^deg",
+            says: &["length", "no unit"],
+        },
+        Case {
+            name: "unknown unit on a length",
+            src: four_bar("    let D = rrr(B, 50.0 mm, O4, 90.0, left) as (link5, link6);"),
+            at: "50.0 ^mm",
+            says: &["length", "no unit"],
+        },
+        Case {
+            name: "unknown angle unit",
+            src: four_bar("    let P = point(link3, from A, 10.0, 30 grad);"),
+            at: "30 ^grad",
+            says: &["`deg` or `rad`"],
+        },
+        Case {
+            name: "param without a default",
+            src: four_bar("    params { a = 1.0, b }"),
+            at: "a = 1.0, b ^}",
+            says: &["`b`", "default", "`b = "],
+        },
+        Case {
+            name: "params separated by semicolons",
+            src: four_bar("    params { a = 1.0; b = 2.0 }"),
+            at: "a = 1.0^;",
+            says: &["`,`"],
+        },
+        Case {
+            name: "const with a type",
+            src: four_bar("    const k: f64 = 1.0;"),
+            at: "const k^:",
+            says: &["no type", "`const k = value;`"],
+        },
+        Case {
+            name: "const using a later const",
+            src: four_bar("    const a = b * 2.0;\n    const b = 1.0;"),
+            at: "const a = ^b",
+            says: &["`b`", "before"],
+        },
+        Case {
+            name: "division by a zero const",
+            src: four_bar("    const zero = 0.0;\n    const k = 10.0 / zero;"),
+            at: "const k = ^10.0",
+            says: &["finite", "zero"],
+        },
+        Case {
+            name: "NaN from 0/0 as a coordinate",
+            src: four_bar("    let Q = ground(0.0 / 0.0, 1.0);"),
+            at: "ground(^0.0 / 0.0",
+            says: &["finite"],
+        },
+        Case {
+            name: "huge literal (overflows to infinity) as a coordinate",
+            src: four_bar("    let Q = ground(1e400, 1.0);"),
+            at: "ground(^1e400",
+            says: &["finite"],
+        },
+        Case {
+            name: "huge literal as a length",
+            src: four_bar("    let D = rrr(B, 1e999, O4, 90.0, left) as (link5, link6);"),
+            at: "(B, ^1e999",
+            says: &["finite"],
+        },
+        Case {
+            name: "huge literal as a parameter default",
+            src: four_bar("    params { a = 1e400 }"),
+            at: "a = ^1e400",
+            says: &["finite"],
+        },
+        Case {
+            name: "outputs without braces",
+            src: four_bar("    outputs B, A;"),
+            at: "outputs ^B",
+            says: &["{"],
+        },
+        Case {
+            name: "gravity with three components",
+            src: loaded("    gravity (0.0, -9.81, 0.0);"),
+            at: "-9.81^, 0.0)",
+            says: &["(gx, gy)"],
+        },
+        Case {
+            name: "force with three components",
+            src: loaded("    force at P = (1.0, 2.0, 3.0);"),
+            at: "2.0^, 3.0)",
+            says: &["(fx, fy)"],
+        },
+        Case {
+            name: "point with three coordinates",
+            src: four_bar("    let P = point(link3, from A, (1.0, 2.0, 3.0));"),
+            at: "from A, ^(1.0",
+            says: &["(x, y)"],
+        },
+        Case {
+            name: "guide origin with three coordinates",
+            src: four_bar("    let g = guide((1.0, 2.0, 3.0), 0 deg);"),
+            at: "guide(^(1.0",
+            says: &["(x, y)"],
+        },
+        Case {
+            name: "dof negative",
+            src: four_bar("    dof -1;"),
+            at: "dof ^-1",
+            says: &["Gruebler", "`dof -1`"],
+        },
+        Case {
+            name: "unknown attribute",
+            src: "#[selftest]\n".to_string() + &four_bar(""),
+            at: "^#[selftest]",
+            says: &["selftest", "did you mean `self_test`?"],
+        },
+        Case {
+            name: "missing type name",
+            src: "pub { let O = ground(0.0, 0.0); }".to_string(),
+            at: "pub ^{",
+            says: &["type name"],
+        },
+        // ---- statements given twice ----
+        Case {
+            name: "duplicate outputs entry",
+            src: four_bar("    outputs { B, A, B }"),
+            at: "A, ^B }",
+            says: &["`B`", "twice"],
+        },
+        Case {
+            name: "two outputs statements",
+            src: four_bar("    outputs { B }\n    outputs { A }"),
+            at: "^outputs { A }",
+            says: &["outputs", "once"],
+        },
+        Case {
+            name: "two analysis statements",
+            src: four_bar("    analysis position;\n    analysis velocity;"),
+            at: "^analysis velocity",
+            says: &["analysis", "once"],
+        },
+        Case {
+            name: "two dof statements",
+            src: four_bar("    dof 1;\n    dof 1;"),
+            at: "^dof 1;\n}",
+            says: &["dof", "once"],
+        },
+        Case {
+            name: "two dof statements, the second wrong",
+            src: four_bar("    dof 1;\n    dof 2;"),
+            at: "^dof 2",
+            says: &["dof", "once"],
+        },
+        Case {
+            name: "a group's own link named like its known joint",
+            src: four_bar("    let D = rrr(A, 50.0, O4, 90.0, left) as (A, link6);"),
+            at: "as (^A, link6)",
+            says: &["`A`", "twice"],
+        },
+        Case {
+            name: "gravity twice",
+            src: loaded("    gravity (0.0, -9.81);\n    gravity (0.0, -9.80);"),
+            at: "^gravity (0.0, -9.80)",
+            says: &["gravity", "once"],
+        },
+        Case {
+            name: "mass field given twice",
+            src: four_bar("    mass link4 { m = 1.0, at = B, m = 2.0 }"),
+            at: "at = B, ^m = 2.0",
+            says: &["`m`", "twice"],
+        },
+        Case {
+            name: "mass twice on one link",
+            src: loaded("    mass link3 { m = 1.0, at = A };"),
+            at: "mass ^link3 { m = 1.0",
+            says: &["`link3`", "already has a mass"],
+        },
+        // ---- names and categories ----
+        Case {
+            name: "empty definition",
+            src: "pub M {}".to_string(),
+            at: "pub ^M",
+            says: &["no driver"],
+        },
+        Case {
+            name: "outputs naming a guide",
+            src: loaded("    outputs { line }"),
+            at: "outputs { ^line",
+            says: &["guide"],
+        },
+        Case {
+            name: "outputs naming an undefined point",
+            src: four_bar("    outputs { Bb }"),
+            at: "outputs { ^Bb",
+            says: &["`Bb`", "did you mean `B`?"],
+        },
+        Case {
+            name: "driver input used as a dimension",
+            src: four_bar("    let D = rrr(B, theta, O4, 90.0, left) as (link5, link6);"),
+            at: "rrr(B, ^theta",
+            says: &["`theta`", "input"],
+        },
+        Case {
+            name: "slide used as a dimension",
+            src: loaded("    let D = rrr(B, x, O4, 90.0, left) as (link5, link6);"),
+            at: "rrr(B, ^x",
+            says: &["`x`", "slide"],
+        },
+        Case {
+            name: "crank pivot is a moving point",
+            src: four_bar("    let D = crank(B, 30.0, phi) as link5;"),
+            at: "crank(^B",
+            says: &["ground"],
+        },
+        Case {
+            name: "point from a point not on the link",
+            src: four_bar("    let P = point(link2, from B, 10.0, 0 deg);"),
+            at: "from ^B, 10.0",
+            says: &["not a point of `link2`"],
+        },
+        Case {
+            name: "guide carried by an undefined link",
+            src: four_bar("    let g = guide(A, link9);"),
+            at: "guide(A, ^link9",
+            says: &["link9"],
+        },
+        Case {
+            name: "link named after a point",
+            src: four_bar("    let D = crank(O4, 30.0, phi) as A;"),
+            at: "as ^A;",
+            says: &["`A`", "twice"],
+        },
+        Case {
+            name: "same link named twice in one statement",
+            src: four_bar("    let D = rrr(B, 50.0, O4, 90.0, left) as (link5, link5);"),
+            at: "(link5, ^link5)",
+            says: &["`link5`", "twice"],
+        },
+        Case {
+            name: "input named like a parameter",
+            src: four_bar("    params { theta = 1.0 }"),
+            at: "crank(O2, 40.0, ^theta)",
+            says: &["`theta`", "twice"],
+        },
+        // ---- force analysis ----
+        Case {
+            name: "mass on an undefined link",
+            src: loaded("    mass lnk4 { m = 1.0, at = B };"),
+            at: "mass ^lnk4",
+            says: &["`lnk4`", "did you mean `link4`?"],
+        },
+        Case {
+            name: "mass at a point not on the link",
+            src: loaded("    mass link4 { m = 1.0, at = A };"),
+            at: "at = ^A };",
+            says: &["not", "`B`"],
+        },
+        Case {
+            name: "force along a point",
+            src: loaded("    force at C on ram along P = 1.0;"),
+            at: "along ^P",
+            says: &["`P` is a point", "guide"],
+        },
+        Case {
+            name: "torque on the ground",
+            src: loaded("    torque on ground = 1.0;"),
+            at: "torque on ^ground",
+            says: &["ground"],
+        },
+        Case {
+            name: "torque on a point",
+            src: loaded("    torque on O4 = 1.0;"),
+            at: "torque on ^O4",
+            says: &["`O4` is not a link"],
+        },
+        Case {
+            name: "force at an undefined point",
+            src: loaded("    force at Pp = (1.0, 0.0);"),
+            at: "force at ^Pp",
+            says: &["`Pp`", "did you mean `P`?"],
+        },
+        Case {
+            name: "load used as a dimension",
+            src: loaded("    loads { cut = 0.0 }\n    let D = rrr(B, cut, O4, 90.0, left) as (link5, link6);"),
+            at: "rrr(B, ^cut",
+            says: &["load"],
+        },
+        // ---- checks ----
+        Case {
+            name: "range for a non-input",
+            src: four_bar("    range B = (0 deg, 90 deg);"),
+            at: "range ^B",
+            says: &["not a driver input"],
+        },
+        Case {
+            name: "range with lo > hi",
+            src: four_bar("    range theta = (90 deg, 10 deg);"),
+            at: "90 deg, ^10 deg",
+            says: &["empty"],
+        },
+        Case {
+            name: "range with lo == hi",
+            src: four_bar("    range theta = (10 deg, 10 deg);"),
+            at: "10 deg, ^10 deg",
+            says: &["empty"],
+        },
+        Case {
+            name: "allow singular of an unknown group",
+            src: four_bar("    allow singular Bx;"),
+            at: "singular ^Bx",
+            says: &["`Bx`", "did you mean `B`?"],
+        },
+        Case {
+            name: "dof mismatch",
+            src: four_bar("    dof 2;"),
+            at: "dof ^2",
+            says: &["Gruebler"],
+        },
+        Case {
+            name: "zero-length link",
+            src: four_bar("    let D = rrr(B, 0.0, O4, 90.0, left) as (link5, link6);"),
+            at: "rrr(B, ^0.0",
+            says: &["positive"],
+        },
+        Case {
+            name: "rpr whose two points coincide",
+            src: four_bar("    let O5 = ground(0.0, 0.0);\n    let s = rpr(O2, O5, plus) as (blk, rocker);"),
+            at: "rpr(O2, ^O5",
+            says: &["`O2`", "`O5`"],
+        },
+        Case {
+            name: "rrr with one point twice",
+            src: four_bar("    let D = rrr(B, 50.0, B, 90.0, left) as (link5, link6);"),
+            at: "50.0, ^B, 90.0",
+            says: &["`B`", "twice"],
+        },
+        Case {
+            name: "prp on one guide twice",
+            src: four_bar("    let g = guide(O4, 90 deg);\n    let D = prp(g, g) as (b1, b2) slide (s1, s2);"),
+            at: "prp(g, ^g)",
+            says: &["`g`", "twice"],
+        },
+        // ---- more ----
+        Case {
+            name: "range bound too large",
+            src: four_bar("    range theta = (0 deg, 1e400 deg);"),
+            at: "0 deg, ^1e400",
+            says: &["finite"],
+        },
+        Case {
+            name: "gravity divided by zero",
+            src: loaded("    gravity (0.0, 1.0 / 0.0);"),
+            at: "gravity (0.0, ^1.0 / 0.0)",
+            says: &["division by zero"],
+        },
+        Case {
+            name: "force too large",
+            src: loaded("    force at P = (1e400, 0.0);"),
+            at: "(^1e400, 0.0)",
+            says: &["finite"],
+        },
+        Case {
+            name: "link name on a point statement",
+            src: four_bar("    let P = point(link3, from A, 1.0, 0 deg) as link9;"),
+            at: "as ^link9",
+            says: &["`point`", "no link"],
+        },
+        Case {
+            name: "unit after a torque",
+            src: loaded("    torque on link3 = 5.0 deg;"),
+            at: "5.0 ^deg",
+            says: &["`;`"],
+        },
+        Case {
+            name: "guide with an extra argument",
+            src: four_bar("    let g = guide(O4, 90 deg, 10.0);"),
+            at: "90 deg, ^10.0",
+            says: &["too many arguments", "guide("],
+        },
+        Case {
+            name: "load named like a parameter",
+            src: loaded("    params { cut = 1.0 }\n    loads { cut = 0.0 }\n    force at P = (cut, 0.0);"),
+            at: "loads { ^cut",
+            says: &["`cut`", "already defined"],
+        },
+        Case {
+            name: "slider on a misspelled guide",
+            src: loaded("    let S = slider(lin, y) as blk;"),
+            at: "slider(^lin",
+            says: &["did you mean `line`?"],
+        },
+        Case {
+            name: "force on a misspelled link",
+            src: loaded("    force at P on lnk3 = (1.0, 0.0);"),
+            at: "on ^lnk3",
+            says: &["did you mean `link3`?"],
+        },
+        Case {
+            name: "self_test twice",
+            src: "#[self_test]\n#[self_test]\n".to_string() + &four_bar(""),
+            at: "#[self_test]\n^#[self_test]",
+            says: &["self_test", "once"],
+        },
+        Case {
+            name: "range more than a turn",
+            src: four_bar("    range theta = (0 deg, 400 deg);"),
+            at: "0 deg, ^400 deg",
+            says: &["turn"],
+        },
+        Case {
+            name: "empty outputs",
+            src: four_bar("    outputs { }"),
+            at: "^outputs { }",
+            says: &["lists nothing"],
+        },
+        Case {
+            name: "crank radius with a unit of angle",
+            src: four_bar("    let D = crank(O4, 30.0 deg, phi) as link5;"),
+            at: "30.0 ^deg",
+            says: &["length", "no unit"],
+        },
+        Case {
+            name: "two cranks with one input",
+            src: four_bar("    let D = crank(O4, 30.0, theta) as link5;"),
+            at: "crank(O4, 30.0, ^theta)",
+            says: &["`theta`", "twice"],
+        },
+    ]
+}
+
+#[test]
+fn bad_definitions_give_one_error_on_the_users_token() {
+    let print = std::env::var_os("BAD_DEFS_PRINT").is_some();
+    let cases = cases();
+    let mut failures = Vec::new();
+    for case in &cases {
+        if let Err(e) = run(case, print) {
+            failures.push(format!("{}: {e}", case.name));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} of {} cases fail:\n{}",
+        failures.len(),
+        cases.len(),
+        failures.join("\n")
+    );
+}

@@ -1,0 +1,18 @@
+// Error: `B` is listed twice in `outputs`; the user's code using the outputs compiles.
+use mechanism::mechanism;
+
+mechanism! {
+    pub FourBar {
+        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+        outputs { B, link3, B }
+    }
+}
+
+fn main() {
+    let fb = FourBar::<f64>::default();
+    let _ = fb.position(&FourBarInput { theta2: 0.0 }).map(|p| (p.B, p.link3));
+}
