@@ -4,7 +4,7 @@
 //! angles from `params`, `const`s (one computed from another), arithmetic,
 //! negation, integer literals; every group's offset from a parameter; a
 //! guide carried by a block; points from a link's second joint and on a
-//! block; output subsets down to `outputs { }`; `#[self_test]` at the
+//! block; output subsets down to `outputs { }` (forces only); `#[self_test]` at the
 //! position and velocity levels, with two inputs, loads and a slider on a
 //! carried guide; forces with loads in a force and a torque and gravity
 //! from a parameter. Values are checked against the constraints recomputed
@@ -261,10 +261,34 @@ mechanism! {
 }
 
 mechanism! {
-    pub EmptyOutputs {
+    /// Only the force analysis' results (the drive torque and reactions of a
+    /// loaded slider-crank): no point, angle or slide is returned.
+    pub TorqueOnly {
         outputs { }
         let O = ground(0.0, 0.0);
-        let A = crank(O, 1.0, theta) as link2;
+        let line = guide(O, 0 deg);
+        let A = crank(O, 0.1, theta) as link2;
+        let B = rrp(A, 0.4, line, plus) as (link3, slider) slide x;
+        let G3 = point(link3, from A, 0.2, 0 deg);
+        mass link3 { m = 1.2, at = G3, j = 0.02 };
+        mass slider { m = 0.5, at = B };
+        gravity (0.0, -9.81);
+        force at B on slider along line = -40.0;
+    }
+}
+
+mechanism! {
+    /// `TorqueOnly` with every output.
+    pub TorqueAll {
+        let O = ground(0.0, 0.0);
+        let line = guide(O, 0 deg);
+        let A = crank(O, 0.1, theta) as link2;
+        let B = rrp(A, 0.4, line, plus) as (link3, slider) slide x;
+        let G3 = point(link3, from A, 0.2, 0 deg);
+        mass link3 { m = 1.2, at = G3, j = 0.02 };
+        mass slider { m = 0.5, at = B };
+        gravity (0.0, -9.81);
+        force at B on slider along line = -40.0;
     }
 }
 
@@ -809,10 +833,46 @@ fn output_subsets() {
         assert_eq!((p.O4.x, p.O4.y), (3.0, 0.0));
         let v = g.velocity(&p, &GroundOnlyInput { theta: 1.0 }).unwrap();
         assert_eq!((v.O4.x, v.O4.y), (0.0, 0.0));
-        let e = EmptyOutputs::<f32>::default();
-        let i = EmptyOutputsInput { theta: q as f32 };
-        // Nothing is computed (no statement is needed), so even a NaN
-        // input returns Ok with no values in it.
-        assert!(e.solve(&i, &i, &i).is_ok());
+        // `outputs { }` with masses: the forces alone, the same numbers (the
+        // same operations) as with every output, from smaller structs.
+        let (only, all) = (TorqueOnly::<f64>::default(), TorqueAll::<f64>::default());
+        let f_only = only
+            .solve(
+                &TorqueOnlyInput { theta: q },
+                &TorqueOnlyInput { theta: 5.0 },
+                &TorqueOnlyInput { theta: 1.0 },
+            )
+            .unwrap()
+            .forces;
+        let s_all = all
+            .solve(
+                &TorqueAllInput { theta: q },
+                &TorqueAllInput { theta: 5.0 },
+                &TorqueAllInput { theta: 1.0 },
+            )
+            .unwrap();
+        assert_eq!(f_only.drive_theta, s_all.forces.drive_theta);
+        assert_eq!(f_only.r_ground_link2, s_all.forces.r_ground_link2);
+        assert_eq!(f_only.r_ground_slider, s_all.forces.r_ground_slider);
+        // The torque balances the loads' power (computed here from the
+        // full twin's motion): drive * omega + weights + load + inertia = 0.
+        let (p, v, a) = (&s_all.position, &s_all.velocity, &s_all.acceleration);
+        let g = mechanism::Vector2::new(0.0, -9.81);
+        let power = f_only.drive_theta * 5.0 + (g * 1.2 - a.G3 * 1.2).dot(&v.G3)
+            - 0.02 * a.link3 * v.link3
+            + (g * 0.5 - a.B * 0.5).dot(&v.B)
+            - 40.0 * v.B.x;
+        let scale =
+            (f_only.drive_theta * 5.0).abs() + 1.2 * 9.81 * v.G3.norm() + 40.0 * v.B.x.abs();
+        // A few roundings of terms up to `scale`: 1e-13 of it (450 eps).
+        assert!(
+            power.abs() <= 1e-13 * scale,
+            "power {power:e} of {scale:e} at {q}"
+        );
+        let _ = p;
+        assert!(
+            core::mem::size_of::<TorqueOnlyPosition<f64>>()
+                < core::mem::size_of::<TorqueAllPosition<f64>>()
+        );
     }
 }

@@ -920,6 +920,8 @@ pub fn lower(def: Definition) -> (Model, Errors) {
     let mut level = Level::Acceleration;
     let mut level_span = None;
     let mut outputs = None;
+    // `outputs { }`: allowed only where the force analysis returns something.
+    let mut empty_outputs = None;
     let mut dof = None;
     let mut loads: Vec<(Ident, f64)> = Vec::new();
     let mut level_written = false;
@@ -1074,7 +1076,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     continue;
                 }
                 if list.is_empty() {
-                    errors.push(span, "`outputs { }` lists nothing, so the analysis would return nothing; name the points, links and slides to return, or remove the line (the default is every named thing)");
+                    empty_outputs = Some(span);
                 }
                 outputs = Some(list);
             }
@@ -1233,6 +1235,9 @@ pub fn lower(def: Definition) -> (Model, Errors) {
     }
     if kinetics.declared && !level_written {
         level = Level::Forces;
+    }
+    if let (Some(span), false) = (empty_outputs, kinetics.declared) {
+        errors.push(span, "`outputs { }` lists nothing, and without masses or loads there is no force analysis to return, so every analysis would return nothing; name the points, links and slides to return, or remove the line (the default is every named thing)");
     }
     (
         Model {

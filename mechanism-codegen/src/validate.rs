@@ -158,7 +158,17 @@ pub fn unique_names(model: &Model, errors: &mut Errors) {
 /// Rule: names the generated code needs for itself are not available.
 pub fn reserved_names(model: &Model, errors: &mut Errors) {
     for (name, (_, ident)) in symbols(model) {
-        if RESERVED.contains(&name.as_str()) {
+        if let Some(bare) = name.strip_prefix("r#") {
+            errors.push(
+                ident.span(),
+                format!("raw identifiers are not supported: the generated code builds its names from yours (`pos_{bare}`, `vel_{bare}`), and `r#` cannot stand inside a name; choose a name that is not a Rust keyword, e.g. `{bare}_`"),
+            );
+        } else if name == "T" {
+            errors.push(
+                ident.span(),
+                "`T` is the generated types' scalar parameter (`f32` or `f64`); choose another name",
+            );
+        } else if RESERVED.contains(&name.as_str()) {
             errors.push(
                 ident.span(),
                 format!("`{name}` is reserved for the generated methods' arguments; choose another name"),

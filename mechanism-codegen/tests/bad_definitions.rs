@@ -663,10 +663,28 @@ fn cases() -> Vec<Case> {
             says: &["turn"],
         },
         Case {
+            name: "raw identifier as a point",
+            src: four_bar("    let r#type = point(link3, from A, 10.0, 0 deg);"),
+            at: "let ^r#type",
+            says: &["raw identifiers", "type_"],
+        },
+        Case {
+            name: "raw identifier as a link",
+            src: four_bar("    let D = crank(O4, 30.0, phi) as r#struct;"),
+            at: "as ^r#struct",
+            says: &["raw identifiers", "struct_"],
+        },
+        Case {
+            name: "a point named T",
+            src: four_bar("    let T = point(link3, from A, 10.0, 0 deg);"),
+            at: "let ^T",
+            says: &["scalar parameter"],
+        },
+        Case {
             name: "empty outputs",
             src: four_bar("    outputs { }"),
             at: "^outputs { }",
-            says: &["lists nothing"],
+            says: &["lists nothing", "no force analysis"],
         },
         Case {
             name: "crank radius with a unit of angle",
