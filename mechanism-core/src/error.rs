@@ -187,10 +187,15 @@ impl<T: Real> fmt::Display for Fault<T> {
                 f,
                 "cannot assemble: the known joints are {miss:e} outside the reachable range (bound {reach:e})"
             ),
+            Fault::Singular { det, scale } if scale == T::zero() => write!(
+                f,
+                "singular position: the group's known joints coincide or a length is zero, \
+                 so nothing sets its direction (determinant {det:e} against a zero scale)"
+            ),
             Fault::Singular { det, scale } => write!(
                 f,
                 "singular position: determinant {det:e} against scale {scale:e} (relative {:e})",
-                if scale != T::zero() { det / scale } else { det }
+                det / scale
             ),
             Fault::NonFinite { what } => write!(f, "{what} is not finite"),
             Fault::NonPositive { what, value } => {
@@ -270,6 +275,28 @@ mod tests {
                 value: -0.1f32 as f64
             }
         );
+    }
+
+    #[test]
+    fn display_says_coincident_joints_for_a_zero_scale() {
+        let rrr = crate::dyad::rrr::position(
+            &Point2::new(1.0, 2.0),
+            3.0,
+            &Point2::new(1.0, 2.0),
+            4.0,
+            crate::Mode::Plus,
+        )
+        .unwrap_err();
+        let rpr = crate::dyad::rpr::position(
+            &Point2::new(0.5f32, 0.5),
+            &Point2::new(0.5, 0.5),
+            0.0,
+            crate::Mode::Plus,
+        )
+        .unwrap_err();
+        for text in [rrr.to_string(), rpr.to_string()] {
+            assert!(text.contains("known joints coincide"), "{text}");
+        }
     }
 
     #[test]

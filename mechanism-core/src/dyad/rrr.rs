@@ -208,7 +208,7 @@ fn position_error<T: Real>(d: Vector2<T>, l1: T, l2: T, failed: Check) -> Error<
         (Kind::NonFinite, "RRR joint distance", sum, sum)
     } else {
         match failed {
-            Check::Degenerate => (Kind::Singular, "", T::zero(), sum),
+            Check::Degenerate => (Kind::Singular, "", T::zero(), T::zero()),
             Check::Reach => {
                 let dist = length(&d);
                 let (outer, inner) = (sum - dist, dist - diff);
