@@ -41,6 +41,7 @@ macro_rules! batch {
     (pos; $ty:ident, [$($i:ident),*], [$($p:ident),*], [$($s:ident),*], $q:expr, $w:expr, $a:expr, $bufs:expr, $st:expr) => {{
         paste::paste! {
             let mut o = $bufs.iter_mut().map(|v| v.as_mut_slice());
+            #[allow(unused_mut)]
             let mut nx = || o.next().unwrap();
             [<$ty Batch>] {
                 $([<in_ $i>]: &$q[stringify!($i)],)*
@@ -53,6 +54,7 @@ macro_rules! batch {
     (vel; $ty:ident, [$($i:ident),*], [$($p:ident),*], [$($s:ident),*], $q:expr, $w:expr, $a:expr, $bufs:expr, $st:expr) => {{
         paste::paste! {
             let mut o = $bufs.iter_mut().map(|v| v.as_mut_slice());
+            #[allow(unused_mut)]
             let mut nx = || o.next().unwrap();
             [<$ty Batch>] {
                 $([<in_ $i>]: &$q[stringify!($i)],)*
@@ -68,6 +70,7 @@ macro_rules! batch {
     (acc; $ty:ident, [$($i:ident),*], [$($p:ident),*], [$($s:ident),*], $q:expr, $w:expr, $a:expr, $bufs:expr, $st:expr) => {{
         paste::paste! {
             let mut o = $bufs.iter_mut().map(|v| v.as_mut_slice());
+            #[allow(unused_mut)]
             let mut nx = || o.next().unwrap();
             [<$ty Batch>] {
                 $([<in_ $i>]: &$q[stringify!($i)],)*
@@ -183,8 +186,10 @@ macro_rules! compare {
             let mut cond = Vec::new();
             let mut lane_rejects = 0;
             for k in 0..n {
+                #[allow(unused_mut)]
                 let mut vals: Vec<f64> = Vec::new();
                 let mut c = 0u8;
+                #[allow(unused_mut)]
                 let mut condition = 1.0;
                 scalar_levels!($lv; m, mk, q, w, a, k, vals, c, condition, [$($p),*], [$($s),*]);
                 let got: Vec<f64> = full.iter().map(|v| v[k] as f64).collect();
