@@ -9,7 +9,9 @@
 //! slices, and its statuses are 0 or 1. At the position level there is no
 //! velocity `condition` to scale the error by: it is taken as 1 (the
 //! definitions compared at that level stay away from their singular poses).
-#![allow(dead_code, unused_macros)]
+// Definitions without outputs leave the buffers' closure and the scalar
+// results unread.
+#![allow(dead_code, unused_macros, unused_variables)]
 
 use std::collections::HashMap;
 
@@ -41,7 +43,7 @@ macro_rules! batch {
     (pos; $ty:ident, [$($i:ident),*], [$($p:ident),*], [$($s:ident),*], $q:expr, $w:expr, $a:expr, $bufs:expr, $st:expr) => {{
         paste::paste! {
             let mut o = $bufs.iter_mut().map(|v| v.as_mut_slice());
-            #[allow(unused_mut)]
+            #[allow(unused_mut, unused_variables)]
             let mut nx = || o.next().unwrap();
             [<$ty Batch>] {
                 $([<in_ $i>]: &$q[stringify!($i)],)*
@@ -54,7 +56,7 @@ macro_rules! batch {
     (vel; $ty:ident, [$($i:ident),*], [$($p:ident),*], [$($s:ident),*], $q:expr, $w:expr, $a:expr, $bufs:expr, $st:expr) => {{
         paste::paste! {
             let mut o = $bufs.iter_mut().map(|v| v.as_mut_slice());
-            #[allow(unused_mut)]
+            #[allow(unused_mut, unused_variables)]
             let mut nx = || o.next().unwrap();
             [<$ty Batch>] {
                 $([<in_ $i>]: &$q[stringify!($i)],)*
@@ -70,7 +72,7 @@ macro_rules! batch {
     (acc; $ty:ident, [$($i:ident),*], [$($p:ident),*], [$($s:ident),*], $q:expr, $w:expr, $a:expr, $bufs:expr, $st:expr) => {{
         paste::paste! {
             let mut o = $bufs.iter_mut().map(|v| v.as_mut_slice());
-            #[allow(unused_mut)]
+            #[allow(unused_mut, unused_variables)]
             let mut nx = || o.next().unwrap();
             [<$ty Batch>] {
                 $([<in_ $i>]: &$q[stringify!($i)],)*
@@ -136,9 +138,9 @@ macro_rules! scalar_levels {
                         $($vals.push(v.$s as f64);)*
                         match $m.acceleration(&p, &v, &$mk(&$a, $k)) {
                             Err(_) => $c = 3,
-                            Ok(ac) => {
-                                $($vals.extend([ac.$p.x as f64, ac.$p.y as f64]);)*
-                                $($vals.push(ac.$s as f64);)*
+                            Ok(_ac) => {
+                                $($vals.extend([_ac.$p.x as f64, _ac.$p.y as f64]);)*
+                                $($vals.push(_ac.$s as f64);)*
                             }
                         }
                     }
