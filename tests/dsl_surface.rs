@@ -12,7 +12,7 @@
 //! and the power balance computed from the outputs.
 //!
 //! Definitions that did not compile before their fix: `PosOnlySelfTest`
-//! (self-test helper called `velocity()`), `EmptyOutputs` (structs without a
+//! (self-test helper called `velocity()`), `TorqueOnly` (structs without a
 //! field of type `T`). Two more fixes have unit tests in mechanism-codegen
 //! (a two-input `#[self_test]` without both ranges; a slide named `B_x`
 //! beside a point `B` in the batch API).
