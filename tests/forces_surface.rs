@@ -1,0 +1,543 @@
+//! The force analysis on loaded definitions the zoo (`tests/zoo`) does not
+//! have: forces at joints shared by two links (with `on`), at points of
+//! blocks and at a ground pivot; `force along` a carried guide; couples on
+//! blocks, on group links and on the driven crank; masses with their centres
+//! off the pins of the RRP, RPR, PRP and RPP blocks; a ternary coupler with
+//! three joints and a point load; an actuator-driven boom with a coupled
+//! group and a second actuator whose pivot and base both ride on the boom;
+//! two inputs (two cranks; a crank and a slider); `loads { }` in several
+//! forces and a couple; `params` masses and gravity changed at run time;
+//! masses from 1e-6 kg to 1e6 kg in t, mm, s; poses approaching a singular
+//! force system.
+//!
+//! Every check is independent of the generated code: Newton-Euler for every
+//! body with each reaction applied at the point its doc comment names (the
+//! prismatic couples included), every weight, inertia force and couple and
+//! external load; the power balance from the outputs; f32 against f64.
+//!
+//! Tolerances. Equilibrium and power residuals use the zoo's `TOL` = 1e-13
+//! relative to the largest term of each body (a sum of a handful of products
+//! of generated values, each within a few eps times the conditioning of its
+//! system; the poses checked keep `condition` above 0.05, so a few hundred
+//! eps at most; see `tests/zoo/main.rs`). Each definition's checker is also
+//! run once with one deliberate mistake (a centre of mass moved, a couple
+//! dropped, a force put on the other link of its joint) and must then fail:
+//! the mistakes are at least 1e-3 of the largest term, 1e10 times `TOL`.
+
+#[path = "zoo/common.rs"]
+#[allow(dead_code)]
+mod common;
+
+use common::*;
+use mechanism::{mechanism, Vector2};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+/// `true` when `f` panics (a checker run with a deliberate mistake).
+fn fails(f: impl FnOnce()) -> bool {
+    catch_unwind(AssertUnwindSafe(f)).is_err()
+}
+
+fn unit_at(deg: f64) -> Vector2<f64> {
+    let r = deg.to_radians();
+    Vector2::new(r.cos(), r.sin())
+}
+
+fn zero() -> Vector2<f64> {
+    Vector2::zeros()
+}
+
+// ---------------------------------------------------------------------------
+// 1. Forces at a joint shared by two links, at a ground pivot; couples on the
+//    driven crank and on a group's link.
+
+mechanism! {
+    /// A crank-rocker four-bar (m, kg, N) with forces at the shared joint A
+    /// on each of its two links, at the rocker's end of B, at the crank's
+    /// ground pivot O2 (the crank is the one link with O2), couples on the
+    /// crank and the coupler.
+    pub SharedJoint {
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(0.5, 0.05);
+        let A = crank(O2, 0.12, theta) as crank;
+        let B = rrr(A, 0.45, O4, 0.3, left) as (coupler, rocker);
+        let Gc = point(crank, from O2, 0.05, 10 deg);
+        let G3 = point(coupler, from A, 0.2, 15 deg);
+        let G4 = point(rocker, from O4, 0.14, -5 deg);
+        mass crank { m = 0.4, at = Gc, j = 0.0008 };
+        mass coupler { m = 1.3, at = G3, j = 0.025 };
+        mass rocker { m = 0.9, at = G4, j = 0.008 };
+        gravity (0.0, -9.81);
+        force at A on crank = (6.0, -4.0);
+        force at A on coupler = (-2.0, 7.0);
+        force at B on rocker = (5.0, 3.0);
+        force at O2 = (1.0, 2.0);
+        torque on crank = 2.5;
+        torque on coupler = -1.2;
+    }
+}
+
+/// Mistake 1: the force "at A on crank" put on the coupler instead.
+fn check_shared(s: &SharedJointSolution, w: f64, mistake: bool) {
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let (fa_crank, fa_coupler) = (Vector2::new(6.0, -4.0), Vector2::new(-2.0, 7.0));
+    let (on_crank, on_coupler) = if mistake {
+        (zero(), fa_coupler + fa_crank)
+    } else {
+        (fa_crank, fa_coupler)
+    };
+    Body::default()
+        .force(p.O2, f.r_ground_crank)
+        .force(p.A, -f.r_crank_coupler)
+        .force(p.A, on_crank)
+        .force(p.O2, Vector2::new(1.0, 2.0))
+        .couple(f.drive_theta)
+        .couple(2.5)
+        .inertia(0.4, 0.0008, p.Gc, a.Gc, a.crank, G)
+        .balances("crank");
+    Body::default()
+        .force(p.A, f.r_crank_coupler)
+        .force(p.B, -f.r_coupler_rocker)
+        .force(p.A, on_coupler)
+        .couple(-1.2)
+        .inertia(1.3, 0.025, p.G3, a.G3, a.coupler, G)
+        .balances("coupler");
+    Body::default()
+        .force(p.O4, f.r_ground_rocker)
+        .force(p.B, f.r_coupler_rocker)
+        .force(p.B, Vector2::new(5.0, 3.0))
+        .inertia(0.9, 0.008, p.G4, a.G4, a.rocker, G)
+        .balances("rocker");
+    power_balances(
+        &[
+            f.drive_theta * w,
+            2.5 * w,
+            -1.2 * v.coupler,
+            fa_crank.dot(&v.A),
+            fa_coupler.dot(&v.A),
+            Vector2::new(5.0, 3.0).dot(&v.B),
+            inertial(0.4, 0.0008, v.Gc, a.Gc, v.crank, a.crank, G),
+            inertial(1.3, 0.025, v.G3, a.G3, v.coupler, a.coupler, G),
+            inertial(0.9, 0.008, v.G4, a.G4, v.rocker, a.rocker, G),
+        ],
+        "SharedJoint",
+    );
+    assert!(f.power_residual <= TOL, "{}", f.power_residual);
+}
+
+#[test]
+fn forces_at_a_shared_joint_go_to_the_link_named() {
+    let m = SharedJoint::<f64>::default();
+    let (w, al) = (7.0, -20.0);
+    let mut checked = 0;
+    for k in 0..72 {
+        let q = f64::to_radians(5.0 * k as f64 + 1.0);
+        let s = m
+            .solve(
+                &SharedJointInput { theta: q },
+                &SharedJointInput { theta: w },
+                &SharedJointInput { theta: al },
+            )
+            .unwrap();
+        if s.forces.condition < 0.05 {
+            continue;
+        }
+        checked += 1;
+        check_shared(&s, w, false);
+        if k == 10 {
+            assert!(fails(|| check_shared(&s, w, true)));
+        }
+    }
+    assert!(checked >= 60, "only {checked} of 72 poses checked");
+}
+
+// ---------------------------------------------------------------------------
+// 2. An RRP on an inclined guide: the block's centre off its pin, a force at
+//    a point of the block, a force along the guide, couples on the block
+//    (taken by the guide) and on the rod from `loads`; the block's mass and
+//    gravity (any direction) from `params`, changed at run time.
+
+mechanism! {
+    /// An inclined press (m, kg, N).
+    pub InclinedPress {
+        dof 1;
+        params { gx = 3.0, gy = -9.0, mb = 4.0 }
+        loads { push = 0.0, twist = 0.0 }
+        let O = ground(0.0, 0.0);
+        let line = guide((0.02, -0.05), 20 deg);
+        let A = crank(O, 0.08, theta) as crank;
+        let B = rrp(A, 0.3, line, plus) as (rod, ram) slide x;
+        let Gr = point(rod, from A, 0.1, 5 deg);
+        let Gb = point(ram, from B, (0.03, 0.02));
+        let Pb = point(ram, from B, (-0.04, 0.05));
+        mass rod { m = 0.7, at = Gr, j = 0.006 };
+        mass ram { m = mb, at = Gb, j = 0.01 };
+        gravity (gx, gy);
+        force at Pb = (push, 0.5 * push);
+        force at B on ram along line = -push;
+        torque on ram = twist;
+        torque on rod = 0.5 * twist;
+    }
+}
+
+/// Mistake: the guide's couple dropped (the block's centre is off its pin and
+/// it carries a couple, so the couple is large).
+fn check_press(
+    s: &InclinedPressSolution,
+    m: &InclinedPress<f64>,
+    l: &InclinedPressLoads,
+    w: f64,
+    mistake: bool,
+) {
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let grav = Vector2::new(m.gx, m.gy);
+    let dir = unit_at(20.0);
+    let fp = Vector2::new(l.push, 0.5 * l.push);
+    let along = dir * -l.push;
+    Body::default()
+        .force(p.O, f.r_ground_crank)
+        .force(p.A, -f.r_crank_rod)
+        .couple(f.drive_theta)
+        .balances("crank (massless)");
+    Body::default()
+        .force(p.A, f.r_crank_rod)
+        .force(p.B, -f.r_rod_ram)
+        .couple(0.5 * l.twist)
+        .inertia(0.7, 0.006, p.Gr, a.Gr, a.rod, grav)
+        .balances("rod");
+    let guide = if mistake {
+        mechanism::force::PrismaticReaction::new(f.r_ground_ram.normal, 0.0, &dir)
+    } else {
+        f.r_ground_ram
+    };
+    Body::default()
+        .force(p.B, f.r_rod_ram)
+        .prismatic(&guide, p.B, 1.0)
+        .force(p.Pb, fp)
+        .force(p.B, along)
+        .couple(l.twist)
+        .inertia(m.mb, 0.01, p.Gb, a.Gb, 0.0, grav)
+        .balances("ram");
+    power_balances(
+        &[
+            f.drive_theta * w,
+            0.5 * l.twist * v.rod,
+            fp.dot(&v.Pb),
+            along.dot(&v.B),
+            inertial(0.7, 0.006, v.Gr, a.Gr, v.rod, a.rod, grav),
+            inertial(m.mb, 0.01, v.Gb, a.Gb, 0.0, 0.0, grav),
+        ],
+        "InclinedPress",
+    );
+}
+
+#[test]
+fn press_block_off_its_pin_with_run_time_mass_and_gravity() {
+    let (w, al) = (12.0, 30.0);
+    let variants = [
+        (InclinedPress::<f64>::default(), 150.0, 4.0),
+        (
+            InclinedPress::<f64> {
+                gx: -5.0,
+                gy: 8.0,
+                mb: 9.5,
+                ..InclinedPress::default()
+            },
+            -80.0,
+            -2.5,
+        ),
+    ];
+    for (m, push, twist) in &variants {
+        let l = InclinedPressLoads {
+            push: *push,
+            twist: *twist,
+        };
+        for k in 0..72 {
+            let q = f64::to_radians(5.0 * k as f64 + 2.0);
+            let s = m
+                .solve(
+                    &InclinedPressInput { theta: q },
+                    &InclinedPressInput { theta: w },
+                    &InclinedPressInput { theta: al },
+                    &l,
+                )
+                .unwrap();
+            check_press(&s, m, &l, w, false);
+            if k == 5 {
+                assert!(fails(|| check_press(&s, m, &l, w, true)));
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// 3. RPR (quick return) with an offset slide line, the block's centre off its
+//    pin, a couple on the block and on the lever, a force at the block's pin
+//    (on the block), the crank's centre at its ground pivot.
+
+mechanism! {
+    /// A quick-return lever (m, kg, N).
+    pub QuickReturn {
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(0.0, -0.25);
+        let A = crank(O2, 0.1, theta) as crank;
+        let s = rpr(A, O4, plus, 0.015) as (block, lever);
+        let Gk = point(block, from A, (0.01, -0.008));
+        let D = point(lever, from O4, 0.5, 0 deg);
+        let Gl = point(lever, from O4, 0.25, 3 deg);
+        mass crank { m = 0.5, at = O2, j = 0.002 };
+        mass block { m = 0.3, at = Gk, j = 0.0005 };
+        mass lever { m = 2.2, at = Gl, j = 0.05 };
+        gravity (0.0, -9.81);
+        force at D = (-30.0, 5.0);
+        force at A on block = (2.0, 1.0);
+        torque on block = 0.4;
+        torque on lever = -3.0;
+    }
+}
+
+/// Mistake: the block's centre of mass taken at its pin.
+fn check_quick(s: &QuickReturnSolution, w: f64, mistake: bool) {
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let fd = Vector2::new(-30.0, 5.0);
+    let fa = Vector2::new(2.0, 1.0);
+    let gk = if mistake { p.A } else { p.Gk };
+    Body::default()
+        .force(p.O2, f.r_ground_crank)
+        .force(p.A, -f.r_crank_block)
+        .couple(f.drive_theta)
+        .inertia(0.5, 0.002, p.O2, zero(), a.crank, G)
+        .balances("crank");
+    Body::default()
+        .force(p.A, f.r_crank_block)
+        .prismatic(&f.r_block_lever, p.A, -1.0)
+        .force(p.A, fa)
+        .couple(0.4)
+        .inertia(0.3, 0.0005, gk, a.Gk, a.block, G)
+        .balances("block");
+    Body::default()
+        .force(p.O4, f.r_ground_lever)
+        .prismatic(&f.r_block_lever, p.A, 1.0)
+        .force(p.D, fd)
+        .couple(-3.0)
+        .inertia(2.2, 0.05, p.Gl, a.Gl, a.lever, G)
+        .balances("lever");
+    power_balances(
+        &[
+            f.drive_theta * w,
+            fd.dot(&v.D),
+            fa.dot(&v.A),
+            0.4 * v.block,
+            -3.0 * v.lever,
+            inertial(0.5, 0.002, zero(), zero(), v.crank, a.crank, G),
+            inertial(0.3, 0.0005, v.Gk, a.Gk, v.block, a.block, G),
+            inertial(2.2, 0.05, v.Gl, a.Gl, v.lever, a.lever, G),
+        ],
+        "QuickReturn",
+    );
+    assert!(f.power_residual <= TOL, "{}", f.power_residual);
+}
+
+#[test]
+fn quick_return_block_off_its_pin_balances() {
+    let m = QuickReturn::<f64>::default();
+    let (w, al) = (9.0, 15.0);
+    let mut checked = 0;
+    for k in 0..72 {
+        let q = f64::to_radians(5.0 * k as f64 + 0.5);
+        let s = m
+            .solve(
+                &QuickReturnInput { theta: q },
+                &QuickReturnInput { theta: w },
+                &QuickReturnInput { theta: al },
+            )
+            .unwrap();
+        if s.forces.condition < 0.05 {
+            continue;
+        }
+        checked += 1;
+        check_quick(&s, w, false);
+        if k == 7 {
+            assert!(fails(|| check_quick(&s, w, true)));
+        }
+    }
+    assert!(checked >= 60, "only {checked} of 72 poses checked");
+}
+
+// ---------------------------------------------------------------------------
+// 4. PRP: one guide carried by the crank at 30 degrees to its axis, the
+//    other fixed at 100 degrees; both blocks' centres off the pin; couples on
+//    the turning block and on the one that does not turn; a force at the pin
+//    on block 1; a force along the fixed guide.
+
+mechanism! {
+    /// A skew cross-slide (m, kg, N).
+    pub SkewCross {
+        dof 1;
+        let O = ground(0.0, 0.0);
+        let V = ground(0.25, 0.02);
+        let g2 = guide(V, 100 deg);
+        let A = crank(O, 0.1, phi) as crank;
+        let g1 = guide(A, crank, 30 deg);
+        let C = prp(g1, g2, 0.005, -0.01) as (b1, b2) slide (s1, s2);
+        let Gc = point(crank, from O, 0.03, 0 deg);
+        let G1 = point(b1, from C, (0.02, 0.01));
+        let G2 = point(b2, from C, (-0.01, 0.03));
+        mass crank { m = 0.6, at = Gc, j = 0.001 };
+        mass b1 { m = 0.3, at = G1, j = 0.0004 };
+        mass b2 { m = 1.1, at = G2, j = 0.003 };
+        gravity (0.0, -9.81);
+        force at G2 on b2 along g2 = -15.0;
+        force at C on b1 = (1.0, -2.0);
+        torque on b1 = 0.3;
+        torque on b2 = 0.7;
+        range phi = (-80 deg, 30 deg);
+    }
+}
+
+/// Mistake: block 2's couple (it does not turn, so its guide takes it)
+/// dropped.
+fn check_cross(s: &SkewCrossSolution, w: f64, mistake: bool) {
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let along = unit_at(100.0) * -15.0;
+    let fc = Vector2::new(1.0, -2.0);
+    Body::default()
+        .force(p.O, f.r_ground_crank)
+        .prismatic(&f.r_crank_b1, p.C, -1.0)
+        .couple(f.drive_phi)
+        .inertia(0.6, 0.001, p.Gc, a.Gc, a.crank, G)
+        .balances("crank (carries guide 1)");
+    Body::default()
+        .prismatic(&f.r_crank_b1, p.C, 1.0)
+        .force(p.C, -f.r_b1_b2)
+        .force(p.C, fc)
+        .couple(0.3)
+        .inertia(0.3, 0.0004, p.G1, a.G1, a.crank, G)
+        .balances("b1");
+    Body::default()
+        .force(p.C, f.r_b1_b2)
+        .prismatic(&f.r_ground_b2, p.C, 1.0)
+        .force(p.G2, along)
+        .couple(if mistake { 0.0 } else { 0.7 })
+        .inertia(1.1, 0.003, p.G2, a.G2, 0.0, G)
+        .balances("b2");
+    power_balances(
+        &[
+            f.drive_phi * w,
+            along.dot(&v.G2),
+            fc.dot(&v.C),
+            0.3 * w,
+            inertial(0.6, 0.001, v.Gc, a.Gc, v.crank, a.crank, G),
+            inertial(0.3, 0.0004, v.G1, a.G1, v.crank, a.crank, G),
+            inertial(1.1, 0.003, v.G2, a.G2, 0.0, 0.0, G),
+        ],
+        "SkewCross",
+    );
+    assert!(f.power_residual <= TOL, "{}", f.power_residual);
+}
+
+#[test]
+fn skew_cross_slide_blocks_off_their_pin_balance() {
+    let m = SkewCross::<f64>::default();
+    let (w, al) = (4.0, -6.0);
+    for k in 0..=44 {
+        let q = f64::to_radians(-79.0 + 2.5 * k as f64);
+        let s = m
+            .solve(
+                &SkewCrossInput { phi: q },
+                &SkewCrossInput { phi: w },
+                &SkewCrossInput { phi: al },
+            )
+            .unwrap();
+        assert!(s.forces.condition > 0.05, "{}", s.forces.condition);
+        check_cross(&s, w, false);
+        if k == 3 {
+            assert!(fails(|| check_cross(&s, w, true)));
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// 5. RPP with a moving pin (the crank's tip), a skew slot and an offset
+//    guide line: the block's centre off its pin, a point load on the yoke,
+//    couples on both (neither turns).
+
+mechanism! {
+    /// A skew Scotch yoke (m, kg, N).
+    pub SkewYoke {
+        dof 1;
+        let O = ground(0.0, 0.0);
+        let g = guide((0.0, 0.0), 80 deg);
+        let A = crank(O, 0.1, phi) as crank;
+        let Q = rpp(A, g, -60 deg, 0.02) as (block, yoke) slide (s1, s2);
+        let Gb = point(block, from A, (0.01, 0.005));
+        let Gy = point(yoke, from Q, (0.03, 0.08));
+        let Py = point(yoke, from Q, (-0.05, 0.12));
+        mass block { m = 0.2, at = Gb, j = 0.0002 };
+        mass yoke { m = 2.5, at = Gy, j = 0.02 };
+        gravity (0.0, -9.81);
+        force at Py = (4.0, -25.0);
+        torque on yoke = 1.1;
+        torque on block = -0.2;
+    }
+}
+
+/// Mistake: the slot's reaction applied to the yoke with the wrong sign of
+/// its couple only.
+fn check_yoke(s: &SkewYokeSolution, w: f64, mistake: bool) {
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let fy = Vector2::new(4.0, -25.0);
+    let mut slot = f.r_block_yoke;
+    if mistake {
+        slot.moment = -slot.moment;
+    }
+    Body::default()
+        .force(p.O, f.r_ground_crank)
+        .force(p.A, -f.r_crank_block)
+        .couple(f.drive_phi)
+        .balances("crank (massless)");
+    Body::default()
+        .force(p.A, f.r_crank_block)
+        .prismatic(&f.r_block_yoke, p.A, -1.0)
+        .couple(-0.2)
+        .inertia(0.2, 0.0002, p.Gb, a.Gb, 0.0, G)
+        .balances("block");
+    Body::default()
+        .prismatic(&slot, p.A, 1.0)
+        .prismatic(&f.r_ground_yoke, p.A, 1.0)
+        .force(p.Py, fy)
+        .couple(1.1)
+        .inertia(2.5, 0.02, p.Gy, a.Gy, 0.0, G)
+        .balances("yoke");
+    power_balances(
+        &[
+            f.drive_phi * w,
+            fy.dot(&v.Py),
+            inertial(0.2, 0.0002, v.Gb, a.Gb, 0.0, 0.0, G),
+            inertial(2.5, 0.02, v.Gy, a.Gy, 0.0, 0.0, G),
+        ],
+        "SkewYoke",
+    );
+    assert!(f.power_residual <= TOL, "{}", f.power_residual);
+}
+
+#[test]
+fn skew_yoke_with_a_moving_pin_balances() {
+    let m = SkewYoke::<f64>::default();
+    let (w, al) = (25.0, 100.0);
+    for k in 0..72 {
+        let q = f64::to_radians(5.0 * k as f64 + 1.5);
+        let s = m
+            .solve(
+                &SkewYokeInput { phi: q },
+                &SkewYokeInput { phi: w },
+                &SkewYokeInput { phi: al },
+            )
+            .unwrap();
+        check_yoke(&s, w, false);
+        if k == 9 {
+            assert!(fails(|| check_yoke(&s, w, true)));
+        }
+    }
+}
