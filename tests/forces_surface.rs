@@ -541,3 +541,479 @@ fn skew_yoke_with_a_moving_pin_balances() {
         }
     }
 }
+
+// ---------------------------------------------------------------------------
+// 6. A ternary coupler carrying three joints (A, B and the pin P of a second
+//    RRR group) and a point load at a fourth point Q; forces at P on each of
+//    its two links; a couple on the last link.
+
+mechanism! {
+    /// A Stephenson-type six-bar (m, kg, N).
+    pub TernaryCoupler {
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(0.38, 0.0);
+        let O6 = ground(0.2, 0.45);
+        let A = crank(O2, 0.08, theta) as crank;
+        let B = rrr(A, 0.3, O4, 0.22, left) as (coupler, rocker);
+        let P = point(coupler, from A, 0.15, 40 deg);
+        let Q = point(coupler, from A, 0.22, -20 deg);
+        let E = rrr(P, 0.25, O6, 0.2, right) as (link5, link6);
+        let G3 = point(coupler, from A, 0.14, 10 deg);
+        let G4 = point(rocker, from O4, 0.1, 0 deg);
+        let G5 = point(link5, from P, 0.12, 0 deg);
+        let G6 = point(link6, from O6, 0.1, 0 deg);
+        mass coupler { m = 1.4, at = G3, j = 0.015 };
+        mass rocker { m = 0.8, at = G4, j = 0.004 };
+        mass link5 { m = 0.5, at = G5, j = 0.003 };
+        mass link6 { m = 0.45, at = G6, j = 0.0025 };
+        gravity (0.0, -9.81);
+        force at Q = (0.0, -40.0);
+        force at P on link5 = (3.0, 3.0);
+        force at P on coupler = (-1.0, 4.0);
+        torque on link6 = 0.8;
+    }
+}
+
+/// Mistake: the point load taken at P instead of Q.
+fn check_ternary(s: &TernaryCouplerSolution, w: f64, mistake: bool) {
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let fq = Vector2::new(0.0, -40.0);
+    let (f5, f3) = (Vector2::new(3.0, 3.0), Vector2::new(-1.0, 4.0));
+    let q = if mistake { p.P } else { p.Q };
+    Body::default()
+        .force(p.O2, f.r_ground_crank)
+        .force(p.A, -f.r_crank_coupler)
+        .couple(f.drive_theta)
+        .balances("crank (massless)");
+    Body::default()
+        .force(p.A, f.r_crank_coupler)
+        .force(p.B, -f.r_coupler_rocker)
+        .force(p.P, -f.r_coupler_link5)
+        .force(q, fq)
+        .force(p.P, f3)
+        .inertia(1.4, 0.015, p.G3, a.G3, a.coupler, G)
+        .balances("coupler (ternary)");
+    Body::default()
+        .force(p.O4, f.r_ground_rocker)
+        .force(p.B, f.r_coupler_rocker)
+        .inertia(0.8, 0.004, p.G4, a.G4, a.rocker, G)
+        .balances("rocker");
+    Body::default()
+        .force(p.P, f.r_coupler_link5)
+        .force(p.E, -f.r_link5_link6)
+        .force(p.P, f5)
+        .inertia(0.5, 0.003, p.G5, a.G5, a.link5, G)
+        .balances("link5");
+    Body::default()
+        .force(p.O6, f.r_ground_link6)
+        .force(p.E, f.r_link5_link6)
+        .couple(0.8)
+        .inertia(0.45, 0.0025, p.G6, a.G6, a.link6, G)
+        .balances("link6");
+    power_balances(
+        &[
+            f.drive_theta * w,
+            fq.dot(&v.Q),
+            (f5 + f3).dot(&v.P),
+            0.8 * v.link6,
+            inertial(1.4, 0.015, v.G3, a.G3, v.coupler, a.coupler, G),
+            inertial(0.8, 0.004, v.G4, a.G4, v.rocker, a.rocker, G),
+            inertial(0.5, 0.003, v.G5, a.G5, v.link5, a.link5, G),
+            inertial(0.45, 0.0025, v.G6, a.G6, v.link6, a.link6, G),
+        ],
+        "TernaryCoupler",
+    );
+    assert!(f.power_residual <= TOL, "{}", f.power_residual);
+}
+
+#[test]
+fn ternary_coupler_with_a_point_load_balances() {
+    let m = TernaryCoupler::<f64>::default();
+    let (w, al) = (6.0, 10.0);
+    let mut checked = 0;
+    for k in 0..72 {
+        let q = f64::to_radians(5.0 * k as f64 + 0.5);
+        let s = m
+            .solve(
+                &TernaryCouplerInput { theta: q },
+                &TernaryCouplerInput { theta: w },
+                &TernaryCouplerInput { theta: al },
+            )
+            .unwrap();
+        if s.forces.condition < 0.05 {
+            continue;
+        }
+        checked += 1;
+        check_ternary(&s, w, false);
+        if k == 12 {
+            assert!(fails(|| check_ternary(&s, w, true)));
+        }
+    }
+    assert!(checked >= 60, "only {checked} of 72 poses checked");
+}
+
+// ---------------------------------------------------------------------------
+// 7. Two cranks (a five-bar): two driving torques, loads on both sides, a
+//    force at the tip of one crank (on that crank), at the middle joint on
+//    link 4, couples on both cranks.
+
+mechanism! {
+    /// A loaded five-bar with two motors (m, kg, N).
+    pub TwinMotor {
+        dof 2;
+        let O1 = ground(0.0, 0.0);
+        let O2 = ground(0.2, 0.0);
+        let A = crank(O1, 0.06, t1) as left_crank;
+        let B = crank(O2, 0.06, t2) as right_crank;
+        let C = rrr(A, 0.2, B, 0.2, left) as (l3, l4);
+        let G1 = point(left_crank, from O1, 0.03, 0 deg);
+        let G2 = point(right_crank, from O2, 0.03, 0 deg);
+        let G3 = point(l3, from A, 0.1, 0 deg);
+        let G4 = point(l4, from B, 0.1, 0 deg);
+        mass left_crank { m = 0.3, at = G1, j = 0.0002 };
+        mass right_crank { m = 0.35, at = G2, j = 0.00025 };
+        mass l3 { m = 0.5, at = G3, j = 0.002 };
+        mass l4 { m = 0.55, at = G4, j = 0.0022 };
+        gravity (0.0, -9.81);
+        force at C on l4 = (10.0, -20.0);
+        force at B on right_crank = (-4.0, 2.0);
+        torque on left_crank = -0.7;
+        torque on right_crank = 0.4;
+    }
+}
+
+/// Mistake: the two driving torques swapped.
+fn check_twin(s: &TwinMotorSolution, w: (f64, f64), mistake: bool) {
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let (fc, fb) = (Vector2::new(10.0, -20.0), Vector2::new(-4.0, 2.0));
+    let (d1, d2) = if mistake {
+        (f.drive_t2, f.drive_t1)
+    } else {
+        (f.drive_t1, f.drive_t2)
+    };
+    Body::default()
+        .force(p.O1, f.r_ground_left_crank)
+        .force(p.A, -f.r_left_crank_l3)
+        .couple(d1)
+        .couple(-0.7)
+        .inertia(0.3, 0.0002, p.G1, a.G1, a.left_crank, G)
+        .balances("left crank");
+    Body::default()
+        .force(p.O2, f.r_ground_right_crank)
+        .force(p.B, -f.r_right_crank_l4)
+        .force(p.B, fb)
+        .couple(d2)
+        .couple(0.4)
+        .inertia(0.35, 0.00025, p.G2, a.G2, a.right_crank, G)
+        .balances("right crank");
+    Body::default()
+        .force(p.A, f.r_left_crank_l3)
+        .force(p.C, -f.r_l3_l4)
+        .inertia(0.5, 0.002, p.G3, a.G3, a.l3, G)
+        .balances("l3");
+    Body::default()
+        .force(p.B, f.r_right_crank_l4)
+        .force(p.C, f.r_l3_l4)
+        .force(p.C, fc)
+        .inertia(0.55, 0.0022, p.G4, a.G4, a.l4, G)
+        .balances("l4");
+    power_balances(
+        &[
+            f.drive_t1 * w.0,
+            f.drive_t2 * w.1,
+            -0.7 * w.0,
+            0.4 * w.1,
+            fc.dot(&v.C),
+            fb.dot(&v.B),
+            inertial(0.3, 0.0002, v.G1, a.G1, v.left_crank, a.left_crank, G),
+            inertial(0.35, 0.00025, v.G2, a.G2, v.right_crank, a.right_crank, G),
+            inertial(0.5, 0.002, v.G3, a.G3, v.l3, a.l3, G),
+            inertial(0.55, 0.0022, v.G4, a.G4, v.l4, a.l4, G),
+        ],
+        "TwinMotor",
+    );
+    assert!(f.power_residual <= TOL, "{}", f.power_residual);
+}
+
+#[test]
+fn five_bar_with_two_motors_balances() {
+    let m = TwinMotor::<f64>::default();
+    let (w, al) = ((5.0, -3.0), (20.0, 8.0));
+    let mut checked = 0;
+    for k in 0..144 {
+        let (q1, q2) = (
+            f64::to_radians(5.0 * k as f64 + 1.0),
+            f64::to_radians(-7.0 * k as f64 + 40.0),
+        );
+        let s = m
+            .solve(
+                &TwinMotorInput { t1: q1, t2: q2 },
+                &TwinMotorInput { t1: w.0, t2: w.1 },
+                &TwinMotorInput { t1: al.0, t2: al.1 },
+            )
+            .unwrap();
+        if s.forces.condition < 0.05 {
+            continue;
+        }
+        checked += 1;
+        check_twin(&s, w, false);
+        if k == 3 {
+            assert!(fails(|| check_twin(&s, w, true)));
+        }
+    }
+    assert!(checked >= 120, "only {checked} of 144 poses checked");
+}
+
+// ---------------------------------------------------------------------------
+// 8. A crank and a slider (two inputs of different kinds): a driving torque
+//    and a driving force; gravity along the inclined slide (from params),
+//    the slider's mass from params; `loads` in two forces and a couple.
+
+mechanism! {
+    /// A crank and an inclined piston joined by an RRR (m, kg, N).
+    pub CrankAndPiston {
+        dof 2;
+        params { g = 9.81, mp = 0.8 }
+        loads { cut = 0.0, hold = 0.0 }
+        let O = ground(0.0, 0.0);
+        let line = guide((0.3, -0.1), 30 deg);
+        let P = slider(line, s) as piston;
+        let A = crank(O, 0.08, theta) as crank;
+        let C = rrr(A, 0.3, P, 0.25, left) as (l3, l4);
+        let Gp = point(piston, from P, (0.02, -0.01));
+        let G3 = point(l3, from A, 0.15, 0 deg);
+        let G4 = point(l4, from P, 0.1, 0 deg);
+        mass piston { m = mp, at = Gp, j = 0.001 };
+        mass l3 { m = 0.4, at = G3, j = 0.003 };
+        mass l4 { m = 0.35, at = G4, j = 0.002 };
+        mass crank { m = 0.2, at = A };
+        gravity (g * 0.8660254037844386, g * 0.5);
+        force at P on piston along line = -cut;
+        force at C on l3 = (hold, -cut);
+        torque on crank = -hold;
+        range s = (-0.1, 0.1);
+    }
+}
+
+/// Mistake: the piston's weight left out (gravity along the slide: the
+/// drive takes all of it).
+fn check_crank_piston(
+    s: &CrankAndPistonSolution,
+    m: &CrankAndPiston<f64>,
+    l: &CrankAndPistonLoads,
+    r: &CrankAndPistonInput,
+    mistake: bool,
+) {
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let dir = unit_at(30.0);
+    let grav = dir * m.g;
+    let along = dir * -l.cut;
+    let fc = Vector2::new(l.hold, -l.cut);
+    let gp = if mistake { zero() } else { grav };
+    Body::default()
+        .prismatic(&f.r_ground_piston, p.P, 1.0)
+        .force(p.P, dir * f.drive_s)
+        .force(p.P, -f.r_piston_l4)
+        .force(p.P, along)
+        .inertia(m.mp, 0.001, p.Gp, a.Gp, 0.0, gp)
+        .balances("piston");
+    Body::default()
+        .force(p.O, f.r_ground_crank)
+        .force(p.A, -f.r_crank_l3)
+        .couple(f.drive_theta)
+        .couple(-l.hold)
+        .inertia(0.2, 0.0, p.A, a.A, 0.0, grav)
+        .balances("crank");
+    Body::default()
+        .force(p.A, f.r_crank_l3)
+        .force(p.C, -f.r_l3_l4)
+        .force(p.C, fc)
+        .inertia(0.4, 0.003, p.G3, a.G3, a.l3, grav)
+        .balances("l3");
+    Body::default()
+        .force(p.P, f.r_piston_l4)
+        .force(p.C, f.r_l3_l4)
+        .inertia(0.35, 0.002, p.G4, a.G4, a.l4, grav)
+        .balances("l4");
+    power_balances(
+        &[
+            f.drive_theta * r.theta,
+            f.drive_s * r.s,
+            -l.hold * r.theta,
+            along.dot(&v.P),
+            fc.dot(&v.C),
+            inertial(m.mp, 0.001, v.Gp, a.Gp, 0.0, 0.0, grav),
+            inertial(0.2, 0.0, v.A, a.A, 0.0, 0.0, grav),
+            inertial(0.4, 0.003, v.G3, a.G3, v.l3, a.l3, grav),
+            inertial(0.35, 0.002, v.G4, a.G4, v.l4, a.l4, grav),
+        ],
+        "CrankAndPiston",
+    );
+    assert!(f.power_residual <= TOL, "{}", f.power_residual);
+}
+
+#[test]
+fn crank_and_piston_two_drives_with_gravity_along_the_slide() {
+    let r = CrankAndPistonInput {
+        theta: 4.0,
+        s: 0.3,
+    };
+    let acc = CrankAndPistonInput {
+        theta: -10.0,
+        s: 2.0,
+    };
+    let variants = [
+        (CrankAndPiston::<f64>::default(), 35.0, 2.0),
+        (
+            CrankAndPiston::<f64> {
+                g: 3.7,
+                mp: 6.0,
+                ..CrankAndPiston::default()
+            },
+            -12.0,
+            0.0,
+        ),
+    ];
+    let mut checked = 0;
+    for (m, cut, hold) in &variants {
+        let l = CrankAndPistonLoads {
+            cut: *cut,
+            hold: *hold,
+        };
+        for k in 0..72 {
+            for j in 0..5 {
+                let q = CrankAndPistonInput {
+                    theta: f64::to_radians(5.0 * k as f64 + 0.5),
+                    s: -0.1 + 0.05 * j as f64,
+                };
+                let s = m.solve(&q, &r, &acc, &l).unwrap();
+                if s.forces.condition < 0.05 {
+                    continue;
+                }
+                checked += 1;
+                check_crank_piston(&s, m, &l, &r, false);
+                if k == 4 && j == 2 {
+                    assert!(fails(|| check_crank_piston(&s, m, &l, &r, true)));
+                }
+            }
+        }
+    }
+    assert!(checked >= 600, "only {checked} of 720 poses checked");
+}
+
+// ---------------------------------------------------------------------------
+// 9. An actuator-driven boom that also drives a coupled RRR group (a four-bar
+//    whose input link is the boom), and a stick driven by a second actuator
+//    whose pivot E and base F both ride on the boom.
+
+mechanism! {
+    /// A two-cylinder arm (m, kg, N).
+    pub TwoCylinderArm {
+        dof 2;
+        let A = ground(0.0, 0.0);
+        let B = ground(0.6, -0.3);
+        let O6 = ground(1.2, -0.3);
+        let C = actuator(A, 1.0, B, len1, left) as (boom, cyl1);
+        let E = point(boom, from A, 2.0, 0 deg);
+        let F = point(boom, from A, 1.4, 12 deg);
+        let D = point(boom, from A, 0.8, -15 deg);
+        let H = actuator(E, 0.4, F, len2, right) as (stick, cyl2);
+        let Tip = point(stick, from E, 1.2, 20 deg);
+        let K = rrr(D, 0.8, O6, 0.7, right) as (link5, link6);
+        let Gb = point(boom, from A, 1.1, 4 deg);
+        let Gs = point(stick, from E, 0.5, 10 deg);
+        let G5 = point(link5, from D, 0.35, 0 deg);
+        let G6 = point(link6, from O6, 0.3, 0 deg);
+        mass boom { m = 150.0, at = Gb, j = 50.0 };
+        mass stick { m = 60.0, at = Gs, j = 8.0 };
+        mass link5 { m = 12.0, at = G5, j = 0.5 };
+        mass link6 { m = 10.0, at = G6, j = 0.3 };
+        gravity (0.0, -9.81);
+        force at Tip = (200.0, -3000.0);
+        torque on link6 = 50.0;
+        range len1 = (0.9, 1.3);
+        range len2 = (0.45, 0.8);
+    }
+}
+
+/// Mistake: the second cylinder's reaction on the boom (at its base F) left
+/// out.
+fn check_arm(s: &TwoCylinderArmSolution, r: &TwoCylinderArmInput, mistake: bool) {
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let ft = Vector2::new(200.0, -3000.0);
+    let u1 = (p.C - p.B) / (p.C - p.B).norm();
+    let u2 = (p.H - p.F) / (p.H - p.F).norm();
+    let base = if mistake { zero() } else { -u2 * f.drive_len2 };
+    Body::default()
+        .force(p.A, f.r_ground_boom)
+        .force(p.C, u1 * f.drive_len1)
+        .force(p.E, -f.r_boom_stick)
+        .force(p.F, base)
+        .force(p.D, -f.r_boom_link5)
+        .inertia(150.0, 50.0, p.Gb, a.Gb, a.boom, G)
+        .balances("boom");
+    Body::default()
+        .force(p.E, f.r_boom_stick)
+        .force(p.H, u2 * f.drive_len2)
+        .force(p.Tip, ft)
+        .inertia(60.0, 8.0, p.Gs, a.Gs, a.stick, G)
+        .balances("stick");
+    Body::default()
+        .force(p.D, f.r_boom_link5)
+        .force(p.K, -f.r_link5_link6)
+        .inertia(12.0, 0.5, p.G5, a.G5, a.link5, G)
+        .balances("link5");
+    Body::default()
+        .force(p.O6, f.r_ground_link6)
+        .force(p.K, f.r_link5_link6)
+        .couple(50.0)
+        .inertia(10.0, 0.3, p.G6, a.G6, a.link6, G)
+        .balances("link6");
+    power_balances(
+        &[
+            f.drive_len1 * r.len1,
+            f.drive_len2 * r.len2,
+            ft.dot(&v.Tip),
+            50.0 * v.link6,
+            inertial(150.0, 50.0, v.Gb, a.Gb, v.boom, a.boom, G),
+            inertial(60.0, 8.0, v.Gs, a.Gs, v.stick, a.stick, G),
+            inertial(12.0, 0.5, v.G5, a.G5, v.link5, a.link5, G),
+            inertial(10.0, 0.3, v.G6, a.G6, v.link6, a.link6, G),
+        ],
+        "TwoCylinderArm",
+    );
+    assert!(f.power_residual <= TOL, "{}", f.power_residual);
+}
+
+#[test]
+fn boom_with_a_coupled_group_and_a_riding_cylinder_balances() {
+    let m = TwoCylinderArm::<f64>::default();
+    let r = TwoCylinderArmInput {
+        len1: 0.05,
+        len2: -0.08,
+    };
+    let acc = TwoCylinderArmInput {
+        len1: 0.2,
+        len2: 0.4,
+    };
+    let mut checked = 0;
+    for i in 0..=8 {
+        for j in 0..=7 {
+            let q = TwoCylinderArmInput {
+                len1: 0.9 + 0.05 * i as f64,
+                len2: 0.45 + 0.05 * j as f64,
+            };
+            let s = m.solve(&q, &r, &acc).unwrap();
+            if s.forces.condition < 0.05 {
+                continue;
+            }
+            checked += 1;
+            check_arm(&s, &r, false);
+            if i == 4 && j == 3 {
+                assert!(fails(|| check_arm(&s, &r, true)));
+            }
+        }
+    }
+    assert!(checked >= 60, "only {checked} of 72 poses checked");
+}
