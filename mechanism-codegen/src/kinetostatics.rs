@@ -59,6 +59,46 @@ pub fn roots(model: &Model, plan: &Plan) -> Vec<usize> {
     roots
 }
 
+/// Compile errors for groups and drivers joined to an actuator's cylinder (at
+/// a point of it or on a guide it carries). The force analysis treats the
+/// cylinder as a massless two-force member (its force along its axis is the
+/// drive) and solves no equations for it, so a reaction passed to it would be
+/// lost and every effort behind it wrong; the kinematics are fine, so this is
+/// an error of the force analysis only.
+fn cylinder_joints(model: &Model, plan: &Plan) -> TokenStream {
+    let cylinders: BTreeSet<String> = model
+        .stmts
+        .iter()
+        .filter(|s| matches!(s.kind, Kind::Actuator { .. }))
+        .filter_map(|s| s.links.get(1).map(Ident::to_string))
+        .collect();
+    let mut errors = TokenStream::new();
+    for stmt in &model.stmts {
+        if matches!(
+            stmt.kind,
+            Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. }
+        ) {
+            continue;
+        }
+        for r in crate::plan::references(stmt) {
+            let name = r.to_string();
+            let (body, what) = match (plan.body_of_point(&name), plan.body_of_guide(&name)) {
+                (Some(b), _) => (b, "a point of"),
+                (None, Some(b)) => (b, "a guide carried by"),
+                (None, None) => continue,
+            };
+            if cylinders.contains(&body) {
+                let msg = format!(
+                    "`{name}` is {what} the actuator's cylinder `{body}`, which the force analysis takes as a massless two-force member (it carries only its axial force): `{}` cannot be joined to it there; join it to the link the actuator drives or to the ground, or leave out the force analysis (no `mass`, `force`, `torque`)",
+                    stmt.name
+                );
+                errors.extend(quote::quote_spanned!(r.span()=> ::core::compile_error!(#msg);));
+            }
+        }
+    }
+    errors
+}
+
 /// A reaction field of the generated forces struct.
 struct Reaction {
     name: Ident,
@@ -549,7 +589,9 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
             quote!(, loads),
         )
     };
+    let cylinder_errors = cylinder_joints(model, plan);
     let items = quote! {
+        #cylinder_errors
         #[doc = #forces_doc]
         #[derive(Clone, Copy, Debug, PartialEq)]
         #[allow(non_snake_case)]
@@ -587,5 +629,53 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
         methods,
         loads_param,
         loads_arg,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use proc_macro2::TokenStream;
+    use std::str::FromStr;
+
+    /// The messages of the `compile_error!`s in the expansion of `src`.
+    fn errors(src: &str) -> Vec<String> {
+        let out = crate::expand(TokenStream::from_str(src).unwrap()).to_string();
+        out.split("compile_error !")
+            .skip(1)
+            .map(|rest| rest.split(';').next().unwrap_or("").to_string())
+            .collect()
+    }
+
+    /// A boom lifted by a cylinder, and an RRR group pinned at `PIN`.
+    fn arm(pin: &str) -> String {
+        format!(
+            "pub Arm {{
+                let A = ground(0.0, 0.0);
+                let B = ground(0.6, -0.3);
+                let O6 = ground(1.2, 0.2);
+                let C = actuator(A, 1.0, B, len, left) as (boom, cyl);
+                let M = point(cyl, from B, 0.3, 0 deg);
+                let N = point(boom, from A, 0.5, 0 deg);
+                let K = rrr({pin}, 0.8, O6, 0.7, right) as (link5, link6);
+                mass link6 {{ m = 10.0, at = K }};
+                range len = (0.9, 1.3);
+            }}"
+        )
+    }
+
+    #[test]
+    fn a_group_pinned_to_an_actuators_cylinder_is_an_error() {
+        let on_cylinder = errors(&arm("M"));
+        assert_eq!(on_cylinder.len(), 1, "{on_cylinder:?}");
+        assert!(
+            on_cylinder[0].contains("cylinder `cyl`")
+                && on_cylinder[0].contains("two-force member"),
+            "{on_cylinder:?}"
+        );
+        // Pinned to the boom instead: no error.
+        assert!(errors(&arm("N")).is_empty());
+        // Without a force analysis the cylinder's point is fine.
+        let kinematic = arm("M").replace("mass link6 { m = 10.0, at = K };", "");
+        assert!(errors(&kinematic).is_empty());
     }
 }
