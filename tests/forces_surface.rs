@@ -855,10 +855,7 @@ fn check_crank_piston(
 
 #[test]
 fn crank_and_piston_two_drives_with_gravity_along_the_slide() {
-    let r = CrankAndPistonInput {
-        theta: 4.0,
-        s: 0.3,
-    };
+    let r = CrankAndPistonInput { theta: 4.0, s: 0.3 };
     let acc = CrankAndPistonInput {
         theta: -10.0,
         s: 2.0,
@@ -1016,4 +1013,123 @@ fn boom_with_a_coupled_group_and_a_riding_cylinder_balances() {
         }
     }
     assert!(checked >= 60, "only {checked} of 72 poses checked");
+}
+
+// ---------------------------------------------------------------------------
+// 10. f32 powers that overflow: a finite 1e38 N force at a tip moving at
+//     10 m/s has a power of 1e39 W, beyond f32; the reactions are finite,
+//     so the result is `Ok` and its residual must be a number, not NaN.
+
+mechanism! {
+    /// A crank with a huge load (m, N).
+    pub HugeLoad {
+        dof 1;
+        loads { f = 0.0 }
+        let O = ground(0.0, 0.0);
+        let A = crank(O, 0.1, th) as crank;
+        force at A = (f, f);
+    }
+}
+
+#[test]
+fn overflowing_f32_powers_give_a_residual_not_nan() {
+    let m = HugeLoad::<f32>::default();
+    for (f, w) in [(1e38f32, 100.0f32), (3.4e38, 3e15), (1e30, 1.0)] {
+        let s = m
+            .solve(
+                &HugeLoadInput { th: 0.5 },
+                &HugeLoadInput { th: w },
+                &HugeLoadInput { th: 0.0 },
+                &HugeLoadLoads { f },
+            )
+            .unwrap();
+        // The drive balances the load's moment: its power is the load's
+        // with the opposite sign, so the residual is a few f32 eps (1.2e-7)
+        // of the largest term: 8 eps leaves room for the two products and
+        // the sum.
+        assert!(
+            s.forces.power_residual <= 1e-6,
+            "f = {f}, w = {w}: {}",
+            s.forces.power_residual
+        );
+    }
+}
+
+// ---------------------------------------------------------------------------
+// 11. A slider driven along a guide carried by a crank (two inputs): the
+//     slider's guide reaction and its drive's reaction load the crank.
+
+mechanism! {
+    /// A telescopic arm (m, kg, N): a block driven along the crank's line.
+    pub Telescope {
+        dof 2;
+        let O = ground(0.0, 0.0);
+        let A = crank(O, 0.1, th) as crank;
+        let line = guide(A, crank, 10 deg);
+        let P = slider(line, s, 0.01) as block;
+        let Gb = point(block, from P, (0.01, 0.02));
+        let Gc = point(crank, from O, 0.05, 0 deg);
+        mass block { m = 1.2, at = Gb, j = 0.01 };
+        mass crank { m = 0.9, at = Gc, j = 0.004 };
+        gravity (0.0, -9.81);
+        force at Gb on block = (3.0, 4.0);
+        force at P on block along line = -6.0;
+        torque on block = 0.25;
+        range s = (0.0, 0.2);
+    }
+}
+
+/// Mistake: the block's couple (it turns with the crank) dropped.
+fn check_telescope(s: &TelescopeSolution, r: &TelescopeInput, mistake: bool) {
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let dir = unit_at(p.crank.to_degrees() + 10.0);
+    let (fg, along) = (Vector2::new(3.0, 4.0), dir * -6.0);
+    Body::default()
+        .force(p.O, f.r_ground_crank)
+        .prismatic(&f.r_crank_block, p.P, -1.0)
+        .force(p.P, dir * -f.drive_s)
+        .couple(f.drive_th)
+        .inertia(0.9, 0.004, p.Gc, a.Gc, a.crank, G)
+        .balances("crank (carries the line)");
+    Body::default()
+        .prismatic(&f.r_crank_block, p.P, 1.0)
+        .force(p.P, dir * f.drive_s)
+        .force(p.Gb, fg)
+        .force(p.P, along)
+        .couple(if mistake { 0.0 } else { 0.25 })
+        .inertia(1.2, 0.01, p.Gb, a.Gb, a.crank, G)
+        .balances("block");
+    power_balances(
+        &[
+            f.drive_th * r.th,
+            f.drive_s * r.s,
+            fg.dot(&v.Gb),
+            along.dot(&v.P),
+            0.25 * r.th,
+            inertial(0.9, 0.004, v.Gc, a.Gc, v.crank, a.crank, G),
+            inertial(1.2, 0.01, v.Gb, a.Gb, v.crank, a.crank, G),
+        ],
+        "Telescope",
+    );
+    assert!(f.power_residual <= TOL, "{}", f.power_residual);
+}
+
+#[test]
+fn slider_on_a_carried_guide_loads_the_crank() {
+    let m = Telescope::<f64>::default();
+    let r = TelescopeInput { th: 3.0, s: -0.4 };
+    let acc = TelescopeInput { th: 5.0, s: 1.5 };
+    for k in 0..72 {
+        for j in 0..=4 {
+            let q = TelescopeInput {
+                th: f64::to_radians(5.0 * k as f64 + 0.5),
+                s: 0.05 * j as f64,
+            };
+            let s = m.solve(&q, &r, &acc).unwrap();
+            check_telescope(&s, &r, false);
+            if k == 1 && j == 1 {
+                assert!(fails(|| check_telescope(&s, &r, true)));
+            }
+        }
+    }
 }

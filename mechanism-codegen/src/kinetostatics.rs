@@ -115,7 +115,9 @@ struct ForceEmitter<'a> {
     loaded: BTreeSet<String>,
     code: TokenStream,
     /// Power terms (expressions) for the balance.
-    power: Vec<TokenStream>,
+    /// Power terms for the balance: the two factors of each product and
+    /// whether it is a dot product (`true`) or a product of scalars.
+    power: Vec<(TokenStream, TokenStream, bool)>,
 }
 
 impl ForceEmitter<'_> {
@@ -241,17 +243,15 @@ impl ForceEmitter<'_> {
                     let j = j.emit();
                     let c = format_ident!("pw_inertia_couple_{}", link);
                     self.code.extend(quote!(let #c = -(#j * #alpha);));
-                    self.power.push(quote!(#c * #w));
+                    self.power.push((quote!(#c), w, false));
                     Some(quote!(#c))
                 }
                 _ => None,
             };
             if let Some(v) = &v_g {
-                self.power
-                    .push(quote!(::mechanism::geometry::dot(&#inertia_force, &#v)));
+                self.power.push((quote!(#inertia_force), v.clone(), true));
                 if k.gravity.is_some() {
-                    self.power
-                        .push(quote!(::mechanism::geometry::dot(&#weight, &#v)));
+                    self.power.push((quote!(#weight), v.clone(), true));
                 }
             }
             if !force_terms.is_empty() {
@@ -283,8 +283,7 @@ impl ForceEmitter<'_> {
             };
             self.code.extend(quote!(let #local = #value;));
             if let Some(v) = self.velocity(&f.at) {
-                self.power
-                    .push(quote!(::mechanism::geometry::dot(&#local, &#v)));
+                self.power.push((quote!(#local), v, true));
             }
             self.force_on(&link, quote!(#local), &f.at);
         }
@@ -293,7 +292,7 @@ impl ForceEmitter<'_> {
             let value = t.value.emit();
             self.code.extend(quote!(let #local = #value;));
             if let Some((w, _)) = self.rates_of(&t.on) {
-                self.power.push(quote!(#local * #w));
+                self.power.push((quote!(#local), w, false));
             }
             self.add(
                 &t.on.to_string(),
@@ -359,7 +358,8 @@ impl ForceEmitter<'_> {
                 reactions.push(revolute(&body, &links[0], pivot, quote!(pivot)));
                 let mut d = drive(input, &format!("Driving torque on `{}` (input `{input}`; force x length units, counter-clockwise positive): the balancing moment.", links[0]));
                 d.value = quote!(#rx.torque);
-                self.power.push(quote!(#rx.torque * vel.rates.#input));
+                self.power
+                    .push((quote!(#rx.torque), quote!(vel.rates.#input), false));
                 reactions.push(d);
             }
             Kind::Slider { guide, input, .. } => {
@@ -374,7 +374,8 @@ impl ForceEmitter<'_> {
                 reactions.push(prismatic(&body, &links[0], name, quote!(guide)));
                 let mut d = drive(input, &format!("Driving force on `{}` along its guide (input `{input}`; force units, positive along the guide's direction).", links[0]));
                 d.value = quote!(#rx.drive);
-                self.power.push(quote!(#rx.drive * vel.rates.#input));
+                self.power
+                    .push((quote!(#rx.drive), quote!(vel.rates.#input), false));
                 reactions.push(d);
             }
             Kind::Actuator { a, b, input, .. } => {
@@ -389,7 +390,8 @@ impl ForceEmitter<'_> {
                 reactions.push(revolute(&body_a, &links[0], a, quote!(a)));
                 let mut d = drive(input, &format!("Axial force of the actuator `{}` (input `{input}`; force units, positive when it pushes its ends apart).", links[1]));
                 d.value = quote!(#rx.axial);
-                self.power.push(quote!(#rx.axial * vel.rates.#input));
+                self.power
+                    .push((quote!(#rx.axial), quote!(vel.rates.#input), false));
                 conditions.push(quote!(#rx.min_pivot_ratio));
                 reactions.push(d);
             }
@@ -531,7 +533,23 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
     let terms: Vec<Ident> = (0..em.power.len())
         .map(|k| format_ident!("pw_{}", k))
         .collect();
-    let power_exprs = &em.power;
+    // Each term as computed, and with both factors scaled by 2^-64 (exact
+    // but for underflow of terms far below the largest) for when a product
+    // overflows `T` (an `f32` force of 1e38 N at 10 m/s).
+    let product = |(a, b, dot): &(TokenStream, TokenStream, bool), k: Option<&TokenStream>| {
+        let (a, b) = match k {
+            None => (a.clone(), b.clone()),
+            Some(k) => (quote!((#a * #k)), quote!((#b * #k))),
+        };
+        if *dot {
+            quote!(::mechanism::geometry::dot(&#a, &#b))
+        } else {
+            quote!(#a * #b)
+        }
+    };
+    let pw_k = quote!(pw_k);
+    let power_exprs: Vec<TokenStream> = em.power.iter().map(|t| product(t, None)).collect();
+    let scaled_exprs: Vec<TokenStream> = em.power.iter().map(|t| product(t, Some(&pw_k))).collect();
     let power = if terms.is_empty() {
         lit(0.0)
     } else {
@@ -545,15 +563,36 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
         // The largest |term| by comparisons (`RealField::max` would call
         // libm's `fmaxf`, about 20 instructions a call on a Cortex-M4F); a
         // NaN term is skipped, as `max` skips it, and shows in the sum.
-        quote! {{
-            #(let #terms = #power_exprs;)*
+        let residual = quote! {{
             let pw_scale = [#(::mechanism::geometry::abs(#terms)),*]
                 .into_iter()
                 .fold(<T as ::mechanism::Real>::lit(0.0), |m, a| if a > m { a } else { m });
-            if pw_scale > <T as ::mechanism::Real>::lit(0.0) {
-                ::mechanism::geometry::abs(#sum) / pw_scale
+            let pw_sum = #sum;
+            if !(pw_scale.finite() && pw_sum.finite()) {
+                ::core::option::Option::None
+            } else if pw_scale > <T as ::mechanism::Real>::lit(0.0) {
+                ::core::option::Option::Some(::mechanism::geometry::abs(pw_sum) / pw_scale)
             } else {
-                <T as ::mechanism::Real>::lit(0.0)
+                ::core::option::Option::Some(<T as ::mechanism::Real>::lit(0.0))
+            }
+        }};
+        // Reactions, loads and rates are finite here (every group checks
+        // them), so only an overflowing product makes a term infinite; the
+        // scaled terms cannot overflow unless both factors are within 2^64
+        // of `T`'s largest value, when 1 (unbalanced) is reported rather
+        // than a NaN.
+        quote! {{
+            #(let #terms = #power_exprs;)*
+            match #residual {
+                ::core::option::Option::Some(r) => r,
+                ::core::option::Option::None => {
+                    let pw_k = <T as ::mechanism::Real>::lit(5.421010862427522e-20);
+                    #(let #terms = #scaled_exprs;)*
+                    match #residual {
+                        ::core::option::Option::Some(r) => r,
+                        ::core::option::Option::None => <T as ::mechanism::Real>::lit(1.0),
+                    }
+                }
             }
         }}
     };
