@@ -1133,3 +1133,262 @@ fn slider_on_a_carried_guide_loads_the_crank() {
         }
     }
 }
+
+// ---------------------------------------------------------------------------
+// 12. Extreme but valid numbers: t, mm, s (forces in N, moments in N mm),
+//     masses from 1e-9 t (1e-6 kg) to 1e3 t (1e6 kg) in one slider-crank.
+
+mechanism! {
+    /// A heavy ram behind a feather-light crank (t, mm, s).
+    pub MillimetreRam {
+        dof 1;
+        let O = ground(0.0, 0.0);
+        let line = guide((0.0, 10.0), 0 deg);
+        let A = crank(O, 50.0, theta) as crank;
+        let B = rrp(A, 200.0, line, plus) as (rod, ram) slide x;
+        let Gr = point(rod, from A, 80.0, 0 deg);
+        let Gb = point(ram, from B, (15.0, 10.0));
+        mass crank { m = 1e-9, at = A, j = 1e-6 };
+        mass rod { m = 1e-3, at = Gr, j = 3.0 };
+        mass ram { m = 1e3, at = Gb, j = 1e5 };
+        gravity (0.0, -9810.0);
+        force at B on ram along line = -5000.0;
+    }
+}
+
+/// Mistake: the ram's centre of mass taken at its pin.
+fn check_mm(s: &MillimetreRamSolution, w: f64, mistake: bool) {
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let g = Vector2::new(0.0, -9810.0);
+    let along = Vector2::new(-5000.0, 0.0);
+    let gb = if mistake { p.B } else { p.Gb };
+    Body::default()
+        .force(p.O, f.r_ground_crank)
+        .force(p.A, -f.r_crank_rod)
+        .couple(f.drive_theta)
+        .inertia(1e-9, 1e-6, p.A, a.A, a.crank, g)
+        .balances("crank (1e-6 kg)");
+    // The RRP's system mixes the ram's load (1e7 N of weight, 1e9 N mm of
+    // moment) into the rows that give the rod's reactions (700 N), which
+    // therefore carry rounding of eps times the group's largest load, not
+    // the rod's (measured 4.6e-13 of the rod's own scale). The opposite pair
+    // below adds that scale to the rod's check and nothing to its sums.
+    let ram_load = Vector2::new(0.0, 1e3 * 9810.0);
+    Body::default()
+        .force(p.A, f.r_crank_rod)
+        .force(p.B, -f.r_rod_ram)
+        .force(p.Gb, ram_load)
+        .force(p.Gb, -ram_load)
+        .inertia(1e-3, 3.0, p.Gr, a.Gr, a.rod, g)
+        .balances("rod (1 kg)");
+    Body::default()
+        .force(p.B, f.r_rod_ram)
+        .prismatic(&f.r_ground_ram, p.B, 1.0)
+        .force(p.B, along)
+        .inertia(1e3, 1e5, gb, a.Gb, 0.0, g)
+        .balances("ram (1e6 kg)");
+    // The power balance near the crank's dead centres: the drive torque is
+    // the small difference of moments of the rod's force (1e5 N here)
+    // about O, so its relative rounding grows as 1 / s, s = |sin| of the
+    // angle between crank and rod (s = 0.09 at 5 deg past bottom dead
+    // centre gives 530 eps, measured). `TOL / s` keeps the check as tight
+    // as the equilibria elsewhere; the generated residual obeys the same.
+    let s_lever = cross(&((p.A - p.O) / 50.0), &((p.B - p.A) / 200.0)).abs();
+    let tol = TOL / s_lever.max(1e-3);
+    let terms = [
+        f.drive_theta * w,
+        along.dot(&v.B),
+        inertial(1e-9, 1e-6, v.A, a.A, v.crank, a.crank, g),
+        inertial(1e-3, 3.0, v.Gr, a.Gr, v.rod, a.rod, g),
+        inertial(1e3, 1e5, v.Gb, a.Gb, 0.0, 0.0, g),
+    ];
+    let scale = terms.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+    let sum: f64 = terms.iter().sum();
+    assert!(
+        sum.abs() <= tol * scale,
+        "power residual {sum:e} of {scale:e}"
+    );
+    assert!(f.power_residual <= tol, "{}", f.power_residual);
+}
+
+#[test]
+fn masses_from_a_milligram_to_a_thousand_tonnes_in_mm() {
+    let m = MillimetreRam::<f64>::default();
+    let (w, al) = (3.0, -2.0);
+    for k in 0..72 {
+        let q = f64::to_radians(5.0 * k as f64 + 0.25);
+        let s = m
+            .solve(
+                &MillimetreRamInput { theta: q },
+                &MillimetreRamInput { theta: w },
+                &MillimetreRamInput { theta: al },
+            )
+            .unwrap();
+        check_mm(&s, w, false);
+        if k == 11 {
+            assert!(fails(|| check_mm(&s, w, true)));
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// 13. Towards a singular force system: a four-bar whose crank approaches the
+//     angle where coupler and rocker align (the limit of its motion). The
+//     reactions grow as 1 / sin of the angle between them; the generated ones
+//     must match a closed form derived here to about eps / condition of the
+//     largest, or be a typed error; never NaN.
+
+mechanism! {
+    /// A double-rocker (m, N) loaded statically at a coupler point and by a
+    /// couple on the rocker.
+    pub NearToggle {
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(0.4, 0.0);
+        let A = crank(O2, 0.25, theta) as crank;
+        let B = rrr(A, 0.3, O4, 0.2, left) as (coupler, rocker);
+        let P = point(coupler, from A, 0.15, 30 deg);
+        force at P = (5.0, -12.0);
+        torque on rocker = 1.5;
+        range theta = (-60 deg, 60 deg);
+    }
+}
+
+/// `(force of the crank on the coupler at A, force of the ground on the
+/// rocker at O4)` from each link's moment about B (the components across
+/// the links) and the group's force balance (the components along them, a
+/// 2x2 system whose determinant is the sine between the links).
+fn toggle_reference(p: &NearTogglePosition) -> (Vector2<f64>, Vector2<f64>) {
+    let f = Vector2::new(5.0, -12.0);
+    let perp = |u: Vector2<f64>| Vector2::new(-u.y, u.x);
+    let (l1, l2) = ((p.B - p.A).norm(), (p.B - p.O4).norm());
+    let (u1, u2) = ((p.B - p.A) / l1, (p.B - p.O4) / l2);
+    // Coupler about B: cross(A - B, F_A) + cross(P - B, f) = 0, with
+    // cross(A - B, beta n1) = -l1 beta.
+    let beta = cross(&(p.P - p.B), &f) / l1;
+    // Rocker about B: cross(O4 - B, F_O4) + 1.5 = 0.
+    let delta = 1.5 / l2;
+    let h = -f - perp(u1) * beta - perp(u2) * delta;
+    let det = cross(&u1, &u2);
+    let (alpha, gamma) = (cross(&h, &u2) / det, cross(&u1, &h) / det);
+    (u1 * alpha + perp(u1) * beta, u2 * gamma + perp(u2) * delta)
+}
+
+#[test]
+fn near_toggle_reactions_are_accurate_to_eps_over_condition() {
+    let m = NearToggle::<f64>::default();
+    let zero_rates = NearToggleInput { theta: 0.0 };
+    let at = |q: f64| m.position(&NearToggleInput { theta: q });
+    // The limit: the largest angle that assembles, by bisection (it is near
+    // 97.9 deg: |A - O4| = 0.5 there).
+    let (mut lo, mut hi) = (1.5, 2.0);
+    assert!(at(lo).is_ok() && at(hi).is_err());
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if at(mid).is_ok() {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let mut worst = 0.0f64;
+    let mut smallest_condition = 1.0f64;
+    for k in 1..=16 {
+        let q = lo - 10f64.powi(-k);
+        let q = if k == 16 { lo } else { q };
+        let pos = at(q).unwrap();
+        let result = m.velocity(&pos, &zero_rates).and_then(|vel| {
+            let acc = m.acceleration(&pos, &vel, &zero_rates)?;
+            m.forces(&pos, &vel, &acc)
+        });
+        let f = match result {
+            Ok(f) => f,
+            // A typed error naming the group or the crank is an answer.
+            Err(e) => {
+                let text = e.to_string();
+                assert!(text.contains('B') || text.contains('A'), "{text}");
+                continue;
+            }
+        };
+        let (fa, fo4) = toggle_reference(&pos);
+        let scale = fa.norm().max(fo4.norm());
+        let err = (f.r_crank_coupler - fa)
+            .norm()
+            .max((f.r_ground_rocker - fo4).norm())
+            .max((f.r_coupler_rocker + f.r_ground_rocker).norm());
+        assert!(f.condition > 0.0 && f.condition <= 1.0, "{}", f.condition);
+        // Both answers carry rounding of a few eps amplified by 1 / condition
+        // (the reference through its 2x2 determinant, the generated code
+        // through its pivots); 64 eps / condition covers both with room, and
+        // a wrong term is off by the scale itself.
+        let ratio = err / (scale * f64::EPSILON / f.condition);
+        worst = worst.max(ratio);
+        smallest_condition = smallest_condition.min(f.condition);
+        assert!(
+            ratio <= 64.0,
+            "k = {k}: error {err:e} of {scale:e}, condition {:e}",
+            f.condition
+        );
+        assert!(f.power_residual.is_finite());
+    }
+    println!("near toggle: worst error {worst:.1} eps / condition, smallest condition {smallest_condition:e}");
+    assert!(smallest_condition < 1e-5, "{smallest_condition}");
+}
+
+// ---------------------------------------------------------------------------
+// 14. f32 against f64 on the shared-joint four-bar and the inclined press.
+
+#[test]
+fn f32_matches_f64() {
+    let (m64, m32) = (SharedJoint::<f64>::default(), SharedJoint::<f32>::default());
+    let mut worst = 0.0f64;
+    for k in 0..72 {
+        let q = 5.0 * k as f64 + 1.0;
+        let s64 = m64
+            .solve(
+                &SharedJointInput {
+                    theta: q.to_radians(),
+                },
+                &SharedJointInput { theta: 7.0 },
+                &SharedJointInput { theta: -20.0 },
+            )
+            .unwrap();
+        if s64.forces.condition < 0.2 {
+            continue;
+        }
+        let s32 = m32
+            .solve(
+                &SharedJointInput {
+                    theta: (q as f32).to_radians(),
+                },
+                &SharedJointInput { theta: 7.0 },
+                &SharedJointInput { theta: -20.0 },
+            )
+            .unwrap();
+        let (a, b) = (&s64.forces, &s32.forces);
+        let w = |v: Vector2<f32>| Vector2::new(v.x as f64, v.y as f64);
+        let pairs = [
+            (a.r_ground_crank, w(b.r_ground_crank)),
+            (a.r_crank_coupler, w(b.r_crank_coupler)),
+            (a.r_coupler_rocker, w(b.r_coupler_rocker)),
+            (a.r_ground_rocker, w(b.r_ground_rocker)),
+            (
+                Vector2::new(a.drive_theta, 0.0),
+                Vector2::new(b.drive_theta as f64, 0.0),
+            ),
+        ];
+        let scale = pairs.iter().fold(0.0f64, |m, (x, _)| m.max(x.norm()));
+        let err = pairs.iter().fold(0.0f64, |m, (x, y)| m.max((x - y).norm()));
+        worst = worst.max(err / scale);
+        assert!(
+            b.power_residual <= 1e-5,
+            "f32 power residual {}",
+            b.power_residual
+        );
+    }
+    println!("f32 vs f64: worst {worst:e} of the largest reaction");
+    // f32 rounding (6e-8) of the pose, the rates and the loads, amplified by
+    // the two systems' conditioning (>= 0.2 here): measured 1e-6 at worst;
+    // 2e-5 (170 f32 eps) leaves room, and any wrong term is 1e-3 or more.
+    assert!(worst <= 2e-5, "{worst:e}");
+}
