@@ -360,3 +360,134 @@ fn rrr_lengths_far_from_one() {
     );
     scales_run::<f64>(&[1e-100, 1e-80, 1e80, 1e100], f64::EPSILON, "f64 far");
 }
+
+/// Mixed scales in one definition: a 1.3e-3 crank on a 1000.3 frame (a
+/// crank-rocker: 1.3e-3 + 1000.3 <= 999.1 + 1.7). Errors per stage relative
+/// to the stage's largest value: the crank's motion is tiny against the
+/// frame, so this checks that nothing is lost against the large lengths.
+#[test]
+fn mixed_scales_small_crank_large_frame() {
+    let m = ScaledFourBar::<f64> {
+        ground: 1000.3,
+        crank: 1.3e-3,
+        coupler: 999.1,
+        rocker: 1.7,
+        px: 500.0,
+        py: 0.01,
+        ..ScaledFourBar::<f64>::default()
+    };
+    let mut worst = Worst::new();
+    for i in 0..48 {
+        let theta = -3.1 + 0.1311 * i as f64;
+        let what = format!("mixed theta {theta}");
+        let (e, kappa) = fourbar_sample(&m, theta, 7.3, -41.0, &what);
+        // Positions relative to the frame (1000). The rocker (1.7) is
+        // pivoted at 1000.3: its pivot, and B, carry rounding of eps * 1000,
+        // which is eps * 1000 / 1.7 of the rocker's direction, hence of the
+        // rates and accelerations (inherent: the input O4 itself is rounded
+        // so). Bound: `c = 4` times that ratio for rates and accelerations.
+        let lratio = m.ground / m.rocker;
+        worst.record(
+            e,
+            kappa,
+            SWEEP_K,
+            [SWEEP_C[0], 4.0 * lratio, 4.0 * lratio],
+            f64::EPSILON,
+            &what,
+        );
+    }
+    worst.print("f64 mixed 1.3e-3 crank on 1000.3 frame");
+}
+
+// ---------------------------------------------------------------------------
+// 2. Toggles and dead centres approached geometrically.
+
+/// Distances from the singular pose: 1e-1 .. 1e-15 (rad), both sides, with a
+/// non-round mantissa.
+fn approach() -> Vec<f64> {
+    let mut out = vec![];
+    for k in 1..=15 {
+        let d = 1.37 * 10f64.powi(-k);
+        out.push(d);
+        out.push(-d);
+    }
+    out.push(0.0);
+    out
+}
+
+mechanism! {
+    /// Five-bar whose forearms are collinear (stretched) at theta1 = theta2
+    /// = 0: B1 = (1, 0), B2 = (-3, 0), l1 + l2 = 4.
+    pub StretchedFiveBar {
+        let O1 = ground(0.0, 0.0);
+        let O2 = ground(-4.0, 0.0);
+        let B1 = crank(O1, 1.0, t1) as arm1;
+        let B2 = crank(O2, 1.0, t2) as arm2;
+        let C = rrr(B1, 2.5, B2, 1.5, left) as (fore1, fore2);
+    }
+}
+
+/// Toggle bound: positions `c eps / kappa`, rates `c eps / kappa^2`,
+/// accelerations `c eps / kappa^3` (see `SWEEP_K`): at a toggle reached by
+/// the input, `delta ~ kappa^2`, the joint's height has relative error `eps /
+/// delta` (stability.md, end to end), which is `eps / kappa^2` in the rates'
+/// determinant and, through the `omega^2` terms, `eps / kappa^3` in the
+/// accelerations. `c = 8` as the existing end-to-end bound.
+const TOGGLE_C: [f64; 3] = [8.0, 8.0, 8.0];
+
+#[test]
+fn five_bar_forearms_nearly_collinear() {
+    let m = StretchedFiveBar::<f64>::default();
+    let l = Linkage {
+        points: vec![fixed(0.0, 0.0), fixed(-4.0, 0.0), Point::Unknown, Point::Unknown, Point::Unknown],
+        constraints: vec![
+            Constraint::Crank { p: 2, o: 0, r: 1.0, input: 0 },
+            Constraint::Crank { p: 3, o: 1, r: 1.0, input: 1 },
+            Constraint::Distance { p: 4, q: 2, len: 2.5 },
+            Constraint::Distance { p: 4, q: 3, len: 1.5 },
+        ],
+        sides: vec![Side::Left { p: 4, a: 2, b: 3, sign: 1.0 }],
+        scale: 4.0,
+    };
+    let mut worst = Worst::new();
+    for d in approach() {
+        for t2 in [0.0, 0.37 * d] {
+            let what = format!("five-bar t1 {d:e} t2 {t2:e}");
+            let inp = |a: f64, b: f64| StretchedFiveBarInput { t1: a, t2: b };
+            match m.solve(&inp(d, t2), &inp(3.1, -1.7), &inp(20.0, 5.0)) {
+                Ok(s) => {
+                    let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
+                    let g = [[pt(&p.B1), pt(&p.B2), pt(&p.C)], [vc(&v.B1), vc(&v.B2), vc(&v.C)], [vc(&a.B1), vc(&a.B2), vc(&a.C)]];
+                    let flat: Vec<f64> = g.iter().flatten().flat_map(|x| [x.0, x.1]).chain([v.fore1, v.fore2, a.fore1, a.fore2]).collect();
+                    all_finite(&flat, &what);
+                    let start = [(0.0, 0.0), (0.0, 0.0), g[0][0], g[0][1], g[0][2]];
+                    let Some(r) = reference(&l, &[d, t2], &[3.1, -1.7], &[20.0, 5.0], &start) else {
+                        // The reference is singular only at the exact toggle
+                        // (the code answered inside its rounding band).
+                        assert!(d == 0.0 || d.abs() < 1e-7, "{what}: reference failed");
+                        continue;
+                    };
+                    let kappa = sin_between(r.p[4].minus(r.p[2]), r.p[4].minus(r.p[3]));
+                    let e = [rel_pts(&g[0], &r.p[2..]), rel_pts(&g[1], &r.v[2..]), rel_pts(&g[2], &r.a[2..])];
+                    worst.record(e, kappa, SWEEP_K, TOGGLE_C, f64::EPSILON, &what);
+                }
+                Err(e) => {
+                    typed(&e, "C", |f| matches!(f, Fault::Singular { .. }), &what);
+                    // Only where the positions themselves are undetermined:
+                    // |B2 - B1| within the rounding band `4 eps (l1 + l2)` of
+                    // l1 + l2, i.e. delta = 1 - |B2 - B1| / 4 (exact, from
+                    // the crank tips in double-double) below 8 eps.
+                    let (b1, b2) = (
+                        mechanism_reference::groups::crank(mechanism_reference::groups::v(0.0, 0.0), 1.0, d, 0.0, 0.0).0,
+                        mechanism_reference::groups::crank(mechanism_reference::groups::v(-4.0, 0.0), 1.0, t2, 0.0, 0.0).0,
+                    );
+                    let dist = mechanism_reference::groups::norm(mechanism_reference::groups::sub(b1, b2));
+                    let delta = (Dd::ONE - dist / Dd::from_f64(4.0)).to_f64();
+                    assert!(delta < 8.0 * f64::EPSILON, "{what}: error far from the toggle (delta {delta:e}): {e:?}");
+                    worst.errs += 1;
+                }
+            }
+        }
+    }
+    worst.print("five-bar forearms collinear");
+}
