@@ -109,6 +109,19 @@ pub fn unit<T: Real>(angle: T) -> Vector2<T> {
     Vector2::new(c, s)
 }
 
+/// The smallest positive normal number of `T` (`f32`: 1.2e-38, `f64`:
+/// 2.2e-308) and the largest finite one (3.4e38, 1.8e308): a product in this
+/// range carries full relative precision; below it, it is subnormal (bits
+/// lost) or zero, above it infinite. Constants, folded at compile time.
+#[inline(always)]
+pub fn normal_range<T: Real>() -> (T, T) {
+    if crate::scalar::single::<T>() {
+        (T::lit(f32::MIN_POSITIVE as f64), T::lit(f32::MAX as f64))
+    } else {
+        (T::lit(f64::MIN_POSITIVE), T::lit(f64::MAX))
+    }
+}
+
 /// Whether every value of `xs` is finite: the one test each primitive makes
 /// of its results on the ordinary path (a non-finite input reaches them).
 ///

@@ -32,7 +32,7 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, all_finite, check_det, cross, difference, dot, length, min, perp, plus,
+    abs, all_finite, check_det, cross, difference, dot, length, min, normal_range, perp, plus,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -145,12 +145,28 @@ pub fn position<T: Real>(
         return Err(position_error(d, l1, l2, Check::Reach));
     }
     let clamp = |x: T| if x < T::zero() { T::zero() } else { x };
-    // sqrt(16 area^2) = 4 area, signed by the mode.
-    let height = mode.sign::<T>() * (clamp(outer) * clamp(inner)).sqrt_kernel();
+    let (outer, inner) = (clamp(outer), clamp(inner));
+    // sqrt(16 area^2) = 4 area, signed by the mode. The product is of the
+    // fourth power of the lengths: outside the normal range (f32 lengths
+    // below about 1e-10 or above about 4e9; f64 beyond 1e-77 .. 1e77) it
+    // would be subnormal (bits silently lost), zero (a false `Singular` later)
+    // or infinite; there the two factors' roots are taken apart (cold path,
+    // one square root more). Zero at the edge takes that path too and gives 0.
+    let prod = outer * inner;
+    let (lo, hi) = normal_range::<T>();
+    let root = if prod >= lo && prod <= hi {
+        prod.sqrt_kernel()
+    } else {
+        split_root(outer, inner)
+    };
+    let height = mode.sign::<T>() * root;
     let along = diff * sum + dsq;
     // The reciprocal runs beside the square root (one rounding more than two
     // divisions, off the critical path).
     let inv_2dsq = T::one() / (T::lit(2.0) * dsq);
+    // `d * along` is a third power of the lengths (f32: normal for lengths
+    // of about 3e-13 .. 5e12); scaling the coefficients first would lift that
+    // limit but round twice where a 3-4-5 triangle is now exact.
     let r1 = (d * along + perp(&d) * height) * inv_2dsq;
     let c = a + r1;
     // One test for every non-finite input that got this far (an infinite
@@ -168,6 +184,14 @@ pub fn position<T: Real>(
         r2: r1 - d,
         det: T::lit(0.5) * height,
     })
+}
+
+/// `sqrt(outer) sqrt(inner)` for a product `outer inner` outside the normal
+/// range (cold path of [`position`]); both factors are `>= 0`.
+#[cold]
+#[inline(never)]
+fn split_root<T: Real>(outer: T, inner: T) -> T {
+    outer.sqrt_kernel() * inner.sqrt_kernel()
 }
 
 /// Which check of [`position`] failed (the cold path's only knowledge of
