@@ -449,3 +449,73 @@ fn rpr_and_rrp_with_every_outer_joint_moving() {
         4
     );
 }
+
+mechanism! {
+    /// The four-bar's position analysis alone (no rate system to check).
+    pub FourBarPosition {
+        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        analysis position;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+        outputs { B, link3, link4 }
+    }
+}
+
+#[test]
+fn four_bar_far_from_unit_lengths() {
+    // f32 lengths of about 1e-10 and 3e11: the RRR's product of squared lengths
+    // (a fourth power) is subnormal or infinite there. The kernel must hand
+    // such elements to the scalar path (which takes the two roots apart)
+    // rather than return its own inexact height; the comparison's bound
+    // (statuses, values within K) is the same as everywhere else.
+    for k in [1.0e-12f64, 1.0e9] {
+        let m = FourBar::<f32> {
+            ground: (304.8 * k) as f32,
+            crank: (101.6 * k) as f32,
+            coupler: (254.0 * k) as f32,
+            rocker: (177.8 * k) as f32,
+            ..Default::default()
+        };
+        let q = angles(500);
+        let n = q.len();
+        let found = compare!(
+            m,
+            f32,
+            FourBar,
+            [theta2],
+            [A, B],
+            [link3, link4],
+            one("theta2", q),
+            one("theta2", rates(n, 3.0, None)),
+            one("theta2", rates(n, -2.0, None))
+        );
+        // NaN and infinite angles fail; every other element is solved.
+        assert_eq!(found.2, 2, "scale {k:e}");
+        // Position only: no rate check that would send the element to the
+        // scalar path anyway.
+        let m = FourBarPosition::<f32> {
+            ground: (304.8 * k) as f32,
+            crank: (101.6 * k) as f32,
+            coupler: (254.0 * k) as f32,
+            rocker: (177.8 * k) as f32,
+            ..Default::default()
+        };
+        let q = angles(500);
+        let n = q.len();
+        let found = compare!(
+            pos;
+            m,
+            f32,
+            FourBarPosition,
+            [theta2],
+            [B],
+            [link3, link4],
+            one("theta2", q),
+            one("theta2", rates(n, 3.0, None)),
+            one("theta2", rates(n, -2.0, None))
+        );
+        assert_eq!(found.2, 2, "position only, scale {k:e}");
+    }
+}

@@ -2,7 +2,7 @@
 //! of the linear actuator (an RRR with the input as second length).
 
 use super::{abs, select, sqrt};
-use crate::geometry::SINGULAR_RELATIVE;
+use crate::geometry::{normal_range, SINGULAR_RELATIVE};
 use crate::scalar::Real;
 
 /// A closed RRR group: the lane version of [`crate::dyad::rrr::position`],
@@ -52,13 +52,21 @@ pub fn rrr<T: Real>(ax: T, ay: T, l1: T, bx: T, by: T, l2: T, sign: T) -> Rrr<T>
     // minus the band): an element accepted here is accepted there.
     let band = T::lit(8.0) * T::eps() * sum;
     let adiff = select(diff < T::zero(), -diff, diff);
+    let clamp = |x: T| select(x < T::zero(), T::zero(), x);
+    // The product is a fourth power of the lengths: outside the normal range
+    // (f32 lengths below about 1e-10 or above about 4e9) it loses bits or
+    // overflows, and the element goes to the scalar path, which takes the
+    // two roots apart there (`dyad::rrr::position`).
+    let prod = clamp(outer) * clamp(inner);
+    let (lo, hi) = normal_range::<T>();
     let ok = spread
         & (l1 > T::zero())
         & (l2 > T::zero())
         & (outer > band * sum)
-        & (inner > band * adiff);
-    let clamp = |x: T| select(x < T::zero(), T::zero(), x);
-    let height = sign * sqrt(clamp(outer) * clamp(inner));
+        & (inner > band * adiff)
+        & (prod >= lo)
+        & (prod <= hi);
+    let height = sign * sqrt(prod);
     let along = diff * sum + dsq;
     let inv_2dsq = T::one() / (T::lit(2.0) * select(spread, dsq, T::one()));
     let (r1x, r1y) = (
@@ -174,5 +182,19 @@ mod tests {
         assert!(g.ok);
         let g = rrr(0.0, 0.0, 1.0, 2.0 - 1e-30, 0.0, 1.0, 1.0);
         assert!(!g.ok_rate);
+    }
+
+    /// f32 four-bars whose product of squared lengths leaves the normal
+    /// range (lengths near 1e-10: subnormal; near 1e11: infinite) are handed
+    /// to the scalar path, which takes the two square roots apart; at unit
+    /// scale the same pose stays in the kernel.
+    #[test]
+    fn rrr_hands_back_products_outside_the_normal_range() {
+        for (k, in_kernel) in [(1.0e-12f64, false), (1.0, true), (2.0e9, false)] {
+            let l = |x: f64| (x * k) as f32;
+            let cr = crank(0.0f32, 0.0, l(101.6), 1.0);
+            let g = rrr(cr.x, cr.y, l(254.0), l(304.8), 0.0, l(177.8), 1.0);
+            assert_eq!(g.ok, in_kernel, "scale {k:e}");
+        }
     }
 }
