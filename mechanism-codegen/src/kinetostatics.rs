@@ -533,23 +533,15 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
     let terms: Vec<Ident> = (0..em.power.len())
         .map(|k| format_ident!("pw_{}", k))
         .collect();
-    // Each term as computed, and with both factors scaled by 2^-64 (exact
-    // but for underflow of terms far below the largest) for when a product
-    // overflows `T` (an `f32` force of 1e38 N at 10 m/s).
-    let product = |(a, b, dot): &(TokenStream, TokenStream, bool), k: Option<&TokenStream>| {
-        let (a, b) = match k {
-            None => (a.clone(), b.clone()),
-            Some(k) => (quote!((#a * #k)), quote!((#b * #k))),
-        };
+    // Each term: a force or couple times the velocity of its point or body.
+    let product = |(a, b, dot): &(TokenStream, TokenStream, bool)| {
         if *dot {
             quote!(::mechanism::geometry::dot(&#a, &#b))
         } else {
             quote!(#a * #b)
         }
     };
-    let pw_k = quote!(pw_k);
-    let power_exprs: Vec<TokenStream> = em.power.iter().map(|t| product(t, None)).collect();
-    let scaled_exprs: Vec<TokenStream> = em.power.iter().map(|t| product(t, Some(&pw_k))).collect();
+    let power_exprs: Vec<TokenStream> = em.power.iter().map(product).collect();
     let power = if terms.is_empty() {
         lit(0.0)
     } else {
@@ -577,22 +569,15 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
             }
         }};
         // Reactions, loads and rates are finite here (every group checks
-        // them), so only an overflowing product makes a term infinite; the
-        // scaled terms cannot overflow unless both factors are within 2^64
-        // of `T`'s largest value, when 1 (unbalanced) is reported rather
-        // than a NaN.
+        // them), so only a product that overflows `T` (an `f32` force of
+        // 1e38 N at 10 m/s) makes a term infinite: then no balance can be
+        // shown, and 1 is reported rather than a NaN (a rescaled second
+        // evaluation of every term would double this code for that case).
         quote! {{
             #(let #terms = #power_exprs;)*
             match #residual {
                 ::core::option::Option::Some(r) => r,
-                ::core::option::Option::None => {
-                    let pw_k = <T as ::mechanism::Real>::lit(5.421010862427522e-20);
-                    #(let #terms = #scaled_exprs;)*
-                    match #residual {
-                        ::core::option::Option::Some(r) => r,
-                        ::core::option::Option::None => <T as ::mechanism::Real>::lit(1.0),
-                    }
-                }
+                ::core::option::Option::None => <T as ::mechanism::Real>::lit(1.0),
             }
         }}
     };
