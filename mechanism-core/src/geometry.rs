@@ -50,6 +50,17 @@ pub fn min<T: Real>(a: T, b: T) -> T {
     }
 }
 
+/// The larger of `a` and `b` (`b` when either is NaN), by a comparison as
+/// [`min`].
+#[inline(always)]
+pub fn max<T: Real>(a: T, b: T) -> T {
+    if a > b {
+        a
+    } else {
+        b
+    }
+}
+
 /// Euclidean length, scaled so that it neither overflows nor underflows for
 /// components between about 1e-150 and 1e150 (f64).
 #[inline(always)]

@@ -29,7 +29,8 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, check_det_condition, cross, difference, dot, finite, finite_vec, length, perp,
+    abs, check_det_condition, cross, difference, dot, finite, finite_vec, length, max, min, perp,
+    SINGULAR_RELATIVE,
 };
 use crate::mode::Mode;
 use crate::scalar::Real;
@@ -55,10 +56,13 @@ pub struct RprVelocity<T: Real> {
     pub omega: T,
     /// Sliding speed of the block along link 2, relative to it (L/s).
     pub s_dot: T,
-    /// Condition indicator of the rate system, `|det| / scale` in `(16 eps, 1]`:
-    /// `|s| / |A - B|`: `|cos|` of the angle between the slide line and `A - B`.
-    /// `1` is the best-conditioned pose, `0` the singular one (below `16 eps`
-    /// velocity returns `Singular`); the rates' relative error is about `eps /
+    /// Condition indicator in `(16 eps, 1]`: the smaller of the rate system's
+    /// `|det| / scale = |s| / |A - B|` (`|cos|` of the angle between the slide
+    /// line and `A - B`; below `16 eps` velocity returns `Singular`) and
+    /// `|A - B| / size` (`size` the largest coordinate of `A` and `B`, which
+    /// are rounded at that magnitude: with the offset 0 the axis is the
+    /// direction of `A - B`, known only to `eps size / |A - B|`). `1` is the
+    /// best-conditioned pose; the rates' relative error is about `eps /
     /// condition` at most (`docs/stability.md`). The same number governs the
     /// accelerations (same matrix).
     pub condition: T,
@@ -82,8 +86,9 @@ pub struct RprAcceleration<T: Real> {
 /// `CannotAssemble { miss: |offset| - |A - B|, reach: |offset| }` when `A` lies
 /// inside the circle of radius
 /// `|offset|` about `B` by more than `4 eps |offset|` (inside that rounding band
-/// `s = 0`); `Singular` when `A` and `B` coincide (the axis is undefined; with
-/// `offset != 0` that is `CannotAssemble`).
+/// `s = 0`); `Singular { det: |A - B|, scale: size }` when `A` and `B` coincide
+/// or `|A - B| <= 16 eps size`, `size` their largest coordinate (the axis is
+/// undefined or rounding alone; with `offset != 0` that is `CannotAssemble`).
 #[inline(always)]
 pub fn position<T: Real>(
     a: &Point2<T>,
@@ -106,12 +111,16 @@ pub fn position<T: Real>(
             },
         ));
     }
-    if dist <= T::zero() {
+    // `A` on `B`, or so near it that `A - B` is rounding alone (`A` and `B`
+    // are known to about eps of their coordinates): the axis is undefined.
+    // With `offset != 0` that is `CannotAssemble` (above).
+    let size = coordinate_size(a, b);
+    if dist <= T::lit(SINGULAR_RELATIVE) * T::eps() * size {
         return Err(Error::new(
             P,
             Fault::Singular {
-                det: T::zero(),
-                scale: T::zero(),
+                det: dist,
+                scale: if dist > T::zero() { size } else { T::zero() },
             },
         ));
     }
@@ -140,10 +149,33 @@ pub fn position<T: Real>(
 }
 
 /// Determinant of the rate system, `dot(u, A - B) = s`, checked against
-/// `16 eps |u| |A - B|`.
+/// `16 eps |u| |A - B|`, and the condition indicator: the smaller of
+/// `|s| / |A - B|` and `|A - B| / size`, with `size` the largest coordinate
+/// of `A` and `B`. `A` and `B` are known to about `eps size` (they are
+/// rounded at their coordinates' magnitude), so the direction of `A - B`,
+/// and with it the rates, only to about `eps size / |A - B|`: with the
+/// offset 0 and `A` near `B`, `|s| / |A - B|` stays 1 while the rates lose
+/// all their digits, and the second ratio says so. (`position` returns
+/// `Singular` where `|A - B| <= 16 eps size`.)
 #[inline(always)]
-fn determinant<T: Real>(pos: &RprPosition<T>, p: &Vector2<T>) -> Result<(T, T), Error<T>> {
-    check_det_condition(dot(&pos.axis, p), length(&pos.axis) * length(p), P)
+fn determinant<T: Real>(
+    pos: &RprPosition<T>,
+    a: &Point2<T>,
+    b: &Point2<T>,
+    p: &Vector2<T>,
+) -> Result<(T, T), Error<T>> {
+    let dist = length(p);
+    let (det, condition) = check_det_condition(dot(&pos.axis, p), length(&pos.axis) * dist, P)?;
+    let size = coordinate_size(a, b);
+    let spread = if dist < size { dist / size } else { T::one() };
+    Ok((det, min(condition, spread)))
+}
+
+/// The largest absolute coordinate of `a` and `b` (L): the magnitude at
+/// which they are rounded.
+#[inline(always)]
+fn coordinate_size<T: Real>(a: &Point2<T>, b: &Point2<T>) -> T {
+    max(max(abs(a.x), abs(a.y)), max(abs(b.x), abs(b.y)))
 }
 
 /// Rates of the group from the velocities of `A` and `B` (L/s; `None`: fixed).
@@ -163,7 +195,7 @@ pub fn velocity<T: Real>(
     vb: Option<&Vector2<T>>,
 ) -> Result<RprVelocity<T>, Error<T>> {
     let p = a - b;
-    let (det, condition) = determinant(pos, &p)?;
+    let (det, condition) = determinant(pos, a, b, &p)?;
     let w = finite_vec(difference(va, vb), P, "RPR joint velocity")?;
     let omega = finite(cross(&pos.axis, &w) / det, P, "RPR angular velocity")?;
     let s_dot = finite(dot(&w, &p) / det, P, "RPR sliding speed")?;
@@ -190,7 +222,7 @@ pub fn acceleration<T: Real>(
     ab: Option<&Vector2<T>>,
 ) -> Result<RprAcceleration<T>, Error<T>> {
     let p = a - b;
-    let (det, _) = determinant(pos, &p)?;
+    let (det, _) = determinant(pos, a, b, &p)?;
     let w = finite_vec(
         difference(aa, ab) + p * (vel.omega * vel.omega)
             - perp(&pos.axis) * (T::lit(2.0) * vel.omega * vel.s_dot),

@@ -6,7 +6,7 @@
 //! `u = (s p - offset perp(p)) / |p|` normalized; rates from the system with
 //! columns `u`, `perp(p)`, determinant `dot(u, p) = s`.
 
-use super::{select, sqrt};
+use super::{abs, select, sqrt};
 use crate::geometry::SINGULAR_RELATIVE;
 use crate::scalar::Real;
 
@@ -46,7 +46,12 @@ pub fn rpr<T: Real>(ax: T, ay: T, bx: T, by: T, offset: T, sign: T) -> Rpr<T> {
     let e = select(offset < T::zero(), -offset, offset);
     let gap = dist - e;
     let band = T::lit(4.0) * T::eps() * e;
-    let ok = spread & (gap > band);
+    // `A - B` well above the rounding of the coordinates (the scalar path
+    // says `Singular` at 16 eps of the largest; twice that here).
+    let big = |x: T, y: T| select(x > y, x, y);
+    let size = big(big(abs(ax), abs(ay)), big(abs(bx), abs(by)));
+    let apart = dist > T::lit(2.0 * SINGULAR_RELATIVE) * T::eps() * size;
+    let ok = spread & (gap > band) & apart;
     let gap = select(gap > T::zero(), gap, T::zero());
     let s = sign * sqrt(gap * (dist + e));
     // (s p - offset perp(p)) / |p|, perp(p) = (-py, px).
