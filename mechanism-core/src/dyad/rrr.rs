@@ -268,8 +268,8 @@ enum Kind {
 /// the point is fixed (its terms vanish at compile time).
 ///
 /// The scale of the determinant (and of the condition indicator) is
-/// `|r1| |r2|`, one square root; [`velocity_lengths`] takes it from the link
-/// lengths instead.
+/// `|r1| |r2|`, one square root (two where `|r1|^2 |r2|^2` leaves the normal
+/// range); [`velocity_lengths`] takes it from the link lengths instead.
 ///
 /// Errors: `Singular` when `|cross(r1, r2)| <= 16 eps l1 l2` (toggle: the two
 /// links are aligned); `NonFinite` for a non-finite input.
@@ -279,7 +279,19 @@ pub fn velocity<T: Real>(
     va: Option<&Vector2<T>>,
     vb: Option<&Vector2<T>>,
 ) -> Result<RrrVelocity<T>, Error<T>> {
-    let scale = (dot(&pos.r1, &pos.r1) * dot(&pos.r2, &pos.r2)).sqrt_kernel();
+    // `|r1|^2 |r2|^2` is a fourth power of the lengths: outside the normal
+    // range (f32 lengths below about 1e-10 or above about 4e9) it would be
+    // subnormal (the indicator off), zero or infinite (a false `Singular`)
+    // while the position is fine; there the two roots are taken apart (cold
+    // path, as in `position`).
+    let (q1, q2) = (dot(&pos.r1, &pos.r1), dot(&pos.r2, &pos.r2));
+    let prod = q1 * q2;
+    let (lo, hi) = normal_range::<T>();
+    let scale = if prod >= lo && prod <= hi {
+        prod.sqrt_kernel()
+    } else {
+        split_root(q1, q2)
+    };
     rates(pos, scale, va, vb)
 }
 
