@@ -19,6 +19,10 @@ use mechanism_reference::constraint::{Constraint, Linkage, Point, Side, V2};
 use mechanism_reference::loop_closure;
 use mechanism_reference::Dd;
 
+#[path = "common/extreme.rs"]
+mod extreme;
+use extreme::{all_finite, decades, typed, Worst};
+
 // ---------------------------------------------------------------------------
 // Helpers.
 
@@ -102,80 +106,6 @@ fn pt<T: Real>(p: &mechanism::Point2<T>) -> (f64, f64) {
 
 fn vc<T: Real>(p: &mechanism::Vector2<T>) -> (f64, f64) {
     (p.x.as_f64(), p.y.as_f64())
-}
-
-/// Asserts every number is finite (`what` names the case).
-fn all_finite(xs: &[f64], what: &str) {
-    assert!(
-        xs.iter().all(|x| x.is_finite()),
-        "{what}: non-finite inside Ok: {xs:?}"
-    );
-}
-
-/// Worst ratio of error to bound, and the worst errors, for a summary line.
-#[derive(Default, Debug)]
-struct Worst {
-    /// Largest `err / (eps / kappa^k)` seen per stage (positions, rates,
-    /// accelerations): the measured constant `c`.
-    c: [f64; 3],
-    /// Largest raw relative error per stage.
-    err: [f64; 3],
-    /// Smallest condition met with an `Ok`.
-    kappa: f64,
-    /// Number of `Ok` samples and of typed errors.
-    ok: usize,
-    errs: usize,
-}
-
-impl Worst {
-    fn new() -> Worst {
-        Worst {
-            kappa: 1.0,
-            ..Worst::default()
-        }
-    }
-    /// Records a sample: errors `e` per stage, condition `kappa`, powers `k`
-    /// per stage, epsilon `eps`; asserts `e[i] <= c[i] eps / kappa^k[i]`.
-    fn record(&mut self, e: [f64; 3], kappa: f64, k: [i32; 3], c: [f64; 3], eps: f64, what: &str) {
-        for i in 0..3 {
-            let unit = eps / kappa.powi(k[i]);
-            let ratio = e[i] / unit;
-            if std::env::var("EXTREME_TRACE").is_ok() {
-                println!(
-                    "TRACE {what}: stage {i} err {:.3e} kappa {kappa:.3e} ratio {ratio:.3}",
-                    e[i]
-                );
-            }
-            assert!(
-                e[i] <= c[i] * unit,
-                "{what}: stage {i} error {:e} > {} eps / kappa^{} (kappa {kappa:e}, ratio {ratio:.3})",
-                e[i],
-                c[i],
-                k[i]
-            );
-            self.c[i] = self.c[i].max(ratio);
-            self.err[i] = self.err[i].max(e[i]);
-        }
-        self.kappa = self.kappa.min(kappa);
-        self.ok += 1;
-    }
-    fn print(&self, what: &str) {
-        println!(
-            "{what}: {} ok, {} typed errors, min kappa {:.2e}; worst err pos {:.2e} vel {:.2e} acc {:.2e}; measured c pos {:.3} vel {:.3} acc {:.3}",
-            self.ok, self.errs, self.kappa, self.err[0], self.err[1], self.err[2], self.c[0], self.c[1], self.c[2]
-        );
-    }
-}
-
-/// Asserts an error is typed for `group` with a fault `ok_fault` accepts.
-fn typed<T: Real + core::fmt::Debug>(
-    e: &Error<T>,
-    group: &str,
-    ok_fault: impl Fn(&Fault<T>) -> bool,
-    what: &str,
-) {
-    assert_eq!(e.group, group, "{what}: error names the wrong group: {e:?}");
-    assert!(ok_fault(&e.fault), "{what}: unexpected fault {e:?}");
 }
 
 // ---------------------------------------------------------------------------
@@ -413,12 +343,7 @@ fn mixed_scales_small_crank_large_frame() {
 /// Distances from the singular pose: 1e-1 .. 1e-15 (rad), both sides, with a
 /// non-round mantissa.
 fn approach() -> Vec<f64> {
-    let mut out = vec![];
-    for k in 1..=15 {
-        let d = 1.37 * 10f64.powi(-k);
-        out.push(d);
-        out.push(-d);
-    }
+    let mut out: Vec<f64> = decades().into_iter().flat_map(|d| [d, -d]).collect();
     out.push(0.0);
     out
 }

@@ -17,6 +17,10 @@ use mechanism::{mechanism, Error, Fault, Real};
 use mechanism_reference::groups::{self as rg, Line, V};
 use mechanism_reference::Dd;
 
+#[path = "common/extreme.rs"]
+mod extreme;
+use extreme::{all_finite, decades, typed, Worst};
+
 // ---------------------------------------------------------------------------
 // Helpers.
 
@@ -43,93 +47,6 @@ fn rel(got: &[f64], r: &[Dd]) -> f64 {
 /// The components of reference vectors, flattened.
 fn flat(vs: &[V]) -> Vec<Dd> {
     vs.iter().flat_map(|v| [v[0], v[1]]).collect()
-}
-
-fn all_finite(xs: &[f64], what: &str) {
-    assert!(
-        xs.iter().all(|x| x.is_finite()),
-        "{what}: non-finite inside Ok: {xs:?}"
-    );
-}
-
-/// Worst figures of a case.
-#[derive(Default, Debug)]
-struct Worst {
-    /// Largest `err / (eps / kappa^k)` per stage: the measured constant `c`.
-    c: [f64; 3],
-    /// Largest raw relative error per stage.
-    err: [f64; 3],
-    /// Smallest `kappa` met with an `Ok`.
-    kappa: f64,
-    /// Extreme ratios `condition / kappa` of the indicator.
-    cond_ratio: (f64, f64),
-    ok: usize,
-    errs: usize,
-}
-
-impl Worst {
-    fn new() -> Worst {
-        Worst {
-            kappa: 1.0,
-            cond_ratio: (f64::INFINITY, 0.0),
-            ..Worst::default()
-        }
-    }
-    /// Asserts `e[i] <= c[i] eps / kappa^k[i]` and records the figures.
-    #[allow(clippy::too_many_arguments)]
-    fn record(&mut self, e: [f64; 3], kappa: f64, k: [i32; 3], c: [f64; 3], eps: f64, what: &str) {
-        for i in 0..3 {
-            let unit = eps / kappa.powi(k[i]);
-            let ratio = e[i] / unit;
-            assert!(
-                e[i] <= c[i] * unit,
-                "{what}: stage {i} error {:e} > {} eps / kappa^{} (kappa {kappa:e}, ratio {ratio:.3})",
-                e[i],
-                c[i],
-                k[i]
-            );
-            self.c[i] = self.c[i].max(ratio);
-            self.err[i] = self.err[i].max(e[i]);
-        }
-        self.kappa = self.kappa.min(kappa);
-        self.ok += 1;
-    }
-    /// Asserts the indicator `condition` is within a factor 2 of `kappa`
-    /// (clamped to 1 as the indicator is): it is computed from the rounded
-    /// pose, whose relative error in `kappa` is `eps / kappa` at most, below
-    /// a factor 2 down to `kappa ~ 1e-15` in f64 (1e-6 in f32).
-    fn indicator(&mut self, condition: f64, kappa: f64, what: &str) {
-        let want = kappa.min(1.0);
-        let r = condition / want;
-        assert!(
-            (0.5..=2.0).contains(&r),
-            "{what}: condition {condition:e} against kappa {want:e}"
-        );
-        self.cond_ratio.0 = self.cond_ratio.0.min(r);
-        self.cond_ratio.1 = self.cond_ratio.1.max(r);
-    }
-    fn print(&self, what: &str) {
-        println!(
-            "{what}: {} ok, {} typed errors, min kappa {:.2e}; worst err pos {:.2e} vel {:.2e} acc {:.2e}; measured c pos {:.3} vel {:.3} acc {:.3}; condition/kappa in [{:.3}, {:.3}]",
-            self.ok, self.errs, self.kappa, self.err[0], self.err[1], self.err[2], self.c[0], self.c[1], self.c[2], self.cond_ratio.0, self.cond_ratio.1
-        );
-    }
-}
-
-/// Asserts an error is typed for `group` with a fault `ok_fault` accepts.
-fn typed<T: Real + core::fmt::Debug>(
-    e: &Error<T>,
-    group: &str,
-    ok_fault: impl Fn(&Fault<T>) -> bool,
-    what: &str,
-) {
-    assert_eq!(e.group, group, "{what}: error names the wrong group: {e:?}");
-    assert!(ok_fault(&e.fault), "{what}: unexpected fault {e:?}");
-}
-
-/// 1e-1 .. 1e-15 by decades, with a non-round mantissa.
-fn approach() -> Vec<f64> {
-    (1..=15).map(|k| 1.37 * 10f64.powi(-k)).collect()
 }
 
 // ---------------------------------------------------------------------------
@@ -553,14 +470,14 @@ fn prp_parallel_run<T: Real + core::fmt::Debug>(name: &str, smallest: f64) {
     let m = PrpRod::<T>::default();
     let eps = T::eps().as_f64();
     let mut cases = Vec::new();
-    for x in approach().into_iter().filter(|&x| x >= smallest) {
+    for x in decades().into_iter().filter(|&x| x >= smallest) {
         for sign in [1.0, -1.0] {
             cases.push((format!("delta {:e}", sign * x), 0.4 + sign * x));
         }
     }
     // The carried guide and the fixed one: also both carried through the
     // other crossing, theta = phi + pi.
-    for x in approach().into_iter().filter(|&x| x >= smallest) {
+    for x in decades().into_iter().filter(|&x| x >= smallest) {
         cases.push((format!("delta pi + {x:e}"), 0.4 + std::f64::consts::PI + x));
     }
     approach_run::<T>(
@@ -592,7 +509,7 @@ fn prp_fixed_guides_approaching_parallel() {
     use mechanism::guide::Line as CLine;
     use nalgebra::{Point2, Vector2};
     let mut worst = Worst::new();
-    for x in approach() {
+    for x in decades() {
         for sign in [1.0, -1.0] {
             let what = format!("prp fixed delta {:e}", sign * x);
             let (p1, p2) = (0.4f64, 0.4 + sign * x);
@@ -643,7 +560,7 @@ fn prp_fixed_guides_approaching_parallel() {
 fn rpp_parallel_run<T: Real + core::fmt::Debug>(name: &str, smallest: f64) {
     let eps = T::eps().as_f64();
     let mut cases = Vec::new();
-    for x in approach().into_iter().filter(|&x| x >= smallest) {
+    for x in decades().into_iter().filter(|&x| x >= smallest) {
         cases.push((format!("slot {x:e}"), x));
         cases.push((format!("slot pi - {x:e}"), std::f64::consts::PI - x));
     }
@@ -679,7 +596,7 @@ fn rpp_slot_approaching_parallel() {
 #[test]
 fn actuator_dead_centres() {
     for (name, base, sign) in [("extension", 3.0, -1.0), ("retraction", 1.0, 1.0)] {
-        let cases: Vec<(String, f64)> = approach()
+        let cases: Vec<(String, f64)> = decades()
             .into_iter()
             .map(|x| (format!("delta {x:e}"), base * (1.0 + sign * x)))
             .collect();
@@ -715,7 +632,7 @@ fn rrp_edge_with_offset() {
     let mut refused = 0;
     for (side, dist_sign) in [("line below A", 1.0), ("line above A", -1.0)] {
         for (way, rel_sign) in [("inside", -1.0), ("outside", 1.0)] {
-            let cases: Vec<(String, f64)> = approach()
+            let cases: Vec<(String, f64)> = decades()
                 .into_iter()
                 .map(|x| (format!("rel {x:e}"), x))
                 .collect();
