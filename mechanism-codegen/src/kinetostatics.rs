@@ -115,9 +115,7 @@ struct ForceEmitter<'a> {
     loaded: BTreeSet<String>,
     code: TokenStream,
     /// Power terms (expressions) for the balance.
-    /// Power terms for the balance: the two factors of each product and
-    /// whether it is a dot product (`true`) or a product of scalars.
-    power: Vec<(TokenStream, TokenStream, bool)>,
+    power: Vec<TokenStream>,
 }
 
 impl ForceEmitter<'_> {
@@ -243,15 +241,17 @@ impl ForceEmitter<'_> {
                     let j = j.emit();
                     let c = format_ident!("pw_inertia_couple_{}", link);
                     self.code.extend(quote!(let #c = -(#j * #alpha);));
-                    self.power.push((quote!(#c), w, false));
+                    self.power.push(quote!(#c * #w));
                     Some(quote!(#c))
                 }
                 _ => None,
             };
             if let Some(v) = &v_g {
-                self.power.push((quote!(#inertia_force), v.clone(), true));
+                self.power
+                    .push(quote!(::mechanism::geometry::dot(&#inertia_force, &#v)));
                 if k.gravity.is_some() {
-                    self.power.push((quote!(#weight), v.clone(), true));
+                    self.power
+                        .push(quote!(::mechanism::geometry::dot(&#weight, &#v)));
                 }
             }
             if !force_terms.is_empty() {
@@ -283,7 +283,8 @@ impl ForceEmitter<'_> {
             };
             self.code.extend(quote!(let #local = #value;));
             if let Some(v) = self.velocity(&f.at) {
-                self.power.push((quote!(#local), v, true));
+                self.power
+                    .push(quote!(::mechanism::geometry::dot(&#local, &#v)));
             }
             self.force_on(&link, quote!(#local), &f.at);
         }
@@ -292,7 +293,7 @@ impl ForceEmitter<'_> {
             let value = t.value.emit();
             self.code.extend(quote!(let #local = #value;));
             if let Some((w, _)) = self.rates_of(&t.on) {
-                self.power.push((quote!(#local), w, false));
+                self.power.push(quote!(#local * #w));
             }
             self.add(
                 &t.on.to_string(),
@@ -358,8 +359,7 @@ impl ForceEmitter<'_> {
                 reactions.push(revolute(&body, &links[0], pivot, quote!(pivot)));
                 let mut d = drive(input, &format!("Driving torque on `{}` (input `{input}`; force x length units, counter-clockwise positive): the balancing moment.", links[0]));
                 d.value = quote!(#rx.torque);
-                self.power
-                    .push((quote!(#rx.torque), quote!(vel.rates.#input), false));
+                self.power.push(quote!(#rx.torque * vel.rates.#input));
                 reactions.push(d);
             }
             Kind::Slider { guide, input, .. } => {
@@ -374,8 +374,7 @@ impl ForceEmitter<'_> {
                 reactions.push(prismatic(&body, &links[0], name, quote!(guide)));
                 let mut d = drive(input, &format!("Driving force on `{}` along its guide (input `{input}`; force units, positive along the guide's direction).", links[0]));
                 d.value = quote!(#rx.drive);
-                self.power
-                    .push((quote!(#rx.drive), quote!(vel.rates.#input), false));
+                self.power.push(quote!(#rx.drive * vel.rates.#input));
                 reactions.push(d);
             }
             Kind::Actuator { a, b, input, .. } => {
@@ -390,8 +389,7 @@ impl ForceEmitter<'_> {
                 reactions.push(revolute(&body_a, &links[0], a, quote!(a)));
                 let mut d = drive(input, &format!("Axial force of the actuator `{}` (input `{input}`; force units, positive when it pushes its ends apart).", links[1]));
                 d.value = quote!(#rx.axial);
-                self.power
-                    .push((quote!(#rx.axial), quote!(vel.rates.#input), false));
+                self.power.push(quote!(#rx.axial * vel.rates.#input));
                 conditions.push(quote!(#rx.min_pivot_ratio));
                 reactions.push(d);
             }
@@ -533,15 +531,7 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
     let terms: Vec<Ident> = (0..em.power.len())
         .map(|k| format_ident!("pw_{}", k))
         .collect();
-    // Each term: a force or couple times the velocity of its point or body.
-    let product = |(a, b, dot): &(TokenStream, TokenStream, bool)| {
-        if *dot {
-            quote!(::mechanism::geometry::dot(&#a, &#b))
-        } else {
-            quote!(#a * #b)
-        }
-    };
-    let power_exprs: Vec<TokenStream> = em.power.iter().map(product).collect();
+    let power_terms = &em.power;
     let power = if terms.is_empty() {
         lit(0.0)
     } else {
@@ -574,7 +564,7 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
         // shown, and 1 is reported rather than a NaN (a rescaled second
         // evaluation of every term would double this code for that case).
         quote! {{
-            #(let #terms = #power_exprs;)*
+            #(let #terms = #power_terms;)*
             match #residual {
                 ::core::option::Option::Some(r) => r,
                 ::core::option::Option::None => <T as ::mechanism::Real>::lit(1.0),
