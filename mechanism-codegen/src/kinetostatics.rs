@@ -59,46 +59,6 @@ pub fn roots(model: &Model, plan: &Plan) -> Vec<usize> {
     roots
 }
 
-/// Compile errors for groups and drivers joined to an actuator's cylinder (at
-/// a point of it or on a guide it carries). The force analysis treats the
-/// cylinder as a massless two-force member (its force along its axis is the
-/// drive) and solves no equations for it, so a reaction passed to it would be
-/// lost and every effort behind it wrong; the kinematics are fine, so this is
-/// an error of the force analysis only.
-fn cylinder_joints(model: &Model, plan: &Plan) -> TokenStream {
-    let cylinders: BTreeSet<String> = model
-        .stmts
-        .iter()
-        .filter(|s| matches!(s.kind, Kind::Actuator { .. }))
-        .filter_map(|s| s.links.get(1).map(Ident::to_string))
-        .collect();
-    let mut errors = TokenStream::new();
-    for stmt in &model.stmts {
-        if matches!(
-            stmt.kind,
-            Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. }
-        ) {
-            continue;
-        }
-        for r in crate::plan::references(stmt) {
-            let name = r.to_string();
-            let (body, what) = match (plan.body_of_point(&name), plan.body_of_guide(&name)) {
-                (Some(b), _) => (b, "a point of"),
-                (None, Some(b)) => (b, "a guide carried by"),
-                (None, None) => continue,
-            };
-            if cylinders.contains(&body) {
-                let msg = format!(
-                    "`{name}` is {what} the actuator's cylinder `{body}`, which the force analysis takes as a massless two-force member (it carries only its axial force): `{}` cannot be joined to it there; join it to the link the actuator drives or to the ground, or leave out the force analysis (no `mass`, `force`, `torque`)",
-                    stmt.name
-                );
-                errors.extend(quote::quote_spanned!(r.span()=> ::core::compile_error!(#msg);));
-            }
-        }
-    }
-    errors
-}
-
 /// A reaction field of the generated forces struct.
 struct Reaction {
     name: Ident,
@@ -603,9 +563,7 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
             quote!(, loads),
         )
     };
-    let cylinder_errors = cylinder_joints(model, plan);
     let items = quote! {
-        #cylinder_errors
         #[doc = #forces_doc]
         #[derive(Clone, Copy, Debug, PartialEq)]
         #[allow(non_snake_case)]

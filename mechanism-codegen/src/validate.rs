@@ -534,6 +534,9 @@ fn loadable_link(
 /// sit on links at points of those links, forces act at points of one link
 /// (or name it), guides and links named by loads exist.
 pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
+    if model.level == Level::Forces {
+        nothing_on_a_cylinder(model, plan, errors);
+    }
     let k = &model.kinetics;
     let loaded = !k.masses.is_empty() || !k.forces.is_empty() || !k.torques.is_empty();
     if model.level == Level::Forces && !loaded && !k.declared {
@@ -661,6 +664,46 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
                 load.span(),
                 format!("`{name}` is already defined; a load value needs a name of its own"),
             );
+        }
+    }
+}
+
+/// Rule (with a force analysis): no group or driver is joined to an
+/// actuator's cylinder (at a point of it or on a guide it carries). The force
+/// analysis treats the cylinder as a massless two-force member (its force
+/// along its axis is the drive) and solves no equations for it, so a
+/// reaction passed to it would be lost and every effort behind it wrong; the
+/// kinematics are fine, so this is an error of the force analysis only.
+fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Errors) {
+    let cylinders: Vec<String> = model
+        .stmts
+        .iter()
+        .filter(|s| matches!(s.kind, Kind::Actuator { .. }))
+        .filter_map(|s| s.links.get(1).map(Ident::to_string))
+        .collect();
+    for stmt in &model.stmts {
+        if matches!(
+            stmt.kind,
+            Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. }
+        ) {
+            continue;
+        }
+        for r in references(stmt) {
+            let name = r.to_string();
+            let (body, what) = match (plan.body_of_point(&name), plan.body_of_guide(&name)) {
+                (Some(b), _) => (b, "a point of"),
+                (None, Some(b)) => (b, "a guide carried by"),
+                (None, None) => continue,
+            };
+            if cylinders.contains(&body) {
+                errors.push(
+                    r.span(),
+                    format!(
+                        "`{name}` is {what} the actuator's cylinder `{body}`, which the force analysis takes as a massless two-force member (it carries only its axial force): `{}` cannot be joined to it there; join it to the link the actuator drives or to the ground, or leave out the force analysis (no `mass`, `force`, `torque`)",
+                        stmt.name
+                    ),
+                );
+            }
         }
     }
 }
