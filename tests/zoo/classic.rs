@@ -474,3 +474,284 @@ fn hoeken_runs_straight_and_matches_the_closed_form() {
     assert!((dev.0 - dev.1).abs() <= 2e-14, "{dev:?}");
     assert!(dev.1 > 0.0097 && dev.1 < 0.0098, "{dev:?}");
 }
+
+// ---------------------------------------------------------------------------
+// 3. Theo Jansen's leg.
+
+// The "holy numbers" (Jansen, strandbeest.com; lengths in mm here). The
+// geometry convention is the one two independent public implementations
+// agree on (an MIT course's Matlab strandbeest exercise: crank centre (0, 0),
+// fixed pivot (-38, -7.8), pivot-to-outer vertex d = 40.1 and upper-joint-
+// to-outer e = 55.8, lower-joint-to-foot i = 49 and knee-to-foot h = 65.7;
+// bernhard-42/bd_animation's `examples/jansen.py`: the same lengths with
+// the pivot at the origin and the crank centre at (+38, +7.8), so the same
+// relative position): crank m about O; the fixed pivot Z at (-a, -l);
+// j from the crank pin A to the upper joint B, b from Z to B; k from A to
+// the lower joint C, c from Z to C; the upper ternary link Z-B-D (sides b,
+// e = |BD|, d = |ZD|); f from D to the knee E; the foot link C-E-F (sides
+// g = |CE|, i = |CF|, h = |EF|). Branches: B above the line A-Z, C below
+// it, D outboard (left of Z -> B), E right of D -> C, F below (left of C
+// -> E): the walking leg. The foot path below (stride 68 mm, lift 22 mm,
+// the flat stance) is what that convention gives.
+const JA: f64 = 38.0;
+const JB: f64 = 41.5;
+const JC: f64 = 39.3;
+const JD: f64 = 40.1;
+const JE: f64 = 55.8;
+const JF: f64 = 39.4;
+const JG: f64 = 36.7;
+const JH: f64 = 65.7;
+const JI: f64 = 49.0;
+const JJ: f64 = 50.0;
+const JK: f64 = 61.9;
+const JL: f64 = 7.8;
+const JM: f64 = 15.0;
+
+mechanism! {
+    /// Theo Jansen's leg (mm, t, s, so forces in N and moments in N mm):
+    /// the holy numbers (see the constants above), with `phi` the angle at Z
+    /// from Z -> B to Z -> D and `psi` the angle at C from C -> E to C -> F
+    /// (law of cosines; the literals are those values, the test sets them
+    /// from `acos` and checks the literals against them); `(gux, guy)` and
+    /// `(gfx, gfy)` the centroids of the two triangles in their links'
+    /// frames. Masses on all seven moving links, gravity, and the ground's
+    /// contact force on the foot (`loads`).
+    pub JansenLeg {
+        params {
+            phi = 1.505666012627363, psi = 1.7295561572633906,
+            gux = 14.703293172690763, guy = 13.33832626890207,
+            gfx = 9.651135331516803, gfy = 16.12792706013989
+        }
+        loads { fx = 0.0, fy = 0.0 }
+        dof 1;
+        let O = ground(0.0, 0.0);
+        let Z = ground(-38.0, -7.8);
+        let A = crank(O, 15.0, theta) as crank;
+        let B = rrr(A, 50.0, Z, 41.5, right) as (rodj, upper);
+        let C = rrr(A, 61.9, Z, 39.3, left) as (rodk, lower);
+        let D = point(upper, from Z, 40.1, phi);
+        let E = rrr(D, 39.4, C, 36.7, right) as (rodf, foot);
+        let F = point(foot, from C, 49.0, psi);
+        let Gc = point(crank, from O, 7.5, 0 deg);
+        let Gj = point(rodj, from A, 25.0, 0 deg);
+        let Gk = point(rodk, from A, 30.95, 0 deg);
+        let Gl = point(lower, from Z, 19.65, 0 deg);
+        let Gf = point(rodf, from D, 19.7, 0 deg);
+        let Gu = point(upper, from Z, (gux, guy));
+        let Gt = point(foot, from C, (gfx, gfy));
+        mass crank { m = 0.0003, at = Gc, j = 0.006 };
+        mass rodj { m = 0.0002, at = Gj, j = 0.042 };
+        mass rodk { m = 0.00025, at = Gk, j = 0.08 };
+        mass lower { m = 0.00016, at = Gl, j = 0.021 };
+        mass rodf { m = 0.00016, at = Gf, j = 0.021 };
+        mass upper { m = 0.0004, at = Gu, j = 0.15 };
+        mass foot { m = 0.0005, at = Gt, j = 0.3 };
+        gravity (0.0, -9810.0);
+        force at F on foot = (fx, fy);
+    }
+}
+
+/// The leg with its triangle angles and centroids computed here from the
+/// holy numbers (law of cosines, f64); the literal defaults must agree to a
+/// few ulp (they were printed from the same formulas).
+fn jansen() -> JansenLeg<f64> {
+    let phi = ((JB * JB + JD * JD - JE * JE) / (2.0 * JB * JD)).acos();
+    let psi = ((JG * JG + JI * JI - JH * JH) / (2.0 * JG * JI)).acos();
+    let m = JansenLeg {
+        phi,
+        psi,
+        gux: (JB + JD * phi.cos()) / 3.0,
+        guy: JD * phi.sin() / 3.0,
+        gfx: (JG + JI * psi.cos()) / 3.0,
+        gfy: JI * psi.sin() / 3.0,
+        ..Default::default()
+    };
+    let d = JansenLeg::<f64>::default();
+    for (x, y) in [
+        (m.phi, d.phi),
+        (m.psi, d.psi),
+        (m.gux, d.gux),
+        (m.guy, d.guy),
+        (m.gfx, d.gfx),
+        (m.gfy, d.gfy),
+    ] {
+        assert!((x - y).abs() <= 4.0 * f64::EPSILON * x.abs(), "{x} vs {y}");
+    }
+    m
+}
+
+/// The leg's double-double reference, with the holy numbers as distances
+/// (the triangles by their three sides, not by the angles above): points 0
+/// O, 1 Z, 2 A, 3 B, 4 C, 5 D, 6 E, 7 F.
+fn jansen_linkage() -> Linkage {
+    let d = |p, q, len| Constraint::Distance { p, q, len };
+    let side = |p, a, b, sign| Side::Left { p, a, b, sign };
+    let mut points = vec![fixed(0.0, 0.0), fixed(-JA, -JL)];
+    points.extend([Point::Unknown; 6]);
+    Linkage {
+        points,
+        constraints: vec![
+            Constraint::Crank {
+                p: 2,
+                o: 0,
+                r: JM,
+                input: 0,
+            },
+            d(3, 2, JJ),
+            d(3, 1, JB),
+            d(4, 2, JK),
+            d(4, 1, JC),
+            d(5, 1, JD),
+            d(5, 3, JE),
+            d(6, 5, JF),
+            d(6, 4, JG),
+            d(7, 4, JI),
+            d(7, 6, JH),
+        ],
+        sides: vec![
+            side(3, 2, 1, -1.0),
+            side(4, 2, 1, 1.0),
+            side(5, 1, 3, 1.0),
+            side(6, 5, 4, -1.0),
+            side(7, 4, 6, 1.0),
+        ],
+        scale: 100.0,
+    }
+}
+
+/// Every holy number as a distance between the generated points, at every
+/// degree of the turn: the eleven lengths of the reference plus the crank.
+/// `assert_len` allows 1e-14 of the length (30 eps of the 100 mm
+/// coordinates at 65.7: a few roundings of each group, the groups' sines
+/// staying above 0.2 over the turn, and the ternary points' rotation by
+/// sin/cos of `phi`, `psi` within 2 ulp).
+#[test]
+fn jansen_keeps_every_length() {
+    let m = jansen();
+    for k in 0..360 {
+        let p = m
+            .position(&JansenLegInput {
+                theta: f64::to_radians(k as f64),
+            })
+            .unwrap();
+        assert_len(p.A, p.O, JM, "m");
+        assert_len(p.B, p.A, JJ, "j");
+        assert_len(p.B, p.Z, JB, "b");
+        assert_len(p.C, p.A, JK, "k");
+        assert_len(p.C, p.Z, JC, "c");
+        assert_len(p.D, p.Z, JD, "d");
+        assert_len(p.D, p.B, JE, "e");
+        assert_len(p.E, p.D, JF, "f");
+        assert_len(p.E, p.C, JG, "g");
+        assert_len(p.F, p.C, JI, "i");
+        assert_len(p.F, p.E, JH, "h");
+        assert_eq!(p.Z, Point2::new(-JA, -JL));
+    }
+}
+
+/// The generated points in the reference's order.
+fn jansen_points(p: &JansenLegPosition<f64>) -> [Point2<f64>; 8] {
+    [p.O, p.Z, p.A, p.B, p.C, p.D, p.E, p.F]
+}
+
+/// The leg's conditioning at a pose: the smallest sine of the groups that
+/// find B and C, times the sine of E's group (E takes their errors), as in
+/// the inversor's test.
+fn jansen_kappa(p: &JansenLegPosition<f64>) -> f64 {
+    sin_at(p.B, p.A, p.Z).min(sin_at(p.C, p.A, p.Z)) * sin_at(p.E, p.D, p.C)
+}
+
+/// Positions, velocities and accelerations of every point against the
+/// double-double reference every 2 deg, normwise per stage, in the form
+/// `c eps L / kappa^k` of the inversor's test (L the largest reference
+/// value of the stage, k = 1, 2, 3); `c = 16`, the measured worst printed.
+/// Also the foot's path: the stance (crank from -60 to 60 deg) keeps the
+/// foot within 0.39 mm of its lowest height while it advances 46 mm
+/// monotonically (figures of the reference, asserted on the generated
+/// points and shown equal to the reference's to 1e-12 mm).
+#[test]
+fn jansen_matches_the_double_double_reference() {
+    let m = jansen();
+    let lk = jansen_linkage();
+    let (w, al) = (std::f64::consts::TAU, 3.0);
+    let mut worst = [0.0f64; 3];
+    let mut min_kappa = 1.0f64;
+    let mut stance = Vec::new();
+    let mut stance_ref = Vec::new();
+    let (mut ymin, mut ymax) = (f64::INFINITY, f64::NEG_INFINITY);
+    for k in 0..180 {
+        let q = f64::to_radians(2.0 * k as f64);
+        let i = |x| JansenLegInput { theta: x };
+        let s = m
+            .solve(&i(q), &i(w), &i(al), &JansenLegLoads { fx: 0.0, fy: 0.0 })
+            .unwrap();
+        let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
+        let pts = jansen_points(p);
+        let start: Vec<(f64, f64)> = pts.iter().map(|p| (p.x, p.y)).collect();
+        let (rp, rv, ra) = reference(&lk, q, w, al, &start);
+        let kappa = jansen_kappa(p);
+        min_kappa = min_kappa.min(kappa);
+        let z = Vector2::zeros();
+        let vs = [z, z, v.A, v.B, v.C, v.D, v.E, v.F];
+        let accs = [z, z, a.A, a.B, a.C, a.D, a.E, a.F];
+        let stage = |got: &[(f64, f64)], r: &[V2]| {
+            let e = got.iter().zip(r).map(|(g, r)| dist(*g, *r)).fold(0.0, f64::max);
+            let sc = r.iter().map(|r| len(*r)).fold(0.0, f64::max);
+            e / (f64::EPSILON * sc)
+        };
+        let gv: Vec<_> = vs.iter().map(|p| (p.x, p.y)).collect();
+        let ga: Vec<_> = accs.iter().map(|p| (p.x, p.y)).collect();
+        let e = [
+            stage(&start, &rp) * kappa,
+            stage(&gv, &rv) * kappa.powi(2),
+            stage(&ga, &ra) * kappa.powi(3),
+        ];
+        for (x, e) in worst.iter_mut().zip(e) {
+            *x = x.max(e);
+        }
+        ymin = ymin.min(p.F.y);
+        ymax = ymax.max(p.F.y);
+        // Stance: -60..60 deg, i.e. 300..358 and 0..60 in this loop.
+        let deg = 2 * k;
+        if deg >= 300 || deg <= 60 {
+            let order = if deg >= 300 { deg - 360 } else { deg };
+            stance.push((order, p.F));
+            stance_ref.push((order, rp[7].x.to_f64(), rp[7].y.to_f64()));
+        }
+    }
+    println!(
+        "Jansen vs double-double: worst / (eps L kappa^-k) {worst:?}, lowest kappa {min_kappa}"
+    );
+    for (what, x) in ["position", "velocity", "acceleration"].iter().zip(worst) {
+        assert!(x <= 16.0, "{what}: {x}");
+    }
+
+    stance.sort_by_key(|s| s.0);
+    stance_ref.sort_by_key(|s| s.0);
+    let band = |ys: &mut dyn Iterator<Item = f64>| {
+        let (lo, hi) = ys.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), y| {
+            (lo.min(y), hi.max(y))
+        });
+        (lo, hi)
+    };
+    let (lo, hi) = band(&mut stance.iter().map(|s| s.1.y));
+    let (rlo, rhi) = band(&mut stance_ref.iter().map(|s| s.2));
+    let stride = stance.last().unwrap().1.x - stance[0].1.x;
+    let rstride = stance_ref.last().unwrap().1 - stance_ref[0].1;
+    println!(
+        "Jansen foot: stance band {:.4} mm (reference {:.4}), stride {stride:.3} mm \
+         (reference {rstride:.3}), lowest {lo:.4}, whole turn {ymin:.4}..{ymax:.4}",
+        hi - lo,
+        rhi - rlo
+    );
+    assert!(((hi - lo) - (rhi - rlo)).abs() <= 1e-12, "band");
+    assert!((stride - rstride).abs() <= 1e-12, "stride");
+    assert!(hi - lo < 0.39 && hi - lo > 0.38, "stance band {}", hi - lo);
+    assert!(stride > 45.9 && stride < 46.1, "stride {stride}");
+    // The stance holds the lowest point of the whole path, and the foot
+    // advances monotonically through it (+x, the crank turning
+    // counter-clockwise).
+    assert_eq!(lo, ymin);
+    assert!(stance.windows(2).all(|s| s[1].1.x > s[0].1.x));
+    assert!(ymax - ymin > 22.0 && ymax - ymin < 22.6, "lift {}", ymax - ymin);
+}
