@@ -1,5 +1,5 @@
 //! Classic linkages, each checked against facts of its own geometry that the
-//! generated code does not use (see `main.rs` for the list):
+//! generated code does not use:
 //!
 //! - `Peaucellier`: the Peaucellier-Lipkin inversor. Its point P is the
 //!   inverse of A in the circle of radius `sqrt(l^2 - s^2)` about O, so it
@@ -363,7 +363,11 @@ fn peaucellier_matches_the_double_double_reference() {
         let vs = [Vector2::zeros(), Vector2::zeros(), v.A, v.B, v.C, v.P];
         let accs = [Vector2::zeros(), Vector2::zeros(), a.A, a.B, a.C, a.P];
         let stage = |got: &[(f64, f64)], r: &[V2]| {
-            let e = got.iter().zip(r).map(|(g, r)| dist(*g, *r)).fold(0.0, f64::max);
+            let e = got
+                .iter()
+                .zip(r)
+                .map(|(g, r)| dist(*g, *r))
+                .fold(0.0, f64::max);
             let sc = r.iter().map(|r| len(*r)).fold(0.0, f64::max);
             e / (f64::EPSILON * sc)
         };
@@ -470,7 +474,10 @@ fn hoeken_runs_straight_and_matches_the_closed_form() {
     // The largest deviation from y = 4 over the straight part (90 to 270
     // deg, sampled every 0.25 deg), as generated and as the closed form has
     // it: 0.00974 (0.24 % of the part's length 4), at about 130 and 230 deg.
-    println!("Hoeken: largest deviation from y = 4: {:e} (closed form {:e})", dev.0, dev.1);
+    println!(
+        "Hoeken: largest deviation from y = 4: {:e} (closed form {:e})",
+        dev.0, dev.1
+    );
     assert!((dev.0 - dev.1).abs() <= 2e-14, "{dev:?}");
     assert!(dev.1 > 0.0097 && dev.1 < 0.0098, "{dev:?}");
 }
@@ -623,11 +630,13 @@ fn jansen_linkage() -> Linkage {
 /// degree of the turn: the eleven lengths of the reference plus the crank.
 /// `assert_len` allows 1e-14 of the length (30 eps of the 100 mm
 /// coordinates at 65.7: a few roundings of each group, the groups' sines
-/// staying above 0.2 over the turn, and the ternary points' rotation by
-/// sin/cos of `phi`, `psi` within 2 ulp).
+/// staying above 0.15 over the turn (asserted; C's group is the lowest,
+/// near 190 deg), and the ternary points' rotation by sin/cos of `phi`,
+/// `psi` within 2 ulp).
 #[test]
 fn jansen_keeps_every_length() {
     let m = jansen();
+    let mut lowest = 1.0f64;
     for k in 0..360 {
         let p = m
             .position(&JansenLegInput {
@@ -646,7 +655,12 @@ fn jansen_keeps_every_length() {
         assert_len(p.F, p.C, JI, "i");
         assert_len(p.F, p.E, JH, "h");
         assert_eq!(p.Z, Point2::new(-JA, -JL));
+        lowest = lowest
+            .min(sin_at(p.B, p.A, p.Z))
+            .min(sin_at(p.C, p.A, p.Z))
+            .min(sin_at(p.E, p.D, p.C));
     }
+    assert!(lowest > 0.15, "{lowest}");
 }
 
 /// The generated points in the reference's order.
@@ -664,7 +678,8 @@ fn jansen_kappa(p: &JansenLegPosition<f64>) -> f64 {
 /// Positions, velocities and accelerations of every point against the
 /// double-double reference every 2 deg, normwise per stage, in the form
 /// `c eps L / kappa^k` of the inversor's test (L the largest reference
-/// value of the stage, k = 1, 2, 3); `c = 16`, the measured worst printed.
+/// value of the stage, k = 1, 2, 3); `c = 16`, the measured worst printed
+/// (1.19, 2.66, 2.19; the lowest kappa over the turn 0.054, near 190 deg).
 /// Also the foot's path: the stance (crank from -60 to 60 deg) keeps the
 /// foot within 0.39 mm of its lowest height while it advances 46 mm
 /// monotonically (figures of the reference, asserted on the generated
@@ -695,7 +710,11 @@ fn jansen_matches_the_double_double_reference() {
         let vs = [z, z, v.A, v.B, v.C, v.D, v.E, v.F];
         let accs = [z, z, a.A, a.B, a.C, a.D, a.E, a.F];
         let stage = |got: &[(f64, f64)], r: &[V2]| {
-            let e = got.iter().zip(r).map(|(g, r)| dist(*g, *r)).fold(0.0, f64::max);
+            let e = got
+                .iter()
+                .zip(r)
+                .map(|(g, r)| dist(*g, *r))
+                .fold(0.0, f64::max);
             let sc = r.iter().map(|r| len(*r)).fold(0.0, f64::max);
             e / (f64::EPSILON * sc)
         };
@@ -753,5 +772,284 @@ fn jansen_matches_the_double_double_reference() {
     // counter-clockwise).
     assert_eq!(lo, ymin);
     assert!(stance.windows(2).all(|s| s[1].1.x > s[0].1.x));
-    assert!(ymax - ymin > 22.0 && ymax - ymin < 22.6, "lift {}", ymax - ymin);
+    assert!(
+        ymax - ymin > 22.0 && ymax - ymin < 22.6,
+        "lift {}",
+        ymax - ymin
+    );
+}
+
+/// Central difference of `f` at 0 with step `h`.
+fn central(f: &dyn Fn(f64) -> Vector2<f64>, h: f64) -> Vector2<f64> {
+    (f(h) - f(-h)) / (2.0 * h)
+}
+
+/// Richardson-extrapolated central difference of `f` at 0 and a bound on its
+/// error. With `D(h) = f' + h^2 f'''/6 + h^4 f^(5)/120 + ..`, `R(h) = (4
+/// D(h/2) - D(h)) / 3 = f' - h^4 f^(5)/480 + O(h^6)`; `R(2h)` has 16 times
+/// that term, so `|R(h) - R(2h)| / 15` estimates the truncation error of
+/// `R(h)` (taken twice over for the neglected `h^6` terms). Rounding: each
+/// value of `f` is within `delta` of the exact one, so `D(h/2)` is within
+/// `2 delta / h`, `D(h)` within `delta / h` and `R(h)` within `3 delta / h`.
+fn richardson(f: &dyn Fn(f64) -> Vector2<f64>, h: f64, delta: f64) -> (Vector2<f64>, f64) {
+    let r = |h: f64| (central(f, h / 2.0) * 4.0 - central(f, h)) / 3.0;
+    let (r1, r2) = (r(h), r(2.0 * h));
+    (r1, 2.0 * (r1 - r2).norm() / 15.0 + 3.0 * delta / h)
+}
+
+/// Velocities and accelerations of every moving point of the leg against
+/// Richardson-extrapolated central differences of the generated position
+/// and velocity, along a motion with crank acceleration (theta = q + w t +
+/// al t^2 / 2), every 5 deg.
+///
+/// Step: `h = 2.5e-4 s` (1.6e-3 rad of crank). Rounding: the positions are
+/// within 16 eps L / kappa of exact and the velocities within 16 eps V /
+/// kappa^2 (the reference test's bounds, `kappa` the pose's, down to
+/// 0.054 near 190 deg; L = 100 mm, V = 1000 mm/s, which bounds every
+/// point's speed here: asserted), at worst 7e-12 mm and 1.2e-9 mm/s, so `3
+/// delta / h` is below 1e-7 mm/s and 1.5e-5 mm/s^2. Truncation: estimated
+/// per pose as above; near lift-off (170 to 190 deg) the foot's
+/// acceleration changes fast and the estimate reaches 5e-6 mm/s^2 (at 1e-3 s
+/// it was 8e-5: it scales as h^4, as measured down to 1e-4 s). The sum is
+/// asserted below 1e-8 of the scale (V, and A = 2e4 mm/s^2 bounding every
+/// acceleration: asserted), so the check cannot become vacuous; a rate
+/// wrong by a term of its own size fails by 1e6 or more.
+#[test]
+fn jansen_rates_match_richardson_differences() {
+    let m = jansen();
+    let (w, al) = (std::f64::consts::TAU, 3.0);
+    let h = 2.5e-4;
+    let (lp, lv, la) = (100.0, 1000.0, 2e4);
+    let mut worst = (0.0f64, 0.0f64);
+    for k in 0..72 {
+        let q = f64::to_radians(5.0 * k as f64);
+        let at = |t: f64| JansenLegInput {
+            theta: q + w * t + 0.5 * al * t * t,
+        };
+        let rate = |t: f64| JansenLegInput { theta: w + al * t };
+        let p = m.position(&at(0.0)).unwrap();
+        let v = m.velocity(&p, &rate(0.0)).unwrap();
+        let a = m
+            .acceleration(&p, &v, &JansenLegInput { theta: al })
+            .unwrap();
+        let kappa = jansen_kappa(&p);
+        let (dp, dv) = (
+            16.0 * f64::EPSILON * lp / kappa,
+            16.0 * f64::EPSILON * lv / (kappa * kappa),
+        );
+        let pos = |t: f64| m.position(&at(t)).unwrap();
+        let vel = |t: f64| m.velocity(&pos(t), &rate(t)).unwrap();
+        type Pick = fn(&JansenLegPosition<f64>) -> Point2<f64>;
+        type PickV = fn(&JansenLegVelocity<f64>) -> Vector2<f64>;
+        type Row = (&'static str, Pick, PickV, Vector2<f64>, Vector2<f64>);
+        let points: [Row; 6] = [
+            ("A", |p| p.A, |v| v.A, v.A, a.A),
+            ("B", |p| p.B, |v| v.B, v.B, a.B),
+            ("C", |p| p.C, |v| v.C, v.C, a.C),
+            ("D", |p| p.D, |v| v.D, v.D, a.D),
+            ("E", |p| p.E, |v| v.E, v.E, a.E),
+            ("F", |p| p.F, |v| v.F, v.F, a.F),
+        ];
+        for (name, pick, pick_v, got_v, got_a) in points {
+            let (fd_v, tol_v) = richardson(&|t| pick(&pos(t)).coords, h, dp);
+            let (fd_a, tol_a) = richardson(&|t| pick_v(&vel(t)), h, dv);
+            let (scale_v, scale_a) = (lv, la);
+            assert!(got_v.norm() <= lv && got_a.norm() <= la, "{name} at {k}");
+            assert!(tol_v <= 1e-8 * scale_v, "{name} at {k}: vel tol {tol_v:e}");
+            assert!(tol_a <= 1e-8 * scale_a, "{name} at {k}: acc tol {tol_a:e}");
+            let (ev, ea) = ((got_v - fd_v).norm(), (got_a - fd_a).norm());
+            assert!(
+                ev <= tol_v,
+                "v{name} at {k}: {got_v:?} vs {fd_v:?} (tol {tol_v:e})"
+            );
+            assert!(
+                ea <= tol_a,
+                "a{name} at {k}: {got_a:?} vs {fd_a:?} (tol {tol_a:e})"
+            );
+            worst.0 = worst.0.max(ev / scale_v);
+            worst.1 = worst.1.max(ea / scale_a);
+        }
+    }
+    println!("Jansen vs Richardson: worst relative velocity, acceleration error {worst:?}");
+}
+
+// ---------------------------------------------------------------------------
+// 4. Forces on Jansen's leg.
+
+/// The leg's masses (t) and inertias about the centres (t mm^2), as in the
+/// definition, per link: crank, rodj, rodk, lower, rodf, upper, foot.
+const JMASS: [(f64, f64); 7] = [
+    (0.0003, 0.006),
+    (0.0002, 0.042),
+    (0.00025, 0.08),
+    (0.00016, 0.021),
+    (0.00016, 0.021),
+    (0.0004, 0.15),
+    (0.0005, 0.3),
+];
+
+/// Gravity (mm/s^2).
+const JG9: Vector2<f64> = Vector2::new(0.0, -9810.0);
+
+/// Newton-Euler for each of the seven moving links of one solved pose,
+/// from the generated reactions, drive torque, the contact force `contact`
+/// at F and the inertia and weight terms; `flip` negates the reaction of
+/// `rodk` on `foot` at C in the copy applied to the foot (the deliberate
+/// mistake). Returns the worst relative residual (force or moment).
+fn jansen_newton_euler(s: &JansenLegSolution<f64>, contact: Vector2<f64>, flip: f64) -> f64 {
+    let (p, a, f) = (&s.position, &s.acceleration, &s.forces);
+    let mm = |i: usize| JMASS[i];
+    let bodies = [
+        Body::default()
+            .force(p.O, f.r_ground_crank)
+            .force(p.A, -f.r_crank_rodj)
+            .force(p.A, -f.r_crank_rodk)
+            .couple(f.drive_theta)
+            .inertia(mm(0).0, mm(0).1, p.Gc, a.Gc, a.crank, JG9),
+        Body::default()
+            .force(p.A, f.r_crank_rodj)
+            .force(p.B, -f.r_rodj_upper)
+            .inertia(mm(1).0, mm(1).1, p.Gj, a.Gj, a.rodj, JG9),
+        Body::default()
+            .force(p.A, f.r_crank_rodk)
+            .force(p.C, -f.r_rodk_lower)
+            .force(p.C, -f.r_rodk_foot)
+            .inertia(mm(2).0, mm(2).1, p.Gk, a.Gk, a.rodk, JG9),
+        Body::default()
+            .force(p.Z, f.r_ground_lower)
+            .force(p.C, f.r_rodk_lower)
+            .inertia(mm(3).0, mm(3).1, p.Gl, a.Gl, a.lower, JG9),
+        Body::default()
+            .force(p.D, f.r_upper_rodf)
+            .force(p.E, -f.r_rodf_foot)
+            .inertia(mm(4).0, mm(4).1, p.Gf, a.Gf, a.rodf, JG9),
+        Body::default()
+            .force(p.Z, f.r_ground_upper)
+            .force(p.B, f.r_rodj_upper)
+            .force(p.D, -f.r_upper_rodf)
+            .inertia(mm(5).0, mm(5).1, p.Gu, a.Gu, a.upper, JG9),
+        Body::default()
+            .force(p.C, f.r_rodk_foot * flip)
+            .force(p.E, f.r_rodf_foot)
+            .force(p.F, contact)
+            .inertia(mm(6).0, mm(6).1, p.Gt, a.Gt, a.foot, JG9),
+    ];
+    bodies
+        .iter()
+        .map(|b| {
+            let (fr, mr) = b.residual();
+            fr.max(mr)
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The drive torque from the power balance (N mm): `tau w + F . v_F +
+/// sum(weights and inertia loads' power) = 0`, from the generated motion
+/// only; `skip` leaves out one link's inertia term (the deliberate mistake;
+/// `None` for the real balance). Also returns the largest single power.
+fn jansen_power_torque(
+    s: &JansenLegSolution<f64>,
+    contact: Vector2<f64>,
+    w: f64,
+    skip: Option<usize>,
+) -> (f64, f64) {
+    let (v, a) = (&s.velocity, &s.acceleration);
+    let links = [
+        (v.Gc, a.Gc, v.crank, a.crank),
+        (v.Gj, a.Gj, v.rodj, a.rodj),
+        (v.Gk, a.Gk, v.rodk, a.rodk),
+        (v.Gl, a.Gl, v.lower, a.lower),
+        (v.Gf, a.Gf, v.rodf, a.rodf),
+        (v.Gu, a.Gu, v.upper, a.upper),
+        (v.Gt, a.Gt, v.foot, a.foot),
+    ];
+    let mut terms = vec![contact.dot(&v.F)];
+    for (i, (vg, ag, om, alpha)) in links.into_iter().enumerate() {
+        if skip != Some(i) {
+            let (m, j) = JMASS[i];
+            terms.push(inertial(m, j, vg, ag, om, alpha, JG9));
+        }
+    }
+    let sum: f64 = terms.iter().sum();
+    let scale = terms.iter().fold(0.0f64, |x, t| x.max(t.abs()));
+    (-sum / w, scale)
+}
+
+/// The leg's force analysis over the turn (every 5 deg), crank at 1 rev/s
+/// speeding up at 3 rad/s^2, with the ground pushing on the foot (40 N up,
+/// 6 N back) through the stance (crank -60 to 60 deg) and nothing
+/// elsewhere:
+///
+/// - Newton-Euler per link, from the generated reactions (the seven links,
+///   every joint: A and C each join three links): net force and moment
+///   within `TOL` (1e-13, see `main.rs`; the force systems' relative pivots
+///   are printed, their lowest is what the `eps / condition` of docs/dsl.md
+///   allows) of the largest term;
+/// - the drive torque against the one the power balance gives from the
+///   motion alone, within `TOL` of the largest power divided by `w`;
+/// - each check fails on a deliberate mistake: the foot's reaction at C
+///   negated (a residual of the size of that reaction: above 1e-2 of the
+///   scale at every pose, 3.7e-2 the least measured), the foot's inertia
+///   left out of the power (the torque off by that term's share: above
+///   1e-4 of the scale at every pose, 3.5e-4 the least measured); both
+///   1e9 times `TOL` or more. Measured (printed): Newton-Euler 6.4e-16,
+///   power 2.1e-15, lowest force-system condition 0.29.
+#[test]
+fn jansen_forces_balance_per_link_and_by_power() {
+    let m = jansen();
+    let (w, al) = (std::f64::consts::TAU, 3.0);
+    let mut worst = (0.0f64, 0.0f64);
+    let mut lowest_condition = 1.0f64;
+    let mut caught = (f64::INFINITY, f64::INFINITY);
+    for k in 0..72 {
+        let deg = 5 * k;
+        let stance = !(65..300).contains(&deg);
+        let contact = if stance {
+            Vector2::new(-6.0, 40.0)
+        } else {
+            Vector2::zeros()
+        };
+        let i = |x| JansenLegInput { theta: x };
+        let loads = JansenLegLoads {
+            fx: contact.x,
+            fy: contact.y,
+        };
+        let s = m
+            .solve(&i(f64::to_radians(deg as f64)), &i(w), &i(al), &loads)
+            .unwrap();
+        let f = &s.forces;
+        lowest_condition = lowest_condition.min(f.condition);
+
+        let ne = jansen_newton_euler(&s, contact, 1.0);
+        assert!(ne <= TOL, "Newton-Euler at {deg} deg: {ne:e}");
+        worst.0 = worst.0.max(ne);
+        let (tau, scale) = jansen_power_torque(&s, contact, w, None);
+        let e = (tau - f.drive_theta).abs() / (scale / w);
+        assert!(
+            e <= TOL,
+            "drive at {deg} deg: {} vs {tau} by power ({e:e})",
+            f.drive_theta
+        );
+        worst.1 = worst.1.max(e);
+
+        // The deliberate mistakes.
+        let wrong = jansen_newton_euler(&s, contact, -1.0);
+        assert!(
+            wrong > 1e-2,
+            "a negated reaction passes at {deg} deg: {wrong:e}"
+        );
+        let (tau_wrong, _) = jansen_power_torque(&s, contact, w, Some(6));
+        let off = (tau_wrong - f.drive_theta).abs() / (scale / w);
+        assert!(
+            off > 1e-4,
+            "a missing inertia term passes at {deg} deg: {off:e}"
+        );
+        caught.0 = caught.0.min(wrong);
+        caught.1 = caught.1.min(off);
+    }
+    println!(
+        "Jansen forces: worst Newton-Euler {:e}, power {:e}; lowest condition {lowest_condition}; \
+         smallest deliberate mistakes seen: {:e}, {:e}",
+        worst.0, worst.1, caught.0, caught.1
+    );
 }
