@@ -956,9 +956,12 @@ pub fn expansion_check(
                 .iter()
                 .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
                 .map(|&(a, b)| {
-                    // A turn's interval shown with its middle in (-180, 180] deg.
+                    // A turn's interval shown with its middle in (-180, 180] deg;
+                    // a middle at 180 deg to rounding (an interval symmetric
+                    // about 180 deg, whose ends were bisected to 1e-10 of the
+                    // turn) stays at 180, not -180.
                     if input.angle && r.periodic {
-                        let k = ((0.5 * (a + b) - PI) / (2.0 * PI)).ceil();
+                        let k = ((0.5 * (a + b) - PI) / (2.0 * PI) - 1e-9).ceil();
                         (a - 2.0 * PI * k, b - 2.0 * PI * k)
                     } else {
                         (a, b)
