@@ -969,7 +969,30 @@ pub fn expansion_check(
                 });
             let where_ok = match best {
                 Some((a, b)) => {
-                    let s = show_interval(a, b, input.angle);
+                    // An end where the group fails at a single input (a PRP's
+                    // parallel guides) is not part of where it assembles:
+                    // shown open, `(60, 240) deg`, not `[60, 240] deg`.
+                    let width = r.hi - r.lo;
+                    let point_failure = |x: f64| {
+                        events.iter().filter(|e| !e.5).any(|e| {
+                            let (lo, hi) = (e.1[0], e.2[0]);
+                            let mut d = (0.5 * (lo + hi) - x).abs();
+                            if r.periodic {
+                                d = d.rem_euclid(width);
+                                d = d.min(width - d);
+                            }
+                            hi - lo <= 1e-9 * width && d <= 1e-9 * width
+                        })
+                    };
+                    let mut s = show_interval(a, b, input.angle);
+                    if point_failure(a) {
+                        s.replace_range(..1, "(");
+                    }
+                    if point_failure(b) {
+                        if let Some(k) = s.find(']') {
+                            s.replace_range(k..k + 1, ")");
+                        }
+                    }
                     let verb = if input.declared {
                         "narrow the declared range to it"
                     } else {
