@@ -956,9 +956,12 @@ pub fn expansion_check(
                 .iter()
                 .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
                 .map(|&(a, b)| {
-                    // A turn's interval shown with its middle in (-180, 180] deg.
+                    // A turn's interval shown with its middle in (-180, 180] deg;
+                    // a middle at 180 deg to rounding (an interval symmetric
+                    // about 180 deg, whose ends were bisected to 1e-10 of the
+                    // turn) stays at 180, not -180.
                     if input.angle && r.periodic {
-                        let k = ((0.5 * (a + b) - PI) / (2.0 * PI)).ceil();
+                        let k = ((0.5 * (a + b) - PI) / (2.0 * PI) - 1e-9).ceil();
                         (a - 2.0 * PI * k, b - 2.0 * PI * k)
                     } else {
                         (a, b)
@@ -966,7 +969,30 @@ pub fn expansion_check(
                 });
             let where_ok = match best {
                 Some((a, b)) => {
-                    let s = show_interval(a, b, input.angle);
+                    // An end where the group fails at a single input (a PRP's
+                    // parallel guides) is not part of where it assembles:
+                    // shown open, `(60, 240) deg`, not `[60, 240] deg`.
+                    let width = r.hi - r.lo;
+                    let point_failure = |x: f64| {
+                        events.iter().filter(|e| !e.5).any(|e| {
+                            let (lo, hi) = (e.1[0], e.2[0]);
+                            let mut d = (0.5 * (lo + hi) - x).abs();
+                            if r.periodic {
+                                d = d.rem_euclid(width);
+                                d = d.min(width - d);
+                            }
+                            hi - lo <= 1e-9 * width && d <= 1e-9 * width
+                        })
+                    };
+                    let mut s = show_interval(a, b, input.angle);
+                    if point_failure(a) {
+                        s.replace_range(..1, "(");
+                    }
+                    if point_failure(b) {
+                        if let Some(k) = s.find(']') {
+                            s.replace_range(k..k + 1, ")");
+                        }
+                    }
                     let verb = if input.declared {
                         "narrow the declared range to it"
                     } else {
