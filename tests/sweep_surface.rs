@@ -464,16 +464,16 @@ fn rpr_fails_where_the_pin_passes_inside_the_offset_circle() {
     }
 }
 
-/// FINDING: with offset 0 and the rocker's pivot ON the crank circle, the
+/// Found by this test: with offset 0 and the rocker's pivot ON the crank circle, the
 /// pin passes through the pivot once a turn: there the rocker's direction is
 /// undefined (`position()` fails `Singular` within 16 eps) and its angular
 /// rate is unbounded (`omega = v / s`, `s -> 0`), and the generated position
 /// flips the rocker by 180 deg across it (mode `plus` keeps `s >= 0`). The
 /// scaled determinant `det_rpr = s / |A - B|` is 1 on both sides, so the
 /// sweep finds nothing unless a sample lands within 16 eps of the point:
-/// `check()` reports a clean turn.
+/// `check()` reported a clean turn. Fixed: `sweep::det_rpr` is now bounded by
+/// `|A - B| / size` as the velocity's `condition` is.
 #[test]
-#[ignore = "finding: check() misses the RPR pass-through (offset 0, pivot on the crank circle)"]
 fn rpr_pass_through_the_pivot_is_reported() {
     // Pivot at the crank tip for theta = 1 rad (not a sample: samples are
     // multiples of 0.1 deg).
@@ -494,8 +494,13 @@ fn rpr_pass_through_the_pivot_is_reported() {
     let jump = (b.rocker - a.rocker).rem_euclid(2.0 * PI);
     assert!((jump - PI).abs() < 1e-3, "the rocker flips: {jump}");
     let rep = m.check();
+    // Found by the golden-section search on the V-shaped `|A - B| / size`:
+    // within the search's tolerance (1e-10 of the turn, 6.3e-10 rad) of the
+    // pass; 1e-8 rad leaves room for the flat bottom of a V sampled in f64.
+    let g = &rep.groups[1];
+    let at = g.first_singular.map(|a| a[0]);
     assert!(
-        !rep.is_clean(),
+        g.singular == 1 && at.is_some_and(|a| (a - 1.0).abs() < 1e-8),
         "check() must report the pass-through at theta = 1 rad: {rep:?}"
     );
 }

@@ -747,6 +747,20 @@ pub struct Findings {
     pub ran: bool,
 }
 
+/// A singular position found by the sweep, as a finding: a failure at that
+/// one input for a group whose joint is at infinity there (so the verdict does
+/// not depend on whether a sample lands on the point), a singular position
+/// otherwise.
+fn singular_event(at_infinity: &[bool], group: usize, at: &[f64], det: f64, count: u32) -> Found {
+    if at_infinity[group] {
+        let fault = Fault::Singular { det, scale: 1.0 };
+        (group, at.to_vec(), at.to_vec(), fault, count, false)
+    } else {
+        let fault = Fault::NonFinite { what: "" };
+        (group, at.to_vec(), at.to_vec(), fault, count, true)
+    }
+}
+
 /// Runs the expansion-time check (see the module documentation).
 pub fn expansion_check(
     model: &Model,
@@ -829,6 +843,14 @@ pub fn expansion_check(
             .collect(),
     };
     let mut events: Vec<Found> = Vec::new();
+    // The groups whose joint runs off to infinity where their determinant
+    // vanishes (PRP: parallel guides; RPP: the slot parallel to the guide):
+    // there the position itself fails, whether or not a sample lands on it.
+    let at_infinity: Vec<bool> = checked
+        .groups
+        .iter()
+        .map(|&i| matches!(model.stmts[i].kind, Kind::Prp { .. } | Kind::Rpp { .. }))
+        .collect();
     let tol = Tolerances::for_eps(f64::EPSILON);
     if inputs.len() == 1 {
         sweep::sweep_1d(
@@ -845,15 +867,11 @@ pub fn expansion_check(
                     count,
                 } => events.push((group, lo.to_vec(), hi.to_vec(), fault, count, false)),
                 Event::Singular {
-                    group, at, count, ..
-                } => events.push((
                     group,
-                    at.to_vec(),
-                    at.to_vec(),
-                    Fault::NonFinite { what: "" },
+                    at,
                     count,
-                    true,
-                )),
+                    det,
+                } => events.push(singular_event(&at_infinity, group, &at, det, count)),
             },
         );
     } else {
@@ -870,15 +888,11 @@ pub fn expansion_check(
                     count,
                 } => events.push((group, lo.to_vec(), hi.to_vec(), fault, count, false)),
                 Event::Singular {
-                    group, at, count, ..
-                } => events.push((
                     group,
-                    at.to_vec(),
-                    at.to_vec(),
-                    Fault::NonFinite { what: "" },
+                    at,
                     count,
-                    true,
-                )),
+                    det,
+                } => events.push(singular_event(&at_infinity, group, &at, det, count)),
             },
         );
     }
@@ -920,6 +934,11 @@ pub fn expansion_check(
             let mid_show = format!("{name} = {}", show_value(mid, input.angle));
             let why = match ev.solve(&[mid]) {
                 Err((_, fault)) => explain(model, stmt_index, &fault, &mid_show),
+                // A failure at one input (a joint at infinity between two
+                // samples) is explained where it was found.
+                Ok(_) if worst.2[0] == worst.1[0] => {
+                    explain(model, stmt_index, &worst.3, &mid_show)
+                }
                 Ok(_) => explain(model, stmt_index, &worst.3, "the first failing sample"),
             };
             // Where it assembles: the complement of the failing intervals.
