@@ -284,7 +284,8 @@ fn quad_position_fails_exactly_where_the_closed_form_says() {
 #[test]
 fn double_rocker_f32_check_edges() {
     // The same double rocker in f32. The doc of `check()` says "edges to
-    // `max(1e-10, eps)` of the range": eps32 x 2 pi = 7.5e-7 rad. That is
+    // `max(1e-10, eps)` of the range" (it now says the edge can lie the
+    // rounding band beyond): eps32 x 2 pi = 7.5e-7 rad. That is
     // where the bisection stops; but the f32 `position()` decides where the
     // group assembles, and the RRR accepts a distance up to 4 eps (l3 + l4)
     // beyond the bound (its rounding band, 7.6e-5 in f32). |A - O4| grows by

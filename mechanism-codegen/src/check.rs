@@ -1216,7 +1216,7 @@ pub fn emit_check(model: &Model, plan: &Plan, inputs: &[Input], summary: &str) -
         quote!(let _ = tol; ::mechanism::sweep::sweep_2d(&ranges, ::mechanism::sweep::SAMPLES_2D, eval, |e| report.record(&e));)
     };
     let doc = format!(
-        "Sweeps the input range with these parameters, through [`{name}::position`]: per group (in solve order: {}), where it cannot be assembled and where its rate system is singular. The sweep is the one the macro runs at expansion time (`mechanism::sweep`), in the scalar `T` (edges to `max(1e-10, eps)` of the range, singular below `sqrt(eps)`); about {} position solves. No heap.\n\n{summary}",
+        "Sweeps the input range with these parameters, through [`{name}::position`]: per group (in solve order: {}), where it cannot be assembled and where its rate system is singular. The sweep is the one the macro runs at expansion time (`mechanism::sweep`), in the scalar `T` (edges bisected to `max(1e-10, eps)` of the range, singular below `sqrt(eps)`; an edge lies where `position()` in `T` stops assembling, which can be the group's rounding band beyond the exact limit: in `f32` a few 1e-6 rad at an RRR's limit); about {} position solves. No heap.\n\n{summary}",
         group_names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", "),
         if d == 1 { "4000" } else { "15000" }
     );
