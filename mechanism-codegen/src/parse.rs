@@ -179,7 +179,7 @@ fn starts_statement(input: ParseStream) -> bool {
             .is_ok_and(|i| STATEMENTS.contains(&i.to_string().as_str()))
 }
 
-/// `true` when the next token is a unit word (see [`UNIT_WORDS`]).
+/// The next token, when it is a unit word (see [`UNIT_WORDS`]).
 fn unit_word(input: ParseStream) -> Option<Ident> {
     let word = input.fork().parse::<Ident>().ok()?;
     UNIT_WORDS
@@ -235,8 +235,9 @@ fn text(from: Cursor, to: Cursor) -> String {
         };
         let is_group = matches!(tree, TokenTree::Group(_));
         let tight = matches!(&tree, TokenTree::Punct(p) if p.as_char() == ',');
-        if !out.is_empty() && !glue && !tight && !(is_group && out.ends_with(char::is_alphanumeric))
-        {
+        // A group right after a name is a call: `ground(..)`.
+        let call = is_group && out.ends_with(char::is_alphanumeric);
+        if !(out.is_empty() || glue || tight || call) {
             out.push(' ');
         }
         out.push_str(&piece);
@@ -410,7 +411,7 @@ fn names(input: ParseStream, word: &str, what: &str) -> syn::Result<Vec<Ident>> 
     if input.peek(syn::token::Paren) {
         let content;
         parenthesized!(content in input);
-        let list_name = format!("the names after `{word}`");
+        let list_name = format!("the names after `{word}` in {what}");
         list(
             &content,
             &list_name,
@@ -897,7 +898,12 @@ impl Parse for Item {
                 )?;
                 let mut groups = Vec::new();
                 while !input.peek(Token![;]) {
-                    if input.is_empty() || starts_statement(input) || !input.peek(Ident) {
+                    // A group may be named like a statement keyword
+                    // (`allow singular range;`): only a keyword that does not
+                    // end the list begins the next statement.
+                    let keyword_next = starts_statement(input)
+                        && !(input.peek2(Token![;]) || input.peek2(Token![,]));
+                    if input.is_empty() || keyword_next || !input.peek(Ident) {
                         break;
                     }
                     groups.push(input.parse()?);

@@ -210,9 +210,20 @@ pub fn unique_names(model: &Model, errors: &mut Errors) {
         errors.push(
             ident.span(),
             format!(
-                "`{key}` is already defined {whence}; every point, link, guide, slide, input, parameter and constant needs its own name: rename this one, e.g. `{key}2`"
+                "`{key}` is already defined {whence}; every point, link, guide, slide, input, parameter and constant needs its own name: rename this one, e.g. `{}`",
+                another(&key)
             ),
         );
+    }
+}
+
+/// A name to suggest instead of `name`: `B2` for `B`, `link3b` for `link3`
+/// (not `link32`, which reads as another number).
+fn another(name: &str) -> String {
+    if name.ends_with(|c: char| c.is_ascii_digit()) {
+        format!("{name}b")
+    } else {
+        format!("{name}2")
     }
 }
 
@@ -743,7 +754,7 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
                 .unwrap_or_default();
             errors.push(
                 load.span(),
-                format!("`{name}` is already defined{whence}; a load value needs a name of its own: rename it, e.g. `{name}2`, here and where it is used"),
+                format!("`{name}` is already defined{whence}; a load value needs a name of its own: rename it, e.g. `{}`, here and where it is used", another(&name)),
             );
         }
     }
