@@ -332,7 +332,7 @@ struct LaneLink {
 
 impl LaneLink {
     /// A link along the vector `(x, y)`, divided by `length` when given (a
-    /// unit vector otherwise): its axis, its angle (`lane::atan2` of the
+    /// unit vector otherwise): its axis, its angle (`lane::angle` of the
     /// vector: a positive factor does not change it), its rates.
     fn along(
         ln: &TokenStream,
@@ -347,7 +347,7 @@ impl LaneLink {
         };
         LaneLink {
             axis,
-            angle: quote!(#ln::atan2(#y, #x)),
+            angle: quote!(#ln::angle(#y, #x)),
             omega,
             alpha,
         }

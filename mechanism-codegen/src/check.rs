@@ -747,6 +747,20 @@ pub struct Findings {
     pub ran: bool,
 }
 
+/// A singular position found by the sweep, as a finding: a failure at that
+/// one input for a group whose joint is at infinity there (so the verdict does
+/// not depend on whether a sample lands on the point), a singular position
+/// otherwise.
+fn singular_event(at_infinity: &[bool], group: usize, at: &[f64], det: f64, count: u32) -> Found {
+    if at_infinity[group] {
+        let fault = Fault::Singular { det, scale: 1.0 };
+        (group, at.to_vec(), at.to_vec(), fault, count, false)
+    } else {
+        let fault = Fault::NonFinite { what: "" };
+        (group, at.to_vec(), at.to_vec(), fault, count, true)
+    }
+}
+
 /// Runs the expansion-time check (see the module documentation).
 pub fn expansion_check(
     model: &Model,
@@ -829,6 +843,14 @@ pub fn expansion_check(
             .collect(),
     };
     let mut events: Vec<Found> = Vec::new();
+    // The groups whose joint runs off to infinity where their determinant
+    // vanishes (PRP: parallel guides; RPP: the slot parallel to the guide):
+    // there the position itself fails, whether or not a sample lands on it.
+    let at_infinity: Vec<bool> = checked
+        .groups
+        .iter()
+        .map(|&i| matches!(model.stmts[i].kind, Kind::Prp { .. } | Kind::Rpp { .. }))
+        .collect();
     let tol = Tolerances::for_eps(f64::EPSILON);
     if inputs.len() == 1 {
         sweep::sweep_1d(
@@ -845,15 +867,11 @@ pub fn expansion_check(
                     count,
                 } => events.push((group, lo.to_vec(), hi.to_vec(), fault, count, false)),
                 Event::Singular {
-                    group, at, count, ..
-                } => events.push((
                     group,
-                    at.to_vec(),
-                    at.to_vec(),
-                    Fault::NonFinite { what: "" },
+                    at,
                     count,
-                    true,
-                )),
+                    det,
+                } => events.push(singular_event(&at_infinity, group, &at, det, count)),
             },
         );
     } else {
@@ -870,15 +888,11 @@ pub fn expansion_check(
                     count,
                 } => events.push((group, lo.to_vec(), hi.to_vec(), fault, count, false)),
                 Event::Singular {
-                    group, at, count, ..
-                } => events.push((
                     group,
-                    at.to_vec(),
-                    at.to_vec(),
-                    Fault::NonFinite { what: "" },
+                    at,
                     count,
-                    true,
-                )),
+                    det,
+                } => events.push(singular_event(&at_infinity, group, &at, det, count)),
             },
         );
     }
@@ -920,6 +934,11 @@ pub fn expansion_check(
             let mid_show = format!("{name} = {}", show_value(mid, input.angle));
             let why = match ev.solve(&[mid]) {
                 Err((_, fault)) => explain(model, stmt_index, &fault, &mid_show),
+                // A failure at one input (a joint at infinity between two
+                // samples) is explained where it was found.
+                Ok(_) if worst.2[0] == worst.1[0] => {
+                    explain(model, stmt_index, &worst.3, &mid_show)
+                }
                 Ok(_) => explain(model, stmt_index, &worst.3, "the first failing sample"),
             };
             // Where it assembles: the complement of the failing intervals.
@@ -956,9 +975,12 @@ pub fn expansion_check(
                 .iter()
                 .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
                 .map(|&(a, b)| {
-                    // A turn's interval shown with its middle in (-180, 180] deg.
+                    // A turn's interval shown with its middle in (-180, 180] deg;
+                    // a middle at 180 deg to rounding (an interval symmetric
+                    // about 180 deg, whose ends were bisected to 1e-10 of the
+                    // turn) stays at 180, not -180.
                     if input.angle && r.periodic {
-                        let k = ((0.5 * (a + b) - PI) / (2.0 * PI)).ceil();
+                        let k = ((0.5 * (a + b) - PI) / (2.0 * PI) - 1e-9).ceil();
                         (a - 2.0 * PI * k, b - 2.0 * PI * k)
                     } else {
                         (a, b)
@@ -966,7 +988,30 @@ pub fn expansion_check(
                 });
             let where_ok = match best {
                 Some((a, b)) => {
-                    let s = show_interval(a, b, input.angle);
+                    // An end where the group fails at a single input (a PRP's
+                    // parallel guides) is not part of where it assembles:
+                    // shown open, `(60, 240) deg`, not `[60, 240] deg`.
+                    let width = r.hi - r.lo;
+                    let point_failure = |x: f64| {
+                        events.iter().filter(|e| !e.5).any(|e| {
+                            let (lo, hi) = (e.1[0], e.2[0]);
+                            let mut d = (0.5 * (lo + hi) - x).abs();
+                            if r.periodic {
+                                d = d.rem_euclid(width);
+                                d = d.min(width - d);
+                            }
+                            hi - lo <= 1e-9 * width && d <= 1e-9 * width
+                        })
+                    };
+                    let mut s = show_interval(a, b, input.angle);
+                    if point_failure(a) {
+                        s.replace_range(..1, "(");
+                    }
+                    if point_failure(b) {
+                        if let Some(k) = s.find(']') {
+                            s.replace_range(k..k + 1, ")");
+                        }
+                    }
                     let verb = if input.declared {
                         "narrow the declared range to it"
                     } else {
@@ -1171,7 +1216,7 @@ pub fn emit_check(model: &Model, plan: &Plan, inputs: &[Input], summary: &str) -
         quote!(let _ = tol; ::mechanism::sweep::sweep_2d(&ranges, ::mechanism::sweep::SAMPLES_2D, eval, |e| report.record(&e));)
     };
     let doc = format!(
-        "Sweeps the input range with these parameters, through [`{name}::position`]: per group (in solve order: {}), where it cannot be assembled and where its rate system is singular. The sweep is the one the macro runs at expansion time (`mechanism::sweep`), in the scalar `T` (edges to `max(1e-10, eps)` of the range, singular below `sqrt(eps)`); about {} position solves. No heap.\n\n{summary}",
+        "Sweeps the input range with these parameters, through [`{name}::position`]: per group (in solve order: {}), where it cannot be assembled and where its rate system is singular. The sweep is the one the macro runs at expansion time (`mechanism::sweep`), in the scalar `T` (edges bisected to `max(1e-10, eps)` of the range, singular below `sqrt(eps)`; an edge lies where `position()` in `T` stops assembling, which can be the group's rounding band beyond the exact limit: in `f32` a few 1e-6 rad at an RRR's limit); about {} position solves. No heap.\n\n{summary}",
         group_names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", "),
         if d == 1 { "4000" } else { "15000" }
     );

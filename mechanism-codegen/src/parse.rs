@@ -24,10 +24,10 @@
 //! names      := IDENT | '(' IDENT,* ')'
 //! ```
 
-use proc_macro2::Span;
+use proc_macro2::{Delimiter, Span, TokenTree};
+use syn::buffer::Cursor;
 use syn::parse::{Parse, ParseStream};
-use syn::punctuated::Punctuated;
-use syn::{braced, parenthesized, Attribute, Expr, Ident, LitInt, Token, Visibility};
+use syn::{braced, parenthesized, Attribute, Expr, ExprLit, Ident, Lit, LitInt, Token, Visibility};
 
 /// A whole definition.
 pub struct Definition {
@@ -155,8 +155,236 @@ const STATEMENTS: &[&str] = &[
     "allow",
 ];
 
+/// Unit words a user may write after a value where none is taken (in a
+/// constant, a parameter, a load, a force, a torque): they get a message about
+/// units rather than a bare "expected `;`". `deg` and `rad` are the only units
+/// of the language (angles, in arguments and ranges).
+const UNIT_WORDS: &[&str] = &[
+    "deg", "rad", "degree", "degrees", "mm", "cm", "m", "km", "in", "ft", "kg", "g", "t", "N",
+    "kN", "Nm", "Nmm", "s", "ms", "rpm", "Hz",
+];
+
 fn kw(input: ParseStream, word: &str) -> bool {
     input.peek(Ident) && input.fork().parse::<Ident>().is_ok_and(|i| i == word)
+}
+
+/// `true` when the next tokens begin a statement (so a `;` before them is
+/// missing, rather than a stray token standing where the `;` goes).
+fn starts_statement(input: ParseStream) -> bool {
+    input.peek(Token![let])
+        || input.peek(Token![const])
+        || input
+            .fork()
+            .parse::<Ident>()
+            .is_ok_and(|i| STATEMENTS.contains(&i.to_string().as_str()))
+}
+
+/// The next token, when it is a unit word (see [`UNIT_WORDS`]).
+fn unit_word(input: ParseStream) -> Option<Ident> {
+    let word = input.fork().parse::<Ident>().ok()?;
+    UNIT_WORDS
+        .contains(&word.to_string().as_str())
+        .then_some(word)
+}
+
+/// The span of the last token from `from` up to (not including) `to`, two
+/// cursors of one stream; for a group, its closing delimiter. `None` when
+/// nothing lies between them.
+fn last_token(from: Cursor, to: Cursor) -> Option<Span> {
+    let mut cursor = from;
+    let mut last = None;
+    while cursor != to {
+        let Some((tree, next)) = cursor.token_tree() else {
+            break;
+        };
+        last = Some(match &tree {
+            TokenTree::Group(g) => g.span_close(),
+            other => other.span(),
+        });
+        cursor = next;
+    }
+    last
+}
+
+/// The user's text from `from` up to `to`, for messages: groups shortened to
+/// `(..)` when they hold more than one token.
+fn text(from: Cursor, to: Cursor) -> String {
+    let mut cursor = from;
+    let mut out = String::new();
+    let mut glue = true; // no space before the next token
+    while cursor != to {
+        let Some((tree, next)) = cursor.token_tree() else {
+            break;
+        };
+        let piece = match &tree {
+            TokenTree::Group(g) => {
+                let inner = g.stream().to_string();
+                let inner = if g.stream().into_iter().count() > 1 {
+                    "..".to_string()
+                } else {
+                    inner
+                };
+                match g.delimiter() {
+                    Delimiter::Parenthesis => format!("({inner})"),
+                    Delimiter::Brace => format!("{{ {inner} }}"),
+                    Delimiter::Bracket => format!("[{inner}]"),
+                    Delimiter::None => inner,
+                }
+            }
+            other => other.to_string(),
+        };
+        let is_group = matches!(tree, TokenTree::Group(_));
+        let tight = matches!(&tree, TokenTree::Punct(p) if p.as_char() == ',');
+        // A group right after a name is a call: `ground(..)`.
+        let call = is_group && out.ends_with(char::is_alphanumeric);
+        if !(out.is_empty() || glue || tight || call) {
+            out.push(' ');
+        }
+        out.push_str(&piece);
+        // A sign sticks to what follows it when it stands first or after `=`,
+        // `(` or `,`.
+        glue = matches!(&tree, TokenTree::Punct(p) if p.as_char() == '-')
+            && (out.len() == 1 || out[..out.len() - 1].ends_with(['=', ' ', '(', ',']));
+        cursor = next;
+    }
+    out
+}
+
+/// The text of the next token, for "found `x`".
+fn next_text(input: ParseStream) -> String {
+    let cursor = input.cursor();
+    match cursor.token_tree() {
+        Some((TokenTree::Group(g), _)) => match g.delimiter() {
+            Delimiter::Parenthesis => "(".to_string(),
+            Delimiter::Brace => "{".to_string(),
+            Delimiter::Bracket => "[".to_string(),
+            Delimiter::None => g.stream().to_string(),
+        },
+        Some((tree, _)) => tree.to_string(),
+        None => "the end".to_string(),
+    }
+}
+
+/// What a value just parsed is, for the message on a unit word written after
+/// it.
+#[derive(Clone, Copy)]
+enum Valued<'a> {
+    /// Nothing to say about units.
+    Nothing,
+    /// A plain number that is named (a constant or a parameter: "a constant",
+    /// its name), whose angle unit goes where it is used.
+    Number(&'a str, &'a Ident),
+    /// A load or gravity value ("a torque"): a number in the definition's
+    /// own units.
+    Load(&'a str),
+}
+
+/// The message for the unit word `unit` written after a value, when there is
+/// one to give.
+fn unit_message(unit: &Ident, valued: Valued) -> Option<String> {
+    let angle = unit == "deg" || unit == "rad";
+    match valued {
+        Valued::Nothing => None,
+        Valued::Number(what, name) if angle => Some(format!(
+            "unexpected `{unit}`: {what} takes no unit, it is a plain number; write the number alone, and the angle unit where `{name}` is used: `{name} {unit}` (e.g. `point(LINK, from A, d, {name} {unit})`)"
+        )),
+        Valued::Number(what, _) => Some(format!(
+            "unexpected `{unit}`: {what} takes no unit, it is a plain number in the definition's own units (lengths, masses and forces carry none; only angles take `deg` or `rad`)"
+        )),
+        Valued::Load(what) => Some(format!(
+            "unexpected `{unit}`: {what} takes no unit{}; loads are plain numbers in the definition's own consistent units (kg, m, s give N and N m; t, mm, s give N and N mm)",
+            if angle { " (`deg` and `rad` are for angles)" } else { "" }
+        )),
+    }
+}
+
+/// The `;` that ends the statement begun at `start`. `what` names the
+/// statement ("the `let B = rrr(..)` statement"). When the `;` is missing and
+/// the next statement follows, the error is on the last token of this one;
+/// when something else stands where the `;` goes, on that token; a unit word
+/// after a value gets a message about units (`valued`).
+fn end(input: ParseStream, start: Cursor, what: &str, valued: Valued) -> syn::Result<()> {
+    if input.peek(Token![;]) {
+        input.parse::<Token![;]>()?;
+        return Ok(());
+    }
+    if input.is_empty() || starts_statement(input) {
+        let span = last_token(start, input.cursor()).unwrap_or_else(|| input.span());
+        return Err(syn::Error::new(
+            span,
+            format!("expected `;` after {what}: every statement ends with `;`"),
+        ));
+    }
+    if let Some(message) = unit_word(input).and_then(|u| unit_message(&u, valued)) {
+        return Err(input.error(message));
+    }
+    Err(input.error(format!(
+        "expected `;` to end {what}, found `{}`",
+        next_text(input)
+    )))
+}
+
+/// A comma-separated list (a trailing comma allowed) filling `content`, whose
+/// elements are parsed by `element`. `starts` tells whether the next tokens
+/// begin an element (so a `,` before them is missing: the error is on the
+/// last token of the previous element); otherwise a token other than `,`
+/// stands there and the error is on it. `list` names the list ("the
+/// arguments of `rrr(..)`"); `unit` gives the message for a unit word
+/// written after an element, when there is one (see [`unit_message`]).
+fn list<T>(
+    content: ParseStream,
+    list: &str,
+    element: impl Fn(ParseStream) -> syn::Result<T>,
+    starts: impl Fn(ParseStream) -> bool,
+    unit: impl Fn(&T, &Ident) -> Option<String>,
+) -> syn::Result<Vec<T>> {
+    let mut out = Vec::new();
+    while !content.is_empty() {
+        let start = content.cursor();
+        let item = element(content)?;
+        let finish = content.cursor();
+        if content.is_empty() {
+            out.push(item);
+            break;
+        }
+        if content.peek(Token![,]) {
+            content.parse::<Token![,]>()?;
+            out.push(item);
+            continue;
+        }
+        let written = text(start, finish);
+        if let Some(message) = unit_word(content).and_then(|u| unit(&item, &u)) {
+            return Err(content.error(message));
+        }
+        if starts(content) {
+            let span = last_token(start, finish).unwrap_or_else(|| content.span());
+            return Err(syn::Error::new(
+                span,
+                format!(
+                    "expected `,` after `{written}` in {list}: its entries are separated by commas"
+                ),
+            ));
+        }
+        return Err(content.error(format!(
+            "expected `,` after `{written}` in {list}, found `{}`",
+            next_text(content)
+        )));
+    }
+    Ok(out)
+}
+
+/// `true` when the next token may begin an argument (a name, a number, a
+/// sign or a parenthesis).
+fn starts_arg(input: ParseStream) -> bool {
+    input.peek(Ident)
+        || input.peek(syn::Lit)
+        || input.peek(Token![-])
+        || input.peek(syn::token::Paren)
+}
+
+/// `true` when the next tokens begin `name = value`.
+fn starts_assign(input: ParseStream) -> bool {
+    input.peek(Ident) && input.peek2(Token![=])
 }
 
 impl Parse for Arg {
@@ -166,7 +394,9 @@ impl Parse for Arg {
             return Ok(Arg::From(input.parse()?));
         }
         let expr: Expr = input.parse()?;
-        let unit = if input.peek(Ident) {
+        // A word after the value is its unit, unless it begins the next
+        // `name = value` (a mass field whose `,` is missing) or is `from`.
+        let unit = if input.peek(Ident) && !input.peek2(Token![=]) && !kw(input, "from") {
             Some(input.parse::<Ident>()?)
         } else {
             None
@@ -175,14 +405,35 @@ impl Parse for Arg {
     }
 }
 
-fn names(input: ParseStream) -> syn::Result<Vec<Ident>> {
+/// `IDENT` or `(IDENT, ...)` after `as` or `slide` (`word`) of the `let`
+/// statement `what`.
+fn names(input: ParseStream, word: &str, what: &str) -> syn::Result<Vec<Ident>> {
     if input.peek(syn::token::Paren) {
         let content;
         parenthesized!(content in input);
-        let list = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
-        Ok(list.into_iter().collect())
+        let list_name = format!("the names after `{word}` in {what}");
+        list(
+            &content,
+            &list_name,
+            |c| {
+                c.parse::<Ident>().map_err(|e| {
+                    syn::Error::new(
+                        e.span(),
+                        format!("expected a name after `{word}` in {what}: `{word} (a, b)`"),
+                    )
+                })
+            },
+            |c| c.peek(Ident),
+            |_, _| None,
+        )
     } else {
-        Ok(vec![input.parse()?])
+        let name = input.parse::<Ident>().map_err(|e| {
+            syn::Error::new(
+                e.span(),
+                format!("expected a name or `(a, b)` after `{word}` in {what}"),
+            )
+        })?;
+        Ok(vec![name])
     }
 }
 
@@ -193,17 +444,39 @@ fn input_eq(input: ParseStream) -> syn::Result<()> {
         .map_err(|e| syn::Error::new(e.span(), "expected `=`: `range INPUT = (lo, hi);`"))
 }
 
-/// `(x, y)`: two components; `usage` shows the whole statement.
-fn pair(input: ParseStream, usage: &str) -> syn::Result<(Expr, Expr)> {
+/// `(x, y)`: two components; `usage` shows the whole statement, `valued`
+/// what a component is (for a unit word after one).
+fn pair(input: ParseStream, usage: &str, valued: Valued) -> syn::Result<(Expr, Expr)> {
     let two = |span| syn::Error::new(span, format!("expected two components: {usage}"));
     if !input.peek(syn::token::Paren) {
         return Err(two(input.span()));
     }
     let content;
     parenthesized!(content in input);
+    let unit = |content: ParseStream| -> Option<syn::Error> {
+        let message = unit_word(content).and_then(|u| unit_message(&u, valued))?;
+        Some(content.error(message))
+    };
+    let start = content.cursor();
     let x: Expr = content.parse()?;
+    if let Some(e) = unit(&content) {
+        return Err(e);
+    }
+    if !content.peek(Token![,]) && starts_arg(&content) {
+        let span = last_token(start, content.cursor()).unwrap_or_else(|| content.span());
+        return Err(syn::Error::new(
+            span,
+            format!(
+                "expected `,` after `{}`: the two components are separated by a comma, {usage}",
+                text(start, content.cursor())
+            ),
+        ));
+    }
     content.parse::<Token![,]>().map_err(|e| two(e.span()))?;
     let y: Expr = content.parse()?;
+    if let Some(e) = unit(&content) {
+        return Err(e);
+    }
     if !content.is_empty() {
         return Err(two(content.span()));
     }
@@ -212,7 +485,15 @@ fn pair(input: ParseStream, usage: &str) -> syn::Result<(Expr, Expr)> {
 
 impl Parse for Assign {
     fn parse(input: ParseStream) -> syn::Result<Self> {
-        let name: Ident = input.parse()?;
+        let name: Ident = input.parse().map_err(|e| {
+            syn::Error::new(
+                e.span(),
+                format!(
+                    "expected a name, found `{}`: `name = 1.0`",
+                    next_text(input)
+                ),
+            )
+        })?;
         input.parse::<Token![=]>().map_err(|e| {
             syn::Error::new(
                 e.span(),
@@ -226,8 +507,62 @@ impl Parse for Assign {
     }
 }
 
+/// `{ name = value, .. }` of `params` or `loads` (`word`); `what` is one
+/// entry ("a parameter").
+fn assignments(input: ParseStream, word: &str, what: &str) -> syn::Result<Vec<Assign>> {
+    if !input.peek(syn::token::Brace) {
+        return Err(input.error(format!(
+            "expected `{{` after `{word}`: the entries go in braces, `{word} {{ a = 1.0, b = 2.0 }}`"
+        )));
+    }
+    let content;
+    braced!(content in input);
+    let list_name = format!("`{word} {{ .. }}`");
+    list(
+        &content,
+        &list_name,
+        Assign::parse,
+        starts_assign,
+        |a: &Assign, u| {
+            if word == "loads" {
+                unit_message(u, Valued::Load(what))
+            } else {
+                unit_message(u, Valued::Number(what, &a.name))
+            }
+        },
+    )
+}
+
+/// A name after `word` in the statement `usage`.
+fn name_after(input: ParseStream, word: &str, what: &str, usage: &str) -> syn::Result<Ident> {
+    input.parse::<Ident>().map_err(|e| {
+        syn::Error::new(
+            e.span(),
+            format!(
+                "expected {what} after `{word}`, found `{}`: {usage}",
+                next_text(input)
+            ),
+        )
+    })
+}
+
+/// `=` after the statement begun at `start`, with `usage` in the message.
+fn equals(input: ParseStream, start: Cursor, usage: &str) -> syn::Result<()> {
+    input.parse::<Token![=]>().map(|_| ()).map_err(|e| {
+        syn::Error::new(
+            e.span(),
+            format!(
+                "expected `=` after `{}`, found `{}`: {usage}",
+                text(start, input.cursor()),
+                next_text(input)
+            ),
+        )
+    })
+}
+
 impl Parse for Item {
     fn parse(input: ParseStream) -> syn::Result<Self> {
+        let start = input.cursor();
         if input.peek(Token![let]) {
             input.parse::<Token![let]>()?;
             let name: Ident = input.parse().map_err(|e| {
@@ -236,7 +571,15 @@ impl Parse for Item {
                     "expected the name this statement defines (a letter first): `let NAME = KIND(args);`",
                 )
             })?;
-            input.parse::<Token![=]>()?;
+            input.parse::<Token![=]>().map_err(|e| {
+                syn::Error::new(
+                    e.span(),
+                    format!(
+                        "expected `=` after `let {name}`, found `{}`: `let {name} = KIND(args);`",
+                        next_text(input)
+                    ),
+                )
+            })?;
             let kind: Ident = input.parse().map_err(|e| {
                 syn::Error::new(
                     e.span(),
@@ -257,34 +600,33 @@ impl Parse for Item {
                     "expected `(`: the arguments of `{kind}` go in parentheses{usage}"
                 )));
             }
+            let what = format!("the `let {name} = {kind}(..)` statement");
             let content;
             let paren = parenthesized!(content in input);
-            let args = Punctuated::<Arg, Token![,]>::parse_terminated(&content)?
-                .into_iter()
-                .collect();
+            let args = list(
+                &content,
+                &format!("the arguments of `let {name} = {kind}(..)`"),
+                Arg::parse,
+                starts_arg,
+                |_, _| None,
+            )?;
             let mut links = Vec::new();
             if input.peek(Token![as]) {
                 input.parse::<Token![as]>()?;
-                links = names(input)?;
+                links = names(input, "as", &what)?;
             }
             let mut slides = Vec::new();
             if kw(input, "slide") {
                 let _: Ident = input.parse()?;
-                slides = names(input)?;
+                slides = names(input, "slide", &what)?;
             }
-            input.parse::<Token![;]>().map_err(|e| {
-                syn::Error::new(
-                    e.span(),
-                    format!(
-                        "expected `;` to end the statement `let {name} = {kind}(..)`{}",
-                        if links.is_empty() {
-                            " (or `as LINK` to name its link)"
-                        } else {
-                            ""
-                        }
-                    ),
-                )
-            })?;
+            if links.is_empty() && input.peek(Ident) && !starts_statement(input) {
+                let word = next_text(input);
+                return Err(input.error(format!(
+                    "expected `;` to end {what}, found `{word}`; to name its link write `as {word}`"
+                )));
+            }
+            end(input, start, &what, Valued::Nothing)?;
             return Ok(Item::Let(Let {
                 name,
                 kind,
@@ -304,8 +646,14 @@ impl Parse for Item {
                     format!("a `const` takes no type (its value is a number, folded at compile time): write `const {name} = value;`"),
                 ));
             }
-            let assign = input.parse()?;
-            input.parse::<Token![;]>()?;
+            let assign: Assign = input.parse()?;
+            let what = format!("the `const {} = ..` statement", assign.name);
+            end(
+                input,
+                start,
+                &what,
+                Valued::Number("a constant", &assign.name),
+            )?;
             return Ok(Item::Const(assign));
         }
         let word: Ident = input.parse().map_err(|e| {
@@ -315,21 +663,21 @@ impl Parse for Item {
             )
         })?;
         match word.to_string().as_str() {
-            "params" => {
-                let content;
-                braced!(content in input);
-                let list = Punctuated::<Assign, Token![,]>::parse_terminated(&content)?;
-                Ok(Item::Params(list.into_iter().collect()))
-            }
-            "loads" => {
-                let content;
-                braced!(content in input);
-                let list = Punctuated::<Assign, Token![,]>::parse_terminated(&content)?;
-                Ok(Item::Loads(list.into_iter().collect()))
-            }
+            "params" => Ok(Item::Params(assignments(input, "params", "a parameter")?)),
+            "loads" => Ok(Item::Loads(assignments(input, "loads", "a load value")?)),
             "analysis" => {
-                let what = input.parse()?;
-                input.parse::<Token![;]>()?;
+                let what: Ident = name_after(
+                    input,
+                    "analysis",
+                    "the analysis",
+                    "`analysis position;`, `velocity`, `acceleration` or `forces`",
+                )?;
+                end(
+                    input,
+                    start,
+                    &format!("the `analysis {what}` statement"),
+                    Valued::Nothing,
+                )?;
                 Ok(Item::Analysis(word.span(), what))
             }
             "outputs" => {
@@ -338,54 +686,128 @@ impl Parse for Item {
                 }
                 let content;
                 braced!(content in input);
-                let list = Punctuated::<Ident, Token![,]>::parse_terminated(&content)?;
-                Ok(Item::Outputs(word.span(), list.into_iter().collect()))
+                let list = list(
+                    &content,
+                    "`outputs { .. }`",
+                    |c| {
+                        c.parse::<Ident>().map_err(|e| {
+                            syn::Error::new(
+                                e.span(),
+                                format!(
+                                    "expected a point, link or slide name in `outputs {{ .. }}`, found `{}`",
+                                    next_text(c)
+                                ),
+                            )
+                        })
+                    },
+                    |c| c.peek(Ident),
+                    |_, _| None,
+                )?;
+                Ok(Item::Outputs(word.span(), list))
             }
             "dof" => {
-                let n = input.parse()?;
-                input.parse::<Token![;]>()?;
+                let value_start = input.cursor();
+                let value: Expr = input.parse().map_err(|e| {
+                    syn::Error::new(
+                        e.span(),
+                        "expected the number of degrees of freedom after `dof`, a positive integer: `dof 1;`",
+                    )
+                })?;
+                let n = match &value {
+                    Expr::Lit(ExprLit {
+                        lit: Lit::Int(n), ..
+                    }) if n.base10_parse::<u32>().is_ok_and(|n| n > 0) => n.clone(),
+                    _ => {
+                        return Err(syn::Error::new_spanned(
+                            &value,
+                            format!(
+                                "`dof` takes a positive integer, the mechanism's degrees of freedom (one per driver input, e.g. `dof 1;`), not `{}`",
+                                text(value_start, input.cursor())
+                            ),
+                        ))
+                    }
+                };
+                end(
+                    input,
+                    start,
+                    &format!("the `dof {n}` statement"),
+                    Valued::Nothing,
+                )?;
                 Ok(Item::Dof(word.span(), n))
             }
             "mass" => {
-                let link = input.parse()?;
+                let usage = "`mass LINK { m = mass, at = POINT, j = inertia }`";
+                let link: Ident = name_after(input, "mass", "the link's name", usage)?;
+                if !input.peek(syn::token::Brace) {
+                    return Err(input.error(format!(
+                        "expected `{{` after `mass {link}`, found `{}`: {usage}",
+                        next_text(input)
+                    )));
+                }
                 let content;
                 braced!(content in input);
-                let mut fields = Vec::new();
-                while !content.is_empty() {
-                    let name: Ident = content.parse()?;
-                    content.parse::<Token![=]>()?;
-                    fields.push((name, content.parse()?));
-                    if content.is_empty() {
-                        break;
-                    }
-                    content.parse::<Token![,]>()?;
-                }
+                let list_name = format!("`mass {link} {{ .. }}`");
+                let fields = list(
+                    &content,
+                    &list_name,
+                    |c| {
+                        let name: Ident = c.parse().map_err(|e| {
+                            syn::Error::new(
+                                e.span(),
+                                format!("expected a field, `m`, `at` or `j`, found `{}`: {usage}", next_text(c)),
+                            )
+                        })?;
+                        c.parse::<Token![=]>().map_err(|e| {
+                            syn::Error::new(
+                                e.span(),
+                                format!("expected `=` and a value after `{name}`: {usage}"),
+                            )
+                        })?;
+                        Ok((name, c.parse::<Arg>()?))
+                    },
+                    starts_assign,
+                    |_, _| None,
+                )?;
                 if input.peek(Token![;]) {
                     input.parse::<Token![;]>()?;
                 }
                 Ok(Item::Mass(Mass { link, fields }))
             }
             "gravity" => {
-                let (x, y) = pair(input, "`gravity (gx, gy);`")?;
-                input.parse::<Token![;]>()?;
+                let (x, y) = pair(
+                    input,
+                    "`gravity (gx, gy);`",
+                    Valued::Load("a gravity component"),
+                )?;
+                end(input, start, "the `gravity (..)` statement", Valued::Nothing)?;
                 Ok(Item::Gravity(word.span(), x, y))
             }
             "force" => {
+                let usage = "`force at POINT = (fx, fy);`";
                 if !kw(input, "at") {
-                    return Err(input.error("expected `at`: `force at POINT = (fx, fy);`"));
+                    return Err(input.error(format!("expected `at`: {usage}")));
                 }
                 let _: Ident = input.parse()?;
-                let at = input.parse()?;
+                let at: Ident = name_after(input, "at", "a point's name", usage)?;
                 let mut on = None;
                 if kw(input, "on") {
                     let _: Ident = input.parse()?;
-                    on = Some(input.parse()?);
+                    on = Some(name_after(
+                        input,
+                        "on",
+                        "a link's name",
+                        "`force at POINT on LINK = (fx, fy);`",
+                    )?);
                 }
+                let what = format!("the `force at {at} ..` statement");
                 let value = if kw(input, "along") {
                     let _: Ident = input.parse()?;
-                    let guide = input.parse()?;
-                    input.parse::<Token![=]>()?;
-                    ForceValue::Along(guide, input.parse()?)
+                    let along = "`force at POINT on LINK along GUIDE = f;`";
+                    let guide = name_after(input, "along", "a guide's name", along)?;
+                    equals(input, start, along)?;
+                    let f = input.parse()?;
+                    end(input, start, &what, Valued::Load("a force"))?;
+                    ForceValue::Along(guide, f)
                 } else {
                     input.parse::<Token![=]>().map_err(|e| {
                         syn::Error::new(
@@ -393,35 +815,74 @@ impl Parse for Item {
                             "expected `= (fx, fy)`, `on LINK` or `along GUIDE = f`",
                         )
                     })?;
-                    let (x, y) = pair(input, "`force at POINT = (fx, fy);`")?;
+                    let (x, y) = pair(input, usage, Valued::Load("a force component"))?;
+                    end(input, start, &what, Valued::Nothing)?;
                     ForceValue::Components(x, y)
                 };
-                input.parse::<Token![;]>()?;
                 Ok(Item::Force(Force { at, on, value }))
             }
             "torque" => {
+                let usage = "`torque on LINK = value;`";
                 if !kw(input, "on") {
-                    return Err(input.error("expected `on`: `torque on LINK = value;`"));
+                    return Err(input.error(format!("expected `on`: {usage}")));
                 }
                 let _: Ident = input.parse()?;
-                let on = input.parse()?;
-                input.parse::<Token![=]>()?;
+                let on: Ident = name_after(input, "on", "a link's name", usage)?;
+                equals(input, start, usage)?;
                 let value = input.parse()?;
-                input.parse::<Token![;]>()?;
+                end(
+                    input,
+                    start,
+                    &format!("the `torque on {on} = ..` statement"),
+                    Valued::Load("a torque"),
+                )?;
                 Ok(Item::Torque(on, value))
             }
             "range" => {
-                let name = input.parse()?;
+                let usage = "`range INPUT = (lo, hi);`";
+                let name: Ident = name_after(input, "range", "the driver input", usage)?;
                 input_eq(input)?;
+                if !input.peek(syn::token::Paren) {
+                    return Err(input.error(format!(
+                        "expected `(`, found `{}`: the two ends of a range go in parentheses, each with its unit: `range {name} = (-40 deg, 40 deg);`",
+                        next_text(input)
+                    )));
+                }
                 let content;
                 parenthesized!(content in input);
+                let lo_start = content.cursor();
                 let lo = content.parse()?;
-                content.parse::<Token![,]>()?;
+                if !content.peek(Token![,]) && starts_arg(&content) {
+                    let span = last_token(lo_start, content.cursor()).unwrap_or_else(|| content.span());
+                    return Err(syn::Error::new(
+                        span,
+                        format!(
+                            "expected `,` after `{}`: the two ends are separated by a comma, `range {name} = (lo, hi);`",
+                            text(lo_start, content.cursor())
+                        ),
+                    ));
+                }
+                content.parse::<Token![,]>().map_err(|e| {
+                    syn::Error::new(
+                        e.span(),
+                        format!(
+                            "expected `,` after the lower end, found `{}`: `range {name} = (lo, hi);`",
+                            next_text(&content)
+                        ),
+                    )
+                })?;
                 let hi = content.parse()?;
                 if !content.is_empty() {
                     return Err(content.error("a range is `(lo, hi)`: two values"));
                 }
-                input.parse::<Token![;]>()?;
+                let what = format!("the `range {name} = (..)` statement");
+                if unit_word(input).is_some() {
+                    return Err(input.error(format!(
+                        "unexpected `{}` after the parentheses: in {what} each end takes its own unit, `(-40 deg, 40 deg)`",
+                        next_text(input)
+                    )));
+                }
+                end(input, start, &what, Valued::Nothing)?;
                 Ok(Item::Range(RangeDecl {
                     input: name,
                     lo,
@@ -429,15 +890,33 @@ impl Parse for Item {
                 }))
             }
             "allow" => {
-                let what = input.parse()?;
+                let what: Ident = name_after(
+                    input,
+                    "allow",
+                    "what is allowed",
+                    "`allow singular;` or `allow singular B, C;`",
+                )?;
                 let mut groups = Vec::new();
                 while !input.peek(Token![;]) {
+                    // A group may be named like a statement keyword
+                    // (`allow singular range;`): only a keyword that does not
+                    // end the list begins the next statement.
+                    let keyword_next = starts_statement(input)
+                        && !(input.peek2(Token![;]) || input.peek2(Token![,]));
+                    if input.is_empty() || keyword_next || !input.peek(Ident) {
+                        break;
+                    }
                     groups.push(input.parse()?);
                     if input.peek(Token![,]) {
                         input.parse::<Token![,]>()?;
                     }
                 }
-                input.parse::<Token![;]>()?;
+                end(
+                    input,
+                    start,
+                    &format!("the `allow {what} ..` statement"),
+                    Valued::Nothing,
+                )?;
                 Ok(Item::Allow(word.span(), what, groups))
             }
             other => Err(syn::Error::new(
@@ -483,17 +962,29 @@ impl Parse for Definition {
             ));
         }
         let vis = input.parse()?;
-        let name = input.parse().map_err(|e| {
+        let name: Ident = input.parse().map_err(|e| {
             syn::Error::new(
                 e.span(),
                 "expected the mechanism's type name: `pub FourBar { ... }`",
             )
         })?;
+        if !input.peek(syn::token::Brace) {
+            return Err(input.error(format!(
+                "expected `{{` after `{name}`, found `{}`: the statements go in braces, `{name} {{ let O = ground(0.0, 0.0); .. }}`",
+                next_text(input)
+            )));
+        }
         let content;
         braced!(content in input);
         let mut items = Vec::new();
         while !content.is_empty() {
             items.push(content.parse()?);
+        }
+        if !input.is_empty() {
+            return Err(input.error(format!(
+                "unexpected `{}` after the definition of `{name}`: a `mechanism!` holds one definition, and its statements go inside its braces",
+                next_text(input)
+            )));
         }
         Ok(Definition {
             docs,

@@ -63,6 +63,16 @@ pub const RESERVED: &[&str] = &[
 /// meaning, so its uses raise no second error.
 pub fn symbols(model: &Model) -> BTreeMap<String, (Category, Ident)> {
     let mut table = Table(BTreeMap::new());
+    for (name, cat, ident) in every_symbol(model) {
+        table.insert(name, (cat, ident));
+    }
+    table.0
+}
+
+/// Every definition of a name with its category, a name defined twice
+/// appearing twice (parameters, constants, then the statements in order).
+fn every_symbol(model: &Model) -> Vec<(String, Category, Ident)> {
+    let mut table = All(Vec::new());
     for (name, _) in &model.params {
         table.insert(name.to_string(), (Category::Param, name.clone()));
     }
@@ -106,6 +116,15 @@ pub fn symbols(model: &Model) -> BTreeMap<String, (Category, Ident)> {
     table.0
 }
 
+/// Every definition, in order.
+struct All(Vec<(String, Category, Ident)>);
+
+impl All {
+    fn insert(&mut self, name: String, (cat, ident): (Category, Ident)) {
+        self.0.push((name, cat, ident));
+    }
+}
+
 /// A symbol table where the first definition of a name stays.
 struct Table(BTreeMap<String, (Category, Ident)>);
 
@@ -115,44 +134,109 @@ impl Table {
     }
 }
 
-/// Rule: a name is defined once (points, links, slides, inputs, parameters and
-/// constants share one namespace: they become fields side by side).
-pub fn unique_names(model: &Model, errors: &mut Errors) {
-    let mut seen: BTreeMap<String, Ident> = BTreeMap::new();
-    let mut check = |ident: &Ident, errors: &mut Errors| {
-        let key = ident.to_string();
-        if let Some(first) = seen.get(&key) {
-            let _ = first;
-            errors.push(
-                ident.span(),
-                format!(
-                    "`{key}` is defined twice; every point, link, guide, slide, input, parameter and constant needs its own name: rename this one, e.g. `{key}2`"
-                ),
-            );
-        } else {
-            seen.insert(key, ident.clone());
-        }
-    };
+/// Where a name is defined, for the message on a second definition.
+enum Place {
+    /// Outside the statements (a parameter or a constant, gathered from
+    /// wherever they stand): the words.
+    Outside(String),
+    /// By statement `.0` (an index into the model's statements, which are in
+    /// the order written), in the role `.1` ("as a link of"), written `.2`
+    /// (`let B = rrr(..)`).
+    Statement(usize, &'static str, String),
+}
+
+/// Every definition of a name with its place, in the order [`unique_names`]
+/// checks them: parameters, constants, then each statement's point (or
+/// guide, or slide), links, slides and input.
+fn definitions(model: &Model) -> Vec<(Ident, Place)> {
+    let mut out = Vec::new();
     for (name, _) in &model.params {
-        check(name, errors);
+        out.push((
+            name.clone(),
+            Place::Outside("as a parameter (in `params { .. }`)".to_string()),
+        ));
     }
     for (ident, _) in model.consts.values() {
-        check(ident, errors);
+        out.push((
+            ident.clone(),
+            Place::Outside(format!("as a constant (`const {ident} = ..;`)")),
+        ));
     }
-    for stmt in &model.stmts {
-        check(&stmt.name, errors);
+    for (i, stmt) in model.stmts.iter().enumerate() {
+        let written = format!("`let {} = {}(..)`", stmt.name, stmt.kind_token);
+        let mut push = |ident: &Ident, role| {
+            out.push((ident.clone(), Place::Statement(i, role, written.clone())));
+        };
+        push(&stmt.name, "by");
         for (link, named) in stmt.links.iter().zip(&stmt.links_named) {
             if *named {
-                check(link, errors);
+                push(link, "as a link of");
             }
         }
         for slide in stmt.slides.iter().flatten() {
-            check(slide, errors);
+            push(slide, "as a slide displacement of");
         }
         if let Some(input) = stmt.kind.input() {
-            check(input, errors);
+            push(input, "as the input of");
         }
     }
+    out
+}
+
+/// Rule: a name is defined once (points, links, slides, inputs, parameters and
+/// constants share one namespace: they become fields side by side). The error
+/// is on the later definition (parameters and constants count as first) and
+/// says where the first one is (a `compile_error!` carries no second span).
+pub fn unique_names(model: &Model, errors: &mut Errors) {
+    let mut seen: BTreeMap<String, Place> = BTreeMap::new();
+    for (ident, place) in definitions(model) {
+        let key = ident.to_string();
+        let Some(first) = seen.get(&key) else {
+            seen.insert(key, place);
+            continue;
+        };
+        let whence = match (first, &place) {
+            (Place::Statement(a, role, _), Place::Statement(b, _, _)) if a == b => {
+                format!("{role} this statement")
+            }
+            (Place::Statement(_, role, written), Place::Statement(..)) => {
+                format!("{role} the {written} statement above")
+            }
+            (Place::Statement(_, role, written), Place::Outside(_)) => {
+                format!("{role} the {written} statement")
+            }
+            (Place::Outside(words), _) => words.clone(),
+        };
+        errors.push(
+            ident.span(),
+            format!(
+                "`{key}` is already defined {whence}; every point, link, guide, slide, input, parameter and constant needs its own name: rename this one, e.g. `{}`",
+                another(&key)
+            ),
+        );
+    }
+}
+
+/// A name to suggest instead of `name`: `B2` for `B`, `link3b` for `link3`
+/// (not `link32`, which reads as another number).
+fn another(name: &str) -> String {
+    if name.ends_with(|c: char| c.is_ascii_digit()) {
+        format!("{name}b")
+    } else {
+        format!("{name}2")
+    }
+}
+
+/// Where `name` is defined, in words, for messages about a second
+/// definition outside the statements (a load value); `None` when it is not.
+fn defined_where(model: &Model, name: &Ident) -> Option<String> {
+    definitions(model)
+        .into_iter()
+        .find(|(ident, _)| ident == name)
+        .map(|(_, place)| match place {
+            Place::Outside(words) => words,
+            Place::Statement(_, role, written) => format!("{role} the {written} statement"),
+        })
 }
 
 /// Rule: names the generated code needs for itself are not available.
@@ -188,6 +272,7 @@ pub fn reserved_names(model: &Model, errors: &mut Errors) {
 pub fn references_resolve(model: &Model, errors: &mut Errors) {
     distinct_joints(model, errors);
     let table = symbols(model);
+    let every = every_symbol(model);
     for stmt in &model.stmts {
         let expected: Vec<(&Ident, Category)> = match &stmt.kind {
             Kind::Guide {
@@ -235,8 +320,12 @@ pub fn references_resolve(model: &Model, errors: &mut Errors) {
                 );
                 continue;
             }
+            // A name defined twice, once as what is expected here: the
+            // duplicate is reported (by `unique_names`), and this use means
+            // the definition of the right kind: no second error.
+            let also_wanted = every.iter().any(|(n, cat, _)| *n == name && *cat == want);
             match table.get(&name) {
-                Some((cat, _)) if *cat == want => {}
+                Some((cat, _)) if *cat == want || also_wanted => {}
                 Some((cat, _)) => errors.push(
                     r.span(),
                     format!(
@@ -660,9 +749,12 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
             || model.consts.contains_key(&name)
             || plan.defined.contains_key(&name)
         {
+            let whence = defined_where(model, load)
+                .map(|w| format!(" {w}"))
+                .unwrap_or_default();
             errors.push(
                 load.span(),
-                format!("`{name}` is already defined; a load value needs a name of its own"),
+                format!("`{name}` is already defined{whence}; a load value needs a name of its own: rename it, e.g. `{}`, here and where it is used", another(&name)),
             );
         }
     }

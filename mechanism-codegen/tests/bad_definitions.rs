@@ -180,14 +180,14 @@ fn cases() -> Vec<Case> {
     let A = crank(O2, 40.0, theta) as link2;
     let B = rrr(A, 120.0, O4, 100.0, left) as (link3, link4);",
             ),
-            at: "0.0)\n    ^let O4",
-            says: &["`;`"],
+            at: "0.0, 0.0^)\n    let O4",
+            says: &["expected `;` after the `let O2 = ground(..)` statement"],
         },
         Case {
             name: "missing comma between arguments",
             src: four_bar("    let C = rrr(A 120.0, O4, 100.0, left) as (link5, link6);"),
-            at: "rrr(A ^120.0",
-            says: &["`,`"],
+            at: "rrr(^A 120.0",
+            says: &["expected `,` after `A`", "`let C = rrr(..)`"],
         },
         Case {
             name: "comma instead of semicolon",
@@ -361,7 +361,7 @@ fn cases() -> Vec<Case> {
             name: "dof negative",
             src: four_bar("    dof -1;"),
             at: "dof ^-1",
-            says: &["Gruebler", "`dof -1`"],
+            says: &["positive integer", "not `-1`"],
         },
         Case {
             name: "unknown attribute",
@@ -374,6 +374,214 @@ fn cases() -> Vec<Case> {
             src: "pub { let O = ground(0.0, 0.0); }".to_string(),
             at: "pub ^{",
             says: &["type name"],
+        },
+        // ---- a missing `;` or `,`: on the end of what lacks it ----
+        Case {
+            name: "missing semicolon after the last statement",
+            src: four_bar("    let Q = ground(1.0, 2.0)"),
+            at: "ground(1.0, 2.0^)",
+            says: &["expected `;` after the `let Q = ground(..)` statement"],
+        },
+        Case {
+            name: "missing semicolon after the link names",
+            src: four_bar("    let D = rrr(B, 50.0, O4, 90.0, left) as (link5, link6)\n    let E = ground(1.0, 2.0);"),
+            at: "(link5, link6^)",
+            says: &["expected `;` after the `let D = rrr(..)` statement"],
+        },
+        Case {
+            name: "missing semicolon after a const",
+            src: four_bar("    const k = 2.0\n    let Q = ground(k, 1.0);"),
+            at: "k = ^2.0\n",
+            says: &["expected `;` after the `const k = ..` statement"],
+        },
+        Case {
+            name: "missing semicolon after a torque",
+            src: loaded("    torque on link3 = 5.0\n    gravity (0.0, -9.81);"),
+            at: "link3 = ^5.0",
+            says: &["expected `;` after the `torque on link3 = ..` statement"],
+        },
+        Case {
+            name: "missing comma between parameters",
+            src: four_bar("    params { a = 1.0 b = 2.0 }"),
+            at: "a = ^1.0 b",
+            says: &["expected `,` after `a = 1.0`", "`params { .. }`"],
+        },
+        Case {
+            name: "missing comma between outputs",
+            src: four_bar("    outputs { B A }"),
+            at: "{ ^B A }",
+            says: &["expected `,` after `B`", "`outputs { .. }`"],
+        },
+        Case {
+            name: "missing comma between mass fields",
+            src: loaded("    mass link4 { m = 1.0 at = B };"),
+            at: "m = ^1.0 at",
+            says: &["expected `,` after `m = 1.0`", "`mass link4 { .. }`"],
+        },
+        Case {
+            name: "missing comma between link names",
+            src: four_bar("    let D = rrr(B, 50.0, O4, 90.0, left) as (link5 link6);"),
+            at: "(^link5 link6)",
+            says: &["expected `,` after `link5`", "`as`"],
+        },
+        Case {
+            name: "missing comma between force components",
+            src: loaded("    force at P = (1.0 2.0);"),
+            at: "(^1.0 2.0)",
+            says: &["expected `,` after `1.0`", "(fx, fy)"],
+        },
+        Case {
+            name: "missing comma between the ends of a range",
+            src: four_bar("    range theta = (0 deg 90 deg);"),
+            at: "(0 ^deg 90",
+            says: &["expected `,` after `0 deg`"],
+        },
+        Case {
+            name: "semicolon between arguments",
+            src: four_bar("    let Q = ground(1.0; 2.0);"),
+            at: "1.0^; 2.0",
+            says: &["expected `,`", "found `;`"],
+        },
+        Case {
+            name: "link name without `as`",
+            src: four_bar("    let D = crank(O4, 30.0, phi) link5;"),
+            at: "phi) ^link5",
+            says: &["`;`", "write `as link5`"],
+        },
+        Case {
+            name: "let without `=`",
+            src: four_bar("    let Q ground(1.0, 2.0);"),
+            at: "let Q ^ground",
+            says: &["expected `=` after `let Q`", "`let Q = KIND(args);`"],
+        },
+        Case {
+            name: "torque without `=`",
+            src: loaded("    torque on link3 5.0;"),
+            at: "link3 ^5.0",
+            says: &["expected `=` after `torque on link3`", "`torque on LINK = value;`"],
+        },
+        Case {
+            name: "analysis without what",
+            src: four_bar("    analysis;"),
+            at: "analysis^;",
+            says: &["after `analysis`", "`velocity`"],
+        },
+        Case {
+            name: "mass without braces",
+            src: loaded("    mass link4 m = 1.0;"),
+            at: "link4 ^m",
+            says: &["expected `{` after `mass link4`"],
+        },
+        Case {
+            name: "statements without braces",
+            src: "pub M let O = ground(0.0, 0.0);".to_string(),
+            at: "M ^let",
+            says: &["expected `{` after `M`"],
+        },
+        Case {
+            name: "a second definition in one macro",
+            src: four_bar("") + "\npub N { }",
+            at: "^pub N",
+            says: &["one definition"],
+        },
+        // ---- a unit where none is taken ----
+        Case {
+            name: "unit after a torque other than an angle's",
+            src: loaded("    torque on link3 = 5.0 Nm;"),
+            at: "5.0 ^Nm",
+            says: &["`Nm`", "a torque takes no unit", "N m"],
+        },
+        Case {
+            name: "unit after a force along a guide",
+            src: loaded("    force at C on ram along line = 5.0 N;"),
+            at: "5.0 ^N;",
+            says: &["`N`", "a force takes no unit"],
+        },
+        Case {
+            name: "unit on a force component",
+            src: loaded("    force at P = (10.0 N, 0.0);"),
+            at: "10.0 ^N,",
+            says: &["`N`", "a force component takes no unit"],
+        },
+        Case {
+            name: "unit on a gravity component",
+            src: loaded("    gravity (0.0, -9.81 m);"),
+            at: "-9.81 ^m)",
+            says: &["`m`", "a gravity component takes no unit"],
+        },
+        Case {
+            name: "angle unit on a const",
+            src: four_bar("    const a = 30.0 deg;"),
+            at: "30.0 ^deg",
+            says: &["a constant takes no unit", "`a deg`"],
+        },
+        Case {
+            name: "angle unit on a parameter",
+            src: four_bar("    params { a = 30.0 deg, b = 1.0 }"),
+            at: "30.0 ^deg",
+            says: &["a parameter takes no unit", "`a deg`"],
+        },
+        Case {
+            name: "unit on a load value",
+            src: loaded("    loads { cut = 5.0 N }\n    force at P = (cut, 0.0);"),
+            at: "5.0 ^N }",
+            says: &["a load value takes no unit"],
+        },
+        Case {
+            name: "unit after a range's parentheses",
+            src: four_bar("    range theta = (0, 90) deg;"),
+            at: "90) ^deg",
+            says: &["each end takes its own unit"],
+        },
+        // ---- dof ----
+        Case {
+            name: "dof zero",
+            src: four_bar("    dof 0;"),
+            at: "dof ^0",
+            says: &["positive integer", "not `0`"],
+        },
+        Case {
+            name: "dof fractional",
+            src: four_bar("    dof 1.5;"),
+            at: "dof ^1.5",
+            says: &["positive integer", "not `1.5`"],
+        },
+        Case {
+            name: "dof a name",
+            src: four_bar("    dof x;"),
+            at: "dof ^x",
+            says: &["positive integer", "not `x`"],
+        },
+        Case {
+            name: "dof missing its semicolon",
+            src: four_bar("    dof 1\n    range theta = (0 deg, 90 deg);"),
+            at: "dof ^1\n",
+            says: &["expected `;` after the `dof 1` statement"],
+        },
+        // ---- defined twice: where the first one is ----
+        Case {
+            name: "a point defined twice",
+            src: four_bar("    let B = ground(1.0, 2.0);"),
+            at: "let ^B = ground(1.0",
+            says: &["`B` is already defined by the `let B = rrr(..)` statement above"],
+        },
+        Case {
+            name: "a link named twice in two statements",
+            src: four_bar("    let D = crank(O4, 30.0, phi) as link3;"),
+            at: "as ^link3;",
+            says: &["`link3` is already defined as a link of the `let B = rrr(..)` statement above"],
+        },
+        Case {
+            name: "a point named like a parameter",
+            src: four_bar("    params { O2 = 1.0 }"),
+            at: "let ^O2 = ground",
+            says: &["`O2` is already defined as a parameter"],
+        },
+        Case {
+            name: "a load named like a point",
+            src: loaded("    loads { P = 0.0 }"),
+            at: "loads { ^P",
+            says: &["`P` is already defined by the `let P = point(..)` statement"],
         },
         // ---- statements given twice ----
         Case {
@@ -410,7 +618,7 @@ fn cases() -> Vec<Case> {
             name: "a group's own link named like its known joint",
             src: four_bar("    let D = rrr(A, 50.0, O4, 90.0, left) as (A, link6);"),
             at: "as (^A, link6)",
-            says: &["`A`", "twice"],
+            says: &["`A` is already defined by the `let A = crank(..)` statement above"],
         },
         Case {
             name: "gravity twice",
@@ -483,19 +691,19 @@ fn cases() -> Vec<Case> {
             name: "link named after a point",
             src: four_bar("    let D = crank(O4, 30.0, phi) as A;"),
             at: "as ^A;",
-            says: &["`A`", "twice"],
+            says: &["`A` is already defined by the `let A = crank(..)` statement above"],
         },
         Case {
             name: "same link named twice in one statement",
             src: four_bar("    let D = rrr(B, 50.0, O4, 90.0, left) as (link5, link5);"),
             at: "(link5, ^link5)",
-            says: &["`link5`", "twice"],
+            says: &["`link5` is already defined as a link of this statement"],
         },
         Case {
             name: "input named like a parameter",
             src: four_bar("    params { theta = 1.0 }"),
             at: "crank(O2, 40.0, ^theta)",
-            says: &["`theta`", "twice"],
+            says: &["`theta` is already defined as a parameter"],
         },
         // ---- force analysis ----
         Case {
@@ -624,7 +832,7 @@ fn cases() -> Vec<Case> {
             name: "unit after a torque",
             src: loaded("    torque on link3 = 5.0 deg;"),
             at: "5.0 ^deg",
-            says: &["`;`"],
+            says: &["`deg`", "a torque takes no unit", "angles"],
         },
         Case {
             name: "guide with an extra argument",
@@ -636,7 +844,7 @@ fn cases() -> Vec<Case> {
             name: "load named like a parameter",
             src: loaded("    params { cut = 1.0 }\n    loads { cut = 0.0 }\n    force at P = (cut, 0.0);"),
             at: "loads { ^cut",
-            says: &["`cut`", "already defined"],
+            says: &["`cut` is already defined as a parameter"],
         },
         Case {
             name: "slider on a misspelled guide",
@@ -696,7 +904,7 @@ fn cases() -> Vec<Case> {
             name: "two cranks with one input",
             src: four_bar("    let D = crank(O4, 30.0, theta) as link5;"),
             at: "crank(O4, 30.0, ^theta)",
-            says: &["`theta`", "twice"],
+            says: &["`theta` is already defined as the input of the `let A = crank(..)` statement above"],
         },
     ]
 }

@@ -75,8 +75,11 @@ pub struct Tolerances {
 }
 
 impl Tolerances {
-    /// The tolerances for a scalar with machine epsilon `eps`: edges to
-    /// `max(1e-10, eps)` of the range, singular below `sqrt(eps)` (1.5e-8 in
+    /// The tolerances for a scalar with machine epsilon `eps`: edges bisected
+    /// to `max(1e-10, eps)` of the range (the edge found is where the
+    /// caller's position solve changes its verdict, which in `f32` can lie
+    /// its rounding band beyond the exact limit: 3.3e-6 rad measured at a
+    /// four-bar's, `tests/sweep_surface.rs`), singular below `sqrt(eps)` (1.5e-8 in
     /// `f64`, 3.5e-4 in `f32`). Why `sqrt(eps)`: near a toggle the scaled
     /// determinant grows like the distance to it (a V), and the searches place
     /// its minimum to about `eps` of the range at best, where rounding of the
@@ -648,11 +651,30 @@ pub fn det_rrp<T: Real>(pos: &RrpPosition<T>, g: &Line<T>) -> f64 {
     scaled(dot(&pos.r1, &g.dir), length(&pos.r1) * length(&g.dir))
 }
 
-/// RPR group: `dot(u, A - B) / |A - B|`: zero when `A` is at the foot of the
-/// perpendicular from `B` on the slide line.
+/// RPR group: `dot(u, A - B) / |A - B|`, zero when `A` is at the foot of the
+/// perpendicular from `B` on the slide line, and no larger in magnitude than
+/// `|A - B| / size` (`size` the largest coordinate of `A` and `B`), the
+/// second term of the velocity's `condition` (`dyad::rpr`): it falls to zero
+/// where `A` passes through `B`. With offset 0 the first term is 1 on both
+/// sides of that pass (the slide line turns with `A - B`, its direction
+/// flipping by half a turn), so without the second the sweep would miss a
+/// point where the rates are unbounded.
 pub fn det_rpr<T: Real>(pos: &RprPosition<T>, a: &Point2<T>, b: &Point2<T>) -> f64 {
     let p: Vector2<T> = a - b;
-    scaled(dot(&pos.axis, &p), length(&pos.axis) * length(&p))
+    let sine = scaled(dot(&pos.axis, &p), length(&pos.axis) * length(&p));
+    let size = [a.x, a.y, b.x, b.y]
+        .iter()
+        .fold(0.0f64, |m, c| m.max(abs(c.as_f64())));
+    let spread = scaled(length(&p), T::lit(size));
+    if spread < abs(sine) {
+        if sine < 0.0 {
+            -spread
+        } else {
+            spread
+        }
+    } else {
+        sine
+    }
 }
 
 /// PRP group: `cross(dir1, dir2)`: zero when the guides are parallel.

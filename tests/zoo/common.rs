@@ -121,3 +121,27 @@ pub fn close_fd(got: Vector2<f64>, fd: Vector2<f64>, scale: f64, what: &str) {
         "{what}: {got:?} vs {fd:?}"
     );
 }
+
+// --- Additive helper for `classic.rs` (its checks must be shown to fail on
+// a deliberate mistake, so it needs the residuals without the assertion).
+impl Body {
+    /// The net force's and the net moment's size (about the origin), each
+    /// relative to the largest single term: what `balances` compares with
+    /// `TOL`.
+    pub fn residual(&self) -> (f64, f64) {
+        let mut sum = Vector2::zeros();
+        let mut moment = 0.0;
+        let (mut fscale, mut mscale) = (0.0f64, 0.0f64);
+        for (p, f) in &self.forces {
+            sum += f;
+            moment += cross(&p.coords, f);
+            fscale = fscale.max(f.norm());
+            mscale = mscale.max(p.coords.norm() * f.norm());
+        }
+        for c in &self.couples {
+            moment += c;
+            mscale = mscale.max(c.abs());
+        }
+        (sum.norm() / fscale, moment.abs() / mscale)
+    }
+}

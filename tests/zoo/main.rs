@@ -62,6 +62,7 @@
 //! derivative (1e-10 of the scale) and a rounding error of `eps / h` (2e-11);
 //! 1e-7 of the scale leaves room and catches a wrong term (order 1e-1).
 
+mod classic;
 mod common;
 mod floating;
 mod prismatic;

@@ -245,6 +245,14 @@ pub fn atan2<T: Real>(y: T, x: T) -> T {
     select(y.is_sign_negative(), -a, a)
 }
 
+/// Angle of `(x, y)` from +x (rad, in `(-pi, pi]`), as
+/// [`crate::geometry::angle`]: [`atan2`] with a negative zero `y` made `+0`,
+/// so a vector along `-x` gives `pi`.
+#[inline(always)]
+pub fn angle<T: Real>(y: T, x: T) -> T {
+    atan2(y + T::zero(), x)
+}
+
 /// `angle` (rad) reduced to `(-pi, pi]` like [`crate::geometry::wrap_angle`]
 /// (unchanged when already inside, else `angle - 2 pi round(angle / 2 pi)`
 /// moved into the range), for `|angle| <= SIN_COS_LIMIT`.
@@ -428,6 +436,17 @@ mod tests {
                 "{y} {x}"
             );
         }
+    }
+
+    /// A vector along `-x` is at `pi` whichever sign its zero `y` has, as in
+    /// the scalar path (`geometry::angle`); `atan2` keeps libm's `-pi`.
+    #[test]
+    fn angle_along_minus_x_is_pi() {
+        for y in [0.0f64, -0.0] {
+            assert_eq!(angle(y, -2.5f64), core::f64::consts::PI);
+            assert_eq!(angle(y as f32, -2.5f32), core::f32::consts::PI);
+        }
+        assert!(atan2(-0.0f64, -2.5) < 0.0);
     }
 
     #[test]
