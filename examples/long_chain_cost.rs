@@ -54,7 +54,12 @@ pub fn ladder(name: &str, n: usize, forces: bool, short: Option<usize>) -> Strin
         )
         .unwrap();
         if forces {
-            writeln!(s, "        let M{k} = point(c{k}, from X{}, 0.5, 0 deg);", k - 1).unwrap();
+            writeln!(
+                s,
+                "        let M{k} = point(c{k}, from X{}, 0.5, 0 deg);",
+                k - 1
+            )
+            .unwrap();
         }
     }
     writeln!(s, "        range theta = (10 deg, {hi} deg);").unwrap();
@@ -64,7 +69,11 @@ pub fn ladder(name: &str, n: usize, forces: bool, short: Option<usize>) -> Strin
             let m = 1.0 + 0.125 * (k % 5) as f64;
             let mr = 0.5 + 0.25 * (k % 3) as f64;
             writeln!(s, "        mass c{k} {{ m = {m:?}, at = M{k}, j = 0.08 }};").unwrap();
-            writeln!(s, "        mass r{k} {{ m = {mr:?}, at = X{k}, j = 0.01 }};").unwrap();
+            writeln!(
+                s,
+                "        mass r{k} {{ m = {mr:?}, at = X{k}, j = 0.01 }};"
+            )
+            .unwrap();
         }
         writeln!(s, "        gravity (0.0, -9.81);").unwrap();
         writeln!(s, "        torque on r{n} = brake;").unwrap();
@@ -96,12 +105,22 @@ pub fn mixed(name: &str, blocks: usize) -> String {
         let lines = [
             format!("let R{b} = ground({}, {});", f(hx + 2.0), f(hy)),
             format!("let C{b} = rrr(E{b}, 2.0, R{b}, 1.0, left) as (cpl{b}, rock{b});"),
-            format!("let gh{b} = guide(({}, {}), 0 deg);", f(hx + 2.0), f(hy - 3.0)),
-            format!("let Q{b} = rpp(C{b}, gh{b}, 90 deg) as (blkq{b}, yoke{b}) slide (sq{b}, tq{b});"),
+            format!(
+                "let gh{b} = guide(({}, {}), 0 deg);",
+                f(hx + 2.0),
+                f(hy - 3.0)
+            ),
+            format!(
+                "let Q{b} = rpp(C{b}, gh{b}, 90 deg) as (blkq{b}, yoke{b}) slide (sq{b}, tq{b});"
+            ),
             format!("let gq{b} = guide(Q{b}, yoke{b}, 45 deg);"),
             format!("let gv{b} = guide(({}, {}), 90 deg);", f(hx + 5.0), f(hy)),
             format!("let F{b} = prp(gq{b}, gv{b}) as (pa{b}, pb{b}) slide (u{b}, v{b});"),
-            format!("let gs{b} = guide(({}, {}), 0 deg);", f(hx + 5.0), f(hy - 2.0)),
+            format!(
+                "let gs{b} = guide(({}, {}), 0 deg);",
+                f(hx + 5.0),
+                f(hy - 2.0)
+            ),
             format!("let S{b} = rrp(F{b}, 4.0, gs{b}, plus) as (rod{b}, sl{b}) slide w{b};"),
             format!("let H{n} = ground({}, {});", f(nx), f(ny)),
             format!("let z{b} = rpr(S{b}, H{n}, plus) as (blks{b}, lout{b});"),
@@ -143,7 +162,11 @@ pub fn mixed(name: &str, blocks: usize) -> String {
     writeln!(s, "        gravity (0.0, -9.81);").unwrap();
     writeln!(s, "        torque on rock0 = 0.3;").unwrap();
     writeln!(s, "        force at My0 = (0.5, -0.2);").unwrap();
-    writeln!(s, "        force at S{last} on sl{last} along gs{last} = -push;").unwrap();
+    writeln!(
+        s,
+        "        force at S{last} on sl{last} along gs{last} = -push;"
+    )
+    .unwrap();
     writeln!(s, "    }}").unwrap();
     s
 }
@@ -189,7 +212,10 @@ fn main() {
         for (name, n) in [("Ladder10", 10), ("Ladder20", 20), ("Ladder40", 40)] {
             println!("mechanism! {{\n{}}}\n", ladder(name, n, true, None));
         }
-        println!("mechanism! {{\n{}}}\n", ladder("Faulty20", 20, false, Some(13)));
+        println!(
+            "mechanism! {{\n{}}}\n",
+            ladder("Faulty20", 20, false, Some(13))
+        );
         for (name, b) in [("Mixed10", 2), ("Mixed20", 4), ("Mixed40", 8)] {
             println!("mechanism! {{\n{}}}\n", mixed(name, b));
         }
