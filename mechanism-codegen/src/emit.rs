@@ -791,12 +791,19 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             })
             .map(|s| format_ident!("grp_v_{}", s.name))
             .collect();
+        // The smallest of the groups' indicators, one `let` per group (a
+        // nested `min(min(..), ..)` would nest as deep as the chain is long).
         let condition = match conditions.split_first() {
-            None => lit(1.0),
-            Some((first, rest)) => rest.iter().fold(
-                quote!(#first.condition),
-                |acc, g| quote!(::mechanism::geometry::min(#acc, #g.condition)),
-            ),
+            None => {
+                let one = lit(1.0);
+                quote!(let __condition = #one;)
+            }
+            Some((first, rest)) => {
+                let steps = rest.iter().map(
+                    |g| quote!(let __condition = ::mechanism::geometry::min(__condition, #g.condition);),
+                );
+                quote!(let __condition = #first.condition; #(#steps)*)
+            }
         };
         let vel_doc = format!("Velocity of [`{name}`]: point velocities in length units per second, link angular velocities in rad/s (counter-clockwise positive), slide rates in length units per second.");
         let (on, ot, oc): (Vec<Ident>, Vec<TokenStream>, Vec<TokenStream>) = unzip3(outs);
@@ -827,7 +834,8 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error<T>> {
                 let rates = *rates;
                 #code
-                ::core::result::Result::Ok(#velocity_ty { #(#on: #oc,)* #(#hn,)* condition: #condition, rates })
+                #condition
+                ::core::result::Result::Ok(#velocity_ty { #(#on: #oc,)* #(#hn,)* condition: __condition, rates })
             }
         });
     }
