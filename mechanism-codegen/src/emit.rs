@@ -635,6 +635,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             pub _scalar: ::core::marker::PhantomData<T>,
         }
 
+        #[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)]
         impl<T: ::mechanism::Real> ::core::default::Default for #name<T> {
             #[inline]
             fn default() -> Self {
@@ -929,6 +930,10 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     items.extend(crate::batch::emit(model, &inputs, &pos_out_fields));
     quote! {
         #items
+        // Folded constants (the cosine of 45 deg, say) are long literals
+        // that clippy's `approx_constant` (deny by default) and
+        // `excessive_precision` would flag in the user's crate.
+        #[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)]
         impl<T: ::mechanism::Real> #name<T> {
             #methods
         }
