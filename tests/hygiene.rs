@@ -88,3 +88,46 @@ fn generated_code_binds_no_name_of_the_users_scope() {
     assert!((p.X - p.B.x).abs() < 1e-15);
     assert!(s.forces.power_residual < 1e-13);
 }
+
+/// Clippy: the generated code of a definition whose angles fold to long
+/// constants (the cosine and sine of 45 deg are `FRAC_1_SQRT_2`, which
+/// clippy's `approx_constant`, deny by default, would flag in the user's
+/// crate) passes clippy's default lints. `.ci/run` runs `cargo clippy
+/// --all-targets -- -D warnings`, so a lint in the generated code of this
+/// module fails CI. Before the generated impls allowed these two lints, this
+/// definition made `cargo clippy` fail with two errors.
+mod lint_clean {
+    use mechanism::mechanism;
+
+    mechanism! {
+        /// A four-bar's coupler point at 45 deg drives an RRP on a guide at
+        /// 45 deg (batch, check, forces and self-tests generated too).
+        #[self_test]
+        pub Tilted {
+            let O2 = ground(0.0, 0.0);
+            let O4 = ground(3.0, 0.0);
+            let A = crank(O2, 1.0, theta) as link2;
+            let B = rrr(A, 3.0, O4, 2.0, left) as (link3, link4);
+            let P = point(link3, from A, 1.0, 45 deg);
+            let g = guide(O4, 45 deg);
+            let Q = rrp(P, 2.5, g, plus) as (link5, block6);
+            range theta = (-100 deg, 40 deg);
+            mass link3 { m = 1.0, at = P };
+            gravity (0.0, -9.81);
+        }
+    }
+}
+
+#[test]
+fn folded_45_degree_constants_are_right() {
+    let m = lint_clean::Tilted::<f64>::default();
+    let p = m.position(&lint_clean::TiltedInput { theta: 0.3 }).unwrap();
+    // P is 45 deg off the coupler's axis A -> B, at 1 from A: the cosine
+    // between them is sqrt(1/2), to a few eps of the unit lengths.
+    let (ap, ab) = (p.P - p.A, p.B - p.A);
+    let cos = ap.dot(&ab) / (ap.norm() * ab.norm());
+    assert!((cos - std::f64::consts::FRAC_1_SQRT_2).abs() < 4.0 * f64::EPSILON);
+    // Q lies on the guide through O4 at 45 deg.
+    let oq = p.Q - p.O4;
+    assert!((oq.x - oq.y).abs() < 8.0 * f64::EPSILON * oq.norm());
+}

@@ -253,6 +253,7 @@ pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -
             }
         }
 
+        #[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)]
         impl<T: ::mechanism::Real> #name<T> {
             #[doc = #method_doc]
             #[inline]

@@ -635,6 +635,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             pub _scalar: ::core::marker::PhantomData<T>,
         }
 
+        #[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)]
         impl<T: ::mechanism::Real> ::core::default::Default for #name<T> {
             #[inline]
             fn default() -> Self {
@@ -791,12 +792,19 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             })
             .map(|s| format_ident!("grp_v_{}", s.name))
             .collect();
+        // The smallest of the groups' indicators, one `let` per group (a
+        // nested `min(min(..), ..)` would nest as deep as the chain is long).
         let condition = match conditions.split_first() {
-            None => lit(1.0),
-            Some((first, rest)) => rest.iter().fold(
-                quote!(#first.condition),
-                |acc, g| quote!(::mechanism::geometry::min(#acc, #g.condition)),
-            ),
+            None => {
+                let one = lit(1.0);
+                quote!(let __condition = #one;)
+            }
+            Some((first, rest)) => {
+                let steps = rest.iter().map(
+                    |g| quote!(let __condition = ::mechanism::geometry::min(__condition, #g.condition);),
+                );
+                quote!(let __condition = #first.condition; #(#steps)*)
+            }
         };
         let vel_doc = format!("Velocity of [`{name}`]: point velocities in length units per second, link angular velocities in rad/s (counter-clockwise positive), slide rates in length units per second.");
         let (on, ot, oc): (Vec<Ident>, Vec<TokenStream>, Vec<TokenStream>) = unzip3(outs);
@@ -827,7 +835,8 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error<T>> {
                 let rates = *rates;
                 #code
-                ::core::result::Result::Ok(#velocity_ty { #(#on: #oc,)* #(#hn,)* condition: #condition, rates })
+                #condition
+                ::core::result::Result::Ok(#velocity_ty { #(#on: #oc,)* #(#hn,)* condition: __condition, rates })
             }
         });
     }
@@ -921,6 +930,10 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     items.extend(crate::batch::emit(model, &inputs, &pos_out_fields));
     quote! {
         #items
+        // Folded constants (the cosine of 45 deg, say) are long literals
+        // that clippy's `approx_constant` (deny by default) and
+        // `excessive_precision` would flag in the user's crate.
+        #[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)]
         impl<T: ::mechanism::Real> #name<T> {
             #methods
         }

@@ -78,6 +78,7 @@ pub fn expand(input: TokenStream) -> TokenStream {
     let mut out = emit::emit(&model, &plan, &readers);
     let name = &model.name;
     out.extend(quote::quote! {
+        #[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)]
         impl<T: ::mechanism::Real> #name<T> { #check }
     });
     out.extend(findings.warnings.clone());
