@@ -21,7 +21,7 @@
 //! balance, the group named by a failure, and the batch path against the
 //! scalar one (`tests/common/batch_compare.rs`). Run: `cargo test --release
 //! --test long_chain -- --nocapture` (prints the figures).
-#![allow(non_snake_case, clippy::excessive_precision)]
+#![allow(non_snake_case)]
 
 use std::collections::HashMap;
 
