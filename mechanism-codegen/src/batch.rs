@@ -214,6 +214,7 @@ pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -
     let method_doc = format!(
         "Evaluates every element of [`{batch_ty}`]: outputs into its slices (zero where an element failed), a status byte per element; returns the number of failed elements. No allocation, no early return, no panic."
     );
+    let allow_lints = crate::emit::allow_literal_lints();
     quote! {
         #[doc = #doc]
         #[allow(non_snake_case, missing_docs)]
@@ -253,7 +254,7 @@ pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -
             }
         }
 
-        #[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)]
+        #allow_lints
         impl<T: ::mechanism::Real> #name<T> {
             #[doc = #method_doc]
             #[inline]

@@ -82,6 +82,14 @@ pub(crate) fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BT
 }
 
 /// Doc comments of the output fields, in the order points, links, slides.
+/// The lints the generated impls allow: folded constants (the cosine of 45
+/// deg, say) are long literals that clippy's `approx_constant` (deny by
+/// default), `excessive_precision` and `unreadable_literal` would flag in the
+/// user's crate (`tests/hygiene.rs`, `lint_clean`).
+pub(crate) fn allow_literal_lints() -> TokenStream {
+    quote!(#[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)])
+}
+
 fn output_docs(out: &Outputs, level: usize) -> Vec<String> {
     let (p, l, s) = match level {
         0 => (
@@ -624,6 +632,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
 
     let input_doc = format!("Inputs of [`{name}`], one per driver: angles in rad, lengths in the definition's unit. The same struct carries their rates and accelerations.");
     let pos_doc = format!("Position of [`{name}`]: points in the definition's length unit, link angles in rad in (-pi, pi] from +x, counter-clockwise; slide displacements in length units.");
+    let allow_lints = allow_literal_lints();
     items.extend(quote! {
         #(#docs)*
         #[doc = ""]
@@ -635,7 +644,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             pub _scalar: ::core::marker::PhantomData<T>,
         }
 
-        #[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)]
+        #allow_lints
         impl<T: ::mechanism::Real> ::core::default::Default for #name<T> {
             #[inline]
             fn default() -> Self {
@@ -928,12 +937,10 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
 
     // Batch API (structure of arrays, issue 5): see batch.rs.
     items.extend(crate::batch::emit(model, &inputs, &pos_out_fields));
+    let allow_lints = allow_literal_lints();
     quote! {
         #items
-        // Folded constants (the cosine of 45 deg, say) are long literals
-        // that clippy's `approx_constant` (deny by default) and
-        // `excessive_precision` would flag in the user's crate.
-        #[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)]
+        #allow_lints
         impl<T: ::mechanism::Real> #name<T> {
             #methods
         }

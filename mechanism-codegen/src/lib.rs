@@ -77,8 +77,9 @@ pub fn expand(input: TokenStream) -> TokenStream {
     );
     let mut out = emit::emit(&model, &plan, &readers);
     let name = &model.name;
+    let allow_lints = emit::allow_literal_lints();
     out.extend(quote::quote! {
-        #[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)]
+        #allow_lints
         impl<T: ::mechanism::Real> #name<T> { #check }
     });
     out.extend(findings.warnings.clone());
