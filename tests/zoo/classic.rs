@@ -55,6 +55,32 @@ fn fixed(x: f64, y: f64) -> Point {
     Point::Fixed(V2::new(x, y))
 }
 
+/// Each stage's worst point error against the reference, in eps of the
+/// stage's largest reference vector, times `kappa^k` (k = 1, 2, 3 for
+/// positions, velocities, accelerations: the bounds of `docs/stability.md`).
+fn scaled_errors(
+    pts: &[(f64, f64)],
+    (vels, accs): (&[Vector2<f64>], &[Vector2<f64>]),
+    (rp, rv, ra): (&[V2], &[V2], &[V2]),
+    kappa: f64,
+) -> [f64; 3] {
+    let stage = |got: &[(f64, f64)], r: &[V2]| {
+        let e = got
+            .iter()
+            .zip(r)
+            .map(|(g, r)| dist(*g, *r))
+            .fold(0.0, f64::max);
+        let sc = r.iter().map(|r| len(*r)).fold(0.0, f64::max);
+        e / (f64::EPSILON * sc)
+    };
+    let pairs = |vs: &[Vector2<f64>]| vs.iter().map(|v| (v.x, v.y)).collect::<Vec<_>>();
+    [
+        stage(pts, rp) * kappa,
+        stage(&pairs(vels), rv) * kappa.powi(2),
+        stage(&pairs(accs), ra) * kappa.powi(3),
+    ]
+}
+
 /// The circle intersection `C` with `|C - a| = l1`, `|C - b| = l2`, on the
 /// left of the directed line `a -> b` when `left` (the RRR group's
 /// definition in docs/dsl.md), written here from the triangle (the foot of C
@@ -362,23 +388,7 @@ fn peaucellier_matches_the_double_double_reference() {
         let kappa = sin_at(p.B, p.O, p.A).min(sin_at(p.C, p.O, p.A)) * sin_at(p.P, p.B, p.C);
         let vs = [Vector2::zeros(), Vector2::zeros(), v.A, v.B, v.C, v.P];
         let accs = [Vector2::zeros(), Vector2::zeros(), a.A, a.B, a.C, a.P];
-        let stage = |got: &[(f64, f64)], r: &[V2]| {
-            let e = got
-                .iter()
-                .zip(r)
-                .map(|(g, r)| dist(*g, *r))
-                .fold(0.0, f64::max);
-            let sc = r.iter().map(|r| len(*r)).fold(0.0, f64::max);
-            e / (f64::EPSILON * sc)
-        };
-        let gp: Vec<_> = pts.iter().map(|p| (p.x, p.y)).collect();
-        let gv: Vec<_> = vs.iter().map(|p| (p.x, p.y)).collect();
-        let ga: Vec<_> = accs.iter().map(|p| (p.x, p.y)).collect();
-        let e = [
-            stage(&gp, &rp) * kappa,
-            stage(&gv, &rv) * kappa.powi(2),
-            stage(&ga, &ra) * kappa.powi(3),
-        ];
+        let e = scaled_errors(&start, (&vs, &accs), (&rp, &rv, &ra), kappa);
         for (x, e) in worst.iter_mut().zip(e) {
             *x = x.max(e);
         }
@@ -709,22 +719,7 @@ fn jansen_matches_the_double_double_reference() {
         let z = Vector2::zeros();
         let vs = [z, z, v.A, v.B, v.C, v.D, v.E, v.F];
         let accs = [z, z, a.A, a.B, a.C, a.D, a.E, a.F];
-        let stage = |got: &[(f64, f64)], r: &[V2]| {
-            let e = got
-                .iter()
-                .zip(r)
-                .map(|(g, r)| dist(*g, *r))
-                .fold(0.0, f64::max);
-            let sc = r.iter().map(|r| len(*r)).fold(0.0, f64::max);
-            e / (f64::EPSILON * sc)
-        };
-        let gv: Vec<_> = vs.iter().map(|p| (p.x, p.y)).collect();
-        let ga: Vec<_> = accs.iter().map(|p| (p.x, p.y)).collect();
-        let e = [
-            stage(&start, &rp) * kappa,
-            stage(&gv, &rv) * kappa.powi(2),
-            stage(&ga, &ra) * kappa.powi(3),
-        ];
+        let e = scaled_errors(&start, (&vs, &accs), (&rp, &rv, &ra), kappa);
         for (x, e) in worst.iter_mut().zip(e) {
             *x = x.max(e);
         }
