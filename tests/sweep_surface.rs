@@ -882,6 +882,22 @@ mod suggested {
         }
     }
 
+    mechanism! {
+        /// tests/ui/sweep_prp_between_samples.rs (guides parallel between
+        /// two samples, a compile error since the verdict no longer depends
+        /// on where the samples fall) with its suggested range.
+        #[self_test]
+        pub CrossBetween {
+            let O = ground(0.0, 0.0);
+            let V = ground(0.3, 0.0);
+            let vertical = guide(V, 90 deg);
+            let A = crank(O, 0.1, theta) as crank_link;
+            let rod_line = guide(O, crank_link, 33.33 deg);
+            let C = prp(rod_line, vertical) as (b1, b2) slide (s1, s2);
+            range theta = (56.7 deg, 236.6 deg);
+        }
+    }
+
     #[test]
     fn suggested_ranges_are_clean_at_run_time() {
         assert!(Folded::<f64>::default().check().is_clean());
@@ -891,5 +907,6 @@ mod suggested {
         assert!(Inverted::<f64>::default().check().is_clean());
         assert!(Six::<f64>::default().check().is_clean());
         assert!(Cross::<f64>::default().check().is_clean());
+        assert!(CrossBetween::<f64>::default().check().is_clean());
     }
 }
