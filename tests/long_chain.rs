@@ -1111,10 +1111,12 @@ macro_rules! ladder_check {
             // 4n + 4 terms here (at most (4n + 4) eps of it, but its roundings
             // are random: measured far below). (Relative to the largest term
             // instead, the ladder of 40 reads 838 eps: the torque is the sum
-            // of 80 similar terms.)
+            // of 80 similar terms.) Bound: 4 eps per group, the constant of
+            // the kinematics' growth (measured 8.5, 7.1, 12.1 for 10, 20, 40
+            // groups against 44, 84, 164).
             let e = (f.drive_theta - t_ref).abs() * w / (EPS * total);
             worst_power = worst_power.max(e);
-            assert!(e <= 16.0 * (n as f64 + 1.0), "{}: theta {th}: torque {} against {t_ref} ({e} eps)", stringify!($ty), f.drive_theta);
+            assert!(e <= 4.0 * (n as f64 + 1.0), "{}: theta {th}: torque {} against {t_ref} ({e} eps)", stringify!($ty), f.drive_theta);
             // Richardson differences every 10 deg.
             if i % 20 == 0 {
                 let pos = |t: f64| { let q = m.position(&inp(t)).unwrap(); flat!(q; [$($p),*], [$($a),*], []) };
@@ -1378,11 +1380,12 @@ macro_rules! mixed_check {
             terms.push(0.5 * bv[0].p[9][0] - 0.2 * bv[0].p[9][1]);
             terms.push(-push * bv[nb - 1].p[4][0]);
             let sum: f64 = terms.iter().sum();
-            // Relative to the sum of the terms' magnitudes, as in the ladder.
+            // Relative to the sum of the terms' magnitudes, with the bound of
+            // the ladder (measured 3.0, 5.2, 11.9 for 10, 20, 40 groups).
             let total = terms.iter().map(|t| t.abs()).sum::<f64>();
             let e = (f.drive_theta + sum / w).abs() * w / (EPS * total);
             worst_power = worst_power.max(e);
-            assert!(e <= 16.0 * (5 * nb + 1) as f64, "{}: theta {th}: torque {} against {} ({e} eps)", stringify!($ty), f.drive_theta, -sum / w);
+            assert!(e <= 4.0 * (5 * nb + 1) as f64, "{}: theta {th}: torque {} against {} ({e} eps)", stringify!($ty), f.drive_theta, -sum / w);
             if i % 10 == 0 {
                 let pos = |t: f64| { let q = m.position(&inp(t)).unwrap(); flatten(&blocks!(q; $($blk)*)) };
                 let (d, tr, ro) = richardson(&pos, th, 1e-2);
