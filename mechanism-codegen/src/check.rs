@@ -57,6 +57,20 @@ pub struct Input {
     pub range: Option<Range>,
     /// `true` when the range was declared.
     pub declared: bool,
+    /// Where the declared range is written: its input's name, its lower and
+    /// its upper end (the spans of a failure the range is to blame for).
+    pub spans: Option<RangeSpans>,
+}
+
+/// The tokens of a `range INPUT = (lo, hi);` statement.
+#[derive(Clone, Copy)]
+pub struct RangeSpans {
+    /// `INPUT`.
+    pub input: Span,
+    /// The value of `lo`.
+    pub lo: Span,
+    /// The value of `hi`.
+    pub hi: Span,
 }
 
 /// Most groups the expansion-time check handles (more: not checked).
@@ -145,6 +159,7 @@ pub fn inputs(model: &Model, errors: &mut Errors) -> Vec<Input> {
                     periodic: true,
                 }),
                 declared: false,
+                spans: None,
             })
         })
         .collect();
@@ -175,10 +190,19 @@ pub fn inputs(model: &Model, errors: &mut Errors) -> Vec<Input> {
             inputs[k].declared = true;
             continue;
         };
-        let span = match &decl.hi {
+        // A negative end is spanned on its number (a span cannot join `-`
+        // and the number on stable Rust; the `-` alone reads as the fault).
+        let arg_span = |a: &Arg| match a {
+            Arg::Value(syn::Expr::Unary(u), _) => syn::spanned::Spanned::span(&*u.expr),
             Arg::Value(e, _) => syn::spanned::Spanned::span(e),
             Arg::From(i) => i.span(),
         };
+        let span = arg_span(&decl.hi);
+        inputs[k].spans = Some(RangeSpans {
+            input: decl.input.span(),
+            lo: arg_span(&decl.lo),
+            hi: span,
+        });
         let show = |x: f64| show_value(x, angle);
         if lo >= hi || !lo.is_finite() || !hi.is_finite() {
             errors.push(
@@ -913,6 +937,10 @@ pub fn expansion_check(
         let stmt_index = checked.groups[*g];
         let stmt = &model.stmts[stmt_index];
         let kind = group_kind(&stmt.kind).unwrap_or("group");
+        // The span: the group's name, unless a declared range is to blame
+        // (the group assembles somewhere in it): then the end of the range
+        // it fails at, or the range's input when it fails inside.
+        let mut span = stmt.name.span();
         let message = if inputs.len() == 1 {
             let input = &inputs[0];
             let name = &input.name;
@@ -1017,6 +1045,16 @@ pub fn expansion_check(
                     } else {
                         "declare a range inside it"
                     };
+                    if let (true, Some(at)) = (input.declared, input.spans) {
+                        let tiny = 1e-9 * width;
+                        let at_lo = list.iter().all(|e| e.1[0] <= r.lo + tiny);
+                        let at_hi = list.iter().all(|e| e.2[0] >= r.hi - tiny);
+                        span = match (at_lo && !r.periodic, at_hi && !r.periodic) {
+                            (true, false) => at.lo,
+                            (false, true) => at.hi,
+                            _ => at.input,
+                        };
+                    }
                     match suggest(input, a, b) {
                         Some(range) => {
                             format!("it assembles for {name} in {s}: {verb}, e.g. {range}")
@@ -1067,9 +1105,7 @@ pub fn expansion_check(
                 explain(model, stmt_index, &e.3, "the first failing grid point"),
             )
         };
-        findings
-            .errors
-            .push(syn::Error::new(stmt.name.span(), message));
+        findings.errors.push(syn::Error::new(span, message));
     }
     if !findings.errors.is_empty() {
         return findings;

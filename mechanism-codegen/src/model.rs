@@ -888,27 +888,29 @@ fn input_position(kind: &str) -> Option<usize> {
 
 /// Reports the second `word` statement of a definition (`outputs`, `dof`,
 /// `analysis`, `gravity`: each says one thing, so a second one would silently
-/// replace the first). Returns `true` for the first, which is the one kept (so
+/// replace the first). `written` shows the statement (named in the error on
+/// a second one). Returns `true` for the first, which is the one kept (so
 /// the second's content raises no further errors).
 fn once(
-    seen: &mut BTreeMap<&'static str, Span>,
+    seen: &mut BTreeMap<&'static str, String>,
     word: &'static str,
+    written: impl FnOnce() -> String,
     span: Span,
     errors: &mut Errors,
 ) -> bool {
-    if seen.contains_key(word) {
+    if let Some(first) = seen.get(word) {
         let hint = match word {
-            "outputs" => "list every output in the first `outputs { .. }` and remove this one",
+            "outputs" => "list every output in the first and remove this one",
             "gravity" => "keep one `gravity (gx, gy);`",
             _ => "remove one of them",
         };
         errors.push(
             span,
-            format!("`{word}` may appear once in a definition, and this is the second; {hint}"),
+            format!("`{word}` may appear once in a definition, and this is the second (the first is `{first}`); {hint}"),
         );
         return false;
     }
-    seen.insert(word, span);
+    seen.insert(word, written());
     true
 }
 
@@ -1048,7 +1050,8 @@ pub fn lower(def: Definition) -> (Model, Errors) {
     for item in def.items {
         match item {
             Item::Analysis(span, what) => {
-                if !once(&mut seen, "analysis", span, &mut errors) {
+                let written = || format!("analysis {what};");
+                if !once(&mut seen, "analysis", written, span, &mut errors) {
                     continue;
                 }
                 level_span = Some(what.span());
@@ -1072,7 +1075,12 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                 };
             }
             Item::Outputs(span, list) => {
-                if !once(&mut seen, "outputs", span, &mut errors) {
+                let written = || {
+                    let names: Vec<String> = list.iter().take(4).map(ToString::to_string).collect();
+                    let more = if list.len() > 4 { ", .." } else { "" };
+                    format!("outputs {{ {}{more} }}", names.join(", "))
+                };
+                if !once(&mut seen, "outputs", written, span, &mut errors) {
                     continue;
                 }
                 if list.is_empty() {
@@ -1081,7 +1089,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                 outputs = Some(list);
             }
             Item::Dof(span, n) => {
-                if !once(&mut seen, "dof", span, &mut errors) {
+                if !once(&mut seen, "dof", || format!("dof {n};"), span, &mut errors) {
                     continue;
                 }
                 dof = Some(n);
@@ -1171,7 +1179,18 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             }
             Item::Gravity(span, x, y) => {
                 kinetics.declared = true;
-                if !once(&mut seen, "gravity", span, &mut errors) {
+                let written = || {
+                    // Tokens print `- 9.81`: close up a leading minus.
+                    let show = |e: &syn::Expr| {
+                        let t = quote::ToTokens::to_token_stream(e).to_string();
+                        match t.strip_prefix("- ") {
+                            Some(rest) => format!("-{rest}"),
+                            None => t,
+                        }
+                    };
+                    format!("gravity ({}, {});", show(&x), show(&y))
+                };
+                if !once(&mut seen, "gravity", written, span, &mut errors) {
                     continue;
                 }
                 match (convert(&x, &scope), convert(&y, &scope)) {

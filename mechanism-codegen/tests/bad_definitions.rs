@@ -153,6 +153,20 @@ fn four_bar(extra: &str) -> String {
     )
 }
 
+/// A four-bar that is not Grashof (crank 40 + ground 130 > 90 + 70): it
+/// assembles for `theta` in [-133.05, 133.05] deg.
+fn non_grashof(extra: &str) -> String {
+    format!(
+        "pub M {{
+    let O2 = ground(0.0, 0.0);
+    let O4 = ground(130.0, 0.0);
+    let A = crank(O2, 40.0, theta) as link2;
+    let B = rrr(A, 90.0, O4, 70.0, left) as (link3, link4);
+{extra}
+}}"
+    )
+}
+
 /// The four-bar with a slider-crank beside it: a fixed guide `line`, a coupler
 /// point `P` on `link3` and masses, for the force-analysis cases.
 fn loaded(extra: &str) -> String {
@@ -594,13 +608,13 @@ fn cases() -> Vec<Case> {
             name: "two outputs statements",
             src: four_bar("    outputs { B }\n    outputs { A }"),
             at: "^outputs { A }",
-            says: &["outputs", "once"],
+            says: &["outputs", "once", "the first is `outputs { B }`"],
         },
         Case {
             name: "two analysis statements",
             src: four_bar("    analysis position;\n    analysis velocity;"),
             at: "^analysis velocity",
-            says: &["analysis", "once"],
+            says: &["analysis", "once", "the first is `analysis position;`"],
         },
         Case {
             name: "two dof statements",
@@ -612,7 +626,7 @@ fn cases() -> Vec<Case> {
             name: "two dof statements, the second wrong",
             src: four_bar("    dof 1;\n    dof 2;"),
             at: "^dof 2",
-            says: &["dof", "once"],
+            says: &["dof", "once", "the first is `dof 1;`"],
         },
         Case {
             name: "a group's own link named like its known joint",
@@ -624,7 +638,7 @@ fn cases() -> Vec<Case> {
             name: "gravity twice",
             src: loaded("    gravity (0.0, -9.81);\n    gravity (0.0, -9.80);"),
             at: "^gravity (0.0, -9.80)",
-            says: &["gravity", "once"],
+            says: &["gravity", "once", "the first is `gravity (0.0, -9.81);`"],
         },
         Case {
             name: "mass field given twice",
@@ -766,6 +780,34 @@ fn cases() -> Vec<Case> {
             src: four_bar("    range theta = (10 deg, 10 deg);"),
             at: "10 deg, ^10 deg",
             says: &["empty"],
+        },
+        // A declared range the non-Grashof four-bar (assembles for theta in
+        // [-133.05, 133.05] deg) cannot follow: the error points at the end
+        // it fails at, at the input when it fails inside, at the group when
+        // it assembles nowhere in the range.
+        Case {
+            name: "declared range past the upper limit",
+            src: non_grashof("    range theta = (90 deg, 150 deg);"),
+            at: "(90 deg, ^150 deg)",
+            says: &["cannot assemble group `B`", "narrow the declared range"],
+        },
+        Case {
+            name: "declared range past the lower limit",
+            src: non_grashof("    range theta = (-150 deg, 0 deg);"),
+            at: "(-^150 deg, 0 deg)",
+            says: &["cannot assemble group `B`", "narrow the declared range"],
+        },
+        Case {
+            name: "declared range failing inside",
+            src: non_grashof("    range theta = (90 deg, 270 deg);"),
+            at: "range ^theta",
+            says: &["cannot assemble group `B`", "narrow the declared range"],
+        },
+        Case {
+            name: "declared range where the group assembles nowhere",
+            src: non_grashof("    range theta = (140 deg, 220 deg);"),
+            at: "let ^B = rrr",
+            says: &["cannot assemble group `B`", "nowhere"],
         },
         Case {
             name: "allow singular of an unknown group",
