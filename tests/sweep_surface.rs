@@ -573,12 +573,13 @@ fn prp_parallel_guides_are_found_at_the_closed_form_angles() {
 }
 
 #[test]
-fn prp_parallel_guides_between_samples_are_reported_as_singular() {
+fn prp_parallel_guides_between_samples_are_failures_as_on_samples() {
     // tilt 33.33 deg: parallel at 56.67 and 236.67 deg, between samples. The
-    // determinant cross(dir1, dir2) changes sign there, so the sweep reports
-    // two singular positions (and no failure): a different verdict from the
-    // tilt of 30 deg for the same geometry. Both are at the closed form to
-    // the edge tolerance.
+    // determinant cross(dir1, dir2) changes sign there; the joint is at
+    // infinity, as at the tilt of 30 deg where samples land on it, so the
+    // verdict is the same: two failures at single inputs, no singular
+    // position (the macro's expansion-time check says the same). Both at the
+    // closed form to the edge tolerance.
     let tilt = deg(33.33);
     let m = Cross::<f64> {
         tilt,
@@ -586,9 +587,18 @@ fn prp_parallel_guides_between_samples_are_reported_as_singular() {
     };
     let rep = m.check();
     let c = &rep.groups[1];
-    assert_eq!((c.failures, c.singular), (0, 2), "between samples: {rep:?}");
-    let at = c.first_singular.unwrap()[0];
-    near_angle(at, PI / 2.0 - tilt, EDGE * 2.0 * PI, "PRP singular");
+    assert_eq!((c.failures, c.singular), (2, 0), "between samples: {rep:?}");
+    assert!(!rep.assembles());
+    let (lo, hi) = c.failure.unwrap();
+    near_angle(lo[0], PI / 2.0 - tilt, EDGE * 2.0 * PI, "PRP failure start");
+    near_angle(hi[0], PI / 2.0 - tilt, EDGE * 2.0 * PI, "PRP failure end");
+    assert!(
+        matches!(c.fault, Some(Fault::Singular { .. })),
+        "{:?}",
+        c.fault
+    );
+    // The crank's own group is not at infinity: nothing recorded for it.
+    assert_eq!((rep.groups[0].failures, rep.groups[0].singular), (0, 0));
 }
 
 // ---------------------------------------------------------------------------

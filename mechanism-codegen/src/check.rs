@@ -771,6 +771,18 @@ pub struct Findings {
     pub ran: bool,
 }
 
+/// Per checked group: `true` for a group whose joint runs off to infinity
+/// where its determinant vanishes (PRP: parallel guides; RPP: the slot
+/// parallel to the guide): there the position itself fails, whether or not a
+/// sample lands on it.
+fn joints_at_infinity(model: &Model, checked: &Checked) -> Vec<bool> {
+    checked
+        .groups
+        .iter()
+        .map(|&i| matches!(model.stmts[i].kind, Kind::Prp { .. } | Kind::Rpp { .. }))
+        .collect()
+}
+
 /// A singular position found by the sweep, as a finding: a failure at that
 /// one input for a group whose joint is at infinity there (so the verdict does
 /// not depend on whether a sample lands on the point), a singular position
@@ -867,14 +879,7 @@ pub fn expansion_check(
             .collect(),
     };
     let mut events: Vec<Found> = Vec::new();
-    // The groups whose joint runs off to infinity where their determinant
-    // vanishes (PRP: parallel guides; RPP: the slot parallel to the guide):
-    // there the position itself fails, whether or not a sample lands on it.
-    let at_infinity: Vec<bool> = checked
-        .groups
-        .iter()
-        .map(|&i| matches!(model.stmts[i].kind, Kind::Prp { .. } | Kind::Rpp { .. }))
-        .collect();
+    let at_infinity = joints_at_infinity(model, &checked);
     let tol = Tolerances::for_eps(f64::EPSILON);
     if inputs.len() == 1 {
         sweep::sweep_1d(
@@ -1246,6 +1251,14 @@ pub fn emit_check(model: &Model, plan: &Plan, inputs: &[Input], summary: &str) -
             quote!(::mechanism::sweep::Range { lo: #lo, hi: #hi, periodic: #p })
         })
         .collect();
+    // A PRP's or an RPP's joint at infinity is a failure, as at expansion
+    // time; the call only where the mechanism has one.
+    let at_infinity = joints_at_infinity(model, &checked);
+    let mark_infinity = if at_infinity.contains(&true) {
+        quote!(.with_joints_at_infinity([#(#at_infinity),*]))
+    } else {
+        TokenStream::new()
+    };
     let sweep_call = if d == 1 {
         quote!(::mechanism::sweep::sweep_1d(&ranges[0], ::mechanism::sweep::SAMPLES_1D, &tol, eval, |e| report.record(&e));)
     } else {
@@ -1261,7 +1274,7 @@ pub fn emit_check(model: &Model, plan: &Plan, inputs: &[Input], summary: &str) -
         #[allow(clippy::all)]
         pub fn check(&self) -> ::mechanism::sweep::Report<#g, #d> {
             let ranges = [#(#ranges),*];
-            let mut report = ::mechanism::sweep::Report::new([#(#input_strs),*], ranges, [#(#group_names),*]);
+            let mut report = ::mechanism::sweep::Report::new([#(#input_strs),*], ranges, [#(#group_names),*])#mark_infinity;
             let tol = ::mechanism::sweep::Tolerances::for_eps(<T as ::mechanism::Real>::as_f64(<T as ::mechanism::Real>::eps()));
             let eval = |q: &[::core::primitive::f64; #d]| -> ::mechanism::sweep::Outcome<#g> {
                 let input = #input_ty { #(#input_names: <T as ::mechanism::Real>::lit(q[#ks]),)* };

@@ -566,6 +566,11 @@ pub struct Report<const G: usize, const D: usize> {
     pub ranges: [Range; D],
     /// Per group.
     pub groups: [GroupReport<D>; G],
+    /// Per group: `true` where a vanishing determinant puts the joint at
+    /// infinity (a PRP's parallel guides, an RPP's slot parallel to its
+    /// guide), so that a sign change found between two samples is a failure
+    /// at that input, as a sample on it would be, not a singular position.
+    at_infinity: [bool; G],
 }
 
 impl<const G: usize, const D: usize> Report<G, D> {
@@ -582,7 +587,16 @@ impl<const G: usize, const D: usize> Report<G, D> {
                 singular: 0,
                 first_singular: None,
             }),
+            at_infinity: [false; G],
         }
+    }
+
+    /// Marks the groups whose joint is at infinity where their determinant
+    /// vanishes (see the field `at_infinity`); the generated `check()` of a
+    /// mechanism with a PRP or an RPP calls it.
+    pub fn with_joints_at_infinity(mut self, at_infinity: [bool; G]) -> Self {
+        self.at_infinity = at_infinity;
+        self
     }
 
     /// Adds a finding.
@@ -603,6 +617,18 @@ impl<const G: usize, const D: usize> Report<G, D> {
                     }
                 }
             }
+            Event::Singular {
+                group,
+                at,
+                det,
+                count,
+            } if self.at_infinity.get(group) == Some(&true) => self.record(&Event::Fails {
+                group,
+                lo: at,
+                hi: at,
+                fault: Fault::Singular { det, scale: 1.0 },
+                count,
+            }),
             Event::Singular {
                 group, at, count, ..
             } => {
