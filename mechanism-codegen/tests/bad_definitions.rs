@@ -139,32 +139,31 @@ fn run(case: &Case, print: bool) -> Result<(), String> {
     }
 }
 
-/// A crank-rocker four-bar (Grashof: 40 + 130 < 120 + 100, so the crank turns
-/// fully and the expansion-time check passes) with `extra` lines appended.
-fn four_bar(extra: &str) -> String {
+/// A four-bar, ground 130 and crank 40 long, with coupler and rocker
+/// lengths `links` (as written) and `extra` lines appended.
+fn four_bar_with(links: (&str, &str), extra: &str) -> String {
+    let (coupler, rocker) = links;
     format!(
         "pub M {{
     let O2 = ground(0.0, 0.0);
     let O4 = ground(130.0, 0.0);
     let A = crank(O2, 40.0, theta) as link2;
-    let B = rrr(A, 120.0, O4, 100.0, left) as (link3, link4);
+    let B = rrr(A, {coupler}, O4, {rocker}, left) as (link3, link4);
 {extra}
 }}"
     )
 }
 
+/// A crank-rocker four-bar (Grashof: 40 + 130 < 120 + 100, so the crank turns
+/// fully and the expansion-time check passes) with `extra` lines appended.
+fn four_bar(extra: &str) -> String {
+    four_bar_with(("120.0", "100.0"), extra)
+}
+
 /// A four-bar that is not Grashof (crank 40 + ground 130 > 90 + 70): it
 /// assembles for `theta` in [-133.05, 133.05] deg.
 fn non_grashof(extra: &str) -> String {
-    format!(
-        "pub M {{
-    let O2 = ground(0.0, 0.0);
-    let O4 = ground(130.0, 0.0);
-    let A = crank(O2, 40.0, theta) as link2;
-    let B = rrr(A, 90.0, O4, 70.0, left) as (link3, link4);
-{extra}
-}}"
-    )
+    four_bar_with(("90.0", "70.0"), extra)
 }
 
 /// The four-bar with a slider-crank beside it: a fixed guide `line`, a coupler
