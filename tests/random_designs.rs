@@ -1,0 +1,540 @@
+//! Random designs: the dimensions of a four-bar and of an offset
+//! slider-crank on a tilted guide drawn at random (run-time `params`, lengths
+//! over six decades of scale), each at a random pose, speed and angular
+//! acceleration of the crank, as a user sweeping or optimizing designs would
+//! run them, in `f64` and in `f32`, against the double-double group
+//! references of `mechanism-reference` (written from the circle and line
+//! intersections, not from the generated code).
+//!
+//! Per sample, the error of the coupler joint `B`, its velocity and its
+//! acceleration, and of the link angles, is divided by its first-order bound:
+//! `eps L / s` for the position, `eps L / (l s)` for a link's angle, and
+//! `eps (L_pos / l_min) L / s^k` for the velocity (`k = 2`) and the
+//! acceleration (`k = 3`). `L` is the stage's largest reference vector in the
+//! sample, `s` the group's condition (`|sin|` of the angle between the RRR's
+//! links at `B`; `|cos|` of the rod's angle to the guide for the RRP), and
+//! `L_pos / l_min` the largest coordinate over the group's shortest link: the
+//! positions are known to eps of their coordinates, so a link's direction
+//! only to `eps L_pos / l`, which the rates inherit (`docs/stability.md`,
+//! "End to end"). The largest ratio over all samples is printed and must stay
+//! below [`BOUND`]. Where that first-order relative error of the rates exceeds
+//! [`NO_DIGITS`] (next to a toggle or tangency, or a link thousands of times
+//! shorter than its coordinates in `f32`) the rates have no digit to promise
+//! and are checked finite only. Where the reference cannot assemble, or the
+//! generated code returns an error, the two must agree except within the
+//! documented rounding band of an edge (a typed error naming the group, never
+//! NaN).
+//!
+//! Two draws: every dimension at random (`Free`), and the group's lengths
+//! fitted to the pose at a relative distance of 1e-17 .. 1e-2 from an edge of
+//! assembly, on either side (`Edge`).
+//!
+//! `cargo test --test random_designs -- --nocapture` prints the figures.
+
+use mechanism::{mechanism, Error, Fault, Real};
+use mechanism_reference::groups::{self as refg, V};
+use mechanism_reference::Dd;
+
+mechanism! {
+    /// A four-bar with every dimension a run-time parameter: the crank `a`
+    /// about the origin, the rocker `c` about `Q = (gx, gy)`, the coupler
+    /// `b`; `B` on the left of `A -> Q`.
+    pub Quad {
+        params { gx = 1.0, gy = 0.0, a = 0.3, b = 1.0, c = 0.8 }
+        let O = ground(0.0, 0.0);
+        let Q = ground(gx, gy);
+        let A = crank(O, a, theta) as crank_link;
+        let B = rrr(A, b, Q, c, left) as (coupler, rocker);
+    }
+}
+
+mechanism! {
+    /// An offset slider-crank on a guide through `(0, e)` at angle `tilt`
+    /// (rad): crank `a` about the origin, rod `l`, the block's pin `B` ahead
+    /// of the foot of the perpendicular from `A` (`plus`).
+    pub Slide {
+        params { a = 0.1, l = 0.4, e = 0.02, tilt = 0.3 }
+        let O = ground(0.0, 0.0);
+        let line = guide((0.0, e), tilt);
+        let A = crank(O, a, theta) as crank_link;
+        let B = rrp(A, l, line, plus) as (rod, block) slide s;
+    }
+}
+
+/// The largest error allowed, in units of the sample's first-order bound.
+/// The generated chain rounds about 8 times per stage at the stage's scale:
+/// the crank's tip (sine and cosine within 2 ulp, a product and a sum), the
+/// group's difference vector, its squared length, the square root and the
+/// products forming the joint; the rates and accelerations repeat it through
+/// the same `1 / s`. Measured: at most 6.7 over 400 000 samples per run (the
+/// eight runs below with `SAMPLES = 400_000`, release build; 4.7 with the
+/// 20 000 of CI).
+const BOUND: f64 = 8.0;
+
+/// SplitMix64: a small deterministic generator (fixed seeds, so a failure
+/// reproduces).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    /// Uniform in `[lo, hi)`.
+    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+fn vd(x: f64, y: f64) -> V {
+    refg::v(x, y)
+}
+
+fn norm(a: V) -> f64 {
+    refg::norm(a).to_f64()
+}
+
+/// `|got - r|` for a computed vector against a reference one.
+fn dist(got: (f64, f64), r: V) -> f64 {
+    norm(refg::sub(vd(got.0, got.1), r))
+}
+
+/// `|got - r|` for an angle (rad), the difference wrapped to `(-pi, pi]`.
+fn angle_error(got: f64, r: Dd) -> f64 {
+    let d = (Dd::from(got) - r).to_f64();
+    let turn = 2.0 * std::f64::consts::PI;
+    (d - turn * (d / turn).round()).abs()
+}
+
+/// Worst ratios and counts over a run.
+#[derive(Default, Debug)]
+struct Tally {
+    /// Worst error over its bound: position, velocity, acceleration, angle.
+    worst: [f64; 4],
+    /// Samples compared.
+    compared: usize,
+    /// Typed errors where the reference assembles, within an edge's band.
+    edge_errors: usize,
+    /// Samples the reference cannot assemble (all typed errors here).
+    outside: usize,
+    /// Samples whose rates have no digits to promise (see [`NO_DIGITS`]).
+    no_digits: usize,
+}
+
+/// A joint's position, velocity and acceleration, computed and reference,
+/// with each stage's largest reference vector in the sample.
+struct Stages {
+    got: [(f64, f64); 3],
+    reference: [V; 3],
+    scales: [f64; 3],
+}
+
+/// Above this first-order relative error the rates promise no digits (the
+/// first-order bound stops describing the error, which is no longer small):
+/// they are then checked finite only.
+const NO_DIGITS: f64 = 1e-2;
+
+impl Tally {
+    /// Adds a sample's three stages: position against `eps L / s`, the rates
+    /// against `eps spread L / s^k` (stage `k`), `spread` the largest
+    /// coordinate over the group's shortest link (what the positions'
+    /// rounding does to the links' directions).
+    fn compare(&mut self, st: &Stages, eps: f64, s: f64, spread: f64, what: &str) {
+        let err = |k: usize| dist(st.got[k], st.reference[k]);
+        self.add(0, err(0) / (eps * st.scales[0] / s), what);
+        if eps * spread / (s * s) > NO_DIGITS {
+            self.no_digits += 1;
+            assert!(
+                st.got.iter().all(|g| g.0.is_finite() && g.1.is_finite()),
+                "{what}: non-finite rates"
+            );
+            return;
+        }
+        self.add(1, err(1) / (eps * spread * st.scales[1] / (s * s)), what);
+        self.add(
+            2,
+            err(2) / (eps * spread * st.scales[2] / (s * s * s)),
+            what,
+        );
+    }
+
+    fn add(&mut self, k: usize, ratio: f64, what: &str) {
+        assert!(
+            ratio <= BOUND,
+            "{what}: {} error {ratio:.2} times its first-order bound (allowed {BOUND})",
+            ["position", "velocity", "acceleration", "angle"][k]
+        );
+        self.worst[k] = self.worst[k].max(ratio);
+    }
+}
+
+/// A value as `T` (rounded once for `f32`) and back: the generated code and
+/// the reference then see the same number.
+fn through<T: Real>(x: f64) -> f64 {
+    T::lit(x).as_f64()
+}
+
+/// A random length: a factor in [0.2, 5) times `scale`.
+fn length(rng: &mut Rng, scale: f64) -> f64 {
+    scale * rng.uniform(0.2, 5.0)
+}
+
+/// A random overall scale over six decades (1e-3 .. 1e3).
+fn scale(rng: &mut Rng) -> f64 {
+    10f64.powf(rng.uniform(-3.0, 3.0))
+}
+
+/// The crank's input: angle (rad), speed (rad/s), angular acceleration
+/// (rad/s^2), each rounded to `T`.
+fn drive<T: Real>(rng: &mut Rng) -> (f64, f64, f64) {
+    (
+        through::<T>(rng.uniform(-4.0, 4.0)),
+        through::<T>(rng.uniform(-300.0, 300.0)),
+        through::<T>(rng.uniform(-5e4, 5e4)),
+    )
+}
+
+/// How a run draws its samples.
+#[derive(Clone, Copy, PartialEq)]
+enum Draw {
+    /// Every dimension and the pose at random.
+    Free,
+    /// The pose at random and the group's lengths fitted to it, at a
+    /// relative distance of 1e-17 .. 1e-2 inside or outside an edge of
+    /// assembly (full extension, folding, tangency).
+    Edge,
+}
+
+/// A relative distance to an edge, `+-10^U(-17, -2)` (the smallest below
+/// `f64`'s rounding of the lengths: the band's both sides).
+fn edge_distance(rng: &mut Rng) -> f64 {
+    let d = 10f64.powf(rng.uniform(-17.0, -2.0));
+    if rng.next() & 1 == 0 {
+        d
+    } else {
+        -d
+    }
+}
+
+fn run_quad<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
+    let eps = T::eps().as_f64();
+    let mut rng = Rng(seed);
+    let mut tally = Tally::default();
+    for n in 0..samples {
+        let sc = scale(&mut rng);
+        let mut dims = [
+            length(&mut rng, sc),
+            length(&mut rng, sc) * rng.uniform(-1.0, 1.0),
+            length(&mut rng, sc),
+            length(&mut rng, sc),
+            length(&mut rng, sc),
+        ];
+        let (q, w, al) = drive::<T>(&mut rng);
+        if draw == Draw::Edge {
+            // |A - Q| at this pose (f64: the edge is approached to about
+            // 1e-16, the f32 runs' band is far wider), then b and c that
+            // reach it to the drawn relative distance: b + c (stretched)
+            // or |b - c| (folded).
+            let [gx, gy, a, _, _] = dims.map(through::<T>);
+            let span = ((gx - a * q.cos()).powi(2) + (gy - a * q.sin()).powi(2)).sqrt();
+            let f = rng.uniform(0.2, 0.8);
+            let at = span * (1.0 + edge_distance(&mut rng));
+            if rng.next() & 1 == 0 {
+                dims[3] = f * at;
+                dims[4] = (1.0 - f) * at;
+            } else {
+                dims[3] = at / (1.0 - f);
+                dims[4] = dims[3] - at;
+            }
+        }
+        let [gx, gy, a, b, c] = dims.map(through::<T>);
+        let m = Quad::<T> {
+            gx: T::lit(gx),
+            gy: T::lit(gy),
+            a: T::lit(a),
+            b: T::lit(b),
+            c: T::lit(c),
+            ..Default::default()
+        };
+        let lit = |x: f64| T::lit(x);
+        let got = m.solve(
+            &QuadInput { theta: lit(q) },
+            &QuadInput { theta: lit(w) },
+            &QuadInput { theta: lit(al) },
+        );
+        // The reference, in double-double at the same (rounded) numbers.
+        let o = vd(0.0, 0.0);
+        let qq = vd(gx, gy);
+        let (pa, va, aa) = refg::crank(o, a, q, w, al);
+        let span = norm(refg::sub(qq, pa));
+        let what = format!("Quad {n}: gx {gx:e} gy {gy:e} a {a:e} b {b:e} c {c:e} theta {q}");
+        // The band of `rrr::position` on |A - Q| about either edge (8 eps
+        // (b + c)), widened by the rounding of A's coordinates (a few eps of
+        // the largest coordinate).
+        let size = [gx.abs(), gy.abs(), a, b, c]
+            .into_iter()
+            .fold(0.0, f64::max);
+        let band = 8.0 * eps * (b + c) + 8.0 * eps * size;
+        let near_edge = (span - (b + c)).abs() <= band || (span - (b - c).abs()).abs() <= band;
+        let Some(pb) = refg::rrr_position(pa, b, qq, c, true) else {
+            tally.outside += 1;
+            match got {
+                Err(Error { group: "B", .. }) => {}
+                Err(e) => {
+                    panic!("{what}: the reference does not assemble; error in the wrong group: {e}")
+                }
+                Ok(_) => assert!(
+                    near_edge,
+                    "{what}: Ok where the reference does not assemble"
+                ),
+            }
+            continue;
+        };
+        let (r1, r2) = (refg::sub(pb, pa), refg::sub(pb, qq));
+        let s = (refg::cross(r1, r2).to_f64() / (b * c)).abs();
+        let s_tiny = s <= 1e3 * eps;
+        let s = s.max(f64::MIN_POSITIVE);
+        let sol = match got {
+            Ok(sol) => sol,
+            Err(e) => {
+                // A typed error inside the assembly: only within the band of
+                // an edge (position) or at a toggle (velocity: `Singular`).
+                assert_eq!(e.group, "B", "{what}: {e}");
+                assert!(
+                    near_edge || (s_tiny && matches!(e.fault, Fault::Singular { .. })),
+                    "{what}: the reference assembles (condition {s:e}) but: {e}"
+                );
+                tally.edge_errors += 1;
+                continue;
+            }
+        };
+        tally.compared += 1;
+        let (w1, w2) = refg::rrr_rates(pa, qq, pb, va, vd(0.0, 0.0)).expect("rates");
+        let vb = refg::add(va, refg::scale(w1, refg::perp(r1)));
+        let (a1, _) =
+            refg::rrr_accelerations(pa, qq, pb, aa, vd(0.0, 0.0), w1, w2).expect("accelerations");
+        let ab = refg::sub(
+            refg::add(aa, refg::scale(a1, refg::perp(r1))),
+            refg::scale(w1.sqr(), r1),
+        );
+        let l_pos = [norm(pa), norm(qq), norm(pb), a, b, c]
+            .into_iter()
+            .fold(0.0, f64::max);
+        let l_vel = norm(va).max(norm(vb));
+        let l_acc = [
+            norm(aa),
+            norm(ab),
+            w1.sqr().to_f64() * b,
+            w2.sqr().to_f64() * c,
+        ]
+        .into_iter()
+        .fold(0.0, f64::max);
+        // The rates see the links' directions, known to the positions'
+        // rounding (eps l_pos) over the shorter link's length.
+        let spread = l_pos / b.min(c);
+        let p = &sol.position;
+        let (v, ac) = (&sol.velocity, &sol.acceleration);
+        let stages = Stages {
+            got: [
+                (p.B.x.as_f64(), p.B.y.as_f64()),
+                (v.B.x.as_f64(), v.B.y.as_f64()),
+                (ac.B.x.as_f64(), ac.B.y.as_f64()),
+            ],
+            reference: [pb, vb, ab],
+            scales: [l_pos, l_vel, l_acc],
+        };
+        tally.compare(&stages, eps, s, spread, &what);
+        // A link's angle moves by the error of its vector over its length.
+        let t3 = Dd::atan2(r1[1], r1[0]);
+        let t4 = Dd::atan2(r2[1], r2[0]);
+        let e3 = angle_error(p.coupler.as_f64(), t3) / (eps * l_pos / (b * s));
+        let e4 = angle_error(p.rocker.as_f64(), t4) / (eps * l_pos / (c * s));
+        tally.add(3, e3.max(e4), &what);
+    }
+    tally
+}
+
+fn run_slide<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
+    let eps = T::eps().as_f64();
+    let mut rng = Rng(seed);
+    let mut tally = Tally::default();
+    for n in 0..samples {
+        let sc = scale(&mut rng);
+        let a = through::<T>(length(&mut rng, sc));
+        let mut l = through::<T>(length(&mut rng, sc));
+        let e = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
+        let tilt = through::<T>(rng.uniform(-3.2, 3.2));
+        let (q, w, al) = drive::<T>(&mut rng);
+        if draw == Draw::Edge {
+            // The rod as long as A's distance from the line, to the drawn
+            // relative distance (tangency).
+            let k = (e - a * q.sin()) * tilt.cos() + a * q.cos() * tilt.sin();
+            l = through::<T>(k.abs() * (1.0 + edge_distance(&mut rng)));
+        }
+        let m = Slide::<T> {
+            a: T::lit(a),
+            l: T::lit(l),
+            e: T::lit(e),
+            tilt: T::lit(tilt),
+            ..Default::default()
+        };
+        let lit = |x: f64| T::lit(x);
+        let got = m.solve(
+            &SlideInput { theta: lit(q) },
+            &SlideInput { theta: lit(w) },
+            &SlideInput { theta: lit(al) },
+        );
+        // The guide's direction as the generated code has it (cos, sin of
+        // the rounded tilt, rounded to T): the reference takes that exact
+        // line, so the comparison is of the group, not of the guide's
+        // trigonometry (whose own rounding is the input's).
+        let (st, ct) = T::lit(tilt).sin_cos_kernel();
+        let line = refg::Line::new([0.0, e], [ct.as_f64(), st.as_f64()]);
+        let o = vd(0.0, 0.0);
+        let (pa, va, aa) = refg::crank(o, a, q, w, al);
+        let what = format!("Slide {n}: a {a:e} l {l:e} e {e:e} tilt {tilt} theta {q}");
+        let p_rel = refg::sub(pa, line.origin);
+        let k = refg::dot(p_rel, refg::perp(line.dir)).to_f64().abs();
+        let size = [a, l, e.abs()].into_iter().fold(0.0, f64::max);
+        // The band of `rrp::position` on the distance of A from the line
+        // (a few eps of l), widened by A's and the guide's rounding.
+        let near_edge = (k - l).abs() <= 8.0 * eps * l + 8.0 * eps * size;
+        let Some((pb, _)) = refg::rrp_position(pa, l, &line, 0.0, true) else {
+            tally.outside += 1;
+            match got {
+                Err(Error { group: "B", .. }) => {}
+                Err(e) => panic!("{what}: error in the wrong group: {e}"),
+                Ok(_) => assert!(
+                    near_edge,
+                    "{what}: Ok where the reference does not assemble"
+                ),
+            }
+            continue;
+        };
+        let r1 = refg::sub(pb, pa);
+        let s = (refg::dot(r1, line.dir).to_f64() / l).abs();
+        let s_tiny = s <= 1e3 * eps;
+        let s = s.max(f64::MIN_POSITIVE);
+        let sol = match got {
+            Ok(sol) => sol,
+            Err(err) => {
+                assert_eq!(err.group, "B", "{what}: {err}");
+                assert!(
+                    near_edge || (s_tiny && matches!(err.fault, Fault::Singular { .. })),
+                    "{what}: the reference assembles (condition {s:e}) but: {err}"
+                );
+                tally.edge_errors += 1;
+                continue;
+            }
+        };
+        tally.compared += 1;
+        let (w1, sd) = refg::rrp_rates(pa, pb, &line, va).expect("rates");
+        let vb = refg::scale(sd, line.dir);
+        let (_, sdd) = refg::rrp_accelerations(pa, pb, &line, aa, w1).expect("accelerations");
+        let ab = refg::scale(sdd, line.dir);
+        let l_pos = [norm(pa), norm(pb), a, l, e.abs()]
+            .into_iter()
+            .fold(0.0, f64::max);
+        let l_vel = norm(va).max(norm(vb));
+        let l_acc = [norm(aa), norm(ab), w1.sqr().to_f64() * l]
+            .into_iter()
+            .fold(0.0, f64::max);
+        // The rod's direction is known to the positions' rounding over its
+        // length (the guide's direction is exact for the reference).
+        let spread = l_pos / l;
+        let p = &sol.position;
+        let (v, ac) = (&sol.velocity, &sol.acceleration);
+        let stages = Stages {
+            got: [
+                (p.B.x.as_f64(), p.B.y.as_f64()),
+                (v.B.x.as_f64(), v.B.y.as_f64()),
+                (ac.B.x.as_f64(), ac.B.y.as_f64()),
+            ],
+            reference: [pb, vb, ab],
+            scales: [l_pos, l_vel, l_acc],
+        };
+        tally.compare(&stages, eps, s, spread, &what);
+        let t = Dd::atan2(r1[1], r1[0]);
+        tally.add(
+            3,
+            angle_error(p.rod.as_f64(), t) / (eps * l_pos / (l * s)),
+            &what,
+        );
+    }
+    tally
+}
+
+/// Enough samples that each run meets its edges (about a tenth of the poses
+/// do not assemble) in a few seconds of a debug build.
+const SAMPLES: usize = 20_000;
+
+/// Prints a run at the edges; it must have met typed errors inside the
+/// rounding band as well as poses on both sides of it.
+fn edge_report(name: &str, t: &Tally) {
+    println!(
+        "{name}: {} compared ({} with rates of no digits), {} outside the assembly, {} typed errors at an edge; worst error / bound: position {:.2}, velocity {:.2}, acceleration {:.2}, angles {:.2}",
+        t.compared, t.no_digits, t.outside, t.edge_errors, t.worst[0], t.worst[1], t.worst[2], t.worst[3]
+    );
+    assert!(
+        t.compared > SAMPLES / 4 && t.outside > SAMPLES / 4,
+        "{name}: {t:?}"
+    );
+    assert!(
+        t.edge_errors > 0,
+        "{name}: no typed error at an edge: {t:?}"
+    );
+}
+
+fn report(name: &str, t: &Tally) {
+    println!(
+        "{name}: {} compared ({} with rates of no digits), {} outside the assembly, {} typed errors at an edge; worst error / bound: position {:.2}, velocity {:.2}, acceleration {:.2}, angles {:.2}",
+        t.compared, t.no_digits, t.outside, t.edge_errors, t.worst[0], t.worst[1], t.worst[2], t.worst[3]
+    );
+    // The run must have compared most samples and met edges, or it tests
+    // little.
+    assert!(t.compared > SAMPLES / 2, "{name}: {t:?}");
+    assert!(t.outside > 0, "{name}: no pose outside the assembly: {t:?}");
+}
+
+#[test]
+fn random_four_bars_f64() {
+    report("Quad f64", &run_quad::<f64>(SAMPLES, 1, Draw::Free));
+}
+
+#[test]
+fn random_four_bars_f32() {
+    report("Quad f32", &run_quad::<f32>(SAMPLES, 2, Draw::Free));
+}
+
+#[test]
+fn random_slider_cranks_f64() {
+    report("Slide f64", &run_slide::<f64>(SAMPLES, 3, Draw::Free));
+}
+
+#[test]
+fn random_slider_cranks_f32() {
+    report("Slide f32", &run_slide::<f32>(SAMPLES, 4, Draw::Free));
+}
+
+#[test]
+fn four_bars_at_the_edges_f64() {
+    edge_report("Quad edge f64", &run_quad::<f64>(SAMPLES, 5, Draw::Edge));
+}
+
+#[test]
+fn four_bars_at_the_edges_f32() {
+    edge_report("Quad edge f32", &run_quad::<f32>(SAMPLES, 6, Draw::Edge));
+}
+
+#[test]
+fn slider_cranks_at_tangency_f64() {
+    edge_report("Slide edge f64", &run_slide::<f64>(SAMPLES, 7, Draw::Edge));
+}
+
+#[test]
+fn slider_cranks_at_tangency_f32() {
+    edge_report("Slide edge f32", &run_slide::<f32>(SAMPLES, 8, Draw::Edge));
+}
