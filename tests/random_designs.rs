@@ -1,5 +1,6 @@
-//! Random designs: the dimensions of a four-bar and of an offset
-//! slider-crank on a tilted guide drawn at random (run-time `params`, lengths
+//! Random designs: the dimensions of a four-bar (RRR), of an offset
+//! slider-crank on a tilted guide (RRP) and of an inverted slider-crank whose
+//! block slides on a rocker with an offset slide line (RPR) drawn at random (run-time `params`, lengths
 //! over six decades of scale), each at a random pose, speed and angular
 //! acceleration of the crank, as a user sweeping or optimizing designs would
 //! run them, in `f64` and in `f32`, against the double-double group
@@ -12,7 +13,8 @@
 //! `eps (L_pos / l_min) L / s^k` for the velocity (`k = 2`) and the
 //! acceleration (`k = 3`). `L` is the stage's largest reference vector in the
 //! sample, `s` the group's condition (`|sin|` of the angle between the RRR's
-//! links at `B`; `|cos|` of the rod's angle to the guide for the RRP), and
+//! links at `B`; `|cos|` of the rod's angle to the guide for the RRP;
+//! `min(|s| / |A - P|, |A - P| / size)` for the RPR), and
 //! `L_pos / l_min` the largest coordinate over the group's shortest link: the
 //! positions are known to eps of their coordinates, so a link's direction
 //! only to `eps L_pos / l`, which the rates inherit (`docs/stability.md`,
@@ -58,6 +60,19 @@ mechanism! {
         let line = guide((0.0, e), tilt);
         let A = crank(O, a, theta) as crank_link;
         let B = rrp(A, l, line, plus) as (rod, block) slide s;
+    }
+}
+
+mechanism! {
+    /// A crank `a` about the origin whose tip `A` carries a block sliding on
+    /// a rocker pivoted at `P = (px, py)`, the slide line `e` to the left of
+    /// the pivot (an inverted slider-crank, a quick-return's core).
+    pub Swing {
+        params { px = 0.0, py = -0.3, a = 0.1, e = 0.02 }
+        let O = ground(0.0, 0.0);
+        let P = ground(px, py);
+        let A = crank(O, a, theta) as crank_link;
+        let s = rpr(A, P, plus, e) as (block, rocker);
     }
 }
 
@@ -467,6 +482,125 @@ fn run_slide<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
     tally
 }
 
+fn run_swing<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
+    let eps = T::eps().as_f64();
+    let mut rng = Rng(seed);
+    let mut tally = Tally::default();
+    for n in 0..samples {
+        let sc = scale(&mut rng);
+        let a = through::<T>(length(&mut rng, sc));
+        let px = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
+        let py = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
+        let mut e = through::<T>(length(&mut rng, sc) * rng.uniform(-0.5, 0.5));
+        let (q, w, al) = drive::<T>(&mut rng);
+        if draw == Draw::Edge {
+            // The offset as large as |A - P|, to the drawn relative distance
+            // (the slide line tangent to the circle through A about P).
+            let span = (a * q.cos() - px).hypot(a * q.sin() - py);
+            e = through::<T>(span * (1.0 + edge_distance(&mut rng)) * e.signum());
+        }
+        let m = Swing::<T> {
+            px: T::lit(px),
+            py: T::lit(py),
+            a: T::lit(a),
+            e: T::lit(e),
+            ..Default::default()
+        };
+        let lit = |x: f64| T::lit(x);
+        let got = m.solve(
+            &SwingInput { theta: lit(q) },
+            &SwingInput { theta: lit(w) },
+            &SwingInput { theta: lit(al) },
+        );
+        let (pa, va, aa) = refg::crank(vd(0.0, 0.0), a, q, w, al);
+        let pp = vd(px, py);
+        let pv = refg::sub(pa, pp);
+        let span = norm(pv);
+        let what = format!("Swing {n}: px {px:e} py {py:e} a {a:e} e {e:e} theta {q}");
+        let size = [px.abs(), py.abs(), a, e.abs()]
+            .into_iter()
+            .fold(0.0, f64::max);
+        let near_edge = (span - e.abs()).abs() <= 8.0 * eps * size;
+        let Some((u, sl)) = refg::rpr_position(pa, pp, e, true) else {
+            tally.outside += 1;
+            match got {
+                Err(Error { group: "s", .. }) => {}
+                Err(err) => panic!("{what}: error in the wrong group: {err}"),
+                Ok(_) => assert!(
+                    near_edge,
+                    "{what}: Ok where the reference does not assemble"
+                ),
+            }
+            continue;
+        };
+        // The condition of `docs/stability.md`: |s| / |A - P|, and at most
+        // |A - P| / size (the axis is known to eps size / |A - P|).
+        let kappa = (sl.to_f64().abs() / span).min(span / size);
+        let sol = match got {
+            Ok(sol) => sol,
+            Err(err) => {
+                assert_eq!(err.group, "s", "{what}: {err}");
+                assert!(
+                    near_edge
+                        || (kappa <= 1e3 * eps && matches!(err.fault, Fault::Singular { .. })),
+                    "{what}: the reference assembles (condition {kappa:e}) but: {err}"
+                );
+                tally.edge_errors += 1;
+                continue;
+            }
+        };
+        tally.compared += 1;
+        // Rates: s_dot u + omega perp(A - P) = vA; accelerations from its
+        // derivative, s_ddot u + alpha perp(A - P) = aA - s_dot omega
+        // perp(u) - omega perp(vA) (u turns at omega).
+        let (om, sd) = refg::rpr_rates(pa, pp, u, va, vd(0.0, 0.0)).expect("rates");
+        let rhs = refg::sub(
+            aa,
+            refg::add(
+                refg::scale(sd * om, refg::perp(u)),
+                refg::scale(om, refg::perp(va)),
+            ),
+        );
+        let (alpha, sdd) = refg::solve2(refg::perp(pv), u, rhs).expect("accelerations");
+        // Each stage as a vector of its two unknowns in one unit: the slide
+        // and the rocker's turn times |A - P| (position: the block's place
+        // along the rocker and across it).
+        let l_pos = [norm(pa), span, a, size].into_iter().fold(0.0, f64::max);
+        let turn = |x: Dd| (x * Dd::from(span)).to_f64();
+        let l_vel = [norm(va), sd.to_f64().abs(), turn(om).abs()]
+            .into_iter()
+            .fold(0.0, f64::max);
+        let l_acc = [
+            norm(aa),
+            (sd * om).to_f64().abs(),
+            turn(om * om).abs(),
+            sdd.to_f64().abs(),
+            turn(alpha).abs(),
+        ]
+        .into_iter()
+        .fold(0.0, f64::max);
+        let (p, v, ac) = (&sol.position, &sol.velocity, &sol.acceleration);
+        let t = Dd::atan2(u[1], u[0]);
+        let angle = angle_error(p.rocker.as_f64(), t);
+        let stages = Stages {
+            got: [
+                (p.s.as_f64(), 0.0),
+                (v.s.as_f64(), v.rocker.as_f64() * span),
+                (ac.s.as_f64(), ac.rocker.as_f64() * span),
+            ],
+            reference: [
+                [sl, Dd::from(angle * span)],
+                [sd, om * Dd::from(span)],
+                [sdd, alpha * Dd::from(span)],
+            ],
+            scales: [l_pos, l_vel, l_acc],
+        };
+        tally.compare(&stages, eps, kappa, l_pos / span, &what);
+        tally.add(3, angle / (eps * l_pos / (span * kappa)), &what);
+    }
+    tally
+}
+
 /// Enough samples that each run meets its edges (about a tenth of the poses
 /// do not assemble) in a few seconds of a debug build.
 const SAMPLES: usize = 20_000;
@@ -537,4 +671,24 @@ fn slider_cranks_at_tangency_f64() {
 #[test]
 fn slider_cranks_at_tangency_f32() {
     edge_report("Slide edge f32", &run_slide::<f32>(SAMPLES, 8, Draw::Edge));
+}
+
+#[test]
+fn random_swinging_blocks_f64() {
+    report("Swing f64", &run_swing::<f64>(SAMPLES, 9, Draw::Free));
+}
+
+#[test]
+fn random_swinging_blocks_f32() {
+    report("Swing f32", &run_swing::<f32>(SAMPLES, 10, Draw::Free));
+}
+
+#[test]
+fn swinging_blocks_at_the_edge_f64() {
+    edge_report("Swing edge f64", &run_swing::<f64>(SAMPLES, 11, Draw::Edge));
+}
+
+#[test]
+fn swinging_blocks_at_the_edge_f32() {
+    edge_report("Swing edge f32", &run_swing::<f32>(SAMPLES, 12, Draw::Edge));
 }
