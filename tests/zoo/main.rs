@@ -66,4 +66,5 @@ mod classic;
 mod common;
 mod floating;
 mod prismatic;
+mod probe3;
 mod revolute;
