@@ -51,6 +51,20 @@
 //!   non-zero; a pull along the rod, a force along the slot, a couple on the
 //!   rocker.
 //!
+//! Against the double-double reference's Newton-Euler and closed forms
+//! (`probe3.rs`, bounds `c eps S / kappa^k` justified there):
+//!
+//! - `KnucklePress`: crank -> RRR -> RRP toggle press, 100 kN on the ram,
+//!   swept by decades to 1.4e-12 rad of both toggles in f64 and f32: the
+//!   drive vanishes linearly, every column within 8 eps of its group's scale.
+//! - `SliderKnuckle`: the knuckle driven by its ram into the RRR's fold and
+//!   past it: reactions growing as `1 / sin` accurate to `eps S / sin^2`, a
+//!   typed error naming the group past the fold.
+//! - `Whitworth`: quick return with a ram, masses, gravity, a cutting force:
+//!   forces over a turn (f64, f32), masses 1e-6 .. 1e6 kg, lengths times
+//!   1e-6 and 1e6; the strokes' crank angles, time ratio and stroke against
+//!   their closed forms.
+//!
 //! Tolerances. Equilibrium and power: each residual is a sum of a handful of
 //! products of generated values, every value within a few eps times the
 //! conditioning of its linear system (the poses below keep the relative
@@ -66,4 +80,5 @@ mod classic;
 mod common;
 mod floating;
 mod prismatic;
+mod probe3;
 mod revolute;
