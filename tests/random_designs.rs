@@ -209,6 +209,56 @@ impl Tally {
         );
     }
 
+    /// A pose the reference cannot assemble: the generated code must return
+    /// a typed error naming `group`, or (within an edge's rounding band,
+    /// `near_edge`) a finite answer.
+    fn outside<T: Real, S>(
+        &mut self,
+        got: &Result<S, Error<T>>,
+        group: &str,
+        near_edge: bool,
+        what: &str,
+    ) {
+        self.outside += 1;
+        match got {
+            Err(e) => assert_eq!(e.group, group, "{what}: error in the wrong group: {e}"),
+            Ok(_) => assert!(
+                near_edge,
+                "{what}: Ok where the reference does not assemble"
+            ),
+        }
+    }
+
+    /// A pose the reference assembles, with the group's condition `kappa`:
+    /// the generated solution, or `None` after checking that its typed error
+    /// names `group` and lies within an edge's band (`near_edge`) or is
+    /// `Singular` where `kappa` is within rounding of zero.
+    fn inside<T: Real, S>(
+        &mut self,
+        got: Result<S, Error<T>>,
+        group: &str,
+        (near_edge, kappa): (bool, f64),
+        eps: f64,
+        what: &str,
+    ) -> Option<S> {
+        match got {
+            Ok(sol) => {
+                self.compared += 1;
+                Some(sol)
+            }
+            Err(e) => {
+                assert_eq!(e.group, group, "{what}: {e}");
+                let singular = kappa <= 1e3 * eps && matches!(e.fault, Fault::Singular { .. });
+                assert!(
+                    near_edge || singular,
+                    "{what}: the reference assembles (condition {kappa:e}) but: {e}"
+                );
+                self.edge_errors += 1;
+                None
+            }
+        }
+    }
+
     /// Records the kinematic ratio `k` (position, velocity, acceleration,
     /// angle) against [`BOUND`].
     fn add(&mut self, k: usize, ratio: f64, what: &str) {
@@ -335,38 +385,15 @@ fn run_quad<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         let band = 8.0 * eps * (b + c) + 8.0 * eps * size;
         let near_edge = (span - (b + c)).abs() <= band || (span - (b - c).abs()).abs() <= band;
         let Some(pb) = refg::rrr_position(pa, b, qq, c, true) else {
-            tally.outside += 1;
-            match got {
-                Err(Error { group: "B", .. }) => {}
-                Err(e) => {
-                    panic!("{what}: the reference does not assemble; error in the wrong group: {e}")
-                }
-                Ok(_) => assert!(
-                    near_edge,
-                    "{what}: Ok where the reference does not assemble"
-                ),
-            }
+            tally.outside(&got, "B", near_edge, &what);
             continue;
         };
         let (r1, r2) = (refg::sub(pb, pa), refg::sub(pb, qq));
         let s = (refg::cross(r1, r2).to_f64() / (b * c)).abs();
-        let s_tiny = s <= 1e3 * eps;
-        let s = s.max(f64::MIN_POSITIVE);
-        let sol = match got {
-            Ok(sol) => sol,
-            Err(e) => {
-                // A typed error inside the assembly: only within the band of
-                // an edge (position) or at a toggle (velocity: `Singular`).
-                assert_eq!(e.group, "B", "{what}: {e}");
-                assert!(
-                    near_edge || (s_tiny && matches!(e.fault, Fault::Singular { .. })),
-                    "{what}: the reference assembles (condition {s:e}) but: {e}"
-                );
-                tally.edge_errors += 1;
-                continue;
-            }
+        let Some(sol) = tally.inside(got, "B", (near_edge, s), eps, &what) else {
+            continue;
         };
-        tally.compared += 1;
+        let s = s.max(f64::MIN_POSITIVE);
         let (w1, w2) = refg::rrr_rates(pa, qq, pb, va, vd(0.0, 0.0)).expect("rates");
         let vb = refg::add(va, refg::scale(w1, refg::perp(r1)));
         let (a1, _) =
@@ -458,34 +485,15 @@ fn run_slide<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         // (a few eps of l), widened by A's and the guide's rounding.
         let near_edge = (k - l).abs() <= 8.0 * eps * l + 8.0 * eps * size;
         let Some((pb, _)) = refg::rrp_position(pa, l, &line, 0.0, true) else {
-            tally.outside += 1;
-            match got {
-                Err(Error { group: "B", .. }) => {}
-                Err(e) => panic!("{what}: error in the wrong group: {e}"),
-                Ok(_) => assert!(
-                    near_edge,
-                    "{what}: Ok where the reference does not assemble"
-                ),
-            }
+            tally.outside(&got, "B", near_edge, &what);
             continue;
         };
         let r1 = refg::sub(pb, pa);
         let s = (refg::dot(r1, line.dir).to_f64() / l).abs();
-        let s_tiny = s <= 1e3 * eps;
-        let s = s.max(f64::MIN_POSITIVE);
-        let sol = match got {
-            Ok(sol) => sol,
-            Err(err) => {
-                assert_eq!(err.group, "B", "{what}: {err}");
-                assert!(
-                    near_edge || (s_tiny && matches!(err.fault, Fault::Singular { .. })),
-                    "{what}: the reference assembles (condition {s:e}) but: {err}"
-                );
-                tally.edge_errors += 1;
-                continue;
-            }
+        let Some(sol) = tally.inside(got, "B", (near_edge, s), eps, &what) else {
+            continue;
         };
-        tally.compared += 1;
+        let s = s.max(f64::MIN_POSITIVE);
         let (w1, sd) = refg::rrp_rates(pa, pb, &line, va).expect("rates");
         let vb = refg::scale(sd, line.dir);
         let (_, sdd) = refg::rrp_accelerations(pa, pb, &line, aa, w1).expect("accelerations");
@@ -562,34 +570,15 @@ fn run_swing<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             .fold(0.0, f64::max);
         let near_edge = (span - e.abs()).abs() <= 8.0 * eps * size;
         let Some((u, sl)) = refg::rpr_position(pa, pp, e, true) else {
-            tally.outside += 1;
-            match got {
-                Err(Error { group: "s", .. }) => {}
-                Err(err) => panic!("{what}: error in the wrong group: {err}"),
-                Ok(_) => assert!(
-                    near_edge,
-                    "{what}: Ok where the reference does not assemble"
-                ),
-            }
+            tally.outside(&got, "s", near_edge, &what);
             continue;
         };
         // The condition of `docs/stability.md`: |s| / |A - P|, and at most
         // |A - P| / size (the axis is known to eps size / |A - P|).
         let kappa = (sl.to_f64().abs() / span).min(span / size);
-        let sol = match got {
-            Ok(sol) => sol,
-            Err(err) => {
-                assert_eq!(err.group, "s", "{what}: {err}");
-                assert!(
-                    near_edge
-                        || (kappa <= 1e3 * eps && matches!(err.fault, Fault::Singular { .. })),
-                    "{what}: the reference assembles (condition {kappa:e}) but: {err}"
-                );
-                tally.edge_errors += 1;
-                continue;
-            }
+        let Some(sol) = tally.inside(got, "s", (near_edge, kappa), eps, &what) else {
+            continue;
         };
-        tally.compared += 1;
         // Rates: s_dot u + omega perp(A - P) = vA; accelerations from its
         // derivative, s_ddot u + alpha perp(A - P) = aA - s_dot omega
         // perp(u) - omega perp(vA) (u turns at omega).
