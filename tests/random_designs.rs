@@ -37,7 +37,7 @@ use mechanism::{mechanism, Error, Fault, Real};
 use mechanism_reference::constraint::V2 as CV2;
 use mechanism_reference::groups::{self as refg, V};
 use mechanism_reference::newton_euler::{
-    solve_forces, Body, Driver, Joint, Link, Load, Pair, State, System,
+    solve_forces, Body, Driver, Joint, Link, Load, State, System,
 };
 use mechanism_reference::Dd;
 
@@ -798,28 +798,17 @@ fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         let accs: Vec<CV2> = [zero, zero, aa, ab, g2.2, g3.2, g4.2, pp.2]
             .map(cv)
             .to_vec();
-        let body = |mass: f64, com: usize, inertia: f64, turn: (usize, usize)| Body {
-            mass: Dd::from(mass),
-            com,
-            inertia: Dd::from(inertia),
-            turn: Some(turn),
-        };
-        let pin = |from: Link, to: Link, at: usize| Joint {
-            from,
-            to,
-            pair: Pair::Revolute { at },
-        };
         let system = System {
             bodies: vec![
-                body(m2, 4, j2, (0, 2)),
-                body(m3, 5, j3, (2, 3)),
-                body(m4, 6, j4, (1, 3)),
+                Body::new(m2, 4, j2, Some((0, 2))),
+                Body::new(m3, 5, j3, Some((2, 3))),
+                Body::new(m4, 6, j4, Some((1, 3))),
             ],
             joints: vec![
-                pin(Link::Ground, Link::Body(0), 0),
-                pin(Link::Body(0), Link::Body(1), 2),
-                pin(Link::Ground, Link::Body(2), 1),
-                pin(Link::Body(1), Link::Body(2), 3),
+                Joint::revolute(Link::Ground, Link::Body(0), 0),
+                Joint::revolute(Link::Body(0), Link::Body(1), 2),
+                Joint::revolute(Link::Ground, Link::Body(2), 1),
+                Joint::revolute(Link::Body(1), Link::Body(2), 3),
             ],
             drivers: vec![Driver::Torque { body: 0 }],
             loads: vec![

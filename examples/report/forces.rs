@@ -21,8 +21,7 @@ use mechanism::{mechanism, Real, Vector2};
 use mechanism_reference::constraint::{Constraint, Linkage, Point, Side, V2};
 use mechanism_reference::loop_closure::{acceleration, position, velocity};
 use mechanism_reference::newton_euler::{
-    solve_forces, Body, Direction, Driver, Joint, Link, Load, Pair, Reaction, Solution, State,
-    System,
+    solve_forces, Body, Direction, Driver, Joint, Link, Load, Reaction, Solution, State, System,
 };
 use mechanism_reference::Dd;
 use std::f64::consts::PI;
@@ -92,31 +91,6 @@ fn d(x: f64) -> Dd {
     Dd::from_f64(x)
 }
 
-fn pin(from: Link, to: Link, at: usize) -> Joint {
-    Joint {
-        from,
-        to,
-        pair: Pair::Revolute { at },
-    }
-}
-
-fn slide(from: Link, to: Link, dir: Direction, about: usize) -> Joint {
-    Joint {
-        from,
-        to,
-        pair: Pair::Prismatic { dir, about },
-    }
-}
-
-fn body(mass: f64, com: usize, inertia: f64, turn: Option<(usize, usize)>) -> Body {
-    Body {
-        mass: d(mass),
-        com,
-        inertia: d(inertia),
-        turn,
-    }
-}
-
 fn midpoint(p: &[V2], a: usize, b: usize) -> V2 {
     p[a].plus(p[b]).scale(d(0.5))
 }
@@ -177,15 +151,15 @@ fn scenes() -> Vec<ForceScene> {
             system: |_| System {
                 // 0 link1 (massless), 1 block2 (4 kg at B), 2 link3 (10 kg at Q).
                 bodies: vec![
-                    body(0.0, 0, 0.0, None),
-                    body(4.0, 1, 0.0, None),
-                    body(10.0, 2, 0.0, None),
+                    Body::new(0.0, 0, 0.0, None),
+                    Body::new(4.0, 1, 0.0, None),
+                    Body::new(10.0, 2, 0.0, None),
                 ],
                 joints: vec![
-                    pin(Ground, Bd(0), 0),
-                    pin(Bd(0), Bd(1), 1),
-                    slide(Bd(1), Bd(2), Direction::Fixed(V2::new(1.0, 0.0)), 1),
-                    slide(Ground, Bd(2), Direction::Fixed(V2::new(0.0, 1.0)), 1),
+                    Joint::revolute(Ground, Bd(0), 0),
+                    Joint::revolute(Bd(0), Bd(1), 1),
+                    Joint::prismatic(Bd(1), Bd(2), Direction::Fixed(V2::new(1.0, 0.0)), 1),
+                    Joint::prismatic(Ground, Bd(2), Direction::Fixed(V2::new(0.0, 1.0)), 1),
                 ],
                 drivers: vec![Driver::Torque { body: 0 }],
                 loads: vec![Load::Force {
@@ -246,20 +220,20 @@ fn scenes() -> Vec<ForceScene> {
             system: |cut| System {
                 // 0 link2, 1 block (massless), 2 link3, 3 link4, 4 ram_block.
                 bodies: vec![
-                    body(0.0, 0, 0.0, None),
-                    body(0.0, 4, 0.0, None),
-                    body(20.0, 7, 0.6, Some((1, 5))),
-                    body(3.0, 8, 0.005625, Some((5, 6))),
-                    body(60.0, 6, 0.0, None),
+                    Body::new(0.0, 0, 0.0, None),
+                    Body::new(0.0, 4, 0.0, None),
+                    Body::new(20.0, 7, 0.6, Some((1, 5))),
+                    Body::new(3.0, 8, 0.005625, Some((5, 6))),
+                    Body::new(60.0, 6, 0.0, None),
                 ],
                 joints: vec![
-                    pin(Ground, Bd(0), 0),
-                    pin(Bd(0), Bd(1), 4),
-                    slide(Bd(1), Bd(2), Direction::Segment(1, 4), 4),
-                    pin(Ground, Bd(2), 1),
-                    pin(Bd(2), Bd(3), 5),
-                    pin(Bd(3), Bd(4), 6),
-                    slide(Ground, Bd(4), Direction::Fixed(V2::new(-1.0, 0.0)), 6),
+                    Joint::revolute(Ground, Bd(0), 0),
+                    Joint::revolute(Bd(0), Bd(1), 4),
+                    Joint::prismatic(Bd(1), Bd(2), Direction::Segment(1, 4), 4),
+                    Joint::revolute(Ground, Bd(2), 1),
+                    Joint::revolute(Bd(2), Bd(3), 5),
+                    Joint::revolute(Bd(3), Bd(4), 6),
+                    Joint::prismatic(Ground, Bd(4), Direction::Fixed(V2::new(-1.0, 0.0)), 6),
                 ],
                 drivers: vec![Driver::Torque { body: 0 }],
                 // `force at E on ram_block along ram = cut`: cut times the
@@ -334,15 +308,15 @@ fn scenes() -> Vec<ForceScene> {
             system: |_| System {
                 // 0 link2 (massless), 1 link3, 2 link4.
                 bodies: vec![
-                    body(0.0, 0, 0.0, None),
-                    body(1.2, 4, 0.0065, Some((2, 3))),
-                    body(0.9, 5, 0.0024, Some((1, 3))),
+                    Body::new(0.0, 0, 0.0, None),
+                    Body::new(1.2, 4, 0.0065, Some((2, 3))),
+                    Body::new(0.9, 5, 0.0024, Some((1, 3))),
                 ],
                 joints: vec![
-                    pin(Ground, Bd(0), 0),
-                    pin(Bd(0), Bd(1), 2),
-                    pin(Ground, Bd(2), 1),
-                    pin(Bd(1), Bd(2), 3),
+                    Joint::revolute(Ground, Bd(0), 0),
+                    Joint::revolute(Bd(0), Bd(1), 2),
+                    Joint::revolute(Ground, Bd(2), 1),
+                    Joint::revolute(Bd(1), Bd(2), 3),
                 ],
                 drivers: vec![Driver::Torque { body: 0 }],
                 loads: vec![Load::Couple {

@@ -81,6 +81,21 @@ pub struct Body {
     pub turn: Option<(PointId, PointId)>,
 }
 
+impl Body {
+    /// A body of `mass` (M) with its centre of mass at point `com`, moment of
+    /// inertia `inertia` (M L^2) about it, and the two points `turn` whose
+    /// segment gives its angular acceleration (`None`: it does not turn, or
+    /// `inertia` is zero); the numbers as given (exact in double-double).
+    pub fn new(mass: f64, com: PointId, inertia: f64, turn: Option<(PointId, PointId)>) -> Body {
+        Body {
+            mass: Dd::from_f64(mass),
+            com,
+            inertia: Dd::from_f64(inertia),
+            turn,
+        }
+    }
+}
+
 /// A direction in the plane (normalized by the solver).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Direction {
@@ -118,6 +133,27 @@ pub struct Joint {
     pub to: Link,
     /// The pair.
     pub pair: Pair,
+}
+
+impl Joint {
+    /// A pin at point `at`; the reaction is the force of `from` on `to`.
+    pub fn revolute(from: Link, to: Link, at: PointId) -> Joint {
+        Joint {
+            from,
+            to,
+            pair: Pair::Revolute { at },
+        }
+    }
+
+    /// A sliding pair along `dir`, its couple stated about point `about`;
+    /// the reaction is that of `from` on `to`.
+    pub fn prismatic(from: Link, to: Link, dir: Direction, about: PointId) -> Joint {
+        Joint {
+            from,
+            to,
+            pair: Pair::Prismatic { dir, about },
+        }
+    }
 }
 
 /// A driving effort (one unknown each), applied by the frame.

@@ -22,8 +22,7 @@ use mechanism::{mechanism, Error, Fault, Real};
 use mechanism_reference::constraint::{Constraint, Linkage, Point, Side, V2};
 use mechanism_reference::loop_closure;
 use mechanism_reference::newton_euler::{
-    solve_forces, Body, Direction, Driver, Joint, Link, Load, Pair, Reaction, Solution, State,
-    System,
+    solve_forces, Body, Direction, Driver, Joint, Link, Load, Reaction, Solution, State, System,
 };
 use mechanism_reference::Dd;
 
@@ -38,31 +37,6 @@ fn d(x: f64) -> Dd {
 
 fn fixed(x: f64, y: f64) -> Point {
     Point::Fixed(V2::new(x, y))
-}
-
-fn pin(from: Link, to: Link, at: usize) -> Joint {
-    Joint {
-        from,
-        to,
-        pair: Pair::Revolute { at },
-    }
-}
-
-fn slide(from: Link, to: Link, dir: Direction, about: usize) -> Joint {
-    Joint {
-        from,
-        to,
-        pair: Pair::Prismatic { dir, about },
-    }
-}
-
-fn body(mass: f64, com: usize, inertia: f64, turn: Option<(usize, usize)>) -> Body {
-    Body {
-        mass: d(mass),
-        com,
-        inertia: d(inertia),
-        turn,
-    }
 }
 
 fn len(v: V2) -> f64 {
@@ -292,20 +266,20 @@ impl Press {
     fn system(&self) -> System {
         System {
             bodies: vec![
-                body(0.0, 1, 0.0, None),
-                body(0.0, 0, 0.0, None),
-                body(0.0, 2, 0.0, None),
-                body(0.0, 3, 0.0, None),
-                body(0.0, 4, 0.0, None),
+                Body::new(0.0, 1, 0.0, None),
+                Body::new(0.0, 0, 0.0, None),
+                Body::new(0.0, 2, 0.0, None),
+                Body::new(0.0, 3, 0.0, None),
+                Body::new(0.0, 4, 0.0, None),
             ],
             joints: vec![
-                pin(Ground, Bd(0), 1),
-                pin(Bd(0), Bd(2), 2),
-                pin(Ground, Bd(1), 0),
-                pin(Bd(1), Bd(2), 3),
-                pin(Bd(1), Bd(3), 3),
-                pin(Bd(3), Bd(4), 4),
-                slide(Ground, Bd(4), Direction::Fixed(V2::new(0.0, -1.0)), 4),
+                Joint::revolute(Ground, Bd(0), 1),
+                Joint::revolute(Bd(0), Bd(2), 2),
+                Joint::revolute(Ground, Bd(1), 0),
+                Joint::revolute(Bd(1), Bd(2), 3),
+                Joint::revolute(Bd(1), Bd(3), 3),
+                Joint::revolute(Bd(3), Bd(4), 4),
+                Joint::prismatic(Ground, Bd(4), Direction::Fixed(V2::new(0.0, -1.0)), 4),
             ],
             drivers: vec![Driver::Torque { body: 0 }],
             loads: vec![Load::Force {
@@ -600,15 +574,15 @@ fn knuckle_ref(s: f64, rnd: fn(f64) -> f64) -> Option<(Vec<Dd>, f64)> {
     let dir = Direction::Fixed(V2::new(0.0, -1.0));
     let sys = System {
         bodies: vec![
-            body(0.0, 0, 0.0, None),
-            body(0.0, 1, 0.0, None),
-            body(0.0, 1, 0.0, None),
+            Body::new(0.0, 0, 0.0, None),
+            Body::new(0.0, 1, 0.0, None),
+            Body::new(0.0, 1, 0.0, None),
         ],
         joints: vec![
-            slide(Ground, Bd(2), dir, 1),
-            pin(Ground, Bd(0), 0),
-            pin(Bd(2), Bd(1), 1),
-            pin(Bd(0), Bd(1), 2),
+            Joint::prismatic(Ground, Bd(2), dir, 1),
+            Joint::revolute(Ground, Bd(0), 0),
+            Joint::revolute(Bd(2), Bd(1), 1),
+            Joint::revolute(Bd(0), Bd(1), 2),
         ],
         drivers: vec![Driver::Force {
             body: 2,
@@ -907,20 +881,20 @@ impl Ww {
         let (m, j) = (self.m, self.j);
         System {
             bodies: vec![
-                body(m[0], 6, j[0], Some((0, 3))),
-                body(m[1], 3, 0.0, None),
-                body(m[2], 7, j[1], Some((1, 3))),
-                body(m[3], 8, j[2], Some((4, 5))),
-                body(m[4], 5, 0.0, None),
+                Body::new(m[0], 6, j[0], Some((0, 3))),
+                Body::new(m[1], 3, 0.0, None),
+                Body::new(m[2], 7, j[1], Some((1, 3))),
+                Body::new(m[3], 8, j[2], Some((4, 5))),
+                Body::new(m[4], 5, 0.0, None),
             ],
             joints: vec![
-                pin(Ground, Bd(0), 0),
-                pin(Bd(0), Bd(1), 3),
-                slide(Bd(1), Bd(2), Direction::Segment(1, 3), 3),
-                pin(Ground, Bd(2), 1),
-                pin(Bd(2), Bd(3), 4),
-                pin(Bd(3), Bd(4), 5),
-                slide(Ground, Bd(4), Direction::Fixed(V2::new(1.0, 0.0)), 5),
+                Joint::revolute(Ground, Bd(0), 0),
+                Joint::revolute(Bd(0), Bd(1), 3),
+                Joint::prismatic(Bd(1), Bd(2), Direction::Segment(1, 3), 3),
+                Joint::revolute(Ground, Bd(2), 1),
+                Joint::revolute(Bd(2), Bd(3), 4),
+                Joint::revolute(Bd(3), Bd(4), 5),
+                Joint::prismatic(Ground, Bd(4), Direction::Fixed(V2::new(1.0, 0.0)), 5),
             ],
             drivers: vec![Driver::Torque { body: 0 }],
             loads: vec![Load::Force {
@@ -1044,11 +1018,11 @@ fn ww_sweep<T: Real>(
                 .abs()
         };
         let al_max = alpha(0, 3).max(alpha(1, 3)).max(alpha(4, 5));
-        let body = |k: usize, j: f64, l: f64| wr.m[k] * (a_max + 9.81) + j * al_max / l;
+        let scale_of = |k: usize, j: f64, l: f64| wr.m[k] * (a_max + 9.81) + j * al_max / l;
         let loads = [
-            body(0, wr.j[0], wr.r),
-            body(1, 0.0, 1.0).max(body(2, wr.j[1], wr.arm)),
-            body(3, wr.j[2], wr.rod).max(body(4, 0.0, 1.0)),
+            scale_of(0, wr.j[0], wr.r),
+            scale_of(1, 0.0, 1.0).max(scale_of(2, wr.j[1], wr.arm)),
+            scale_of(3, wr.j[2], wr.rod).max(scale_of(4, 0.0, 1.0)),
         ];
         let wq = worst_ratio(&WW_COLS[..17], &gen, &refc, (length, &loads), eps, kappa);
         if std::env::var("WW_TRACE").is_ok() && wq.0 > 20.0 {
