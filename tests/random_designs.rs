@@ -33,7 +33,7 @@
 //!
 //! `cargo test --test random_designs -- --nocapture` prints the figures.
 
-use mechanism::{mechanism, Error, Fault, Real};
+use mechanism::{mechanism, Error, Fault, Point2, Real, Vector2};
 use mechanism_reference::constraint::V2 as CV2;
 use mechanism_reference::groups::{self as refg, V};
 use mechanism_reference::newton_euler::{
@@ -178,6 +178,23 @@ struct Stages {
     got: [(f64, f64); 3],
     reference: [V; 3],
     scales: [f64; 3],
+}
+
+impl Stages {
+    /// A joint's computed position, velocity and acceleration against the
+    /// reference's, with the stages' scales.
+    fn of_joint<T: Real>(
+        (p, v, a): (&Point2<T>, &Vector2<T>, &Vector2<T>),
+        reference: [V; 3],
+        scales: [f64; 3],
+    ) -> Stages {
+        let pair = |x: T, y: T| (x.as_f64(), y.as_f64());
+        Stages {
+            got: [pair(p.x, p.y), pair(v.x, v.y), pair(a.x, a.y)],
+            reference,
+            scales,
+        }
+    }
 }
 
 /// Above this first-order relative error the rates promise no digits (the
@@ -418,16 +435,8 @@ fn run_quad<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         // rounding (eps l_pos) over the shorter link's length.
         let spread = l_pos / b.min(c);
         let p = &sol.position;
-        let (v, ac) = (&sol.velocity, &sol.acceleration);
-        let stages = Stages {
-            got: [
-                (p.B.x.as_f64(), p.B.y.as_f64()),
-                (v.B.x.as_f64(), v.B.y.as_f64()),
-                (ac.B.x.as_f64(), ac.B.y.as_f64()),
-            ],
-            reference: [pb, vb, ab],
-            scales: [l_pos, l_vel, l_acc],
-        };
+        let (v, ac) = (&sol.velocity.B, &sol.acceleration.B);
+        let stages = Stages::of_joint((&p.B, v, ac), [pb, vb, ab], [l_pos, l_vel, l_acc]);
         tally.compare(&stages, eps, s, spread, &what);
         // A link's angle moves by the error of its vector over its length.
         let t3 = Dd::atan2(r1[1], r1[0]);
@@ -509,16 +518,8 @@ fn run_slide<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         // length (the guide's direction is exact for the reference).
         let spread = l_pos / l;
         let p = &sol.position;
-        let (v, ac) = (&sol.velocity, &sol.acceleration);
-        let stages = Stages {
-            got: [
-                (p.B.x.as_f64(), p.B.y.as_f64()),
-                (v.B.x.as_f64(), v.B.y.as_f64()),
-                (ac.B.x.as_f64(), ac.B.y.as_f64()),
-            ],
-            reference: [pb, vb, ab],
-            scales: [l_pos, l_vel, l_acc],
-        };
+        let (v, ac) = (&sol.velocity.B, &sol.acceleration.B);
+        let stages = Stages::of_joint((&p.B, v, ac), [pb, vb, ab], [l_pos, l_vel, l_acc]);
         tally.compare(&stages, eps, s, spread, &what);
         let t = Dd::atan2(r1[1], r1[0]);
         tally.add(
