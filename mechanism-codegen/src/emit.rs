@@ -830,7 +830,11 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
                 /// (1 for a mechanism without groups). It tends to 0 towards a
                 /// toggle or dead-centre position, where the rates grow as
                 /// 1 / condition; below 16 eps the velocity analysis returns
-                /// `Singular` instead (see `docs/stability.md`).
+                /// `Singular` instead. End to end (from positions rounded to
+                /// eps of their coordinates `L`) the rates are accurate to
+                /// about `eps (L / l) / condition^2` of the largest of them,
+                /// `l` the group's shortest link (`docs/stability.md`, "End
+                /// to end").
                 pub condition: T,
                 #[doc(hidden)]
                 pub rates: #input_ty<T>,
