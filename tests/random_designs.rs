@@ -1,7 +1,8 @@
 //! Random designs: the dimensions of a four-bar (RRR), of an offset
 //! slider-crank on a tilted guide (RRP), of an inverted slider-crank whose
-//! block slides on a rocker with an offset slide line (RPR) and of two
-//! blocks joined on a turning line and a fixed guide (PRP) drawn at random (run-time `params`, lengths
+//! block slides on a rocker with an offset slide line (RPR), of two blocks
+//! joined on a turning line and a fixed guide (PRP) and of a Scotch yoke at
+//! any angle (RPP) drawn at random (run-time `params`, lengths
 //! over six decades of scale), each at a random pose, speed and angular
 //! acceleration of the crank, as a user sweeping or optimizing designs would
 //! run them, in `f64` and in `f32`, against the double-double group
@@ -16,7 +17,8 @@
 //! sample, `s` the group's condition (`|sin|` of the angle between the RRR's
 //! links at `B`; `|cos|` of the rod's angle to the guide for the RRP;
 //! `min(|s| / |A - P|, |A - P| / size)` for the RPR; `|sin|` of the angle
-//! between the guides for the PRP), and
+//! between the guides for the PRP; `|sin|` of the slot's angle to the guide
+//! for the RPP, whose rates carry it once per stage), and
 //! `L_pos / l_min` the largest coordinate over the group's shortest link: the
 //! positions are known to eps of their coordinates, so a link's direction
 //! only to `eps L_pos / l`, which the rates inherit (`docs/stability.md`,
@@ -126,6 +128,21 @@ mechanism! {
     }
 }
 
+mechanism! {
+    /// A Scotch yoke at any angle: the crank's pin `A` slides in a slot of
+    /// the yoke at `slot` (rad) to the yoke's guide through `(gx, gy)` at
+    /// `gangle`; the yoke's reference point `Q` runs `off` to the left of
+    /// the guide.
+    pub Yoke {
+        params { a = 0.1, gx = 0.0, gy = 0.0, gangle = 1.5, slot = 0.7, off = 0.0 }
+        let O = ground(0.0, 0.0);
+        let G = ground(gx, gy);
+        let line = guide(G, gangle);
+        let A = crank(O, a, theta) as crank_link;
+        let Q = rpp(A, line, slot, off) as (block, yoke) slide (s1, s2);
+    }
+}
+
 /// The largest error allowed, in units of the sample's first-order bound.
 /// The generated chain rounds about 8 times per stage at the stage's scale:
 /// the crank's tip (sine and cosine within 2 ulp, a product and a sum), the
@@ -195,6 +212,12 @@ struct Stages {
     got: [(f64, f64); 3],
     reference: [V; 3],
     scales: [f64; 3],
+    /// The power of the condition in each stage's bound: `[1, 2, 3]` where
+    /// the rate system is built from the positions (it inherits their
+    /// `1 / s`), `[1, 1, 1]` where its matrix is fixed by the guides (an
+    /// RPP's slot and guide: the rates see the positions only through the
+    /// right-hand side).
+    powers: [i32; 3],
 }
 
 impl Stages {
@@ -210,6 +233,7 @@ impl Stages {
             got: [pair(p.x, p.y), pair(v.x, v.y), pair(a.x, a.y)],
             reference,
             scales,
+            powers: [1, 2, 3],
         }
     }
 }
@@ -221,13 +245,15 @@ const NO_DIGITS: f64 = 1e-2;
 
 impl Tally {
     /// Adds a sample's three stages: position against `eps L / s`, the rates
-    /// against `eps spread L / s^k` (stage `k`), `spread` the largest
+    /// against `eps spread L / s^k` (stage `k`; the power as
+    /// [`Stages::powers`] gives it), `spread` the largest
     /// coordinate over the group's shortest link (what the positions'
     /// rounding does to the links' directions).
     fn compare(&mut self, st: &Stages, eps: f64, s: f64, spread: f64, what: &str) {
         let err = |k: usize| dist(st.got[k], st.reference[k]);
-        self.add(0, err(0) / (eps * st.scales[0] / s), what);
-        if eps * spread / (s * s) > NO_DIGITS {
+        let unit = |k: usize| eps * st.scales[k] / s.powi(st.powers[k]);
+        self.add(0, err(0) / unit(0), what);
+        if eps * spread / s.powi(st.powers[1]) > NO_DIGITS {
             self.no_digits += 1;
             assert!(
                 st.got.iter().all(|g| g.0.is_finite() && g.1.is_finite()),
@@ -235,12 +261,8 @@ impl Tally {
             );
             return;
         }
-        self.add(1, err(1) / (eps * spread * st.scales[1] / (s * s)), what);
-        self.add(
-            2,
-            err(2) / (eps * spread * st.scales[2] / (s * s * s)),
-            what,
-        );
+        self.add(1, err(1) / (spread * unit(1)), what);
+        self.add(2, err(2) / (spread * unit(2)), what);
     }
 
     /// A pose the reference cannot assemble: the generated code must return
@@ -641,6 +663,7 @@ fn run_swing<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
                 [sdd, alpha * Dd::from(span)],
             ],
             scales: [l_pos, l_vel, l_acc],
+            powers: [1, 2, 3],
         };
         tally.compare(&stages, eps, kappa, l_pos / span, &what);
         tally.add(3, angle / (eps * l_pos / (span * kappa)), &what);
@@ -747,6 +770,81 @@ fn run_cross<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         );
         // The guides' directions come from angles (eps each), not from
         // rounded points: no spread.
+        tally.compare(&stages, eps, kappa.max(f64::MIN_POSITIVE), 1.0, &what);
+    }
+    tally
+}
+
+fn run_yoke<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
+    let eps = T::eps().as_f64();
+    let mut rng = Rng(seed);
+    let mut tally = Tally::default();
+    for n in 0..samples {
+        let sc = scale(&mut rng);
+        let a = through::<T>(length(&mut rng, sc));
+        let gx = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
+        let gy = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
+        let off = through::<T>(length(&mut rng, sc) * rng.uniform(-0.5, 0.5));
+        let gangle = through::<T>(rng.uniform(-3.2, 3.2));
+        let slot = through::<T>(match draw {
+            Draw::Free => rng.uniform(-3.2, 3.2),
+            // The slot within 1e-17 .. 1e-2 rad of the guide's direction.
+            Draw::Edge => edge_distance(&mut rng),
+        });
+        let (q, w, al) = drive::<T>(&mut rng);
+        let m = Yoke::<T> {
+            a: T::lit(a),
+            gx: T::lit(gx),
+            gy: T::lit(gy),
+            gangle: T::lit(gangle),
+            slot: T::lit(slot),
+            off: T::lit(off),
+            ..Default::default()
+        };
+        let lit = |x: f64| T::lit(x);
+        let got = m.solve(
+            &YokeInput { theta: lit(q) },
+            &YokeInput { theta: lit(w) },
+            &YokeInput { theta: lit(al) },
+        );
+        let what = format!("Yoke {n}: a {a:e} guide ({gx:e}, {gy:e}) at {gangle}, slot {slot}, off {off:e}, theta {q}");
+        // A = G + s2 u + off perp(u) + s1 w, w the slot's direction
+        // (cos slot, sin slot) in the guide's frame; the yoke translates, so
+        // the same 2x2 system gives the rates and accelerations.
+        let (sg, cg) = Dd::from(gangle).sin_cos();
+        let u = [cg, sg];
+        let nu = refg::perp(u);
+        let (ss, cs) = Dd::from(slot).sin_cos();
+        let slot_dir = refg::add(refg::scale(cs, u), refg::scale(ss, nu));
+        let kappa = ss.to_f64().abs();
+        let (pa, va, aa) = refg::crank(vd(0.0, 0.0), a, q, w, al);
+        let base = refg::add(vd(gx, gy), refg::scale(Dd::from(off), nu));
+        let near_edge = kappa <= 8.0 * eps;
+        let Some((_, s2)) = refg::solve2(slot_dir, u, refg::sub(pa, base)) else {
+            tally.outside(&got, "Q", near_edge, &what);
+            continue;
+        };
+        let Some(sol) = tally.inside(got, "Q", (near_edge, kappa), eps, &what) else {
+            continue;
+        };
+        let (_, sd2) = refg::solve2(slot_dir, u, va).expect("rates");
+        let (_, sdd2) = refg::solve2(slot_dir, u, aa).expect("accelerations");
+        let pq = refg::add(base, refg::scale(s2, u));
+        let (vq, aq) = (refg::scale(sd2, u), refg::scale(sdd2, u));
+        let l_pos = [norm(pa), norm(pq), a, gx.abs(), gy.abs(), off.abs()]
+            .into_iter()
+            .fold(0.0, f64::max);
+        let stages = Stages {
+            powers: [1, 1, 1],
+            ..Stages::of_joint(
+                (&sol.position.Q, &sol.velocity.Q, &sol.acceleration.Q),
+                [pq, vq, aq],
+                [l_pos, norm(va).max(norm(vq)), norm(aa).max(norm(aq))],
+            )
+        };
+        // The slot and the guide keep their directions: the rates see the
+        // positions only through the crank's pin (no spread, and the
+        // condition once per stage).
         tally.compare(&stages, eps, kappa.max(f64::MIN_POSITIVE), 1.0, &what);
     }
     tally
@@ -1139,6 +1237,26 @@ fn crossing_guides_near_parallel_f64() {
 #[test]
 fn crossing_guides_near_parallel_f32() {
     edge_report("Cross edge f32", &run_cross::<f32>(SAMPLES, 18, Draw::Edge));
+}
+
+#[test]
+fn random_yokes_f64() {
+    report_run("Yoke f64", &run_yoke::<f64>(SAMPLES, 19, Draw::Free), false);
+}
+
+#[test]
+fn random_yokes_f32() {
+    report_run("Yoke f32", &run_yoke::<f32>(SAMPLES, 20, Draw::Free), false);
+}
+
+#[test]
+fn yokes_with_the_slot_near_the_guide_f64() {
+    edge_report("Yoke edge f64", &run_yoke::<f64>(SAMPLES, 21, Draw::Edge));
+}
+
+#[test]
+fn yokes_with_the_slot_near_the_guide_f32() {
+    edge_report("Yoke edge f32", &run_yoke::<f32>(SAMPLES, 22, Draw::Edge));
 }
 
 /// Fewer samples than the kinematics: each reference force solve assembles
