@@ -1,8 +1,8 @@
 //! Random designs: the dimensions of a four-bar (RRR), of an offset
 //! slider-crank on a tilted guide (RRP), of an inverted slider-crank whose
 //! block slides on a rocker with an offset slide line (RPR), of two blocks
-//! joined on a turning line and a fixed guide (PRP) and of a Scotch yoke at
-//! any angle (RPP) drawn at random (run-time `params`, lengths
+//! joined on a turning line and a fixed guide (PRP), of a Scotch yoke at
+//! any angle (RPP) and of a boom lifted by a linear actuator drawn at random (run-time `params`, lengths
 //! over six decades of scale), each at a random pose, speed and angular
 //! acceleration of the crank, as a user sweeping or optimizing designs would
 //! run them, in `f64` and in `f32`, against the double-double group
@@ -140,6 +140,18 @@ mechanism! {
         let line = guide(G, gangle);
         let A = crank(O, a, theta) as crank_link;
         let Q = rpp(A, line, slot, off) as (block, yoke) slide (s1, s2);
+    }
+}
+
+mechanism! {
+    /// A boom of length `r` about `A = (0, 0)` lifted by a cylinder from
+    /// `B = (bx, by)` whose length `len` is the input; the joint `C` on the
+    /// left of `A -> B`.
+    pub Boom {
+        params { r = 1.0, bx = 0.8, by = -0.3 }
+        let A = ground(0.0, 0.0);
+        let B = ground(bx, by);
+        let C = actuator(A, r, B, len, left) as (boom, cylinder);
     }
 }
 
@@ -850,6 +862,95 @@ fn run_yoke<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
     tally
 }
 
+fn run_boom<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
+    let eps = T::eps().as_f64();
+    let mut rng = Rng(seed);
+    let mut tally = Tally::default();
+    for n in 0..samples {
+        let sc = scale(&mut rng);
+        let r = through::<T>(length(&mut rng, sc));
+        let bx = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
+        let by = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
+        let span = bx.hypot(by);
+        let len = through::<T>(match draw {
+            Draw::Free => rng.uniform(0.0, 1.2) * (r + span),
+            // Within 1e-17 .. 1e-2 of full extension or of folding.
+            Draw::Edge => {
+                let edge = if rng.next() & 1 == 0 {
+                    r + span
+                } else {
+                    (r - span).abs()
+                };
+                edge * (1.0 + edge_distance(&mut rng))
+            }
+        });
+        // The cylinder's rate and acceleration, of the size the length
+        // changes by in 10 ms and 0.1 ms^2.
+        let len_dot = through::<T>(len * rng.uniform(-100.0, 100.0));
+        let len_ddot = through::<T>(len * rng.uniform(-1e4, 1e4));
+        let m = Boom::<T> {
+            r: T::lit(r),
+            bx: T::lit(bx),
+            by: T::lit(by),
+            ..Default::default()
+        };
+        let got = m.solve(
+            &BoomInput { len: T::lit(len) },
+            &BoomInput {
+                len: T::lit(len_dot),
+            },
+            &BoomInput {
+                len: T::lit(len_ddot),
+            },
+        );
+        let what = format!("Boom {n}: r {r:e} B ({bx:e}, {by:e}) len {len:e}");
+        let (pa, pb) = (vd(0.0, 0.0), vd(bx, by));
+        let size = [r, bx.abs(), by.abs(), len].into_iter().fold(0.0, f64::max);
+        let band = 8.0 * eps * (r + len) + 8.0 * eps * size;
+        let near_edge = (span - (r + len)).abs() <= band || (span - (r - len).abs()).abs() <= band;
+        let Some(pc) = refg::rrr_position(pa, r, pb, len, true) else {
+            tally.outside(&got, "C", near_edge, &what);
+            continue;
+        };
+        let (r1, r2) = (refg::sub(pc, pa), refg::sub(pc, pb));
+        let s = (refg::cross(r1, r2).to_f64() / (r * len)).abs();
+        let Some(sol) = tally.inside(got, "C", (near_edge, s), eps, &what) else {
+            continue;
+        };
+        // |C - A| = r and |C - B| = len, differentiated: r1 . vC = 0,
+        // r2 . vC = len len'; once more: r1 . aC = -|vC|^2,
+        // r2 . aC = len'^2 + len len'' - |vC|^2. As columns for `solve2`:
+        // x (r1.x, r2.x) + y (r1.y, r2.y) = rhs.
+        let (c0, c1) = ([r1[0], r2[0]], [r1[1], r2[1]]);
+        let (ld, ldd, l) = (Dd::from(len_dot), Dd::from(len_ddot), Dd::from(len));
+        let (vx, vy) = refg::solve2(c0, c1, [Dd::ZERO, l * ld]).expect("rates");
+        let vc = [vx, vy];
+        let v2 = refg::dot(vc, vc);
+        let (ax, ay) = refg::solve2(c0, c1, [-v2, ld.sqr() + l * ldd - v2]).expect("accelerations");
+        let ac = [ax, ay];
+        let l_pos = [norm(pc), size].into_iter().fold(0.0, f64::max);
+        let stages = Stages::of_joint(
+            (&sol.position.C, &sol.velocity.C, &sol.acceleration.C),
+            [pc, vc, ac],
+            [
+                l_pos,
+                norm(vc).max(len_dot.abs()),
+                [norm(ac), len_ddot.abs(), v2.to_f64() / r.min(len)]
+                    .into_iter()
+                    .fold(0.0, f64::max),
+            ],
+        );
+        tally.compare(
+            &stages,
+            eps,
+            s.max(f64::MIN_POSITIVE),
+            l_pos / r.min(len),
+            &what,
+        );
+    }
+    tally
+}
+
 /// The point `from + x e + y perp(e)` of a link whose axis is the unit `e`,
 /// with its velocity and acceleration for the link's `omega`, `alpha` (all
 /// double-double).
@@ -1257,6 +1358,26 @@ fn yokes_with_the_slot_near_the_guide_f64() {
 #[test]
 fn yokes_with_the_slot_near_the_guide_f32() {
     edge_report("Yoke edge f32", &run_yoke::<f32>(SAMPLES, 22, Draw::Edge));
+}
+
+#[test]
+fn random_booms_f64() {
+    report("Boom f64", &run_boom::<f64>(SAMPLES, 23, Draw::Free));
+}
+
+#[test]
+fn random_booms_f32() {
+    report("Boom f32", &run_boom::<f32>(SAMPLES, 24, Draw::Free));
+}
+
+#[test]
+fn booms_at_the_edges_f64() {
+    edge_report("Boom edge f64", &run_boom::<f64>(SAMPLES, 25, Draw::Edge));
+}
+
+#[test]
+fn booms_at_the_edges_f32() {
+    edge_report("Boom edge f32", &run_boom::<f32>(SAMPLES, 26, Draw::Edge));
 }
 
 /// Fewer samples than the kinematics: each reference force solve assembles
