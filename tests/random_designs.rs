@@ -394,18 +394,15 @@ fn edge_distance(rng: &mut Rng) -> f64 {
 
 fn run_quad<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
     let eps = T::eps().as_f64();
-    let mut rng = Rng(seed);
-    let mut tally = Tally::default();
-    for n in 0..samples {
-        let sc = scale(&mut rng);
+    draws(samples, seed, |rng, n, tally, sc| {
         let mut dims = [
-            length(&mut rng, sc),
-            length(&mut rng, sc) * rng.uniform(-1.0, 1.0),
-            length(&mut rng, sc),
-            length(&mut rng, sc),
-            length(&mut rng, sc),
+            length(rng, sc),
+            length(rng, sc) * rng.uniform(-1.0, 1.0),
+            length(rng, sc),
+            length(rng, sc),
+            length(rng, sc),
         ];
-        let (q, w, al) = drive::<T>(&mut rng);
+        let (q, w, al) = drive::<T>(rng);
         if draw == Draw::Edge {
             // |A - Q| at this pose (f64: the edge is approached to about
             // 1e-16, the f32 runs' band is far wider), then b and c that
@@ -414,7 +411,7 @@ fn run_quad<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             let [gx, gy, a, _, _] = dims.map(through::<T>);
             let span = ((gx - a * q.cos()).powi(2) + (gy - a * q.sin()).powi(2)).sqrt();
             let f = rng.uniform(0.2, 0.8);
-            let at = span * (1.0 + edge_distance(&mut rng));
+            let at = span * (1.0 + edge_distance(rng));
             if rng.next() & 1 == 0 {
                 dims[3] = f * at;
                 dims[4] = (1.0 - f) * at;
@@ -454,12 +451,12 @@ fn run_quad<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         let near_edge = (span - (b + c)).abs() <= band || (span - (b - c).abs()).abs() <= band;
         let Some(pb) = refg::rrr_position(pa, b, qq, c, true) else {
             tally.outside(&got, "B", near_edge, &what);
-            continue;
+            return;
         };
         let (r1, r2) = (refg::sub(pb, pa), refg::sub(pb, qq));
         let s = (refg::cross(r1, r2).to_f64() / (b * c)).abs();
         let Some(sol) = tally.inside(got, "B", (near_edge, s), eps, &what) else {
-            continue;
+            return;
         };
         let s = s.max(f64::MIN_POSITIVE);
         let (w1, w2) = refg::rrr_rates(pa, qq, pb, va, vd(0.0, 0.0)).expect("rates");
@@ -495,26 +492,22 @@ fn run_quad<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         let e3 = angle_error(p.coupler.as_f64(), t3) / (eps * l_pos / (b * s));
         let e4 = angle_error(p.rocker.as_f64(), t4) / (eps * l_pos / (c * s));
         tally.add(3, e3.max(e4), &what);
-    }
-    tally
+    })
 }
 
 fn run_slide<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
     let eps = T::eps().as_f64();
-    let mut rng = Rng(seed);
-    let mut tally = Tally::default();
-    for n in 0..samples {
-        let sc = scale(&mut rng);
-        let a = through::<T>(length(&mut rng, sc));
-        let mut l = through::<T>(length(&mut rng, sc));
-        let e = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
+    draws(samples, seed, |rng, n, tally, sc| {
+        let a = through::<T>(length(rng, sc));
+        let mut l = through::<T>(length(rng, sc));
+        let e = coordinate::<T>(rng, sc);
         let tilt = through::<T>(rng.uniform(-3.2, 3.2));
-        let (q, w, al) = drive::<T>(&mut rng);
+        let (q, w, al) = drive::<T>(rng);
         if draw == Draw::Edge {
             // The rod as long as A's distance from the line, to the drawn
             // relative distance (tangency).
             let k = (e - a * q.sin()) * tilt.cos() + a * q.cos() * tilt.sin();
-            l = through::<T>(k.abs() * (1.0 + edge_distance(&mut rng)));
+            l = through::<T>(k.abs() * (1.0 + edge_distance(rng)));
         }
         let m = Slide::<T> {
             a: T::lit(a),
@@ -546,12 +539,12 @@ fn run_slide<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         let near_edge = (k - l).abs() <= 8.0 * eps * l + 8.0 * eps * size;
         let Some((pb, _)) = refg::rrp_position(pa, l, &line, 0.0, true) else {
             tally.outside(&got, "B", near_edge, &what);
-            continue;
+            return;
         };
         let r1 = refg::sub(pb, pa);
         let s = (refg::dot(r1, line.dir).to_f64() / l).abs();
         let Some(sol) = tally.inside(got, "B", (near_edge, s), eps, &what) else {
-            continue;
+            return;
         };
         let s = s.max(f64::MIN_POSITIVE);
         let (w1, sd) = refg::rrp_rates(pa, pb, &line, va).expect("rates");
@@ -578,26 +571,22 @@ fn run_slide<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             angle_error(p.rod.as_f64(), t) / (eps * l_pos / (l * s)),
             &what,
         );
-    }
-    tally
+    })
 }
 
 fn run_swing<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
     let eps = T::eps().as_f64();
-    let mut rng = Rng(seed);
-    let mut tally = Tally::default();
-    for n in 0..samples {
-        let sc = scale(&mut rng);
-        let a = through::<T>(length(&mut rng, sc));
-        let px = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
-        let py = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
-        let mut e = through::<T>(length(&mut rng, sc) * rng.uniform(-0.5, 0.5));
-        let (q, w, al) = drive::<T>(&mut rng);
+    draws(samples, seed, |rng, n, tally, sc| {
+        let a = through::<T>(length(rng, sc));
+        let px = coordinate::<T>(rng, sc);
+        let py = coordinate::<T>(rng, sc);
+        let mut e = through::<T>(length(rng, sc) * rng.uniform(-0.5, 0.5));
+        let (q, w, al) = drive::<T>(rng);
         if draw == Draw::Edge {
             // The offset as large as |A - P|, to the drawn relative distance
             // (the slide line tangent to the circle through A about P).
             let span = (a * q.cos() - px).hypot(a * q.sin() - py);
-            e = through::<T>(span * (1.0 + edge_distance(&mut rng)) * e.signum());
+            e = through::<T>(span * (1.0 + edge_distance(rng)) * e.signum());
         }
         let m = Swing::<T> {
             px: T::lit(px),
@@ -623,13 +612,13 @@ fn run_swing<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         let near_edge = (span - e.abs()).abs() <= 8.0 * eps * size;
         let Some((u, sl)) = refg::rpr_position(pa, pp, e, true) else {
             tally.outside(&got, "s", near_edge, &what);
-            continue;
+            return;
         };
         // The condition of `docs/stability.md`: |s| / |A - P|, and at most
         // |A - P| / size (the axis is known to eps size / |A - P|).
         let kappa = (sl.to_f64().abs() / span).min(span / size);
         let Some(sol) = tally.inside(got, "s", (near_edge, kappa), eps, &what) else {
-            continue;
+            return;
         };
         // Rates: s_dot u + omega perp(A - P) = vA; accelerations from its
         // derivative, s_ddot u + alpha perp(A - P) = aA - s_dot omega
@@ -679,27 +668,23 @@ fn run_swing<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         };
         tally.compare(&stages, eps, kappa, l_pos / span, &what);
         tally.add(3, angle / (eps * l_pos / (span * kappa)), &what);
-    }
-    tally
+    })
 }
 
 fn run_cross<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
     let eps = T::eps().as_f64();
-    let mut rng = Rng(seed);
-    let mut tally = Tally::default();
-    for n in 0..samples {
-        let sc = scale(&mut rng);
-        let gx = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
-        let gy = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
+    draws(samples, seed, |rng, n, tally, sc| {
+        let gx = coordinate::<T>(rng, sc);
+        let gy = coordinate::<T>(rng, sc);
         let gangle = through::<T>(rng.uniform(-3.2, 3.2));
-        let o1 = through::<T>(length(&mut rng, sc) * rng.uniform(-0.5, 0.5));
-        let o2 = through::<T>(length(&mut rng, sc) * rng.uniform(-0.5, 0.5));
-        let (q, w, al) = drive::<T>(&mut rng);
+        let o1 = through::<T>(length(rng, sc) * rng.uniform(-0.5, 0.5));
+        let o2 = through::<T>(length(rng, sc) * rng.uniform(-0.5, 0.5));
+        let (q, w, al) = drive::<T>(rng);
         let mut tilt = through::<T>(rng.uniform(-3.2, 3.2));
         if draw == Draw::Edge {
             // The turning line within 1e-17 .. 1e-2 rad of parallel to the
             // fixed guide (the joint runs off towards infinity).
-            tilt = through::<T>(gangle - q + edge_distance(&mut rng));
+            tilt = through::<T>(gangle - q + edge_distance(rng));
         }
         let m = Cross::<T> {
             gx: T::lit(gx),
@@ -740,10 +725,10 @@ fn run_cross<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         let near_edge = kappa <= 8.0 * eps;
         let Some((pc, _, _)) = refg::prp_position(&g1, o1, &g2, o2) else {
             tally.outside(&got, "C", near_edge, &what);
-            continue;
+            return;
         };
         let Some(sol) = tally.inside(got, "C", (near_edge, kappa), eps, &what) else {
-            continue;
+            return;
         };
         // Rates: C - O = s1 u1 + o1 perp(u1) turns at w, so
         // s1' u1 - s2' u2 = -w perp(C - O); once more:
@@ -783,27 +768,23 @@ fn run_cross<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         // The guides' directions come from angles (eps each), not from
         // rounded points: no spread.
         tally.compare(&stages, eps, kappa.max(f64::MIN_POSITIVE), 1.0, &what);
-    }
-    tally
+    })
 }
 
 fn run_yoke<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
     let eps = T::eps().as_f64();
-    let mut rng = Rng(seed);
-    let mut tally = Tally::default();
-    for n in 0..samples {
-        let sc = scale(&mut rng);
-        let a = through::<T>(length(&mut rng, sc));
-        let gx = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
-        let gy = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
-        let off = through::<T>(length(&mut rng, sc) * rng.uniform(-0.5, 0.5));
+    draws(samples, seed, |rng, n, tally, sc| {
+        let a = through::<T>(length(rng, sc));
+        let gx = coordinate::<T>(rng, sc);
+        let gy = coordinate::<T>(rng, sc);
+        let off = through::<T>(length(rng, sc) * rng.uniform(-0.5, 0.5));
         let gangle = through::<T>(rng.uniform(-3.2, 3.2));
         let slot = through::<T>(match draw {
             Draw::Free => rng.uniform(-3.2, 3.2),
             // The slot within 1e-17 .. 1e-2 rad of the guide's direction.
-            Draw::Edge => edge_distance(&mut rng),
+            Draw::Edge => edge_distance(rng),
         });
-        let (q, w, al) = drive::<T>(&mut rng);
+        let (q, w, al) = drive::<T>(rng);
         let m = Yoke::<T> {
             a: T::lit(a),
             gx: T::lit(gx),
@@ -834,10 +815,10 @@ fn run_yoke<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         let near_edge = kappa <= 8.0 * eps;
         let Some((_, s2)) = refg::solve2(slot_dir, u, refg::sub(pa, base)) else {
             tally.outside(&got, "Q", near_edge, &what);
-            continue;
+            return;
         };
         let Some(sol) = tally.inside(got, "Q", (near_edge, kappa), eps, &what) else {
-            continue;
+            return;
         };
         let (_, sd2) = refg::solve2(slot_dir, u, va).expect("rates");
         let (_, sdd2) = refg::solve2(slot_dir, u, aa).expect("accelerations");
@@ -858,19 +839,15 @@ fn run_yoke<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         // positions only through the crank's pin (no spread, and the
         // condition once per stage).
         tally.compare(&stages, eps, kappa.max(f64::MIN_POSITIVE), 1.0, &what);
-    }
-    tally
+    })
 }
 
 fn run_boom<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
     let eps = T::eps().as_f64();
-    let mut rng = Rng(seed);
-    let mut tally = Tally::default();
-    for n in 0..samples {
-        let sc = scale(&mut rng);
-        let r = through::<T>(length(&mut rng, sc));
-        let bx = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
-        let by = through::<T>(length(&mut rng, sc) * rng.uniform(-1.0, 1.0));
+    draws(samples, seed, |rng, n, tally, sc| {
+        let r = through::<T>(length(rng, sc));
+        let bx = coordinate::<T>(rng, sc);
+        let by = coordinate::<T>(rng, sc);
         let span = bx.hypot(by);
         let len = through::<T>(match draw {
             Draw::Free => rng.uniform(0.0, 1.2) * (r + span),
@@ -881,7 +858,7 @@ fn run_boom<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
                 } else {
                     (r - span).abs()
                 };
-                edge * (1.0 + edge_distance(&mut rng))
+                edge * (1.0 + edge_distance(rng))
             }
         });
         // The cylinder's rate and acceleration, of the size the length
@@ -910,12 +887,12 @@ fn run_boom<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         let near_edge = (span - (r + len)).abs() <= band || (span - (r - len).abs()).abs() <= band;
         let Some(pc) = refg::rrr_position(pa, r, pb, len, true) else {
             tally.outside(&got, "C", near_edge, &what);
-            continue;
+            return;
         };
         let (r1, r2) = (refg::sub(pc, pa), refg::sub(pc, pb));
         let s = (refg::cross(r1, r2).to_f64() / (r * len)).abs();
         let Some(sol) = tally.inside(got, "C", (near_edge, s), eps, &what) else {
-            continue;
+            return;
         };
         // |C - A| = r and |C - B| = len, differentiated: r1 . vC = 0,
         // r2 . vC = len len'; once more: r1 . aC = -|vC|^2,
@@ -947,8 +924,30 @@ fn run_boom<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             l_pos / r.min(len),
             &what,
         );
+    })
+}
+
+/// Runs `sample` on `samples` draws from the generator seeded with `seed`:
+/// each call gets the generator, the draw's index, the tally and the draw's
+/// overall scale (see [`scale`]).
+fn draws(
+    samples: usize,
+    seed: u64,
+    mut sample: impl FnMut(&mut Rng, usize, &mut Tally, f64),
+) -> Tally {
+    let mut rng = Rng(seed);
+    let mut tally = Tally::default();
+    for n in 0..samples {
+        let sc = scale(&mut rng);
+        sample(&mut rng, n, &mut tally, sc);
     }
     tally
+}
+
+/// A random coordinate: `length` times a sign and factor in [-1, 1), rounded
+/// to `T`.
+fn coordinate<T: Real>(rng: &mut Rng, sc: f64) -> f64 {
+    through::<T>(length(rng, sc) * rng.uniform(-1.0, 1.0))
 }
 
 /// The point `from + x e + y perp(e)` of a link whose axis is the unit `e`,
@@ -990,44 +989,41 @@ fn cv(v: V) -> CV2 {
 fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
     let eps = T::eps().as_f64();
     let g = 9.81;
-    let mut rng = Rng(seed);
-    let mut tally = Tally::default();
-    for n in 0..samples {
-        let sc = scale(&mut rng);
+    draws(samples, seed, |rng, n, tally, sc| {
         let [gx, gy, a, b, c] = [
-            length(&mut rng, sc),
-            length(&mut rng, sc) * rng.uniform(-1.0, 1.0),
-            length(&mut rng, sc),
-            length(&mut rng, sc),
-            length(&mut rng, sc),
+            length(rng, sc),
+            length(rng, sc) * rng.uniform(-1.0, 1.0),
+            length(rng, sc),
+            length(rng, sc),
+            length(rng, sc),
         ]
         .map(through::<T>);
         let mass = |rng: &mut Rng| through::<T>(10f64.powf(rng.uniform(-3.0, 3.0)));
         let frac = |rng: &mut Rng, l: f64| through::<T>(l * rng.uniform(-0.5, 1.5));
-        let (m2, m3, m4) = (mass(&mut rng), mass(&mut rng), mass(&mut rng));
+        let (m2, m3, m4) = (mass(rng), mass(rng), mass(rng));
         let (u2, u3, v3, u4, v4) = (
-            frac(&mut rng, a),
-            frac(&mut rng, b),
-            frac(&mut rng, b) * 0.5,
-            frac(&mut rng, c),
-            frac(&mut rng, c) * 0.5,
+            frac(rng, a),
+            frac(rng, b),
+            frac(rng, b) * 0.5,
+            frac(rng, c),
+            frac(rng, c) * 0.5,
         );
         let inertia =
             |rng: &mut Rng, m: f64, l: f64| through::<T>(m * l * l * rng.uniform(0.01, 0.2));
         let (j2, j3, j4) = (
-            inertia(&mut rng, m2, a),
-            inertia(&mut rng, m3, b),
-            inertia(&mut rng, m4, c),
+            inertia(rng, m2, a),
+            inertia(rng, m3, b),
+            inertia(rng, m4, c),
         );
-        let (pu, pv) = (frac(&mut rng, b), frac(&mut rng, b) * 0.5);
-        let (q, w, al) = drive::<T>(&mut rng);
+        let (pu, pv) = (frac(rng, b), frac(rng, b) * 0.5);
+        let (q, w, al) = drive::<T>(rng);
         // The applied loads' size: the weights and a crank-driven inertia
         // load (m |a_A|), times 1e-2 .. 1e2.
         let typical = (m2 + m3 + m4) * (g + a * (w * w + al.abs()));
         let load = |rng: &mut Rng| {
             through::<T>(typical * 10f64.powf(rng.uniform(-2.0, 2.0)) * rng.uniform(-1.0, 1.0))
         };
-        let (fx, fy, t4) = (load(&mut rng), load(&mut rng), load(&mut rng) * c);
+        let (fx, fy, t4) = (load(rng), load(rng), load(rng) * c);
         let lit = |x: f64| T::lit(x);
         let m = QuadLoaded::<T> {
             gx: lit(gx),
@@ -1070,12 +1066,12 @@ fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
                 got.is_err(),
                 "{what}: Ok where the reference does not assemble"
             );
-            continue;
+            return;
         };
         let (r1, r2) = (refg::sub(pb, pa), refg::sub(pb, qq));
         let s = (refg::cross(r1, r2).to_f64() / (b * c)).abs();
         let Some((w3, w4)) = refg::rrr_rates(pa, qq, pb, va, vd(0.0, 0.0)) else {
-            continue;
+            return;
         };
         let (a3, a4) =
             refg::rrr_accelerations(pa, qq, pb, aa, vd(0.0, 0.0), w3, w4).expect("accelerations");
@@ -1092,7 +1088,7 @@ fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
                     "{what}: the reference assembles (sine {s:e}) but: {e}"
                 );
                 tally.edge_errors += 1;
-                continue;
+                return;
             }
         };
         tally.compared += 1;
@@ -1180,7 +1176,7 @@ fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         }
         if eps * spread / (s * s * s) > NO_DIGITS {
             tally.no_digits += 1;
-            continue;
+            return;
         }
         tally.record(
             0,
@@ -1189,8 +1185,7 @@ fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             "reaction or drive",
             &format!("{what} sine {s:e} spread {spread:e}"),
         );
-    }
-    tally
+    })
 }
 
 /// Enough samples that each run meets its edges (about a tenth of the poses
