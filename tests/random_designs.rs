@@ -203,6 +203,24 @@ mechanism! {
     }
 }
 
+/// `solve` of a generated mechanism `m` whose one input is `theta`, at the
+/// angle, speed and angular acceleration `(q, w, al)` (f64, as `T`).
+macro_rules! solve_at {
+    ($m:expr, $input:ident, $t:ty, ($q:expr, $w:expr, $al:expr)) => {
+        $m.solve(
+            &$input {
+                theta: <$t>::lit($q),
+            },
+            &$input {
+                theta: <$t>::lit($w),
+            },
+            &$input {
+                theta: <$t>::lit($al),
+            },
+        )
+    };
+}
+
 /// The largest error allowed, in units of the sample's first-order bound.
 /// The generated chain rounds about 8 times per stage at the stage's scale:
 /// the crank's tip (sine and cosine within 2 ulp, a product and a sum), the
@@ -477,12 +495,7 @@ fn run_quad<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             c: T::lit(c),
             ..Default::default()
         };
-        let lit = |x: f64| T::lit(x);
-        let got = m.solve(
-            &QuadInput { theta: lit(q) },
-            &QuadInput { theta: lit(w) },
-            &QuadInput { theta: lit(al) },
-        );
+        let got = solve_at!(m, QuadInput, T, (q, w, al));
         // The reference, in double-double at the same (rounded) numbers.
         let o = vd(0.0, 0.0);
         let qq = vd(gx, gy);
@@ -564,12 +577,7 @@ fn run_slide<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             tilt: T::lit(tilt),
             ..Default::default()
         };
-        let lit = |x: f64| T::lit(x);
-        let got = m.solve(
-            &SlideInput { theta: lit(q) },
-            &SlideInput { theta: lit(w) },
-            &SlideInput { theta: lit(al) },
-        );
+        let got = solve_at!(m, SlideInput, T, (q, w, al));
         // The guide's direction as the generated code has it (cos, sin of
         // the rounded tilt, rounded to T): the reference takes that exact
         // line, so the comparison is of the group, not of the guide's
@@ -643,12 +651,7 @@ fn run_swing<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             e: T::lit(e),
             ..Default::default()
         };
-        let lit = |x: f64| T::lit(x);
-        let got = m.solve(
-            &SwingInput { theta: lit(q) },
-            &SwingInput { theta: lit(w) },
-            &SwingInput { theta: lit(al) },
-        );
+        let got = solve_at!(m, SwingInput, T, (q, w, al));
         let (pa, va, aa) = refg::crank(vd(0.0, 0.0), a, q, w, al);
         let pp = vd(px, py);
         let pv = refg::sub(pa, pp);
@@ -743,12 +746,7 @@ fn run_cross<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             o2: T::lit(o2),
             ..Default::default()
         };
-        let lit = |x: f64| T::lit(x);
-        let got = m.solve(
-            &CrossInput { theta: lit(q) },
-            &CrossInput { theta: lit(w) },
-            &CrossInput { theta: lit(al) },
-        );
+        let got = solve_at!(m, CrossInput, T, (q, w, al));
         let what = format!("Cross {n}: guide ({gx:e}, {gy:e}) at {gangle}, tilt {tilt}, offsets {o1:e} {o2:e}, theta {q}");
         // The two lines exactly at the rounded angles (the generated code's
         // own sines and cosines round within eps: first order, in the bound).
@@ -842,12 +840,7 @@ fn run_yoke<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             off: T::lit(off),
             ..Default::default()
         };
-        let lit = |x: f64| T::lit(x);
-        let got = m.solve(
-            &YokeInput { theta: lit(q) },
-            &YokeInput { theta: lit(w) },
-            &YokeInput { theta: lit(al) },
-        );
+        let got = solve_at!(m, YokeInput, T, (q, w, al));
         let what = format!("Yoke {n}: a {a:e} guide ({gx:e}, {gy:e}) at {gangle}, slot {slot}, off {off:e}, theta {q}");
         // A = G + s2 u + off perp(u) + s1 w, w the slot's direction
         // (cos slot, sin slot) in the guide's frame; the yoke translates, so
@@ -1027,11 +1020,7 @@ fn run_six<T: Real>(samples: usize, seed: u64) -> Tally {
             e: lit(e),
             ..Default::default()
         };
-        let got = m.solve(
-            &SixInput { theta: lit(q) },
-            &SixInput { theta: lit(w) },
-            &SixInput { theta: lit(al) },
-        );
+        let got = solve_at!(m, SixInput, T, (q, w, al));
         let what = format!("Six {n}: Q ({gx:e}, {gy:e}) H ({hx:e}, {hy:e}) a {a:e} b {b:e} c {c:e} P ({pu:e}, {pv:e}) d {d:e} e {e:e} theta {q}");
         let (qq, hh, zero) = (vd(gx, gy), vd(hx, hy), vd(0.0, 0.0));
         let (pa, va, aa) = refg::crank(zero, a, q, w, al);
@@ -1258,11 +1247,7 @@ fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             t4: lit(t4),
             ..Default::default()
         };
-        let got = m.solve(
-            &QuadLoadedInput { theta: lit(q) },
-            &QuadLoadedInput { theta: lit(w) },
-            &QuadLoadedInput { theta: lit(al) },
-        );
+        let got = solve_at!(m, QuadLoadedInput, T, (q, w, al));
         let what = format!(
             "QuadLoaded {n}: a {a:e} b {b:e} c {c:e} masses {m2:e} {m3:e} {m4:e} theta {q}"
         );
@@ -1658,11 +1643,7 @@ fn run_slide_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             fs: lit(fs),
             ..Default::default()
         };
-        let got = m.solve(
-            &SlideLoadedInput { theta: lit(q) },
-            &SlideLoadedInput { theta: lit(w) },
-            &SlideLoadedInput { theta: lit(al) },
-        );
+        let got = solve_at!(m, SlideLoadedInput, T, (q, w, al));
         let what = format!("SlideLoaded {n}: a {a:e} l {l:e} e {e:e} tilt {tilt} masses {m2:e} {m3:e} {m4:e} theta {q}");
         // The guide exactly at the direction the generated code rounds to
         // (as `run_slide`).
