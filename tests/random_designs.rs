@@ -43,7 +43,7 @@ use mechanism::{mechanism, Error, Fault, Point2, Real, Vector2};
 use mechanism_reference::constraint::V2 as CV2;
 use mechanism_reference::groups::{self as refg, V};
 use mechanism_reference::newton_euler::{
-    solve_forces, Body, Direction, Driver, Joint, Link, Load, Reaction, State, System,
+    solve_forces, Body, Direction, Driver, Joint, Link, Load, Reaction, Solution, State, System,
 };
 use mechanism_reference::Dd;
 
@@ -1364,7 +1364,7 @@ fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         .into_iter()
         .fold(0.0, f64::max);
         let alpha_max = al.abs().max(a3.to_f64().abs()).max(a4.to_f64().abs());
-        let mut scale_f = [
+        let loads = [
             m2 * (a_max + g),
             m3 * (a_max + g),
             m4 * (a_max + g),
@@ -1374,26 +1374,14 @@ fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             fx.hypot(fy),
             t4.abs() / l_min,
             reference.drives[0].to_f64().abs() / l_min,
-        ]
-        .into_iter()
-        .fold(0.0, f64::max);
-        let mut err = (f.drive_theta.as_f64() - reference.drives[0].to_f64()).abs() / a;
-        for (r, gr) in reference.reactions.iter().zip(got_r) {
-            let rf = r.force();
-            scale_f = scale_f.max(norm([rf.x, rf.y]));
-            err = err.max(dist((gr.x.as_f64(), gr.y.as_f64()), [rf.x, rf.y]));
-        }
-        if eps * spread / (s * s * s) > NO_DIGITS {
-            tally.no_digits += 1;
-            return;
-        }
-        tally.record(
-            0,
-            err / (eps * spread * scale_f / (s * s * s)),
-            FORCE_BOUND,
-            "reaction or drive",
-            &format!("{what} sine {s:e} spread {spread:e}"),
-        );
+        ];
+        let drive = (f.drive_theta.as_f64() - reference.drives[0].to_f64()).abs() / a;
+        let verdict = ForceVerdict {
+            eps,
+            spread,
+            condition: s,
+        };
+        verdict.record(tally, (&reference, &got_r), drive, &loads, &[], &what);
     })
 }
 
@@ -1672,10 +1660,6 @@ fn run_slide_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             return;
         };
         tally.compared += 1;
-        if eps * spread / (s * s * s) > NO_DIGITS {
-            tally.no_digits += 1;
-            return;
-        }
         let (w3, sd) = refg::rrp_rates(pa, pb, &line, va).expect("rates");
         let (a3, sdd) = refg::rrp_accelerations(pa, pb, &line, aa, w3).expect("accelerations");
         let unit = |x: V| refg::scale(Dd::ONE / refg::norm(x), x);
@@ -1739,7 +1723,7 @@ fn run_slide_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         .into_iter()
         .fold(0.0, f64::max);
         let alpha_max = al.abs().max(a3.to_f64().abs());
-        let mut scale_f = [
+        let loads = [
             m2 * (a_max + g),
             m3 * (a_max + g),
             m4 * (a_max + g),
@@ -1748,32 +1732,82 @@ fn run_slide_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             fx.hypot(fy),
             fs.abs(),
             reference.drives[0].to_f64().abs() / a.min(l),
-        ]
-        .into_iter()
-        .fold(0.0, f64::max);
-        let mut err = (f.drive_theta.as_f64() - reference.drives[0].to_f64()).abs() / a;
-        for (r, gr) in reference.reactions.iter().zip(pins) {
-            let rf = r.force();
-            scale_f = scale_f.max(norm([rf.x, rf.y]));
-            err = err.max(dist((gr.x.as_f64(), gr.y.as_f64()), [rf.x, rf.y]));
-        }
+        ];
+        let drive = (f.drive_theta.as_f64() - reference.drives[0].to_f64()).abs() / a;
+        // The guide's normal force and its couple over the rod's length.
         let Reaction::Prismatic { normal, moment, .. } = reference.reactions[3] else {
             panic!("the guide's reaction is prismatic");
         };
-        scale_f = scale_f
-            .max(normal.to_f64().abs())
-            .max(moment.to_f64().abs() / l);
-        err = err
-            .max((guide.normal.as_f64() - normal.to_f64()).abs())
-            .max((guide.moment.as_f64() - moment.to_f64()).abs() / l);
+        let guide = [
+            (
+                (guide.normal.as_f64() - normal.to_f64()).abs(),
+                normal.to_f64().abs(),
+            ),
+            (
+                (guide.moment.as_f64() - moment.to_f64()).abs() / l,
+                moment.to_f64().abs() / l,
+            ),
+        ];
+        let verdict = ForceVerdict {
+            eps,
+            spread,
+            condition: s,
+        };
+        verdict.record(tally, (&reference, &pins), drive, &loads, &guide, &what);
+    })
+}
+
+/// What a loaded run's errors are measured against: `eps`, the sample's
+/// spread (largest coordinate over the shortest link) and the group's
+/// condition.
+struct ForceVerdict {
+    eps: f64,
+    spread: f64,
+    condition: f64,
+}
+
+impl ForceVerdict {
+    /// Records the worst of the pin reactions (the reference's first
+    /// `pins.len()`, as forces), the drive's error `drive` (already over the
+    /// crank's length) and the `extra` (error, scale) pairs against
+    /// [`FORCE_BOUND`] `eps spread F / condition^3`, `F` the largest of
+    /// `loads`, the reference's pin forces and the extra scales.
+    fn record<T: Real>(
+        &self,
+        tally: &mut Tally,
+        (reference, pins): (&Solution, &[Vector2<T>]),
+        drive: f64,
+        loads: &[f64],
+        extra: &[(f64, f64)],
+        what: &str,
+    ) {
+        let k3 = self.condition.powi(3);
+        if self.eps * self.spread / k3 > NO_DIGITS {
+            tally.no_digits += 1;
+            return;
+        }
+        let mut scale = loads.iter().fold(0.0f64, |m, x| m.max(*x));
+        let mut err = drive;
+        for (r, got) in reference.reactions.iter().zip(pins) {
+            let rf = r.force();
+            scale = scale.max(norm([rf.x, rf.y]));
+            err = err.max(dist((got.x.as_f64(), got.y.as_f64()), [rf.x, rf.y]));
+        }
+        for &(e, sc) in extra {
+            err = err.max(e);
+            scale = scale.max(sc);
+        }
         tally.record(
             0,
-            err / (eps * spread * scale_f / (s * s * s)),
+            err / (self.eps * self.spread * scale / k3),
             FORCE_BOUND,
             "reaction or drive",
-            &format!("{what} condition {s:e} spread {spread:e}"),
+            &format!(
+                "{what} condition {:e} spread {:e}",
+                self.condition, self.spread
+            ),
         );
-    })
+    }
 }
 
 /// Fewer samples than the kinematics: each reference force solve assembles
