@@ -500,25 +500,15 @@ fn run_quad<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         let o = vd(0.0, 0.0);
         let qq = vd(gx, gy);
         let (pa, va, aa) = refg::crank(o, a, q, w, al);
-        let span = norm(refg::sub(qq, pa));
         let what = format!("Quad {n}: gx {gx:e} gy {gy:e} a {a:e} b {b:e} c {c:e} theta {q}");
-        // The band of `rrr::position` on |A - Q| about either edge (8 eps
-        // (b + c)), widened by the rounding of A's coordinates (a few eps of
-        // the largest coordinate).
         let size = [gx.abs(), gy.abs(), a, b, c]
             .into_iter()
             .fold(0.0, f64::max);
-        let band = 8.0 * eps * (b + c) + 8.0 * eps * size;
-        let near_edge = (span - (b + c)).abs() <= band || (span - (b - c).abs()).abs() <= band;
-        let Some(pb) = refg::rrr_position(pa, b, qq, c, true) else {
-            tally.outside(&got, "B", near_edge, &what);
+        let Some((sol, pb, s)) = rrr_verdict(tally, got, "B", (pa, b, qq, c), size, eps, &what)
+        else {
             return;
         };
         let (r1, r2) = (refg::sub(pb, pa), refg::sub(pb, qq));
-        let s = (refg::cross(r1, r2).to_f64() / (b * c)).abs();
-        let Some(sol) = tally.inside(got, "B", (near_edge, s), eps, &what) else {
-            return;
-        };
         let s = s.max(f64::MIN_POSITIVE);
         let (w1, w2) = refg::rrr_rates(pa, qq, pb, va, vd(0.0, 0.0)).expect("rates");
         let vb = refg::add(va, refg::scale(w1, refg::perp(r1)));
@@ -924,17 +914,11 @@ fn run_boom<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
         let what = format!("Boom {n}: r {r:e} B ({bx:e}, {by:e}) len {len:e}");
         let (pa, pb) = (vd(0.0, 0.0), vd(bx, by));
         let size = [r, bx.abs(), by.abs(), len].into_iter().fold(0.0, f64::max);
-        let band = 8.0 * eps * (r + len) + 8.0 * eps * size;
-        let near_edge = (span - (r + len)).abs() <= band || (span - (r - len).abs()).abs() <= band;
-        let Some(pc) = refg::rrr_position(pa, r, pb, len, true) else {
-            tally.outside(&got, "C", near_edge, &what);
+        let Some((sol, pc, s)) = rrr_verdict(tally, got, "C", (pa, r, pb, len), size, eps, &what)
+        else {
             return;
         };
         let (r1, r2) = (refg::sub(pc, pa), refg::sub(pc, pb));
-        let s = (refg::cross(r1, r2).to_f64() / (r * len)).abs();
-        let Some(sol) = tally.inside(got, "C", (near_edge, s), eps, &what) else {
-            return;
-        };
         // |C - A| = r and |C - B| = len, differentiated: r1 . vC = 0,
         // r2 . vC = len len'; once more: r1 . aC = -|vC|^2,
         // r2 . aC = len'^2 + len len'' - |vC|^2. As columns for `solve2`:
@@ -1146,6 +1130,33 @@ fn run_six<T: Real>(samples: usize, seed: u64) -> Tally {
         }
         tally.compare(&stages, eps, s2.max(f64::MIN_POSITIVE), spread, &what);
     })
+}
+
+/// An RRR group's reference joint `C` from `A` (link `l1`) and `B` (link
+/// `l2`), and the verdict where either side fails (see [`Tally::outside`]
+/// and [`Tally::inside`]): the solution, `C` and the group's condition
+/// (`|sin|` of the links' angle) where both assemble. The edge's band is
+/// that of `rrr::position` on `|A - B|` (8 eps `(l1 + l2)`), widened by the
+/// rounding of the coordinates (8 eps of `size`).
+fn rrr_verdict<T: Real, S>(
+    tally: &mut Tally,
+    got: Result<S, Error<T>>,
+    group: &str,
+    (a, l1, b, l2): (V, f64, V, f64),
+    size: f64,
+    eps: f64,
+    what: &str,
+) -> Option<(S, V, f64)> {
+    let span = norm(refg::sub(b, a));
+    let band = 8.0 * eps * (l1 + l2) + 8.0 * eps * size;
+    let near_edge = (span - (l1 + l2)).abs() <= band || (span - (l1 - l2).abs()).abs() <= band;
+    let Some(c) = refg::rrr_position(a, l1, b, l2, true) else {
+        tally.outside(&got, group, near_edge, what);
+        return None;
+    };
+    let s = (refg::cross(refg::sub(c, a), refg::sub(c, b)).to_f64() / (l1 * l2)).abs();
+    let sol = tally.inside(got, group, (near_edge, s), eps, what)?;
+    Some((sol, c, s))
 }
 
 /// The point `from + x e + y perp(e)` of a link whose axis is the unit `e`,
