@@ -22,7 +22,8 @@ use mechanism::{mechanism, Error, Fault, Real};
 use mechanism_reference::constraint::{Constraint, Linkage, Point, Side, V2};
 use mechanism_reference::loop_closure;
 use mechanism_reference::newton_euler::{
-    solve_forces, Body, Direction, Driver, Joint, Link, Load, Reaction, Solution, State, System,
+    solve_forces, Body, Direction, Driver, ForceError, Joint, Link, Load, Reaction, Solution,
+    State, System,
 };
 use mechanism_reference::Dd;
 
@@ -37,6 +38,12 @@ fn d(x: f64) -> Dd {
 
 fn fixed(x: f64, y: f64) -> Point {
     Point::Fixed(V2::new(x, y))
+}
+
+/// The reference's reactions and drives for the points' positions `p`,
+/// velocities `v` and accelerations `a`.
+fn reference_forces(sys: &System, p: &[V2], v: &[V2], a: &[V2]) -> Result<Solution, ForceError> {
+    solve_forces(sys, &State { p, v, a })
 }
 
 fn len(v: V2) -> f64 {
@@ -417,15 +424,7 @@ fn press_sweep<T: Real>(rnd: fn(f64) -> f64, eps: f64, mistake: f64) -> PressFig
                 assert!(gen.iter().all(|x| x.is_finite()), "{what}: {gen:?}");
                 assert!(cond.is_finite() && cond > 0.0, "{what}: condition {cond}");
                 let (p, v, a) = kinematics(&lk, q, 1.0, 0.0, &start).expect("reference");
-                let sol = solve_forces(
-                    &sys,
-                    &State {
-                        p: &p,
-                        v: &v,
-                        a: &a,
-                    },
-                )
-                .expect("reference forces");
+                let sol = reference_forces(&sys, &p, &v, &a).expect("reference forces");
                 let refc = ref_columns(&sol);
                 // The reference's own power balance (massless links): drive
                 // times 1 rad/s plus the press force's power is zero, to
@@ -603,15 +602,7 @@ fn knuckle_ref(s: f64, rnd: fn(f64) -> f64) -> Option<(Vec<Dd>, f64)> {
         ],
         gravity: V2::default(),
     };
-    let sol = solve_forces(
-        &sys,
-        &State {
-            p: &p,
-            v: &zero,
-            a: &zero,
-        },
-    )
-    .ok()?;
+    let sol = reference_forces(&sys, &p, &zero, &zero).ok()?;
     let c = ref_columns(&sol);
     // The column order of KNUCKLE_COLS: the slide (3), the drive, then the
     // three pins.
@@ -989,15 +980,7 @@ fn ww_sweep<T: Real>(
         power = power.max(gen.pop().unwrap());
         let (p, v, a) = kinematics(&lk, q, rate, accel, &start).expect("reference");
         let (p, v, a) = (wr.extend(&p), wr.extend(&v), wr.extend(&a));
-        let sol = solve_forces(
-            &sys,
-            &State {
-                p: &p,
-                v: &v,
-                a: &a,
-            },
-        )
-        .expect("reference forces");
+        let sol = reference_forces(&sys, &p, &v, &a).expect("reference forces");
         let refc = ref_columns(&sol);
         // Independent condition: the RRP's rod against the guide's normal,
         // the RPR's slide (the block's distance from O4) over its largest.
