@@ -1401,3 +1401,158 @@ fn f32_matches_f64() {
     // 2e-5 (170 f32 eps) leaves room, and any wrong term is 1e-3 or more.
     assert!(worst <= 2e-5, "{worst:e}");
 }
+
+// ---------------------------------------------------------------------------
+// 14. The force result's `condition` at parallel guides, in any frame; masses
+//     and moments of inertia given at run time are checked.
+
+mechanism! {
+    /// Two blocks joined at `C`: one on a line turning with the crank, one
+    /// on a fixed guide through `G = (gx, gy)` at `gangle`; the whole
+    /// drawing turned by `rot` (enter the crank angle plus `rot`, and `G`
+    /// turned). m, kg, N.
+    pub TurnedCross {
+        params { gx = 0.3, gy = 0.0, gangle = 0.0, rot = 0.0 }
+        let O = ground(0.0, 0.0);
+        let G = ground(gx, gy);
+        let fixed_line = guide(G, gangle + rot);
+        let A = crank(O, 0.1, th) as crank_link;
+        let rod_line = guide(O, crank_link);
+        let C = prp(rod_line, fixed_line) as (block1, block2);
+        mass block1 { m = 1.0, at = C };
+        mass block2 { m = 2.0, at = C };
+        force at C on block2 = (5.0, -3.0);
+    }
+}
+
+/// Towards parallel guides the PRP's reactions grow as `1 / delta` (`delta`
+/// the angle between the guides), and `condition` must say so in every
+/// frame. With the guides along the x axis the force solve's row-scaled
+/// pivots do not see it (the x balance's entries all vanish together and the
+/// row scaling lifts them back to 1): before the velocity's indicator was
+/// folded in, `condition` read 1.0 there at `delta = 1e-9` while the
+/// reactions were 1e9 times the loads. The velocity's indicator is `|sin
+/// delta|` of the guides' unit directions, so the forces' must be at most
+/// that (to the rounding of the directions, a few eps relative: 1e-6 of
+/// `delta` is far above that and far below the 1 it read), the same in a
+/// frame turned by 0.7 rad, and the reactions must be of the size `F /
+/// delta` they are (a factor of 4 either way: the load's component along
+/// the guides over `sin delta`).
+#[test]
+fn forces_condition_falls_at_parallel_guides_in_any_frame() {
+    for delta in [1e-3, 1e-6, 1e-9] {
+        let mut conditions = Vec::new();
+        for rot in [0.0f64, 0.7] {
+            // The fixed guide passes through the crank's pivot, so `C`
+            // stays at `O` and the loads stay the same as the guides turn
+            // parallel: only the reactions grow.
+            let m = TurnedCross::<f64> {
+                gx: 0.3 * rot.cos(),
+                gy: 0.3 * rot.sin(),
+                rot,
+                ..Default::default()
+            };
+            let s = m
+                .solve(
+                    &TurnedCrossInput { th: rot + delta },
+                    &TurnedCrossInput { th: 1.0 },
+                    &TurnedCrossInput { th: 0.0 },
+                )
+                .unwrap();
+            let c = s.forces.condition;
+            assert!(
+                c <= delta * (1.0 + 1e-6),
+                "rot {rot} delta {delta:e}: condition {c:e}"
+            );
+            let n = s.forces.r_ground_block2.normal.abs();
+            assert!(
+                n > 0.25 * 5.0 / delta && n < 4.0 * 5.0 / delta,
+                "rot {rot} delta {delta:e}: normal {n:e}"
+            );
+            conditions.push(c);
+        }
+        let (a, b) = (conditions[0], conditions[1]);
+        assert!(
+            (a - b).abs() <= 1e-6 * a,
+            "delta {delta:e}: {a:e} against {b:e} turned"
+        );
+    }
+}
+
+mechanism! {
+    /// A crank and an RRR with run-time masses and moments of inertia
+    /// (m, kg).
+    pub RunTimeMasses {
+        params { m2 = 1.0, j2 = 0.01, m3 = 2.0, j3 = 0.0 }
+        let O = ground(0.0, 0.0);
+        let Q = ground(1.0, 0.0);
+        let A = crank(O, 0.3, th) as crank_link;
+        let B = rrr(A, 1.0, Q, 0.8, left) as (coupler, rocker);
+        let G3 = point(coupler, from A, (0.5, 0.0));
+        mass crank_link { m = m2, at = A, j = j2 };
+        mass coupler { m = m3, at = G3, j = j3 };
+        gravity (0.0, -9.81);
+    }
+}
+
+/// A literal mass that is not positive is a compile error; one from `params`
+/// must be a run-time error naming the group that creates the link: a
+/// negative mass gives finite, balanced and wrong reactions (the reviewer's
+/// `m = -1` returned `Ok` with a power residual of 1e-16). Zero is not a mass
+/// (leave the statement out), a moment of inertia may be zero, and NaN is
+/// `NonFinite`.
+#[test]
+fn run_time_masses_and_inertias_are_checked() {
+    use mechanism::{Fault, Primitive};
+    let solve = |m: RunTimeMasses<f64>| {
+        m.solve(
+            &RunTimeMassesInput { th: 1.0 },
+            &RunTimeMassesInput { th: 2.0 },
+            &RunTimeMassesInput { th: 0.5 },
+        )
+    };
+    let base = RunTimeMasses::<f64>::default();
+    assert!(solve(base).is_ok());
+    let zero_inertia = RunTimeMasses { j2: 0.0, ..base };
+    assert!(solve(zero_inertia).is_ok());
+    let cases = [
+        (RunTimeMasses { m3: -1.0, ..base }, "B", Primitive::Rrr),
+        (RunTimeMasses { m3: 0.0, ..base }, "B", Primitive::Rrr),
+        (RunTimeMasses { m2: -1e-30, ..base }, "A", Primitive::Crank),
+        (
+            RunTimeMasses {
+                m2: f64::NAN,
+                ..base
+            },
+            "A",
+            Primitive::Crank,
+        ),
+        (RunTimeMasses { j3: -0.5, ..base }, "B", Primitive::Rrr),
+        (
+            RunTimeMasses {
+                j2: f64::INFINITY,
+                ..base
+            },
+            "A",
+            Primitive::Crank,
+        ),
+    ];
+    for (m, group, primitive) in cases {
+        let e = solve(m).expect_err("a bad mass or inertia");
+        assert_eq!((e.group, e.primitive), (group, primitive), "{e}");
+        let shown = e.to_string();
+        match e.fault {
+            Fault::NonPositive { what, value } => {
+                assert!(what.starts_with("mass of `") && value <= 0.0, "{shown}")
+            }
+            Fault::Negative { what, value } => {
+                assert!(
+                    what.starts_with("moment of inertia of `") && value < 0.0,
+                    "{shown}"
+                )
+            }
+            Fault::NonFinite { what } => assert!(what.contains(" of `"), "{shown}"),
+            other => panic!("unexpected fault {other:?}"),
+        }
+    }
+}

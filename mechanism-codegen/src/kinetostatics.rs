@@ -12,7 +12,7 @@
 use crate::emit::tag;
 use crate::model::{ForceSpecValue, Kind, Model, Stmt};
 use crate::plan::Plan;
-use crate::value::lit;
+use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use std::collections::BTreeSet;
@@ -181,7 +181,7 @@ impl ForceEmitter<'_> {
         for m in &k.masses {
             let link = m.link.to_string();
             let at = &m.at;
-            let mass = m.mass.emit();
+            let mass = self.checked(&m.mass, &link, Quantity::Mass);
             let inertia_force = format_ident!("pw_inertia_force_{}", link);
             let weight = format_ident!("pw_weight_{}", link);
             let v_g = self.velocity(at);
@@ -198,7 +198,7 @@ impl ForceEmitter<'_> {
             }
             let couple = match (&m.inertia, self.rates_of(&m.link)) {
                 (Some(j), Some((w, alpha))) if j.fold() != Some(0.0) => {
-                    let j = j.emit();
+                    let j = self.checked(j, &link, Quantity::Inertia);
                     let c = format_ident!("pw_inertia_couple_{}", link);
                     self.code.extend(quote!(let #c = -(#j * #alpha);));
                     self.power.push(quote!(#c * #w));
@@ -260,6 +260,45 @@ impl ForceEmitter<'_> {
                 quote!(::mechanism::force::Wrench::couple(#local)),
             );
         }
+    }
+
+    /// A mass or moment of inertia of `link` as the force analysis uses it. A
+    /// literal one was checked at expansion (`model`); one that depends on
+    /// `params` or `loads` is checked here, at run time, into a local: a mass
+    /// must be finite and positive, a moment of inertia finite and not
+    /// negative, else a typed error naming the group that creates the link
+    /// (a negative mass would give finite, consistent and wrong reactions).
+    fn checked(&mut self, value: &Value, link: &str, quantity: Quantity) -> TokenStream {
+        if value.fold().is_some() {
+            return value.emit();
+        }
+        let Some(stmt) = self
+            .model
+            .stmts
+            .iter()
+            .find(|s| s.links.iter().any(|l| l == link))
+        else {
+            return value.emit();
+        };
+        let v = value.emit();
+        let primitive = primitive(&stmt.kind);
+        let t = tag(stmt);
+        let (local, check, what) = match quantity {
+            Quantity::Mass => (
+                format_ident!("mass_{}", link),
+                quote!(positive),
+                format!("mass of `{link}`"),
+            ),
+            Quantity::Inertia => (
+                format_ident!("inertia_{}", link),
+                quote!(non_negative),
+                format!("moment of inertia of `{link}`"),
+            ),
+        };
+        self.code.extend(quote!(
+            let #local = ::mechanism::geometry::#check(#v, #primitive, #what) #t;
+        ));
+        quote!(#local)
     }
 
     /// One group or driver: its reactions, passed on to the outside bodies.
@@ -445,6 +484,31 @@ impl ForceEmitter<'_> {
     }
 }
 
+/// What [`ForceEmitter::checked`] checks.
+#[derive(Clone, Copy)]
+enum Quantity {
+    /// A link's mass: finite and positive.
+    Mass,
+    /// A link's moment of inertia about its centre of mass: finite, `>= 0`.
+    Inertia,
+}
+
+/// The core's tag of the primitive a statement calls (for run-time errors).
+fn primitive(kind: &Kind) -> TokenStream {
+    let name = match kind {
+        Kind::Crank { .. } => quote!(Crank),
+        Kind::Slider { .. } => quote!(Slider),
+        Kind::Actuator { .. } => quote!(Actuator),
+        Kind::Rrr { .. } => quote!(Rrr),
+        Kind::Rrp { .. } => quote!(Rrp),
+        Kind::Rpr { .. } => quote!(Rpr),
+        Kind::Prp { .. } => quote!(Prp),
+        Kind::Rpp { .. } => quote!(Rpp),
+        Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } => quote!(LinkPoint),
+    };
+    quote!(::mechanism::Primitive::#name)
+}
+
 /// Emits the force analysis of a valid, planned model whose definition asks
 /// for it. `moving` holds the points that move.
 pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode {
@@ -481,13 +545,16 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
         }
         r.name = format_ident!("{}", candidate);
     }
-    let condition = match conditions.split_first() {
-        None => lit(1.0),
-        Some((first, rest)) => rest.iter().fold(
-            first.clone(),
-            |acc, c| quote!(::mechanism::geometry::min(#acc, #c)),
-        ),
-    };
+    // The velocity's indicator first: a group's force system is the
+    // transpose of its rate system (virtual work), so it is singular at the
+    // same poses, and the scaled determinants see that in any frame. The
+    // force solves' relative pivots are row-equilibrated and can miss it: a
+    // PRP with its guides along the x axis has a row (the x balance) whose
+    // entries all vanish together, and the scaling lifts it back to 1.
+    let condition = conditions.iter().fold(
+        quote!(vel.condition),
+        |acc, c| quote!(::mechanism::geometry::min(#acc, #c)),
+    );
     let terms: Vec<Ident> = (0..em.power.len())
         .map(|k| format_ident!("pw_{}", k))
         .collect();
@@ -569,9 +636,12 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
         #[allow(non_snake_case)]
         #vis struct #forces_ty<T: ::mechanism::Real = ::core::primitive::f64> {
             #(#[doc = #field_docs] pub #field_names: #field_types,)*
-            /// Smallest relative pivot over the groups' force systems (1 for a
-            /// well-conditioned pose, tending to 0 towards a singular one:
-            /// toggle, dead centre).
+            /// Conditioning indicator: the smaller of the velocity's
+            /// `condition` (the groups' scaled determinants, singular at the
+            /// same poses as their force systems) and the smallest relative
+            /// pivot over the groups' force systems; 1 for a well-conditioned
+            /// pose, tending to 0 towards a singular one (toggle, dead centre,
+            /// parallel guides).
             pub condition: T,
             /// Power balance residual: |driver power + power of the external
             /// loads, weights, inertia forces and couples| divided by the largest

@@ -91,6 +91,14 @@ pub enum Fault<T = f64> {
         /// The value given.
         value: T,
     },
+    /// An input that must be zero or positive (a moment of inertia) was
+    /// negative.
+    Negative {
+        /// Which quantity.
+        what: &'static str,
+        /// The value given, < 0.
+        value: T,
+    },
 }
 
 /// A typed error: which primitive, which group of the user's mechanism (when
@@ -143,6 +151,10 @@ impl<T: Real> Fault<T> {
             },
             Fault::NonFinite { what } => Fault::NonFinite { what },
             Fault::NonPositive { what, value } => Fault::NonPositive {
+                what,
+                value: value.as_f64(),
+            },
+            Fault::Negative { what, value } => Fault::Negative {
                 what,
                 value: value.as_f64(),
             },
@@ -200,6 +212,9 @@ impl<T: Real> fmt::Display for Fault<T> {
             Fault::NonFinite { what } => write!(f, "{what} is not finite"),
             Fault::NonPositive { what, value } => {
                 write!(f, "{what} must be positive, got {value:e}")
+            }
+            Fault::Negative { what, value } => {
+                write!(f, "{what} must be zero or positive, got {value:e}")
             }
         }
     }

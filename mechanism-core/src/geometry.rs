@@ -210,6 +210,22 @@ pub fn positive<T: Real>(x: T, primitive: Primitive, what: &'static str) -> Resu
     }
 }
 
+/// Returns `Err(NonFinite)` unless `x` is finite, `Err(Negative)` unless it
+/// is `>= 0` (a moment of inertia: zero is a point mass).
+#[inline(always)]
+pub fn non_negative<T: Real>(
+    x: T,
+    primitive: Primitive,
+    what: &'static str,
+) -> Result<T, Error<T>> {
+    let x = finite(x, primitive, what)?;
+    if x >= T::zero() {
+        Ok(x)
+    } else {
+        Err(Error::new(primitive, Fault::Negative { what, value: x }))
+    }
+}
+
 /// Relative threshold below which a 2x2 rate system counts as singular:
 /// `|det| <= SINGULAR_RELATIVE * eps * scale`, where `scale` is the product of
 /// the lengths of the determinant's columns. At that level the rates' relative
