@@ -1852,3 +1852,4 @@ fn random_loaded_slider_cranks_f32() {
 }
 
 mod swing_forces;
+mod yoke_forces;
