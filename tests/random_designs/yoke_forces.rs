@@ -49,11 +49,20 @@ mechanism! {
 /// length) of the size of the weights and crank-driven inertia loads times
 /// 1e-2 .. 1e2.
 ///
-/// Bound as `run_quad_forces`: `c eps (L / a) F / kappa^3`, `kappa` the
+/// Bound: `c eps (L / a) F / kappa`, `c` = [`FORCE_BOUND`], `kappa` the
 /// RPP's condition `|sin|` of the slot's angle to the guide (the force
 /// system is singular with the rate system, slot parallel to the guide),
-/// `L` the largest coordinate. The slot's and the guide's couples (about
-/// `A`) are compared over the crank's length `a`.
+/// `L` the largest coordinate, `F` the largest load as `run_quad_forces`
+/// counts it. One power of `kappa`, not the three of the four-bar: the slot
+/// and the guide keep their directions (from angles, not from rounded
+/// positions), so the accelerations are within `eps a_max / kappa` of
+/// `|a_A|`, and `a_max >= |a_Q|`, itself of the order `|a_A| / kappa`: the
+/// inertia loads are within `eps m a_max` and the force solve, whose
+/// normal forces grow as `1 / kappa`, adds its `eps F / kappa`. Measured
+/// (4 000 samples per run, debug): at most 2.4 with one power, against
+/// 21.5 for the RPR with one power, where the positions' rounding enters.
+/// The slot's and the guide's couples (about `A`) are compared over the
+/// crank's length `a`.
 pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> Tally {
     let eps = T::eps().as_f64();
     let g = 9.81;
@@ -267,10 +276,14 @@ pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> Tally {
                 moment.to_f64().abs() / a,
             ));
         }
+        // `ForceVerdict` divides by its condition cubed; the yoke's errors
+        // grow as `1 / kappa` only (see the bound above), so it gets the
+        // cube root (the message then prints `kappa^(1/3)`; `kappa` is in
+        // `what`).
         let verdict = ForceVerdict {
             eps,
             spread,
-            condition: kappa,
+            condition: kappa.cbrt(),
         };
         verdict.record(tally, (&reference, &pins), drive, &loads, &extra, &what);
     })
