@@ -53,7 +53,10 @@ mechanism! {
 /// RPR's condition of `run_swing` (`min(|s| / |A - P|, |A - P| / size)`:
 /// the force system is singular where the rate system is, at `s = 0` and
 /// at `A = P`), `l_min` the shorter of the crank and `|A - P|`. The slide's
-/// couple (about `A`) is compared over `l_min`.
+/// couple (about `A`) is compared over `l_min`. Measured: at most 9.2 over
+/// 100 000 draws per run (release, f64; 5.3 in f32); with `kappa^2` in
+/// place of `kappa^3`, 2.8 and 4.5 over 4 000 (free draws rarely come near
+/// `s = 0`), with `kappa` alone 21.5.
 pub(crate) fn run_swing_forces<T: Real>(samples: usize, seed: u64) -> Tally {
     let eps = T::eps().as_f64();
     let g = 9.81;

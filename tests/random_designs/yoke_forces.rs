@@ -59,14 +59,21 @@ mechanism! {
 /// `|a_A|`, and `a_max >= |a_Q|`, itself of the order `|a_A| / kappa`: the
 /// inertia loads are within `eps m a_max` and the force solve, whose
 /// normal forces grow as `1 / kappa`, adds its `eps F / kappa`. Measured
-/// (4 000 samples per run, debug): at most 2.4 with one power, against
-/// 21.5 for the RPR with one power, where the positions' rounding enters.
+/// with one power: at most 3.8 over 100 000 draws per run (release, f64
+/// and f32), against 21.5 over 4 000 for the RPR with one power, where the
+/// positions' rounding enters.
 /// The slot's and the guide's couples (about `A`) are compared over the
 /// crank's length `a`.
-pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> Tally {
+///
+/// Returns the tally and the number of draws the reference refused (see
+/// the residual check below).
+pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> (Tally, usize) {
     let eps = T::eps().as_f64();
     let g = 9.81;
-    draws(samples, seed, |rng, n, tally, sc| {
+    let mut refused = 0;
+    let counter = &mut refused;
+    let tally = draws(samples, seed, |rng, n, tally, sc| {
+        let refused = &mut *counter;
         let a = through::<T>(length(rng, sc));
         let gx = coordinate::<T>(rng, sc);
         let gy = coordinate::<T>(rng, sc);
@@ -221,19 +228,21 @@ pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             v: &vs,
             a: &accs,
         };
-        // About `A` (point 1), as the generated couples. The reference's
-        // residual check (relative 1e-28, `RESIDUAL_TOLERANCE`) refuses a
-        // rare well-conditioned draw at a few times that (seed 103, draw
-        // 312: 2.1e-28, the pivots' growth in its 9 x 9 elimination); the
-        // same equations with the couples about `Q` are then solved and the
-        // couples moved to `A` (exact to double-double rounding).
-        let (reference, about) = match solve_forces(&system(1), &state) {
-            Ok(r) => (r, pa),
-            Err(ForceError::Inconsistent { .. }) => (
-                solve_forces(&system(2), &state)
-                    .unwrap_or_else(|e| panic!("{what}: reference forces: {e:?}")),
-                pq,
-            ),
+        // The couples about `A` (point 1), as the generated ones. The
+        // reference's residual check (relative 1e-28, `RESIDUAL_TOLERANCE`)
+        // refuses about one well-conditioned draw in 10 000 here (22 in
+        // 200 000, release, at 1.2e-28 .. 2.1e-28 where printed; stating the
+        // couples about `Q`, `G4`, `K` or `O` instead was refused too, at up
+        // to 3.6e-27): counted, and checked to be rare and still 1e8 below
+        // `f64`'s rounding.
+        let reference = match solve_forces(&system(1), &state) {
+            Ok(r) => r,
+            Err(ForceError::Inconsistent { residual }) => {
+                assert!(residual < 1e-24, "{what}: reference residual {residual:e}");
+                *refused += 1;
+                tally.compared -= 1;
+                return;
+            }
             Err(e) => panic!("{what}: reference forces: {e:?}"),
         };
         let f = &sol.forces;
@@ -257,16 +266,10 @@ pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         let drive = (f.drive_theta.as_f64() - reference.drives[0].to_f64()).abs() / a;
         let mut extra = Vec::new();
         for (k, got) in [(2, &f.r_block_yoke), (3, &f.r_ground_yoke)] {
-            let Reaction::Prismatic {
-                normal,
-                moment,
-                force,
-            } = reference.reactions[k]
-            else {
+            let Reaction::Prismatic { normal, moment, .. } = reference.reactions[k] else {
                 panic!("the slot's and the guide's reactions are prismatic");
             };
-            // The couple about `A`: the normal force acts at `about`.
-            let moment = moment + refg::cross(refg::sub(about, pa), [force.x, force.y]);
+
             extra.push((
                 (got.normal.as_f64() - normal.to_f64()).abs(),
                 normal.to_f64().abs(),
@@ -286,21 +289,24 @@ pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             condition: kappa.cbrt(),
         };
         verdict.record(tally, (&reference, &pins), drive, &loads, &extra, &what);
-    })
+    });
+    (tally, refused)
+}
+
+/// Prints a yoke run; the reference may have refused at most one draw in
+/// a thousand.
+fn yoke_report(name: &str, (tally, refused): (Tally, usize)) {
+    forces_report(name, &tally);
+    println!("{name}: {refused} draws refused by the reference's residual check");
+    assert!(refused <= FORCE_SAMPLES / 1000, "{name}: {refused} refused");
 }
 
 #[test]
 fn random_loaded_yokes_f64() {
-    forces_report(
-        "YokeLoaded f64",
-        &run_yoke_forces::<f64>(FORCE_SAMPLES, 103),
-    );
+    yoke_report("YokeLoaded f64", run_yoke_forces::<f64>(FORCE_SAMPLES, 103));
 }
 
 #[test]
 fn random_loaded_yokes_f32() {
-    forces_report(
-        "YokeLoaded f32",
-        &run_yoke_forces::<f32>(FORCE_SAMPLES, 104),
-    );
+    yoke_report("YokeLoaded f32", run_yoke_forces::<f32>(FORCE_SAMPLES, 104));
 }
