@@ -1850,3 +1850,6 @@ fn random_loaded_slider_cranks_f32() {
         &run_slide_forces::<f32>(FORCE_SAMPLES, 30),
     );
 }
+
+mod swing_forces;
+mod yoke_forces;
