@@ -1850,3 +1850,7 @@ fn random_loaded_slider_cranks_f32() {
         &run_slide_forces::<f32>(FORCE_SAMPLES, 30),
     );
 }
+
+mod cross_forces;
+
+mod boom_forces;
