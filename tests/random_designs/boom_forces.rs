@@ -94,9 +94,7 @@ fn run_boom_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         let got = m.solve(
             &BoomLoadedInput { len: lit(len) },
             &BoomLoadedInput { len: lit(len_dot) },
-            &BoomLoadedInput {
-                len: lit(len_ddot),
-            },
+            &BoomLoadedInput { len: lit(len_ddot) },
         );
         let what = format!(
             "BoomLoaded {n}: r {r:e} B ({bx:e}, {by:e}) len {len:e} rate {len_dot:e} accel {len_ddot:e} mass {m1:e}"
@@ -145,13 +143,7 @@ fn run_boom_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         let boom_pt = |xy: (f64, f64)| on_link((pa, zero, zero), e1, xy, omega, alpha);
         let (gg, tt) = (boom_pt((gu, gv)), boom_pt((tu, tv)));
         // Points: 0 A, 1 B, 2 C, 3 G, 4 Tip.
-        let pts = [
-            (pa, zero, zero),
-            (pb, zero, zero),
-            (pc, vc, ac),
-            gg,
-            tt,
-        ];
+        let pts = [(pa, zero, zero), (pb, zero, zero), (pc, vc, ac), gg, tt];
         let ps: Vec<CV2> = pts.iter().map(|x| cv(x.0)).collect();
         let vs: Vec<CV2> = pts.iter().map(|x| cv(x.1)).collect();
         let accs: Vec<CV2> = pts.iter().map(|x| cv(x.2)).collect();
