@@ -1851,5 +1851,8 @@ fn random_loaded_slider_cranks_f32() {
     );
 }
 
+// The loaded designs of the other groups (after `solve_at!`, which they use).
+mod boom_forces;
+mod cross_forces;
 mod swing_forces;
 mod yoke_forces;
