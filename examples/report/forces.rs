@@ -642,9 +642,9 @@ pub fn section(out_dir: &Path) -> String {
          velocity, acceleration and joint reactions with the driving effort) against an \
          independent double-double reference: the loop-closure kinematics above, then the \
          Newton-Euler equations of every link (sum F = m a_G, sum M_G = J alpha) with all joint \
-         reactions and the driving effort as unknowns of one system, solved by pivoted \
-         elimination in double-double and accepted only when every equation's residual is \
-         below 1e-28 of the largest term of the force (moment) equations \
+         reactions and the driving effort as unknowns of one system, equilibrated (rows and \
+         columns by powers of two) and solved by pivoted elimination in double-double, and \
+         accepted only when every equation's residual is below {:e} of the largest term of the force (moment) equations \
          (`mechanism_reference::newton_euler`). Times: ns per evaluation of the whole `solve` (median, min - max over {ROUNDS} interleaved rounds). \
          Errors: largest absolute error of a force (N) and of a moment or torque (N m) over all \
          reactions (global components of `r_<from>_<to>`, prismatic couples about the field's \
@@ -652,7 +652,8 @@ pub fn section(out_dir: &Path) -> String {
          column's largest value (columns that are zero in exact arithmetic: over the largest \
          column of their unit). f32 methods are compared with the reference at their \
          f32-rounded inputs (the loads are decided once per grid point from the f64 \
-         reference's motion). `power_residual`: the largest the generated code reports.\n"
+         reference's motion). `power_residual`: the largest the generated code reports.\n",
+        mechanism_reference::newton_euler::RESIDUAL_TOLERANCE
     );
     let mut problems = Vec::new();
     for sc in scenes() {

@@ -7,7 +7,6 @@
 //! (see [`run_quad_forces`] for the draws and the bound).
 
 use super::*;
-use mechanism_reference::newton_euler::ForceError;
 
 mechanism! {
     /// [`Cross`] loaded (kg, m, s: N and N m): the crank of length `a` with
@@ -267,7 +266,7 @@ fn run_cross_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             v: &vs,
             a: &accs,
         };
-        let reference = solve_in_unit(&system, &state, l_pos).expect("reference forces");
+        let reference = solve_forces(&system, &state).expect("reference forces");
         let f = &sol.forces;
         let pins = [f.r_ground_crank_link, f.r_block1_block2];
         let prismatic = |got: &mechanism::force::PrismaticReaction<T>, r: &Reaction| {
@@ -332,62 +331,6 @@ fn run_cross_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             &what,
         );
     })
-}
-
-/// `solve_forces` of `sys` in the state `st` with lengths in the unit
-/// `2^k` nearest `size` (L), the answer converted back: every length,
-/// velocity, acceleration and force scaled by `2^-k`, every couple and
-/// inertia by `2^-2k` (exact in binary), so the solve sees moment arms of
-/// about 1 beside the force rows' unit coefficients. In the user's unit the
-/// reference's elimination (partial pivoting, no row scaling) met moment
-/// arms of 1e2 .. 1e5 (large designs, or `C` far out near parallel guides)
-/// and left residuals of 1e-28 .. 1.4e-27 relative, beyond its 1e-28
-/// consistency check (`ForceError::Inconsistent`), on about 2 in 10 000
-/// samples; in this unit none over 200 000.
-fn solve_in_unit(sys: &System, st: &State, size: f64) -> Result<Solution, ForceError> {
-    let k = 2f64.powi(-size.log2().round() as i32);
-    let (kd, k2) = (Dd::from(k), Dd::from(k * k));
-    let scaled = |v: &[CV2]| -> Vec<CV2> { v.iter().map(|x| x.scale(kd)).collect() };
-    let (p, v, a) = (scaled(st.p), scaled(st.v), scaled(st.a));
-    let mut sys = sys.clone();
-    for b in &mut sys.bodies {
-        b.inertia *= k2;
-    }
-    for l in &mut sys.loads {
-        match l {
-            Load::Force { force, .. } => *force = force.scale(kd),
-            Load::Couple { couple, .. } => *couple *= k2,
-        }
-    }
-    sys.gravity = sys.gravity.scale(kd);
-    let st = State {
-        p: &p,
-        v: &v,
-        a: &a,
-    };
-    let mut sol = solve_forces(&sys, &st)?;
-    let (ki, ki2) = (Dd::ONE / kd, Dd::ONE / k2);
-    for r in &mut sol.reactions {
-        *r = match *r {
-            Reaction::Revolute(f) => Reaction::Revolute(f.scale(ki)),
-            Reaction::Prismatic {
-                normal,
-                moment,
-                force,
-            } => Reaction::Prismatic {
-                normal: normal * ki,
-                moment: moment * ki2,
-                force: force.scale(ki),
-            },
-        };
-    }
-    for (d, drv) in sol.drives.iter_mut().zip(&sys.drivers) {
-        *d *= match drv {
-            Driver::Torque { .. } => ki2,
-            Driver::Force { .. } => ki,
-        };
-    }
-    Ok(sol)
 }
 
 #[test]

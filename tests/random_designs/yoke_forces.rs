@@ -4,7 +4,6 @@
 //! loaded on all three links, as `run_quad_forces` does for the four-bar.
 
 use super::*;
-use mechanism_reference::newton_euler::ForceError;
 
 mechanism! {
     /// The Scotch yoke `Yoke` loaded: masses on the crank, the block (its
@@ -64,16 +63,10 @@ mechanism! {
 /// positions' rounding enters.
 /// The slot's and the guide's couples (about `A`) are compared over the
 /// crank's length `a`.
-///
-/// Returns the tally and the number of draws the reference refused (see
-/// the residual check below).
-pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> (Tally, usize) {
+pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> Tally {
     let eps = T::eps().as_f64();
     let g = 9.81;
-    let mut refused = 0;
-    let counter = &mut refused;
-    let tally = draws(samples, seed, |rng, n, tally, sc| {
-        let refused = &mut *counter;
+    draws(samples, seed, |rng, n, tally, sc| {
         let a = through::<T>(length(rng, sc));
         let gx = coordinate::<T>(rng, sc);
         let gy = coordinate::<T>(rng, sc);
@@ -228,23 +221,8 @@ pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> (Tally, usi
             v: &vs,
             a: &accs,
         };
-        // The couples about `A` (point 1), as the generated ones. The
-        // reference's residual check (relative 1e-28, `RESIDUAL_TOLERANCE`)
-        // refuses about one well-conditioned draw in 10 000 here (22 in
-        // 200 000, release, at 1.2e-28 .. 2.1e-28 where printed; stating the
-        // couples about `Q`, `G4`, `K` or `O` instead was refused too, at up
-        // to 3.6e-27): counted, and checked to be rare and still 1e8 below
-        // `f64`'s rounding.
-        let reference = match solve_forces(&system(1), &state) {
-            Ok(r) => r,
-            Err(ForceError::Inconsistent { residual }) => {
-                assert!(residual < 1e-24, "{what}: reference residual {residual:e}");
-                *refused += 1;
-                tally.compared -= 1;
-                return;
-            }
-            Err(e) => panic!("{what}: reference forces: {e:?}"),
-        };
+        // The couples about `A` (point 1), as the generated ones.
+        let reference = solve_forces(&system(1), &state).expect("reference forces");
         let f = &sol.forces;
         let pins = [f.r_ground_crank_link, f.r_crank_link_block];
         // Each body's inertia scale as in `run_quad_forces`: the largest
@@ -289,24 +267,21 @@ pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> (Tally, usi
             condition: kappa.cbrt(),
         };
         verdict.record(tally, (&reference, &pins), drive, &loads, &extra, &what);
-    });
-    (tally, refused)
-}
-
-/// Prints a yoke run; the reference may have refused at most one draw in
-/// a thousand.
-fn yoke_report(name: &str, (tally, refused): (Tally, usize)) {
-    forces_report(name, &tally);
-    println!("{name}: {refused} draws refused by the reference's residual check");
-    assert!(refused <= FORCE_SAMPLES / 1000, "{name}: {refused} refused");
+    })
 }
 
 #[test]
 fn random_loaded_yokes_f64() {
-    yoke_report("YokeLoaded f64", run_yoke_forces::<f64>(FORCE_SAMPLES, 103));
+    forces_report(
+        "YokeLoaded f64",
+        &run_yoke_forces::<f64>(FORCE_SAMPLES, 103),
+    );
 }
 
 #[test]
 fn random_loaded_yokes_f32() {
-    yoke_report("YokeLoaded f32", run_yoke_forces::<f32>(FORCE_SAMPLES, 104));
+    forces_report(
+        "YokeLoaded f32",
+        &run_yoke_forces::<f32>(FORCE_SAMPLES, 104),
+    );
 }
