@@ -607,6 +607,9 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     };
     let (pos_marker, pos_marker_init) =
         marker(pos_out_names.is_empty() && hidden_pos.is_empty() && !keep_input);
+    // The mechanism's own struct: with `params` it can be written out in
+    // full (`FourBar { ground: 0.3, crank: 0.1, .. }`, no hidden field).
+    let (params_marker, params_marker_init) = marker(param_names.is_empty());
 
     let pos_docs = output_docs(&out, 0);
     let vel_docs = output_docs(&out, 1);
@@ -640,15 +643,14 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
         #[derive(Clone, Copy, Debug, PartialEq)]
         #vis struct #name<T = ::core::primitive::f64> {
             #(#[doc = "Run-time parameter (default from the definition)."] pub #param_names: T,)*
-            #[doc(hidden)]
-            pub _scalar: ::core::marker::PhantomData<T>,
+            #params_marker
         }
 
         #allow_lints
         impl<T: ::mechanism::Real> ::core::default::Default for #name<T> {
             #[inline]
             fn default() -> Self {
-                #name { #(#param_names: #param_defaults,)* _scalar: ::core::marker::PhantomData }
+                #name { #(#param_names: #param_defaults,)* #params_marker_init }
             }
         }
 
@@ -1386,6 +1388,11 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         .chain(model.failed.iter().filter_map(|f| f.input.clone()))
         .filter(|i| unique(i))
         .collect();
+    let params_marker = if params.is_empty() {
+        quote!(pub _scalar: ::core::marker::PhantomData<T>,)
+    } else {
+        quote!()
+    };
     let scalar_marker = if inputs.is_empty() {
         quote!(pub _scalar: ::core::marker::PhantomData<T>,)
     } else {
@@ -1455,7 +1462,7 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         #(#errors)*
         #forces_stub
         #[allow(non_snake_case, dead_code)]
-        #vis struct #name<T = ::core::primitive::f64> { #(pub #params: T,)* pub _scalar: ::core::marker::PhantomData<T> }
+        #vis struct #name<T = ::core::primitive::f64> { #(pub #params: T,)* #params_marker }
         impl<T: ::mechanism::Real> ::core::default::Default for #name<T> {
             fn default() -> Self { ::core::unimplemented!() }
         }

@@ -1,4 +1,5 @@
-// Valid: the seed four-bar, position analysis only.
+// Valid: the seed four-bar, position analysis only; a mechanism with
+// `params` can be written out in full (no hidden field to fill).
 use mechanism::mechanism;
 
 mechanism! {
@@ -17,4 +18,11 @@ fn main() {
     let fb = FourBar::<f64>::default();
     let p = fb.position(&FourBarInput { theta2: 0.5 }).expect("assembles");
     let _ = (p.A, p.B, p.link3, p.link4);
+    let written = FourBar::<f32> {
+        ground: 0.3,
+        crank: 0.1,
+        coupler: 0.25,
+        rocker: 0.18,
+    };
+    let _ = written.position(&FourBarInput { theta2: 0.5 });
 }
