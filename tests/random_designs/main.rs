@@ -37,6 +37,14 @@
 //! fitted to the pose at a relative distance of 1e-17 .. 1e-2 from an edge of
 //! assembly, on either side (`Edge`).
 //!
+//! Loaded designs (masses 1e-3 .. 1e3 kg with centres and inertias, forces,
+//! couples, forces along guides, gravity) against the reference's
+//! Newton-Euler: the four-bar and the slider-crank here
+//! ([`run_quad_forces`], [`run_slide_forces`]), the inverted slider-crank,
+//! the yoke, the crossing guides and the boom in the modules below, every
+//! reaction and the driving effort within [`FORCE_BOUND`] of
+//! `eps (L / l_min) F / kappa^3` ([`ForceVerdict`]).
+//!
 //! `cargo test --test random_designs -- --nocapture` prints the figures.
 
 use mechanism::{mechanism, Error, Fault, Point2, Real, Vector2};
