@@ -2,7 +2,7 @@
 //! pushing errors with the span of the user's offending token and a hint.
 //! All rules run, so several errors are reported at once.
 
-use crate::model::{did_you_mean, nearest, Errors, ForceSpecValue, Kind, Level, Model, Origin};
+use crate::model::{did_you_mean, Errors, ForceSpecValue, Kind, Level, Model, Origin};
 use crate::plan::{references, Plan};
 use std::collections::BTreeMap;
 use syn::Ident;
@@ -236,7 +236,12 @@ fn named_links(model: &Model) -> Vec<String> {
         .flat_map(|s| s.links.iter().zip(&s.links_named))
         .filter(|(_, named)| **named)
         .map(|(l, _)| l.to_string())
-        .chain(model.failed.iter().flat_map(|f| f.links.iter().map(Ident::to_string)))
+        .chain(
+            model
+                .failed
+                .iter()
+                .flat_map(|f| f.links.iter().map(Ident::to_string)),
+        )
         .collect()
 }
 
@@ -696,11 +701,13 @@ fn loadable_link(
             );
             return false;
         }
-        let (kind, hint) = if plan.defined.contains_key(&name) || plan.guides.contains_key(&name)
-        {
+        let (kind, hint) = if plan.defined.contains_key(&name) || plan.guides.contains_key(&name) {
             (format!("`{name}` is not a link"), hint)
         } else {
-            (format!("cannot find link `{name}`"), link_hints(model, hint))
+            (
+                format!("cannot find link `{name}`"),
+                link_hints(model, hint),
+            )
         };
         errors.push(
             link.span(),
@@ -723,14 +730,12 @@ fn loadable_link(
 /// `first`, the points of the link named, when one is near; else among every
 /// point). `what` says what the point is for ("a force acts at a point").
 fn unknown_point(model: &Model, plan: &Plan, at: &str, first: &[String], what: &str) -> String {
-    let near = nearest(at, first.iter().map(String::as_str))
-        .or_else(|| nearest(at, plan.owner.keys().map(String::as_str)));
-    let hint = near.map_or(String::new(), |p| format!("; did you mean `{p}`?"));
+    let mut hint = did_you_mean(at, first.iter().map(String::as_str));
+    if hint.is_empty() {
+        hint = did_you_mean(at, plan.owner.keys().map(String::as_str));
+    }
     match symbols(model).get(at) {
-        Some((cat, _)) => format!(
-            "`{at}` is {}, not a point; {what}{hint}",
-            cat.article()
-        ),
+        Some((cat, _)) => format!("`{at}` is {}, not a point; {what}{hint}", cat.article()),
         None => format!("cannot find point `{at}`{hint}"),
     }
 }
@@ -776,7 +781,16 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
         let points = &plan.links[&link].points;
         let at = m.at.to_string();
         if !plan.owner.contains_key(&at) {
-            errors.push(m.at.span(), unknown_point(model, plan, &at, points, "the centre of mass is a point of the link"));
+            errors.push(
+                m.at.span(),
+                unknown_point(
+                    model,
+                    plan,
+                    &at,
+                    points,
+                    "the centre of mass is a point of the link",
+                ),
+            );
             continue;
         }
         if !points.contains(&at) {
@@ -793,12 +807,14 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
     for f in &k.forces {
         let at = f.at.to_string();
         if !plan.owner.contains_key(&at) {
-            let on = f
-                .on
-                .as_ref()
-                .and_then(|l| plan.links.get(&l.to_string()))
-                .map_or(&[][..], |info| &info.points[..]);
-            errors.push(f.at.span(), unknown_point(model, plan, &at, on, "a force acts at a point"));
+            let on =
+                f.on.as_ref()
+                    .and_then(|l| plan.links.get(&l.to_string()))
+                    .map_or(&[][..], |info| &info.points[..]);
+            errors.push(
+                f.at.span(),
+                unknown_point(model, plan, &at, on, "a force acts at a point"),
+            );
             continue;
         }
         match &f.on {
