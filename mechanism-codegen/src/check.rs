@@ -1071,6 +1071,23 @@ pub fn expansion_check(
                 }
                 None => "it assembles nowhere in the range: check the dimensions".into(),
             };
+            // Guides parallel at every pose checked (a PRP whose guides turn
+            // together, or keep their directions): said directly, not as a
+            // failure at one input.
+            let parallel_everywhere = best.is_none()
+                && matches!(stmt.kind, Kind::Prp { .. })
+                && matches!(ev.solve(&[mid]), Err((_, Fault::Singular { .. })));
+            if let (true, Kind::Prp { g1, g2, .. }) = (parallel_everywhere, &stmt.kind) {
+                findings.errors.push(syn::Error::new(
+                    span,
+                    format!(
+                        "group `{}` (PRP) cannot assemble: guides `{g1}` and `{g2}` are parallel at every pose checked ({name} in {}), so the joint is at infinity for every input\n  = help: make the guides cross: change the angle of one of them",
+                        stmt.name,
+                        show_interval(r.lo, r.hi, input.angle)
+                    ),
+                ));
+                continue;
+            }
             let grashof = if !input.declared {
                 grashof(model, plan, stmt_index)
                     .map(|g| format!("{g}; "))

@@ -37,6 +37,7 @@ pub fn expand(input: TokenStream) -> TokenStream {
     validate::has_driver(&model, kinds_failed, &mut errors);
     validate::dof_matches(&model, &mut errors);
     validate::outputs_exist(&model, &mut errors);
+    validate::rpp_slot_crosses_guide(&model, &mut errors);
     let inputs = check::inputs(&model, &mut errors);
     let allowed = check::allowances(&model, &mut errors);
     if !errors.0.is_empty() {

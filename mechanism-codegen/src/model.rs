@@ -386,9 +386,12 @@ impl Scope for NumberScope<'_> {
                 format!("`{s}` is {what}{why}, not a dimension; dimensions are numbers, `params` or `const` names"),
             );
         }
+        // Where loads may stand, a misspelled load value is suggested too.
+        let loads = self.loads.iter().filter(|_| self.allow_loads);
         let all = self
             .params
             .iter()
+            .chain(loads)
             .map(|(p, _)| p.to_string())
             .chain(self.consts.keys().cloned())
             .collect::<Vec<_>>();
@@ -467,7 +470,7 @@ impl<'a> Args<'a> {
             self.errors.push(
                 self.span,
                 format!(
-                    "`{}` is missing its {role}; usage: `{}`",
+                    "missing argument for `{}`: its {role}; usage: `{}`",
                     self.kind, self.usage
                 ),
             );
@@ -674,6 +677,54 @@ pub fn usage(kind: &str) -> &'static str {
     }
 }
 
+/// How many arguments a statement kind takes: the fewest (every optional
+/// argument left out) and the most. A `point` takes three in its `(x, y)`
+/// form (a tuple third) and four in its polar form; a `guide` two (a fixed
+/// guide's origin and angle, or a carried guide's point and link) or three
+/// (a carried guide's angle).
+fn arity(kind: &str, args: &[Arg]) -> Option<(usize, usize)> {
+    Some(match kind {
+        "ground" => (2, 2),
+        "guide" => (2, 3),
+        "crank" => (3, 3),
+        "slider" => (2, 3),
+        "actuator" | "rrr" => (5, 5),
+        "rrp" => (4, 5),
+        "rpr" => (3, 4),
+        "prp" => (2, 4),
+        "rpp" => (3, 4),
+        "point" => match args.get(2) {
+            Some(Arg::Value(Expr::Tuple(_), _)) => (3, 3),
+            _ => (4, 4),
+        },
+        _ => return None,
+    })
+}
+
+/// The error for a statement written with fewer arguments than its kind
+/// takes, before any argument is read: read in order, the arguments would
+/// fill the wrong roles (`rrr(A, 3.5, O4, left)` would read `left` as the
+/// second length), and the message would be about a name instead of the
+/// count.
+fn too_few_arguments(stmt: &parse::Let, kind: &str) -> Option<String> {
+    let (least, most) = arity(kind, &stmt.args)?;
+    let given = stmt.args.len();
+    if given >= least {
+        return None;
+    }
+    let takes = if kind == "point" {
+        "it takes 4 (3 in the `(x, y)` form)".to_string()
+    } else if least == most {
+        format!("it takes {least}")
+    } else {
+        format!("it takes at least {least}")
+    };
+    Some(format!(
+        "missing argument(s) for `{kind}`: {given} given, {takes}; usage: `{}`",
+        usage(kind)
+    ))
+}
+
 /// Drivers other tools call differently, with the word to use here.
 fn unsupported_driver(kind: &str) -> Option<&'static str> {
     match kind {
@@ -699,6 +750,10 @@ fn lower_kind(stmt: &parse::Let, scope: &NumberScope<'_>, errors: &mut Errors) -
             ),
         };
         errors.push(stmt.kind.span(), hint);
+        return None;
+    }
+    if let Some(message) = too_few_arguments(stmt, &kind) {
+        errors.push(stmt.args_span, message);
         return None;
     }
     let mut a = Args {
@@ -1123,15 +1178,15 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                             l.links.iter().map(Ident::to_string).collect::<Vec<_>>().join(", ")
                         ),
                     );
-                } else if l.links.len() > want_links {
-                    errors.push(
-                        l.links[want_links.min(l.links.len() - 1)].span(),
-                        format!(
-                            "`{}` creates {want_links} link(s), but {} names are given after `as`",
-                            l.kind,
-                            l.links.len()
-                        ),
-                    );
+                } else if !l.links.is_empty() && l.links.len() != want_links {
+                    // Too many: on the first extra name; too few: on the last
+                    // name given, after which the missing ones go.
+                    let at = if l.links.len() > want_links {
+                        want_links
+                    } else {
+                        l.links.len() - 1
+                    };
+                    errors.push(l.links[at].span(), link_count_message(&l, want_links));
                 }
                 let mut links = Vec::new();
                 let mut links_named = Vec::new();
@@ -1276,6 +1331,68 @@ pub fn lower(def: Definition) -> (Model, Errors) {
         },
         errors,
     )
+}
+
+/// The links a statement kind creates, in the order `as` names them, in
+/// words (for messages).
+fn links_created(kind: &str) -> &'static str {
+    match kind {
+        "crank" => "the crank, turning about its pivot",
+        "slider" => "the block, sliding on the guide",
+        "actuator" => "the link from A, and the cylinder from B",
+        "rrr" => "L1 from A, L2 from B",
+        "rrp" => "the link from A, and the block on the guide",
+        "rpr" => "the block pinned at A, and the link pivoted at B",
+        "prp" => "the block on the first guide, and the block on the second",
+        "rpp" => "the block pinned at A, and the slotted link sliding on the guide",
+        _ => "",
+    }
+}
+
+/// A name for the link after `name` in a suggested `as (..)`: `link4` after
+/// `link3`, `rod2` after `rod`.
+fn next_name(name: &str) -> String {
+    let stem = name.trim_end_matches(|c: char| c.is_ascii_digit());
+    match name[stem.len()..].parse::<u64>() {
+        Ok(n) if n < u64::MAX => format!("{stem}{}", n + 1),
+        _ => format!("{name}2"),
+    }
+}
+
+/// The error for an `as` that names more or fewer links than the statement
+/// creates (`want`, one or two): says which links it creates and shows the
+/// `as` that names them all, from the names given.
+fn link_count_message(l: &parse::Let, want: usize) -> String {
+    let given: Vec<String> = l.links.iter().map(Ident::to_string).collect();
+    let mut names: Vec<String> = given.iter().take(want).cloned().collect();
+    while names.len() < want {
+        let next = next_name(names.last().map_or("link", String::as_str));
+        names.push(next);
+    }
+    let kind = &l.kind;
+    let what = links_created(&kind.to_string());
+    if want == 1 {
+        let extra = given[1..]
+            .iter()
+            .map(|n| format!("`{n}`"))
+            .collect::<Vec<_>>()
+            .join(", ");
+        format!(
+            "`{kind}` creates one link ({what}): name it alone, `as {}`, and remove {extra}",
+            names[0]
+        )
+    } else if given.len() > want {
+        format!(
+            "`{kind}` creates two links ({what}), and {} names are given: name the two, `as ({})`",
+            given.len(),
+            names.join(", ")
+        )
+    } else {
+        format!(
+            "`{kind}` creates two links ({what}): name both, `as ({})`",
+            names.join(", ")
+        )
+    }
 }
 
 /// Lowers `mass LINK { m = .., at = POINT, j = .. }`: `m` and `at` required,

@@ -227,6 +227,74 @@ fn another(name: &str) -> String {
     }
 }
 
+/// The links the user named (after `as`): the names to suggest. A statement
+/// written without `as` gets internal link names, which are never suggested.
+fn named_links(model: &Model) -> Vec<String> {
+    model
+        .stmts
+        .iter()
+        .flat_map(|s| s.links.iter().zip(&s.links_named))
+        .filter(|(_, named)| **named)
+        .map(|(l, _)| l.to_string())
+        .chain(
+            model
+                .failed
+                .iter()
+                .flat_map(|f| f.links.iter().map(Ident::to_string)),
+        )
+        .collect()
+}
+
+/// `true` for a link name the user wrote (not an internal one).
+fn is_named_link(model: &Model, name: &str) -> bool {
+    named_links(model).iter().any(|l| l == name)
+}
+
+/// For a link name that does not exist: the statements whose links have no
+/// names (written without `as`), and how to name them; "" when every link is
+/// named.
+fn unnamed_links_hint(model: &Model) -> String {
+    let unnamed: Vec<(String, String)> = model
+        .stmts
+        .iter()
+        .filter(|s| s.links_named.iter().any(|named| !named))
+        .map(|s| {
+            let kind = s.kind_token.to_string();
+            let names = crate::model::usage(&kind)
+                .split_once(" as ")
+                .map(|(_, after)| after.split(" slide").next().unwrap_or(after))
+                .unwrap_or("LINK");
+            let written = format!("`let {} = {kind}(..)`", s.name);
+            let named = format!("`let {} = {kind}(..) as {names}`", s.name);
+            (written, named)
+        })
+        .collect();
+    let (written, named): (Vec<String>, Vec<String>) = unnamed.into_iter().unzip();
+    match written.len() {
+        0 => String::new(),
+        1 => format!(
+            "{} has no `as`, so its links have no names: name them, {}",
+            written[0], named[0]
+        ),
+        _ => format!(
+            "{} have no `as`, so their links have no names: name them, {}",
+            written.join(" and "),
+            named.join(", ")
+        ),
+    }
+}
+
+/// The hints for a link name that does not exist: the nearest named link
+/// (`near`, a [`did_you_mean`] clause) and the statements whose links have
+/// no names ([`unnamed_links_hint`]).
+fn link_hints(model: &Model, near: String) -> String {
+    match (near.is_empty(), unnamed_links_hint(model)) {
+        (_, unnamed) if unnamed.is_empty() => near,
+        (true, unnamed) => format!("; {unnamed}"),
+        (false, unnamed) => format!("{near} Or, for a link without a name: {unnamed}"),
+    }
+}
+
 /// Where `name` is defined, in words, for messages about a second
 /// definition outside the statements (a load value); `None` when it is not.
 fn defined_where(model: &Model, name: &Ident) -> Option<String> {
@@ -337,20 +405,50 @@ pub fn references_resolve(model: &Model, errors: &mut Errors) {
                 None => {
                     let candidates: Vec<&str> = table
                         .iter()
-                        .filter(|(_, (c, _))| *c == want)
+                        .filter(|(n, (c, _))| {
+                            *c == want && (want != Category::Link || is_named_link(model, n))
+                        })
                         .map(|(n, _)| n.as_str())
                         .collect();
-                    let what = match want {
-                        Category::Link => "no link named",
-                        Category::Guide => "no guide named",
-                        _ => "cannot find point",
+                    let near = did_you_mean(&name, candidates);
+                    let (what, hint) = match want {
+                        Category::Link => ("no link named", link_hints(model, near)),
+                        Category::Guide => ("no guide named", near),
+                        _ => ("cannot find point", near),
                     };
-                    errors.push(
-                        r.span(),
-                        format!("{what} `{name}`{}", did_you_mean(&name, candidates)),
-                    );
+                    errors.push(r.span(), format!("{what} `{name}`{hint}"));
                 }
             }
+        }
+    }
+}
+
+/// Rule: an RPP's slot crosses its guide. The slotted link translates along
+/// the guide without turning relative to it (a carried guide turns the slot
+/// with it), so the slot keeps its angle to the guide at every pose: a slot
+/// parallel to the guide is parallel at every input, and the joint is at
+/// infinity everywhere. Known at compile time for a slot angle that folds to
+/// a number; "parallel" is the test the run-time solve applies
+/// (`mechanism_core::dyad::rpp`: `|sin(slot)| <= 16 eps`, in f64 here).
+pub fn rpp_slot_crosses_guide(model: &Model, errors: &mut Errors) {
+    for stmt in &model.stmts {
+        let Kind::Rpp { guide, slot, .. } = &stmt.kind else {
+            continue;
+        };
+        let Some(angle) = slot.fold() else {
+            continue;
+        };
+        if angle.sin().abs() <= 16.0 * f64::EPSILON {
+            // Rounded to 1e-9 deg, so that `180 deg` (rounded once to
+            // radians and back) shows as 180.
+            let deg = (angle.to_degrees() * 1e9).round() / 1e9;
+            errors.push(
+                slot.span,
+                format!(
+                    "the slot of `{}` is at {deg} deg to guide `{guide}`, parallel to it; the slotted link slides along `{guide}` without turning, so the slot stays parallel at every pose and the block's pin is at infinity for every input: give the slot an angle across the guide (e.g. `90 deg`, a slot perpendicular to it)",
+                    stmt.name
+                ),
+            );
         }
     }
 }
@@ -494,13 +592,17 @@ pub fn outputs_exist(model: &Model, errors: &mut Errors) {
             None => {
                 let candidates = table
                     .iter()
-                    .filter(|(_, (c, _))| matches!(c, Category::Point | Category::Link | Category::Slide))
+                    .filter(|(n, (c, _))| match c {
+                        Category::Point | Category::Slide => true,
+                        Category::Link => is_named_link(model, n),
+                        _ => false,
+                    })
                     .map(|(n, _)| n.as_str());
                 errors.push(
                     o.span(),
                     format!(
                         "this definition cannot give `{name}`: no point, link or slide has that name{}",
-                        did_you_mean(&name, candidates)
+                        link_hints(model, did_you_mean(&name, candidates))
                     ),
                 );
             }
@@ -590,7 +692,8 @@ fn loadable_link(
 ) -> bool {
     let name = link.to_string();
     if !plan.links.contains_key(&name) {
-        let hint = did_you_mean(&name, plan.links.keys().map(String::as_str));
+        let named = named_links(model);
+        let hint = did_you_mean(&name, named.iter().map(String::as_str));
         if name == "ground" || name == "frame" {
             errors.push(
                 link.span(),
@@ -598,10 +701,13 @@ fn loadable_link(
             );
             return false;
         }
-        let kind = if plan.defined.contains_key(&name) || plan.guides.contains_key(&name) {
-            format!("`{name}` is not a link")
+        let (kind, hint) = if plan.defined.contains_key(&name) || plan.guides.contains_key(&name) {
+            (format!("`{name}` is not a link"), hint)
         } else {
-            format!("cannot find link `{name}`")
+            (
+                format!("cannot find link `{name}`"),
+                link_hints(model, hint),
+            )
         };
         errors.push(
             link.span(),
@@ -617,6 +723,21 @@ fn loadable_link(
         return false;
     }
     true
+}
+
+/// The error for a load's point `at` that is no point: what it is instead,
+/// or that nothing has that name, with the nearest point's name (among
+/// `first`, the points of the link named, when one is near; else among every
+/// point). `what` says what the point is for ("a force acts at a point").
+fn unknown_point(model: &Model, plan: &Plan, at: &str, first: &[String], what: &str) -> String {
+    let mut hint = did_you_mean(at, first.iter().map(String::as_str));
+    if hint.is_empty() {
+        hint = did_you_mean(at, plan.owner.keys().map(String::as_str));
+    }
+    match symbols(model).get(at) {
+        Some((cat, _)) => format!("`{at}` is {}, not a point; {what}{hint}", cat.article()),
+        None => format!("cannot find point `{at}`{hint}"),
+    }
 }
 
 /// Rule (after planning): the force analysis is asked for consistently, masses
@@ -659,6 +780,19 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
         with_mass.insert(link.clone(), m.link.clone());
         let points = &plan.links[&link].points;
         let at = m.at.to_string();
+        if !plan.owner.contains_key(&at) {
+            errors.push(
+                m.at.span(),
+                unknown_point(
+                    model,
+                    plan,
+                    &at,
+                    points,
+                    "the centre of mass is a point of the link",
+                ),
+            );
+            continue;
+        }
         if !points.contains(&at) {
             errors.push(
                 m.at.span(),
@@ -673,10 +807,13 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
     for f in &k.forces {
         let at = f.at.to_string();
         if !plan.owner.contains_key(&at) {
-            let points = plan.owner.keys().map(String::as_str);
+            let on =
+                f.on.as_ref()
+                    .and_then(|l| plan.links.get(&l.to_string()))
+                    .map_or(&[][..], |info| &info.points[..]);
             errors.push(
                 f.at.span(),
-                format!("cannot find point `{at}`{}", did_you_mean(&at, points)),
+                unknown_point(model, plan, &at, on, "a force acts at a point"),
             );
             continue;
         }

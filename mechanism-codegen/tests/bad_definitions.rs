@@ -947,6 +947,121 @@ fn cases() -> Vec<Case> {
             at: "crank(O4, 30.0, ^theta)",
             says: &["`theta` is already defined as the input of the `let A = crank(..)` statement above"],
         },
+        // ---- arity and link names (review 9) ----
+        Case {
+            name: "rrr without its second length",
+            src: four_bar("    let C = rrr(B, 50.0, O4, left) as (link5, link6);"),
+            at: "rrr^(B, 50.0, O4, left)",
+            says: &[
+                "missing argument(s) for `rrr`: 4 given, it takes 5",
+                "usage: `rrr(A, l1, B, l2, left|right)",
+            ],
+        },
+        Case {
+            name: "crank without its radius",
+            src: four_bar("    let D = crank(O4, phi) as link5;"),
+            at: "crank^(O4, phi)",
+            says: &["missing argument(s) for `crank`: 2 given, it takes 3"],
+        },
+        Case {
+            name: "point without its angle",
+            src: four_bar("    let P = point(link3, from A, 10.0);"),
+            at: "point^(link3, from A, 10.0)",
+            says: &["missing argument(s) for `point`", "(x, y)"],
+        },
+        Case {
+            name: "rrp without its mode",
+            src: four_bar("    let g = guide(O2, 0 deg);\n    let C = rrp(B, 50.0, g) as (rod, ram);"),
+            at: "rrp^(B, 50.0, g)",
+            says: &["missing argument(s) for `rrp`: 3 given, it takes at least 4"],
+        },
+        Case {
+            name: "rrr named by one name",
+            src: four_bar("    let C = rrr(B, 50.0, O4, 90.0, left) as link5;"),
+            at: "as ^link5",
+            says: &["`rrr` creates two links (L1 from A, L2 from B): name both, `as (link5, link6)`"],
+        },
+        Case {
+            name: "rpp named by one name",
+            src: four_bar("    let g = guide(O2, 0 deg);\n    let C = rpp(B, g, 90 deg) as (blk);"),
+            at: "as (^blk)",
+            says: &["`rpp` creates two links", "`as (blk, blk2)`"],
+        },
+        Case {
+            name: "rrr named by three names",
+            src: four_bar("    let C = rrr(B, 50.0, O4, 90.0, left) as (link5, link6, link7);"),
+            at: "link6, ^link7",
+            says: &["creates two links", "3 names are given", "`as (link5, link6)`"],
+        },
+        Case {
+            name: "mass on a link of a statement without `as`",
+            src: body(
+                "    let O2 = ground(0.0, 0.0);
+    let O4 = ground(130.0, 0.0);
+    let A = crank(O2, 40.0, theta);
+    let B = rrr(A, 120.0, O4, 100.0, left);
+    mass link3 { m = 1.0, at = B };",
+            ),
+            at: "mass ^link3",
+            says: &[
+                "cannot find link `link3`",
+                "`let A = crank(..)` and `let B = rrr(..)` have no `as`",
+                "`let B = rrr(..) as (LINK1, LINK2)`",
+            ],
+        },
+        Case {
+            name: "point on a link of a statement without `as`",
+            src: body(
+                "    let O2 = ground(0.0, 0.0);
+    let O4 = ground(130.0, 0.0);
+    let A = crank(O2, 40.0, theta) as link2;
+    let B = rrr(A, 120.0, O4, 100.0, left);
+    let P = point(link3, from A, 10.0, 0 deg);",
+            ),
+            at: "point(^link3",
+            says: &[
+                "no link named `link3`; did you mean `link2`? Or",
+                "`let B = rrr(..)` has no `as`",
+            ],
+        },
+        Case {
+            name: "mass at an undefined point",
+            src: loaded("    mass link4 { m = 1.0, at = Bb };"),
+            at: "at = ^Bb",
+            says: &["cannot find point `Bb`; did you mean `B`?"],
+        },
+        Case {
+            name: "force at a guide",
+            src: loaded("    force at line = (1.0, 0.0);"),
+            at: "force at ^line",
+            says: &["`line` is a guide, not a point"],
+        },
+        Case {
+            name: "misspelled load value in a force",
+            src: loaded("    loads { cut = 0.0 }\n    force at P = (cutt, 0.0);"),
+            at: "(^cutt, 0.0)",
+            says: &["`cutt`", "did you mean `cut`?"],
+        },
+        Case {
+            name: "rpp slot parallel to its guide",
+            src: four_bar("    let g = guide(O2, 0 deg);\n    let C = rpp(B, g, 180 deg) as (blk, body) slide (s1, s2);"),
+            at: "g, ^180 deg",
+            says: &["at 180 deg to guide `g`", "parallel at every pose", "`90 deg`"],
+        },
+        Case {
+            name: "prp whose guides are parallel at every pose",
+            src: body(
+                "    let O = ground(0.0, 0.0);
+    let g = guide(O, 0 deg);
+    let S = slider(g, x) as blk;
+    let g2 = guide(S, blk, 0 deg);
+    let h = guide((0.0, 1.0), 0 deg);
+    let C = prp(g2, h) as (l1, l2) slide (s1, s2);
+    range x = (0.0, 1.0);",
+            ),
+            at: "let ^C = prp",
+            says: &["guides `g2` and `h` are parallel at every pose", "make the guides cross"],
+        },
     ]
 }
 
