@@ -1431,7 +1431,12 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         }))
         .filter(|i| unique(i))
         .collect();
-    let forces_stub = if model.kinetics.declared || model.level == Level::Forces {
+    // With a force analysis the stub keeps its shape too: `NameLoads` with
+    // `Default`, `solve` taking the loads, a `forces` field in the solution
+    // (the reactions' own fields come from a valid model only).
+    let (forces_stub, stub_loads_param, stub_forces_field) = if model.kinetics.declared
+        || model.level == Level::Forces
+    {
         let forces_ty = format_ident!("{}Forces", name);
         let loads_ty = format_ident!("{}Loads", name);
         let loads: Vec<&Ident> = model.kinetics.loads.iter().map(|(n, _)| n).collect();
@@ -1442,11 +1447,14 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
                 quote! {
                     #[allow(non_snake_case, dead_code)]
                     #vis struct #loads_ty<T = ::core::primitive::f64> { #(pub #loads: T,)* }
+                    impl<T: ::mechanism::Real> ::core::default::Default for #loads_ty<T> {
+                        fn default() -> Self { ::core::unimplemented!() }
+                    }
                 },
                 quote!(, loads: &#loads_ty<T>),
             )
         };
-        quote! {
+        let stub = quote! {
             #loads_item
             #[allow(dead_code)]
             #vis struct #forces_ty<T: ::mechanism::Real = ::core::primitive::f64> { pub condition: T, pub power_residual: T }
@@ -1454,9 +1462,10 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
             impl<T: ::mechanism::Real> #name<T> {
                 pub fn forces(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, acc: &#acceleration_ty<T> #loads_param) -> ::core::result::Result<#forces_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
             }
-        }
+        };
+        (stub, loads_param, quote!(pub forces: #forces_ty<T>,))
     } else {
-        quote!()
+        (quote!(), quote!(), quote!())
     };
     quote! {
         #(#errors)*
@@ -1477,6 +1486,7 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         #[allow(dead_code)]
         #vis struct #solution_ty<T: ::mechanism::Real = ::core::primitive::f64> {
             pub position: #position_ty<T>, pub velocity: #velocity_ty<T>, pub acceleration: #acceleration_ty<T>,
+            #stub_forces_field
         }
         #[allow(dead_code, unused_variables)]
         impl<T: ::mechanism::Real> #name<T> {
@@ -1484,7 +1494,7 @@ pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
             pub fn position_cos_sin(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
             pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
             pub fn acceleration(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#acceleration_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
-            pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
+            pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T> #stub_loads_param) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
         }
     }
 }
