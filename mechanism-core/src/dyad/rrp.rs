@@ -211,7 +211,7 @@ pub fn position<T: Real>(
 /// band anyway), so the root is the one an unscaled product in range gives.
 #[cold]
 #[inline(never)]
-fn scaled_root<T: Real>(gap: T, sum: T, l: T) -> T {
+pub(crate) fn scaled_root<T: Real>(gap: T, sum: T, l: T) -> T {
     let (down, up) = pow2_scale(l);
     ((gap * down) * (sum * down)).sqrt_kernel() * up
 }
@@ -231,14 +231,18 @@ pub(crate) fn pow2_scale<T: Real>(x: T) -> (T, T) {
 }
 
 /// `|r|` (L) with no overflow or underflow of the squares: `sqrt(dot(r, r))`
-/// while that is a normal number (f32 lengths about 1e-19 .. 1e19, f64
-/// 1e-154 .. 1e154), else (cold) the components scaled by the power of two
-/// below the larger one first, exactly.
+/// while that is at least `min_normal / eps^2` and finite (f32 lengths about
+/// 1e-12 .. 1e19, f64 1e-138 .. 1e154), else (cold) the components scaled
+/// by the power of two below the larger one first, exactly. The lower
+/// threshold leaves room for a square that is subnormal beside a larger
+/// one: below half an ulp of the sum, it changes nothing, so the result is
+/// bit for bit the scaled one's (what makes the group's outputs scale
+/// exactly with powers of two).
 #[inline(always)]
 pub(crate) fn length_any<T: Real>(r: &Vector2<T>) -> T {
     let q = dot(r, r);
     let (lo, hi) = normal_range::<T>();
-    if q >= lo && q <= hi {
+    if q >= lo / (T::eps() * T::eps()) && q <= hi {
         q.sqrt_kernel()
     } else {
         scaled_length(r)
