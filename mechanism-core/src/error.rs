@@ -317,8 +317,8 @@ impl<T: Real> Fault<T> {
                 f,
                 "cannot assemble: the distance between the known joints is {} outside \
                  the range the group can reach (nearest reachable distance {}, in the \
-                 scene's length unit); the input lies outside the mechanism's range of \
-                 motion, or a dimension is wrong",
+                 unit of the link lengths); the input lies outside the mechanism's range \
+                 of motion, or a dimension is wrong",
                 Rounded(miss),
                 Rounded(reach)
             ),
@@ -527,8 +527,8 @@ mod tests {
         // Same text for both precisions when the numbers are exact.
         let want = "RRR: cannot assemble: the distance between the known joints is 5 \
                     outside the range the group can reach (nearest reachable distance 5, \
-                    in the scene's length unit); the input lies outside the mechanism's \
-                    range of motion, or a dimension is wrong";
+                    in the unit of the link lengths); the input lies outside the \
+                    mechanism's range of motion, or a dimension is wrong";
         assert_eq!(too_far::<f32>().to_string(), want);
         assert_eq!(too_far::<f64>().to_string(), want);
         // -0.1 as f32 prints as 0.1, and so does its exact widening to f64

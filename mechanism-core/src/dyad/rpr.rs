@@ -30,9 +30,8 @@
 //! Range of scale: `|A - B|`, the product under the square root for `s`,
 //! and `|v|` before normalizing are second powers of the lengths; where
 //! they leave the normal range of `T` they are formed from factors scaled
-//! exactly by a power of two (cold paths, shared with the RRP), the axis
-//! is built from `(A - B) / |A - B|` (no product of two lengths), and the
-//! rates divide `A - B` by the determinant before the dot product with the
+//! exactly by a power of two (cold paths, shared with the RRP; the axis's
+//! `s (A - B)` too, on the same branch as `|A - B|`), and the rates divide `A - B` by the determinant before the dot product with the
 //! velocities. Measured within 1.0 `eps / kappa` (axis, `s / |A - B|`) and
 //! 1.4 `eps |vA| / kappa^3` (rates) of the double-double reference for f32
 //! lengths 1e-30 .. 1e34 and f64 1e-150 .. 1e150, and bit for bit
@@ -43,7 +42,7 @@
 //! pose the reciprocal of the determinant `s` overflows for f32 lengths
 //! below about 1e-31, and a result that exceeds `T` is `NonFinite`.
 
-use crate::dyad::rrp::{length_any, scaled_root};
+use crate::dyad::rrp::{length_any, pow2_scale, scaled_length, scaled_root};
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
     abs, check_det_condition, cross, difference, dot, finite, finite_vec, length, max, min,
@@ -116,7 +115,17 @@ pub fn position<T: Real>(
 ) -> Result<RprPosition<T>, Error<T>> {
     let offset = finite(offset, P, "RPR slide offset")?;
     let p = finite_vec(a - b, P, "RPR joint distance")?;
-    let dist = finite(length_any(&p), P, "RPR joint distance")?;
+    // `|p|` as `length_any` forms it, keeping whether the plain form was
+    // used: the axis below takes the same branch.
+    let q = dot(&p, &p);
+    let (lo, hi) = normal_range::<T>();
+    let plain = q >= lo / (T::eps() * T::eps()) && q <= hi;
+    let dist = if plain {
+        q.sqrt_kernel()
+    } else {
+        scaled_length(&p)
+    };
+    let dist = finite(dist, P, "RPR joint distance")?;
     let e = abs(offset);
     let gap = dist - e; // < 0: A inside the circle the slide line is tangent to
     let band = T::lit(4.0) * T::eps() * e;
@@ -147,20 +156,24 @@ pub fn position<T: Real>(
     // factors scaled exactly by a power of two where it would leave the
     // normal range (as in the RRP's half chord; cold path).
     let (sum, prod) = (dist + e, gap * (dist + e));
-    let (lo, hi) = normal_range::<T>();
     let root = if prod >= lo && prod <= hi {
         prod.sqrt_kernel()
     } else {
         scaled_root(gap, sum, dist)
     };
     let s = mode.sign::<T>() * root;
-    // |p|^2 u = s p - offset perp(p) (expand p = s u + offset perp(u)), with
-    // `p / |p|` taken first: no product of two lengths (`s p` is one,
-    // outside the normal range for f32 lengths below about 1e-19 or above
-    // about 1e19); `v` has length `|p|`, normalized to remove rounding.
-    let p_unit = p / dist;
-    let v = p_unit * s - perp(&p_unit) * offset;
-    let norm = length_any(&v);
+    // |p|^2 u = s p - offset perp(p) (expand p = s u + offset perp(u)); divided
+    // by |p| to keep magnitudes near |p| (exact in exact configurations: a
+    // 3-4-5 triangle gives the axis (1, 0)), and normalized to remove
+    // rounding. `s p` is a product of two lengths: where `|p|^2` is outside
+    // the plain range, every length is scaled exactly by a power of two
+    // first (cold path), which gives the same bits as at unit scale.
+    let v = if plain {
+        (p * s - perp(&p) * offset) / dist
+    } else {
+        scaled_axis(&p, s, offset, dist)
+    };
+    let norm = length(&v);
     if !norm.finite() {
         return Err(Error::new(P, Fault::NonFinite { what: "RPR axis" }));
     }
@@ -176,6 +189,18 @@ pub fn position<T: Real>(
     let axis = finite_vec(v / norm, P, "RPR axis")?;
     let s = finite(s, P, "RPR slide displacement s")?;
     Ok(RprPosition { axis, s })
+}
+
+/// `(s p - offset perp(p)) / |p|` with `p`, `s`, `offset` and `|p|` first
+/// scaled by the power of two below `|p|` (exact), for `|p|` outside the
+/// plain range of [`length_any`] (cold path of [`position`]): a vector of
+/// length about 1, the direction of the axis.
+#[cold]
+#[inline(never)]
+fn scaled_axis<T: Real>(p: &Vector2<T>, s: T, offset: T, dist: T) -> Vector2<T> {
+    let (down, _) = pow2_scale(dist);
+    let (p, s, offset, dist) = (p * down, s * down, offset * down, dist * down);
+    (p * s - perp(&p) * offset) / dist
 }
 
 /// Determinant of the rate system, `dot(u, A - B) = s`, checked against

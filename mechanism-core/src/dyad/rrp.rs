@@ -252,7 +252,7 @@ pub(crate) fn length_any<T: Real>(r: &Vector2<T>) -> T {
 /// [`length_any`]'s cold path: 0 for a zero vector, NaN for a non-finite one.
 #[cold]
 #[inline(never)]
-fn scaled_length<T: Real>(r: &Vector2<T>) -> T {
+pub(crate) fn scaled_length<T: Real>(r: &Vector2<T>) -> T {
     let m = max(abs(r.x), abs(r.y));
     if !(m > T::zero() && m.finite()) {
         // 0 for a zero vector; NaN or infinity as the plain form gives.
