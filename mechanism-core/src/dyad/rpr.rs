@@ -33,7 +33,7 @@
 //! exactly by a power of two (cold paths, shared with the RRP; the axis's
 //! `s (A - B)` too, on the same branch as `|A - B|`), and the rates divide `A - B` by the determinant before the dot product with the
 //! velocities. Measured within 1.0 `eps / kappa` (axis, `s / |A - B|`) and
-//! 1.4 `eps |vA| / kappa^3` (rates) of the double-double reference for f32
+//! 1.3 `eps |vA| / kappa^3` (rates) of the double-double reference for f32
 //! lengths 1e-30 .. 1e34 and f64 1e-150 .. 1e150, and bit for bit
 //! scale-invariant under powers of two for f32 lengths 1e-30 .. 1e30 and
 //! f64 1e-301 .. 1e295 (tests below). Before, f32 lengths below about 1e-23
@@ -375,7 +375,7 @@ mod tests {
     }
 
     /// Bound on both figures, as for the RRP: the measured worst (printed
-    /// by the test) is 0.97 for the axis and 1.39 for the rates, so 4 leaves
+    /// by the test) is 0.97 for the axis and 1.31 for the rates, so 4 leaves
     /// a factor 2.9 while a lost bit of `|A - B|` or of `s` shows.
     const BOUND: f64 = 4.0;
 
