@@ -376,7 +376,7 @@ mod tests {
 
     /// Bound on both figures, as for the RRP: the measured worst (printed
     /// by the test) is 0.97 for the axis and 1.31 for the rates, so 4 leaves
-    /// a factor 2.9 while a lost bit of `|A - B|` or of `s` shows.
+    /// a factor 3 while a lost bit of `|A - B|` or of `s` shows.
     const BOUND: f64 = 4.0;
 
     fn sweep<T: Real>(exponents: impl Iterator<Item = i32>) -> (f64, f64) {
