@@ -371,7 +371,7 @@ impl<T: Real> Fault<T> {
                 write!(f, "{what} must be positive, got {}", Rounded(value))
             }
             Fault::Negative { what, value } => {
-                write!(f, "{what} must be zero or positive, got {value:e}")
+                write!(f, "{what} must be zero or positive, got {}", Rounded(value))
             }
         }
     }
