@@ -516,3 +516,37 @@ fn four_bar_far_from_unit_lengths() {
         assert_eq!(found.2, 2, "position only, scale {k:e}");
     }
 }
+
+#[test]
+fn slider_crank_far_from_unit_lengths() {
+    // f32 lengths of about 1e-12 and 1e9: the RRP's fourth powers (its rate
+    // system's scale) are subnormal or infinite there, and the scalar path
+    // scales them exactly (`dyad::rrp`); the batch must give the scalar
+    // path's statuses and values. The end-to-end check, as for the four-bar
+    // above: the kernel's rate check already hands these elements back (this
+    // passes without its explicit guard on the fourth power, which keeps it
+    // so whatever the rounding of that check).
+    for k in [1.0e-12f64, 1.0e9] {
+        let q = angles(500);
+        let n = q.len();
+        let (w, a) = (rates(n, 3.0, None), rates(n, -2.0, None));
+        let m = SliderCrank::<f32> {
+            crank: (0.1 * k) as f32,
+            rod: (0.4 * k) as f32,
+            offset: (0.02 * k) as f32,
+        };
+        let found = compare!(
+            m,
+            f32,
+            SliderCrank,
+            [theta],
+            [B, A],
+            [link3, x],
+            one("theta", q),
+            one("theta", w),
+            one("theta", a)
+        );
+        // NaN and infinite angles fail; every other element is solved.
+        assert_eq!(found.2, 2, "scale {k:e}");
+    }
+}

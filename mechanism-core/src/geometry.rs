@@ -303,6 +303,56 @@ pub fn plus<T: Real>(x: Option<&Vector2<T>>, v: Vector2<T>) -> Vector2<T> {
     }
 }
 
+/// `(2^-e, 2^e)` for `2^e <= x < 2^(e+1)`, `x > 0` finite, with `e` kept
+/// within `T`'s normal exponents (`f32`: -126 ..= 126, `f64`: -1022 ..=
+/// 1022) so both are normal numbers of `T`. From the bits of `x` widened to
+/// `f64` (exact): no logarithm, no libm.
+#[inline]
+pub(crate) fn pow2_scale<T: Real>(x: T) -> (T, T) {
+    let bits = x.as_f64().to_bits();
+    let e = ((bits >> 52) & 0x7ff) as i32 - 1023;
+    let max = if crate::scalar::single::<T>() {
+        126
+    } else {
+        1022
+    };
+    let e = e.clamp(-max, max);
+    let pow2 = |k: i32| f64::from_bits(((k + 1023) as u64) << 52);
+    (T::lit(pow2(-e)), T::lit(pow2(e)))
+}
+
+/// `|r|` (L) with no overflow or underflow of the squares: `sqrt(dot(r, r))`
+/// while that is at least `min_normal / eps^2` and finite (f32 lengths about
+/// 1e-12 .. 1e19, f64 1e-138 .. 1e154), else (cold) the components scaled
+/// by the power of two below the larger one first, exactly. The lower
+/// threshold leaves room for a square that is subnormal beside a larger
+/// one: below half an ulp of the sum, it changes nothing, so the result is
+/// bit for bit the scaled one's (what makes the group's outputs scale
+/// exactly with powers of two).
+#[inline(always)]
+pub(crate) fn length_any<T: Real>(r: &Vector2<T>) -> T {
+    let q = dot(r, r);
+    let (lo, hi) = normal_range::<T>();
+    if q >= lo / (T::eps() * T::eps()) && q <= hi {
+        q.sqrt_kernel()
+    } else {
+        scaled_length(r)
+    }
+}
+
+/// [`length_any`]'s cold path: 0 for a zero vector, NaN for a non-finite one.
+#[cold]
+#[inline(never)]
+pub(crate) fn scaled_length<T: Real>(r: &Vector2<T>) -> T {
+    let m = max(abs(r.x), abs(r.y));
+    if !(m > T::zero() && m.finite()) {
+        // 0 for a zero vector; NaN or infinity as the plain form gives.
+        return (r.x * r.x + r.y * r.y).sqrt_kernel();
+    }
+    let (down, up) = pow2_scale(m);
+    length(&(r * down)) * up
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -42,12 +42,13 @@
 //! pose the reciprocal of the determinant `s` overflows for f32 lengths
 //! below about 1e-31, and a result that exceeds `T` is `NonFinite`.
 
-use crate::dyad::rrp::{length_any, pow2_scale, scaled_length, scaled_root};
+use crate::dyad::rrp::scaled_root;
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
     abs, check_det_condition, cross, difference, dot, finite, finite_vec, length, max, min,
     normal_range, perp, SINGULAR_RELATIVE,
 };
+use crate::geometry::{length_any, pow2_scale, scaled_length};
 use crate::mode::Mode;
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};

@@ -32,7 +32,8 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, all_finite, check_det, cross, difference, dot, length, min, normal_range, perp, plus,
+    abs, all_finite, check_det, cross, difference, dot, length, max, min, normal_range, perp, plus,
+    pow2_scale,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -131,6 +132,10 @@ pub fn position<T: Real>(
     // The ordinary case in three comparisons (NaN fails each); anything else
     // is sorted out on the cold path, in the order of the doc comment.
     if !(l1 > T::zero() && l2 > T::zero() && dsq > T::zero()) {
+        // `|B - A|^2` underflowed to 0 (lengths below 1e-23 in f32).
+        if needs_rescale(d, l1, l2) {
+            return rescaled(a, d, l1, l2, mode);
+        }
         return Err(position_error(d, l1, l2, Check::Degenerate));
     }
     // Heron's factors; a negative one means the triangle does not close.
@@ -142,6 +147,11 @@ pub fn position<T: Real>(
     // `|l1 - l2|` at the two edges.
     let band = T::lit(8.0) * T::eps() * sum;
     if outer < -(band * sum) || inner < -(band * abs(diff)) {
+        // An overflowed square reads as out of reach (f32 lengths above
+        // 1e19): solved scaled instead.
+        if needs_rescale(d, l1, l2) {
+            return rescaled(a, d, l1, l2, mode);
+        }
         return Err(position_error(d, l1, l2, Check::Reach));
     }
     let clamp = |x: T| if x < T::zero() { T::zero() } else { x };
@@ -157,6 +167,20 @@ pub fn position<T: Real>(
     let root = if prod >= lo && prod <= hi {
         prod.sqrt_kernel()
     } else {
+        // Where the product is normal the lengths are too (f32: 1.4e-10 ..
+        // 2.4e11, since `prod <= 16 L^4` and the rounding band keeps a
+        // non-zero `inner` above `eps L^2`), and so are the third powers
+        // below. Here they may not be: `d * along` (L^3) is subnormal for
+        // f32 lengths below about 4.6e-11 (at 1e-14 `C` came out 3 % off,
+        // at 1e-18 on `A`, with no error) or overflows above 7e12.
+        // Rescaled whenever not yet at unit scale, so that the result is
+        // the plain path's at that scale: bit for bit the same, times the
+        // power of two, at every scale (what a unit change must give). At
+        // unit scale a product still out of range is the edge of assembly,
+        // where the two roots are taken apart.
+        if !at_unit_scale(d, l1, l2) {
+            return rescaled(a, d, l1, l2, mode);
+        }
         split_root(outer, inner)
     };
     let height = mode.sign::<T>() * root;
@@ -164,9 +188,9 @@ pub fn position<T: Real>(
     // The reciprocal runs beside the square root (one rounding more than two
     // divisions, off the critical path).
     let inv_2dsq = T::one() / (T::lit(2.0) * dsq);
-    // `d * along` is a third power of the lengths (f32: normal for lengths
-    // of about 3e-13 .. 5e12); scaling the coefficients first would lift that
-    // limit but round twice where a 3-4-5 triangle is now exact.
+    // `d * along` is a third power of the lengths: normal here (lengths out
+    // of its range took `rescaled` above); scaling the coefficients instead
+    // would round twice where a 3-4-5 triangle is now exact.
     let r1 = (d * along + perp(&d) * height) * inv_2dsq;
     let c = a + r1;
     // One test for every non-finite input that got this far (an infinite
@@ -183,6 +207,83 @@ pub fn position<T: Real>(
         r1,
         r2: r1 - d,
         det: T::lit(0.5) * height,
+    })
+}
+
+/// `true` when the group's lengths are finite and positive, `B != A`, and
+/// the cube of the largest of `l1`, `l2`, `|B - A|` (per component) is not
+/// a normal number at full precision (`[min_normal / eps, max / 8]`): then
+/// [`position`]'s squares, products and third powers may underflow or
+/// overflow, and [`rescaled`] solves it instead. After that scaling the
+/// largest lies in `[1, 2)`, so this is `false` there (no second rescale).
+#[inline(never)]
+fn needs_rescale<T: Real>(d: Vector2<T>, l1: T, l2: T) -> bool {
+    let m = max(max(l1, l2), max(abs(d.x), abs(d.y)));
+    let (lo, hi) = normal_range::<T>();
+    let cube = m * m * m;
+    all_finite([d.x, d.y, l1, l2])
+        && l1 > T::zero()
+        && l2 > T::zero()
+        && m > T::zero()
+        && !(cube >= lo / T::eps() && cube <= hi / T::lit(8.0))
+}
+
+/// `true` when the largest of `l1`, `l2`, `|B - A|` (per component) lies in
+/// `[1, 2)`, as after [`rescaled`]'s scaling, or is not finite (left to the
+/// `NonFinite` checks).
+#[inline(never)]
+fn at_unit_scale<T: Real>(d: Vector2<T>, l1: T, l2: T) -> bool {
+    let m = max(max(l1, l2), max(abs(d.x), abs(d.y)));
+    !m.finite() || (m >= T::one() && m < T::lit(2.0))
+}
+
+/// [`position`] for a group whose lengths' third powers leave the normal
+/// range (cold path): `B - A`, `l1` and `l2` scaled by `2^-e`, `2^e <= m <
+/// 2^(e+1)` the largest of them, solved there and scaled back, exactly (the
+/// joint `C = A + r1` is the one rounding). An error's numbers are scaled
+/// back too. A length below `eps` of the largest is then 0 or subnormal, as
+/// it is against the others in any case.
+#[cold]
+#[inline(never)]
+fn rescaled<T: Real>(
+    a: &Point2<T>,
+    d: Vector2<T>,
+    l1: T,
+    l2: T,
+    mode: Mode,
+) -> Result<RrrPosition<T>, Error<T>> {
+    let m = max(max(l1, l2), max(abs(d.x), abs(d.y)));
+    let (down, up) = pow2_scale(m);
+    let origin = Point2::origin();
+    let scaled =
+        position(&origin, l1 * down, &(origin + d * down), l2 * down, mode).map_err(|e| {
+            let fault = match e.fault {
+                Fault::CannotAssemble { miss, reach } => Fault::CannotAssemble {
+                    miss: miss * up,
+                    reach: reach * up,
+                },
+                Fault::Singular { det, scale } => Fault::Singular {
+                    det: det * up,
+                    scale: scale * up,
+                },
+                Fault::NonPositive { what, value } => Fault::NonPositive {
+                    what,
+                    value: value * up,
+                },
+                other => other,
+            };
+            Error::new(P, fault)
+        })?;
+    let r1 = scaled.r1 * up;
+    let c = a + r1;
+    if !all_finite([c.x, c.y]) {
+        return Err(position_error(d, l1, l2, Check::JointFinite));
+    }
+    Ok(RrrPosition {
+        c,
+        r1,
+        r2: scaled.r2 * up,
+        det: scaled.det * up * up,
     })
 }
 
@@ -396,6 +497,7 @@ pub fn acceleration<T: Real>(
 
 #[cfg(test)]
 mod tests {
+    extern crate std;
     use super::*;
 
     /// `det` (from the square root) against `cross(r1, r2)` of the returned
@@ -468,5 +570,127 @@ mod tests {
         )
         .unwrap();
         assert_eq!(m.c, Point2::new(1.8, -2.4));
+    }
+
+    /// One RRR at scale `s` (lengths and coordinates times `s`, rounded to
+    /// `T`): `A = (0.3, -0.2) s`, `l1 = 1.3 s`, `l2 = 0.9 s`, `B` at
+    /// `dist s` from `A` at 0.4 rad; `dist` from the middle of the range to
+    /// 1e-6 (relative) inside either edge (0.4 and 2.2).
+    fn scaled_case<T: Real>(s: f64, dist: f64) -> (Point2<T>, T, Point2<T>, T) {
+        let (sin, cos) = 0.4f64.sin_cos();
+        let p = |x: f64, y: f64| Point2::new(T::lit(x), T::lit(y));
+        (
+            p(0.3 * s, -0.2 * s),
+            T::lit(1.3 * s),
+            p(0.3 * s + dist * s * cos, -0.2 * s + dist * s * sin),
+            T::lit(0.9 * s),
+        )
+    }
+
+    /// The distances `|B - A| / s` of [`scaled_case`].
+    const DISTANCES: [f64; 6] = [1.5, 1.0, 2.19, 0.41, 2.2 * (1.0 - 1e-6), 0.4 * (1.0 + 1e-6)];
+
+    /// Worst `|C - C_ref| / (eps l1 / kappa)` over [`DISTANCES`] and both
+    /// modes at scale `s`, against the double-double reference at the
+    /// rounded inputs; `kappa = |cross(r1, r2)| / (l1 l2)` of the reference.
+    fn worst_position_at<T: Real>(s: f64) -> f64 {
+        use mechanism_reference::groups as reference;
+        let eps = T::eps().as_f64();
+        let mut worst = 0.0f64;
+        for dist in DISTANCES {
+            for mode in [Mode::Plus, Mode::Minus] {
+                let (a, l1, b, l2) = scaled_case::<T>(s, dist);
+                let what = std::format!("scale {s:e}, distance {dist}, {mode:?}");
+                let got = position(&a, l1, &b, l2, mode).unwrap_or_else(|e| panic!("{what}: {e}"));
+                let va = reference::v(a.x.as_f64(), a.y.as_f64());
+                let vb = reference::v(b.x.as_f64(), b.y.as_f64());
+                let want =
+                    reference::rrr_position(va, l1.as_f64(), vb, l2.as_f64(), mode == Mode::Plus)
+                        .unwrap_or_else(|| panic!("{what}: the reference does not assemble"));
+                let (r1, r2) = (reference::sub(want, va), reference::sub(want, vb));
+                let kappa = (reference::cross(r1, r2).abs().to_f64()) / (l1.as_f64() * l2.as_f64());
+                let err = reference::norm(reference::sub(
+                    reference::v(got.c.x.as_f64(), got.c.y.as_f64()),
+                    want,
+                ))
+                .to_f64();
+                worst = worst.max(err / (eps * l1.as_f64() / kappa));
+            }
+        }
+        worst
+    }
+
+    /// Bound of [`worst_position_at`]: the position's first-order error is a
+    /// few roundings of the coordinates (`eps L`) amplified by `1 / kappa`
+    /// (measured worst below 1, see the tests' output); 4 leaves room for
+    /// other platforms while a third power gone subnormal (at f32 1e-14 the
+    /// joint was 3 % off: 1e5 of this unit) fails it.
+    const SCALE_BOUND: f64 = 4.0;
+
+    /// f32 lengths 1e-30 .. 1e34 at every decade: the joint within
+    /// [`SCALE_BOUND`] of the reference, near both edges included. Before
+    /// the rescaled cold path, lengths below about 4.6e-11 lost bits in `d *
+    /// along` (a third power, subnormal) with no error: at 1e-18 `C` came out
+    /// on `A`.
+    #[test]
+    fn f32_rrr_matches_reference_from_1e_minus_30_to_1e34() {
+        let mut worst = 0.0f64;
+        for k in -30..=34 {
+            let w = worst_position_at::<f32>(10f64.powi(k));
+            assert!(
+                w <= SCALE_BOUND,
+                "scale 1e{k}: {w:.2} (bound {SCALE_BOUND})"
+            );
+            worst = worst.max(w);
+        }
+        std::println!("f32 RRR 1e-30 .. 1e34: worst position {worst:.2} (eps l1 / kappa)");
+    }
+
+    /// f64 lengths 1e-150 .. 1e150 every 5 decades (the reference squares
+    /// the lengths in double-double).
+    #[test]
+    fn f64_rrr_matches_reference_from_1e_minus_150_to_1e150() {
+        let mut worst = 0.0f64;
+        for k in (-30..=30).map(|k| 5 * k) {
+            let w = worst_position_at::<f64>(10f64.powi(k));
+            assert!(
+                w <= SCALE_BOUND,
+                "scale 1e{k}: {w:.2} (bound {SCALE_BOUND})"
+            );
+            worst = worst.max(w);
+        }
+        std::println!("f64 RRR 1e-150 .. 1e150: worst position {worst:.2} (eps l1 / kappa)");
+    }
+
+    /// Exact scale invariance of the position: every length and coordinate
+    /// times `2^j` gives `C`, `r1`, `r2` times `2^j` and `det` times `2^2j`,
+    /// bit for bit, f32 for `j` in -60 ..= 60 and f64 for -500 ..= 500
+    /// (steps of 3), through the plain path, the split root and the rescaled
+    /// path alike. The ends: `det` (L^2) must stay a normal number.
+    #[test]
+    fn power_of_two_scaling_of_the_position_is_exact() {
+        fn check<T: Real>(range: core::ops::RangeInclusive<i32>) -> usize {
+            let mut n = 0;
+            for dist in DISTANCES {
+                for mode in [Mode::Plus, Mode::Minus] {
+                    let (a, l1, b, l2) = scaled_case::<T>(1.0, dist);
+                    let p1 = position(&a, l1, &b, l2, mode).unwrap();
+                    for j in range.clone().step_by(3) {
+                        let f = T::lit(2f64.powi(j));
+                        let what = std::format!("2^{j}, distance {dist}, {mode:?}");
+                        let p = position(&(a * f), l1 * f, &(b * f), l2 * f, mode)
+                            .unwrap_or_else(|e| panic!("{what}: {e}"));
+                        assert_eq!(p.c, p1.c * f, "{what}");
+                        assert_eq!(p.r1, p1.r1 * f, "{what}");
+                        assert_eq!(p.r2, p1.r2 * f, "{what}");
+                        assert_eq!(p.det, p1.det * f * f, "{what}");
+                        n += 1;
+                    }
+                }
+            }
+            n
+        }
+        let n = check::<f32>(-60..=60) + check::<f64>(-500..=500);
+        assert!(n > 1000, "{n} cases");
     }
 }

@@ -7,7 +7,7 @@
 //! columns `u`, `perp(p)`, determinant `dot(u, p) = s`.
 
 use super::{abs, select, sqrt};
-use crate::geometry::SINGULAR_RELATIVE;
+use crate::geometry::{normal_range, SINGULAR_RELATIVE};
 use crate::scalar::Real;
 
 /// A closed RPR group.
@@ -65,6 +65,10 @@ pub fn rpr<T: Real>(ax: T, ay: T, bx: T, by: T, offset: T, sign: T) -> Rpr<T> {
     let det = ux * px + uy * py;
     let scale_sq = (ux * ux + uy * uy) * d2;
     let kk = T::lit(2.0 * SINGULAR_RELATIVE) * T::eps();
+    // A fourth power of the lengths: outside the normal range the products
+    // above lose bits or overflow; the scalar path scales them (`dyad::rpr`).
+    let (lo, hi) = normal_range::<T>();
+    let ok = ok & (scale_sq >= lo) & (scale_sq <= hi);
     let ok_rate = det * det > kk * kk * scale_sq;
     Rpr {
         ux,

@@ -11,7 +11,7 @@
 use super::guide::{difference, transport_acceleration, transport_velocity};
 use super::{select, sqrt, Line, LineAcceleration, LineVelocity};
 use crate::eft::{compensated, half_excess, split, two_product_split, two_sum};
-use crate::geometry::SINGULAR_RELATIVE;
+use crate::geometry::{normal_range, SINGULAR_RELATIVE};
 use crate::scalar::Real;
 
 /// A closed RRP group.
@@ -82,6 +82,12 @@ pub fn rrp<T: Real>(ax: T, ay: T, l: T, g: &Line<T>, offset: T, sign: T) -> Rrp<
     let det = r1x * g.dx + r1y * g.dy;
     let scale_sq = (r1x * r1x + r1y * r1y) * (g.dx * g.dx + g.dy * g.dy);
     let kk = T::lit(2.0 * SINGULAR_RELATIVE) * T::eps();
+    // `scale_sq` is a fourth power of the lengths: outside the normal range
+    // (f32 lengths below about 1e-10 or above 4e9) the products above lose
+    // bits or overflow, and the element goes to the scalar path, which
+    // scales them exactly (`dyad::rrp`).
+    let (lo, hi) = normal_range::<T>();
+    let ok = ok & (scale_sq >= lo) & (scale_sq <= hi);
     let ok_rate = det * det > kk * kk * scale_sq;
     Rrp {
         x: ax + r1x,
