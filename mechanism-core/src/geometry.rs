@@ -305,20 +305,48 @@ pub fn plus<T: Real>(x: Option<&Vector2<T>>, v: Vector2<T>) -> Vector2<T> {
 
 /// `(2^-e, 2^e)` for `2^e <= x < 2^(e+1)`, `x > 0` finite, with `e` kept
 /// within `T`'s normal exponents (`f32`: -126 ..= 126, `f64`: -1022 ..=
-/// 1022) so both are normal numbers of `T`. From the bits of `x` widened to
-/// `f64` (exact): no logarithm, no libm.
-#[inline]
+/// 1022) so both are normal numbers of `T`. In `T`'s own arithmetic, by
+/// exact steps of `2^256`, `2^64`, `2^16`, `2^4` and `2`, a few of each: no
+/// logarithm, no libm, and no `f64` on a single-precision FPU (a conversion
+/// there is a software routine).
+#[inline(never)]
 pub(crate) fn pow2_scale<T: Real>(x: T) -> (T, T) {
-    let bits = x.as_f64().to_bits();
-    let e = ((bits >> 52) & 0x7ff) as i32 - 1023;
-    let max = if crate::scalar::single::<T>() {
-        126
-    } else {
-        1022
+    let single = crate::scalar::single::<T>();
+    let max = if single { 126 } else { 1022 };
+    let (mut m, mut e) = (x, 0i32);
+    let (mut down, mut up) = (T::one(), T::one());
+    // One step size: `big = 2^s`, `small = 2^-s` (literals, so no
+    // conversion is left at run time).
+    let mut step = |s: i32, big: T, small: T| {
+        while m >= big && e + s <= max {
+            m = m * small;
+            e += s;
+            down = down * small;
+            up = up * big;
+        }
+        while m * big < T::lit(2.0) && e - s >= -max {
+            m = m * big;
+            e -= s;
+            down = down * big;
+            up = up * small;
+        }
     };
-    let e = e.clamp(-max, max);
-    let pow2 = |k: i32| f64::from_bits(((k + 1023) as u64) << 52);
-    (T::lit(pow2(-e)), T::lit(pow2(e)))
+    if !single {
+        step(
+            256,
+            T::lit(1.157_920_892_373_162e77),
+            T::lit(8.636_168_555_094_445e-78),
+        );
+    }
+    step(
+        64,
+        T::lit(18_446_744_073_709_551_616.0),
+        T::lit(5.421_010_862_427_522e-20),
+    );
+    step(16, T::lit(65_536.0), T::lit(1.525_878_906_25e-5));
+    step(4, T::lit(16.0), T::lit(0.0625));
+    step(1, T::lit(2.0), T::lit(0.5));
+    (down, up)
 }
 
 /// `|r|` (L) with no overflow or underflow of the squares: `sqrt(dot(r, r))`
