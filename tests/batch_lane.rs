@@ -414,13 +414,9 @@ fn prp_on_a_carried_guide() {
 fn rrp_on_a_carried_guide_and_rpr_with_offset() {
     for offset in [0.01, 0.0, -0.04] {
         one_input!(
-            Carried::<f64> {
-                offset,
-                ..Default::default()
-            },
+            Carried::<f64> { offset },
             Carried::<f32> {
                 offset: offset as f32,
-                ..Default::default()
             },
             Carried,
             phi,
@@ -479,7 +475,6 @@ fn four_bar_far_from_unit_lengths() {
                 crank: (101.6 * $k) as f32,
                 coupler: (254.0 * $k) as f32,
                 rocker: (177.8 * $k) as f32,
-                ..Default::default()
             }
         };
     }

@@ -415,6 +415,9 @@ macro_rules! both {
         let [q, w, a] = $g;
         let n = q.values().next().unwrap().len();
         let least: usize = $min_fail;
+        // `..Default::default()` fills what `$f` leaves out (nothing, for
+        // some definitions).
+        #[allow(clippy::needless_update)]
         for (found, t) in [
             compare!($lv; $ty::<f64> { $($f: $v,)* ..Default::default() }, f64, $ty, $i, $p, $s, q, w, a),
             compare!($lv; $ty::<f32> { $($f: $v as f32,)* ..Default::default() }, f32, $ty, $i, $p, $s, q, w, a),

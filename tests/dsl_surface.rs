@@ -247,7 +247,6 @@ fn params_consts_and_expressions_match_literals_and_constraints() {
         crank: 0.7,
         offset: -0.05,
         gangle: -25.0,
-        ..Default::default()
     };
     let u = dir((-25f64).to_radians());
     let n = Vector2::new(-u.y, u.x);
@@ -305,7 +304,6 @@ fn out_of_order_rates_with_changed_params() {
         crank: 0.7,
         offset: -0.05,
         gangle: -25.0,
-        ..Default::default()
     };
     for k in 0..36 {
         let q0 = f64::to_radians(10.0 * k as f64 + 1.0);

@@ -240,7 +240,6 @@ fn scaled<T: Real>(s: f64) -> ScaledFourBar<T> {
         rocker: T::lit(b.rocker * s),
         px: T::lit(b.px * s),
         py: T::lit(b.py * s),
-        ..ScaledFourBar::<T>::default()
     }
 }
 
@@ -312,7 +311,6 @@ fn mixed_scales_small_crank_large_frame() {
         rocker: 1.7,
         px: 500.0,
         py: 0.01,
-        ..ScaledFourBar::<f64>::default()
     };
     let mut worst = Worst::new();
     for i in 0..48 {
@@ -648,11 +646,7 @@ fn inverted_sample(
 /// `condition` follows `kappa` (checked below the table).
 #[test]
 fn rpr_line_through_the_pin() {
-    let m = InvertedSlider::<f64> {
-        b: 1.0,
-        e: 0.0,
-        ..Default::default()
-    };
+    let m = InvertedSlider::<f64> { b: 1.0, e: 0.0 };
     let mut worst = Worst::new();
     for d in approach() {
         let what = format!("rpr through the pin theta {d:e}");
@@ -691,11 +685,7 @@ fn rpr_edge_of_assembly_with_offset() {
     let mut outside = 0;
     let mut skipped = 0;
     // Inside, approached by the input.
-    let m = InvertedSlider::<f64> {
-        b: 3.5,
-        e: 2.5,
-        ..Default::default()
-    };
+    let m = InvertedSlider::<f64> { b: 3.5, e: 2.5 };
     for d in approach() {
         let what = format!("rpr edge theta {d:e}");
         match inverted_sample(&m, d, &what) {
@@ -721,11 +711,7 @@ fn rpr_edge_of_assembly_with_offset() {
         let rel = 1.37 * 10f64.powi(-k);
         for sign in [-1.0, 1.0] {
             let e = ab * (1.0 + sign * rel);
-            let m = InvertedSlider::<f64> {
-                b: 3.5,
-                e,
-                ..Default::default()
-            };
+            let m = InvertedSlider::<f64> { b: 3.5, e };
             let what = format!("rpr edge e = |A-B| (1 {sign:+} {rel:e})");
             match inverted_sample(&m, 0.3, &what) {
                 Ok((err, _, _)) if err[0].is_nan() => skipped += 1,

@@ -711,18 +711,15 @@ fn scales_run<T: Real + core::fmt::Debug>(scales: &[f64], name: &str) {
                 r: t(s),
                 l: t(1.5 * s),
                 e: t(0.2 * s),
-                ..RrpEdge::<T>::default()
             };
             let rpr = RprOff::<T> {
                 r: t(s),
                 b: t(3.5 * s),
                 e: t(0.5 * s),
-                ..RprOff::<T>::default()
             };
             let ram = Ram::<T> {
                 b: t(2.0 * s),
                 r: t(s),
-                ..Ram::<T>::default()
             };
             // PRP: keep clear of the parallel poses (theta = 0.4 mod pi).
             let samples = [

@@ -241,7 +241,6 @@ fn press_block_off_its_pin_with_run_time_mass_and_gravity() {
                 gx: -5.0,
                 gy: 8.0,
                 mb: 9.5,
-                ..InclinedPress::default()
             },
             -80.0,
             -2.5,
@@ -862,15 +861,7 @@ fn crank_and_piston_two_drives_with_gravity_along_the_slide() {
     };
     let variants = [
         (CrankAndPiston::<f64>::default(), 35.0, 2.0),
-        (
-            CrankAndPiston::<f64> {
-                g: 3.7,
-                mp: 6.0,
-                ..CrankAndPiston::default()
-            },
-            -12.0,
-            0.0,
-        ),
+        (CrankAndPiston::<f64> { g: 3.7, mp: 6.0 }, -12.0, 0.0),
     ];
     let mut checked = 0;
     for (m, cut, hold) in &variants {

@@ -88,7 +88,6 @@ fn quad(base: f64, crank: f64, coupler: f64, rocker: f64) -> Quad<f64> {
         crank,
         coupler,
         rocker,
-        ..Default::default()
     }
 }
 
@@ -360,7 +359,6 @@ fn offset_slider_crank_failures_follow_the_guide_distance() {
             crank: r,
             rod: l,
             offset: e,
-            ..Default::default()
         };
         let rep = m.check();
         let b = &rep.groups[1];
@@ -423,7 +421,6 @@ fn rpr_fails_where_the_pin_passes_inside_the_offset_circle() {
             crank: r,
             d,
             offset: e,
-            ..Default::default()
         };
         // |A - B|^2 = r^2 + d^2 - 2 r d cos(theta) < e^2.
         let c = (r * r + d * d - e * e) / (2.0 * r * d);
@@ -480,11 +477,7 @@ fn rpr_pass_through_the_pivot_is_reported() {
     // multiples of 0.1 deg).
     let r = 0.1;
     let (bx, by) = (r * 1f64.cos(), r * 1f64.sin());
-    let m = PivotOnCircle::<f64> {
-        bx,
-        by,
-        ..Default::default()
-    };
+    let m = PivotOnCircle::<f64> { bx, by };
     // The rocker flips by pi across theta = 1 rad.
     let a = m
         .position(&PivotOnCircleInput { theta: 1.0 - 1e-6 })
@@ -581,10 +574,7 @@ fn prp_parallel_guides_between_samples_are_failures_as_on_samples() {
     // position (the macro's expansion-time check says the same). Both at the
     // closed form to the edge tolerance.
     let tilt = deg(33.33);
-    let m = Cross::<f64> {
-        tilt,
-        ..Default::default()
-    };
+    let m = Cross::<f64> { tilt };
     let rep = m.check();
     let c = &rep.groups[1];
     assert_eq!((c.failures, c.singular), (2, 0), "between samples: {rep:?}");
@@ -626,12 +616,7 @@ fn five_bar_grid_count_and_box_match_the_closed_form() {
     // |A - C| > l3 + l4 or < |l3 - l4|; no grid point lies within 1e-9 of
     // either bound for these dimensions (asserted), so the count is exact.
     for (base, l3, l4) in [(0.08, 0.1, 0.1), (0.08, 0.11, 0.1), (0.05, 0.1, 0.12)] {
-        let m = Five::<f64> {
-            base,
-            l3,
-            l4,
-            ..Default::default()
-        };
+        let m = Five::<f64> { base, l3, l4 };
         let rep = m.check();
         let (r1, r2) = ((deg(60.0), deg(150.0)), (deg(0.0), deg(90.0)));
         assert_eq!(rep.ranges[0].lo, r1.0);
@@ -739,12 +724,7 @@ fn six_theta_at(b: Point2<f64>) -> Vec<f64> {
 fn six_bar_second_group_fails_past_the_rocker_limit() {
     for o6y in [180.0, 175.0, 190.0] {
         let (l5, l6) = (70.0, 50.0);
-        let m = Six::<f64> {
-            o6y,
-            l5,
-            l6,
-            ..Default::default()
-        };
+        let m = Six::<f64> { o6y, l5, l6 };
         let rep = m.check();
         let names: Vec<&str> = rep.groups.iter().map(|g| g.group).collect();
         assert_eq!(names, ["A", "B", "D"]);

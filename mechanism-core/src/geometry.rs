@@ -319,16 +319,16 @@ pub(crate) fn pow2_scale<T: Real>(x: T) -> (T, T) {
     // conversion is left at run time).
     let mut step = |s: i32, big: T, small: T| {
         while m >= big && e + s <= max {
-            m = m * small;
+            m *= small;
             e += s;
-            down = down * small;
-            up = up * big;
+            down *= small;
+            up *= big;
         }
         while m * big < T::lit(2.0) && e - s >= -max {
-            m = m * big;
+            m *= big;
             e -= s;
-            down = down * big;
-            up = up * small;
+            down *= big;
+            up *= small;
         }
     };
     if !single {

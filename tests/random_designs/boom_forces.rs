@@ -89,7 +89,6 @@ fn run_boom_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             cx: lit(cx),
             cy: lit(cy),
             t1: lit(t1),
-            ..Default::default()
         };
         let got = m.solve(
             &BoomLoadedInput { len: lit(len) },

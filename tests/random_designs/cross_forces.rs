@@ -126,7 +126,6 @@ fn run_cross_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             t4: lit(t4),
             fs: lit(fs),
             fr: lit(fr),
-            ..Default::default()
         };
         let got = solve_at!(m, CrossLoadedInput, T, (q, w, al));
         let what = format!(

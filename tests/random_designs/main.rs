@@ -501,7 +501,6 @@ fn run_quad<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             a: T::lit(a),
             b: T::lit(b),
             c: T::lit(c),
-            ..Default::default()
         };
         let got = solve_at!(m, QuadInput, T, (q, w, al));
         // The reference, in double-double at the same (rounded) numbers.
@@ -573,7 +572,6 @@ fn run_slide<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             l: T::lit(l),
             e: T::lit(e),
             tilt: T::lit(tilt),
-            ..Default::default()
         };
         let got = solve_at!(m, SlideInput, T, (q, w, al));
         // The guide's direction as the generated code has it (cos, sin of
@@ -647,7 +645,6 @@ fn run_swing<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             py: T::lit(py),
             a: T::lit(a),
             e: T::lit(e),
-            ..Default::default()
         };
         let got = solve_at!(m, SwingInput, T, (q, w, al));
         let (pa, va, aa) = refg::crank(vd(0.0, 0.0), a, q, w, al);
@@ -742,7 +739,6 @@ fn run_cross<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             tilt: T::lit(tilt),
             o1: T::lit(o1),
             o2: T::lit(o2),
-            ..Default::default()
         };
         let got = solve_at!(m, CrossInput, T, (q, w, al));
         let what = format!("Cross {n}: guide ({gx:e}, {gy:e}) at {gangle}, tilt {tilt}, offsets {o1:e} {o2:e}, theta {q}");
@@ -836,7 +832,6 @@ fn run_yoke<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             gangle: T::lit(gangle),
             slot: T::lit(slot),
             off: T::lit(off),
-            ..Default::default()
         };
         let got = solve_at!(m, YokeInput, T, (q, w, al));
         let what = format!("Yoke {n}: a {a:e} guide ({gx:e}, {gy:e}) at {gangle}, slot {slot}, off {off:e}, theta {q}");
@@ -908,7 +903,6 @@ fn run_boom<T: Real>(samples: usize, seed: u64, draw: Draw) -> Tally {
             r: T::lit(r),
             bx: T::lit(bx),
             by: T::lit(by),
-            ..Default::default()
         };
         let got = m.solve(
             &BoomInput { len: T::lit(len) },
@@ -1010,7 +1004,6 @@ fn run_six<T: Real>(samples: usize, seed: u64) -> Tally {
             hy: lit(hy),
             d: lit(d),
             e: lit(e),
-            ..Default::default()
         };
         let got = solve_at!(m, SixInput, T, (q, w, al));
         let what = format!("Six {n}: Q ({gx:e}, {gy:e}) H ({hx:e}, {hy:e}) a {a:e} b {b:e} c {c:e} P ({pu:e}, {pv:e}) d {d:e} e {e:e} theta {q}");
@@ -1264,7 +1257,6 @@ fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             fx: lit(fx),
             fy: lit(fy),
             t4: lit(t4),
-            ..Default::default()
         };
         let got = solve_at!(m, QuadLoadedInput, T, (q, w, al));
         let what = format!(
@@ -1648,7 +1640,6 @@ fn run_slide_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             fx: lit(fx),
             fy: lit(fy),
             fs: lit(fs),
-            ..Default::default()
         };
         let got = solve_at!(m, SlideLoadedInput, T, (q, w, al));
         let what = format!("SlideLoaded {n}: a {a:e} l {l:e} e {e:e} tilt {tilt} masses {m2:e} {m3:e} {m4:e} theta {q}");

@@ -114,7 +114,6 @@ pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             t3: lit(t3),
             t4: lit(t4),
             fs: lit(fs),
-            ..Default::default()
         };
         let got = solve_at!(m, YokeLoadedInput, T, (q, w, al));
         let what = format!(

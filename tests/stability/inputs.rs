@@ -142,16 +142,16 @@ proptest! {
     /// holds only finite numbers.
     #[test]
     fn macro_scenes_never_panic_never_non_finite(v in prop::collection::vec(absurd(), 10)) {
-        let fb = FourBar::<f64> { ground: v[0], crank: v[1], coupler: v[2], rocker: v[3], ..FourBar::default() };
+        let fb = FourBar::<f64> { ground: v[0], crank: v[1], coupler: v[2], rocker: v[3] };
         let r = fb.solve(&FourBarInput { theta2: v[4] }, &FourBarInput { theta2: v[5] }, &FourBarInput { theta2: v[6] });
         if let Ok(s) = r { prop_assert!(fin(&s), "{:?}", s); }
-        let fb32 = FourBar::<f32> { ground: v[0] as f32, crank: v[1] as f32, coupler: v[2] as f32, rocker: v[3] as f32, ..FourBar::default() };
+        let fb32 = FourBar::<f32> { ground: v[0] as f32, crank: v[1] as f32, coupler: v[2] as f32, rocker: v[3] as f32 };
         let r = fb32.solve(&FourBarInput { theta2: v[4] as f32 }, &FourBarInput { theta2: v[5] as f32 }, &FourBarInput { theta2: v[6] as f32 });
         if let Ok(s) = r { prop_assert!(fin(&s), "{:?}", s); }
-        let sc = SliderCrank::<f64> { crank: v[7], rod: v[8], offset: v[9], ..SliderCrank::default() };
+        let sc = SliderCrank::<f64> { crank: v[7], rod: v[8], offset: v[9] };
         let r = sc.solve(&SliderCrankInput { theta: v[4] }, &SliderCrankInput { theta: v[5] }, &SliderCrankInput { theta: v[6] });
         if let Ok(s) = r { prop_assert!(fin(&s), "{:?}", s); }
-        let five = FiveBar::<f64> { base: v[0], proximal: v[7], distal: v[8], ..FiveBar::default() };
+        let five = FiveBar::<f64> { base: v[0], proximal: v[7], distal: v[8] };
         let (q, w) = (FiveBarInput { q1: v[4], q2: v[9] }, FiveBarInput { q1: v[5], q2: v[1] });
         if let Ok(p) = five.position(&q) {
             prop_assert!(fin(&p), "{:?}", p);

@@ -24,7 +24,6 @@ fn fourbar<T: Real>(s: f64, theta: f64) -> (Vec<f64>, Vec<f64>) {
         crank: T::lit(base.crank * s),
         coupler: T::lit(base.coupler * s),
         rocker: T::lit(base.rocker * s),
-        ..FourBar::<T>::default()
     };
     let r = m
         .solve(
@@ -146,7 +145,6 @@ fn slider_crank_sweep<T: Real>(omegas: &[f64]) -> [f64; 3] {
                 crank: rt,
                 rod: lt,
                 offset: et,
-                ..SliderCrank::<T>::default()
             };
             for theta in [0.0, 0.4, 1.9, 3.3, 5.5] {
                 let (th, w) = (T::lit(theta), T::lit(omega));

@@ -581,7 +581,6 @@ fn jansen() -> JansenLeg<f64> {
         guy: JD * phi.sin() / 3.0,
         gfx: (JG + JI * psi.cos()) / 3.0,
         gfy: JI * psi.sin() / 3.0,
-        ..Default::default()
     };
     let d = JansenLeg::<f64>::default();
     for (x, y) in [

@@ -800,7 +800,6 @@ impl Ww {
             j4: t(self.j[2]),
             m5: t(self.m[4]),
             cut: t(self.cut),
-            ..Whitworth::default()
         }
     }
     /// Points: 0 O2, 1 O4, 2 (1, -dd) on the ram's guide, 3 B, 4 D, 5 E.

@@ -328,7 +328,6 @@ fn stephenson_iii_fine_turn_is_finite_or_a_typed_error() {
         let m = StephensonIII::<T> {
             l5: T::lit(0.16),
             l6: T::lit(0.15),
-            ..Default::default()
         };
         let (mut ok, mut failed) = (0, 0);
         for k in 0..36_000 {
