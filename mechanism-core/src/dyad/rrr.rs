@@ -161,7 +161,7 @@ pub fn position<T: Real>(
         // 2.4e11, since `prod <= 16 L^4` and the rounding band keeps a
         // non-zero `inner` above `eps L^2`), and so are the third powers
         // below. Here they may not be: `d * along` (L^3) is subnormal for
-        // f32 lengths below about 4.6e-11 (at 1e-14 `C` came out 3 % off,
+        // f32 lengths below about 2.3e-13 (at 1e-14 `C` came out 3 % off,
         // at 1e-18 on `A`, with no error) or overflows above 7e12: there the
         // root is NaN ([`split_root`]), so `C` fails its finiteness test, a
         // typed `NonFinite` that names the range. (An error, not a rescaled
@@ -197,20 +197,21 @@ pub fn position<T: Real>(
 
 /// `true` when the group's scale `l1 + l2` (L; `|B - A|` is at most that
 /// where it assembles) lies where [`position`]'s third powers are normal
-/// numbers at full precision: `2^-34 .. 2^41` (5.8e-11 .. 2.2e12) in f32,
-/// `2^-323 .. 2^340` (5.9e-98 .. 2.2e102) in f64, powers of two whose cubes
-/// are within `[min_normal / eps, max / 8]` (`d * along <= 2 (l1 + l2)^3`).
-/// NaN is `false`.
+/// numbers: `2^-42 .. 2^42` (2.3e-13 .. 4.4e12) in f32, `2^-340 .. 2^340`
+/// (4.5e-103 .. 2.2e102) in f64, powers of two whose cubes are at least the
+/// smallest normal number (below it a product is rounded to the subnormal
+/// spacing, more than `eps` of the cube) and with `2 (l1 + l2)^3` at most the largest (`d * along
+/// <= 2 (l1 + l2)^3`). NaN is `false`.
 #[inline(always)]
 fn in_range<T: Real>(sum: T) -> bool {
     let single = crate::scalar::single::<T>();
     let lo = T::lit(if single {
-        5.820_766_091_346_741e-11
+        2.273_736_754_432_320_6e-13
     } else {
-        5.852_095_443_365_248e-98
+        4.464_794_497_196_387e-103
     });
     let hi = T::lit(if single {
-        2_199_023_255_552.0
+        4_398_046_511_104.0
     } else {
         2.239_744_742_177_804_2e102
     });
@@ -611,23 +612,23 @@ mod tests {
         worst
     }
 
-    /// f32 lengths 1e-30 .. 1e30 at every decade: accurate from 1e-10 to
-    /// 1e11 ([`in_range`]: `l1 + l2 = 2.2 s` within 5.8e-11 .. 2.2e12), a
-    /// typed error naming the range beyond. Before
+    /// f32 lengths 1e-30 .. 1e30 at every decade: accurate from 1e-12 to
+    /// 1e12 ([`in_range`]: `l1 + l2 = 2.2 s` within 2.3e-13 .. 4.4e12), a
+    /// typed error beyond. Before
     /// the check, lengths below about 4.6e-11 lost bits in `d * along` with
     /// no error (at 1e-18 `C` came out on `A`, at 1e-14 3 % off).
     #[test]
     fn f32_rrr_matches_reference_or_is_out_of_range() {
-        let w = sweep::<f32>(-30..=30, -10, 11);
-        std::println!("f32 RRR 1e-10 .. 1e11: worst position {w:.2} (eps l1 / kappa)");
+        let w = sweep::<f32>(-30..=30, -12, 12);
+        std::println!("f32 RRR 1e-12 .. 1e12: worst position {w:.2} (eps l1 / kappa)");
     }
 
-    /// f64 lengths 1e-150 .. 1e150 every 5 decades: accurate from 1e-95 to
-    /// 1e100 ([`in_range`]: 5.9e-98 .. 2.2e102), the typed error beyond
+    /// f64 lengths 1e-150 .. 1e150 every 5 decades: accurate from 1e-100 to
+    /// 1e100 ([`in_range`]: 4.5e-103 .. 2.2e102), the typed error beyond
     /// (before, 1e-150 was off by 4e15 of this unit, with no error).
     #[test]
     fn f64_rrr_matches_reference_or_is_out_of_range() {
-        let w = sweep::<f64>((-30..=30).map(|k| 5 * k), -95, 100);
-        std::println!("f64 RRR 1e-95 .. 1e100: worst position {w:.2} (eps l1 / kappa)");
+        let w = sweep::<f64>((-30..=30).map(|k| 5 * k), -100, 100);
+        std::println!("f64 RRR 1e-100 .. 1e100: worst position {w:.2} (eps l1 / kappa)");
     }
 }
