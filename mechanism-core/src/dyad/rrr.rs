@@ -200,8 +200,8 @@ pub fn position<T: Real>(
 /// numbers: `2^-42 .. 2^42` (2.3e-13 .. 4.4e12) in f32, `2^-340 .. 2^340`
 /// (4.5e-103 .. 2.2e102) in f64, powers of two whose cubes are at least the
 /// smallest normal number (below it a product is rounded to the subnormal
-/// spacing, more than `eps` of the cube) and with `2 (l1 + l2)^3` at most the largest (`d * along
-/// <= 2 (l1 + l2)^3`). NaN is `false`.
+/// spacing, more than `eps` of the cube) and with `2 (l1 + l2)^3`, a bound
+/// on `d * along`, at most the largest. NaN is `false`.
 #[inline(always)]
 fn in_range<T: Real>(sum: T) -> bool {
     let single = crate::scalar::single::<T>();
