@@ -285,12 +285,12 @@ impl ForceEmitter<'_> {
         let t = tag(stmt);
         let (local, check, what) = match quantity {
             Quantity::Mass => (
-                format_ident!("mass_{}", link),
+                format_ident!("pw_m_{}", link),
                 quote!(positive),
                 format!("mass of `{link}`"),
             ),
             Quantity::Inertia => (
-                format_ident!("inertia_{}", link),
+                format_ident!("pw_j_{}", link),
                 quote!(non_negative),
                 format!("moment of inertia of `{link}`"),
             ),
