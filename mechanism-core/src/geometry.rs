@@ -303,6 +303,20 @@ pub fn plus<T: Real>(x: Option<&Vector2<T>>, v: Vector2<T>) -> Vector2<T> {
     }
 }
 
+/// `sqrt(gap sum)` for a product outside the normal range (cold path of
+/// the RRP's and RPR's `position`): both factors (`0 <= gap <= l <= sum <=
+/// 2 l`) scaled by `2^-e`, `2^e <= l < 2^(e+1)`, so the product lies in
+/// `[0, 8)`, and the
+/// root scaled back by `2^e`. Every scaling is exact (powers of two, no
+/// result subnormal but a `gap` below `eps l`, which is 0 or the rounding
+/// band anyway), so the root is the one an unscaled product in range gives.
+#[cold]
+#[inline(never)]
+pub(crate) fn scaled_root<T: Real>(gap: T, sum: T, l: T) -> T {
+    let (down, up) = pow2_scale(l);
+    ((gap * down) * (sum * down)).sqrt_kernel() * up
+}
+
 /// `(2^-e, 2^e)` for `2^e <= x < 2^(e+1)`, `x > 0` finite, with `e` kept
 /// within `T`'s normal exponents (`f32`: -126 ..= 126, `f64`: -1022 ..=
 /// 1022) so both are normal numbers of `T`. In `T`'s own arithmetic, by

@@ -260,12 +260,7 @@ fn run_cross_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             ],
             gravity: CV2::new(0.0, -g),
         };
-        let state = State {
-            p: &ps,
-            v: &vs,
-            a: &accs,
-        };
-        let reference = solve_forces(&system, &state).expect("reference forces");
+        let reference = reference_forces(&system, (&ps, &vs, &accs));
         let f = &sol.forces;
         let pins = [f.r_ground_crank_link, f.r_block1_block2];
         let prismatic = |got: &mechanism::force::PrismaticReaction<T>, r: &Reaction| {

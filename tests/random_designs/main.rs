@@ -1346,12 +1346,7 @@ fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             ],
             gravity: CV2::new(0.0, -g),
         };
-        let state = State {
-            p: &ps,
-            v: &vs,
-            a: &accs,
-        };
-        let reference = solve_forces(&system, &state).expect("reference forces");
+        let reference = reference_forces(&system, (&ps, &vs, &accs));
         let f = &sol.forces;
         let got_r = [
             f.r_ground_crank_link,
@@ -1713,12 +1708,7 @@ fn run_slide_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             ],
             gravity: CV2::new(0.0, -g),
         };
-        let state = State {
-            p: &ps,
-            v: &vs,
-            a: &accs,
-        };
-        let reference = solve_forces(&system, &state).expect("reference forces");
+        let reference = reference_forces(&system, (&ps, &vs, &accs));
         let f = &sol.forces;
         let pins = [f.r_ground_crank_link, f.r_crank_link_rod, f.r_rod_block];
         let guide = &f.r_ground_block;
@@ -1765,6 +1755,14 @@ fn run_slide_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         };
         verdict.record(tally, (&reference, &pins), drive, &loads, &guide, &what);
     })
+}
+
+/// The reference's reactions and driving efforts of `system` at the points'
+/// positions, velocities and accelerations `(p, v, a)` (indices as the
+/// system's `PointId`s); panics if the reference refuses (its own
+/// consistency check), which no draw may make it do.
+fn reference_forces(system: &System, (p, v, a): (&[CV2], &[CV2], &[CV2])) -> Solution {
+    solve_forces(system, &State { p, v, a }).expect("reference forces")
 }
 
 /// What a loaded run's errors are measured against: `eps`, the sample's

@@ -215,13 +215,8 @@ pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             ],
             gravity: CV2::new(0.0, -g),
         };
-        let state = State {
-            p: &ps,
-            v: &vs,
-            a: &accs,
-        };
         // The couples about `A` (point 1), as the generated ones.
-        let reference = solve_forces(&system(1), &state).expect("reference forces");
+        let reference = reference_forces(&system(1), (&ps, &vs, &accs));
         let f = &sol.forces;
         let pins = [f.r_ground_crank_link, f.r_crank_link_block];
         // Each body's inertia scale as in `run_quad_forces`: the largest

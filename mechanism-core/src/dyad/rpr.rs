@@ -31,8 +31,8 @@
 //! and `|v|` before normalizing are second powers of the lengths; where
 //! they leave the normal range of `T` they are formed from factors scaled
 //! exactly by a power of two (cold paths, shared with the RRP; the axis's
-//! `s (A - B)` too, on the same branch as `|A - B|`), and the rates divide `A - B` by the determinant before the dot product with the
-//! velocities. Measured within 1.0 `eps / kappa` (axis, `s / |A - B|`) and
+//! `s (A - B)` too, on the same branch as `|A - B|`), and the rates divide
+//! `A - B` by the determinant before the dot product with the velocities. Measured within 1.0 `eps / kappa` (axis, `s / |A - B|`) and
 //! 1.3 `eps |vA| / kappa^3` (rates) of the double-double reference for f32
 //! lengths 1e-30 .. 1e34 and f64 1e-150 .. 1e150, and bit for bit
 //! scale-invariant under powers of two for f32 lengths 1e-30 .. 1e30 and
@@ -42,13 +42,12 @@
 //! pose the reciprocal of the determinant `s` overflows for f32 lengths
 //! below about 1e-31, and a result that exceeds `T` is `NonFinite`.
 
-use crate::dyad::rrp::scaled_root;
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
     abs, check_det_condition, cross, difference, dot, finite, finite_vec, length, max, min,
     normal_range, perp, SINGULAR_RELATIVE,
 };
-use crate::geometry::{length_any, pow2_scale, scaled_length};
+use crate::geometry::{length_any, pow2_scale, scaled_length, scaled_root};
 use crate::mode::Mode;
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};

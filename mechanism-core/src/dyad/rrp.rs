@@ -62,7 +62,7 @@ use crate::eft::{compensated, half_excess, split, two_product_split, two_sum};
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
     abs, check_det_condition, cross, difference, dot, finite, finite_point, finite_vec, length,
-    length_any, normal_range, perp, plus, positive, pow2_scale,
+    length_any, normal_range, perp, plus, positive, scaled_root,
 };
 use crate::guide::{Line, LineAcceleration, LineVelocity};
 use crate::link::{relative_acceleration, relative_velocity};
@@ -201,19 +201,6 @@ pub fn position<T: Real>(
     let s = finite(t + half, P, "RRP slide displacement s")?;
     let c = finite_point(a + r1, P, "RRP joint C")?;
     Ok(RrpPosition { c, r1, s })
-}
-
-/// `sqrt(gap sum)` for a product outside the normal range (cold path of
-/// [`position`]): both factors (`0 <= gap <= l <= sum <= 2 l`) scaled by
-/// `2^-e`, `2^e <= l < 2^(e+1)`, so the product lies in `[0, 8)`, and the
-/// root scaled back by `2^e`. Every scaling is exact (powers of two, no
-/// result subnormal but a `gap` below `eps l`, which is 0 or the rounding
-/// band anyway), so the root is the one an unscaled product in range gives.
-#[cold]
-#[inline(never)]
-pub(crate) fn scaled_root<T: Real>(gap: T, sum: T, l: T) -> T {
-    let (down, up) = pow2_scale(l);
-    ((gap * down) * (sum * down)).sqrt_kernel() * up
 }
 
 /// Determinant of the rate system, `dot(r1, dir) = +-sqrt(l^2 - k^2)`, checked
