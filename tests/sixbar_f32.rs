@@ -199,9 +199,11 @@ fn stage_study() {
         }
         let pos = worst[..8].iter().cloned().fold(0.0, f64::max);
         let rate = worst[8..].iter().cloned().fold(0.0, f64::max);
+        // The worst rate column (the report's column names).
+        let kr = 8 + (0..16).fold(0, |b, k| if worst[8 + k] > worst[8 + b] { k } else { b });
         println!(
-            "{label:<40} positions {pos:.2e}  rates {rate:.2e}  C.y {:.2e}  d2/dt2 F.x {:.2e}",
-            worst[1], worst[18]
+            "{label:<42} positions {pos:.3e}  rates {rate:.3e}  C.y {:.2e}  d2/dt2 F.x {:.2e}  ({})",
+            worst[1], worst[18], COLS[kr]
         );
     };
     report("all f32", &[M::S; NS], Ax::None, 0.0);
@@ -240,6 +242,108 @@ fn stage_study() {
         Ax::None,
         1.0 / 33_554_432.0,
     );
+    // What a crank direction carried with a tail and compensated RRP rate
+    // arithmetic could buy at best (docs/stability.md, "f32 six-bar", the
+    // 2026-11-22 paragraph). First in f64 arithmetic: the consumers of the
+    // axis (B, the RRP position, the RRP rates and accelerations) given the
+    // exact direction (X) or the rounded pair's angle (U).
+    use Src::{Exact as X, Stage as G, Turned as U};
+    report(
+        "f64, turned but the RRP position exact",
+        &[M::D; NS],
+        Ax::Per([U, X, U]),
+        0.0,
+    );
+    report(
+        "f64, turned for the RRP rates only",
+        &[M::D; NS],
+        Ax::Per([X, X, U]),
+        0.0,
+    );
+    report(
+        "f64, turned but the RRP exact",
+        &[M::D; NS],
+        Ax::Per([U, X, X]),
+        0.0,
+    );
+    // Then the f32 code with the ideal of each idea: (1) the RRP position
+    // from the exact direction in f64, its outputs rounded (a tail on the
+    // direction entering `k`); (2) the RRP rates and accelerations in f64,
+    // outputs rounded (compensated right-hand sides at their best); the
+    // rates given the exact direction too (the tail entering the rate
+    // systems); and the RRR position in f64, outputs rounded.
+    let mut m1 = [M::S; NS];
+    m1[2] = M::R;
+    report(
+        "f32, RRP pos. exact dir, rounded (1)",
+        &m1,
+        Ax::Per([G, X, G]),
+        0.0,
+    );
+    let mut m2 = [M::S; NS];
+    m2[7] = M::R;
+    m2[11] = M::R;
+    report("f32, RRP v, a exact, rounded (2)", &m2, Ax::None, 0.0);
+    let mut m12 = m1;
+    m12[7] = M::R;
+    m12[11] = M::R;
+    report("f32, (1) and (2)", &m12, Ax::Per([G, X, G]), 0.0);
+    report(
+        "f32, (1) and (2), rates exact dir",
+        &m12,
+        Ax::Per([G, X, X]),
+        0.0,
+    );
+    let mut m12r = m12;
+    m12r[4] = M::R;
+    report(
+        "f32, (1), (2) exact dir, RRR pos. rounded",
+        &m12r,
+        Ax::Per([G, X, X]),
+        0.0,
+    );
+    // The floor of f32 values between the primitives: every stage in f64
+    // with its outputs rounded and the exact direction; then with the RRP
+    // group's state (position, rates) carried unrounded from its position
+    // to its accelerations ("fused": what tails on `r1`, `s`, `omega1`,
+    // `s_dot` would give), alone and in the f32 code.
+    report(
+        "f64 in each stage, f32 between, exact dir",
+        &[M::R; NS],
+        Ax::Per([X, X, X]),
+        0.0,
+    );
+    report(
+        "f64 in each stage, f32 between, RRP fused",
+        &[M::R; NS],
+        Ax::Fused([X, X, X]),
+        0.0,
+    );
+    report(
+        "f32, RRP fused in f64, exact dir",
+        &[M::S; NS],
+        Ax::Fused([X, X, X]),
+        0.0,
+    );
+    let mut mr = [M::S; NS];
+    mr[4] = M::R;
+    report(
+        "f32, RRP fused in f64, RRR pos. rounded",
+        &mr,
+        Ax::Fused([X, X, X]),
+        0.0,
+    );
+    // Which stage's f32 storage costs what, with the exact direction.
+    for i in 1..NS {
+        let mut m = [M::D; NS];
+        m[i] = M::R;
+        report(
+            &format!("f64, exact dir, only {} rounded", NAMES[i]),
+            &m,
+            Ax::Per([X, X, X]),
+            0.0,
+        );
+    }
     for i in 1..NS {
         let mut m = axis_r;
         m[i] = M::S;
@@ -441,6 +545,13 @@ fn s_rrra<T: Real>(
     (a.alpha1.as_f64(), a.alpha2.as_f64(), cv(&a.ac))
 }
 
+/// The columns of [`chain`]'s output (the report's order).
+const COLS: [&str; 24] = [
+    "C.x", "C.y", "F.x", "F.y", "link2", "link3", "link4", "af", "C.x'", "C.y'", "F.x'", "F.y'",
+    "link2'", "link3'", "link4'", "af'", "C.x''", "C.y''", "F.x''", "F.y''", "link2''", "link3''",
+    "link4''", "af''",
+];
+
 const NS: usize = 14;
 const NAMES: [&str; NS] = [
     "axis", "B", "rrp", "D", "rrr", "angles", "Bv", "rrpv", "Dv", "rrrv", "Ba", "rrpa", "Da",
@@ -463,6 +574,27 @@ enum Ax {
     Turned,
     Scaled,
     ScaledFor(u8),
+    /// Per consumer (`B`, the RRP position, the RRP rates and
+    /// accelerations): which axis it sees.
+    Per([Src; 3]),
+    /// As `Per`, and the RRP's rates and accelerations computed in f64
+    /// from its unrounded position and rates (with the exact direction):
+    /// what carrying the RRP group's state with tails from its position to
+    /// its accelerations would give. The other stages see the rounded
+    /// outputs as before.
+    Fused([Src; 3]),
+}
+
+/// The axis one consumer sees under [`Ax::Per`]: the axis stage's output
+/// (`Stage`: in f32 or rounded to f32 as the stage runs), the exact `(cos,
+/// sin)` of the (f32-rounded) crank angle in f64 (`Exact`: what a direction
+/// carried with a tail would give), or the exact unit vector at the rounded
+/// f32 pair's angle (`Turned`).
+#[derive(Clone, Copy, PartialEq)]
+enum Src {
+    Stage,
+    Exact,
+    Turned,
 }
 
 fn chain(phi: f64, w: f64, al: f64, m: &[M; NS], ax: Ax) -> [f64; 24] {
@@ -477,7 +609,20 @@ fn chain(phi: f64, w: f64, al: f64, m: &[M; NS], ax: Ax) -> [f64; 24] {
         Ax::Scaled => axis = scaled,
         _ => {}
     }
-    let pick = |k: u8| if ax == Ax::ScaledFor(k) { scaled } else { axis };
+    let exact = Vector2::new(phi.cos(), phi.sin());
+    let turned = {
+        let d = a32.y.atan2(a32.x);
+        Vector2::new(d.cos(), d.sin())
+    };
+    let pick = |k: u8| match ax {
+        Ax::ScaledFor(j) if j == k => scaled,
+        Ax::Per(src) | Ax::Fused(src) => match src[k as usize] {
+            Src::Stage => axis,
+            Src::Exact => exact,
+            Src::Turned => turned,
+        },
+        _ => axis,
+    };
     let (axis_b, axis_p, axis_v) = (pick(0), pick(1), pick(2));
     let b = st!(m[1], s_b(&axis_b), rp);
     let f = st!(m[2], s_rrp(&axis_p), |p: rrp::RrpPosition<f64>| {
@@ -515,15 +660,22 @@ fn chain(phi: f64, w: f64, al: f64, m: &[M; NS], ax: Ax) -> [f64; 24] {
         }
     });
     let ba = st!(m[10], s_ba(&b, w, al), rv);
-    let fa = st!(m[11], s_rrpa(&f, &axis_v, &fv, w, al), |(a, b, v): (
-        f64,
-        f64,
-        Vector2<f64>
-    )| (
-        r(a),
-        r(b),
-        rv(v)
-    ));
+    let fa = if let Ax::Fused(_) = ax {
+        let f = s_rrp::<f64>(&exact);
+        let fv = s_rrpv::<f64>(&f, &exact, w);
+        let a = s_rrpa::<f64>(&f, &exact, &fv, w, al);
+        (r(a.0), r(a.1), rv(a.2))
+    } else {
+        st!(m[11], s_rrpa(&f, &axis_v, &fv, w, al), |(a, b, v): (
+            f64,
+            f64,
+            Vector2<f64>
+        )| (
+            r(a),
+            r(b),
+            rv(v)
+        ))
+    };
     let da = st!(m[12], s_da(&d, fv.omega1, fa.0), rv);
     let ca = st!(m[13], s_rrra(&cc, &cvv, &ba, &da), |(a, b, v): (
         f64,
