@@ -272,6 +272,9 @@ fn stage_study() {
     // outputs rounded (compensated right-hand sides at their best); the
     // rates given the exact direction too (the tail entering the rate
     // systems); and the RRR position in f64, outputs rounded.
+    let mut m0 = [M::S; NS];
+    m0[4] = M::R;
+    report("f32, RRR pos. exact, rounded", &m0, Ax::None, 0.0);
     let mut m1 = [M::S; NS];
     m1[2] = M::R;
     report(
