@@ -303,8 +303,26 @@ pub fn plus<T: Real>(x: Option<&Vector2<T>>, v: Vector2<T>) -> Vector2<T> {
     }
 }
 
-/// `sqrt(gap sum)` for a product outside the normal range (cold path of
-/// the RRP's and RPR's `position`): both factors (`0 <= gap <= l <= sum <=
+/// `sqrt(gap sum)` (L) for `0 <= gap <= l <= sum <= 2 l`, the half chord of
+/// the RRP's and RPR's `position`: the product is a second power of the
+/// lengths, so outside the normal range of `T` (f32 lengths below about
+/// 1e-19, or nearer tangency at larger ones, or above about 1e19; f64 beyond
+/// about 1e-154 .. 1e154) it would be subnormal (bits silently lost), zero
+/// or infinite; there [`scaled_root`] (cold) forms it from factors scaled
+/// exactly by a power of two. Zero (`gap = 0`, tangency) takes that path
+/// too and gives 0.
+#[inline(always)]
+pub(crate) fn root_of_product<T: Real>(gap: T, sum: T, l: T) -> T {
+    let prod = gap * sum;
+    let (lo, hi) = normal_range::<T>();
+    if prod >= lo && prod <= hi {
+        prod.sqrt_kernel()
+    } else {
+        scaled_root(gap, sum, l)
+    }
+}
+
+/// [`root_of_product`] for a product outside the normal range: both factors (`0 <= gap <= l <= sum <=
 /// 2 l`) scaled by `2^-e`, `2^e <= l < 2^(e+1)`, so the product lies in
 /// `[0, 8)`, and the
 /// root scaled back by `2^e`. Every scaling is exact (powers of two, no
@@ -363,26 +381,22 @@ pub(crate) fn pow2_scale<T: Real>(x: T) -> (T, T) {
     (down, up)
 }
 
-/// `|r|` (L) with no overflow or underflow of the squares: `sqrt(dot(r, r))`
-/// while that is at least `min_normal / eps^2` and finite (f32 lengths about
-/// 1e-12 .. 1e19, f64 1e-138 .. 1e154), else (cold) the components scaled
-/// by the power of two below the larger one first, exactly. The lower
-/// threshold leaves room for a square that is subnormal beside a larger
-/// one: below half an ulp of the sum, it changes nothing, so the result is
-/// bit for bit the scaled one's (what makes the group's outputs scale
-/// exactly with powers of two).
+/// Whether `q = |r|^2` gives `|r|` plainly as `sqrt(q)`: `q` at least
+/// `min_normal / eps^2` and finite (f32 lengths about 1e-12 .. 1e19, f64
+/// 1e-138 .. 1e154). Outside, [`scaled_length`] (cold) scales the
+/// components by a power of two first. The lower threshold leaves room for
+/// a square that is subnormal beside a larger one: below half an ulp of
+/// the sum, it changes nothing, so the result is bit for bit the scaled
+/// one's (what makes a group's outputs scale exactly with powers of two).
 #[inline(always)]
-pub(crate) fn length_any<T: Real>(r: &Vector2<T>) -> T {
-    let q = dot(r, r);
+pub(crate) fn plain_square<T: Real>(q: T) -> bool {
     let (lo, hi) = normal_range::<T>();
-    if q >= lo / (T::eps() * T::eps()) && q <= hi {
-        q.sqrt_kernel()
-    } else {
-        scaled_length(r)
-    }
+    q >= lo / (T::eps() * T::eps()) && q <= hi
 }
 
-/// [`length_any`]'s cold path: 0 for a zero vector, NaN for a non-finite one.
+/// `|r|` (L) with the components scaled exactly by the power of two below
+/// the larger one first: for a square outside [`plain_square`]'s range (cold
+/// path). 0 for a zero vector, NaN for a non-finite one.
 #[cold]
 #[inline(never)]
 pub(crate) fn scaled_length<T: Real>(r: &Vector2<T>) -> T {

@@ -702,6 +702,7 @@ fn fuzz<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError
         c: pool.pt(),
         r1: pool.vec(),
         s: pool.x(),
+        l: pool.x(),
     };
     for p in [pos.ok(), Some(wild_pos)].into_iter().flatten() {
         let (va, gv) = (pool.opt::<T>(), pool.gv::<T>());
@@ -729,6 +730,7 @@ fn fuzz<T: Real + core::fmt::Debug>(pool: &mut Pool) -> Result<(), TestCaseError
     let wild_pos = rpr::RprPosition {
         axis: pool.dir(),
         s: pool.x(),
+        dist: pool.x(),
     };
     for p in [pos.ok(), Some(wild_pos)].into_iter().flatten() {
         let (va, vb) = (pool.opt::<T>(), pool.opt::<T>());

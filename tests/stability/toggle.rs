@@ -151,6 +151,7 @@ fn rrp_rates_near_tangency() {
                 c: a + r1,
                 r1,
                 s: 0.0,
+                l,
             };
             let got = rrp::velocity(&pos, &g, Some(&va), None)
                 .map(|v| ([v.omega1, v.s_dot], v.condition));
@@ -176,7 +177,11 @@ fn rpr_rates_near_foot() {
         for sign in [1.0, -1.0] {
             let gamma = phi + sign * kappa.acos();
             let u = vec2(gamma.cos(), gamma.sin());
-            let pos = rpr::RprPosition { axis: u, s: 0.0 };
+            let pos = rpr::RprPosition {
+                axis: u,
+                s: 0.0,
+                dist: (a - b).norm(),
+            };
             let got = rpr::velocity(&pos, &a, &b, Some(&va), Some(&vb))
                 .map(|v| ([v.omega, v.s_dot], v.condition));
             let pd = refg::sub(dv(&a), dv(&b));

@@ -44,10 +44,10 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, check_det_condition, cross, difference, dot, finite, finite_vec, length, max, min,
-    normal_range, perp, SINGULAR_RELATIVE,
+    abs, check_det_condition, cross, difference, dot, finite, finite_vec, length, max, min, perp,
+    SINGULAR_RELATIVE,
 };
-use crate::geometry::{length_any, pow2_scale, scaled_length, scaled_root};
+use crate::geometry::{plain_square, pow2_scale, root_of_product, scaled_length};
 use crate::mode::Mode;
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -63,6 +63,10 @@ pub struct RprPosition<T: Real> {
     /// Position of the block along link 2 (L): `A = B + s u + offset perp(u)`.
     /// Positive for `Mode::Plus`, negative for `Mode::Minus`.
     pub s: T,
+    /// `|A - B|` (L, > 0), formed without overflow or underflow of its
+    /// square: the rate system's scale, kept so that [`velocity`] and
+    /// [`acceleration`] need no square root of their own.
+    pub dist: T,
 }
 
 /// Rates of the RPR group.
@@ -115,16 +119,49 @@ pub fn position<T: Real>(
 ) -> Result<RprPosition<T>, Error<T>> {
     let offset = finite(offset, P, "RPR slide offset")?;
     let p = finite_vec(a - b, P, "RPR joint distance")?;
-    // `|p|` as `length_any` forms it, keeping whether the plain form was
-    // used: the axis below takes the same branch.
+    // `|p|` without overflow or underflow of its square: plainly where
+    // `|p|^2` is in range, else (cold, one branch for the whole group) with
+    // every length scaled exactly by a power of two.
     let q = dot(&p, &p);
-    let (lo, hi) = normal_range::<T>();
-    let plain = q >= lo / (T::eps() * T::eps()) && q <= hi;
-    let dist = if plain {
-        q.sqrt_kernel()
+    if plain_square(q) {
+        close(a, b, q.sqrt_kernel(), offset, mode, |s, dist| {
+            (p * s - perp(&p) * offset) / dist
+        })
     } else {
-        scaled_length(&p)
-    };
+        close_scaled(a, b, &p, offset, mode)
+    }
+}
+
+/// [`position`] for `|A - B|` outside [`plain_square`]'s range (cold path):
+/// `|p|` and the axis from lengths scaled exactly by a power of two, which
+/// gives the same bits as at unit scale.
+#[cold]
+#[inline(never)]
+fn close_scaled<T: Real>(
+    a: &Point2<T>,
+    b: &Point2<T>,
+    p: &Vector2<T>,
+    offset: T,
+    mode: Mode,
+) -> Result<RprPosition<T>, Error<T>> {
+    let dist = scaled_length(p);
+    close(a, b, dist, offset, mode, |s, dist| {
+        scaled_axis(p, s, offset, dist)
+    })
+}
+
+/// The group's position from `dist = |A - B|`, with the axis's direction
+/// `(s p - offset perp(p)) / |p|` (`p = A - B`; length about 1) formed by
+/// `axis_of(s, dist)`: plainly or scaled, as [`position`] chose.
+#[inline(always)]
+fn close<T: Real>(
+    a: &Point2<T>,
+    b: &Point2<T>,
+    dist: T,
+    offset: T,
+    mode: Mode,
+    axis_of: impl FnOnce(T, T) -> Vector2<T>,
+) -> Result<RprPosition<T>, Error<T>> {
     let dist = finite(dist, P, "RPR joint distance")?;
     let e = abs(offset);
     let gap = dist - e; // < 0: A inside the circle the slide line is tangent to
@@ -155,12 +192,7 @@ pub fn position<T: Real>(
     // `sqrt(gap (dist + e))`: a second power of the lengths, formed from
     // factors scaled exactly by a power of two where it would leave the
     // normal range (as in the RRP's half chord; cold path).
-    let (sum, prod) = (dist + e, gap * (dist + e));
-    let root = if prod >= lo && prod <= hi {
-        prod.sqrt_kernel()
-    } else {
-        scaled_root(gap, sum, dist)
-    };
+    let root = root_of_product(gap, dist + e, dist);
     let s = mode.sign::<T>() * root;
     // |p|^2 u = s p - offset perp(p) (expand p = s u + offset perp(u)); divided
     // by |p| to keep magnitudes near |p| (exact in exact configurations: a
@@ -168,11 +200,7 @@ pub fn position<T: Real>(
     // rounding. `s p` is a product of two lengths: where `|p|^2` is outside
     // the plain range, every length is scaled exactly by a power of two
     // first (cold path), which gives the same bits as at unit scale.
-    let v = if plain {
-        (p * s - perp(&p) * offset) / dist
-    } else {
-        scaled_axis(&p, s, offset, dist)
-    };
+    let v = axis_of(s, dist);
     let norm = length(&v);
     if !norm.finite() {
         return Err(Error::new(P, Fault::NonFinite { what: "RPR axis" }));
@@ -188,15 +216,14 @@ pub fn position<T: Real>(
     }
     let axis = finite_vec(v / norm, P, "RPR axis")?;
     let s = finite(s, P, "RPR slide displacement s")?;
-    Ok(RprPosition { axis, s })
+    Ok(RprPosition { axis, s, dist })
 }
 
 /// `(s p - offset perp(p)) / |p|` with `p`, `s`, `offset` and `|p|` first
 /// scaled by the power of two below `|p|` (exact), for `|p|` outside the
-/// plain range of [`length_any`] (cold path of [`position`]): a vector of
+/// range of [`plain_square`] (cold path of [`position`]): a vector of
 /// length about 1, the direction of the axis.
-#[cold]
-#[inline(never)]
+#[inline(always)]
 fn scaled_axis<T: Real>(p: &Vector2<T>, s: T, offset: T, dist: T) -> Vector2<T> {
     let (down, _) = pow2_scale(dist);
     let (p, s, offset, dist) = (p * down, s * down, offset * down, dist * down);
@@ -219,7 +246,7 @@ fn determinant<T: Real>(
     b: &Point2<T>,
     p: &Vector2<T>,
 ) -> Result<(T, T), Error<T>> {
-    let dist = length_any(p);
+    let dist = pos.dist;
     let (det, condition) = check_det_condition(dot(&pos.axis, p), length(&pos.axis) * dist, P)?;
     let size = coordinate_size(a, b);
     let spread = if dist < size { dist / size } else { T::one() };

@@ -37,12 +37,11 @@
 //! The block turns with the guide body; its angular rates are the guide's.
 //! Units: lengths in the user's unit L, rates per second; angular rates in rad/s.
 //!
-//! Range of scale: the half chord's product `gap (l + h)` and the length
-//! `|r1|` of the rate system's scale are second powers of the lengths;
-//! where they leave the normal range of `T` both are formed from factors
-//! scaled exactly by a power of two (cold paths), and the rates divide `r1`
-//! by the determinant before the dot product with the velocities (no
-//! `L^2`). So the group is as accurate at any scale as at 1: measured
+//! Range of scale: the half chord's product `gap (l + h)` is a second power
+//! of the lengths; where it leaves the normal range of `T` it is formed
+//! from factors scaled exactly by a power of two (cold path). The rate
+//! system's scale is `l` itself (no `|r1|^2`), and the rates divide `r1` by
+//! the determinant before the dot product with the velocities (no `L^2`). So the group is as accurate at any scale as at 1: measured
 //! within 1.2 `eps l / kappa` (positions) and 1.5 `eps |vA| / kappa^3`
 //! (rates) of the double-double reference for f32 lengths 1e-30 .. 1e34
 //! and f64 1e-150 .. 1e150, and bit for bit scale-invariant under powers of
@@ -62,7 +61,7 @@ use crate::eft::{compensated, half_excess, split, two_product_split, two_sum};
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
     abs, check_det_condition, cross, difference, dot, finite, finite_point, finite_vec, length,
-    length_any, normal_range, perp, plus, positive, scaled_root,
+    perp, plus, positive, root_of_product,
 };
 use crate::guide::{Line, LineAcceleration, LineVelocity};
 use crate::link::{relative_acceleration, relative_velocity};
@@ -81,6 +80,10 @@ pub struct RrpPosition<T: Real> {
     pub r1: Vector2<T>,
     /// Displacement of `C` along `g.dir` from `g.origin` (L): `C = g.at(s, offset)`.
     pub s: T,
+    /// Length `l` of link 1 (L, > 0), `|r1|` to rounding: the rate system's
+    /// scale, kept so that [`velocity`] and [`acceleration`] need no square
+    /// root of their own (nor a range check of `|r1|^2`).
+    pub l: T,
 }
 
 /// Rates of the RRP group.
@@ -173,21 +176,10 @@ pub fn position<T: Real>(
         ));
     }
     let gap = if gap < T::zero() { T::zero() } else { gap };
-    // Half chord, sqrt(l^2 - k^2) factored: no cancellation near tangency.
-    // The product is of the second power of the lengths: outside the normal
-    // range (f32 lengths below about 1e-19, or nearer tangency at larger
-    // ones, or above about 1e19; f64 beyond about 1e-154 .. 1e154) it would
-    // be subnormal (bits silently lost), zero or infinite; there both
-    // factors are scaled by the power of two nearest `1 / l` first (cold
-    // path; exact, so the result is bit for bit the unscaled one's times
-    // that power). Zero at tangency takes that path too and gives 0.
-    let (sum, prod) = (l + h, gap * (l + h));
-    let (lo, hi) = normal_range::<T>();
-    let root = if prod >= lo && prod <= hi {
-        prod.sqrt_kernel()
-    } else {
-        scaled_root(gap, sum, l)
-    };
+    // Half chord, sqrt(l^2 - k^2) factored: no cancellation near tangency
+    // (scaled exactly by a power of two where the product would leave the
+    // normal range).
+    let root = root_of_product(gap, l + h, l);
     let half = mode.sign::<T>() * root;
     let k = kh + kl;
     // `dir half - n k` over `|dir|`, and `t = dot(p, dir) / |dir|`.
@@ -200,19 +192,15 @@ pub fn position<T: Real>(
     };
     let s = finite(t + half, P, "RRP slide displacement s")?;
     let c = finite_point(a + r1, P, "RRP joint C")?;
-    Ok(RrpPosition { c, r1, s })
+    Ok(RrpPosition { c, r1, s, l })
 }
 
 /// Determinant of the rate system, `dot(r1, dir) = +-sqrt(l^2 - k^2)`, checked
-/// against `16 eps |r1| |dir|` (`|r1|` without overflow or underflow of its
-/// square: [`length_any`]).
+/// against `16 eps l |dir|` (`l = |r1|` to rounding, as the position kept it:
+/// no square of a length, so any scale works, and no square root here).
 #[inline(always)]
 fn determinant<T: Real>(pos: &RrpPosition<T>, g: &Line<T>) -> Result<(T, T), Error<T>> {
-    check_det_condition(
-        dot(&pos.r1, &g.dir),
-        length_any(&pos.r1) * length(&g.dir),
-        P,
-    )
+    check_det_condition(dot(&pos.r1, &g.dir), pos.l * length(&g.dir), P)
 }
 
 /// Rates of the group from the velocity of `A` (L/s; `None`: fixed) and the
