@@ -249,94 +249,98 @@ fn stage_study() {
     // axis (B, the RRP position, the RRP rates and accelerations) given the
     // exact direction (X) or the rounded pair's angle (U).
     use Src::{Exact as X, Stage as G, Turned as U};
-    report(
-        "f64, turned but the RRP position exact",
-        &[M::D; NS],
-        Ax::Per([U, X, U]),
-        0.0,
-    );
-    report(
-        "f64, turned for the RRP rates only",
-        &[M::D; NS],
-        Ax::Per([X, X, U]),
-        0.0,
-    );
-    report(
-        "f64, turned but the RRP exact",
-        &[M::D; NS],
-        Ax::Per([U, X, X]),
-        0.0,
-    );
+    // Stages by their index in NAMES.
+    let (rrp, rrr, rrpv, rrpa) = (2, 4, 7, 11);
+    // Every stage in `base`, but the stages in `rounded` in f64 with their
+    // outputs rounded to f32.
+    let modes = |base: M, rounded: &[usize]| {
+        let mut m = [base; NS];
+        for &i in rounded {
+            m[i] = M::R;
+        }
+        m
+    };
     // Then the f32 code with the ideal of each idea: (1) the RRP position
     // from the exact direction in f64, its outputs rounded (a tail on the
     // direction entering `k`); (2) the RRP rates and accelerations in f64,
     // outputs rounded (compensated right-hand sides at their best); the
     // rates given the exact direction too (the tail entering the rate
-    // systems); and the RRR position in f64, outputs rounded.
-    let mut m0 = [M::S; NS];
-    m0[4] = M::R;
-    report("f32, RRR pos. exact, rounded", &m0, Ax::None, 0.0);
-    let mut m1 = [M::S; NS];
-    m1[2] = M::R;
-    report(
-        "f32, RRP pos. exact dir, rounded (1)",
-        &m1,
-        Ax::Per([G, X, G]),
-        0.0,
-    );
-    let mut m2 = [M::S; NS];
-    m2[7] = M::R;
-    m2[11] = M::R;
-    report("f32, RRP v, a exact, rounded (2)", &m2, Ax::None, 0.0);
-    let mut m12 = m1;
-    m12[7] = M::R;
-    m12[11] = M::R;
-    report("f32, (1) and (2)", &m12, Ax::Per([G, X, G]), 0.0);
-    report(
-        "f32, (1) and (2), rates exact dir",
-        &m12,
-        Ax::Per([G, X, X]),
-        0.0,
-    );
-    let mut m12r = m12;
-    m12r[4] = M::R;
-    report(
-        "f32, (1), (2) exact dir, RRR pos. rounded",
-        &m12r,
-        Ax::Per([G, X, X]),
-        0.0,
-    );
-    // The floor of f32 values between the primitives: every stage in f64
-    // with its outputs rounded and the exact direction; then with the RRP
+    // systems); and the RRR position in f64, outputs rounded. Last, the
+    // floor of f32 values between the primitives: every stage in f64 with
+    // its outputs rounded and the exact direction; then with the RRP
     // group's state (position, rates) carried unrounded from its position
     // to its accelerations ("fused": what tails on `r1`, `s`, `omega1`,
     // `s_dot` would give), alone and in the f32 code.
-    report(
-        "f64 in each stage, f32 between, exact dir",
-        &[M::R; NS],
-        Ax::Per([X, X, X]),
-        0.0,
-    );
-    report(
-        "f64 in each stage, f32 between, RRP fused",
-        &[M::R; NS],
-        Ax::Fused([X, X, X]),
-        0.0,
-    );
-    report(
-        "f32, RRP fused in f64, exact dir",
-        &[M::S; NS],
-        Ax::Fused([X, X, X]),
-        0.0,
-    );
-    let mut mr = [M::S; NS];
-    mr[4] = M::R;
-    report(
-        "f32, RRP fused in f64, RRR pos. rounded",
-        &mr,
-        Ax::Fused([X, X, X]),
-        0.0,
-    );
+    let variants = [
+        (
+            "f64, turned but the RRP position exact",
+            modes(M::D, &[]),
+            Ax::Per([U, X, U]),
+        ),
+        (
+            "f64, turned for the RRP rates only",
+            modes(M::D, &[]),
+            Ax::Per([X, X, U]),
+        ),
+        (
+            "f64, turned but the RRP exact",
+            modes(M::D, &[]),
+            Ax::Per([U, X, X]),
+        ),
+        (
+            "f32, RRR pos. exact, rounded",
+            modes(M::S, &[rrr]),
+            Ax::None,
+        ),
+        (
+            "f32, RRP pos. exact dir, rounded (1)",
+            modes(M::S, &[rrp]),
+            Ax::Per([G, X, G]),
+        ),
+        (
+            "f32, RRP v, a exact, rounded (2)",
+            modes(M::S, &[rrpv, rrpa]),
+            Ax::None,
+        ),
+        (
+            "f32, (1) and (2)",
+            modes(M::S, &[rrp, rrpv, rrpa]),
+            Ax::Per([G, X, G]),
+        ),
+        (
+            "f32, (1) and (2), rates exact dir",
+            modes(M::S, &[rrp, rrpv, rrpa]),
+            Ax::Per([G, X, X]),
+        ),
+        (
+            "f32, (1), (2) exact dir, RRR pos. rounded",
+            modes(M::S, &[rrp, rrr, rrpv, rrpa]),
+            Ax::Per([G, X, X]),
+        ),
+        (
+            "f64 in each stage, f32 between, exact dir",
+            modes(M::R, &[]),
+            Ax::Per([X, X, X]),
+        ),
+        (
+            "f64 in each stage, f32 between, RRP fused",
+            modes(M::R, &[]),
+            Ax::Fused([X, X, X]),
+        ),
+        (
+            "f32, RRP fused in f64, exact dir",
+            modes(M::S, &[]),
+            Ax::Fused([X, X, X]),
+        ),
+        (
+            "f32, RRP fused in f64, RRR pos. rounded",
+            modes(M::S, &[rrr]),
+            Ax::Fused([X, X, X]),
+        ),
+    ];
+    for (label, m, ax) in variants {
+        report(label, &m, ax, 0.0);
+    }
     // Which stage's f32 storage costs what, with the exact direction.
     for i in 1..NS {
         let mut m = [M::D; NS];
