@@ -263,21 +263,7 @@ fn run_cross_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         let reference = reference_forces(&system, (&ps, &vs, &accs));
         let f = &sol.forces;
         let pins = [f.r_ground_crank_link, f.r_block1_block2];
-        let prismatic = |got: &mechanism::force::PrismaticReaction<T>, r: &Reaction| {
-            let Reaction::Prismatic { normal, moment, .. } = *r else {
-                panic!("{what}: a guide's reaction is prismatic");
-            };
-            [
-                (
-                    (got.normal.as_f64() - normal.to_f64()).abs(),
-                    normal.to_f64().abs(),
-                ),
-                (
-                    (got.moment.as_f64() - moment.to_f64()).abs() / a,
-                    moment.to_f64().abs() / a,
-                ),
-            ]
-        };
+        let prismatic = |got, r| prismatic_errors(got, r, a, &what);
         let [n1, m1] = prismatic(&f.r_crank_link_block1, &reference.reactions[2]);
         let [n2, m2r] = prismatic(&f.r_ground_block2, &reference.reactions[3]);
         // The largest acceleration in the mechanism (see `run_quad_forces`):

@@ -1735,19 +1735,7 @@ fn run_slide_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         ];
         let drive = (f.drive_theta.as_f64() - reference.drives[0].to_f64()).abs() / a;
         // The guide's normal force and its couple over the rod's length.
-        let Reaction::Prismatic { normal, moment, .. } = reference.reactions[3] else {
-            panic!("the guide's reaction is prismatic");
-        };
-        let guide = [
-            (
-                (guide.normal.as_f64() - normal.to_f64()).abs(),
-                normal.to_f64().abs(),
-            ),
-            (
-                (guide.moment.as_f64() - moment.to_f64()).abs() / l,
-                moment.to_f64().abs() / l,
-            ),
-        ];
+        let guide = prismatic_errors(guide, &reference.reactions[3], l, &what);
         let verdict = ForceVerdict {
             eps,
             spread,
@@ -1755,6 +1743,32 @@ fn run_slide_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         };
         verdict.record(tally, (&reference, &pins), drive, &loads, &guide, &what);
     })
+}
+
+/// A generated prismatic reaction against the reference's: the errors and
+/// sizes `(|error|, |reference|)` of the normal force (N) and of the couple
+/// over `length` (N m / m: a force, so that both compare with the force
+/// bound), as `ForceVerdict::record` takes them. Panics (naming `what`) if
+/// the reference's reaction at that joint is not prismatic.
+fn prismatic_errors<T: Real>(
+    got: &mechanism::force::PrismaticReaction<T>,
+    reference: &Reaction,
+    length: f64,
+    what: &str,
+) -> [(f64, f64); 2] {
+    let Reaction::Prismatic { normal, moment, .. } = *reference else {
+        panic!("{what}: a guide's reaction is prismatic");
+    };
+    [
+        (
+            (got.normal.as_f64() - normal.to_f64()).abs(),
+            normal.to_f64().abs(),
+        ),
+        (
+            (got.moment.as_f64() - moment.to_f64()).abs() / length,
+            moment.to_f64().abs() / length,
+        ),
+    ]
 }
 
 /// The reference's reactions and driving efforts of `system` at the points'

@@ -254,20 +254,7 @@ pub(crate) fn run_swing_forces<T: Real>(samples: usize, seed: u64) -> Tally {
             reference.drives[0].to_f64().abs() / l_min,
         ];
         let drive = (f.drive_theta.as_f64() - reference.drives[0].to_f64()).abs() / a;
-        let Reaction::Prismatic { normal, moment, .. } = reference.reactions[3] else {
-            panic!("the slide's reaction is prismatic");
-        };
-        let slide = &f.r_block_rocker;
-        let extra = [
-            (
-                (slide.normal.as_f64() - normal.to_f64()).abs(),
-                normal.to_f64().abs(),
-            ),
-            (
-                (slide.moment.as_f64() - moment.to_f64()).abs() / l_min,
-                moment.to_f64().abs() / l_min,
-            ),
-        ];
+        let extra = prismatic_errors(&f.r_block_rocker, &reference.reactions[3], l_min, &what);
         let verdict = ForceVerdict {
             eps,
             spread,

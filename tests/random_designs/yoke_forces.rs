@@ -238,18 +238,7 @@ pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         let drive = (f.drive_theta.as_f64() - reference.drives[0].to_f64()).abs() / a;
         let mut extra = Vec::new();
         for (k, got) in [(2, &f.r_block_yoke), (3, &f.r_ground_yoke)] {
-            let Reaction::Prismatic { normal, moment, .. } = reference.reactions[k] else {
-                panic!("the slot's and the guide's reactions are prismatic");
-            };
-
-            extra.push((
-                (got.normal.as_f64() - normal.to_f64()).abs(),
-                normal.to_f64().abs(),
-            ));
-            extra.push((
-                (got.moment.as_f64() - moment.to_f64()).abs() / a,
-                moment.to_f64().abs() / a,
-            ));
+            extra.extend(prismatic_errors(got, &reference.reactions[k], a, &what));
         }
         // `ForceVerdict` divides by its condition cubed; the yoke's errors
         // grow as `1 / kappa` only (see the bound above), so it gets the
