@@ -45,8 +45,9 @@
 //! So the group is as accurate at any scale as at 1: measured within 1.2
 //! `eps l / kappa` (positions) and 1.5 `eps |vA| / kappa^3` (rates) of the
 //! double-double reference for f32 lengths 1e-30 .. 1e34 and f64 1e-150 ..
-//! 1e150, and bit for bit scale-invariant under powers of two for f32 lengths 1.7e-23 .. 1.6e30 and f64 1e-301 .. 1e295 (tests
-//! below). The limits that remain: in f32 the tangency compensation's
+//! 1e150, and bit for bit scale-invariant under powers of two for f32
+//! lengths 1.7e-23 .. 1.6e30 and f64 1e-301 .. 1e295 (tests below). The
+//! limits that remain: in f32 the tangency compensation's
 //! error terms (`eps^2 L`) underflow below about 1e-23 (accuracy then as
 //! without it: still within the bound of the tests to 1e-30), the
 //! reciprocal of the determinant overflows below about 1e-31 near a
