@@ -68,9 +68,7 @@ fn run_boom_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         // The applied loads' size: the weight and an inertia load of the
         // cylinder's scale, times 1e-2 .. 1e2.
         let typical = m1 * (g + len_ddot.abs() + len_dot * len_dot / r.min(len.max(lo)));
-        let load = |rng: &mut Rng| {
-            through::<T>(typical * 10f64.powf(rng.uniform(-2.0, 2.0)) * rng.uniform(-1.0, 1.0))
-        };
+        let load = |rng: &mut Rng| random_load::<T>(rng, typical);
         let (fx, fy, cx, cy) = (load(rng), load(rng), load(rng), load(rng));
         let t1 = load(rng) * r;
         let lit = |x: f64| T::lit(x);

@@ -89,9 +89,7 @@ fn run_cross_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         // The applied loads' size: the weights and an inertia load of the
         // crank's scale, times 1e-2 .. 1e2.
         let typical = (m2 + m3 + m4) * (g + sc * (w * w + al.abs()));
-        let load = |rng: &mut Rng| {
-            through::<T>(typical * 10f64.powf(rng.uniform(-2.0, 2.0)) * rng.uniform(-1.0, 1.0))
-        };
+        let load = |rng: &mut Rng| random_load::<T>(rng, typical);
         let (fx, fy, hx, hy, fs) = (load(rng), load(rng), load(rng), load(rng), load(rng));
         let (t3, t4) = (load(rng) * b3, load(rng) * b4);
         let fr = load(rng);

@@ -424,6 +424,13 @@ fn through<T: Real>(x: f64) -> f64 {
     T::lit(x).as_f64()
 }
 
+/// A random applied load (N or N m, as `typical`): `typical` times a factor
+/// log-uniform over 1e-2 .. 1e2 and a uniform sign and size in (-1, 1),
+/// rounded through `T`.
+fn random_load<T: Real>(rng: &mut Rng, typical: f64) -> f64 {
+    through::<T>(typical * 10f64.powf(rng.uniform(-2.0, 2.0)) * rng.uniform(-1.0, 1.0))
+}
+
 /// A random length: a factor in [0.2, 5) times `scale`.
 fn length(rng: &mut Rng, scale: f64) -> f64 {
     scale * rng.uniform(0.2, 5.0)
@@ -1230,9 +1237,7 @@ fn run_quad_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         // The applied loads' size: the weights and a crank-driven inertia
         // load (m |a_A|), times 1e-2 .. 1e2.
         let typical = (m2 + m3 + m4) * (g + a * (w * w + al.abs()));
-        let load = |rng: &mut Rng| {
-            through::<T>(typical * 10f64.powf(rng.uniform(-2.0, 2.0)) * rng.uniform(-1.0, 1.0))
-        };
+        let load = |rng: &mut Rng| random_load::<T>(rng, typical);
         let (fx, fy, t4) = (load(rng), load(rng), load(rng) * c);
         let lit = |x: f64| T::lit(x);
         let m = QuadLoaded::<T> {
@@ -1614,9 +1619,7 @@ fn run_slide_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         let j3 = through::<T>(m3 * l * l * rng.uniform(0.01, 0.2));
         let (q, w, al) = drive::<T>(rng);
         let typical = (m2 + m3 + m4) * (g + a * (w * w + al.abs()));
-        let load = |rng: &mut Rng| {
-            through::<T>(typical * 10f64.powf(rng.uniform(-2.0, 2.0)) * rng.uniform(-1.0, 1.0))
-        };
+        let load = |rng: &mut Rng| random_load::<T>(rng, typical);
         let (fx, fy, fs) = (load(rng), load(rng), load(rng));
         let lit = |x: f64| T::lit(x);
         let m = SlideLoaded::<T> {

@@ -85,9 +85,7 @@ pub(crate) fn run_yoke_forces<T: Real>(samples: usize, seed: u64) -> Tally {
         let j2 = through::<T>(m2 * a * a * rng.uniform(0.01, 0.2));
         let (q, w, al) = drive::<T>(rng);
         let typical = (m2 + m3 + m4) * (g + a * (w * w + al.abs()));
-        let load = |rng: &mut Rng| {
-            through::<T>(typical * 10f64.powf(rng.uniform(-2.0, 2.0)) * rng.uniform(-1.0, 1.0))
-        };
+        let load = |rng: &mut Rng| random_load::<T>(rng, typical);
         let (fx, fy, fs) = (load(rng), load(rng), load(rng));
         let (t3, t4) = (through::<T>(load(rng) * lb), through::<T>(load(rng) * ly));
         let lit = |x: f64| T::lit(x);
