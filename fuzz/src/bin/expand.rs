@@ -1,0 +1,2 @@
+//! Placeholder: the expand fuzzer is being written.
+fn main() {}

@@ -1,0 +1,2 @@
+//! Placeholder: the runtime fuzzer is being written.
+fn main() {}
