@@ -7,14 +7,11 @@
 //! user's token; on error, stub items with the real names keep the user's own
 //! code free of follow-on errors.
 
-pub mod batch;
 pub mod check;
 pub mod emit;
-pub mod kinetostatics;
 pub mod model;
 pub mod parse;
 pub mod plan;
-pub mod self_test;
 pub mod validate;
 pub mod value;
 
@@ -55,7 +52,7 @@ pub fn expand(input: TokenStream) -> TokenStream {
     let mut findings = check::expansion_check(&model, &plan, &inputs, &allowed);
     let mut errors = std::mem::take(&mut findings.errors);
     if let Some(span) = model.checks.self_test {
-        if let Some(e) = self_test::requirements(&model, &inputs, span) {
+        if let Some(e) = emit::self_test::requirements(&model, &inputs, span) {
             errors.push(e);
         }
     }
@@ -66,7 +63,7 @@ pub fn expand(input: TokenStream) -> TokenStream {
     let self_tests = model
         .checks
         .self_test
-        .map(|_| self_test::emit(&model, &plan, &inputs, &allowed, &findings));
+        .map(|_| emit::self_test::emit(&model, &plan, &inputs, &allowed, &findings));
     // The position struct keeps the fields these read (`pos.NAME`).
     let readers = format!(
         "{} {}",

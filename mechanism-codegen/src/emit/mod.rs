@@ -3,6 +3,10 @@
 //! unless a link angle is an output, and fixed points and guides pass `None`
 //! so that their terms vanish at compile time.
 
+pub mod batch;
+pub mod forces;
+pub mod self_test;
+
 use crate::model::{Kind, Level, Local, Mode, Model, Origin, Stmt};
 use crate::plan::Plan;
 use crate::value::{lit, Value};
@@ -62,7 +66,7 @@ pub(crate) fn outputs(model: &Model, plan: &Plan) -> Outputs {
 /// Statements the outputs need, directly or through the statements they use.
 /// The rest (a coupler point nobody asked for) is left out.
 pub(crate) fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usize> {
-    let mut stack: Vec<usize> = crate::kinetostatics::roots(model, plan);
+    let mut stack: Vec<usize> = forces::roots(model, plan);
     for p in &out.points {
         stack.extend(plan.defined.get(&p.to_string()));
     }
@@ -555,7 +559,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     // analysis (or `check()`, or the self-tests) reads (`pos.NAME`,
     // `vel.NAME`, `acc.NAME`); the rest are locals and never stored.
     let level = model.level;
-    let forces = (level >= Level::Forces).then(|| crate::kinetostatics::emit(model, plan, &moving));
+    let forces = (level >= Level::Forces).then(|| forces::emit(model, plan, &moving));
     let accel_rates = (level >= Level::Acceleration).then(|| emit_rates(&em, &moving, &out, true));
     let vel_rates = (level >= Level::Velocity).then(|| emit_rates(&em, &moving, &out, false));
     let mut later = String::from(readers);
@@ -942,7 +946,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     }
 
     // Batch API (structure of arrays, issue 5): see batch.rs.
-    items.extend(crate::batch::emit(model, &inputs, &pos_out_fields));
+    items.extend(batch::emit(model, &inputs, &pos_out_fields));
     let allow_lints = allow_literal_lints();
     quote! {
         #items
