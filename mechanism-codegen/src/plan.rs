@@ -2,8 +2,9 @@
 //! each point, link and guide is: which link a point rides on, how each link
 //! turns (its own angular velocity, a guide's, or none), which guides move.
 
-use crate::model::{Kind, Model, Origin, Stmt};
-use std::collections::BTreeMap;
+use crate::diag::Diagnostics;
+use crate::model::{ForceSpecValue, Kind, Model, Origin, Stmt};
+use std::collections::{BTreeMap, BTreeSet};
 use syn::Ident;
 
 /// How a link turns.
@@ -55,6 +56,12 @@ pub struct Plan {
     /// ground). A joint of two links belongs to the first link of the
     /// statement that defines it; see [`point_owner`].
     pub owner: BTreeMap<String, Option<String>>,
+    /// What the definition asks to see: its outputs.
+    pub outputs: Outputs,
+    /// The statements the outputs and the force analysis need, in solve
+    /// order: what `position()` solves (a coupler point nobody asked for is
+    /// left out).
+    pub solve: Vec<usize>,
 }
 
 /// The body a statement's point belongs to when another group is pinned there:
@@ -135,7 +142,7 @@ fn link_shapes(stmt: &Stmt) -> Vec<(Vec<String>, Turn, Option<String>)> {
 
 /// Builds the plan. Errors: dependency cycles (with the cycle spelled out).
 /// Undefined names were reported by `validate`; they are skipped here.
-pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
+pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
     let mut defined = BTreeMap::new();
     let mut links = BTreeMap::new();
     let mut guides = BTreeMap::new();
@@ -215,7 +222,12 @@ pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
                 order.push(i);
             }
             _ => {
-                // Everything left waits on something left: report the cycle.
+                // Everything left waits on something left: report the cycle,
+                // unless an error is already reported (a duplicate name reads
+                // as a statement that needs itself: a follow-on, not a cycle).
+                if !errors.is_empty() {
+                    return None;
+                }
                 let left: Vec<usize> = (0..n).filter(|&i| !done[i]).collect();
                 let start = left[0];
                 let mut cycle = vec![start];
@@ -232,9 +244,8 @@ pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
                     .iter()
                     .map(|&i| model.stmts[i].name.to_string())
                     .collect();
-                let mut errors = Vec::new();
                 let first = &model.stmts[cycle[0]];
-                errors.push(syn::Error::new(
+                errors.error(syn::Error::new(
                     first.name.span(),
                     format!(
                         "dependency cycle: {} -> {}; each statement may use only names that do not, in turn, need it: break the cycle by fixing one of them to the ground or to a driver",
@@ -242,18 +253,29 @@ pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
                         names[0]
                     ),
                 ));
-                return Err(errors);
+                return None;
             }
         }
     }
-    Ok(Plan {
+    let mut plan = Plan {
         order,
         defined,
         links,
         guides,
         ground,
         owner,
-    })
+        outputs: Outputs::default(),
+        solve: Vec::new(),
+    };
+    plan.outputs = outputs(model, &plan);
+    let needed = needed_statements(model, &plan, &plan.outputs);
+    plan.solve = plan
+        .order
+        .iter()
+        .copied()
+        .filter(|i| needed.contains(i))
+        .collect();
+    Some(plan)
 }
 
 impl Plan {
@@ -294,4 +316,126 @@ impl Plan {
         }
         None
     }
+}
+
+/// Which names the user wants in the output structs.
+#[derive(Default)]
+pub struct Outputs {
+    /// Points, in solve order.
+    pub points: Vec<Ident>,
+    /// Named links, in solve order.
+    pub links: Vec<Ident>,
+    /// Slide displacements: name, statement, slot.
+    pub slides: Vec<(Ident, usize, usize)>,
+}
+
+fn outputs(model: &Model, plan: &Plan) -> Outputs {
+    let wanted = |name: &Ident| match &model.outputs {
+        None => true,
+        Some(list) => list.iter().any(|o| o == name),
+    };
+    let mut out = Outputs {
+        points: vec![],
+        links: vec![],
+        slides: vec![],
+    };
+    for &i in &plan.order {
+        let stmt = &model.stmts[i];
+        match stmt.kind {
+            Kind::Guide { .. } => {}
+            Kind::Rpr { .. } => {
+                if wanted(&stmt.name) {
+                    out.slides.push((stmt.name.clone(), i, 0));
+                }
+            }
+            _ => {
+                if wanted(&stmt.name) {
+                    out.points.push(stmt.name.clone());
+                }
+            }
+        }
+        for (link, named) in stmt.links.iter().zip(&stmt.links_named) {
+            if *named && wanted(link) {
+                out.links.push(link.clone());
+            }
+        }
+        for (slot, slide) in stmt.slides.iter().enumerate() {
+            if let Some(s) = slide {
+                if wanted(s) {
+                    out.slides.push((s.clone(), i, slot));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Statements the outputs need, directly or through the statements they use.
+/// The rest (a coupler point nobody asked for) is left out.
+fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usize> {
+    let mut stack: Vec<usize> = roots(model, plan);
+    for p in &out.points {
+        stack.extend(plan.defined.get(&p.to_string()));
+    }
+    for l in &out.links {
+        stack.extend(plan.links.get(&l.to_string()).map(|i| i.stmt));
+    }
+    stack.extend(out.slides.iter().map(|(_, i, _)| *i));
+    let mut needed = BTreeSet::new();
+    while let Some(i) = stack.pop() {
+        if needed.insert(i) {
+            for r in references(&model.stmts[i]) {
+                stack.extend(plan.defined.get(&r.to_string()));
+            }
+        }
+    }
+    needed
+}
+
+/// Statements the force analysis needs besides those of the outputs: every
+/// statement that creates a link (all reactions are outputs), the centres of
+/// mass, the points where forces act and the guides forces follow.
+fn roots(model: &Model, plan: &Plan) -> Vec<usize> {
+    if !model.has_forces() {
+        return Vec::new();
+    }
+    let k = &model.kinetics;
+    let mut roots: Vec<usize> = model
+        .stmts
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| !s.links.is_empty())
+        .map(|(i, _)| i)
+        .collect();
+    let named = k
+        .masses
+        .iter()
+        .map(|m| m.at.to_string())
+        .chain(k.forces.iter().map(|f| f.at.to_string()))
+        .chain(k.forces.iter().filter_map(|f| match &f.value {
+            ForceSpecValue::Along(g, _) => Some(g.to_string()),
+            ForceSpecValue::Components(..) => None,
+        }));
+    roots.extend(named.filter_map(|n| plan.defined.get(&n).copied()));
+    roots
+}
+
+/// The statements the generated `position()` solves (those the outputs
+/// need), in solve order, and among them the checked groups.
+pub struct Checked {
+    /// Statement indices in solve order.
+    pub order: Vec<usize>,
+    /// Statement indices of the checked groups (drivers, groups, link points).
+    pub groups: Vec<usize>,
+}
+
+/// The statements `position()` solves and the checked groups among them.
+pub fn checked(model: &Model, plan: &Plan) -> Checked {
+    let order = plan.solve.clone();
+    let groups = order
+        .iter()
+        .copied()
+        .filter(|&i| crate::model::group_kind(&model.stmts[i].kind).is_some())
+        .collect();
+    Checked { order, groups }
 }

@@ -20,313 +20,22 @@
 //! Two inputs are checked only when both have declared ranges (a grid over the
 //! box); three or more are not checked.
 
-use crate::model::{did_you_mean, Errors, Kind, Local, Mode, Model, Origin};
-use crate::parse::{Arg, RangeDecl};
+use crate::diag::{show_interval, show_num, show_value, Diagnostics};
+use crate::model::{group_kind, Input, Kind, Local, Mode, Model, Origin};
 use crate::plan::Plan;
-use crate::value::{convert, Scope, Value};
+use crate::plan::{checked, Checked};
+use crate::value::Value;
 use mechanism_core::guide::Line;
 use mechanism_core::sweep::{self, Event, Outcome, Range, Tolerances};
 use mechanism_core::{driver, dyad, geometry, link, Fault, Point2, Vector2};
-use proc_macro2::{Span, TokenStream};
-use quote::{format_ident, quote, quote_spanned};
+use proc_macro2::TokenStream;
+use quote::{quote, quote_spanned};
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 use syn::Ident;
 
-/// What the definition declares for the checks.
-#[derive(Default)]
-pub struct Declared {
-    /// `range INPUT = (lo, hi);` statements.
-    pub ranges: Vec<RangeDecl>,
-    /// `allow singular [groups];` statements: the keyword's span, the word
-    /// after it, the groups (empty: every group).
-    pub allow: Vec<(Span, Ident, Vec<Ident>)>,
-    /// `#[self_test]`.
-    pub self_test: Option<Span>,
-}
-
-/// One driver input, as the checks see it.
-#[derive(Clone)]
-pub struct Input {
-    /// Its name (a field of the generated input struct).
-    pub name: Ident,
-    /// `true` for a crank angle (rad; shown in deg).
-    pub angle: bool,
-    /// The range to check; `None`: none declared and no default (a slider or
-    /// an actuator).
-    pub range: Option<Range>,
-    /// `true` when the range was declared.
-    pub declared: bool,
-    /// Where the declared range is written: its input's name, its lower and
-    /// its upper end (the spans of a failure the range is to blame for).
-    pub spans: Option<RangeSpans>,
-}
-
-/// The tokens of a `range INPUT = (lo, hi);` statement.
-#[derive(Clone, Copy)]
-pub struct RangeSpans {
-    /// `INPUT`.
-    pub input: Span,
-    /// The value of `lo`.
-    pub lo: Span,
-    /// The value of `hi`.
-    pub hi: Span,
-}
-
 /// Most groups the expansion-time check handles (more: not checked).
 const MAX_GROUPS: usize = 64;
-
-struct ConstScope<'a>(&'a Model);
-
-impl Scope for ConstScope<'_> {
-    fn constant(&self, name: &Ident) -> Option<f64> {
-        self.0.consts.get(&name.to_string()).map(|c| c.1)
-    }
-    fn is_param(&self, _: &Ident) -> bool {
-        false
-    }
-    fn not_a_number(&self, name: &Ident) -> syn::Error {
-        let s = name.to_string();
-        if self.0.params.iter().any(|(p, _)| p == name) {
-            return syn::Error::new(
-                name.span(),
-                format!("a range must be known at compile time: `{s}` is a run-time parameter; use a literal or a `const`"),
-            );
-        }
-        let consts: Vec<&str> = self.0.consts.keys().map(String::as_str).collect();
-        syn::Error::new(
-            name.span(),
-            format!(
-                "cannot find constant `{s}`{}; a range bound is a literal or a `const`",
-                did_you_mean(&s, consts)
-            ),
-        )
-    }
-}
-
-/// One bound of a range, in rad (angles) or length units.
-fn bound(model: &Model, arg: &Arg, input: &Ident, angle: bool, errors: &mut Errors) -> Option<f64> {
-    let (expr, unit) = match arg {
-        Arg::Value(e, u) => (e, u),
-        Arg::From(i) => {
-            errors.push(i.span(), "expected a number here, not `from`");
-            return None;
-        }
-    };
-    let value = match convert(expr, &ConstScope(model)) {
-        Ok(v) => v,
-        Err(e) => {
-            errors.0.push(e);
-            return None;
-        }
-    };
-    let x = value.fold()?;
-    match unit {
-        None => Some(x),
-        Some(u) if angle && u == "deg" => Some(x.to_radians()),
-        Some(u) if angle && u == "rad" => Some(x),
-        Some(u) if angle => {
-            errors.push(
-                u.span(),
-                format!("unknown angle unit `{u}`; write `deg` or `rad`"),
-            );
-            None
-        }
-        Some(u) => {
-            errors.push(
-                u.span(),
-                format!("`{input}` is a displacement (length units): its range takes no unit, remove `{u}`"),
-            );
-            None
-        }
-    }
-}
-
-/// The driver inputs, in the order of the generated input struct, with their
-/// ranges; reports bad `range` statements.
-pub fn inputs(model: &Model, errors: &mut Errors) -> Vec<Input> {
-    let mut inputs: Vec<Input> = model
-        .stmts
-        .iter()
-        .filter_map(|s| {
-            let angle = matches!(s.kind, Kind::Crank { .. });
-            s.kind.input().map(|name| Input {
-                name: name.clone(),
-                angle,
-                range: angle.then_some(Range {
-                    lo: 0.0,
-                    hi: 2.0 * PI,
-                    periodic: true,
-                }),
-                declared: false,
-                spans: None,
-            })
-        })
-        .collect();
-    for decl in &model.checks.ranges {
-        let Some(k) = inputs.iter().position(|i| i.name == decl.input) else {
-            let names: Vec<String> = inputs.iter().map(|i| i.name.to_string()).collect();
-            let s = decl.input.to_string();
-            errors.push(
-                decl.input.span(),
-                format!(
-                    "`{s}` is not a driver input; a range is declared for the input of a `crank`, `slider` or `actuator`{}",
-                    did_you_mean(&s, names.iter().map(String::as_str))
-                ),
-            );
-            continue;
-        };
-        if inputs[k].declared {
-            errors.push(
-                decl.input.span(),
-                format!("the range of `{}` is declared twice", decl.input),
-            );
-            continue;
-        }
-        let angle = inputs[k].angle;
-        let lo = bound(model, &decl.lo, &decl.input, angle, errors);
-        let hi = bound(model, &decl.hi, &decl.input, angle, errors);
-        let (Some(lo), Some(hi)) = (lo, hi) else {
-            inputs[k].declared = true;
-            continue;
-        };
-        // A negative end is spanned on its number (a span cannot join `-`
-        // and the number on stable Rust; the `-` alone reads as the fault).
-        let arg_span = |a: &Arg| match a {
-            Arg::Value(syn::Expr::Unary(u), _) => syn::spanned::Spanned::span(&*u.expr),
-            Arg::Value(e, _) => syn::spanned::Spanned::span(e),
-            Arg::From(i) => i.span(),
-        };
-        let span = arg_span(&decl.hi);
-        inputs[k].spans = Some(RangeSpans {
-            input: decl.input.span(),
-            lo: arg_span(&decl.lo),
-            hi: span,
-        });
-        let show = |x: f64| show_value(x, angle);
-        if lo >= hi || !lo.is_finite() || !hi.is_finite() {
-            errors.push(
-                span,
-                format!(
-                    "the range of `{}` is empty: the upper end must be above the lower, got ({}, {})",
-                    decl.input,
-                    show(lo),
-                    show(hi)
-                ),
-            );
-        } else if angle && hi - lo > 2.0 * PI * (1.0 + 1e-12) {
-            errors.push(
-                span,
-                format!(
-                    "the range of `{}` spans {} : a crank's range spans at most a full turn (360 deg)",
-                    decl.input,
-                    show(hi - lo)
-                ),
-            );
-        } else {
-            let periodic = angle && hi - lo >= 2.0 * PI * (1.0 - 1e-12);
-            inputs[k].range = Some(Range { lo, hi, periodic });
-        }
-        inputs[k].declared = true;
-    }
-    inputs
-}
-
-/// Groups whose singular positions are allowed: `None` = none, `Some(empty)`
-/// = all. Reports bad `allow` statements.
-pub fn allowances(model: &Model, errors: &mut Errors) -> Option<Vec<String>> {
-    let mut allowed: Option<Vec<String>> = None;
-    let groups: Vec<String> = model
-        .stmts
-        .iter()
-        .filter(|s| group_kind(&s.kind).is_some())
-        .map(|s| s.name.to_string())
-        .collect();
-    for (_, what, names) in &model.checks.allow {
-        if what != "singular" {
-            errors.push(
-                what.span(),
-                format!("`allow {what}` is unknown; write `allow singular;` (every group) or `allow singular B, C;` (those groups)"),
-            );
-            continue;
-        }
-        let list = allowed.get_or_insert_with(Vec::new);
-        if names.is_empty() {
-            list.clear();
-            list.push(String::new());
-        }
-        for n in names {
-            let s = n.to_string();
-            if groups.contains(&s) {
-                list.push(s);
-            } else {
-                errors.push(
-                    n.span(),
-                    format!(
-                        "`{s}` is not a group or driver: `allow singular` names the point a group defines{}",
-                        did_you_mean(&s, groups.iter().map(String::as_str))
-                    ),
-                );
-            }
-        }
-    }
-    allowed.map(|mut l| {
-        if l.iter().any(String::is_empty) {
-            l.clear();
-        }
-        l
-    })
-}
-
-fn is_allowed(allowed: &Option<Vec<String>>, group: &str) -> bool {
-    match allowed {
-        None => false,
-        Some(list) => list.is_empty() || list.iter().any(|g| g == group),
-    }
-}
-
-/// The kind name of a statement that can fail (drivers, groups, link points).
-fn group_kind(kind: &Kind) -> Option<&'static str> {
-    Some(match kind {
-        Kind::Crank { .. } => "crank",
-        Kind::Slider { .. } => "slider",
-        Kind::Actuator { .. } => "actuator",
-        Kind::Rrr { .. } => "RRR",
-        Kind::Rrp { .. } => "RRP",
-        Kind::Rpr { .. } => "RPR",
-        Kind::Prp { .. } => "PRP",
-        Kind::Rpp { .. } => "RPP",
-        Kind::Point { .. } => "link point",
-        Kind::Ground { .. } | Kind::Guide { .. } => return None,
-    })
-}
-
-/// The statements the generated `position()` solves (those the outputs
-/// need), in solve order, and among them the checked groups.
-pub struct Checked {
-    /// Statement indices in solve order.
-    pub order: Vec<usize>,
-    /// Statement indices of the checked groups (drivers, groups, link points).
-    pub groups: Vec<usize>,
-}
-
-/// The statements `position()` solves and the checked groups among them.
-pub fn checked(model: &Model, plan: &Plan) -> Checked {
-    let out = crate::emit::outputs(model, plan);
-    let needed = crate::emit::needed_statements(model, plan, &out);
-    let order: Vec<usize> = plan
-        .order
-        .iter()
-        .copied()
-        .filter(|i| needed.contains(i))
-        .collect();
-    let groups = order
-        .iter()
-        .copied()
-        .filter(|&i| group_kind(&model.stmts[i].kind).is_some())
-        .collect();
-    Checked { order, groups }
-}
 
 /// Every value `position()` uses, for the statements in `order`.
 fn position_values(model: &Model, order: &[usize]) -> Vec<Value> {
@@ -559,44 +268,6 @@ impl Evaluator<'_> {
     }
 }
 
-/// A number for a message: up to 6 decimals, trailing zeros removed.
-fn show_num(x: f64) -> String {
-    let s = format!("{x:.6}");
-    let s = if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
-    };
-    if s == "-0" {
-        "0".into()
-    } else {
-        s
-    }
-}
-
-/// An input value for a message: degrees for angles.
-fn show_value(x: f64, angle: bool) -> String {
-    if angle {
-        format!("{} deg", show_num(x.to_degrees()))
-    } else {
-        show_num(x)
-    }
-}
-
-fn show_interval(lo: f64, hi: f64, angle: bool) -> String {
-    let (lo, hi) = if angle {
-        (lo.to_degrees(), hi.to_degrees())
-    } else {
-        (lo, hi)
-    };
-    format!(
-        "[{}, {}]{}",
-        show_num(lo),
-        show_num(hi),
-        if angle { " deg" } else { "" }
-    )
-}
-
 /// A range statement for a hint: the interval shrunk inward to whole tenths
 /// (deg for angles), strictly inside; `None` when nothing is left.
 fn suggest(input: &Input, lo: f64, hi: f64) -> Option<String> {
@@ -759,8 +430,6 @@ type Found = (usize, Vec<f64>, Vec<f64>, Fault, u32, bool);
 
 /// The expansion-time check's findings.
 pub struct Findings {
-    /// Compile errors.
-    pub errors: Vec<syn::Error>,
     /// Warning items (`#[deprecated]` uses).
     pub warnings: TokenStream,
     /// What was checked, for the generated doc comment.
@@ -775,7 +444,7 @@ pub struct Findings {
 /// where its determinant vanishes (PRP: parallel guides; RPP: the slot
 /// parallel to the guide): there the position itself fails, whether or not a
 /// sample lands on it.
-fn joints_at_infinity(model: &Model, checked: &Checked) -> Vec<bool> {
+pub fn joints_at_infinity(model: &Model, checked: &Checked) -> Vec<bool> {
     checked
         .groups
         .iter()
@@ -798,14 +467,10 @@ fn singular_event(at_infinity: &[bool], group: usize, at: &[f64], det: f64, coun
 }
 
 /// Runs the expansion-time check (see the module documentation).
-pub fn expansion_check(
-    model: &Model,
-    plan: &Plan,
-    inputs: &[Input],
-    allowed: &Option<Vec<String>>,
-) -> Findings {
+pub fn expansion_check(model: &Model, plan: &Plan, errors: &mut Diagnostics) -> Findings {
+    let inputs = &model.inputs;
+    let errors_before = errors.len();
     let mut findings = Findings {
-        errors: Vec::new(),
         warnings: TokenStream::new(),
         summary: String::new(),
         singular: Vec::new(),
@@ -933,7 +598,7 @@ pub fn expansion_check(
             format!("a {0} x {0} grid", sweep::SAMPLES_2D + 1)
         }
     );
-    // Errors, one per failing group (all its intervals in one message).
+    // Diagnostics, one per failing group (all its intervals in one message).
     let mut by_group: BTreeMap<usize, Vec<&Found>> = BTreeMap::new();
     for e in events.iter().filter(|e| !e.5) {
         by_group.entry(e.0).or_default().push(e);
@@ -1078,7 +743,7 @@ pub fn expansion_check(
                 && matches!(stmt.kind, Kind::Prp { .. })
                 && matches!(ev.solve(&[mid]), Err((_, Fault::Singular { .. })));
             if let (true, Kind::Prp { g1, g2, .. }) = (parallel_everywhere, &stmt.kind) {
-                findings.errors.push(syn::Error::new(
+                errors.error(syn::Error::new(
                     span,
                     format!(
                         "group `{}` (PRP) cannot assemble: guides `{g1}` and `{g2}` are parallel at every pose checked ({name} in {}), so the joint is at infinity for every input\n  = help: make the guides cross: change the angle of one of them",
@@ -1127,9 +792,9 @@ pub fn expansion_check(
                 explain(model, stmt_index, &e.3, "the first failing grid point"),
             )
         };
-        findings.errors.push(syn::Error::new(span, message));
+        errors.error(syn::Error::new(span, message));
     }
-    if !findings.errors.is_empty() {
+    if errors.len() > errors_before {
         return findings;
     }
     // Warnings, one per singular group.
@@ -1143,7 +808,7 @@ pub fn expansion_check(
         findings
             .singular
             .push((*g, list.iter().map(|(at, _)| at[0]).collect()));
-        if is_allowed(allowed, &stmt.name.to_string()) {
+        if model.allowed.allows(&stmt.name.to_string()) {
             continue;
         }
         let kind = group_kind(&stmt.kind).unwrap_or("group");
@@ -1219,92 +884,4 @@ pub fn expansion_check(
         findings.summary.push_str(" No singular position found.");
     }
     findings
-}
-
-/// The scaled determinant of a checked group, from the generated position
-/// struct `pos` (code).
-pub(crate) fn det_code(model: &Model, stmt_index: usize) -> TokenStream {
-    let stmt = &model.stmts[stmt_index];
-    let g = format_ident!("grp_{}", stmt.name);
-    match &stmt.kind {
-        Kind::Rrr { .. } | Kind::Actuator { .. } => quote!(::mechanism::sweep::det_rrr(&pos.#g)),
-        Kind::Rrp { guide, .. } => quote!(::mechanism::sweep::det_rrp(&pos.#g, &pos.#guide)),
-        Kind::Rpr { a, b, .. } => quote!(::mechanism::sweep::det_rpr(&pos.#g, &pos.#a, &pos.#b)),
-        Kind::Prp { g1, g2, .. } => quote!(::mechanism::sweep::det_prp(&pos.#g1, &pos.#g2)),
-        Kind::Rpp { guide, .. } => quote!(::mechanism::sweep::det_rpp(&pos.#g, &pos.#guide)),
-        _ => quote!(1.0),
-    }
-}
-
-/// The generated `check()` method (empty when an input has no range).
-pub fn emit_check(model: &Model, plan: &Plan, inputs: &[Input], summary: &str) -> TokenStream {
-    let checked = checked(model, plan);
-    if inputs.is_empty()
-        || inputs.len() > 2
-        || inputs.iter().any(|i| i.range.is_none())
-        || (inputs.len() == 2 && inputs.iter().any(|i| !i.declared))
-    {
-        return TokenStream::new();
-    }
-    let name = &model.name;
-    let input_ty = format_ident!("{}Input", name);
-    let g = checked.groups.len();
-    let d = inputs.len();
-    let group_names: Vec<String> = checked
-        .groups
-        .iter()
-        .map(|&i| model.stmts[i].name.to_string())
-        .collect();
-    let indices: Vec<usize> = (0..g).collect();
-    let dets: Vec<TokenStream> = checked.groups.iter().map(|&i| det_code(model, i)).collect();
-    let input_names: Vec<&Ident> = inputs.iter().map(|i| &i.name).collect();
-    let input_strs: Vec<String> = input_names.iter().map(|i| i.to_string()).collect();
-    let ks: Vec<usize> = (0..d).collect();
-    let ranges: Vec<TokenStream> = inputs
-        .iter()
-        .map(|i| {
-            let r = i.range.expect("checked above");
-            let (lo, hi, p) = (r.lo, r.hi, r.periodic);
-            quote!(::mechanism::sweep::Range { lo: #lo, hi: #hi, periodic: #p })
-        })
-        .collect();
-    // A PRP's or an RPP's joint at infinity is a failure, as at expansion
-    // time; the call only where the mechanism has one.
-    let at_infinity = joints_at_infinity(model, &checked);
-    let mark_infinity = if at_infinity.contains(&true) {
-        quote!(.with_joints_at_infinity([#(#at_infinity),*]))
-    } else {
-        TokenStream::new()
-    };
-    let sweep_call = if d == 1 {
-        quote!(::mechanism::sweep::sweep_1d(&ranges[0], ::mechanism::sweep::SAMPLES_1D, &tol, eval, |e| report.record(&e));)
-    } else {
-        quote!(let _ = tol; ::mechanism::sweep::sweep_2d(&ranges, ::mechanism::sweep::SAMPLES_2D, eval, |e| report.record(&e));)
-    };
-    let doc = format!(
-        "Sweeps the input range with these parameters, through [`{name}::position`]: per group (in solve order: {}), where it cannot be assembled and where its rate system is singular. The sweep is the one the macro runs at expansion time (`mechanism::sweep`), in the scalar `T` (edges bisected to `max(1e-10, eps)` of the range, singular below `sqrt(eps)`; an edge lies where `position()` in `T` stops assembling, which can be the group's rounding band beyond the exact limit: in `f32` a few 1e-6 rad at an RRR's limit); about {} position solves. No heap.\n\n{summary}",
-        group_names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", "),
-        if d == 1 { "4000" } else { "15000" }
-    );
-    quote! {
-        #[doc = #doc]
-        #[allow(clippy::all)]
-        pub fn check(&self) -> ::mechanism::sweep::Report<#g, #d> {
-            let ranges = [#(#ranges),*];
-            let mut report = ::mechanism::sweep::Report::new([#(#input_strs),*], ranges, [#(#group_names),*])#mark_infinity;
-            let tol = ::mechanism::sweep::Tolerances::for_eps(<T as ::mechanism::Real>::as_f64(<T as ::mechanism::Real>::eps()));
-            let eval = |q: &[::core::primitive::f64; #d]| -> ::mechanism::sweep::Outcome<#g> {
-                let input = #input_ty { #(#input_names: <T as ::mechanism::Real>::lit(q[#ks]),)* };
-                match self.position(&input) {
-                    ::core::result::Result::Ok(pos) => ::core::result::Result::Ok([#(#dets),*]),
-                    ::core::result::Result::Err(e) => ::core::result::Result::Err((
-                        match e.group { #(#group_names => #indices,)* _ => 0 },
-                        e.fault.to_f64(),
-                    )),
-                }
-            };
-            #sweep_call
-            report
-        }
-    }
 }

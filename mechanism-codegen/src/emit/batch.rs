@@ -19,6 +19,7 @@
 //! apart from the checks inside the primitives.
 
 use crate::model::{Kind, Level, Local, Mode, Model, Origin};
+use crate::plan::Plan;
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -29,7 +30,12 @@ use syn::Ident;
 /// `inputs`: the driver inputs; `outputs`: the position outputs with their
 /// types (`Point2<T>` for points, `T` otherwise; velocity and acceleration
 /// outputs have the same names).
-pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -> TokenStream {
+pub fn emit(
+    model: &Model,
+    plan: &Plan,
+    inputs: &[Ident],
+    outputs: &[(Ident, TokenStream)],
+) -> TokenStream {
     let kept: Vec<(Ident, TokenStream)> = outputs
         .iter()
         .filter(|(o, _)| !given(model, o))
@@ -185,7 +191,7 @@ pub fn emit(model: &Model, inputs: &[Ident], outputs: &[(Ident, TokenStream)]) -
         .map(|f| quote!(let #f = self.#f.split_at(mid);))
         .collect();
     let (lane_method, lane_call, lane_skip, has_lane) =
-        match lane(model, &all_in, outputs, levels.len()) {
+        match lane(model, plan, &all_in, outputs, levels.len()) {
             Some((m, c)) => (
                 m,
                 c,
@@ -425,17 +431,11 @@ fn sign(mode: &Mode) -> TokenStream {
 /// functions the scalar path uses.
 fn lane(
     model: &Model,
+    plan: &Plan,
     all_in: &[&Ident],
     outputs: &[(Ident, TokenStream)],
     levels: usize,
 ) -> Option<(TokenStream, TokenStream)> {
-    let plan = crate::plan::plan(model).ok()?;
-    // Only the statements the outputs need, as in the scalar path (a failing
-    // statement nobody asked for must not send elements to the scalar path).
-    let needed = {
-        let out = crate::emit::outputs(model, &plan);
-        crate::emit::needed_statements(model, &plan, &out)
-    };
     let real = quote!(<T as ::mechanism::Real>);
     let ln = quote!(::mechanism::lane);
     let none = quote!(::core::option::Option::None);
@@ -450,7 +450,9 @@ fn lane(
     let acc = levels > 2;
     let zero = quote!(zero);
     let still = || (quote!(zero), quote!(zero));
-    for &i in plan.order.iter().filter(|i| needed.contains(i)) {
+    // Only the statements the outputs need, as in the scalar path (a failing
+    // statement nobody asked for must not send elements to the scalar path).
+    for &i in &plan.solve {
         let stmt = &model.stmts[i];
         let name = &stmt.name;
         let (px, py) = pv("p", name);

@@ -31,34 +31,6 @@ pub struct ForcesCode {
     pub loads_arg: TokenStream,
 }
 
-/// Statements the force analysis needs besides those of the outputs: every
-/// statement that creates a link (all reactions are outputs), the centres of
-/// mass, the points where forces act and the guides forces follow.
-pub fn roots(model: &Model, plan: &Plan) -> Vec<usize> {
-    if !model.has_forces() {
-        return Vec::new();
-    }
-    let k = &model.kinetics;
-    let mut roots: Vec<usize> = model
-        .stmts
-        .iter()
-        .enumerate()
-        .filter(|(_, s)| !s.links.is_empty())
-        .map(|(i, _)| i)
-        .collect();
-    let named = k
-        .masses
-        .iter()
-        .map(|m| m.at.to_string())
-        .chain(k.forces.iter().map(|f| f.at.to_string()))
-        .chain(k.forces.iter().filter_map(|f| match &f.value {
-            ForceSpecValue::Along(g, _) => Some(g.to_string()),
-            ForceSpecValue::Components(..) => None,
-        }));
-    roots.extend(named.filter_map(|n| plan.defined.get(&n).copied()));
-    roots
-}
-
 /// A reaction field of the generated forces struct.
 struct Reaction {
     name: Ident,
@@ -530,7 +502,7 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
     em.known_loads();
     let mut reactions = Vec::new();
     let mut conditions = Vec::new();
-    for &i in plan.order.iter().rev() {
+    for &i in plan.solve.iter().rev() {
         em.group(&model.stmts[i], &mut reactions, &mut conditions);
     }
     // Field names must be unique: a second joint between the same two bodies

@@ -4,86 +4,19 @@
 //! so that their terms vanish at compile time.
 
 pub mod batch;
+pub mod check_fn;
 pub mod forces;
 pub mod self_test;
+pub mod stub;
 
+use crate::check::Findings;
 use crate::model::{Kind, Level, Local, Mode, Model, Origin, Stmt};
-use crate::plan::Plan;
+use crate::plan::{Outputs, Plan};
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use std::collections::BTreeSet;
 use syn::Ident;
-
-/// Which names the user wants in the output structs.
-pub(crate) struct Outputs {
-    pub(crate) points: Vec<Ident>,
-    pub(crate) links: Vec<Ident>,
-    pub(crate) slides: Vec<(Ident, usize, usize)>, // name, stmt, slot
-}
-
-pub(crate) fn outputs(model: &Model, plan: &Plan) -> Outputs {
-    let wanted = |name: &Ident| match &model.outputs {
-        None => true,
-        Some(list) => list.iter().any(|o| o == name),
-    };
-    let mut out = Outputs {
-        points: vec![],
-        links: vec![],
-        slides: vec![],
-    };
-    for &i in &plan.order {
-        let stmt = &model.stmts[i];
-        match stmt.kind {
-            Kind::Guide { .. } => {}
-            Kind::Rpr { .. } => {
-                if wanted(&stmt.name) {
-                    out.slides.push((stmt.name.clone(), i, 0));
-                }
-            }
-            _ => {
-                if wanted(&stmt.name) {
-                    out.points.push(stmt.name.clone());
-                }
-            }
-        }
-        for (link, named) in stmt.links.iter().zip(&stmt.links_named) {
-            if *named && wanted(link) {
-                out.links.push(link.clone());
-            }
-        }
-        for (slot, slide) in stmt.slides.iter().enumerate() {
-            if let Some(s) = slide {
-                if wanted(s) {
-                    out.slides.push((s.clone(), i, slot));
-                }
-            }
-        }
-    }
-    out
-}
-
-/// Statements the outputs need, directly or through the statements they use.
-/// The rest (a coupler point nobody asked for) is left out.
-pub(crate) fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usize> {
-    let mut stack: Vec<usize> = forces::roots(model, plan);
-    for p in &out.points {
-        stack.extend(plan.defined.get(&p.to_string()));
-    }
-    for l in &out.links {
-        stack.extend(plan.links.get(&l.to_string()).map(|i| i.stmt));
-    }
-    stack.extend(out.slides.iter().map(|(_, i, _)| *i));
-    let mut needed = BTreeSet::new();
-    while let Some(i) = stack.pop() {
-        if needed.insert(i) {
-            for r in crate::plan::references(&model.stmts[i]) {
-                stack.extend(plan.defined.get(&r.to_string()));
-            }
-        }
-    }
-    needed
-}
 
 /// Doc comments of the output fields, in the order points, links, slides.
 /// The lints the generated impls allow: folded constants (the cosine of 45
@@ -419,12 +352,41 @@ fn opt_point(
     }
 }
 
+/// Expands a valid, planned and checked model: the mechanism's items, its
+/// `check()`, the expansion-time check's warnings and, with `#[self_test]`,
+/// its tests.
+pub fn mechanism(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
+    let check = check_fn::emit_check(model, plan, &findings.summary);
+    let self_tests = model
+        .self_test
+        .map(|_| self_test::emit(model, plan, findings));
+    // The position struct keeps the fields these read (`pos.NAME`).
+    let readers = format!(
+        "{} {}",
+        check,
+        self_tests
+            .as_ref()
+            .map(|t| t.to_string())
+            .unwrap_or_default()
+    );
+    let mut out = items(model, plan, &readers);
+    let name = &model.name;
+    let allow_lints = allow_literal_lints();
+    out.extend(quote! {
+        #allow_lints
+        impl<T: ::mechanism::Real> #name<T> { #check }
+    });
+    out.extend(findings.warnings.clone());
+    out.extend(self_tests);
+    out
+}
+
 /// Expands a valid, planned model.
 /// `readers`: the other generated code that reads position fields (the
 /// run-time `check()` and the `#[self_test]` tests), so that the position
 /// struct keeps, besides the outputs, exactly the fields some later code
 /// reads (`pos.NAME`).
-pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
+fn items(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     let name = &model.name;
     let vis = &model.vis;
     let docs = &model.docs;
@@ -433,26 +395,11 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     let acceleration_ty = format_ident!("{}Acceleration", name);
     let input_ty = format_ident!("{}Input", name);
     let solution_ty = format_ident!("{}Solution", name);
-    let out = outputs(model, plan);
-    let needed = needed_statements(model, plan, &out);
-    let order: Vec<usize> = plan
-        .order
-        .iter()
-        .copied()
-        .filter(|i| needed.contains(i))
-        .collect();
-    let plan = &Plan {
-        order,
-        defined: plan.defined.clone(),
-        links: plan.links.clone(),
-        guides: plan.guides.clone(),
-        ground: plan.ground.clone(),
-        owner: plan.owner.clone(),
-    };
+    let out = &plan.outputs;
 
     // Which link axes are needed in position.
     let mut axes = BTreeSet::new();
-    for stmt in plan.order.iter().map(|&i| &model.stmts[i]) {
+    for stmt in plan.solve.iter().map(|&i| &model.stmts[i]) {
         match &stmt.kind {
             Kind::Point { link, .. } => {
                 axes.insert(link.to_string());
@@ -476,7 +423,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     // Points that move (everything but ground points and points on still links
     // measured from still points).
     let mut moving: BTreeSet<String> = BTreeSet::new();
-    for &i in &plan.order {
+    for &i in &plan.solve {
         let stmt = &model.stmts[i];
         match &stmt.kind {
             Kind::Ground { .. } | Kind::Guide { .. } | Kind::Rpr { .. } => {}
@@ -505,7 +452,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     // ---------------- position ----------------
     let mut pos_code = TokenStream::new();
     let mut pos_fields: Vec<(Ident, Ident)> = Vec::new();
-    for &i in &plan.order {
+    for &i in &plan.solve {
         let (code, fields) = em.position(&model.stmts[i]);
         pos_code.extend(code);
         pos_fields.extend(fields);
@@ -560,8 +507,8 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     // `vel.NAME`, `acc.NAME`); the rest are locals and never stored.
     let level = model.level;
     let forces = (level >= Level::Forces).then(|| forces::emit(model, plan, &moving));
-    let accel_rates = (level >= Level::Acceleration).then(|| emit_rates(&em, &moving, &out, true));
-    let vel_rates = (level >= Level::Velocity).then(|| emit_rates(&em, &moving, &out, false));
+    let accel_rates = (level >= Level::Acceleration).then(|| emit_rates(&em, &moving, out, true));
+    let vel_rates = (level >= Level::Velocity).then(|| emit_rates(&em, &moving, out, false));
     let mut later = String::from(readers);
     if let Some((code, _, _)) = &vel_rates {
         later.push_str(&code.to_string());
@@ -615,15 +562,15 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     // full (`FourBar { ground: 0.3, crank: 0.1, .. }`, no hidden field).
     let (params_marker, params_marker_init) = marker(param_names.is_empty());
 
-    let pos_docs = output_docs(&out, 0);
-    let vel_docs = output_docs(&out, 1);
-    let acc_docs = output_docs(&out, 2);
+    let pos_docs = output_docs(out, 0);
+    let vel_docs = output_docs(out, 1);
+    let acc_docs = output_docs(out, 2);
     let mut items = TokenStream::new();
     let mut methods = TokenStream::new();
 
     // ---------------- structure doc ----------------
     let mut structure = String::from("Structure found by `mechanism!` (solve order):\n\n");
-    for (k, &i) in plan.order.iter().enumerate() {
+    for (k, &i) in plan.solve.iter().enumerate() {
         structure.push_str(&format!("{}. {}\n", k + 1, describe(&model.stmts[i])));
     }
     structure.push_str(&format!(
@@ -728,7 +675,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             ..em
         };
         let mut cs_code = TokenStream::new();
-        for &i in &plan.order {
+        for &i in &plan.solve {
             cs_code.extend(em_cs.position(&model.stmts[i]).0);
         }
         let cs_out = out_code(true);
@@ -791,7 +738,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
             .filter(|(n, _)| read_later("vel", n))
             .collect();
         let conditions: Vec<Ident> = plan
-            .order
+            .solve
             .iter()
             .map(|&i| &model.stmts[i])
             .filter(|s| {
@@ -946,7 +893,7 @@ pub fn emit(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     }
 
     // Batch API (structure of arrays, issue 5): see batch.rs.
-    items.extend(batch::emit(model, &inputs, &pos_out_fields));
+    items.extend(batch::emit(model, plan, &inputs, &pos_out_fields));
     let allow_lints = allow_literal_lints();
     quote! {
         #items
@@ -1087,7 +1034,7 @@ fn emit_rates(
     let mut fields: Vec<(Ident, TokenStream)> = Vec::new();
     // Slide rate expressions by (stmt, slot).
     let mut slide_values: Vec<(usize, usize, TokenStream)> = Vec::new();
-    for &i in &plan.order {
+    for &i in &plan.solve {
         let stmt = &model.stmts[i];
         let name = &stmt.name;
         let g = format_ident!("grp_{}", name);
@@ -1366,139 +1313,5 @@ fn describe(stmt: &Stmt) -> String {
             format!("RPP group `{links}`: block at `{a}`, link on guide `{guide}`, reference point `{n}`")
         }
         Kind::Point { link, from, .. } => format!("point `{n}` on `{link}` (from `{from}`)"),
-    }
-}
-
-/// On errors: the errors, plus stub items with the real names and signatures,
-/// so that the user's code that uses them reports no cascade of follow-on
-/// errors. The stubs' bodies are never compiled into a program (the
-/// `compile_error!`s stop the build first).
-pub fn emit_stub(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
-    let errors = errors.into_iter().map(|e| e.to_compile_error());
-    let name = &model.name;
-    let vis = &model.vis;
-    let position_ty = format_ident!("{}Position", name);
-    let velocity_ty = format_ident!("{}Velocity", name);
-    let acceleration_ty = format_ident!("{}Acceleration", name);
-    let input_ty = format_ident!("{}Input", name);
-    let solution_ty = format_ident!("{}Solution", name);
-    let params: Vec<&Ident> = model.params.iter().map(|(n, _)| n).collect();
-    let mut seen = BTreeSet::new();
-    let mut unique = |i: &Ident| seen.insert(i.to_string());
-    let inputs: Vec<Ident> = model
-        .stmts
-        .iter()
-        .filter_map(|s| s.kind.input().cloned())
-        .chain(model.failed.iter().filter_map(|f| f.input.clone()))
-        .filter(|i| unique(i))
-        .collect();
-    let params_marker = if params.is_empty() {
-        quote!(pub _scalar: ::core::marker::PhantomData<T>,)
-    } else {
-        quote!()
-    };
-    let scalar_marker = if inputs.is_empty() {
-        quote!(pub _scalar: ::core::marker::PhantomData<T>,)
-    } else {
-        quote!()
-    };
-    let points: Vec<&Ident> = model
-        .stmts
-        .iter()
-        .filter(|s| !matches!(s.kind, Kind::Guide { .. } | Kind::Rpr { .. }))
-        .map(|s| &s.name)
-        .chain(
-            model
-                .failed
-                .iter()
-                .filter(|f| f.kind != "guide" && f.kind != "rpr")
-                .map(|f| &f.name),
-        )
-        .filter(|i| unique(i))
-        .collect();
-    let scalars: Vec<&Ident> = model
-        .stmts
-        .iter()
-        .flat_map(|s| {
-            let rpr = matches!(s.kind, Kind::Rpr { .. }).then_some(&s.name);
-            s.links
-                .iter()
-                .zip(&s.links_named)
-                .filter(|(_, n)| **n)
-                .map(|(l, _)| l)
-                .chain(s.slides.iter().flatten())
-                .chain(rpr)
-        })
-        .chain(model.failed.iter().flat_map(|f| {
-            let rpr = (f.kind == "rpr").then_some(&f.name);
-            f.links.iter().chain(f.slides.iter()).chain(rpr)
-        }))
-        .filter(|i| unique(i))
-        .collect();
-    // With a force analysis the stub keeps its shape too: `NameLoads` with
-    // `Default`, `solve` taking the loads, a `forces` field in the solution
-    // (the reactions' own fields come from a valid model only).
-    let (forces_stub, stub_loads_param, stub_forces_field) = if model.kinetics.declared
-        || model.level == Level::Forces
-    {
-        let forces_ty = format_ident!("{}Forces", name);
-        let loads_ty = format_ident!("{}Loads", name);
-        let loads: Vec<&Ident> = model.kinetics.loads.iter().map(|(n, _)| n).collect();
-        let (loads_item, loads_param) = if loads.is_empty() {
-            (quote!(), quote!())
-        } else {
-            (
-                quote! {
-                    #[allow(non_snake_case, dead_code)]
-                    #vis struct #loads_ty<T = ::core::primitive::f64> { #(pub #loads: T,)* }
-                    impl<T: ::mechanism::Real> ::core::default::Default for #loads_ty<T> {
-                        fn default() -> Self { ::core::unimplemented!() }
-                    }
-                },
-                quote!(, loads: &#loads_ty<T>),
-            )
-        };
-        let stub = quote! {
-            #loads_item
-            #[allow(dead_code)]
-            #vis struct #forces_ty<T: ::mechanism::Real = ::core::primitive::f64> { pub condition: T, pub power_residual: T }
-            #[allow(dead_code, unused_variables)]
-            impl<T: ::mechanism::Real> #name<T> {
-                pub fn forces(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, acc: &#acceleration_ty<T> #loads_param) -> ::core::result::Result<#forces_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
-            }
-        };
-        (stub, loads_param, quote!(pub forces: #forces_ty<T>,))
-    } else {
-        (quote!(), quote!(), quote!())
-    };
-    quote! {
-        #(#errors)*
-        #forces_stub
-        #[allow(non_snake_case, dead_code)]
-        #vis struct #name<T = ::core::primitive::f64> { #(pub #params: T,)* #params_marker }
-        impl<T: ::mechanism::Real> ::core::default::Default for #name<T> {
-            fn default() -> Self { ::core::unimplemented!() }
-        }
-        #[allow(non_snake_case, dead_code)]
-        #vis struct #input_ty<T = ::core::primitive::f64> { #(pub #inputs: T,)* #scalar_marker }
-        #[allow(non_snake_case, dead_code)]
-        #vis struct #position_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #points: ::mechanism::Point2<T>,)* #(pub #scalars: T,)* }
-        #[allow(non_snake_case, dead_code)]
-        #vis struct #velocity_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #points: ::mechanism::Vector2<T>,)* #(pub #scalars: T,)* pub condition: T }
-        #[allow(non_snake_case, dead_code)]
-        #vis struct #acceleration_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #points: ::mechanism::Vector2<T>,)* #(pub #scalars: T,)* }
-        #[allow(dead_code)]
-        #vis struct #solution_ty<T: ::mechanism::Real = ::core::primitive::f64> {
-            pub position: #position_ty<T>, pub velocity: #velocity_ty<T>, pub acceleration: #acceleration_ty<T>,
-            #stub_forces_field
-        }
-        #[allow(dead_code, unused_variables)]
-        impl<T: ::mechanism::Real> #name<T> {
-            pub fn position(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
-            pub fn position_cos_sin(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
-            pub fn velocity(&self, pos: &#position_ty<T>, rates: &#input_ty<T>) -> ::core::result::Result<#velocity_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
-            pub fn acceleration(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#acceleration_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
-            pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T> #stub_loads_param) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
-        }
     }
 }

@@ -15,52 +15,14 @@
 //! The constraints are written here from the definition, not from the
 //! generated position code: a wrong formula there fails them.
 
-use crate::check::{checked, Findings, Input};
-use crate::model::{Kind, Level, Local, Mode, Model, Origin, Stmt};
+use crate::check::Findings;
+use crate::model::{Allowed, Kind, Level, Local, Mode, Model, Origin, Stmt};
+use crate::plan::checked;
 use crate::plan::Plan;
 use crate::value::{Value, ValueKind};
-use proc_macro2::{Span, TokenStream};
+use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
-
-/// The error when `#[self_test]` cannot run (an input without a range).
-pub fn requirements(_model: &Model, inputs: &[Input], span: Span) -> Option<syn::Error> {
-    let missing: Vec<String> = inputs
-        .iter()
-        .filter(|i| i.range.is_none())
-        .map(|i| format!("`{}`", i.name))
-        .collect();
-    if !missing.is_empty() {
-        return Some(syn::Error::new(
-            span,
-            format!(
-                "`#[self_test]` tests the mechanism over its input range, and {} has none: declare it, e.g. `range {} = (0.0, 0.1);` (sliders and actuators have no default range)",
-                missing.join(", "),
-                inputs.iter().find(|i| i.range.is_none()).map(|i| i.name.to_string()).unwrap_or_default()
-            ),
-        ));
-    }
-    if inputs.len() > 2 {
-        return Some(syn::Error::new(
-            span,
-            "`#[self_test]` sweeps one or two inputs; this mechanism has more",
-        ));
-    }
-    // Two inputs are swept (and `check()` generated) over a declared box
-    // only: a crank's default full turn does not count (`check::emit_check`).
-    if inputs.len() == 2 {
-        if let Some(i) = inputs.iter().find(|i| !i.declared) {
-            return Some(syn::Error::new(
-                span,
-                format!(
-                    "`#[self_test]` sweeps the box of a two-input mechanism's declared ranges, and `{0}` has none (a crank's default full turn is used only when it is the only input): declare it, e.g. `range {0} = (0 deg, 360 deg);`",
-                    i.name
-                ),
-            ));
-        }
-    }
-    None
-}
 
 /// A value with run-time parameters at their defaults.
 fn with_defaults(model: &Model, v: &Value) -> Option<f64> {
@@ -314,20 +276,15 @@ fn residuals(model: &Model, plan: &Plan, stmt: &Stmt) -> Vec<(String, TokenStrea
 }
 
 /// The `#[cfg(test)]` module.
-pub fn emit(
-    model: &Model,
-    plan: &Plan,
-    inputs: &[Input],
-    allowed: &Option<Vec<String>>,
-    findings: &Findings,
-) -> TokenStream {
+pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
+    let inputs = &model.inputs;
     let name = &model.name;
     let snake = snake(&name.to_string());
     let module = format_ident!("{}_self_test", snake);
     let input_ty = format_ident!("{}Input", name);
     let position_ty = format_ident!("{}Position", name);
     let checked = checked(model, plan);
-    let out = crate::emit::outputs(model, plan);
+    let out = &plan.outputs;
     let d = inputs.len();
     let ks: Vec<usize> = (0..d).collect();
     let input_names: Vec<&Ident> = inputs.iter().map(|i| &i.name).collect();
@@ -404,7 +361,7 @@ pub fn emit(
     let dets: Vec<TokenStream> = checked
         .groups
         .iter()
-        .map(|&i| crate::check::det_code(model, i))
+        .map(|&i| super::check_fn::det_code(model, i))
         .collect();
     let ng = dets.len();
 
@@ -432,14 +389,14 @@ pub fn emit(
             }
         }
     } else {
-        let allowed_names: Vec<String> = match allowed {
-            None => vec![],
-            Some(l) if l.is_empty() => checked
+        let allowed_names: Vec<String> = match &model.allowed {
+            Allowed::Nothing => vec![],
+            Allowed::Every => checked
                 .groups
                 .iter()
                 .map(|&i| model.stmts[i].name.to_string())
                 .collect(),
-            Some(l) => l.clone(),
+            Allowed::Groups(l) => l.clone(),
         };
         quote! {
             for r in report.groups.iter() {

@@ -2,6 +2,14 @@
 //! checked for arity, role (point, guide, link, number, mode) and literal
 //! positivity here; names are resolved across statements in `validate`.
 
+mod inputs;
+
+pub use inputs::{Allowed, Input, RangeSpans};
+
+use crate::diag::{did_you_mean, Diagnostics};
+use crate::parse::vocabulary::{
+    arity, input_position, links_created, unsupported_driver, usage, KINDS,
+};
 use crate::parse::{self, Arg, Definition, Item};
 use crate::value::{Scope, Value, ValueKind};
 use proc_macro2::Span;
@@ -57,8 +65,16 @@ pub struct Model {
     pub failed: Vec<Failed>,
     /// Masses, gravity and loads (the force analysis).
     pub kinetics: Kinetics,
-    /// Declared input ranges, singular allowances and `#[self_test]`.
-    pub checks: crate::check::Declared,
+    /// The driver inputs, in the order of the generated input struct, with
+    /// the ranges the checks sweep.
+    pub inputs: Vec<Input>,
+    /// The groups whose singular positions are allowed (`allow singular`).
+    pub allowed: Allowed,
+    /// `#[self_test]`: the span of the attribute.
+    pub self_test: Option<Span>,
+    /// A statement's kind is unknown (reported): no other statement is
+    /// blamed for what it would have defined (a missing driver, say).
+    pub unknown_kinds: bool,
 }
 
 /// What the force analysis needs: masses, gravity and external loads.
@@ -246,11 +262,6 @@ pub enum Kind {
     },
 }
 
-/// Every statement kind the language knows, for suggestions.
-pub const KINDS: &[&str] = &[
-    "ground", "guide", "crank", "slider", "actuator", "rrr", "rrp", "rpr", "prp", "rpp", "point",
-];
-
 impl Kind {
     /// Number of links the statement creates.
     pub fn link_count(&self) -> usize {
@@ -286,65 +297,6 @@ impl Kind {
             | Kind::Actuator { input, .. } => Some(input),
             _ => None,
         }
-    }
-}
-
-/// Collected errors.
-#[derive(Default)]
-pub struct Errors(pub Vec<syn::Error>);
-
-impl Errors {
-    /// Records an error.
-    pub fn push(&mut self, span: Span, message: impl std::fmt::Display) {
-        self.0.push(syn::Error::new(span, message));
-    }
-}
-
-/// Levenshtein distance, for "did you mean" hints.
-pub fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut prev = row[0];
-        row[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let cur = row[j + 1];
-            row[j + 1] = (prev + usize::from(ca != *cb)).min(row[j] + 1).min(cur + 1);
-            prev = cur;
-        }
-    }
-    row[b.len()]
-}
-
-/// The nearest of `candidates` to `name`, if reasonably close.
-/// Close means at most a third of the longer name differs (one letter in
-/// names of 2 or 3, none in one-letter names: `Q` is no typo of `A`). Ties
-/// prefer a candidate that keeps the last character (`O5` -> `O4`? no:
-/// equal; `Q4` -> `O4` over `A`), then alphabetical order.
-pub fn nearest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
-    candidates
-        .into_iter()
-        .map(|c| (edit_distance(name, c), c))
-        .filter(|(d, c)| {
-            *d > 0
-                && *d
-                    <= name
-                        .chars()
-                        .count()
-                        .max(c.chars().count())
-                        .div_ceil(3)
-                        .min(3)
-                && name.chars().count() > 1
-        })
-        .min_by_key(|(d, c)| (*d, name.chars().last() != c.chars().last(), c.to_string()))
-        .map(|(_, c)| c)
-}
-
-/// A " (did you mean `x`?)" hint, or "".
-pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> String {
-    match nearest(name, candidates) {
-        Some(c) => format!("; did you mean `{c}`?"),
-        None => String::new(),
     }
 }
 
@@ -458,7 +410,7 @@ struct Args<'a> {
     kind: String,
     usage: &'static str,
     scope: &'a NumberScope<'a>,
-    errors: &'a mut Errors,
+    errors: &'a mut Diagnostics,
     failed: bool,
 }
 
@@ -553,7 +505,7 @@ impl<'a> Args<'a> {
             Ok(v) => v,
             Err(e) => {
                 self.failed = true;
-                self.errors.0.push(e);
+                self.errors.error(e);
                 return None;
             }
         };
@@ -579,7 +531,7 @@ impl<'a> Args<'a> {
         if let Some(x) = v.fold() {
             if x <= 0.0 || !x.is_finite() {
                 self.failed = true;
-                self.errors.0.push(syn::Error::new_spanned(
+                self.errors.error(syn::Error::new_spanned(
                     &v.tokens,
                     format!(
                         "the {role} must be positive, got {x:?}; a link length is a distance > 0"
@@ -659,48 +611,6 @@ impl<'a> Args<'a> {
     }
 }
 
-/// How a statement kind is written (for messages); "" for an unknown kind.
-pub fn usage(kind: &str) -> &'static str {
-    match kind {
-        "ground" => "ground(x, y)",
-        "guide" => "guide(POINT or (x, y), angle) or guide(POINT, LINK[, angle])",
-        "crank" => "crank(PIVOT, radius, INPUT) as LINK",
-        "slider" => "slider(GUIDE, INPUT[, offset]) as LINK",
-        "actuator" => "actuator(A, radius, B, INPUT, left|right) as (LINK, CYLINDER)",
-        "rrr" => "rrr(A, l1, B, l2, left|right) as (LINK1, LINK2)",
-        "rrp" => "rrp(A, l, GUIDE, plus|minus[, offset]) as (LINK, BLOCK) slide S",
-        "rpr" => "let S = rpr(A, B, plus|minus[, offset]) as (BLOCK, LINK)",
-        "prp" => "prp(GUIDE1, GUIDE2[, offset1, offset2]) as (LINK1, LINK2) slide (S1, S2)",
-        "rpp" => "rpp(A, GUIDE, slot_angle[, offset]) as (BLOCK, LINK) slide (S1, S2)",
-        "point" => "point(LINK, from POINT, distance, angle) or point(LINK, from POINT, (x, y))",
-        _ => "",
-    }
-}
-
-/// How many arguments a statement kind takes: the fewest (every optional
-/// argument left out) and the most. A `point` takes three in its `(x, y)`
-/// form (a tuple third) and four in its polar form; a `guide` two (a fixed
-/// guide's origin and angle, or a carried guide's point and link) or three
-/// (a carried guide's angle).
-fn arity(kind: &str, args: &[Arg]) -> Option<(usize, usize)> {
-    Some(match kind {
-        "ground" => (2, 2),
-        "guide" => (2, 3),
-        "crank" => (3, 3),
-        "slider" => (2, 3),
-        "actuator" | "rrr" => (5, 5),
-        "rrp" => (4, 5),
-        "rpr" => (3, 4),
-        "prp" => (2, 4),
-        "rpp" => (3, 4),
-        "point" => match args.get(2) {
-            Some(Arg::Value(Expr::Tuple(_), _)) => (3, 3),
-            _ => (4, 4),
-        },
-        _ => return None,
-    })
-}
-
 /// The error for a statement written with fewer arguments than its kind
 /// takes, before any argument is read: read in order, the arguments would
 /// fill the wrong roles (`rrr(A, 3.5, O4, left)` would read `left` as the
@@ -725,20 +635,11 @@ fn too_few_arguments(stmt: &parse::Let, kind: &str) -> Option<String> {
     ))
 }
 
-/// Drivers other tools call differently, with the word to use here.
-fn unsupported_driver(kind: &str) -> Option<&'static str> {
-    match kind {
-        "motor" | "rotary" | "revolute" | "input" | "rocker" => {
-            Some("a rotary input is a `crank(PIVOT, radius, INPUT) as LINK`")
-        }
-        "linear" | "cylinder" | "piston" => {
-            Some("a length input is an `actuator(...)`, a translation input a `slider(...)`")
-        }
-        _ => None,
-    }
-}
-
-fn lower_kind(stmt: &parse::Let, scope: &NumberScope<'_>, errors: &mut Errors) -> Option<Kind> {
+fn lower_kind(
+    stmt: &parse::Let,
+    scope: &NumberScope<'_>,
+    errors: &mut Diagnostics,
+) -> Option<Kind> {
     let kind = stmt.kind.to_string();
     if !KINDS.contains(&kind.as_str()) {
         let hint = match unsupported_driver(&kind) {
@@ -774,10 +675,10 @@ fn lower_kind(stmt: &parse::Let, scope: &NumberScope<'_>, errors: &mut Errors) -
             let origin = match a.next("origin")? {
                 Arg::Value(Expr::Tuple(t), None) if t.elems.len() == 2 => {
                     let x = convert(&t.elems[0], scope)
-                        .map_err(|e| a.errors.0.push(e))
+                        .map_err(|e| a.errors.error(e))
                         .ok()?;
                     let y = convert(&t.elems[1], scope)
-                        .map_err(|e| a.errors.0.push(e))
+                        .map_err(|e| a.errors.error(e))
                         .ok()?;
                     Origin::Coords(x, y)
                 }
@@ -886,10 +787,10 @@ fn lower_kind(stmt: &parse::Let, scope: &NumberScope<'_>, errors: &mut Errors) -
                 Some(Arg::Value(Expr::Tuple(t), None)) if t.elems.len() == 2 => {
                     a.args.next();
                     let x = convert(&t.elems[0], scope)
-                        .map_err(|e| a.errors.0.push(e))
+                        .map_err(|e| a.errors.error(e))
                         .ok()?;
                     let y = convert(&t.elems[1], scope)
-                        .map_err(|e| a.errors.0.push(e))
+                        .map_err(|e| a.errors.error(e))
                         .ok()?;
                     Local::Cartesian(x, y)
                 }
@@ -931,16 +832,6 @@ fn literal_scope_for<'a>(
     }
 }
 
-/// Where a driver's input name sits among its arguments.
-fn input_position(kind: &str) -> Option<usize> {
-    match kind {
-        "crank" => Some(2),
-        "slider" => Some(1),
-        "actuator" => Some(3),
-        _ => None,
-    }
-}
-
 /// Reports the second `word` statement of a definition (`outputs`, `dof`,
 /// `analysis`, `gravity`: each says one thing, so a second one would silently
 /// replace the first). `written` shows the statement (named in the error on
@@ -951,7 +842,7 @@ fn once(
     word: &'static str,
     written: impl FnOnce() -> String,
     span: Span,
-    errors: &mut Errors,
+    errors: &mut Diagnostics,
 ) -> bool {
     if let Some(first) = seen.get(word) {
         let hint = match word {
@@ -970,8 +861,11 @@ fn once(
 }
 
 /// Lowers a parsed definition. Returns the model (possibly partial) and errors.
-pub fn lower(def: Definition) -> (Model, Errors) {
-    let mut errors = Errors::default();
+pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
+    let unknown_kinds = def.items.iter().any(|item| match item {
+        Item::Let(l) => !KINDS.contains(&l.kind.to_string().as_str()),
+        _ => false,
+    });
     let mut params: Vec<(Ident, f64)> = Vec::new();
     let mut consts: BTreeMap<String, (Ident, f64)> = BTreeMap::new();
     let mut level = Level::Acceleration;
@@ -1034,7 +928,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                         0.0
                     }
                     Err(e) if e.to_string().starts_with("cannot find") => {
-                        errors.0.push(syn::Error::new(
+                        errors.error(syn::Error::new(
                             e.span(),
                             format!(
                                 "{e} (a `const` may use literals and constants defined before it)"
@@ -1043,7 +937,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                         0.0
                     }
                     Err(e) => {
-                        errors.0.push(e);
+                        errors.error(e);
                         0.0
                     }
                 };
@@ -1061,11 +955,11 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                             0.0
                         }
                         Err(e) if e.to_string().starts_with("cannot find") => {
-                            errors.0.push(syn::Error::new(e.span(), format!("{e} (a parameter's default may use literals and constants only)")));
+                            errors.error(syn::Error::new(e.span(), format!("{e} (a parameter's default may use literals and constants only)")));
                             0.0
                         }
                         Err(e) => {
-                            errors.0.push(e);
+                            errors.error(e);
                             0.0
                         }
                     };
@@ -1096,17 +990,15 @@ pub fn lower(def: Definition) -> (Model, Errors) {
     };
     let mut stmts = Vec::new();
     let mut failed = Vec::new();
-    let mut checks = crate::check::Declared {
-        self_test: def.self_test,
-        ..Default::default()
-    };
+    let self_test = def.self_test;
+    let mut checks = inputs::Declared::default();
     // Statements that may appear once, by keyword.
     let mut seen = BTreeMap::new();
     for item in def.items {
         match item {
             Item::Analysis(span, what) => {
                 let written = || format!("analysis {what};");
-                if !once(&mut seen, "analysis", written, span, &mut errors) {
+                if !once(&mut seen, "analysis", written, span, errors) {
                     continue;
                 }
                 level_span = Some(what.span());
@@ -1135,7 +1027,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     let more = if list.len() > 4 { ", .." } else { "" };
                     format!("outputs {{ {}{more} }}", names.join(", "))
                 };
-                if !once(&mut seen, "outputs", written, span, &mut errors) {
+                if !once(&mut seen, "outputs", written, span, errors) {
                     continue;
                 }
                 if list.is_empty() {
@@ -1144,13 +1036,13 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                 outputs = Some(list);
             }
             Item::Dof(span, n) => {
-                if !once(&mut seen, "dof", || format!("dof {n};"), span, &mut errors) {
+                if !once(&mut seen, "dof", || format!("dof {n};"), span, errors) {
                     continue;
                 }
                 dof = Some(n);
             }
             Item::Let(l) => {
-                let Some(kind) = lower_kind(&l, &scope, &mut errors) else {
+                let Some(kind) = lower_kind(&l, &scope, errors) else {
                     // Keep the names the statement meant to define, so that the
                     // rest of the definition and the user's code see no cascade.
                     let input = input_position(&l.kind.to_string())
@@ -1228,7 +1120,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
             }
             Item::Mass(m) => {
                 kinetics.declared = true;
-                if let Some(spec) = lower_mass(&m, &scope, &mut errors) {
+                if let Some(spec) = lower_mass(&m, &scope, errors) {
                     kinetics.masses.push(spec);
                 }
             }
@@ -1245,12 +1137,12 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     };
                     format!("gravity ({}, {});", show(&x), show(&y))
                 };
-                if !once(&mut seen, "gravity", written, span, &mut errors) {
+                if !once(&mut seen, "gravity", written, span, errors) {
                     continue;
                 }
                 match (convert(&x, &scope), convert(&y, &scope)) {
                     (Ok(x), Ok(y)) => kinetics.gravity = Some((span, x, y)),
-                    (Err(e), _) | (_, Err(e)) => errors.0.push(e),
+                    (Err(e), _) | (_, Err(e)) => errors.error(e),
                 }
             }
             Item::Force(f) => {
@@ -1260,7 +1152,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                         match (convert(&x, &load_scope), convert(&y, &load_scope)) {
                             (Ok(x), Ok(y)) => Some(ForceSpecValue::Components(x, y)),
                             (Err(e), _) | (_, Err(e)) => {
-                                errors.0.push(e);
+                                errors.error(e);
                                 None
                             }
                         }
@@ -1268,7 +1160,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     parse::ForceValue::Along(guide, v) => match convert(&v, &load_scope) {
                         Ok(v) => Some(ForceSpecValue::Along(guide, v)),
                         Err(e) => {
-                            errors.0.push(e);
+                            errors.error(e);
                             None
                         }
                     },
@@ -1285,7 +1177,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                 kinetics.declared = true;
                 match convert(&value, &load_scope) {
                     Ok(value) => kinetics.torques.push(TorqueSpec { on, value }),
-                    Err(e) => errors.0.push(e),
+                    Err(e) => errors.error(e),
                 }
             }
             Item::Range(r) => {
@@ -1298,7 +1190,7 @@ pub fn lower(def: Definition) -> (Model, Errors) {
                     Arg::From(_) => None,
                 });
                 match infinite {
-                    Some(e) => errors.0.push(e),
+                    Some(e) => errors.error(e),
                     None => checks.ranges.push(r),
                 }
             }
@@ -1313,40 +1205,27 @@ pub fn lower(def: Definition) -> (Model, Errors) {
     if let (Some(span), false) = (empty_outputs, kinetics.declared) {
         errors.push(span, "`outputs { }` lists nothing, and without masses or loads there is no force analysis to return, so every analysis would return nothing; name the points, links and slides to return, or remove the line (the default is every named thing)");
     }
-    (
-        Model {
-            docs: def.docs,
-            vis: def.vis,
-            name: def.name,
-            params,
-            consts,
-            stmts,
-            level,
-            level_span,
-            outputs,
-            dof,
-            failed,
-            kinetics,
-            checks,
-        },
-        errors,
-    )
-}
-
-/// The links a statement kind creates, in the order `as` names them, in
-/// words (for messages).
-fn links_created(kind: &str) -> &'static str {
-    match kind {
-        "crank" => "the crank, turning about its pivot",
-        "slider" => "the block, sliding on the guide",
-        "actuator" => "the link from A, and the cylinder from B",
-        "rrr" => "L1 from A, L2 from B",
-        "rrp" => "the link from A, and the block on the guide",
-        "rpr" => "the block pinned at A, and the link pivoted at B",
-        "prp" => "the block on the first guide, and the block on the second",
-        "rpp" => "the block pinned at A, and the slotted link sliding on the guide",
-        _ => "",
-    }
+    let mut model = Model {
+        docs: def.docs,
+        vis: def.vis,
+        name: def.name,
+        params,
+        consts,
+        stmts,
+        level,
+        level_span,
+        outputs,
+        dof,
+        failed,
+        kinetics,
+        inputs: Vec::new(),
+        allowed: Allowed::Nothing,
+        self_test,
+        unknown_kinds,
+    };
+    model.inputs = inputs::inputs(&model, &checks.ranges, errors);
+    model.allowed = inputs::allowances(&model, &checks.allow, errors);
+    model
 }
 
 /// A name for the link after `name` in a suggested `as (..)`: `link4` after
@@ -1397,7 +1276,11 @@ fn link_count_message(l: &parse::Let, want: usize) -> String {
 
 /// Lowers `mass LINK { m = .., at = POINT, j = .. }`: `m` and `at` required,
 /// `j` optional; literal values must be positive (`j` may be zero).
-fn lower_mass(m: &parse::Mass, scope: &NumberScope<'_>, errors: &mut Errors) -> Option<MassSpec> {
+fn lower_mass(
+    m: &parse::Mass,
+    scope: &NumberScope<'_>,
+    errors: &mut Diagnostics,
+) -> Option<MassSpec> {
     const FIELDS: [&str; 3] = ["m", "at", "j"];
     let usage = "`mass LINK { m = mass, at = CENTRE_POINT, j = inertia_about_centre }`";
     let mut mass = None;
@@ -1434,7 +1317,7 @@ fn lower_mass(m: &parse::Mass, scope: &NumberScope<'_>, errors: &mut Errors) -> 
                     };
                     if bad {
                         ok = false;
-                        errors.0.push(syn::Error::new_spanned(
+                        errors.error(syn::Error::new_spanned(
                             &v.tokens,
                             if field == "m" {
                                 format!("a mass must be positive, got {:?}; leave out the `mass` statement for a massless link", literal.unwrap_or_default())
@@ -1450,7 +1333,7 @@ fn lower_mass(m: &parse::Mass, scope: &NumberScope<'_>, errors: &mut Errors) -> 
                 }
                 Err(e) => {
                     ok = false;
-                    errors.0.push(e);
+                    errors.error(e);
                 }
             },
             ("m" | "j", _) => {
@@ -1485,5 +1368,21 @@ fn lower_mass(m: &parse::Mass, scope: &NumberScope<'_>, errors: &mut Errors) -> 
         mass: mass?,
         at: at?,
         inertia: if ok { inertia } else { None },
+    })
+}
+
+/// The kind name of a statement that can fail (drivers, groups, link points).
+pub fn group_kind(kind: &Kind) -> Option<&'static str> {
+    Some(match kind {
+        Kind::Crank { .. } => "crank",
+        Kind::Slider { .. } => "slider",
+        Kind::Actuator { .. } => "actuator",
+        Kind::Rrr { .. } => "RRR",
+        Kind::Rrp { .. } => "RRP",
+        Kind::Rpr { .. } => "RPR",
+        Kind::Prp { .. } => "PRP",
+        Kind::Rpp { .. } => "RPP",
+        Kind::Point { .. } => "link point",
+        Kind::Ground { .. } | Kind::Guide { .. } => return None,
     })
 }

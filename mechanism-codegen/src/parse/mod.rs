@@ -24,6 +24,8 @@
 //! names      := IDENT | '(' IDENT,* ')'
 //! ```
 
+pub mod vocabulary;
+
 use proc_macro2::{Delimiter, Span, TokenTree};
 use syn::buffer::Cursor;
 use syn::parse::{Parse, ParseStream};
@@ -585,12 +587,12 @@ impl Parse for Item {
                     e.span(),
                     format!(
                         "expected the statement kind after `let {name} =`: one of {}",
-                        crate::model::KINDS.join(", ")
+                        vocabulary::KINDS.join(", ")
                     ),
                 )
             })?;
             if !input.peek(syn::token::Paren) {
-                let usage = crate::model::usage(&kind.to_string());
+                let usage = vocabulary::usage(&kind.to_string());
                 let usage = if usage.is_empty() {
                     String::new()
                 } else {
@@ -923,7 +925,7 @@ impl Parse for Item {
                 word.span(),
                 format!(
                     "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range` or `allow`{}",
-                    crate::model::did_you_mean(other, STATEMENTS.iter().copied())
+                    crate::diag::did_you_mean(other, STATEMENTS.iter().copied())
                 ),
             )),
         }
@@ -957,7 +959,7 @@ impl Parse for Definition {
                 other,
                 format!(
                     "unknown attribute `#[{word}]`; a definition takes doc comments (`///`) and `#[self_test]`{}",
-                    crate::model::did_you_mean(&word, ["self_test"])
+                    crate::diag::did_you_mean(&word, ["self_test"])
                 ),
             ));
         }

@@ -2,10 +2,33 @@
 //! pushing errors with the span of the user's offending token and a hint.
 //! All rules run, so several errors are reported at once.
 
-use crate::model::{did_you_mean, Errors, ForceSpecValue, Kind, Level, Model, Origin};
+use crate::diag::{did_you_mean, Diagnostics};
+use crate::model::{ForceSpecValue, Input, Kind, Level, Model, Origin};
 use crate::plan::{references, Plan};
+use proc_macro2::Span;
 use std::collections::BTreeMap;
 use syn::Ident;
+
+/// The rules on the statements as written: names, references, drivers,
+/// mobility, outputs, `#[self_test]`'s ranges.
+pub fn model(model: &Model, errors: &mut Diagnostics) {
+    unique_names(model, errors);
+    reserved_names(model, errors);
+    references_resolve(model, errors);
+    has_driver(model, errors);
+    dof_matches(model, errors);
+    outputs_exist(model, errors);
+    rpp_slot_crosses_guide(model, errors);
+    self_test_sweepable(model, errors);
+}
+
+/// The rules that need the solve order and the owner of every point: the
+/// geometry of carried guides and link points, and the force analysis'
+/// masses and loads.
+pub fn planned(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
+    geometry_consistent(model, plan, errors);
+    kinetics_consistent(model, plan, errors);
+}
 
 /// What a name stands for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -187,7 +210,7 @@ fn definitions(model: &Model) -> Vec<(Ident, Place)> {
 /// constants share one namespace: they become fields side by side). The error
 /// is on the later definition (parameters and constants count as first) and
 /// says where the first one is (a `compile_error!` carries no second span).
-pub fn unique_names(model: &Model, errors: &mut Errors) {
+pub fn unique_names(model: &Model, errors: &mut Diagnostics) {
     let mut seen: BTreeMap<String, Place> = BTreeMap::new();
     for (ident, place) in definitions(model) {
         let key = ident.to_string();
@@ -260,7 +283,7 @@ fn unnamed_links_hint(model: &Model) -> String {
         .filter(|s| s.links_named.iter().any(|named| !named))
         .map(|s| {
             let kind = s.kind_token.to_string();
-            let names = crate::model::usage(&kind)
+            let names = crate::parse::vocabulary::usage(&kind)
                 .split_once(" as ")
                 .map(|(_, after)| after.split(" slide").next().unwrap_or(after))
                 .unwrap_or("LINK");
@@ -308,7 +331,7 @@ fn defined_where(model: &Model, name: &Ident) -> Option<String> {
 }
 
 /// Rule: names the generated code needs for itself are not available.
-pub fn reserved_names(model: &Model, errors: &mut Errors) {
+pub fn reserved_names(model: &Model, errors: &mut Diagnostics) {
     for (name, (_, ident)) in symbols(model) {
         if let Some(bare) = name.strip_prefix("r#") {
             errors.push(
@@ -337,7 +360,7 @@ pub fn reserved_names(model: &Model, errors: &mut Errors) {
 /// Rule: every reference names something defined, of the right category, and
 /// not the statement itself (and, [`distinct_joints`], a group's two known
 /// joints are two places).
-pub fn references_resolve(model: &Model, errors: &mut Errors) {
+pub fn references_resolve(model: &Model, errors: &mut Diagnostics) {
     distinct_joints(model, errors);
     let table = symbols(model);
     let every = every_symbol(model);
@@ -430,7 +453,7 @@ pub fn references_resolve(model: &Model, errors: &mut Errors) {
 /// infinity everywhere. Known at compile time for a slot angle that folds to
 /// a number; "parallel" is the test the run-time solve applies
 /// (`mechanism_core::dyad::rpp`: `|sin(slot)| <= 16 eps`, in f64 here).
-pub fn rpp_slot_crosses_guide(model: &Model, errors: &mut Errors) {
+pub fn rpp_slot_crosses_guide(model: &Model, errors: &mut Diagnostics) {
     for stmt in &model.stmts {
         let Kind::Rpp { guide, slot, .. } = &stmt.kind else {
             continue;
@@ -463,7 +486,7 @@ fn literal_ground(model: &Model, name: &Ident) -> Option<(f64, f64)> {
 
 /// Rule: the two known joints of a group (or the two guides of a PRP) are two
 /// different points (guides), and not two ground points at the same place.
-pub fn distinct_joints(model: &Model, errors: &mut Errors) {
+pub fn distinct_joints(model: &Model, errors: &mut Diagnostics) {
     for stmt in &model.stmts {
         let (a, b, what) = match &stmt.kind {
             Kind::Rrr { a, b, .. } => (a, b, "known joints"),
@@ -498,8 +521,11 @@ pub fn distinct_joints(model: &Model, errors: &mut Errors) {
 
 /// Rule: at least one driver, unless a statement's kind was already rejected
 /// (it may have been meant as the driver: no cascade).
-pub fn has_driver(model: &Model, kinds_failed: bool, errors: &mut Errors) {
-    if kinds_failed || !model.failed.is_empty() || model.stmts.iter().any(|s| s.kind.is_driver()) {
+pub fn has_driver(model: &Model, errors: &mut Diagnostics) {
+    if model.unknown_kinds
+        || !model.failed.is_empty()
+        || model.stmts.iter().any(|s| s.kind.is_driver())
+    {
         return;
     }
     errors.push(
@@ -514,7 +540,7 @@ pub fn has_driver(model: &Model, kinds_failed: bool, errors: &mut Errors) {
 /// Rule: a declared `dof N` matches Gruebler's count of the links and joints the
 /// statements create (each driver adds one degree of freedom, each class II
 /// group none), i.e. the number of inputs.
-pub fn dof_matches(model: &Model, errors: &mut Errors) {
+pub fn dof_matches(model: &Model, errors: &mut Diagnostics) {
     let Some(declared) = &model.dof else { return };
     if !model.failed.is_empty() {
         return; // a rejected statement would make the count meaningless
@@ -564,7 +590,7 @@ pub fn dof_matches(model: &Model, errors: &mut Errors) {
 }
 
 /// Rule: every requested output is a point, a named link or a slide.
-pub fn outputs_exist(model: &Model, errors: &mut Errors) {
+pub fn outputs_exist(model: &Model, errors: &mut Diagnostics) {
     let Some(outputs) = &model.outputs else {
         return;
     };
@@ -612,7 +638,7 @@ pub fn outputs_exist(model: &Model, errors: &mut Errors) {
 
 /// Rule (after planning): a link point is measured from a point of that link,
 /// and a crank turns about a ground point.
-pub fn geometry_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
+pub fn geometry_consistent(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
     for stmt in &model.stmts {
         match &stmt.kind {
             Kind::Point { link, from, .. } => {
@@ -688,7 +714,7 @@ fn loadable_link(
     plan: &Plan,
     link: &Ident,
     what: &str,
-    errors: &mut Errors,
+    errors: &mut Diagnostics,
 ) -> bool {
     let name = link.to_string();
     if !plan.links.contains_key(&name) {
@@ -729,21 +755,32 @@ fn loadable_link(
 /// or that nothing has that name, with the nearest point's name (among
 /// `first`, the points of the link named, when one is near; else among every
 /// point). `what` says what the point is for ("a force acts at a point").
-fn unknown_point(model: &Model, plan: &Plan, at: &str, first: &[String], what: &str) -> String {
+/// `None` when `at` is defined by a statement whose arguments were rejected
+/// (that error is reported; this one would follow from it).
+fn unknown_point(
+    model: &Model,
+    plan: &Plan,
+    at: &str,
+    first: &[String],
+    what: &str,
+) -> Option<String> {
+    if model.failed.iter().any(|f| f.name == at) {
+        return None;
+    }
     let mut hint = did_you_mean(at, first.iter().map(String::as_str));
     if hint.is_empty() {
         hint = did_you_mean(at, plan.owner.keys().map(String::as_str));
     }
-    match symbols(model).get(at) {
+    Some(match symbols(model).get(at) {
         Some((cat, _)) => format!("`{at}` is {}, not a point; {what}{hint}", cat.article()),
         None => format!("cannot find point `{at}`{hint}"),
-    }
+    })
 }
 
 /// Rule (after planning): the force analysis is asked for consistently, masses
 /// sit on links at points of those links, forces act at points of one link
 /// (or name it), guides and links named by loads exist.
-pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
+pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
     if model.level == Level::Forces {
         nothing_on_a_cylinder(model, plan, errors);
     }
@@ -781,16 +818,16 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
         let points = &plan.links[&link].points;
         let at = m.at.to_string();
         if !plan.owner.contains_key(&at) {
-            errors.push(
-                m.at.span(),
-                unknown_point(
-                    model,
-                    plan,
-                    &at,
-                    points,
-                    "the centre of mass is a point of the link",
-                ),
+            let message = unknown_point(
+                model,
+                plan,
+                &at,
+                points,
+                "the centre of mass is a point of the link",
             );
+            if let Some(message) = message {
+                errors.push(m.at.span(), message);
+            }
             continue;
         }
         if !points.contains(&at) {
@@ -811,10 +848,9 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
                 f.on.as_ref()
                     .and_then(|l| plan.links.get(&l.to_string()))
                     .map_or(&[][..], |info| &info.points[..]);
-            errors.push(
-                f.at.span(),
-                unknown_point(model, plan, &at, on, "a force acts at a point"),
-            );
+            if let Some(message) = unknown_point(model, plan, &at, on, "a force acts at a point") {
+                errors.push(f.at.span(), message);
+            }
             continue;
         }
         match &f.on {
@@ -903,7 +939,7 @@ pub fn kinetics_consistent(model: &Model, plan: &Plan, errors: &mut Errors) {
 /// along its axis is the drive) and solves no equations for it, so a
 /// reaction passed to it would be lost and every effort behind it wrong; the
 /// kinematics are fine, so this is an error of the force analysis only.
-fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Errors) {
+fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
     let cylinders: Vec<String> = model
         .stmts
         .iter()
@@ -935,4 +971,52 @@ fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Errors) {
             }
         }
     }
+}
+
+/// `#[self_test]` sweeps the input range: every input needs one, and there
+/// are at most two inputs.
+pub fn self_test_sweepable(model: &Model, errors: &mut Diagnostics) {
+    if let Some(span) = model.self_test {
+        errors.extend(self_test_requirements(&model.inputs, span));
+    }
+}
+
+/// The error when `#[self_test]` cannot run (an input without a range).
+fn self_test_requirements(inputs: &[Input], span: Span) -> Option<syn::Error> {
+    // A declared range that was rejected is reported already.
+    let missing: Vec<String> = inputs
+        .iter()
+        .filter(|i| i.range.is_none() && !i.declared)
+        .map(|i| format!("`{}`", i.name))
+        .collect();
+    if !missing.is_empty() {
+        return Some(syn::Error::new(
+            span,
+            format!(
+                "`#[self_test]` tests the mechanism over its input range, and {} has none: declare it, e.g. `range {} = (0.0, 0.1);` (sliders and actuators have no default range)",
+                missing.join(", "),
+                inputs.iter().find(|i| i.range.is_none() && !i.declared).map(|i| i.name.to_string()).unwrap_or_default()
+            ),
+        ));
+    }
+    if inputs.len() > 2 {
+        return Some(syn::Error::new(
+            span,
+            "`#[self_test]` sweeps one or two inputs; this mechanism has more",
+        ));
+    }
+    // Two inputs are swept (and `check()` generated) over a declared box
+    // only: a crank's default full turn does not count (`check::emit_check`).
+    if inputs.len() == 2 {
+        if let Some(i) = inputs.iter().find(|i| !i.declared) {
+            return Some(syn::Error::new(
+                span,
+                format!(
+                    "`#[self_test]` sweeps the box of a two-input mechanism's declared ranges, and `{0}` has none (a crank's default full turn is used only when it is the only input): declare it, e.g. `range {0} = (0 deg, 360 deg);`",
+                    i.name
+                ),
+            ));
+        }
+    }
+    None
 }
