@@ -6,6 +6,7 @@
 pub mod batch;
 pub mod check_fn;
 pub mod forces;
+pub mod reads;
 pub mod self_test;
 pub mod stub;
 
@@ -15,6 +16,7 @@ use crate::plan::{Outputs, Plan};
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
+use reads::{Analysis, Reads};
 use std::collections::BTreeSet;
 use syn::Ident;
 
@@ -92,6 +94,40 @@ pub(crate) fn tag(stmt: &Stmt) -> TokenStream {
     quote!(.map_err(|e| e.in_group(#name))?)
 }
 
+/// A value of the position code the position struct may keep: its field
+/// name, the local that holds it, and its type.
+#[derive(Clone)]
+struct Stored {
+    field: Ident,
+    local: Ident,
+    ty: TokenStream,
+}
+
+impl Stored {
+    fn new(field: &Ident, local: &Ident, ty: TokenStream) -> Self {
+        Stored {
+            field: field.clone(),
+            local: local.clone(),
+            ty,
+        }
+    }
+}
+
+/// The core type of a statement's solved position state (`grp_NAME`).
+fn group_position_type(kind: &Kind) -> TokenStream {
+    match kind {
+        Kind::Crank { .. } => quote!(::mechanism::driver::crank::CrankPosition<T>),
+        Kind::Slider { .. } => quote!(::mechanism::driver::slider::SliderPosition<T>),
+        Kind::Actuator { .. } => quote!(::mechanism::driver::actuator::ActuatorPosition<T>),
+        Kind::Rrr { .. } => quote!(::mechanism::dyad::rrr::RrrPosition<T>),
+        Kind::Rrp { .. } => quote!(::mechanism::dyad::rrp::RrpPosition<T>),
+        Kind::Rpr { .. } => quote!(::mechanism::dyad::rpr::RprPosition<T>),
+        Kind::Prp { .. } => quote!(::mechanism::dyad::prp::PrpPosition<T>),
+        Kind::Rpp { .. } => quote!(::mechanism::dyad::rpp::RppPosition<T>),
+        Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } => quote!(()),
+    }
+}
+
 struct Emitter<'a> {
     model: &'a Model,
     plan: &'a Plan,
@@ -142,13 +178,17 @@ impl Emitter<'_> {
         }
     }
 
-    /// Position statements for one statement; returns (code, fields) where
-    /// fields are the values the position struct may keep, as (field name,
-    /// local variable).
-    fn position(&self, stmt: &Stmt) -> (TokenStream, Vec<(Ident, Ident)>) {
+    /// Position statements for one statement; returns the code and the values
+    /// the position struct may keep (those a later reader reads).
+    fn position(&self, stmt: &Stmt) -> (TokenStream, Vec<Stored>) {
         let name = &local(&stmt.name);
-        let own = (stmt.name.clone(), name.clone());
+        let own_ty = match stmt.kind {
+            Kind::Guide { .. } => quote!(::mechanism::guide::Line<T>),
+            _ => quote!(::mechanism::Point2<T>),
+        };
+        let own = Stored::new(&stmt.name, name, own_ty);
         let g = self.grp(stmt);
+        let group = Stored::new(&g, &g, group_position_type(&stmt.kind));
         let t = tag(stmt);
         let mut fields = vec![];
         let code = match &stmt.kind {
@@ -194,7 +234,7 @@ impl Emitter<'_> {
                 cos_sin,
             } => {
                 let (r, pivot_l) = (radius.emit(), local(pivot));
-                fields.extend([(g.clone(), g.clone()), own]);
+                fields.extend([group.clone(), own]);
                 if *cos_sin && self.cos_sin {
                     quote! {
                         let #g = ::mechanism::driver::crank::position_cos_sin(&#pivot_l, #r, input_cs.#input.cos, input_cs.#input.sin) #t;
@@ -213,7 +253,7 @@ impl Emitter<'_> {
                 offset,
             } => {
                 let (o, guide_l) = (offset.emit(), local(guide));
-                fields.extend([(g.clone(), g.clone()), own]);
+                fields.extend([group.clone(), own]);
                 quote! {
                     let #g = ::mechanism::driver::slider::position(&#guide_l, #o, input.#input) #t;
                     let #name = #g.p;
@@ -228,7 +268,7 @@ impl Emitter<'_> {
             } => {
                 let (l, m) = (l.emit(), mode_tokens(*mode));
                 let (a_l, b_l) = (local(a), local(b));
-                fields.extend([(g.clone(), g.clone()), own]);
+                fields.extend([group.clone(), own]);
                 quote! {
                     let #g = ::mechanism::driver::actuator::position(&#a_l, #l, &#b_l, input.#input, #m) #t;
                     let #name = #g.c;
@@ -237,7 +277,7 @@ impl Emitter<'_> {
             Kind::Rrr { a, l1, b, l2, mode } => {
                 let (l1, l2, m) = (l1.emit(), l2.emit(), mode_tokens(*mode));
                 let (a_l, b_l) = (local(a), local(b));
-                fields.extend([(g.clone(), g.clone()), own]);
+                fields.extend([group.clone(), own]);
                 quote! {
                     let #g = ::mechanism::dyad::rrr::position(&#a_l, #l1, &#b_l, #l2, #m) #t;
                     let #name = #g.c;
@@ -252,7 +292,7 @@ impl Emitter<'_> {
             } => {
                 let (l, m, o) = (l.emit(), mode_tokens(*mode), offset.emit());
                 let (a_l, guide_l) = (local(a), local(guide));
-                fields.extend([(g.clone(), g.clone()), own]);
+                fields.extend([group.clone(), own]);
                 quote! {
                     let #g = ::mechanism::dyad::rrp::position(&#a_l, #l, &#guide_l, #o, #m) #t;
                     let #name = #g.c;
@@ -261,7 +301,7 @@ impl Emitter<'_> {
             Kind::Rpr { a, b, mode, offset } => {
                 let (m, o) = (mode_tokens(*mode), offset.emit());
                 let (a_l, b_l) = (local(a), local(b));
-                fields.push((g.clone(), g.clone()));
+                fields.push(group.clone());
                 quote! {
                     let #g = ::mechanism::dyad::rpr::position(&#a_l, &#b_l, #o, #m) #t;
                 }
@@ -274,7 +314,7 @@ impl Emitter<'_> {
             } => {
                 let (o1, o2) = (offset1.emit(), offset2.emit());
                 let (g1_l, g2_l) = (local(g1), local(g2));
-                fields.extend([(g.clone(), g.clone()), own]);
+                fields.extend([group.clone(), own]);
                 quote! {
                     let #g = ::mechanism::dyad::prp::position(&#g1_l, #o1, &#g2_l, #o2) #t;
                     let #name = #g.c;
@@ -288,7 +328,7 @@ impl Emitter<'_> {
             } => {
                 let (u, o) = (unit_vector(slot), offset.emit());
                 let (a_l, guide_l) = (local(a), local(guide));
-                fields.extend([(g.clone(), g.clone()), own]);
+                fields.extend([group.clone(), own]);
                 quote! {
                     let #g = ::mechanism::dyad::rpp::position(&#a_l, &#guide_l, #o, &#u) #t;
                     let #name = #g.q;
@@ -331,7 +371,7 @@ impl Emitter<'_> {
                 let axis = format_ident!("axis_{}", link);
                 let (unit, _) = self.link_direction(stmt, j);
                 axes.extend(quote!(let #axis = #unit;));
-                fields.push((axis.clone(), axis));
+                fields.push(Stored::new(&axis, &axis, quote!(::mechanism::Vector2<T>)));
             }
         }
         (quote!(#code #axes), fields)
@@ -361,15 +401,12 @@ pub fn mechanism(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream
         .self_test
         .map(|_| self_test::emit(model, plan, findings));
     // The position struct keeps the fields these read (`pos.NAME`).
-    let readers = format!(
-        "{} {}",
-        check,
-        self_tests
-            .as_ref()
-            .map(|t| t.to_string())
-            .unwrap_or_default()
-    );
-    let mut out = items(model, plan, &readers);
+    let mut readers = Reads::default();
+    readers.scan(&check);
+    if let Some(tests) = &self_tests {
+        readers.scan(tests);
+    }
+    let mut out = items(model, plan, readers);
     let name = &model.name;
     let allow_lints = allow_literal_lints();
     out.extend(quote! {
@@ -381,12 +418,12 @@ pub fn mechanism(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream
     out
 }
 
-/// Expands a valid, planned model.
-/// `readers`: the other generated code that reads position fields (the
-/// run-time `check()` and the `#[self_test]` tests), so that the position
-/// struct keeps, besides the outputs, exactly the fields some later code
-/// reads (`pos.NAME`).
-fn items(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
+/// The mechanism's structs and analyses. `readers`: the reads of the other
+/// generated code that reads position fields (the run-time `check()` and the
+/// `#[self_test]` tests); with the later analyses' own reads they decide
+/// which fields the position, velocity and acceleration structs keep
+/// ([`reads`]).
+fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
     let name = &model.name;
     let vis = &model.vis;
     let docs = &model.docs;
@@ -451,7 +488,7 @@ fn items(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
 
     // ---------------- position ----------------
     let mut pos_code = TokenStream::new();
-    let mut pos_fields: Vec<(Ident, Ident)> = Vec::new();
+    let mut pos_fields: Vec<Stored> = Vec::new();
     for &i in &plan.solve {
         let (code, fields) = em.position(&model.stmts[i]);
         pos_code.extend(code);
@@ -509,26 +546,28 @@ fn items(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     let forces = (level >= Level::Forces).then(|| forces::emit(model, plan, &moving));
     let accel_rates = (level >= Level::Acceleration).then(|| emit_rates(&em, &moving, out, true));
     let vel_rates = (level >= Level::Velocity).then(|| emit_rates(&em, &moving, out, false));
-    let mut later = String::from(readers);
+    let mut reads = readers;
     if let Some((code, _, _)) = &vel_rates {
-        later.push_str(&code.to_string());
+        reads.scan(code);
     }
     if let Some((code, _, _)) = &accel_rates {
-        later.push_str(&code.to_string());
+        reads.scan(code);
     }
     if let Some(f) = &forces {
-        later.push_str(&f.methods.to_string());
+        reads.scan(&f.methods);
     }
-    let later: String = later.split_whitespace().collect();
-    let read_later = |scope: &str, field: &Ident| reads_field(&later, scope, &field.to_string());
     let out_names: BTreeSet<String> = pos_out_fields.iter().map(|(n, _)| n.to_string()).collect();
-    let (hidden_pos, hidden_pos_locals): (Vec<&Ident>, Vec<&Ident>) = pos_fields
+    let hidden: Vec<&Stored> = pos_fields
         .iter()
-        .filter(|(f, _)| !out_names.contains(&f.to_string()) && read_later("pos", f))
-        .map(|(f, l)| (f, l))
-        .unzip();
+        .filter(|f| {
+            !out_names.contains(&f.field.to_string()) && reads.reads(Analysis::Position, &f.field)
+        })
+        .collect();
+    let hidden_pos: Vec<&Ident> = hidden.iter().map(|f| &f.field).collect();
+    let hidden_pos_locals: Vec<&Ident> = hidden.iter().map(|f| &f.local).collect();
+    let hidden_pos_types: Vec<&TokenStream> = hidden.iter().map(|f| &f.ty).collect();
     // The inputs, kept when a later analysis reads them (a slider's position).
-    let keep_input = read_later("pos", &format_ident!("input"));
+    let keep_input = reads.reads(Analysis::Position, &format_ident!("input"));
     let (input_field, input_init) = if keep_input {
         (
             quote!(#[doc(hidden)] pub input: #input_ty<T>,),
@@ -537,10 +576,6 @@ fn items(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     } else {
         (TokenStream::new(), TokenStream::new())
     };
-    let hidden_pos_types: Vec<TokenStream> = hidden_pos
-        .iter()
-        .map(|f| position_field_type(model, f))
-        .collect();
     let (pos_out_names, pos_out_types): (Vec<Ident>, Vec<TokenStream>) =
         pos_out_fields.iter().cloned().unzip();
     // A struct none of whose fields has the type `T` (`outputs { }`, or only
@@ -735,7 +770,7 @@ fn items(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     if let Some((code, fields, outs)) = vel_rates {
         let fields: Vec<(Ident, TokenStream)> = fields
             .into_iter()
-            .filter(|(n, _)| read_later("vel", n))
+            .filter(|(n, _)| reads.reads(Analysis::Velocity, n))
             .collect();
         let conditions: Vec<Ident> = plan
             .solve
@@ -845,7 +880,7 @@ fn items(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
         };
         let fields: Vec<(Ident, TokenStream)> = fields
             .into_iter()
-            .filter(|(n, _)| read_later("acc", n))
+            .filter(|(n, _)| reads.reads(Analysis::Acceleration, n))
             .collect();
         let acc_doc = format!("Acceleration of [`{name}`]: point accelerations in length units per s^2, link angular accelerations in rad/s^2, slide accelerations in length units per s^2.");
         let (on, ot, oc): (Vec<Ident>, Vec<TokenStream>, Vec<TokenStream>) = unzip3(outs);
@@ -904,19 +939,6 @@ fn items(model: &Model, plan: &Plan, readers: &str) -> TokenStream {
     }
 }
 
-/// Whether `code` (whitespace removed: the compiler's and proc_macro2's
-/// printers space tokens differently) reads `scope.field`, as whole
-/// identifiers.
-fn reads_field(code: &str, scope: &str, field: &str) -> bool {
-    let ident = |c: char| c.is_alphanumeric() || c == '_';
-    let pat = format!("{scope}.{field}");
-    code.match_indices(&pat).any(|(i, _)| {
-        let before = code[..i].chars().next_back();
-        let after = code[i + pat.len()..].chars().next();
-        !before.is_some_and(ident) && !after.is_some_and(ident)
-    })
-}
-
 fn unzip3<A, B, C>(v: Vec<(A, B, C)>) -> (Vec<A>, Vec<B>, Vec<C>) {
     let mut a = Vec::new();
     let mut b = Vec::new();
@@ -927,35 +949,6 @@ fn unzip3<A, B, C>(v: Vec<(A, B, C)>) -> (Vec<A>, Vec<B>, Vec<C>) {
         c.push(z);
     }
     (a, b, c)
-}
-
-/// The type of a hidden position field.
-fn position_field_type(model: &Model, field: &Ident) -> TokenStream {
-    let f = field.to_string();
-    if f.starts_with("axis_") {
-        return quote!(::mechanism::Vector2<T>);
-    }
-    if let Some(stmt_name) = f.strip_prefix("grp_") {
-        if let Some(stmt) = model.stmts.iter().find(|s| s.name == stmt_name) {
-            return match stmt.kind {
-                Kind::Crank { .. } => quote!(::mechanism::driver::crank::CrankPosition<T>),
-                Kind::Slider { .. } => quote!(::mechanism::driver::slider::SliderPosition<T>),
-                Kind::Actuator { .. } => quote!(::mechanism::driver::actuator::ActuatorPosition<T>),
-                Kind::Rrr { .. } => quote!(::mechanism::dyad::rrr::RrrPosition<T>),
-                Kind::Rrp { .. } => quote!(::mechanism::dyad::rrp::RrpPosition<T>),
-                Kind::Rpr { .. } => quote!(::mechanism::dyad::rpr::RprPosition<T>),
-                Kind::Prp { .. } => quote!(::mechanism::dyad::prp::PrpPosition<T>),
-                Kind::Rpp { .. } => quote!(::mechanism::dyad::rpp::RppPosition<T>),
-                _ => quote!(()),
-            };
-        }
-    }
-    if let Some(stmt) = model.stmts.iter().find(|s| s.name == f) {
-        if let Kind::Guide { .. } = stmt.kind {
-            return quote!(::mechanism::guide::Line<T>);
-        }
-    }
-    quote!(::mechanism::Point2<T>)
 }
 
 fn group_type(kind: &Kind, accel: bool) -> TokenStream {
