@@ -1,9 +1,9 @@
 //! Stage 6, check: the declared input ranges, and the mechanism assembled over
 //! them at expansion time.
 //!
-//! - [`inputs`] reads the `range` statements (and the default: a crank turns
-//!   fully; sliders and actuators have no default range) and [`allowances`]
-//!   the `allow singular` statements, with errors on the user's tokens.
+//! The input ranges and the allowed singular positions are read by the model
+//! (`model::Input`, `model::Allowed`).
+//!
 //! - [`expansion_check`]: when every dimension the position analysis uses is
 //!   known at expansion time (literals and `const`s, no `params`), the
 //!   mechanism is solved in `f64` through the same `mechanism-core` primitives
@@ -14,421 +14,49 @@
 //!   numbers; a singular position (toggle, dead centre) is a warning
 //!   (`#[deprecated]` on a generated item used at the group's name: the only
 //!   warning a stable proc macro can raise).
-//! - [`emit_check`]: the generated `check()`, the same sweep at run time
-//!   through the generated `position()`, for any parameters.
+//! - the generated `check()` (`emit::check_fn`) runs the same sweep at run
+//!   time through the generated `position()`, for any parameters.
+//!
+//! Files: [`eval`] solves the position in `f64`; [`failures`] and
+//! [`singular`] turn the sweep's findings into errors and warnings;
+//! [`explain`] says what a finding means in the user's numbers.
 //!
 //! Two inputs are checked only when both have declared ranges (a grid over the
 //! box); three or more are not checked.
 
-use crate::diag::{show_interval, show_num, show_value, Diagnostics};
-use crate::model::{group_kind, Input, Kind, Local, Mode, Model, Origin};
-use crate::plan::Plan;
-use crate::plan::{checked, Checked};
-use crate::value::Value;
-use mechanism_core::guide::Line;
-use mechanism_core::sweep::{self, Event, Outcome, Range, Tolerances};
-use mechanism_core::{driver, dyad, geometry, link, Fault, Point2, Vector2};
+mod eval;
+mod explain;
+mod failures;
+mod singular;
+
+use crate::diag::{show_interval, Diagnostics};
+use crate::model::{Input, Kind, Model};
+use crate::plan::{checked, Checked, Plan};
+use eval::{position_values, Evaluator, MAX_GROUPS};
+use mechanism_core::sweep::{self, Event, Range, Tolerances};
+use mechanism_core::Fault;
 use proc_macro2::TokenStream;
-use quote::{quote, quote_spanned};
-use std::collections::BTreeMap;
-use std::f64::consts::PI;
-use syn::Ident;
 
-/// Most groups the expansion-time check handles (more: not checked).
-const MAX_GROUPS: usize = 64;
-
-/// Every value `position()` uses, for the statements in `order`.
-fn position_values(model: &Model, order: &[usize]) -> Vec<Value> {
-    let mut v = Vec::new();
-    for &i in order {
-        match &model.stmts[i].kind {
-            Kind::Ground { x, y } => v.extend([x.clone(), y.clone()]),
-            Kind::Guide { origin, angle, .. } => {
-                if let Origin::Coords(x, y) = origin {
-                    v.extend([x.clone(), y.clone()]);
-                }
-                v.push(angle.clone());
-            }
-            Kind::Crank { radius, .. } => v.push(radius.clone()),
-            Kind::Slider { offset, .. } => v.push(offset.clone()),
-            Kind::Actuator { l, .. } => v.push(l.clone()),
-            Kind::Rrr { l1, l2, .. } => v.extend([l1.clone(), l2.clone()]),
-            Kind::Rrp { l, offset, .. } => v.extend([l.clone(), offset.clone()]),
-            Kind::Rpr { offset, .. } => v.push(offset.clone()),
-            Kind::Prp {
-                offset1, offset2, ..
-            } => v.extend([offset1.clone(), offset2.clone()]),
-            Kind::Rpp { slot, offset, .. } => v.extend([slot.clone(), offset.clone()]),
-            Kind::Point { local, .. } => match local {
-                Local::Polar(a, b) | Local::Cartesian(a, b) => v.extend([a.clone(), b.clone()]),
-            },
-        }
-    }
-    v
+/// One sweep finding for a checked group: a failure to assemble over an
+/// interval (one input) or at grid points (two), or a singular position.
+pub struct Found {
+    /// The group's index among the checked groups.
+    pub group: usize,
+    /// The lower corner of the failing interval or box; the input of a
+    /// singular position.
+    pub lo: Vec<f64>,
+    /// The upper corner (equal to `lo` at a single input).
+    pub hi: Vec<f64>,
+    /// What failed.
+    pub fault: Fault,
+    /// Failing grid points, or sign changes of the determinant.
+    pub count: u32,
+    /// `true` for a singular position, `false` for a failure to assemble.
+    pub singular: bool,
 }
-
-fn num(v: &Value) -> f64 {
-    v.fold().unwrap_or(f64::NAN)
-}
-
-fn mode(m: Mode) -> mechanism_core::Mode {
-    match m {
-        Mode::Plus => mechanism_core::Mode::Plus,
-        Mode::Minus => mechanism_core::Mode::Minus,
-    }
-}
-
-/// The expansion-time evaluator: the position analysis in `f64`.
-struct Evaluator<'a> {
-    model: &'a Model,
-    order: &'a [usize],
-    /// Group index of each checked statement.
-    group: BTreeMap<usize, usize>,
-    /// Input index by name.
-    input: BTreeMap<String, usize>,
-}
-
-impl Evaluator<'_> {
-    fn solve(&self, q: &[f64]) -> Outcome<MAX_GROUPS> {
-        let nan = Point2::new(f64::NAN, f64::NAN);
-        let mut points: BTreeMap<String, Point2<f64>> = BTreeMap::new();
-        let mut guides: BTreeMap<String, Line<f64>> = BTreeMap::new();
-        let mut axes: BTreeMap<String, Vector2<f64>> = BTreeMap::new();
-        let mut dets = [1.0; MAX_GROUPS];
-        for &i in self.order {
-            let stmt = &self.model.stmts[i];
-            let g = self.group.get(&i).copied().unwrap_or(0);
-            let fail = |e: mechanism_core::Error| (g, e.fault);
-            let pt = |n: &Ident| points.get(&n.to_string()).copied().unwrap_or(nan);
-            let line = |n: &Ident| {
-                guides.get(&n.to_string()).copied().unwrap_or(Line {
-                    origin: nan,
-                    dir: Vector2::new(f64::NAN, f64::NAN),
-                })
-            };
-            let inp = |n: &Ident| {
-                self.input
-                    .get(&n.to_string())
-                    .and_then(|&k| q.get(k))
-                    .copied()
-                    .unwrap_or(f64::NAN)
-            };
-            let name = stmt.name.to_string();
-            let link = |k: usize| stmt.links[k].to_string();
-            match &stmt.kind {
-                Kind::Ground { x, y } => {
-                    points.insert(name, Point2::new(num(x), num(y)));
-                }
-                Kind::Guide {
-                    origin,
-                    angle,
-                    carrier,
-                } => {
-                    let origin = match origin {
-                        Origin::Point(p) => pt(p),
-                        Origin::Coords(x, y) => Point2::new(num(x), num(y)),
-                    };
-                    let u = geometry::unit(num(angle));
-                    let dir = match carrier {
-                        None => u,
-                        Some(l) => {
-                            let axis = axes
-                                .get(&l.to_string())
-                                .copied()
-                                .unwrap_or(Vector2::new(f64::NAN, f64::NAN));
-                            link::local_offset(&axis, &u)
-                        }
-                    };
-                    guides.insert(name, Line { origin, dir });
-                }
-                Kind::Crank {
-                    pivot,
-                    radius,
-                    input,
-                    ..
-                } => {
-                    let c = driver::crank::position(&pt(pivot), num(radius), inp(input))
-                        .map_err(fail)?;
-                    points.insert(name, c.tip);
-                    axes.insert(link(0), c.axis);
-                }
-                Kind::Slider {
-                    guide,
-                    input,
-                    offset,
-                } => {
-                    let g = line(guide);
-                    let s = driver::slider::position(&g, num(offset), inp(input)).map_err(fail)?;
-                    points.insert(name, s.p);
-                    axes.insert(link(0), g.dir);
-                }
-                Kind::Actuator {
-                    a,
-                    l,
-                    b,
-                    input,
-                    mode: m,
-                } => {
-                    let len = inp(input);
-                    let p = driver::actuator::position(&pt(a), num(l), &pt(b), len, mode(*m))
-                        .map_err(fail)?;
-                    dets[g] = sweep::det_rrr(&p);
-                    points.insert(name, p.c);
-                    axes.insert(link(0), p.r1 / num(l));
-                    axes.insert(link(1), p.r2 / len);
-                }
-                Kind::Rrr {
-                    a,
-                    l1,
-                    b,
-                    l2,
-                    mode: m,
-                } => {
-                    let p = dyad::rrr::position(&pt(a), num(l1), &pt(b), num(l2), mode(*m))
-                        .map_err(fail)?;
-                    dets[g] = sweep::det_rrr(&p);
-                    points.insert(name, p.c);
-                    axes.insert(link(0), p.r1 / num(l1));
-                    axes.insert(link(1), p.r2 / num(l2));
-                }
-                Kind::Rrp {
-                    a,
-                    l,
-                    guide,
-                    mode: m,
-                    offset,
-                } => {
-                    let gl = line(guide);
-                    let p = dyad::rrp::position(&pt(a), num(l), &gl, num(offset), mode(*m))
-                        .map_err(fail)?;
-                    dets[g] = sweep::det_rrp(&p, &gl);
-                    points.insert(name, p.c);
-                    axes.insert(link(0), p.r1 / num(l));
-                    axes.insert(link(1), gl.dir);
-                }
-                Kind::Rpr {
-                    a,
-                    b,
-                    mode: m,
-                    offset,
-                } => {
-                    let (pa, pb) = (pt(a), pt(b));
-                    let p = dyad::rpr::position(&pa, &pb, num(offset), mode(*m)).map_err(fail)?;
-                    dets[g] = sweep::det_rpr(&p, &pa, &pb);
-                    axes.insert(link(0), p.axis);
-                    axes.insert(link(1), p.axis);
-                }
-                Kind::Prp {
-                    g1,
-                    g2,
-                    offset1,
-                    offset2,
-                } => {
-                    let (l1, l2) = (line(g1), line(g2));
-                    let p =
-                        dyad::prp::position(&l1, num(offset1), &l2, num(offset2)).map_err(fail)?;
-                    dets[g] = sweep::det_prp(&l1, &l2);
-                    points.insert(name, p.c);
-                    axes.insert(link(0), l1.dir);
-                    axes.insert(link(1), l2.dir);
-                }
-                Kind::Rpp {
-                    a,
-                    guide,
-                    slot,
-                    offset,
-                } => {
-                    let gl = line(guide);
-                    let u = geometry::unit(num(slot));
-                    let p = dyad::rpp::position(&pt(a), &gl, num(offset), &u).map_err(fail)?;
-                    dets[g] = sweep::det_rpp(&p, &gl);
-                    points.insert(name, p.q);
-                    axes.insert(link(0), p.slot);
-                    axes.insert(link(1), gl.dir);
-                }
-                Kind::Point {
-                    link: on,
-                    from,
-                    local,
-                } => {
-                    let local = match local {
-                        Local::Cartesian(x, y) => Vector2::new(num(x), num(y)),
-                        Local::Polar(d, a) => geometry::unit(num(a)) * num(d),
-                    };
-                    let axis = axes
-                        .get(&on.to_string())
-                        .copied()
-                        .unwrap_or(Vector2::new(f64::NAN, f64::NAN));
-                    let p = link::point_position(&pt(from), &axis, &local).map_err(fail)?;
-                    points.insert(name, p);
-                }
-            }
-        }
-        Ok(dets)
-    }
-}
-
-/// A range statement for a hint: the interval shrunk inward to whole tenths
-/// (deg for angles), strictly inside; `None` when nothing is left.
-fn suggest(input: &Input, lo: f64, hi: f64) -> Option<String> {
-    let (lo, hi, unit) = if input.angle {
-        (lo.to_degrees(), hi.to_degrees(), " deg")
-    } else {
-        (lo, hi, "")
-    };
-    let scale = if input.angle {
-        10.0
-    } else {
-        // Two significant digits of the width below its leading digit.
-        let w = hi - lo;
-        if w <= 0.0 {
-            return None;
-        }
-        10f64.powi(2 - w.log10().ceil() as i32)
-    };
-    let a = (lo * scale).floor() / scale + 1.0 / scale;
-    let b = (hi * scale).ceil() / scale - 1.0 / scale;
-    (a < b).then(|| {
-        format!(
-            "`range {} = ({}{unit}, {}{unit});`",
-            input.name,
-            show_num(a),
-            show_num(b)
-        )
-    })
-}
-
-/// What the failing group's fault means, in the user's words.
-fn explain(model: &Model, stmt_index: usize, fault: &Fault, at: &str) -> String {
-    let stmt = &model.stmts[stmt_index];
-    match (&stmt.kind, fault) {
-        (Kind::Actuator { a, b, .. }, Fault::CannotAssemble { miss, reach }) => format!(
-            "at {at}, `{a}` and `{b}` are {} outside the distances the link and the cylinder can span (bound {})",
-            show_num(*miss),
-            show_num(*reach)
-        ),
-        (Kind::Rrr { a, l1, b, l2, .. }, Fault::CannotAssemble { miss, reach }) => {
-            let (l1, l2) = (num(l1), num(l2));
-            if (reach - (l1 + l2)).abs() <= 1e-9 * reach.abs().max(1.0) {
-                format!(
-                    "at {at}, `{a}` and `{b}` are {} apart, {} more than the links reach ({} + {} = {})",
-                    show_num(reach + miss),
-                    show_num(*miss),
-                    show_num(l1),
-                    show_num(l2),
-                    show_num(*reach)
-                )
-            } else {
-                format!(
-                    "at {at}, `{a}` and `{b}` are {} apart, {} less than the links' difference (|{} - {}| = {})",
-                    show_num(reach - miss),
-                    show_num(*miss),
-                    show_num(l1),
-                    show_num(l2),
-                    show_num(*reach)
-                )
-            }
-        }
-        (Kind::Rrp { a, guide, .. }, Fault::CannotAssemble { miss, reach }) => format!(
-            "at {at}, `{a}` is {} from the line of guide `{guide}`, {} more than the link's length {} reaches",
-            show_num(reach + miss),
-            show_num(*miss),
-            show_num(*reach)
-        ),
-        (Kind::Rpr { a, b, .. }, Fault::CannotAssemble { miss, reach }) => format!(
-            "at {at}, `{a}` is {} from `{b}`, {} inside the offset {} of the slide line",
-            show_num(reach - miss),
-            show_num(*miss),
-            show_num(*reach)
-        ),
-        (Kind::Prp { g1, g2, .. }, Fault::Singular { .. }) => format!(
-            "at {at}, guides `{g1}` and `{g2}` are parallel: the joint is at infinity"
-        ),
-        (Kind::Rpp { guide, .. }, Fault::Singular { .. }) => format!(
-            "at {at}, the slot is parallel to guide `{guide}`: the joint is at infinity"
-        ),
-        (_, fault) => format!("at {at}: {fault}"),
-    }
-}
-
-/// Why a group is singular, in the user's words.
-fn singular_meaning(model: &Model, stmt_index: usize) -> String {
-    let stmt = &model.stmts[stmt_index];
-    let l = |k: usize| stmt.links[k].to_string();
-    match &stmt.kind {
-        Kind::Rrr { .. } => format!("links `{}` and `{}` are aligned (toggle)", l(0), l(1)),
-        Kind::Actuator { .. } => format!(
-            "the cylinder `{}` is aligned with link `{}` (dead centre)",
-            l(1),
-            l(0)
-        ),
-        Kind::Rrp { guide, .. } => format!(
-            "link `{}` is perpendicular to guide `{guide}` (the block cannot be pushed along it)",
-            l(0)
-        ),
-        Kind::Rpr { a, b, .. } => {
-            format!("`{a}` is at the foot of the perpendicular from `{b}` on the slide line")
-        }
-        Kind::Prp { g1, g2, .. } => format!("guides `{g1}` and `{g2}` are parallel"),
-        Kind::Rpp { guide, .. } => format!("the slot is parallel to guide `{guide}`"),
-        _ => "its rate system is singular".into(),
-    }
-}
-
-/// For a crank driving an RRR group onto a ground point: the four-bar's
-/// Grashof condition, in numbers.
-fn grashof(model: &Model, plan: &Plan, stmt_index: usize) -> Option<String> {
-    let stmt = &model.stmts[stmt_index];
-    let Kind::Rrr { a, l1, b, l2, .. } = &stmt.kind else {
-        return None;
-    };
-    let find = |n: &Ident| plan.defined.get(&n.to_string()).map(|&i| &model.stmts[i]);
-    let ground = |n: &Ident| match find(n).map(|s| &s.kind) {
-        Some(Kind::Ground { x, y }) => Some((num(x), num(y))),
-        _ => None,
-    };
-    let (crank, other) = match (find(a).map(|s| &s.kind), find(b).map(|s| &s.kind)) {
-        (Some(Kind::Crank { .. }), _) => (find(a)?, b),
-        (_, Some(Kind::Crank { .. })) => (find(b)?, a),
-        _ => return None,
-    };
-    let Kind::Crank { pivot, radius, .. } = &crank.kind else {
-        return None;
-    };
-    let (o, g) = (ground(pivot)?, ground(other)?);
-    let base = (o.0 - g.0).hypot(o.1 - g.1);
-    let r = num(radius);
-    let mut links = [
-        (r, format!("crank {}", show_num(r))),
-        (num(l1), show_num(num(l1))),
-        (num(l2), show_num(num(l2))),
-        (base, format!("ground {}", show_num(base))),
-    ];
-    links.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let (s, p, q, l) = (&links[0], &links[1], &links[2], &links[3]);
-    let text = format!(
-        "s + l = {} + {} = {}, p + q = {} + {} = {}",
-        s.1,
-        l.1,
-        show_num(s.0 + l.0),
-        p.1,
-        q.1,
-        show_num(p.0 + q.0)
-    );
-    Some(if s.0 + l.0 > p.0 + q.0 {
-        format!("the four-bar `{pivot}`-`{}`-`{}`-`{other}` is not Grashof ({text}): no link turns fully", crank.name, stmt.name)
-    } else if s.0 < r {
-        format!("the four-bar `{pivot}`-`{}`-`{}`-`{other}` is Grashof ({text}), but the crank is not its shortest link: only the shortest link turns fully", crank.name, stmt.name)
-    } else {
-        return None;
-    })
-}
-
-/// One sweep event: group, lower corner (or the singular input), upper
-/// corner, fault, count, `true` for a singular position.
-type Found = (usize, Vec<f64>, Vec<f64>, Fault, u32, bool);
 
 /// The expansion-time check's findings.
+#[derive(Default)]
 pub struct Findings {
     /// Warning items (`#[deprecated]` uses).
     pub warnings: TokenStream,
@@ -438,6 +66,18 @@ pub struct Findings {
     pub singular: Vec<(usize, Vec<f64>)>,
     /// `true` when the check ran at expansion time.
     pub ran: bool,
+}
+
+/// Everything the reports of one sweep read.
+struct Sweep<'a> {
+    model: &'a Model,
+    plan: &'a Plan,
+    checked: &'a Checked,
+    ev: Evaluator<'a>,
+    /// The swept range of each input.
+    ranges: Vec<Range>,
+    /// What the sweep found, in the order found.
+    events: Vec<Found>,
 }
 
 /// Per checked group: `true` for a group whose joint runs off to infinity
@@ -452,58 +92,52 @@ pub fn joints_at_infinity(model: &Model, checked: &Checked) -> Vec<bool> {
         .collect()
 }
 
-/// A singular position found by the sweep, as a finding: a failure at that
-/// one input for a group whose joint is at infinity there (so the verdict does
-/// not depend on whether a sample lands on the point), a singular position
-/// otherwise.
-fn singular_event(at_infinity: &[bool], group: usize, at: &[f64], det: f64, count: u32) -> Found {
-    if at_infinity[group] {
-        let fault = Fault::Singular { det, scale: 1.0 };
-        (group, at.to_vec(), at.to_vec(), fault, count, false)
-    } else {
-        let fault = Fault::NonFinite { what: "" };
-        (group, at.to_vec(), at.to_vec(), fault, count, true)
+/// A sweep event as a finding. A singular position of a group whose joint is
+/// at infinity there is a failure at that one input (so the verdict does not
+/// depend on whether a sample lands on the point).
+fn found<const D: usize>(at_infinity: &[bool], event: Event<D>) -> Found {
+    match event {
+        Event::Fails {
+            group,
+            lo,
+            hi,
+            fault,
+            count,
+        } => Found {
+            group,
+            lo: lo.to_vec(),
+            hi: hi.to_vec(),
+            fault,
+            count,
+            singular: false,
+        },
+        Event::Singular {
+            group,
+            at,
+            count,
+            det,
+        } => Found {
+            group,
+            lo: at.to_vec(),
+            hi: at.to_vec(),
+            fault: if at_infinity[group] {
+                Fault::Singular { det, scale: 1.0 }
+            } else {
+                Fault::NonFinite { what: "" }
+            },
+            count,
+            singular: !at_infinity[group],
+        },
     }
 }
 
-/// Runs the expansion-time check (see the module documentation).
-pub fn expansion_check(model: &Model, plan: &Plan, errors: &mut Diagnostics) -> Findings {
-    let inputs = &model.inputs;
-    let errors_before = errors.len();
-    let mut findings = Findings {
-        warnings: TokenStream::new(),
-        summary: String::new(),
-        singular: Vec::new(),
-        ran: false,
-    };
-    let checked = checked(model, plan);
-    let ranges: Vec<Range> = inputs.iter().filter_map(|i| i.range).collect();
-    if ranges.len() != inputs.len() || inputs.is_empty() {
-        let missing: Vec<String> = inputs
-            .iter()
-            .filter(|i| i.range.is_none())
-            .map(|i| format!("`{}`", i.name))
-            .collect();
-        findings.summary = format!(
-            "Not checked: no range is declared for {} (declare one with `range INPUT = (lo, hi);`).",
-            missing.join(", ")
-        );
-        return findings;
-    }
-    if inputs.len() > 2 {
-        findings.summary =
-            "Not checked: the checks sweep one or two inputs, this mechanism has more.".into();
-        return findings;
-    }
-    if inputs.len() == 2 && inputs.iter().any(|i| !i.declared) {
-        findings.summary = "Not checked: a mechanism with two inputs is checked over a box of declared ranges; declare `range` for both inputs.".into();
-        return findings;
-    }
-    let show_ranges = inputs
+/// The inputs' ranges as the summary shows them.
+fn show_ranges(inputs: &[Input]) -> String {
+    inputs
         .iter()
-        .map(|i| {
-            let r = i.range.expect("checked above");
-            format!(
+        .filter_map(|i| {
+            let r = i.range?;
+            Some(format!(
                 "`{}` in {}{}",
                 i.name,
                 show_interval(r.lo, r.hi, i.angle),
@@ -512,369 +146,109 @@ pub fn expansion_check(model: &Model, plan: &Plan, errors: &mut Diagnostics) -> 
                 } else {
                     " (a crank's full turn, the default)"
                 }
-            )
+            ))
         })
         .collect::<Vec<_>>()
-        .join(", ");
+        .join(", ")
+}
+
+/// The ranges to sweep, or why the mechanism is not checked at expansion
+/// time (the summary for the generated doc comment).
+fn sweepable(model: &Model, checked: &Checked) -> Result<Vec<Range>, String> {
+    let inputs = &model.inputs;
+    let ranges: Vec<Range> = inputs.iter().filter_map(|i| i.range).collect();
+    if ranges.len() != inputs.len() || inputs.is_empty() {
+        let missing: Vec<String> = inputs
+            .iter()
+            .filter(|i| i.range.is_none())
+            .map(|i| format!("`{}`", i.name))
+            .collect();
+        return Err(format!(
+            "Not checked: no range is declared for {} (declare one with `range INPUT = (lo, hi);`).",
+            missing.join(", ")
+        ));
+    }
+    if inputs.len() > 2 {
+        return Err(
+            "Not checked: the checks sweep one or two inputs, this mechanism has more.".into(),
+        );
+    }
+    if inputs.len() == 2 && inputs.iter().any(|i| !i.declared) {
+        return Err("Not checked: a mechanism with two inputs is checked over a box of declared ranges; declare `range` for both inputs.".into());
+    }
+    let show_ranges = show_ranges(inputs);
     if checked.groups.len() > MAX_GROUPS {
-        findings.summary = format!("Not checked at expansion time: more than {MAX_GROUPS} groups; `check()` sweeps {show_ranges} at run time.");
-        return findings;
+        return Err(format!("Not checked at expansion time: more than {MAX_GROUPS} groups; `check()` sweeps {show_ranges} at run time."));
     }
     if position_values(model, &checked.order)
         .iter()
         .any(|v| v.fold().is_none())
     {
-        findings.summary = format!("Not checked at expansion time (the dimensions include run-time `params`): `check()` sweeps {show_ranges} for the parameters it is called on.");
-        return findings;
+        return Err(format!("Not checked at expansion time (the dimensions include run-time `params`): `check()` sweeps {show_ranges} for the parameters it is called on."));
     }
-    findings.ran = true;
-    let ev = Evaluator {
-        model,
-        order: &checked.order,
-        group: checked
-            .groups
-            .iter()
-            .enumerate()
-            .map(|(k, &i)| (i, k))
-            .collect(),
-        input: inputs
-            .iter()
-            .enumerate()
-            .map(|(k, i)| (i.name.to_string(), k))
-            .collect(),
-    };
+    Ok(ranges)
+}
+
+/// Sweeps the ranges (`mechanism_core::sweep`, as the generated `check()`
+/// does) and collects what it finds.
+fn run(ev: &Evaluator<'_>, at_infinity: &[bool], ranges: &[Range]) -> Vec<Found> {
     let mut events: Vec<Found> = Vec::new();
-    let at_infinity = joints_at_infinity(model, &checked);
-    let tol = Tolerances::for_eps(f64::EPSILON);
-    if inputs.len() == 1 {
+    if ranges.len() == 1 {
+        let tol = Tolerances::for_eps(f64::EPSILON);
         sweep::sweep_1d(
             &ranges[0],
             sweep::SAMPLES_1D,
             &tol,
             |q| ev.solve(q),
-            |e| match e {
-                Event::Fails {
-                    group,
-                    lo,
-                    hi,
-                    fault,
-                    count,
-                } => events.push((group, lo.to_vec(), hi.to_vec(), fault, count, false)),
-                Event::Singular {
-                    group,
-                    at,
-                    count,
-                    det,
-                } => events.push(singular_event(&at_infinity, group, &at, det, count)),
-            },
+            |e| events.push(found(at_infinity, e)),
         );
     } else {
         sweep::sweep_2d(
             &[ranges[0], ranges[1]],
             sweep::SAMPLES_2D,
             |q| ev.solve(q),
-            |e| match e {
-                Event::Fails {
-                    group,
-                    lo,
-                    hi,
-                    fault,
-                    count,
-                } => events.push((group, lo.to_vec(), hi.to_vec(), fault, count, false)),
-                Event::Singular {
-                    group,
-                    at,
-                    count,
-                    det,
-                } => events.push(singular_event(&at_infinity, group, &at, det, count)),
-            },
+            |e| events.push(found(at_infinity, e)),
         );
     }
+    events
+}
+
+/// Runs the expansion-time check (see the module documentation): failures
+/// to assemble go to `errors`, singular positions become warnings.
+pub fn expansion_check(model: &Model, plan: &Plan, errors: &mut Diagnostics) -> Findings {
+    let mut findings = Findings::default();
+    let checked = checked(model, plan);
+    let ranges = match sweepable(model, &checked) {
+        Ok(ranges) => ranges,
+        Err(summary) => {
+            findings.summary = summary;
+            return findings;
+        }
+    };
+    findings.ran = true;
+    let ev = Evaluator::new(model, &checked);
+    let events = run(&ev, &joints_at_infinity(model, &checked), &ranges);
     findings.summary = format!(
-        "Checked at expansion time over {show_ranges} ({}): every group assembles.",
-        if inputs.len() == 1 {
+        "Checked at expansion time over {} ({}): every group assembles.",
+        show_ranges(&model.inputs),
+        if ranges.len() == 1 {
             format!("{} samples, edges bisected", sweep::SAMPLES_1D + 1)
         } else {
             format!("a {0} x {0} grid", sweep::SAMPLES_2D + 1)
         }
     );
-    // Diagnostics, one per failing group (all its intervals in one message).
-    let mut by_group: BTreeMap<usize, Vec<&Found>> = BTreeMap::new();
-    for e in events.iter().filter(|e| !e.5) {
-        by_group.entry(e.0).or_default().push(e);
-    }
-    for (g, list) in &by_group {
-        let stmt_index = checked.groups[*g];
-        let stmt = &model.stmts[stmt_index];
-        let kind = group_kind(&stmt.kind).unwrap_or("group");
-        // The span: the group's name, unless a declared range is to blame
-        // (the group assembles somewhere in it): then the end of the range
-        // it fails at, or the range's input when it fails inside.
-        let mut span = stmt.name.span();
-        let message = if inputs.len() == 1 {
-            let input = &inputs[0];
-            let name = &input.name;
-            let intervals: Vec<String> = list
-                .iter()
-                .map(|e| {
-                    if e.2[0] - e.1[0] <= 1e-9 * (ranges[0].hi - ranges[0].lo) {
-                        format!("at {}", show_value(0.5 * (e.1[0] + e.2[0]), input.angle))
-                    } else {
-                        format!("in {}", show_interval(e.1[0], e.2[0], input.angle))
-                    }
-                })
-                .collect();
-            let worst = list
-                .iter()
-                .max_by(|x, y| (x.2[0] - x.1[0]).total_cmp(&(y.2[0] - y.1[0])))
-                .expect("non-empty");
-            let mid = 0.5 * (worst.1[0] + worst.2[0]);
-            let mid_show = format!("{name} = {}", show_value(mid, input.angle));
-            let why = match ev.solve(&[mid]) {
-                Err((_, fault)) => explain(model, stmt_index, &fault, &mid_show),
-                // A failure at one input (a joint at infinity between two
-                // samples) is explained where it was found.
-                Ok(_) if worst.2[0] == worst.1[0] => {
-                    explain(model, stmt_index, &worst.3, &mid_show)
-                }
-                Ok(_) => explain(model, stmt_index, &worst.3, "the first failing sample"),
-            };
-            // Where it assembles: the complement of the failing intervals.
-            let r = ranges[0];
-            let mut fails: Vec<(f64, f64)> = events
-                .iter()
-                .filter(|e| !e.5)
-                .map(|e| (e.1[0], e.2[0]))
-                .collect();
-            fails.sort_by(|x, y| x.0.total_cmp(&y.0));
-            let mut free: Vec<(f64, f64)> = Vec::new();
-            let (start, end) = if r.periodic && fails.first().is_some_and(|f| f.0 < r.lo) {
-                let first = fails.remove(0);
-                (first.1, first.0 + (r.hi - r.lo))
-            } else {
-                (r.lo, r.hi)
-            };
-            let mut at = start;
-            for (a, b) in fails.iter().chain(std::iter::once(&(end, end))) {
-                if *a > at {
-                    free.push((at, *a));
-                }
-                at = at.max(*b);
-            }
-            // A turn: what assembles at its end continues at its start.
-            if r.periodic && free.len() > 1 {
-                let (first, last) = (free[0], free[free.len() - 1]);
-                if first.0 <= r.lo && last.1 >= r.hi {
-                    free.pop();
-                    free[0] = (last.0 - (r.hi - r.lo), first.1);
-                }
-            }
-            let best = free
-                .iter()
-                .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
-                .map(|&(a, b)| {
-                    // A turn's interval shown with its middle in (-180, 180] deg;
-                    // a middle at 180 deg to rounding (an interval symmetric
-                    // about 180 deg, whose ends were bisected to 1e-10 of the
-                    // turn) stays at 180, not -180.
-                    if input.angle && r.periodic {
-                        let k = ((0.5 * (a + b) - PI) / (2.0 * PI) - 1e-9).ceil();
-                        (a - 2.0 * PI * k, b - 2.0 * PI * k)
-                    } else {
-                        (a, b)
-                    }
-                });
-            let where_ok = match best {
-                Some((a, b)) => {
-                    // An end where the group fails at a single input (a PRP's
-                    // parallel guides) is not part of where it assembles:
-                    // shown open, `(60, 240) deg`, not `[60, 240] deg`.
-                    let width = r.hi - r.lo;
-                    let point_failure = |x: f64| {
-                        events.iter().filter(|e| !e.5).any(|e| {
-                            let (lo, hi) = (e.1[0], e.2[0]);
-                            let mut d = (0.5 * (lo + hi) - x).abs();
-                            if r.periodic {
-                                d = d.rem_euclid(width);
-                                d = d.min(width - d);
-                            }
-                            hi - lo <= 1e-9 * width && d <= 1e-9 * width
-                        })
-                    };
-                    let mut s = show_interval(a, b, input.angle);
-                    if point_failure(a) {
-                        s.replace_range(..1, "(");
-                    }
-                    if point_failure(b) {
-                        if let Some(k) = s.find(']') {
-                            s.replace_range(k..k + 1, ")");
-                        }
-                    }
-                    let verb = if input.declared {
-                        "narrow the declared range to it"
-                    } else {
-                        "declare a range inside it"
-                    };
-                    if let (true, Some(at)) = (input.declared, input.spans) {
-                        let tiny = 1e-9 * width;
-                        let at_lo = list.iter().all(|e| e.1[0] <= r.lo + tiny);
-                        let at_hi = list.iter().all(|e| e.2[0] >= r.hi - tiny);
-                        span = match (at_lo && !r.periodic, at_hi && !r.periodic) {
-                            (true, false) => at.lo,
-                            (false, true) => at.hi,
-                            _ => at.input,
-                        };
-                    }
-                    match suggest(input, a, b) {
-                        Some(range) => {
-                            format!("it assembles for {name} in {s}: {verb}, e.g. {range}")
-                        }
-                        None => {
-                            format!("it assembles only for {name} in {s}; change the dimensions")
-                        }
-                    }
-                }
-                None => "it assembles nowhere in the range: check the dimensions".into(),
-            };
-            // Guides parallel at every pose checked (a PRP whose guides turn
-            // together, or keep their directions): said directly, not as a
-            // failure at one input.
-            let parallel_everywhere = best.is_none()
-                && matches!(stmt.kind, Kind::Prp { .. })
-                && matches!(ev.solve(&[mid]), Err((_, Fault::Singular { .. })));
-            if let (true, Kind::Prp { g1, g2, .. }) = (parallel_everywhere, &stmt.kind) {
-                errors.error(syn::Error::new(
-                    span,
-                    format!(
-                        "group `{}` (PRP) cannot assemble: guides `{g1}` and `{g2}` are parallel at every pose checked ({name} in {}), so the joint is at infinity for every input\n  = help: make the guides cross: change the angle of one of them",
-                        stmt.name,
-                        show_interval(r.lo, r.hi, input.angle)
-                    ),
-                ));
-                continue;
-            }
-            let grashof = if !input.declared {
-                grashof(model, plan, stmt_index)
-                    .map(|g| format!("{g}; "))
-                    .unwrap_or_default()
-            } else {
-                String::new()
-            };
-            let over = if input.declared {
-                format!(
-                    "the declared range {}",
-                    show_interval(r.lo, r.hi, input.angle)
-                )
-            } else {
-                format!(
-                    "a full turn {}, the default for a crank",
-                    show_interval(r.lo, r.hi, true)
-                )
-            };
-            format!(
-                "cannot assemble group `{}` ({kind}) for {name} {} (checked over {over})\n  = note: {why}\n  = help: {grashof}{where_ok}",
-                stmt.name,
-                intervals.join(" and "),
-            )
-        } else {
-            let e = list[0];
-            let unit = |i: usize| if inputs[i].angle { " deg" } else { "" };
-            let v = |i: usize, x: f64| show_num(if inputs[i].angle { x.to_degrees() } else { x });
-            let total = (sweep::SAMPLES_2D + 1) * (sweep::SAMPLES_2D + 1);
-            format!(
-                "cannot assemble group `{}` ({kind}) at {} of the {total} grid points of the declared box {} x {}: they span {} in [{}, {}]{}, {} in [{}, {}]{}\n  = note: {}\n  = help: narrow the declared ranges or change the dimensions",
-                stmt.name,
-                e.4,
-                show_interval(ranges[0].lo, ranges[0].hi, inputs[0].angle),
-                show_interval(ranges[1].lo, ranges[1].hi, inputs[1].angle),
-                inputs[0].name, v(0, e.1[0]), v(0, e.2[0]), unit(0),
-                inputs[1].name, v(1, e.1[1]), v(1, e.2[1]), unit(1),
-                explain(model, stmt_index, &e.3, "the first failing grid point"),
-            )
-        };
-        errors.error(syn::Error::new(span, message));
-    }
-    if errors.len() > errors_before {
+    let sweep = Sweep {
+        model,
+        plan,
+        checked: &checked,
+        ev,
+        ranges,
+        events,
+    };
+    if failures::report(&sweep, errors) {
         return findings;
     }
-    // Warnings, one per singular group.
-    let mut sing: BTreeMap<usize, Vec<(Vec<f64>, u32)>> = BTreeMap::new();
-    for e in events.iter().filter(|e| e.5) {
-        sing.entry(e.0).or_default().push((e.1.clone(), e.4));
-    }
-    for (g, list) in &sing {
-        let stmt_index = checked.groups[*g];
-        let stmt = &model.stmts[stmt_index];
-        findings
-            .singular
-            .push((*g, list.iter().map(|(at, _)| at[0]).collect()));
-        if model.allowed.allows(&stmt.name.to_string()) {
-            continue;
-        }
-        let kind = group_kind(&stmt.kind).unwrap_or("group");
-        let mut at1: Vec<f64> = list
-            .iter()
-            .map(|(at, _)| {
-                // To 1e-4 (deg): the determinant is exactly zero over a
-                // rounding band about a fold, where the search may stop.
-                let r = ranges[0];
-                let unit = if inputs[0].angle { 180.0 / PI } else { 1.0 };
-                let x = (at[0] * unit * 1e4).round() / 1e4;
-                if r.periodic && x >= r.hi * unit {
-                    x - (r.hi - r.lo) * unit
-                } else {
-                    x
-                }
-            })
-            .collect();
-        at1.sort_by(f64::total_cmp);
-        let at: Vec<String> = if inputs.len() == 1 {
-            at1.iter()
-                .map(|x| {
-                    format!(
-                        "{} = {}{}",
-                        inputs[0].name,
-                        show_num(*x),
-                        if inputs[0].angle { " deg" } else { "" }
-                    )
-                })
-                .collect()
-        } else {
-            list.iter()
-                .map(|(at, _)| {
-                    format!(
-                        "({}, {}) = ({}, {})",
-                        inputs[0].name,
-                        inputs[1].name,
-                        show_value(at[0], inputs[0].angle),
-                        show_value(at[1], inputs[1].angle)
-                    )
-                })
-                .collect()
-        };
-        let count = if inputs.len() == 2 {
-            format!(" ({} sign changes on the grid)", list[0].1)
-        } else {
-            String::new()
-        };
-        let note = format!(
-            "group `{}` ({kind}) passes through a singular position at {}{count}: {}; `velocity()` and `acceleration()` return `Singular` there and lose accuracy near it. If the motion is meant to pass there, write `allow singular {};` in the definition",
-            stmt.name,
-            at.join(" and "),
-            singular_meaning(model, stmt_index),
-            stmt.name
-        );
-        let span = stmt.name.span();
-        let use_it = quote_spanned!(span=> singular_position);
-        findings.warnings.extend(quote! {
-            const _: () = {
-                #[deprecated(note = #note)]
-                #[allow(non_upper_case_globals)]
-                const singular_position: () = ();
-                #use_it
-            };
-        });
-    }
+    singular::warn(&sweep, &mut findings);
     let n_sing: usize = findings.singular.iter().map(|(_, v)| v.len()).sum();
     if n_sing > 0 {
         findings
