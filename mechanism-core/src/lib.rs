@@ -31,6 +31,7 @@ pub mod linsolve;
 pub mod mode;
 pub mod scalar;
 pub mod sincos64;
+pub mod structure;
 pub mod sweep;
 pub mod trig;
 pub mod trig64;

@@ -5,6 +5,7 @@
 
 pub mod batch;
 pub mod check_fn;
+pub mod describe;
 pub mod forces;
 pub mod reads;
 pub mod self_test;
@@ -413,6 +414,7 @@ pub fn mechanism(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream
         #allow_lints
         impl<T: ::mechanism::Real> #name<T> { #check }
     });
+    out.extend(describe::emit(model, plan));
     out.extend(findings.warnings.clone());
     out.extend(self_tests);
     out

@@ -1,0 +1,124 @@
+//! A generated mechanism describes itself: `Describe::STRUCTURE` lists its
+//! points (with how each is held), its moving links with the points on each,
+//! its guides and inputs, as written in the definition; `Fields` reads every
+//! output of the position, velocity and acceleration structs by name, with
+//! the quantity it measures, and agrees with the struct's own fields.
+
+use mechanism::mechanism;
+use mechanism::structure::{Describe, Fields, LinkKind, PointKind, Quantity, Value};
+
+mechanism! {
+    /// Crank-rocker four-bar (mm) with a coupler point.
+    pub FourBar {
+        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+        let P = point(link3, from A, 120.0, 30 deg);
+    }
+}
+
+mechanism! {
+    /// Quick-return shaper: crank, RPR, RRP on a fixed ram guide.
+    pub Shaper {
+        let A = ground(0.0, 0.0);
+        let C = ground(0.0, -0.275);
+        let ram = guide((0.0, 0.3), 180 deg);
+        let B = crank(A, 0.125, theta) as link1;
+        let s3 = rpr(B, C, plus) as (block2, link3);
+        let D = point(link3, from C, 0.6, 0 deg);
+        let E = rrp(D, 0.15, ram, plus) as (link4, slider5) slide x;
+    }
+}
+
+#[test]
+fn four_bar_structure_is_the_definition() {
+    let s = FourBar::<f64>::STRUCTURE;
+    assert_eq!(s.name, "FourBar");
+    let points: Vec<(&str, PointKind)> = s.points.iter().map(|p| (p.name, p.kind)).collect();
+    assert_eq!(
+        points,
+        [
+            ("O2", PointKind::Ground),
+            ("O4", PointKind::Ground),
+            ("A", PointKind::Joint),
+            ("B", PointKind::Joint),
+            ("P", PointKind::OnLink),
+        ]
+    );
+    let links: Vec<(&str, LinkKind, &[&str])> =
+        s.links.iter().map(|l| (l.name, l.kind, l.points)).collect();
+    assert_eq!(
+        links,
+        [
+            ("link2", LinkKind::Crank, &["O2", "A"][..]),
+            ("link3", LinkKind::Bar, &["A", "B", "P"][..]),
+            ("link4", LinkKind::Bar, &["O4", "B"][..]),
+        ]
+    );
+    assert!(s.links.iter().all(|l| l.named && l.guide.is_none()));
+    assert!(s.guides.is_empty() && s.masses.is_empty());
+    assert_eq!(s.inputs.len(), 1);
+    assert_eq!(
+        (s.inputs[0].name, s.inputs[0].quantity, s.inputs[0].driver),
+        ("theta2", Quantity::Angle, "A")
+    );
+}
+
+#[test]
+fn shaper_structure_has_its_blocks_on_their_guides() {
+    let s = Shaper::<f64>::STRUCTURE;
+    let block = |n: &str| s.link(n).map(|l| (l.kind, l.guide));
+    assert_eq!(block("slider5"), Some((LinkKind::Block, Some("ram"))));
+    assert_eq!(block("block2"), Some((LinkKind::Block, None)));
+    assert_eq!(block("link3").map(|b| b.0), Some(LinkKind::Bar));
+    let ram = s.guide("ram").expect("the ram guide");
+    assert_eq!((ram.carrier, ram.through), (None, None));
+    assert_eq!(ram.angle, Some(std::f64::consts::PI));
+    assert!(
+        s.point("s3").is_none(),
+        "an RPR defines a slide, not a point"
+    );
+    assert_eq!(s.point("E").map(|p| p.kind), Some(PointKind::Joint));
+}
+
+#[test]
+fn fields_read_every_output_by_name_with_its_quantity() {
+    let fb = FourBar::<f64>::default();
+    let input = FourBarInput { theta2: 0.7 };
+    let p = fb.position(&input).unwrap();
+    let v = fb.velocity(&p, &FourBarInput { theta2: 3.0 }).unwrap();
+    let a = fb
+        .acceleration(&p, &v, &FourBarInput { theta2: -2.0 })
+        .unwrap();
+    let names: Vec<&str> = FourBarPosition::<f64>::FIELDS
+        .iter()
+        .map(|f| f.name)
+        .collect();
+    assert_eq!(
+        names,
+        ["O2", "O4", "A", "B", "P", "link2", "link3", "link4"]
+    );
+    assert_eq!(p.get("B"), Some(Value::Point(p.B)));
+    assert_eq!(p.get("link3"), Some(Value::Scalar(p.link3)));
+    assert_eq!(v.get("P"), Some(Value::Vector(v.P)));
+    assert_eq!(v.get("condition"), Some(Value::Scalar(v.condition)));
+    assert_eq!(a.get("link4"), Some(Value::Scalar(a.link4)));
+    assert_eq!(p.get("nothing"), None);
+    let quantity = |fields: &[mechanism::structure::Field], n: &str| {
+        fields
+            .iter()
+            .find(|f| f.name == n)
+            .map(|f| (f.quantity, f.planar))
+    };
+    assert_eq!(
+        quantity(FourBarVelocity::<f64>::FIELDS, "link3"),
+        Some((Quantity::AngularVelocity, false))
+    );
+    assert_eq!(
+        quantity(FourBarAcceleration::<f64>::FIELDS, "B"),
+        Some((Quantity::Acceleration, true))
+    );
+    assert_eq!(Quantity::AngularAcceleration.unit(), "rad/s^2");
+}
