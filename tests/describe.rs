@@ -122,3 +122,73 @@ fn fields_read_every_output_by_name_with_its_quantity() {
     );
     assert_eq!(Quantity::AngularAcceleration.unit(), "rad/s^2");
 }
+
+mechanism! {
+    /// Theo Jansen's leg (his published link lengths, in cm; the crank at the
+    /// origin, the frame pivot Z at (-a, -l)). The triangles B-Z-D and E-C-F
+    /// are written as groups of two links each: the same motion.
+    pub JansenLeg {
+        let O = ground(0.0, 0.0);
+        let Z = ground(-38.0, -7.8);
+        let A = crank(O, 15.0, theta) as crank;
+        let B = rrr(A, 50.0, Z, 41.5, right) as (j, b);
+        let C = rrr(A, 61.9, Z, 39.3, left) as (k, c);
+        let D = rrr(B, 55.8, Z, 40.1, right) as (e, d);
+        let E = rrr(D, 39.4, C, 36.7, right) as (f, g);
+        let F = rrr(E, 65.7, C, 49.0, right) as (h, i);
+    }
+}
+
+/// A mechanism defined only here gets its drawing, animation, foot path and
+/// table from the generic calls: the drawing has one frame per pose, every
+/// link of the structure is drawn, the path of F spans the foot's stride,
+/// and the CSV has a header with units and one row per pose.
+#[test]
+fn jansen_leg_pictures_and_table_from_its_description_alone() {
+    let leg = JansenLeg::<f64>::default();
+    let poses: Vec<(f64, Option<JansenLegPosition>)> = (0..=72)
+        .map(|k| {
+            let t = k as f64 * std::f64::consts::TAU / 72.0;
+            (t, leg.position(&JansenLegInput { theta: t }).ok())
+        })
+        .collect();
+    assert!(
+        poses.iter().all(|(_, p)| p.is_some()),
+        "the leg turns fully"
+    );
+    let sketch =
+        mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", "cm", &poses, &["F"]).unwrap();
+    assert_eq!(sketch.frame_count(), 73);
+    let drawing = sketch.drawing(0).unwrap();
+    for link in ["crank", "j", "b", "k", "c", "d", "e", "f", "g", "h", "i"] {
+        assert!(
+            drawing.contains(&format!("\"{link}\"")),
+            "link {link} drawn"
+        );
+    }
+    assert!(sketch.animation(4.0).unwrap().contains("<animate"));
+    // The foot's stride: its lowest points span tens of cm horizontally.
+    let foot: Vec<[f64; 2]> = poses
+        .iter()
+        .map(|(_, p)| {
+            let f = p.as_ref().unwrap().F;
+            [f.x, f.y]
+        })
+        .collect();
+    let (xmin, xmax) = foot
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p[0]), b.max(p[0])));
+    assert!(xmax - xmin > 30.0, "stride {}", xmax - xmin);
+    let table = mechanism_plot::any::csv("theta", "rad", &poses);
+    let mut lines = table.lines();
+    let header = lines.next().unwrap();
+    assert!(
+        header.starts_with("theta [rad],O.x [L],O.y [L],"),
+        "{header}"
+    );
+    assert!(
+        header.contains(",F.x [L],F.y [L],") && header.ends_with(",i [rad]"),
+        "{header}"
+    );
+    assert_eq!(lines.count(), 73);
+}

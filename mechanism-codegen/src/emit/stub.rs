@@ -110,8 +110,10 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
     } else {
         (quote!(), quote!(), quote!())
     };
+    let describe = describe_stub(model);
     quote! {
         #(#errors)*
+        #describe
         #forces_stub
         #[allow(non_snake_case, dead_code)]
         #vis struct #name<T = ::core::primitive::f64> { #(pub #params: T,)* #params_marker }
@@ -139,5 +141,29 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
             pub fn acceleration(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, accels: &#input_ty<T>) -> ::core::result::Result<#acceleration_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
             pub fn solve(&self, input: &#input_ty<T>, rates: &#input_ty<T>, accels: &#input_ty<T> #stub_loads_param) -> ::core::result::Result<#solution_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
         }
+    }
+}
+
+/// The self-description impls (`mechanism::structure`), empty: code that
+/// draws or tabulates the mechanism reports no follow-on error.
+fn describe_stub(model: &Model) -> TokenStream {
+    let name = &model.name;
+    let text = name.to_string();
+    let st = quote!(::mechanism::structure);
+    let fields = ["Position", "Velocity", "Acceleration"].map(|s| format_ident!("{}{}", name, s));
+    quote! {
+        impl<T: ::mechanism::Real> #st::Describe for #name<T> {
+            const STRUCTURE: #st::Structure = #st::Structure {
+                name: #text, points: &[], links: &[], guides: &[], inputs: &[], masses: &[],
+            };
+        }
+        #(
+            impl<T: ::mechanism::Real> #st::Fields<T> for #fields<T> {
+                const FIELDS: &'static [#st::Field] = &[];
+                fn get(&self, name: &::core::primitive::str) -> ::core::option::Option<#st::Value<T>> {
+                    ::core::option::Option::None
+                }
+            }
+        )*
     }
 }
