@@ -135,3 +135,107 @@ fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
         }
     }
 }
+
+/// Definitions planned as `expand` plans them, for the emitters' unit tests.
+#[cfg(test)]
+mod test_support {
+    use crate::diag::Diagnostics;
+    use crate::model::Model;
+    use crate::plan::Plan;
+    use proc_macro2::TokenStream;
+
+    /// The four-bar of seed 002 (mm) with a coupler point `P`, and `scene`
+    /// (analysis, outputs, masses...) appended.
+    pub fn four_bar(scene: &str) -> String {
+        format!(
+            "pub FourBar {{
+                params {{ ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }}
+                let O2 = ground(0.0, 0.0);
+                let O4 = ground(ground, 0.0);
+                let A = crank(O2, crank, theta2) as link2;
+                let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+                let P = point(link3, from A, 120.0, 30 deg);
+                {scene}
+            }}"
+        )
+    }
+
+    /// The model and plan of a valid definition `src`.
+    pub fn planned(src: &str) -> (Model, Plan) {
+        let definition: crate::parse::Definition = syn::parse_str(src).expect("parses");
+        let mut diag = Diagnostics::new();
+        let model = crate::model::lower(definition, &mut diag);
+        crate::validate::model(&model, &mut diag);
+        let plan = crate::plan::plan(&model, &mut diag);
+        let errors: Vec<String> = diag.finish().iter().map(|e| e.to_string()).collect();
+        assert!(errors.is_empty(), "{errors:?}");
+        (model, plan.expect("a plan"))
+    }
+
+    /// `code` as text without whitespace, for searching.
+    pub fn flat(code: &TokenStream) -> String {
+        code.to_string().split_whitespace().collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::test_support::{flat, four_bar};
+    use proc_macro2::TokenStream;
+    use std::str::FromStr;
+
+    /// The expansion of a valid definition, without whitespace.
+    fn expand(src: &str) -> String {
+        let code = flat(&crate::expand(TokenStream::from_str(src).unwrap()));
+        assert!(!code.contains("compile_error"), "{code}");
+        code
+    }
+
+    // Proves a scene gets only the item families it asks for: a position-only
+    // definition has no velocity, acceleration, solution or forces items, a
+    // velocity one stops before accelerations, and only a mass asks for forces.
+    #[test]
+    fn each_analysis_level_emits_only_its_own_items() {
+        let position = expand(&four_bar("analysis position;"));
+        assert!(position.contains("structFourBarPosition") && position.contains("fnposition("));
+        for absent in [
+            "FourBarVelocity",
+            "fnvelocity(",
+            "FourBarAcceleration",
+            "fnsolve(",
+        ] {
+            assert!(
+                !position.contains(absent),
+                "{absent} in a position-only expansion"
+            );
+        }
+        let velocity = expand(&four_bar("analysis velocity;"));
+        assert!(velocity.contains("structFourBarVelocity") && velocity.contains("fnvelocity("));
+        assert!(!velocity.contains("FourBarAcceleration") && !velocity.contains("fnsolve("));
+        let full = expand(&four_bar(""));
+        assert!(full.contains("structFourBarSolution") && full.contains("fnsolve("));
+        assert!(!full.contains("FourBarForces"));
+        let forces = expand(&four_bar("mass link3 { m = 2.0, at = P };"));
+        assert!(
+            forces.contains("structFourBarForces") && forces.contains("forces:FourBarForces<T>")
+        );
+    }
+
+    // Proves the mechanism's methods come in the order position, velocity,
+    // forces, acceleration, solve (the order the snapshots fix), all in one impl.
+    #[test]
+    fn methods_in_one_impl_in_analysis_order() {
+        let code = expand(&four_bar("mass link3 { m = 2.0, at = P };"));
+        let at = |s: &str| code.find(s).unwrap_or_else(|| panic!("{s} missing"));
+        let order = [
+            "pubfnposition(",
+            "pubfnvelocity(",
+            "pubfnforces(",
+            "pubfnacceleration(",
+            "pubfnsolve(",
+        ];
+        for pair in order.windows(2) {
+            assert!(at(pair[0]) < at(pair[1]), "{} after {}", pair[0], pair[1]);
+        }
+    }
+}

@@ -172,3 +172,49 @@ pub(super) fn output_docs(out: &Outputs, level: usize) -> Vec<String> {
 pub(super) fn lit_zero() -> TokenStream {
     lit(0.0)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::value::ValueKind;
+    use proc_macro2::Span;
+
+    fn flat(code: &TokenStream) -> String {
+        code.to_string().split_whitespace().collect()
+    }
+
+    // Proves a literal angle's unit vector is folded at expansion into two
+    // literals (sin 90 deg exactly 1) while a parameter angle calls
+    // `geometry::unit` at run time.
+    #[test]
+    fn unit_vector_folds_literal_angles_only() {
+        let right = Value::lit(std::f64::consts::FRAC_PI_2, Span::call_site());
+        let folded = flat(&unit_vector(&right));
+        assert!(folded.starts_with("::mechanism::Vector2::new("), "{folded}");
+        assert!(
+            folded.ends_with(",<Tas::mechanism::Real>::lit(1f64))"),
+            "{folded}"
+        );
+        assert!(!folded.contains("unit("), "{folded}");
+        let param = Value {
+            kind: ValueKind::Param(format_ident!("phi")),
+            span: Span::call_site(),
+            tokens: quote!(phi),
+        };
+        assert_eq!(
+            flat(&unit_vector(&param)),
+            "::mechanism::geometry::unit(self.phi)"
+        );
+    }
+
+    // Proves the marker is added only to a struct with no field of type `T`,
+    // with its initializer.
+    #[test]
+    fn marker_only_when_empty() {
+        let (field, init) = marker(true);
+        assert!(flat(&field).contains("PhantomData<T>"));
+        assert_eq!(flat(&init), "_scalar:::core::marker::PhantomData,");
+        let (field, init) = marker(false);
+        assert!(field.is_empty() && init.is_empty());
+    }
+}

@@ -609,3 +609,76 @@ fn cos_sin_items(
     });
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::emit::test_support::{flat, four_bar, planned};
+    use proc_macro2::TokenStream;
+    use std::str::FromStr;
+
+    /// The statement named `name`.
+    fn stmt<'m>(model: &'m Model, name: &str) -> &'m Stmt {
+        model.stmts.iter().find(|s| s.name == name).unwrap()
+    }
+
+    // Proves a crank marked `as cos_sin` reads `input_cs.NAME.cos/.sin` only in
+    // `position_cos_sin`, and its angle in `position` as before.
+    #[test]
+    fn a_marked_crank_reads_cos_sin_only_in_position_cos_sin() {
+        let src = four_bar("").replace("theta2) as link2", "theta2 as cos_sin) as link2");
+        let (model, plan) = planned(&src);
+        let crank = stmt(&model, "A");
+        let plain = flat(&Emitter::new(&model, &plan, false).position(crank).0);
+        let cs = flat(&Emitter::new(&model, &plan, true).position(crank).0);
+        assert!(
+            plain.contains("crank::position(&pos_O2,self.crank,input.theta2)"),
+            "{plain}"
+        );
+        assert!(
+            cs.contains(
+                "position_cos_sin(&pos_O2,self.crank,input_cs.theta2.cos,input_cs.theta2.sin)"
+            ),
+            "{cs}"
+        );
+    }
+
+    // Proves a link's unit axis is computed only when something in position
+    // needs it: a point on the coupler asks for `axis_link3`, and nothing asks
+    // for the rocker's.
+    #[test]
+    fn link_axes_only_where_a_point_or_guide_needs_them() {
+        let (model, plan) = planned(&four_bar(""));
+        let code = flat(&Emitter::new(&model, &plan, false).code().code);
+        assert!(
+            code.contains("letaxis_link3=grp_B.r1/self.coupler;"),
+            "{code}"
+        );
+        assert!(!code.contains("axis_link4"), "{code}");
+        let no_point = four_bar("").replace("let P = point(link3, from A, 120.0, 30 deg);", "");
+        let (model, plan) = planned(&no_point);
+        let code = flat(&Emitter::new(&model, &plan, false).code().code);
+        assert!(!code.contains("axis_"), "{code}");
+    }
+
+    // Proves the position struct keeps, besides the outputs, exactly the
+    // stored values some reader reads: with no reader it has no hidden field;
+    // a read of `pos.grp_B` keeps the RRR's state with its core type.
+    #[test]
+    fn the_struct_keeps_only_the_values_read() {
+        let (model, plan) = planned(&four_bar("analysis position; outputs { B }"));
+        let em = Emitter::new(&model, &plan, false);
+        let code = em.code();
+        let inputs = crate::emit::solution::input_names(&model);
+        let none = flat(&items(&em, &code, &Reads::default(), &inputs).items);
+        assert!(!none.contains("doc(hidden)"), "{none}");
+        let mut reads = Reads::default();
+        reads.scan(&TokenStream::from_str("pos.grp_B.c").unwrap());
+        let kept = flat(&items(&em, &code, &reads, &inputs).items);
+        assert!(
+            kept.contains("#[doc(hidden)]pubgrp_B:::mechanism::dyad::rrr::RrrPosition<T>,"),
+            "{kept}"
+        );
+        assert!(!kept.contains("grp_A"), "{kept}");
+    }
+}

@@ -662,3 +662,81 @@ pub(super) fn acceleration_items(
     };
     Generated { items, methods }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::emit::moving_points;
+    use crate::emit::test_support::{flat, four_bar, planned};
+
+    fn rates(src: &str, rate: Rate) -> RatesCode {
+        let (model, plan) = planned(src);
+        let moving = moving_points(&model, &plan);
+        code(&model, &plan, &moving, rate)
+    }
+
+    fn output(rates: &RatesCode, name: &str) -> String {
+        let o = rates.outputs.iter().find(|o| o.name == name).unwrap();
+        flat(&o.value)
+    }
+
+    // Proves a crank's link rate is its input's rate (velocity) or
+    // acceleration (acceleration), and a ground point's motion is zero with
+    // no code of its own.
+    #[test]
+    fn crank_rates_are_the_inputs_and_ground_points_do_not_move() {
+        let src = four_bar("outputs { O2, A, link2 }");
+        let vel = rates(&src, Rate::Velocity);
+        let code = flat(&vel.code);
+        assert!(code.contains("letomega_link2=rates.theta2;"), "{code}");
+        assert!(!code.contains("vel_O2"), "{code}");
+        assert_eq!(output(&vel, "link2"), "omega_link2");
+        assert_eq!(output(&vel, "A"), "vel_A");
+        assert_eq!(output(&vel, "O2"), "::mechanism::Vector2::zeros()");
+        let acc = rates(&src, Rate::Acceleration);
+        assert!(flat(&acc.code).contains("letalpha_link2=accels.theta2;"));
+        assert_eq!(output(&acc, "link2"), "alpha_link2");
+    }
+
+    // Proves the RRR's velocity passes its link lengths (the determinant's
+    // scale, no square root) and a moving / fixed pivot as Some / None, and
+    // its acceleration reads the velocity's group state `vel.grp_v_B`.
+    #[test]
+    fn rrr_velocity_by_lengths_and_acceleration_from_the_velocity_state() {
+        let src = four_bar("");
+        let vel = flat(&rates(&src, Rate::Velocity).code);
+        assert!(vel.contains("letgrp_v_B=::mechanism::dyad::rrr::velocity_lengths(&pos.grp_B,self.coupler,self.rocker,::core::option::Option::Some(&vel_A),::core::option::Option::None)"), "{vel}");
+        let acc = flat(&rates(&src, Rate::Acceleration).code);
+        assert!(
+            acc.contains("rrr::acceleration(&pos.grp_B,&vel.grp_v_B,"),
+            "{acc}"
+        );
+        assert!(acc.contains("letacc_B=grp_a_B.ac;"), "{acc}");
+    }
+
+    // Proves the velocity's `__condition` is 1 without groups, the one group's
+    // indicator with one, and one `min` per further group (no nesting).
+    #[test]
+    fn condition_is_one_let_per_group() {
+        let crank_only = "pub Crank {
+            let O = ground(0.0, 0.0);
+            let A = crank(O, 1.0, t) as link;
+        }";
+        let (model, plan) = planned(crank_only);
+        assert_eq!(
+            flat(&condition(&model, &plan)),
+            "let__condition=<Tas::mechanism::Real>::lit(1f64);"
+        );
+        let (model, plan) = planned(&four_bar(""));
+        assert_eq!(
+            flat(&condition(&model, &plan)),
+            "let__condition=grp_v_B.condition;"
+        );
+        let six_bar = four_bar("let D = rrr(P, 200.0, O4, 300.0, right) as (link5, link6);");
+        let (model, plan) = planned(&six_bar);
+        assert_eq!(
+            flat(&condition(&model, &plan)),
+            "let__condition=grp_v_B.condition;let__condition=::mechanism::geometry::min(__condition,grp_v_D.condition);"
+        );
+    }
+}

@@ -192,3 +192,65 @@ fn describe(stmt: &Stmt) -> String {
         Kind::Point { link, from, .. } => format!("point `{n}` on `{link}` (from `{from}`)"),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::emit::test_support::{flat, four_bar, planned};
+
+    // Proves the structure listing numbers the statements in solve order, one
+    // line each, and names the analyses the definition asks for.
+    #[test]
+    fn structure_listing_in_solve_order() {
+        let (model, plan) = planned(&four_bar("analysis velocity;"));
+        let doc = structure_doc(&model, &plan);
+        let lines: Vec<&str> = doc.lines().collect();
+        assert_eq!(lines[0], "Structure found by `mechanism!` (solve order):");
+        assert_eq!(lines[2], "1. ground point `O2`");
+        assert_eq!(
+            lines[4],
+            "3. driver: crank `link2` about `O2`, input `theta2`, tip `A`"
+        );
+        assert_eq!(
+            lines[5],
+            "4. RRR group `link3, link4`: `A`, `O4` -> `B`, mode plus (m = +1)"
+        );
+        assert_eq!(lines[6], "5. point `P` on `link3` (from `A`)");
+        assert_eq!(
+            lines.last().unwrap(),
+            &"Analyses generated: position, velocity."
+        );
+    }
+
+    // Proves the mechanism struct has one field per parameter and no marker,
+    // and a definition without parameters gets the `PhantomData` marker (else
+    // rustc would reject the unused `T`).
+    #[test]
+    fn parameters_or_a_marker() {
+        let (model, plan) = planned(&four_bar(""));
+        let inputs = input_names(&model);
+        assert_eq!(inputs, ["theta2"]);
+        let items = flat(&own_items(&model, &plan, &inputs).items);
+        assert!(items.contains("pubground:T,"), "{items}");
+        assert!(!items.contains("_scalar"), "{items}");
+        let (model, plan) =
+            planned("pub Crank { let O = ground(0.0, 0.0); let A = crank(O, 1.0, t) as link; }");
+        let items = flat(&own_items(&model, &plan, &input_names(&model)).items);
+        assert!(
+            items.contains("pub_scalar:::core::marker::PhantomData<T>,"),
+            "{items}"
+        );
+    }
+
+    // Proves `solve` without a force analysis takes no loads and its solution
+    // has no `forces` field.
+    #[test]
+    fn solve_without_forces_has_no_forces_field() {
+        let (model, _) = planned(&four_bar(""));
+        let code = solve_items(&model, None);
+        let (items, methods) = (flat(&code.items), flat(&code.methods));
+        assert!(!items.contains("forces"), "{items}");
+        assert!(methods.contains("accels:&FourBarInput<T>)->"), "{methods}");
+        assert!(!methods.contains("self.forces"), "{methods}");
+    }
+}

@@ -365,7 +365,10 @@ fn forces_method(
 
 #[cfg(test)]
 mod tests {
+    use super::{condition_code, power_code, unique_names, ForcesCode, Reaction};
+    use crate::emit::test_support::{flat, four_bar, planned};
     use proc_macro2::TokenStream;
+    use quote::{format_ident, quote};
     use std::str::FromStr;
 
     /// The messages of the `compile_error!`s in the expansion of `src`.
@@ -408,5 +411,91 @@ mod tests {
         // Without a force analysis the cylinder's point is fine.
         let kinematic = arm("M").replace("mass link6 { m = 10.0, at = K };", "");
         assert!(errors(&kinematic).is_empty());
+    }
+
+    fn forces(scene: &str) -> ForcesCode {
+        let (model, plan) = planned(&four_bar(scene));
+        let moving = crate::emit::moving_points(&model, &plan);
+        super::emit(&model, &plan, &moving)
+    }
+
+    // Proves the weight terms come only with a gravity statement: a mass
+    // without gravity gives an inertia force and no `gravity` or weight local;
+    // with gravity both, and the weight's power in the balance.
+    #[test]
+    fn weight_terms_only_with_gravity() {
+        let without = flat(&forces("mass link3 { m = 2.0, at = P };").methods);
+        assert!(
+            without.contains(
+                "letpw_inertia_force_link3=acc.acc_P*(-<Tas::mechanism::Real>::lit(2f64));"
+            ),
+            "{without}"
+        );
+        assert!(
+            !without.contains("gravity") && !without.contains("pw_weight"),
+            "{without}"
+        );
+        let with = flat(&forces("mass link3 { m = 2.0, at = P }; gravity (0.0, -9810.0);").methods);
+        assert!(
+            with.contains("letpw_weight_link3=gravity*<Tas::mechanism::Real>::lit(2f64);"),
+            "{with}"
+        );
+        assert!(with.contains("dot(&pw_weight_link3,&vel.vel_P)"), "{with}");
+    }
+
+    // Proves the `loads` block gives the `NameLoads` struct and the extra
+    // parameter of `forces` and `solve`, and its absence neither.
+    #[test]
+    fn loads_struct_and_parameter_only_with_a_loads_block() {
+        let plain = forces("mass link3 { m = 2.0, at = P };");
+        assert!(plain.loads_param.is_empty() && plain.loads_arg.is_empty());
+        assert!(!flat(&plain.items).contains("FourBarLoads"));
+        let loaded = forces(
+            "mass link3 { m = 2.0, at = P }; loads { brake = 0.5 } torque on link4 = brake;",
+        );
+        assert_eq!(flat(&loaded.loads_param), ",loads:&FourBarLoads<T>");
+        assert_eq!(flat(&loaded.loads_arg), ",loads");
+        assert!(flat(&loaded.items).contains("structFourBarLoads<T=::core::primitive::f64>{"));
+    }
+
+    // Proves reaction field names stay unique: a second and third joint
+    // between the same two bodies get `_2` and `_3`, other names are kept.
+    #[test]
+    fn repeated_reaction_names_are_numbered() {
+        let reaction = |name: &str| Reaction {
+            name: format_ident!("{}", name),
+            ty: quote!(T),
+            value: quote!(x),
+            doc: String::new(),
+        };
+        let mut reactions = vec![
+            reaction("r_ground_link2"),
+            reaction("r_link2_link3"),
+            reaction("r_ground_link2"),
+            reaction("r_ground_link2"),
+        ];
+        unique_names(&mut reactions);
+        let names: Vec<String> = reactions.iter().map(|r| r.name.to_string()).collect();
+        assert_eq!(
+            names,
+            [
+                "r_ground_link2",
+                "r_link2_link3",
+                "r_ground_link2_2",
+                "r_ground_link2_3"
+            ]
+        );
+    }
+
+    // Proves the power residual is the literal 0 when no term has power (no
+    // expression to evaluate), and the conditioning starts from the velocity's.
+    #[test]
+    fn empty_power_balance_and_condition_chain() {
+        assert_eq!(flat(&power_code(&[])), "<Tas::mechanism::Real>::lit(0f64)");
+        assert_eq!(flat(&condition_code(&[])), "vel.condition");
+        assert_eq!(
+            flat(&condition_code(&[quote!(rx_B.min_pivot_ratio)])),
+            "::mechanism::geometry::min(vel.condition,rx_B.min_pivot_ratio)"
+        );
     }
 }
