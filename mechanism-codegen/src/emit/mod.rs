@@ -3,10 +3,10 @@
 //! unless a link angle is an output, and fixed points and guides pass `None`
 //! so that their terms vanish at compile time.
 //!
-//! One file per generated item family: [`solution`] (the mechanism's struct,
-//! its inputs, `solve`), [`position`], [`rates`] (velocity and acceleration),
+//! One file per generated item family: `solution` (the mechanism's struct,
+//! its inputs, `solve`), `position`, `rates` (velocity and acceleration),
 //! [`forces`], [`batch`], [`check_fn`] (`check()`), [`self_test`]; [`stub`] on
-//! error. [`names`] holds the names and small helpers they share.
+//! error. `names` holds the names and small helpers they share.
 
 pub mod batch;
 pub mod check_fn;
@@ -121,7 +121,7 @@ fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
         out.push(rates::acceleration_items(model, plan, accel, &reads));
         out.push(solution::solve_items(model, forces.as_ref()));
     }
-    // Batch API (structure of arrays, issue 5): see batch.rs.
+    // Batch API (structure of arrays, issue 5): see `batch`.
     out.items
         .extend(batch::emit(model, plan, &inputs, &position.outputs));
     let Generated { items, methods } = out;
