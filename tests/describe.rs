@@ -192,3 +192,22 @@ fn jansen_leg_pictures_and_table_from_its_description_alone() {
     );
     assert_eq!(lines.count(), 73);
 }
+
+/// `Debug` of a result shows the user's fields (and the velocity's
+/// `condition`), not the solver state kept for later analyses.
+#[test]
+fn debug_shows_the_users_fields_only() {
+    let fb = FourBar::<f64>::default();
+    let p = fb.position(&FourBarInput { theta2: 0.7 }).unwrap();
+    let v = fb.velocity(&p, &FourBarInput { theta2: 1.0 }).unwrap();
+    let shown = format!("{p:?} {v:?}");
+    assert!(shown.starts_with("FourBarPosition { O2: "), "{shown}");
+    assert!(
+        shown.contains("link4: ") && shown.contains("condition: "),
+        "{shown}"
+    );
+    assert!(
+        !shown.contains("grp_") && !shown.contains("rates"),
+        "{shown}"
+    );
+}

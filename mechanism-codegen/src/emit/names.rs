@@ -218,3 +218,22 @@ mod tests {
         assert!(field.is_empty() && init.is_empty());
     }
 }
+
+/// `Debug` for a result struct that shows the user's fields only (the
+/// outputs, and `extra` such as the velocity's `condition`), not the
+/// solver state the struct keeps for later analyses.
+pub fn debug_impl(ty: &Ident, outputs: &[Ident], extra: &[&str]) -> TokenStream {
+    let text = ty.to_string();
+    let names = outputs.iter().map(|o| o.to_string());
+    let extra_idents = extra.iter().map(|e| format_ident!("{}", e));
+    quote! {
+        impl<T: ::mechanism::Real> ::core::fmt::Debug for #ty<T> {
+            fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+                f.debug_struct(#text)
+                    #(.field(#names, &self.#outputs))*
+                    #(.field(#extra, &self.#extra_idents))*
+                    .finish()
+            }
+        }
+    }
+}

@@ -3,7 +3,8 @@
 //! the `position` and `position_cos_sin` methods.
 
 use super::names::{
-    grp, local, marker, mode_tokens, output_docs, tag, unit_vector, Generated, TypeNames,
+    debug_impl, grp, local, marker, mode_tokens, output_docs, tag, unit_vector, Generated,
+    TypeNames,
 };
 use super::reads::{Analysis, Reads};
 use crate::model::{Kind, Local, Model, Origin, Stmt};
@@ -471,7 +472,7 @@ pub(super) fn items(
     let mut out = Generated::default();
     out.items.extend(quote! {
         #[doc = #pos_doc]
-        #[derive(Clone, Copy, Debug, PartialEq)]
+        #[derive(Clone, Copy, PartialEq)]
         #[allow(non_snake_case)]
         #vis struct #position_ty<T: ::mechanism::Real = ::core::primitive::f64> {
             #(#[doc = #pos_docs] pub #out_names: #out_types,)*
@@ -480,6 +481,7 @@ pub(super) fn items(
             #pos_marker
         }
     });
+    out.items.extend(debug_impl(position_ty, &out_names, &[]));
     // Field names and the position code's locals that hold them.
     let out_locals: Vec<Ident> = out_names.iter().map(local).collect();
     let init: Vec<TokenStream> = out_names

@@ -2,7 +2,9 @@
 //! solve order (one function per statement family), the velocity and
 //! acceleration structs and their methods.
 
-use super::names::{lit_zero, marker, opt_point, output_docs, tag, Generated, TypeNames};
+use super::names::{
+    debug_impl, lit_zero, marker, opt_point, output_docs, tag, Generated, TypeNames,
+};
 use super::reads::{Analysis, Reads};
 use crate::model::{Kind, Model, Origin, Stmt};
 use crate::plan::{Outputs, Plan};
@@ -581,7 +583,7 @@ pub(super) fn velocity_items(
     let (hn, ht) = (&c.hidden_names, &c.hidden_types);
     let items = quote! {
         #[doc = #vel_doc]
-        #[derive(Clone, Copy, Debug, PartialEq)]
+        #[derive(Clone, Copy, PartialEq)]
         #[allow(non_snake_case)]
         #vis struct #velocity_ty<T: ::mechanism::Real = ::core::primitive::f64> {
             #(#[doc = #vel_docs] pub #on: #ot,)*
@@ -601,6 +603,8 @@ pub(super) fn velocity_items(
             pub rates: #input_ty<T>,
         }
     };
+    let debug = debug_impl(velocity_ty, on, &["condition"]);
+    let items = quote!(#items #debug);
     let methods = quote! {
         /// Solves the velocity analysis at `pos` for the input rates
         /// (rad/s or length units per second).
@@ -640,7 +644,7 @@ pub(super) fn acceleration_items(
     let (acc_marker, acc_marker_init) = marker(on.is_empty() && hn.is_empty());
     let items = quote! {
         #[doc = #acc_doc]
-        #[derive(Clone, Copy, Debug, PartialEq)]
+        #[derive(Clone, Copy, PartialEq)]
         #[allow(non_snake_case)]
         #vis struct #acceleration_ty<T: ::mechanism::Real = ::core::primitive::f64> {
             #(#[doc = #acc_docs] pub #on: #ot,)*
@@ -648,6 +652,8 @@ pub(super) fn acceleration_items(
             #acc_marker
         }
     };
+    let debug = debug_impl(acceleration_ty, on, &[]);
+    let items = quote!(#items #debug);
     let methods = quote! {
         /// Solves the acceleration analysis at `pos`, `vel` for the input
         /// accelerations (rad/s^2 or length units per s^2).
