@@ -173,6 +173,25 @@ pub(super) fn lit_zero() -> TokenStream {
     lit(0.0)
 }
 
+/// `Debug` for a result struct that shows the user's fields only (the
+/// outputs, and `extra` such as the velocity's `condition`), not the
+/// solver state the struct keeps for later analyses.
+pub fn debug_impl(ty: &Ident, outputs: &[Ident], extra: &[&str]) -> TokenStream {
+    let text = ty.to_string();
+    let names = outputs.iter().map(|o| o.to_string());
+    let extra_idents = extra.iter().map(|e| format_ident!("{}", e));
+    quote! {
+        impl<T: ::mechanism::Real> ::core::fmt::Debug for #ty<T> {
+            fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
+                f.debug_struct(#text)
+                    #(.field(#names, &self.#outputs))*
+                    #(.field(#extra, &self.#extra_idents))*
+                    .finish()
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -216,24 +235,5 @@ mod tests {
         assert_eq!(flat(&init), "_scalar:::core::marker::PhantomData,");
         let (field, init) = marker(false);
         assert!(field.is_empty() && init.is_empty());
-    }
-}
-
-/// `Debug` for a result struct that shows the user's fields only (the
-/// outputs, and `extra` such as the velocity's `condition`), not the
-/// solver state the struct keeps for later analyses.
-pub fn debug_impl(ty: &Ident, outputs: &[Ident], extra: &[&str]) -> TokenStream {
-    let text = ty.to_string();
-    let names = outputs.iter().map(|o| o.to_string());
-    let extra_idents = extra.iter().map(|e| format_ident!("{}", e));
-    quote! {
-        impl<T: ::mechanism::Real> ::core::fmt::Debug for #ty<T> {
-            fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
-                f.debug_struct(#text)
-                    #(.field(#names, &self.#outputs))*
-                    #(.field(#extra, &self.#extra_idents))*
-                    .finish()
-            }
-        }
     }
 }
