@@ -439,3 +439,116 @@ pub fn checked(model: &Model, plan: &Plan) -> Checked {
         .collect();
     Checked { order, groups }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{model, validate};
+
+    /// The model and plan of the definition `src` (which must be valid).
+    fn planned(src: &str) -> (Model, Plan) {
+        let def = syn::parse_str::<crate::parse::Definition>(src).unwrap();
+        let mut diag = Diagnostics::new();
+        let model = model::lower(def, &mut diag);
+        validate::model(&model, &mut diag);
+        let plan = plan(&model, &mut diag);
+        let errors: Vec<String> = diag.finish().iter().map(ToString::to_string).collect();
+        assert!(errors.is_empty(), "{errors:?}");
+        (model, plan.expect("a plan"))
+    }
+
+    /// The names of the statements `order` (indices) of `model`.
+    fn names(model: &Model, order: &[usize]) -> Vec<String> {
+        order
+            .iter()
+            .map(|&i| model.stmts[i].name.to_string())
+            .collect()
+    }
+
+    /// A four-bar with a coupler point `P`, its statements in the order
+    /// written, and `extra` after them.
+    fn four_bar(extra: &str) -> String {
+        format!(
+            "pub M {{
+                let O2 = ground(0.0, 0.0);
+                let O4 = ground(4.0, 0.0);
+                let A = crank(O2, 1.0, theta) as link2;
+                let B = rrr(A, 3.0, O4, 2.5, left) as (link3, link4);
+                let P = point(link3, from A, 1.0, 30 deg);
+                {extra}
+            }}"
+        )
+    }
+
+    #[test]
+    fn statements_written_out_of_order_are_solved_in_dependency_order() {
+        // Proves the solve order puts each statement after those it uses,
+        // keeping the written order among the ready ones (`O4` before `O2`).
+        let (model, plan) = planned(
+            "pub M {
+                let B = rrr(A, 3.0, O4, 2.5, left) as (link3, link4);
+                let A = crank(O2, 1.0, theta) as link2;
+                let O4 = ground(4.0, 0.0);
+                let O2 = ground(0.0, 0.0);
+            }",
+        );
+        assert_eq!(names(&model, &plan.order), ["O4", "O2", "A", "B"]);
+        assert_eq!(names(&model, &plan.solve), ["O4", "O2", "A", "B"]);
+    }
+
+    #[test]
+    fn a_joint_belongs_to_the_first_link_of_its_group() {
+        // Proves the owners: a ground point to the ground, a crank's joint to
+        // the crank, a group's joint to its first link, a link point to its
+        // link; and the points each link carries.
+        let (_, plan) = planned(&four_bar(""));
+        let owner = |p: &str| plan.owner.get(p).cloned();
+        assert_eq!(owner("O2"), Some(None));
+        assert_eq!(owner("A"), Some(Some("link2".to_string())));
+        assert_eq!(owner("B"), Some(Some("link3".to_string())));
+        assert_eq!(owner("P"), Some(Some("link3".to_string())));
+        assert_eq!(plan.links["link3"].points, ["A", "B", "P"]);
+        assert_eq!(plan.links["link4"].points, ["O4", "B"]);
+        assert_eq!(plan.links_with_point("B"), ["link3", "link4"]);
+        assert!(plan.is_ground("O4") && !plan.is_ground("A"));
+    }
+
+    #[test]
+    fn solve_leaves_out_a_coupler_point_nobody_needs() {
+        // Proves `solve` holds what the outputs need: without `P` among the
+        // outputs its statement is left out, with it (or with a mass at it,
+        // for the force analysis) it is solved.
+        let (model, plan) = planned(&four_bar("outputs { B }"));
+        assert_eq!(names(&model, &plan.solve), ["O2", "O4", "A", "B"]);
+        assert_eq!(names(&model, &plan.order), ["O2", "O4", "A", "B", "P"]);
+        let (model, plan) = planned(&four_bar("outputs { P }"));
+        assert_eq!(names(&model, &plan.solve), ["O2", "O4", "A", "B", "P"]);
+        let (model, plan) = planned(&four_bar("outputs { B } mass link3 { m = 1.0, at = P }"));
+        assert_eq!(names(&model, &plan.solve), ["O2", "O4", "A", "B", "P"]);
+    }
+
+    #[test]
+    fn a_dependency_cycle_is_spelled_out() {
+        // Proves two groups that need each other get no plan but the error
+        // naming the cycle, on the first statement of it.
+        let def = syn::parse_str::<crate::parse::Definition>(
+            "pub M {
+                let O = ground(0.0, 0.0);
+                let A = crank(O, 1.0, theta) as link2;
+                let B = rrr(A, 1.0, C, 1.0, left) as (link3, link4);
+                let C = rrr(B, 1.0, O, 1.0, left) as (link5, link6);
+            }",
+        )
+        .unwrap();
+        let mut diag = Diagnostics::new();
+        let model = model::lower(def, &mut diag);
+        assert!(plan(&model, &mut diag).is_none());
+        let errors = diag.finish();
+        assert_eq!(errors.len(), 1);
+        assert_eq!(
+            errors[0].to_string(),
+            "dependency cycle: B -> C -> B; each statement may use only names that do not, in turn, need it: break the cycle by fixing one of them to the ground or to a driver"
+        );
+        assert_eq!(errors[0].span().start().line, 4);
+    }
+}

@@ -319,3 +319,265 @@ pub fn group_kind(kind: &Kind) -> Option<&'static str> {
         Kind::Ground { .. } | Kind::Guide { .. } => return None,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diag::Diagnostics;
+    use crate::value::ValueKind;
+    use mechanism_core::sweep::Range;
+    use std::f64::consts::PI;
+
+    /// The definition `src` lowered, and the messages of its errors.
+    fn lower(src: &str) -> (Model, Vec<String>) {
+        let def = syn::parse_str::<crate::parse::Definition>(src).unwrap();
+        let mut diag = Diagnostics::new();
+        let model = super::lower(def, &mut diag);
+        let errors = diag.finish().iter().map(ToString::to_string).collect();
+        (model, errors)
+    }
+
+    /// The names of `idents`.
+    fn names(idents: &[Ident]) -> Vec<String> {
+        idents.iter().map(ToString::to_string).collect()
+    }
+
+    #[test]
+    fn statements_are_lowered_with_their_links() {
+        // Proves each `let` becomes a statement of its kind in the order
+        // written, with its arguments by role (a parameter kept as one, a
+        // constant expression folded, an angle in rad), its named links and
+        // generated names for the links it creates without `as`.
+        let (model, errors) = lower(
+            "pub M {
+                params { r = 1.0 }
+                const l = 3.0;
+                let O2 = ground(0.0, 0.0);
+                let O4 = ground(4.0, 0.0);
+                let A = crank(O2, r, theta) as link2;
+                let B = rrr(A, l, O4, l / 2.0 + 1.0, right);
+                let P = point(link2, from A, 2.0, 90 deg);
+            }",
+        );
+        assert!(errors.is_empty(), "{errors:?}");
+        let stmts: Vec<String> = model.stmts.iter().map(|s| s.name.to_string()).collect();
+        assert_eq!(stmts, ["O2", "O4", "A", "B", "P"]);
+        let Kind::Crank {
+            pivot,
+            radius,
+            input,
+            cos_sin: false,
+        } = &model.stmts[2].kind
+        else {
+            panic!("A is no crank");
+        };
+        assert_eq!(
+            (pivot.to_string(), input.to_string()),
+            ("O2".into(), "theta".into())
+        );
+        assert!(matches!(&radius.kind, ValueKind::Param(p) if p == "r"));
+        assert_eq!(names(&model.stmts[2].links), ["link2"]);
+        assert_eq!(model.stmts[2].links_named, [true]);
+        let Kind::Rrr {
+            l1,
+            l2,
+            mode: Mode::Minus,
+            ..
+        } = &model.stmts[3].kind
+        else {
+            panic!("B is no `rrr(.., right)`");
+        };
+        assert_eq!((l1.fold(), l2.fold()), (Some(3.0), Some(2.5)));
+        assert_eq!(names(&model.stmts[3].links), ["B_link1", "B_link2"]);
+        assert_eq!(model.stmts[3].links_named, [false, false]);
+        let Kind::Point {
+            local: Local::Polar(d, angle),
+            ..
+        } = &model.stmts[4].kind
+        else {
+            panic!("P is no polar link point");
+        };
+        assert_eq!((d.fold(), angle.fold()), (Some(2.0), Some(PI / 2.0)));
+        assert!(model.stmts[4].links.is_empty());
+        assert_eq!(model.level, Level::Acceleration);
+    }
+
+    #[test]
+    fn inputs_get_their_ranges() {
+        // Proves the driver inputs come in the order written, a crank's with a
+        // declared range in rad, a slider's with its declared range, and a
+        // slider without one with none (a crank's default would be a full
+        // turn, periodic).
+        let (model, errors) = lower(
+            "pub M {
+                let O = ground(0.0, 0.0);
+                let A = crank(O, 1.0, theta) as link2;
+                let line = guide((0.0, 0.0), 0 deg);
+                let S = slider(line, s) as block;
+                let T = slider(line, u) as block2;
+                range s = (0.0, 0.1);
+                range theta = (-40 deg, 40 deg);
+            }",
+        );
+        assert!(errors.is_empty(), "{errors:?}");
+        let inputs: Vec<(String, bool, Option<Range>, bool)> = model
+            .inputs
+            .iter()
+            .map(|i| (i.name.to_string(), i.angle, i.range, i.declared))
+            .collect();
+        let range = |lo: f64, hi: f64| {
+            Some(Range {
+                lo,
+                hi,
+                periodic: false,
+            })
+        };
+        assert_eq!(
+            inputs,
+            [
+                (
+                    "theta".into(),
+                    true,
+                    range(-40f64.to_radians(), 40f64.to_radians()),
+                    true
+                ),
+                ("s".into(), false, range(0.0, 0.1), true),
+                ("u".into(), false, None, false),
+            ]
+        );
+        let (model, _) =
+            lower("pub M { let O = ground(0.0, 0.0); let A = crank(O, 1.0, theta) as link2; }");
+        let full = Range {
+            lo: 0.0,
+            hi: 2.0 * PI,
+            periodic: true,
+        };
+        assert_eq!(model.inputs[0].range, Some(full));
+        assert!(!model.inputs[0].declared);
+    }
+
+    #[test]
+    fn constants_and_defaults_are_folded() {
+        // Proves constants fold with the constants written before them, and
+        // parameter and load defaults with the constants; a constant that uses
+        // a later one is an error, and is kept as 0.
+        let (model, errors) = lower(
+            "pub M {
+                const a = 2.0 * 3.0;
+                const b = a + 1.0;
+                params { p = b * 2.0 }
+                loads { cut = -a }
+                const c = d;
+                const d = 1.0;
+            }",
+        );
+        assert_eq!(
+            errors,
+            ["cannot find parameter or constant `d` (a `const` may use literals and constants defined before it)"]
+        );
+        let consts: Vec<(String, f64)> = model
+            .consts
+            .iter()
+            .map(|(k, (_, x))| (k.clone(), *x))
+            .collect();
+        assert_eq!(
+            consts,
+            [
+                ("a".into(), 6.0),
+                ("b".into(), 7.0),
+                ("c".into(), 0.0),
+                ("d".into(), 1.0)
+            ]
+        );
+        assert_eq!(model.params.len(), 1);
+        assert_eq!(
+            (model.params[0].0.to_string(), model.params[0].1),
+            ("p".into(), 14.0)
+        );
+        assert_eq!(model.kinetics.loads.len(), 1);
+        assert_eq!(model.kinetics.loads[0].1, -6.0);
+    }
+
+    #[test]
+    fn rejected_arguments_keep_the_statements_names() {
+        // Proves a statement with too few arguments and one with a negative
+        // length are each reported, and not lowered: their names stay defined
+        // (as failed statements) so that nothing else is blamed for them.
+        let (model, errors) = lower(
+            "pub M {
+                let O = ground(0.0, 0.0);
+                let B = rrr(O, 1.0, O, left) as (link3, link4);
+                let C = rrr(O, -1.0, O, 1.0, left);
+            }",
+        );
+        assert_eq!(
+            errors,
+            [
+                "missing argument(s) for `rrr`: 4 given, it takes 5; usage: `rrr(A, l1, B, l2, left|right) as (LINK1, LINK2)`",
+                "the first link length must be positive, got -1.0; a link length is a distance > 0",
+            ]
+        );
+        assert_eq!(model.stmts.len(), 1);
+        let failed: Vec<(String, Vec<String>)> = model
+            .failed
+            .iter()
+            .map(|f| (f.name.to_string(), names(&f.links)))
+            .collect();
+        assert_eq!(
+            failed,
+            [
+                ("B".into(), vec!["link3".to_string(), "link4".into()]),
+                ("C".into(), vec![])
+            ]
+        );
+    }
+
+    #[test]
+    fn masses_and_loads_are_lowered() {
+        // Proves `mass`, `force` and `torque` become the force analysis'
+        // masses and loads (a load value kept as one, to be supplied per
+        // evaluation), and ask for the force analysis; a load value used as a
+        // dimension is an error.
+        let (model, errors) = lower(
+            "pub M {
+                loads { cut = 10.0 }
+                let O = ground(0.0, 0.0);
+                let A = crank(O, cut, theta) as link2;
+                mass link2 { m = 2.0, at = A, j = 0.5 }
+                force at A on link2 = (cut, 0.0);
+                torque on link2 = 3.0;
+            }",
+        );
+        assert_eq!(
+            errors,
+            ["`cut` is a load value (from `loads`): it may appear in `force` and `torque` statements only; dimensions are `params` or `const`"]
+        );
+        assert_eq!(model.level, Level::Forces);
+        let k = &model.kinetics;
+        let [m] = k.masses.as_slice() else {
+            panic!("{} masses", k.masses.len());
+        };
+        assert_eq!(
+            (m.link.to_string(), m.at.to_string()),
+            ("link2".into(), "A".into())
+        );
+        assert_eq!(
+            (m.mass.fold(), m.inertia.as_ref().and_then(Value::fold)),
+            (Some(2.0), Some(0.5))
+        );
+        let [f] = k.forces.as_slice() else {
+            panic!("{} forces", k.forces.len());
+        };
+        assert_eq!(
+            f.on.as_ref().map(ToString::to_string).as_deref(),
+            Some("link2")
+        );
+        let ForceSpecValue::Components(x, y) = &f.value else {
+            panic!("not by components");
+        };
+        assert!(matches!(&x.kind, ValueKind::Load(l) if l == "cut"));
+        assert_eq!(y.fold(), Some(0.0));
+        assert_eq!(k.torques.len(), 1);
+        assert_eq!(k.torques[0].value.fold(), Some(3.0));
+    }
+}

@@ -473,3 +473,185 @@ impl Parse for Definition {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The definition `src` parsed.
+    fn parse(src: &str) -> syn::Result<Definition> {
+        syn::parse_str::<Definition>(src)
+    }
+
+    /// The error `src` gets: its message and where it starts (line, column
+    /// from 0).
+    fn error(src: &str) -> (String, usize, usize) {
+        let Err(e) = parse(src) else {
+            panic!("`{src}` parsed");
+        };
+        let start = e.span().start();
+        (e.to_string(), start.line, start.column)
+    }
+
+    /// The text of a parsed expression.
+    fn show(e: &Expr) -> String {
+        quote::ToTokens::to_token_stream(e).to_string()
+    }
+
+    #[test]
+    fn a_let_statement_becomes_its_syntax_node() {
+        // Proves a `let` keeps its name, kind, arguments in order (a name, a
+        // number, `from`, a value with its unit), and the names after `as` and
+        // `slide`.
+        let def = parse(
+            "pub M {
+                let B = rrp(A, 2.5, line, plus, -0.5) as (rod, ram) slide x;
+                let P = point(link3, from A, 1.0, 30 deg);
+            }",
+        )
+        .unwrap();
+        assert_eq!(def.name, "M");
+        assert_eq!(def.items.len(), 2);
+        let Item::Let(l) = &def.items[0] else {
+            panic!("not a let");
+        };
+        assert_eq!(
+            (l.name.to_string(), l.kind.to_string()),
+            ("B".into(), "rrp".into())
+        );
+        let args: Vec<String> = l
+            .args
+            .iter()
+            .map(|a| match a {
+                Arg::From(i) => format!("from {i}"),
+                Arg::Value(e, None) => show(e),
+                Arg::Value(e, Some(u)) => format!("{} {u}", show(e)),
+            })
+            .collect();
+        assert_eq!(args, ["A", "2.5", "line", "plus", "- 0.5"]);
+        assert_eq!(l.links, ["rod", "ram"]);
+        assert_eq!(l.slides, ["x"]);
+        let Item::Let(p) = &def.items[1] else {
+            panic!("not a let");
+        };
+        assert!(matches!(&p.args[1], Arg::From(a) if a == "A"));
+        assert!(matches!(&p.args[3], Arg::Value(e, Some(u)) if show(e) == "30" && u == "deg"));
+        assert!(p.links.is_empty() && p.slides.is_empty());
+    }
+
+    #[test]
+    fn load_statements_become_their_syntax_nodes() {
+        // Proves the load statements keep their parts: a force's point, link and
+        // guide with its value, a torque's link, a mass's fields (its `;` left
+        // out), and gravity's two components.
+        let def = parse(
+            "pub M {
+                force at E on link4 along ram = -cut;
+                force at C = (1.0, 2.0);
+                torque on link2 = 3.0;
+                mass link3 { m = 2.0, at = G, j = 0.5 }
+                gravity (0.0, -9.81);
+            }",
+        )
+        .unwrap();
+        let [Item::Force(along), Item::Force(xy), Item::Torque(on, t), Item::Mass(m), Item::Gravity(_, gx, gy)] =
+            def.items.as_slice()
+        else {
+            panic!("statements of other kinds");
+        };
+        assert_eq!(along.at, "E");
+        assert_eq!(along.on.as_ref().unwrap(), "link4");
+        assert!(
+            matches!(&along.value, ForceValue::Along(g, f) if g == "ram" && show(f) == "- cut")
+        );
+        assert!(xy.on.is_none());
+        assert!(
+            matches!(&xy.value, ForceValue::Components(x, y) if show(x) == "1.0" && show(y) == "2.0")
+        );
+        assert_eq!((on.to_string(), show(t)), ("link2".into(), "3.0".into()));
+        assert_eq!(m.link, "link3");
+        let fields: Vec<String> = m.fields.iter().map(|(n, _)| n.to_string()).collect();
+        assert_eq!(fields, ["m", "at", "j"]);
+        assert_eq!((show(gx), show(gy)), ("0.0".into(), "- 9.81".into()));
+    }
+
+    #[test]
+    fn declarations_become_their_syntax_nodes() {
+        // Proves the one-line statements: a range's two ends with their units,
+        // `allow` with its groups (one named like a keyword), `dof`, `analysis`,
+        // `outputs`, `params` and `const`, and `#[self_test]` taken out of the docs.
+        let def = parse(
+            "/// A doc.
+            #[self_test]
+            pub M {
+                params { a = 1.0, b = 2.0 }
+                const c = 3.0;
+                range theta = (-40 deg, 40 deg);
+                allow singular B, range;
+                dof 1;
+                analysis velocity;
+                outputs { B, link3 }
+            }",
+        )
+        .unwrap();
+        assert!(def.self_test.is_some());
+        assert_eq!(def.docs.len(), 1);
+        let [Item::Params(params), Item::Const(c), Item::Range(r), Item::Allow(_, what, groups), Item::Dof(_, n), Item::Analysis(_, level), Item::Outputs(_, outputs)] =
+            def.items.as_slice()
+        else {
+            panic!("statements of other kinds");
+        };
+        let params: Vec<String> = params
+            .iter()
+            .map(|a| format!("{} = {}", a.name, show(&a.value)))
+            .collect();
+        assert_eq!(params, ["a = 1.0", "b = 2.0"]);
+        assert_eq!(
+            (c.name.to_string(), show(&c.value)),
+            ("c".into(), "3.0".into())
+        );
+        assert_eq!(r.input, "theta");
+        assert!(matches!(&r.lo, Arg::Value(e, Some(u)) if show(e) == "- 40" && u == "deg"));
+        assert!(matches!(&r.hi, Arg::Value(e, Some(u)) if show(e) == "40" && u == "deg"));
+        assert_eq!(what, "singular");
+        assert_eq!(groups, &["B", "range"]);
+        assert_eq!(n.base10_digits(), "1");
+        assert_eq!(level, "velocity");
+        assert_eq!(outputs, &["B", "link3"]);
+    }
+
+    #[test]
+    fn a_missing_semicolon_is_reported_after_the_statement() {
+        // Proves a missing `;` is reported on the last token of the statement
+        // that lacks it (the `)` of `ground(..)`, line 2), not on the next one.
+        let (message, line, column) = error(
+            "pub M {
+                let O = ground(0.0, 0.0)
+                let A = crank(O, 1.0, theta) as link2;
+            }",
+        );
+        assert_eq!(
+            message,
+            "expected `;` after the `let O = ground(..)` statement: every statement ends with `;`"
+        );
+        assert_eq!((line, column), (2, 39));
+    }
+
+    #[test]
+    fn malformed_statements_get_their_messages() {
+        // Proves a unit written after a constant gets the message about units,
+        // on the unit word, and a misspelt keyword the nearest statement.
+        let (message, line, column) = error("pub M { const d = 2.0 mm; }");
+        assert_eq!(
+            message,
+            "unexpected `mm`: a constant takes no unit, it is a plain number in the definition's own units (lengths, masses and forces carry none; only angles take `deg` or `rad`)"
+        );
+        assert_eq!((line, column), (1, 22));
+        let (message, _, column) = error("pub M { forse at E = (1.0, 0.0); }");
+        assert_eq!(
+            message,
+            "unknown statement `forse`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range` or `allow`; did you mean `force`?"
+        );
+        assert_eq!(column, 8);
+    }
+}

@@ -68,3 +68,139 @@ pub fn planned(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
     // A load value's name is its own.
     kinetics::load_names_unique(model, plan, errors);
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::diag::Diagnostics;
+    use crate::{model, plan, validate};
+
+    /// The messages of the errors of a four-bar with a coupler point and the
+    /// statements `extra`, through the stages up to validation.
+    fn errors(extra: &str) -> Vec<String> {
+        errors_of(&format!(
+            "pub M {{
+                let O2 = ground(0.0, 0.0);
+                let O4 = ground(4.0, 0.0);
+                let A = crank(O2, 1.0, theta) as link2;
+                let B = rrr(A, 3.0, O4, 2.5, left) as (link3, link4);
+                let P = point(link3, from A, 1.0, 30 deg);
+                {extra}
+            }}"
+        ))
+    }
+
+    /// The messages of the errors of the definition `src`.
+    fn errors_of(src: &str) -> Vec<String> {
+        let def = syn::parse_str::<crate::parse::Definition>(src).unwrap();
+        let mut diag = Diagnostics::new();
+        let model = model::lower(def, &mut diag);
+        validate::model(&model, &mut diag);
+        if let Some(plan) = plan::plan(&model, &mut diag) {
+            validate::planned(&model, &plan, &mut diag);
+        }
+        diag.finish().iter().map(ToString::to_string).collect()
+    }
+
+    #[test]
+    fn the_four_bar_breaks_no_rule() {
+        // Proves the definition the other tests break is valid as it stands,
+        // with loads too, so each of their errors comes from what they add.
+        assert_eq!(errors(""), Vec::<String>::new());
+        let loads = "mass link3 { m = 2.0, at = P } force at P = (1.0, 0.0); gravity (0.0, -9.81);";
+        assert_eq!(errors(loads), Vec::<String>::new());
+    }
+
+    #[test]
+    fn name_rules() {
+        // Proves the rules on names: a name defined twice, a reserved prefix,
+        // and a reference to a point that does not exist each give their one
+        // error.
+        assert_eq!(
+            errors("let A = ground(1.0, 1.0);"),
+            ["`A` is already defined by the `let A = crank(..)` statement above; every point, link, guide, slide, input, parameter and constant needs its own name: rename this one, e.g. `A2`"]
+        );
+        assert_eq!(
+            errors("let vel_x = ground(1.0, 1.0);"),
+            ["names starting with `vel_` are reserved for the generated code's locals; rename `vel_x`"]
+        );
+        assert_eq!(
+            errors("let C = rrr(B, 1.0, Q4, 1.0, left) as (link5, link6);"),
+            ["cannot find point `Q4`; did you mean `O4`?"]
+        );
+    }
+
+    #[test]
+    fn structure_rules() {
+        // Proves the rules on the whole mechanism: no driver, a declared
+        // mobility that is not Gruebler's, an output nothing defines, an RPP
+        // slot parallel to its guide, `#[self_test]` with an input without a
+        // range each give their one error.
+        assert_eq!(
+            errors_of("pub M { let O = ground(0.0, 0.0); }"),
+            ["`M` has no driver, so nothing moves; add one, e.g. `let A = crank(O, radius, theta) as link2;`, a `slider(...)` or an `actuator(...)`"]
+        );
+        assert_eq!(
+            errors("dof 2;"),
+            ["the mechanism has 1 degree(s) of freedom (Gruebler: 3*(4-1) - 2*4 = 1) for 1 input(s) [theta], but `dof 2` is declared; add or remove a driver, or correct `dof`"]
+        );
+        assert_eq!(
+            errors("outputs { B, link9 }"),
+            ["this definition cannot give `link9`: no point, link or slide has that name; did you mean `link2`?"]
+        );
+        assert_eq!(
+            errors("let line = guide(O4, 0 deg); let K = rpp(P, line, 180 deg) as (blk, yoke);"),
+            ["the slot of `K` is at 180 deg to guide `line`, parallel to it; the slotted link slides along `line` without turning, so the slot stays parallel at every pose and the block's pin is at infinity for every input: give the slot an angle across the guide (e.g. `90 deg`, a slot perpendicular to it)"]
+        );
+        assert_eq!(
+            errors_of(
+                "#[self_test] pub M {
+                    let line = guide((0.0, 0.0), 0 deg);
+                    let S = slider(line, s) as block;
+                }"
+            ),
+            ["`#[self_test]` tests the mechanism over its input range, and `s` has none: declare it, e.g. `range s = (0.0, 0.1);` (sliders and actuators have no default range)"]
+        );
+    }
+
+    #[test]
+    fn geometry_rules() {
+        // Proves the rules on geometry: a group's two joints given as one
+        // point, a crank about a moving point, a link point measured from a
+        // point of another link each give their one error.
+        assert_eq!(
+            errors("let C = rrr(O2, 1.0, O2, 1.0, left) as (link5, link6);"),
+            ["`O2` is given twice: the two known joints of this `rrr` must be different"]
+        );
+        assert_eq!(
+            errors("let C = crank(B, 1.0, phi) as link5;"),
+            ["a crank turns about a ground point, and `B` moves; define the pivot with `ground(x, y)`"]
+        );
+        assert_eq!(
+            errors("let Q = point(link4, from A, 1.0, 0 deg);"),
+            ["`A` is not a point of `link4`; measure from one of its points: `O4`, `B`"]
+        );
+    }
+
+    #[test]
+    fn kinetics_rules() {
+        // Proves the rules of the force analysis: gravity without a mass, a
+        // centre of mass off its link, a force at a joint of two links without
+        // `on`, a load value named like a point each give their one error.
+        assert_eq!(
+            errors("gravity (0.0, -9.81); torque on link2 = 1.0;"),
+            ["`gravity` acts through masses, and no link has one: add `mass LINK { m = .., at = POINT }`"]
+        );
+        assert_eq!(
+            errors("mass link4 { m = 1.0, at = P }"),
+            ["the centre of mass must be a point of `link4`, and `P` is not; its points are `O4`, `B`; or define one: `let G = point(link4, from O4, distance, angle);`"]
+        );
+        assert_eq!(
+            errors("force at B = (1.0, 0.0);"),
+            ["`B` joins `link3` and `link4`: say which link the force acts on, e.g. `force at B on link3 = (fx, fy);`"]
+        );
+        assert_eq!(
+            errors("loads { B = 1.0 } torque on link3 = 1.0;"),
+            ["`B` is already defined by the `let B = rrr(..)` statement; a load value needs a name of its own: rename it, e.g. `B2`, here and where it is used"]
+        );
+    }
+}
