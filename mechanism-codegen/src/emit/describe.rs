@@ -14,7 +14,9 @@ use quote::{format_ident, quote};
 pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
     let name = &model.name;
     let structure = structure(model, plan);
+    let allow_lints = super::allow_literal_lints();
     let mut out = quote! {
+        #allow_lints
         impl<T: ::mechanism::Real> ::mechanism::structure::Describe for #name<T> {
             const STRUCTURE: ::mechanism::structure::Structure = #structure;
         }
