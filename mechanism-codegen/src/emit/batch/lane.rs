@@ -173,7 +173,7 @@ pub(super) struct Lane {
 impl Lane {
     /// An empty kernel computing `levels` levels (1 position, 2 velocity, 3
     /// acceleration).
-    fn new(levels: usize) -> Lane {
+    pub(super) fn new(levels: usize) -> Lane {
         Lane {
             vel: levels > 1,
             acc: levels > 2,
@@ -206,7 +206,7 @@ impl Lane {
 
     /// Adds the lane code of one statement, `None` when it has no lane
     /// version here (an argument the kernel does not know).
-    fn statement(&mut self, stmt: &Stmt) -> Option<()> {
+    pub(super) fn statement(&mut self, stmt: &Stmt) -> Option<()> {
         let mut s = Step::new(stmt);
         match &stmt.kind {
             Kind::Ground { x, y } => points::ground(&mut s, x, y),
