@@ -13,6 +13,7 @@ use syn::Ident;
 
 /// The second side of an RRR dyad: a fixed length, or a linear actuator's
 /// input length (`in_INPUT[k]`, read per element and checked).
+#[derive(Clone, Copy)]
 pub(super) enum SecondSide<'a> {
     Length(&'a Value),
     Input(&'a Ident),
@@ -71,10 +72,6 @@ pub(super) fn dyad(
             quote!(#s_in[k])
         }
     };
-    let actuator = match second {
-        SecondSide::Input(input) => Some(input),
-        SecondSide::Length(_) => None,
-    };
     let sign = sign(mode);
     let (r1, r2) = (s.rates(0)?, s.rates(1)?);
     let (w1, al1, w2, al2) = (&r1.omega, &r1.alpha, &r2.omega, &r2.alpha);
@@ -86,9 +83,11 @@ pub(super) fn dyad(
     });
     if lane.vel {
         let (avx, avy, bvx, bvy) = (&pa.vx, &pa.vy, &pb.vx, &pb.vy);
-        let rates = match actuator {
-            None => quote!(::mechanism::lane::rrr_rates(&#g, #bvx - #avx, #bvy - #avy)),
-            Some(input) => {
+        let rates = match second {
+            SecondSide::Length(_) => {
+                quote!(::mechanism::lane::rrr_rates(&#g, #bvx - #avx, #bvy - #avy))
+            }
+            SecondSide::Input(input) => {
                 let rate = format_ident!("rate_{}", input);
                 s.check([quote!(#rate[k])]);
                 quote!(::mechanism::lane::actuator_rates(&#g, #bvx - #avx, #bvy - #avy, #l2, #rate[k]))
@@ -104,9 +103,11 @@ pub(super) fn dyad(
     }
     if lane.acc {
         let (aax, aay, bax, bay) = (&pa.ax, &pa.ay, &pb.ax, &pb.ay);
-        let accels = match actuator {
-            None => quote!(::mechanism::lane::rrr_accels(&#g, #bax - #aax, #bay - #aay, #w1, #w2)),
-            Some(input) => {
+        let accels = match second {
+            SecondSide::Length(_) => {
+                quote!(::mechanism::lane::rrr_accels(&#g, #bax - #aax, #bay - #aay, #w1, #w2))
+            }
+            SecondSide::Input(input) => {
                 let (rate, accel) = (
                     format_ident!("rate_{}", input),
                     format_ident!("accel_{}", input),
@@ -127,8 +128,10 @@ pub(super) fn dyad(
     s.defines_link(1, LaneLink::along(along(&g, "r2"), Some(&l2), w2, al2))
 }
 
-/// The vector `(g.NAMEx, g.NAMEy)` of the group solution `g` (`r1`: from
-/// the first joint to the new one, `ux`/`wx`: unit directions...).
+/// The vector `(g.NAMEx, g.NAMEy)` of the group solution `g`: `r1`, `r2`
+/// (the sides from the known joints to the new one, RRR and RRP; length
+/// unit), `u` (an RPR's unit slide direction), `w` (an RPP's unit slot
+/// direction).
 fn along(g: &Ident, name: &str) -> Vector {
     let (x, y) = (format_ident!("{}x", name), format_ident!("{}y", name));
     Vector {
