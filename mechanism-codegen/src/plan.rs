@@ -318,6 +318,19 @@ impl Plan {
     }
 }
 
+/// A slide displacement the user named: its name, the statement that
+/// solves it and which of the statement's slides it is (0 or 1; an RPR's
+/// slide is its defined name, slot 0).
+#[derive(Clone, Debug)]
+pub struct Slide {
+    /// The user's name (a field of the output structs).
+    pub name: Ident,
+    /// The statement (index into `Model::stmts`).
+    pub stmt: usize,
+    /// Which of the statement's slides.
+    pub slot: usize,
+}
+
 /// Which names the user wants in the output structs.
 #[derive(Default)]
 pub struct Outputs {
@@ -325,8 +338,8 @@ pub struct Outputs {
     pub points: Vec<Ident>,
     /// Named links, in solve order.
     pub links: Vec<Ident>,
-    /// Slide displacements: name, statement, slot.
-    pub slides: Vec<(Ident, usize, usize)>,
+    /// Slide displacements.
+    pub slides: Vec<Slide>,
 }
 
 fn outputs(model: &Model, plan: &Plan) -> Outputs {
@@ -345,7 +358,11 @@ fn outputs(model: &Model, plan: &Plan) -> Outputs {
             Kind::Guide { .. } => {}
             Kind::Rpr { .. } => {
                 if wanted(&stmt.name) {
-                    out.slides.push((stmt.name.clone(), i, 0));
+                    out.slides.push(Slide {
+                        name: stmt.name.clone(),
+                        stmt: i,
+                        slot: 0,
+                    });
                 }
             }
             _ => {
@@ -362,7 +379,11 @@ fn outputs(model: &Model, plan: &Plan) -> Outputs {
         for (slot, slide) in stmt.slides.iter().enumerate() {
             if let Some(s) = slide {
                 if wanted(s) {
-                    out.slides.push((s.clone(), i, slot));
+                    out.slides.push(Slide {
+                        name: s.clone(),
+                        stmt: i,
+                        slot,
+                    });
                 }
             }
         }
@@ -380,7 +401,7 @@ fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usiz
     for l in &out.links {
         stack.extend(plan.links.get(&l.to_string()).map(|i| i.stmt));
     }
-    stack.extend(out.slides.iter().map(|(_, i, _)| *i));
+    stack.extend(out.slides.iter().map(|s| s.stmt));
     let mut needed = BTreeSet::new();
     while let Some(i) = stack.pop() {
         if needed.insert(i) {

@@ -176,7 +176,7 @@ fn fields(plan: &Plan, ty: &syn::Ident, level: usize) -> TokenStream {
         .links
         .iter()
         .map(|l| (l, &angle_q))
-        .chain(out.slides.iter().map(|(s, _, _)| (s, &slide_q)));
+        .chain(out.slides.iter().map(|s| (&s.name, &slide_q)));
     for (s, q) in scalars {
         let n = s.to_string();
         infos.push(quote!(#field { name: #n, quantity: #quantity::#q, planar: false }));

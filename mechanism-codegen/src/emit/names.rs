@@ -164,7 +164,7 @@ pub(super) fn output_docs(out: &Outputs, level: usize) -> Vec<String> {
         .iter()
         .map(|n| fill(p, n))
         .chain(out.links.iter().map(|n| fill(l, n)))
-        .chain(out.slides.iter().map(|(n, _, _)| fill(s, n)))
+        .chain(out.slides.iter().map(|n| fill(s, &n.name)))
         .collect()
 }
 

@@ -117,7 +117,7 @@ impl<'a> Emitter<'a> {
         for link in &out.links {
             outputs.push((link.clone(), quote!(T)));
         }
-        for (slide, _, _) in &out.slides {
+        for slide in out.slides.iter().map(|s| &s.name) {
             outputs.push((slide.clone(), quote!(T)));
         }
         PositionCode {
@@ -343,7 +343,12 @@ impl<'a> Emitter<'a> {
             let l = local(link);
             code.extend(quote!(let #l = #value;));
         }
-        for (slide, i, slot) in &out.slides {
+        for crate::plan::Slide {
+            name: slide,
+            stmt: i,
+            slot,
+        } in &out.slides
+        {
             let g = grp(&model.stmts[*i]);
             let field = match (&model.stmts[*i].kind, slot) {
                 (Kind::Prp { .. }, 0) | (Kind::Rpp { .. }, 0) => quote!(s1),

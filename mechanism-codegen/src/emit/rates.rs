@@ -431,7 +431,12 @@ impl RateEmitter<'_> {
                 value,
             });
         }
-        for (slide, i, slot) in &out.slides {
+        for crate::plan::Slide {
+            name: slide,
+            stmt: i,
+            slot,
+        } in &out.slides
+        {
             let value = self
                 .slide_values
                 .iter()

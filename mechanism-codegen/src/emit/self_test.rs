@@ -352,7 +352,7 @@ pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
         rate_row.push(quote!(<T as ::mechanism::Real>::as_f64(v.#l)));
         angle_col.push(true);
     }
-    for (s, _, _) in &out.slides {
+    for s in out.slides.iter().map(|s| &s.name) {
         pos_row.push(quote!(<T as ::mechanism::Real>::as_f64(pos.#s)));
         rate_row.push(quote!(<T as ::mechanism::Real>::as_f64(v.#s)));
         angle_col.push(false);
