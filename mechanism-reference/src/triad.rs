@@ -88,7 +88,10 @@ impl TriadRef {
         let [l1, l2, l3] = self.l;
         let base = add(self.k[0], scale(l1, es[0]));
         let ap = self.ap(es[3]);
-        let r1 = sub(sub(add(base, scale(self.ab, es[3])), scale(l2, es[1])), self.k[1]);
+        let r1 = sub(
+            sub(add(base, scale(self.ab, es[3])), scale(l2, es[1])),
+            self.k[1],
+        );
         let r2 = sub(sub(add(base, ap), scale(l3, es[2])), self.k[2]);
         let d1 = scale(l1, perp(es[0]));
         let d2 = scale(-l2, perp(es[1]));
@@ -157,7 +160,10 @@ fn joint_a(t: &TriadRef, e4: V, left: bool) -> (Option<V>, Dd) {
         return (None, h2);
     }
     let h = if left { h2.sqrt() } else { -h2.sqrt() };
-    let a = add(t.k[0], scale(Dd::ONE / dist2, add(scale(foot, d), scale(h, perp(d)))));
+    let a = add(
+        t.k[0],
+        scale(Dd::ONE / dist2, add(scale(foot, d), scale(h, perp(d)))),
+    );
     (Some(a), h2)
 }
 
@@ -218,9 +224,19 @@ pub fn assemblies(t: &TriadRef, samples: usize) -> Vec<Pose> {
     let mut out = Vec::new();
     let step = Dd::TAU / Dd::from(samples as f64);
     let x_at = |j: usize| step * Dd::from(j as f64);
+    // The sample directions by rotation (exact sine and cosine every 64).
+    let turn = e(step);
+    let mut dirs: Vec<V> = Vec::with_capacity(samples + 1);
+    for j in 0..=samples {
+        let d = match dirs.last() {
+            Some(&[c, s]) if j % 64 != 0 => [c * turn[0] - s * turn[1], s * turn[0] + c * turn[1]],
+            _ => e(x_at(j)),
+        };
+        dirs.push(d);
+    }
     for j in 0..samples {
         let (x0, x1) = (x_at(j), x_at(j + 1));
-        let (e0, e1) = (e(x0), e(x1));
+        let (e0, e1) = (dirs[j], dirs[j + 1]);
         let exists = |ee: V| joint_a(t, ee, true).0.is_some();
         let (in0, in1) = (exists(e0), exists(e1));
         for left in [true, false] {
@@ -232,14 +248,17 @@ pub fn assemblies(t: &TriadRef, samples: usize) -> Vec<Pose> {
                     };
                     if (r0.hi > 0.0) != (r1.hi > 0.0) {
                         let s0 = r0.hi > 0.0;
-                        let x = bisect(x0, x1, |x| residual(t, e(x), left).is_some_and(|r| (r.hi > 0.0) == s0));
+                        let x = bisect(x0, x1, |x| {
+                            residual(t, e(x), left).is_some_and(|r| (r.hi > 0.0) == s0)
+                        });
                         polish(t, x, left, &mut out);
                     }
                 }
                 (true, false) | (false, true) => {
                     // A branch end between the samples: both branches meet there.
-                    let end = bisect(x0, x1, |x| exists(e(x)) == in0);
-                    let (inside, end_x) = if in0 { (x0, end) } else { (x1, end) };
+                    let (inside, outside) = if in0 { (x0, x1) } else { (x1, x0) };
+                    // The last point where the branches exist.
+                    let end_x = bisect(inside, outside, |x| exists(e(x)));
                     let end_r = residual(t, e(end_x), true);
                     let (Some(r0), Some(re)) = (residual(t, e(inside), left), end_r) else {
                         continue;
@@ -284,7 +303,12 @@ fn joint_rates(t: &TriadRef, pose: &Pose, base: V, w: &[Dd; 4], alpha: Option<&[
 
 /// The angular accelerations (rad/s^2) and the joints' accelerations
 /// (L/s^2): `J qddot = (aK2 - aK1, aK3 - aK1) + centripetal terms`.
-pub fn accelerations(t: &TriadRef, pose: &Pose, w: &[Dd; 4], ak: [V; 3]) -> Option<([Dd; 4], [V; 3])> {
+pub fn accelerations(
+    t: &TriadRef,
+    pose: &Pose,
+    w: &[Dd; 4],
+    ak: [V; 3],
+) -> Option<([Dd; 4], [V; 3])> {
     let es: Vec<V> = pose.q.iter().map(|x| e(*x)).collect();
     let [l1, l2, l3] = t.l;
     let c1 = scale(l1 * w[0].sqr(), es[0]);
@@ -340,9 +364,17 @@ pub fn det4(m: &[[Dd; 4]; 4]) -> Dd {
 /// with a central-difference Jacobian (step `2^-30`: truncation `~1e-18`
 /// relative, so each step gains about 18 digits), from `(start.q, x0)`.
 /// Returns `x` and the pose; `None` when Newton does not converge.
-pub fn fold(t: &TriadRef, known: impl Fn(Dd) -> [V; 3], start: &Pose, x0: Dd) -> Option<(Dd, Pose)> {
+pub fn fold(
+    t: &TriadRef,
+    known: impl Fn(Dd) -> [V; 3],
+    start: &Pose,
+    x0: Dd,
+) -> Option<(Dd, Pose)> {
     let eval = |z: &[Dd; 5]| -> [Dd; 5] {
-        let tk = TriadRef { k: known(z[4]), ..*t };
+        let tk = TriadRef {
+            k: known(z[4]),
+            ..*t
+        };
         let q = [z[0], z[1], z[2], z[3]];
         let (r, jac) = tk.system(&q);
         [r[0], r[1], r[2], r[3], det4(&jac)]
@@ -368,9 +400,18 @@ pub fn fold(t: &TriadRef, known: impl Fn(Dd) -> [V; 3], start: &Pose, x0: Dd) ->
             size = size.max(si.hi.abs());
         }
         if size < 1e-27 {
-            let tk = TriadRef { k: known(z[4]), ..*t };
+            let tk = TriadRef {
+                k: known(z[4]),
+                ..*t
+            };
             let q = [z[0], z[1], z[2], z[3]];
-            return Some((z[4], Pose { q, joints: tk.joints(&q) }));
+            return Some((
+                z[4],
+                Pose {
+                    q,
+                    joints: tk.joints(&q),
+                },
+            ));
         }
     }
     None
