@@ -35,9 +35,9 @@ pub mod mode;
 pub mod scalar;
 pub mod sincos64;
 pub mod sweep;
+pub mod triad;
 pub mod trig;
 pub mod trig64;
-pub mod triad;
 
 pub use error::{Error, Fault, Primitive};
 pub use mode::Mode;

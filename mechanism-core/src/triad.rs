@@ -344,6 +344,9 @@ enum Loop<T: Real> {
     Arc { mid: T, half: T },
 }
 
+/// The loops of [`loops`] and the angle `psi` of `K2 - K1` they start from.
+type Loops<T> = ([Option<Loop<T>>; 2], T);
+
 /// A Newton state in the normalized frame: `A` and the ternary's angle.
 type State<T> = [T; 3];
 
@@ -358,7 +361,12 @@ fn validate<T: Real>(triad: &Triad<T>, k: &[Point2<T>; 3]) -> Result<(), Error<T
         crate::geometry::positive(x, PRIM, what)?;
     }
     if !all_finite([triad.p_local.x, triad.p_local.y]) {
-        return Err(Error::new(PRIM, Fault::NonFinite { what: "triad P_local" }));
+        return Err(Error::new(
+            PRIM,
+            Fault::NonFinite {
+                what: "triad P_local",
+            },
+        ));
     }
     if !k.iter().all(|p| all_finite([p.x, p.y])) {
         return Err(Error::new(
@@ -458,9 +466,8 @@ impl<T: Real> Frame<T> {
         }
         let (g, _) = self.system(&x);
         let tol = T::lit(64.0) * T::eps() * self.reach;
-        let ok = abs(g[0]) <= tol * self.l1
-            && abs(g[1]) <= tol * self.l2
-            && abs(g[2]) <= tol * self.l3;
+        let ok =
+            abs(g[0]) <= tol * self.l1 && abs(g[1]) <= tol * self.l2 && abs(g[2]) <= tol * self.l3;
         ok.then_some(x)
     }
 
@@ -505,18 +512,20 @@ impl<T: Real> Frame<T> {
 
     /// The largest accepted jump, normalized.
     fn jump(&self) -> T {
-        let shortest = [self.l2, self.l3, self.c]
-            .into_iter()
-            .fold(self.l1, min);
+        let shortest = [self.l2, self.l3, self.c].into_iter().fold(self.l1, min);
         T::lit(JUMP_FRACTION) * shortest
     }
 }
 
 /// The loops of the four-bar `K1 - A - B - K2` (at most two), or the
 /// `CannotAssemble` miss and reach (normalized) when it never closes.
-fn loops<T: Real>(f: &Frame<T>) -> Result<([Option<Loop<T>>; 2], T), (T, T)> {
+fn loops<T: Real>(f: &Frame<T>) -> Result<Loops<T>, (T, T)> {
     let m = length(&f.k2);
-    let psi = if m > T::zero() { angle(&f.k2) } else { T::zero() };
+    let psi = if m > T::zero() {
+        angle(&f.k2)
+    } else {
+        T::zero()
+    };
     let (outer, inner) = (f.c + f.l2, abs(f.c - f.l2));
     // |A - K2| ranges over [|m - l1|, m + l1] and must meet [inner, outer].
     let (near, far) = (abs(m - f.l1), m + f.l1);
@@ -532,7 +541,7 @@ fn loops<T: Real>(f: &Frame<T>) -> Result<([Option<Loop<T>>; 2], T), (T, T)> {
         Some(Loop::Full { sign: -T::one() }),
     ];
     let denom = T::lit(2.0) * f.l1 * m;
-    if !(denom > T::zero()) {
+    if denom <= T::zero() {
         // K1 = K2: |A - K2| = l1 whatever theta, inside the range (above).
         return Ok((full, psi));
     }
@@ -574,7 +583,7 @@ fn curve<T: Real>(f: &Frame<T>, lp: &Loop<T>, psi: T, t: T) -> Option<(State<T>,
     let a = unit(theta) * f.l1;
     let g = f.k2 - a;
     let dd = dot(&g, &g);
-    if !(dd > T::zero()) {
+    if dd <= T::zero() {
         return None;
     }
     let (outer, inner) = (f.c + f.l2, f.c - f.l2);
@@ -621,7 +630,11 @@ fn search<T: Real>(f: &Frame<T>) -> Assemblies<T> {
         scan(f, lp, psi, &mut found, &mut least);
     }
     if found.is_empty() {
-        found.miss = if least.finite() { least * f.up } else { found.reach };
+        found.miss = if least.finite() {
+            least * f.up
+        } else {
+            found.reach
+        };
     }
     found
 }
@@ -712,7 +725,7 @@ fn minimum<T: Real>(
     let half = T::lit(0.5);
     let slope = half * (rn - rp);
     let curv = half * (rn - T::lit(2.0) * r + rp);
-    if !(curv != T::zero()) {
+    if curv == T::zero() {
         return;
     }
     let vertex = -slope / (T::lit(2.0) * curv);
@@ -957,7 +970,12 @@ pub fn velocity<T: Real>(
     if all_finite(check) {
         Ok(out)
     } else {
-        Err(Error::new(PRIM, Fault::NonFinite { what: "triad rates" }))
+        Err(Error::new(
+            PRIM,
+            Fault::NonFinite {
+                what: "triad rates",
+            },
+        ))
     }
 }
 

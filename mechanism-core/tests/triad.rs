@@ -511,3 +511,454 @@ fn check_forces(
     assert!(worst < 1e-12, "reactions vs Newton-Euler {worst:e}");
     (power, worst)
 }
+
+/// The Stephenson III six-bar of issue 22 (m): the triad of the coupler
+/// `A-B-P` with legs O2-A (0.08), O4-B (0.20) and C-P (0.28), `C` on link 6
+/// (O6-C, 0.24) at the angle `phi` (rad).
+fn stephenson(phi: f64) -> Case {
+    let d = 40f64.to_radians();
+    Case {
+        triad: Triad {
+            l1: 0.08,
+            l2: 0.20,
+            l3: 0.28,
+            ab: 0.26,
+            p_local: Vector2::new(0.15 * d.cos(), 0.15 * d.sin()),
+        },
+        k: [
+            Point2::new(0.0, 0.0),
+            Point2::new(0.30, 0.0),
+            Point2::new(0.05 + 0.24 * phi.cos(), 0.42 + 0.24 * phi.sin()),
+        ],
+    }
+}
+
+/// `K1 .. K3` of the Stephenson triad in double-double at `phi`.
+fn stephenson_known(phi: Dd) -> [[Dd; 2]; 3] {
+    let (s, c) = phi.sin_cos();
+    let r = Dd::from(0.24);
+    [
+        [Dd::ZERO, Dd::ZERO],
+        [Dd::from(0.30), Dd::ZERO],
+        [Dd::from(0.05) + r * c, Dd::from(0.42) + r * s],
+    ]
+}
+
+/// Tracks from `(phi, pos)` in steps of `step` (rad) while the assembly
+/// exists, comparing every step with the reference's continuation; then
+/// bisects the end between the last pose found and the first input where
+/// tracking fails. Returns the end (rad), the pose there and the number of
+/// steps; asserts the Jacobian's sign never changes.
+fn track_to_end(
+    phi0: f64,
+    pos0: TriadPosition<f64>,
+    step: f64,
+    worst: &mut f64,
+) -> (f64, TriadPosition<f64>, usize) {
+    let sign = pos0.jacobian.signum();
+    let (mut phi, mut pos) = (phi0, pos0);
+    let t0 = stephenson(phi0).reference();
+    let start = [pos.r1, pos.r2, pos.r3, pos.ab].map(|r| Dd::from(r.y.atan2(r.x)));
+    let mut reference = rt::newton(&t0, start).unwrap();
+    let mut steps = 0;
+    loop {
+        let next = phi + step;
+        let case = stephenson(next);
+        let Ok(p) = triad::position_near(&case.triad, &case.k, &pos) else {
+            break;
+        };
+        assert_eq!(
+            p.jacobian.signum(),
+            sign,
+            "tracking crossed a branch point at {next}"
+        );
+        let t = TriadRef {
+            k: stephenson_known(Dd::from(next)),
+            ..t0
+        };
+        reference = rt::newton(&t, reference.q).unwrap();
+        // Same assembly, to the accuracy its conditioning allows: eps /
+        // |jacobian| of the scale (0.28 m), with a factor of 8.
+        let err = joint_error(&p, &reference);
+        let bound = 8.0 * f64::EPSILON * 0.28 / p.jacobian.abs();
+        *worst = worst.max(err / bound);
+        assert!(err <= bound, "phi {next}: {err:e} > {bound:e}");
+        (phi, pos) = (next, p);
+        steps += 1;
+    }
+    // Bisection: `phi` tracks, `phi + step` does not.
+    let mut gap = step;
+    for _ in 0..60 {
+        gap *= 0.5;
+        let case = stephenson(phi + gap);
+        if let Ok(p) = triad::position_near(&case.triad, &case.k, &pos) {
+            (phi, pos) = (phi + gap, p);
+        }
+    }
+    (phi, pos, steps)
+}
+
+#[test]
+fn stephenson_iii_swing() {
+    let phi0 = (-49.48f64).to_radians();
+    let case = stephenson(phi0);
+    let hint = Near::new(
+        Point2::new(-0.061, -0.052),
+        Point2::new(0.137, 0.116),
+        Point2::new(-0.036, 0.096),
+    );
+    let pos = triad::position(&case.triad, &case.k, &hint).unwrap();
+    // The issue states the pose to three digits.
+    for (got, want) in [(pos.a, hint.a), (pos.b, hint.b), (pos.p, hint.p)] {
+        assert!((got - want).amax() <= 5e-4, "{got} vs {want}");
+    }
+    let mut worst = 0.0f64;
+    let step = 0.25f64.to_radians();
+    let mut ends = [0.0; 2];
+    for (i, dir) in [-1.0, 1.0].into_iter().enumerate() {
+        let (end, at_end, steps) = track_to_end(phi0, pos, dir * step, &mut worst);
+        // The reference's fold: closure plus det J = 0, from the last pose.
+        let t = stephenson(end).reference();
+        let start = [at_end.r1, at_end.r2, at_end.r3, at_end.ab].map(|r| Dd::from(r.y.atan2(r.x)));
+        // (Not polished: at the fold the closure alone is singular.)
+        let near_end = Pose {
+            q: start,
+            joints: t.joints(&start),
+        };
+        let (fold, _) = rt::fold(&t, stephenson_known, &near_end, Dd::from(end)).unwrap();
+        let miss = (Dd::from(end) - fold).to_f64().abs();
+        println!(
+            "swing end {}: core {:.10} deg, reference {:.10} deg ({steps} steps of 0.25 deg; \
+             |jacobian| there {:.1e}; miss {miss:.1e} rad)",
+            i,
+            end.to_degrees(),
+            fold.to_f64().to_degrees(),
+            at_end.jacobian.abs()
+        );
+        // The end is a fold (two assemblies meet): tracking holds until the
+        // roots merge within rounding, so the end is found to about eps
+        // (measured 2.3e-15 rad); 1e-12 rad leaves room.
+        assert!(miss < 1e-12, "end {i}: {miss:e} rad");
+        ends[i] = end;
+    }
+    println!(
+        "link 6 swings from {:.4} to {:.4} deg on this assembly; worst tracking error {worst:.2} of its bound",
+        ends[0].to_degrees(),
+        ends[1].to_degrees()
+    );
+    assert!(
+        ends[1] - ends[0] > 0.5,
+        "a swing of {} rad",
+        ends[1] - ends[0]
+    );
+}
+
+#[test]
+fn nearest_selection_refuses_unclear_poses() {
+    let case = stephenson((-30.0f64).to_radians());
+    let all: Vec<_> = triad::assemblies(&case.triad, &case.k)
+        .unwrap()
+        .iter()
+        .copied()
+        .collect();
+    assert!(all.len() >= 2);
+    // Each assembly's own joints select it, bit for bit.
+    for q in &all {
+        let got = triad::position(&case.triad, &case.k, &Near::of(q)).unwrap();
+        assert_eq!(&got, q);
+    }
+    // Halfway between two assemblies: refused, with the two distances.
+    let (p, q) = (&all[0], &all[1]);
+    let mid = |x: Point2<f64>, y: Point2<f64>| Point2::from((x.coords + y.coords) * 0.5);
+    let hint = Near::new(mid(p.a, q.a), mid(p.b, q.b), mid(p.p, q.p));
+    let e = triad::position(&case.triad, &case.k, &hint).unwrap_err();
+    assert_eq!(e.primitive, Primitive::Triad);
+    match e.fault {
+        Fault::NotNear { nearest, next } => assert!(nearest > 0.0 && next < 2.0 * nearest, "{e}"),
+        other => panic!("{other:?}"),
+    }
+    // Far from every assembly: refused as well (all about equally far).
+    let far = Point2::new(50.0, 50.0);
+    let e = triad::position(&case.triad, &case.k, &Near::new(far, far, far)).unwrap_err();
+    assert!(matches!(e.fault, Fault::NotNear { .. }), "{e}");
+    assert!(
+        e.to_string()
+            .starts_with("triad: no assembly is clearly the one asked for"),
+        "{e}"
+    );
+}
+
+#[test]
+fn degenerate_inputs_give_typed_errors() {
+    let base = stephenson(-0.5);
+    let hint = Near::new(base.k[0], base.k[1], base.k[2]);
+    let fault = |c: &Case| triad::position(&c.triad, &c.k, &hint).unwrap_err().fault;
+    let mut c = base;
+    c.triad.l1 = 0.0;
+    assert!(matches!(fault(&c), Fault::NonPositive { value, .. } if value == 0.0));
+    c = base;
+    c.triad.l3 = -1.0;
+    assert!(matches!(fault(&c), Fault::NonPositive { .. }));
+    c = base;
+    c.triad.ab = f64::NAN;
+    assert!(matches!(fault(&c), Fault::NonFinite { .. }));
+    c = base;
+    c.triad.p_local.y = f64::INFINITY;
+    assert!(matches!(fault(&c), Fault::NonFinite { .. }));
+    c = base;
+    c.k[2].x = f64::NAN;
+    assert!(matches!(fault(&c), Fault::NonFinite { .. }));
+    // Opposite huge known points: their distance overflows.
+    c = base;
+    (c.k[0].x, c.k[1].x) = (-1.5e308, 1.5e308);
+    assert!(matches!(fault(&c), Fault::NonFinite { .. }));
+    // K3 out of reach: CannotAssemble with a finite miss of about the gap.
+    c = base;
+    c.k[2] = Point2::new(10.0, 0.0);
+    match fault(&c) {
+        Fault::CannotAssemble { miss, reach } => {
+            assert!(miss > 9.0 && miss < 10.0 && reach == 0.28, "{miss} {reach}")
+        }
+        other => panic!("{other:?}"),
+    }
+    // The four-bar K1-A-B-K2 cannot close: |A - K2| >= 1 - 0.08 = 0.92
+    // misses the reach 0.26 + 0.20 = 0.46 by 0.46.
+    c = base;
+    c.k[1] = Point2::new(1.0, 0.0);
+    match fault(&c) {
+        Fault::CannotAssemble { miss, reach } => {
+            assert!(
+                (miss - 0.46).abs() < 1e-15 && (reach - 0.46).abs() < 1e-15,
+                "{miss} {reach}"
+            )
+        }
+        other => panic!("{other:?}"),
+    }
+    // A NaN pose hint.
+    let nan = Point2::new(f64::NAN, 0.0);
+    let e = triad::position(&base.triad, &base.k, &Near::new(nan, nan, nan)).unwrap_err();
+    assert!(matches!(e.fault, Fault::NonFinite { .. }));
+    // A singular pose (jacobian 0) has no rates; NaN loads no reactions.
+    let pos = triad::assemblies(&base.triad, &base.k)
+        .unwrap()
+        .iter()
+        .next()
+        .copied()
+        .unwrap();
+    let singular = TriadPosition {
+        jacobian: 0.0,
+        ..pos
+    };
+    let e = triad::velocity(&base.triad, &singular, None, None, None).unwrap_err();
+    assert!(matches!(e.fault, Fault::Singular { .. }));
+    let bad = Wrench::new(Vector2::new(f64::NAN, 0.0), 0.0);
+    let loads = TriadLoads {
+        leg1: bad,
+        leg2: bad,
+        leg3: bad,
+        ternary: bad,
+    };
+    assert!(matches!(
+        triad::reactions(&pos, &loads).unwrap_err().fault,
+        Fault::NonFinite { .. }
+    ));
+    let e = triad::velocity(
+        &base.triad,
+        &pos,
+        Some(&Vector2::new(f64::NAN, 0.0)),
+        None,
+        None,
+    );
+    assert!(matches!(e.unwrap_err().fault, Fault::NonFinite { .. }));
+}
+
+/// Every number an `Ok` carries is finite.
+fn finite_pose(p: &TriadPosition<f64>) -> bool {
+    [p.a, p.b, p.p]
+        .iter()
+        .all(|q| q.x.is_finite() && q.y.is_finite())
+        && [p.r1, p.r2, p.r3, p.ab, p.ap, p.axis]
+            .iter()
+            .all(|v| v.x.is_finite() && v.y.is_finite())
+        && p.jacobian.is_finite()
+}
+
+#[test]
+fn absurd_inputs_never_panic_or_return_nan() {
+    let mut rng = Rng(0xabad_1dea_0000_0006);
+    let specials = [
+        0.0,
+        -0.0,
+        1e-300,
+        1e300,
+        f64::NAN,
+        f64::INFINITY,
+        -1.0,
+        5e-324,
+        f64::MAX,
+    ];
+    let pick = |rng: &mut Rng| {
+        if rng.next() < 0.3 {
+            specials[(rng.next() * specials.len() as f64) as usize % specials.len()]
+        } else {
+            rng.range(-2.0, 2.0)
+        }
+    };
+    let (mut ok, mut err) = (0, 0);
+    for _ in 0..3000 {
+        let mut x = || pick(&mut rng);
+        // Lengths mostly positive (so the search itself runs), specials included.
+        let triad = Triad {
+            l1: x().abs(),
+            l2: x().abs(),
+            l3: x().abs(),
+            ab: x().abs(),
+            p_local: Vector2::new(x(), x()),
+        };
+        let k = [
+            Point2::new(x(), x()),
+            Point2::new(x(), x()),
+            Point2::new(x(), x()),
+        ];
+        let hint = Near::new(
+            Point2::new(x(), x()),
+            Point2::new(x(), x()),
+            Point2::new(x(), x()),
+        );
+        match triad::assemblies(&triad, &k) {
+            Ok(all) => {
+                for p in all.iter() {
+                    assert!(finite_pose(p), "{triad:?} {k:?} {p:?}");
+                    if let Ok(v) =
+                        triad::velocity(&triad, p, Some(&Vector2::new(1.0, 0.0)), None, None)
+                    {
+                        assert!(v.omega.is_finite() && v.va.x.is_finite() && v.omega1.is_finite());
+                    }
+                    if let Ok(q) = triad::position_near(&triad, &k, p) {
+                        assert!(finite_pose(&q));
+                    }
+                }
+            }
+            Err(_) => err += 1,
+        }
+        match triad::position(&triad, &k, &hint) {
+            Ok(p) => {
+                assert!(finite_pose(&p));
+                ok += 1;
+            }
+            Err(e) => assert!(!e.to_string().is_empty()),
+        }
+    }
+    // Closing triads at extreme, not power-of-two, scales and far from the
+    // origin: every assembly found is finite, and where the count matches
+    // the unit-scale one the joints agree to 1e-12 relative (the inputs'
+    // rounding moves them by eps / conditioning).
+    let mut compared = 0;
+    for i in 0..200 {
+        let case = closing_case(&mut rng);
+        let s = [1e-300, 3.7e-150, 1.3, 2.9e150, 1e300][i % 5];
+        let offset = [0.0, 1e3, -7e5][i % 3] * s;
+        let t = &case.triad;
+        let triad = Triad {
+            l1: t.l1 * s,
+            l2: t.l2 * s,
+            l3: t.l3 * s,
+            ab: t.ab * s,
+            p_local: t.p_local * s,
+        };
+        let k = case
+            .k
+            .map(|p| Point2::new(p.x * s + offset, p.y * s + offset));
+        let unit_scale: Vec<_> = triad::assemblies(t, &case.k)
+            .unwrap()
+            .iter()
+            .copied()
+            .collect();
+        let all: Vec<_> = triad::assemblies(&triad, &k)
+            .unwrap()
+            .iter()
+            .copied()
+            .collect();
+        assert!(all.iter().all(finite_pose));
+        if all.len() == unit_scale.len() && offset == 0.0 {
+            for q in &unit_scale {
+                let best = all
+                    .iter()
+                    .map(|p| {
+                        (p.a.coords / s - q.a.coords).norm() + (p.p.coords / s - q.p.coords).norm()
+                    })
+                    .fold(f64::INFINITY, f64::min);
+                if q.jacobian.abs() > 1e-2 {
+                    assert!(best < 1e-12 * case.scale(), "{best:e} at scale {s:e}");
+                    compared += 1;
+                }
+            }
+        }
+    }
+    println!("absurd inputs: {ok} assembled, {err} input errors, no panic, no NaN; {compared} assemblies at extreme scales agree");
+}
+
+#[test]
+fn positions_scale_exactly_with_powers_of_two() {
+    let base = stephenson(-0.6);
+    let reference: Vec<_> = triad::assemblies(&base.triad, &base.k)
+        .unwrap()
+        .iter()
+        .copied()
+        .collect();
+    assert!(!reference.is_empty());
+    for k in (-1000..=1000).step_by(50) {
+        let s = 2f64.powi(k);
+        let t = &base.triad;
+        let triad = Triad {
+            l1: t.l1 * s,
+            l2: t.l2 * s,
+            l3: t.l3 * s,
+            ab: t.ab * s,
+            p_local: t.p_local * s,
+        };
+        let known = base.k.map(|p| Point2::from(p.coords * s));
+        let all: Vec<_> = triad::assemblies(&triad, &known)
+            .unwrap()
+            .iter()
+            .copied()
+            .collect();
+        assert_eq!(all.len(), reference.len(), "2^{k}");
+        for (p, q) in all.iter().zip(&reference) {
+            // Bit for bit: the search runs in a frame scaled by a power of two.
+            assert_eq!((p.a, p.b, p.p), (q.a * s, q.b * s, q.p * s), "2^{k}");
+            assert_eq!((p.axis, p.jacobian), (q.axis, q.jacobian), "2^{k}");
+        }
+    }
+}
+
+#[test]
+fn single_precision_finds_the_same_assembly() {
+    let case = stephenson((-30.0f64).to_radians());
+    let t = &case.triad;
+    let triad = Triad {
+        l1: t.l1 as f32,
+        l2: t.l2 as f32,
+        l3: t.l3 as f32,
+        ab: t.ab as f32,
+        p_local: t.p_local.cast::<f32>(),
+    };
+    let k = case.k.map(|p| p.cast::<f32>());
+    let all64: Vec<_> = triad::assemblies(&case.triad, &case.k)
+        .unwrap()
+        .iter()
+        .copied()
+        .collect();
+    let all32 = triad::assemblies(&triad, &k).unwrap();
+    assert_eq!(all32.len(), all64.len());
+    for p in &all64 {
+        let hint = Near::new(p.a.cast::<f32>(), p.b.cast::<f32>(), p.p.cast::<f32>());
+        let q = triad::position(&triad, &k, &hint).unwrap();
+        // f32 inputs are rounded to 6e-8 relative; the assembly moves by
+        // that over its conditioning (|jacobian| >= 0.05 here): 1e-5 m.
+        let err = (q.a.cast::<f64>() - p.a)
+            .norm()
+            .max((q.p.cast::<f64>() - p.p).norm());
+        assert!(err < 1e-5, "{err:e}");
+    }
+}

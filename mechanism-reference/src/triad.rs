@@ -337,7 +337,12 @@ pub fn det4(m: &[[Dd; 4]; 4]) -> Dd {
     let mut det = Dd::ONE;
     for k in 0..4 {
         let p = (k..4)
-            .max_by(|&i, &j| a[i][k].abs().partial_cmp(&a[j][k].abs()).unwrap())
+            .max_by(|&i, &j| {
+                a[i][k]
+                    .abs()
+                    .partial_cmp(&a[j][k].abs())
+                    .unwrap_or(core::cmp::Ordering::Equal)
+            })
             .unwrap_or(k);
         if a[p][k].hi == 0.0 {
             return Dd::ZERO;
@@ -347,11 +352,11 @@ pub fn det4(m: &[[Dd; 4]; 4]) -> Dd {
             det = -det;
         }
         det *= a[k][k];
-        for i in k + 1..4 {
-            let f = a[i][k] / a[k][k];
-            for j in k..4 {
-                let s = f * a[k][j];
-                a[i][j] -= s;
+        let pivot = a[k];
+        for row in a.iter_mut().skip(k + 1) {
+            let f = row[k] / pivot[k];
+            for (x, &p) in row.iter_mut().zip(&pivot).skip(k) {
+                *x -= f * p;
             }
         }
     }
