@@ -569,9 +569,9 @@ fn loops<T: Real>(f: &Frame<T>) -> Result<Loops<T>, (T, T)> {
     Ok((out, psi))
 }
 
-/// A point of a loop at `t`: the Newton state and the residual
+/// A point of a loop at `t`: the sample and the residual
 /// `|P - K3| - l3` (normalized); `None` where `A` meets `K2`.
-fn curve<T: Real>(f: &Frame<T>, lp: &Loop<T>, psi: T, t: T) -> Option<(State<T>, T)> {
+fn curve<T: Real>(f: &Frame<T>, lp: &Loop<T>, psi: T, t: T) -> Option<(Sample<T>, T)> {
     let (theta, sign) = match *lp {
         Loop::Full { sign } => (psi + t, sign),
         Loop::Arc { mid, half } => {
@@ -594,7 +594,16 @@ fn curve<T: Real>(f: &Frame<T>, lp: &Loop<T>, psi: T, t: T) -> Option<(State<T>,
     let e = ab / f.c;
     let (_, ap) = f.offsets(&e);
     let res = length(&(a + ap - f.k3)) - f.l3;
-    res.finite().then_some(([a.x, a.y, angle(&e)], res))
+    res.finite().then_some(((a, e), res))
+}
+
+/// A point of a loop: `A` and the ternary's unit axis (normalized frame).
+type Sample<T> = (Vector2<T>, Vector2<T>);
+
+/// The Newton state at a sample (the axis's angle taken only here, for the
+/// few samples that start a polish).
+fn state<T: Real>((a, e): Sample<T>) -> State<T> {
+    [a.x, a.y, angle(&e)]
 }
 
 /// Finds every assembly (see the module documentation).
@@ -654,13 +663,13 @@ fn scan<T: Real>(f: &Frame<T>, lp: &Loop<T>, psi: T, found: &mut Assemblies<T>, 
                 *least = abs(r);
             }
             if r == T::zero() {
-                add_root(f, x, found);
+                add_root(f, state(x), found);
             }
             if let Some((_, rn)) = next {
                 if (r < T::zero() && rn > T::zero()) || (r > T::zero() && rn < T::zero()) {
                     let t = bracket(f, lp, psi, at(j), at(j) + step, r, rn);
                     if let Some((xt, _)) = curve(f, lp, psi, t) {
-                        add_root(f, xt, found);
+                        add_root(f, state(xt), found);
                     }
                 }
             }
@@ -743,7 +752,7 @@ fn minimum<T: Real>(
     for tau in starts.into_iter().flatten() {
         if abs(tau) <= T::lit(1.5) {
             if let Some((x, _)) = curve(f, lp, psi, t + tau * step) {
-                add_root(f, x, found);
+                add_root(f, state(x), found);
             }
         }
     }
