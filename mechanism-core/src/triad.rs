@@ -888,22 +888,30 @@ pub fn position_near<T: Real>(
         Err(e) if !matches!(e.fault, Fault::NotNear { .. }) => return Err(e),
         Err(_) => {}
     }
-    let f = Frame::new(triad, k)?;
-    let all = search(&f);
+    fallback(&Frame::new(triad, k)?, previous)
+}
+
+/// [`position_near`]'s full search: the nearest assembly to `previous` on
+/// its side of the branch points, within the jump and clearly nearest.
+fn fallback<T: Real>(
+    f: &Frame<T>,
+    previous: &TriadPosition<T>,
+) -> Result<TriadPosition<T>, Error<T>> {
+    let all = search(f);
     if all.is_empty() {
         return Err(all.none_error());
     }
     let near = Near::of(previous);
     let side = all.iter().filter(|q| same_side(q, previous));
     let inf = T::lit(f64::INFINITY);
-    let Some((pos, d, next)) = nearest(&f, side, &near) else {
-        return Err(not_near(&f, inf, f.jump()));
+    let Some((pos, d, next)) = nearest(f, side, &near) else {
+        return Err(not_near(f, inf, f.jump()));
     };
     if d > f.jump() {
-        return Err(not_near(&f, d, f.jump()));
+        return Err(not_near(f, d, f.jump()));
     }
     if next < T::lit(NEAR_FACTOR) * d {
-        return Err(not_near(&f, d, next));
+        return Err(not_near(f, d, next));
     }
     Ok(pos)
 }
@@ -1107,4 +1115,67 @@ pub fn reactions<T: Real>(
         p: v(10),
         min_pivot_ratio: s.min_pivot_ratio,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The Stephenson III triad of issue 22 at link 6's angle `phi` (rad).
+    fn stephenson(phi: f64) -> (Triad<f64>, [Point2<f64>; 3]) {
+        let d = 40f64.to_radians();
+        let triad = Triad {
+            l1: 0.08,
+            l2: 0.20,
+            l3: 0.28,
+            ab: 0.26,
+            p_local: Vector2::new(0.15 * d.cos(), 0.15 * d.sin()),
+        };
+        let c = Point2::new(0.05 + 0.24 * phi.cos(), 0.42 + 0.24 * phi.sin());
+        (triad, [Point2::new(0.0, 0.0), Point2::new(0.30, 0.0), c])
+    }
+
+    /// The search that [`position_near`] falls back on when Newton fails
+    /// gives, for a small step, the assembly Newton finds (bit for bit: both
+    /// end in the same polish); from a pose claimed to lie on the other
+    /// side of the branch points it takes the nearest assembly there, and
+    /// from a pose beyond the jump limit it refuses (`NotNear`), never
+    /// returning the nearest assembly of the wrong side.
+    #[test]
+    fn fallback_keeps_the_side_and_the_jump_limit() {
+        let phi0 = (-40.0f64).to_radians();
+        let (triad, k) = stephenson(phi0);
+        let f = Frame::new(&triad, &k).unwrap();
+        let all = search(&f);
+        assert_eq!(all.len(), 4);
+        let start = *all.iter().next().unwrap();
+        let (t1, k1) = stephenson(phi0 + 0.5f64.to_radians());
+        let f1 = Frame::new(&t1, &k1).unwrap();
+        let by_newton = refine(&t1, &k1, &start).unwrap();
+        let by_search = fallback(&f1, &start).unwrap();
+        assert!(f1.distance(&by_newton, &Near::of(&by_search)) < 1e-15);
+        assert!(by_search.jacobian * start.jacobian > 0.0);
+        // Claimed on the other side: the nearest there, or NotNear.
+        let flipped = TriadPosition {
+            jacobian: -start.jacobian,
+            ..start
+        };
+        match fallback(&f1, &flipped) {
+            Ok(p) => assert!(p.jacobian * start.jacobian < 0.0),
+            Err(e) => assert!(matches!(e.fault, Fault::NotNear { .. })),
+        }
+        // Beyond the jump: a pose 0.1 m off (the limit is 0.04 m).
+        let off = Vector2::new(0.1, 0.0);
+        let far = TriadPosition {
+            a: start.a + off,
+            b: start.b + off,
+            p: start.p + off,
+            ..start
+        };
+        let e = fallback(&f1, &far).unwrap_err();
+        assert!(
+            matches!(e.fault, Fault::NotNear { next, .. } if next == 0.04),
+            "{e:?}"
+        );
+    }
 }
