@@ -97,13 +97,13 @@ pub enum Fault<T = f64> {
     },
     /// A group with several assemblies (the triad) was asked for the one
     /// nearest a given pose, and no assembly is clearly that one: the nearest
-    /// is `nearest` from the pose (L, root-sum-square over the joints) and the
-    /// next `next`, more than half the distance to the nearest's (the nearest
-    /// must be at most half as far as the next); or, tracking, the followed
-    /// assembly has met another one and vanished (a branch point): then
-    /// `nearest` is the jump to the closest assembly left on the same side of
-    /// the branch point (infinite when none is left) and `next` the largest
-    /// jump accepted.
+    /// is `nearest` from the pose (L, root-sum-square over the joints) and
+    /// either the next is `next`, less than twice as far, or `nearest`
+    /// exceeds the largest distance accepted, `next` (half the group's
+    /// shortest dimension). Tracking, the same when the followed assembly
+    /// has met another one and vanished (a branch point): `nearest` is then
+    /// the jump to the closest assembly left on the same side of the branch
+    /// point (infinite when none is left).
     NotNear {
         /// Distance from the pose to the nearest assembly (L).
         nearest: T,
@@ -399,8 +399,9 @@ impl<T: Real> Fault<T> {
             Fault::NotNear { nearest, next } => write!(
                 f,
                 "no assembly is clearly the one asked for: the nearest is {} from the \
-                 given pose and the next {} (a clear match is at most half as far as \
-                 the next); give the joints' approximate positions more closely, or, \
+                 given pose and the next {} (or the largest distance accepted; a clear \
+                 match is at most half as far as the next and within half the shortest \
+                 link); give the joints' approximate positions more closely, or, \
                  tracking, the followed assembly met another one and vanished here",
                 Rounded(nearest),
                 Rounded(next)

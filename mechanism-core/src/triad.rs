@@ -64,8 +64,9 @@
 //! positions of `A`, `B` and `P` ("at this input the joints are about
 //! here"), and returns the assembly nearest to it (root-sum-square distance
 //! over the three joints). It never returns a different one silently: no
-//! assembly is `CannotAssemble`, and a nearest one that is not at most half
-//! as far ([`NEAR_FACTOR`]) as the next is `NotNear`. [`position_near`]
+//! assembly is `CannotAssemble`, and a nearest one farther than
+//! [`JUMP_FRACTION`] of the shortest dimension, or not at most half as far
+//! ([`NEAR_FACTOR`]) as the next, is `NotNear`. [`position_near`]
 //! tracks an assembly from a previous pose: Newton from it, accepted when it
 //! converges, the Jacobian's determinant keeps its sign (no branch point was
 //! crossed) and the joints moved at most [`JUMP_FRACTION`] of the shortest
@@ -834,7 +835,10 @@ fn nearest<'a, T: Real>(
 /// `CannotAssemble` when the triad does not close at this input (`miss`:
 /// how far the four-bar `K1 - A - B - K2` misses closing, or, when it
 /// closes, the least `| |P - K3| - l3 |` sampled; L); `NotNear` when the
-/// nearest assembly is not at most half as far from `near` as the next.
+/// nearest assembly is farther from `near` than [`JUMP_FRACTION`] of the
+/// shortest dimension (then the intended one may not exist at this input:
+/// even a single assembly is not returned), or not at most half as far as
+/// the next.
 pub fn position<T: Real>(
     triad: &Triad<T>,
     k: &[Point2<T>; 3],
@@ -848,6 +852,9 @@ pub fn position<T: Real>(
     let Some((pos, d, next)) = nearest(&f, all.iter(), near) else {
         return Err(all.none_error());
     };
+    if d > f.jump() {
+        return Err(not_near(&f, d, f.jump()));
+    }
     if next < T::lit(NEAR_FACTOR) * d {
         return Err(not_near(&f, d, next));
     }

@@ -680,7 +680,11 @@ fn nearest_selection_refuses_unclear_poses() {
     // Far from every assembly: refused as well (all about equally far).
     let far = Point2::new(50.0, 50.0);
     let e = triad::position(&case.triad, &case.k, &Near::new(far, far, far)).unwrap_err();
-    assert!(matches!(e.fault, Fault::NotNear { .. }), "{e}");
+    // Beyond half the shortest link (0.04 m): refused even if it were alone.
+    assert!(
+        matches!(e.fault, Fault::NotNear { next, .. } if next == 0.04),
+        "{e}"
+    );
     assert!(
         e.to_string()
             .starts_with("triad: no assembly is clearly the one asked for"),
