@@ -57,7 +57,7 @@
 //! tracking form is a few Newton steps (under 1 us).
 //!
 //! Everything is computed in a frame moved to `K1` and scaled by the power
-//! of two nearest the longest dimension (exact), so results scale exactly
+//! of two at or below the longest dimension (exact), so results scale exactly
 //! with powers of two and no square of a length overflows.
 //!
 //! **Which assembly.** [`position`] takes a [`Near`]: the approximate
@@ -80,8 +80,9 @@
 //! `r2 . (vA + w perp(ab)) = r2 . vK2`, `r3 . (vA + w perp(ap)) = r3 . vK3`
 //! (`ri` the leg vectors `A - K1`, `B - K2`, `P - K3`; `w` the ternary's
 //! angular velocity): the position Newton's 3x3 Jacobian, solved by
-//! [`crate::linsolve`] after its determinant is checked against Hadamard's
-//! bound `l1 l2 l3 (ab + |ap|)`. The legs' rates follow as
+//! [`crate::linsolve`] after its determinant is checked against its bound
+//! `l1 l2 l3 (ab + |ap|)` (expanding along the ternary's column: `|r2 x ab|
+//! <= l2 ab`, `|r3 x ap| <= l3 |ap|`, each minor `<= l1 l3` or `l1 l2`). The legs' rates follow as
 //! `omega_i = cross(ri, v_joint - vKi) / li^2`. Accelerations: the same
 //! matrix, right-hand side with the centripetal terms.
 //!
@@ -163,7 +164,7 @@ pub struct TriadPosition<T: Real> {
     /// The ternary's unit axis, along `A -> B`: `(cos, sin)` of its angle.
     pub axis: Vector2<T>,
     /// The Jacobian's determinant of the three leg equations in `(A, phi)`
-    /// relative to Hadamard's bound `l1 l2 l3 (ab + |ap|)`, in `[-1, 1]`:
+    /// relative to its bound `l1 l2 l3 (ab + |ap|)`, in `[-1, 1]`:
     /// its sign tells the assemblies on either side of a branch point apart;
     /// its magnitude is the conditioning (0 at a branch point, where two
     /// assemblies meet and the rates are undefined).
