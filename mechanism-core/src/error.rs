@@ -34,6 +34,9 @@ pub enum Primitive {
     Prp,
     /// Class II group revolute-prismatic-prismatic.
     Rpp,
+    /// Class III group: a ternary link on three revolute legs
+    /// ([`crate::triad`]).
+    Triad,
     /// The linear solver ([`crate::linsolve`]).
     LinearSystem,
 }
@@ -51,6 +54,7 @@ impl Primitive {
             Primitive::Rpr => "RPR",
             Primitive::Prp => "PRP",
             Primitive::Rpp => "RPP",
+            Primitive::Triad => "triad",
             Primitive::LinearSystem => "linear system",
         }
     }
@@ -90,6 +94,21 @@ pub enum Fault<T = f64> {
         what: &'static str,
         /// The value given.
         value: T,
+    },
+    /// A group with several assemblies (the triad) was asked for the one
+    /// nearest a given pose, and no assembly is clearly that one: the nearest
+    /// is `nearest` from the pose (L, root-sum-square over the joints) and
+    /// either the next is `next`, less than twice as far, or `nearest`
+    /// exceeds the largest distance accepted, `next` (half the group's
+    /// shortest dimension). Tracking, the same when the followed assembly
+    /// has met another one and vanished (a branch point): `nearest` is then
+    /// the jump to the closest assembly left on the same side of the branch
+    /// point (infinite when none is left).
+    NotNear {
+        /// Distance from the pose to the nearest assembly (L).
+        nearest: T,
+        /// Distance to the next one, or the largest jump accepted (L).
+        next: T,
     },
     /// An input that must be zero or positive (a moment of inertia) was
     /// negative.
@@ -157,6 +176,10 @@ impl<T: Real> Fault<T> {
             Fault::Negative { what, value } => Fault::Negative {
                 what,
                 value: value.as_f64(),
+            },
+            Fault::NotNear { nearest, next } => Fault::NotNear {
+                nearest: nearest.as_f64(),
+                next: next.as_f64(),
             },
         }
     }
@@ -373,6 +396,16 @@ impl<T: Real> Fault<T> {
             Fault::Negative { what, value } => {
                 write!(f, "{what} must be zero or positive, got {}", Rounded(value))
             }
+            Fault::NotNear { nearest, next } => write!(
+                f,
+                "no assembly is clearly the one asked for: the nearest is {} from the \
+                 given pose and the next {} (or the largest distance accepted; a clear \
+                 match is at most half as far as the next and within half the shortest \
+                 link); give the joints' approximate positions more closely, or, \
+                 tracking, the followed assembly met another one and vanished here",
+                Rounded(nearest),
+                Rounded(next)
+            ),
         }
     }
 }

@@ -5,6 +5,9 @@
 //! - [`link`]: points fixed on a link and rigid-body rate relations;
 //! - [`dyad`]: the five class II Assur groups RRR, RRP, RPR, PRP, RPP, each with
 //!   `position`, `velocity` and `acceleration` (and kinetostatics in [`force`]);
+//! - [`triad`]: the class III group of the Stephenson III six-bar (a ternary
+//!   link on three legs): every assembly by a search, the one nearest a given
+//!   pose, tracking, rates and the 12x12 reactions;
 //! - [`linsolve`]: Gaussian elimination with row scaling and partial pivoting on
 //!   fixed-size arrays;
 //! - [`error`]: the typed errors.
@@ -33,6 +36,7 @@ pub mod scalar;
 pub mod sincos64;
 pub mod structure;
 pub mod sweep;
+pub mod triad;
 pub mod trig;
 pub mod trig64;
 
