@@ -211,3 +211,58 @@ fn debug_shows_the_users_fields_only() {
         "{shown}"
     );
 }
+
+mechanism! {
+    /// Slider-crank with a mass on the coupler and a load on the slider.
+    pub Press {
+        let O = ground(0.0, 0.0);
+        let line = guide(O, 0 deg);
+        let A = crank(O, 0.05, theta) as crank;
+        let B = rrp(A, 0.2, line, plus) as (rod, ram) slide s;
+        let G = point(rod, from A, 0.1, 0 deg);
+        mass rod { m = 1.5, at = G, j = 0.005 }
+        gravity (0.0, -9.81);
+        force at B on ram = (-200.0, 0.0);
+    }
+}
+
+/// The forces struct reads by name too: a revolute reaction as a force
+/// vector, a prismatic pair's as its normal force vector and its couple, the
+/// crank's driving torque as a moment, equal to the struct's own fields.
+#[test]
+fn forces_read_by_name_with_quantities() {
+    let press = Press::<f64>::default();
+    let s = press
+        .solve(
+            &PressInput { theta: 0.4 },
+            &PressInput { theta: 10.0 },
+            &PressInput { theta: 0.0 },
+        )
+        .unwrap();
+    let f = &s.forces;
+    let fields = PressForces::<f64>::FIELDS;
+    let find = |n: &str| {
+        fields
+            .iter()
+            .find(|x| x.name == n)
+            .map(|x| (x.quantity, x.planar))
+    };
+    assert_eq!(find("drive_theta"), Some((Quantity::Moment, false)));
+    assert_eq!(f.get("drive_theta"), Some(Value::Scalar(f.drive_theta)));
+    let prismatic = fields
+        .iter()
+        .find(|x| x.name.ends_with(".moment"))
+        .expect("the ram's prismatic pair");
+    assert_eq!(prismatic.quantity, Quantity::Moment);
+    let revolute = fields
+        .iter()
+        .find(|x| x.planar && !x.name.contains('.'))
+        .expect("a revolute reaction");
+    assert_eq!(revolute.quantity, Quantity::Force);
+    assert!(matches!(f.get(revolute.name), Some(Value::Vector(_))));
+    assert_eq!(find("power_residual"), Some((Quantity::Ratio, false)));
+    assert_eq!(
+        f.get("power_residual"),
+        Some(Value::Scalar(f.power_residual))
+    );
+}

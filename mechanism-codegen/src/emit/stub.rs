@@ -150,7 +150,12 @@ fn describe_stub(model: &Model) -> TokenStream {
     let name = &model.name;
     let text = name.to_string();
     let st = quote!(::mechanism::structure);
-    let fields = ["Position", "Velocity", "Acceleration"].map(|s| format_ident!("{}{}", name, s));
+    let forces = model.kinetics.declared || model.level == Level::Forces;
+    let fields: Vec<Ident> = ["Position", "Velocity", "Acceleration", "Forces"]
+        .iter()
+        .take(if forces { 4 } else { 3 })
+        .map(|s| format_ident!("{}{}", name, s))
+        .collect();
     quote! {
         impl<T: ::mechanism::Real> #st::Describe for #name<T> {
             const STRUCTURE: #st::Structure = #st::Structure {

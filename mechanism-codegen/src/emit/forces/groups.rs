@@ -3,7 +3,7 @@
 //! is attached to, its fields in the forces struct, its conditioning and its
 //! driving power.
 
-use super::{ForceEmitter, Reaction};
+use super::{ForceEmitter, Held, Reaction};
 use crate::emit::tag;
 use crate::model::{Kind, Stmt};
 use proc_macro2::TokenStream;
@@ -25,6 +25,7 @@ fn revolute(rx: &Ident, from: &Option<String>, to: &Ident, at: &Ident, field: &s
         ty: quote!(::mechanism::Vector2<T>),
         value: quote!(#rx.#field),
         doc: format!("Force of `{from}` on `{to}` at `{at}` (force units, global frame)."),
+        held: Held::Force,
     }
 }
 
@@ -46,17 +47,24 @@ fn prismatic(
         doc: format!(
             "Reaction of the prismatic pair of `{from}` on `{to}`: normal force (signed, along the left normal of the sliding direction) and couple about `{about}` (counter-clockwise positive)."
         ),
+        held: Held::Prismatic,
     }
 }
 
 /// The driving effort of `input`, field `field` of `rx`, documented by `doc`.
 fn drive(rx: &Ident, input: &Ident, field: &str, doc: String) -> Reaction {
+    let held_field = field;
     let field = format_ident!("{}", field);
     Reaction {
         name: format_ident!("drive_{}", input),
         ty: quote!(T),
         value: quote!(#rx.#field),
         doc,
+        held: if held_field == "torque" {
+            Held::Torque
+        } else {
+            Held::Push
+        },
     }
 }
 

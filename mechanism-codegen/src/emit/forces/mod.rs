@@ -40,6 +40,21 @@ struct Reaction {
     ty: TokenStream,
     value: TokenStream,
     doc: String,
+    held: Held,
+}
+
+/// What a reaction field holds, as `mechanism::structure::Fields` reads it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Held {
+    /// A revolute joint's force (`Vector2`).
+    Force,
+    /// A prismatic pair's `PrismaticReaction`: read as `NAME.force` (the
+    /// normal force as a vector) and `NAME.moment` (its couple).
+    Prismatic,
+    /// A driver's torque (a moment).
+    Torque,
+    /// A slider's or an actuator's force along its line (a scalar).
+    Push,
 }
 
 struct ForceEmitter<'a> {
@@ -168,7 +183,8 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
     unique_names(&mut em.reactions);
     let names = TypeNames::of(model);
     let loads = loads_struct(model, &names);
-    let items = forces_struct(model, &names, &em.reactions, loads.item);
+    let mut items = forces_struct(model, &names, &em.reactions, loads.item);
+    items.extend(forces_fields(&names, &em.reactions));
     let methods = forces_method(&names, &em, &loads.param);
     ForcesCode {
         items,
@@ -328,6 +344,56 @@ fn forces_struct(
     }
 }
 
+/// The forces struct's `Fields` impl (`mechanism::structure`): every
+/// reaction and effort by name with its quantity, a prismatic pair's as
+/// `NAME.force` and `NAME.moment`, then `condition` and `power_residual`.
+fn forces_fields(names: &TypeNames, reactions: &[Reaction]) -> TokenStream {
+    let st = quote!(::mechanism::structure);
+    let forces_ty = &names.forces;
+    let mut infos = Vec::new();
+    let mut arms = Vec::new();
+    let mut entry = |name: String, quantity: &str, planar: bool, value: TokenStream| {
+        let q = format_ident!("{}", quantity);
+        infos
+            .push(quote!(#st::Field { name: #name, quantity: #st::Quantity::#q, planar: #planar }));
+        arms.push(quote!(#name => ::core::option::Option::Some(#value),));
+    };
+    for r in reactions {
+        let (n, text) = (&r.name, r.name.to_string());
+        match r.held {
+            Held::Force => entry(text, "Force", true, quote!(#st::Value::Vector(self.#n))),
+            Held::Prismatic => {
+                let force = quote!(#st::Value::Vector(self.#n.force));
+                entry(format!("{text}.force"), "Force", true, force);
+                let moment = quote!(#st::Value::Scalar(self.#n.moment));
+                entry(format!("{text}.moment"), "Moment", false, moment);
+            }
+            Held::Torque => entry(text, "Moment", false, quote!(#st::Value::Scalar(self.#n))),
+            Held::Push => entry(text, "Force", false, quote!(#st::Value::Scalar(self.#n))),
+        }
+    }
+    for extra in ["condition", "power_residual"] {
+        let f = format_ident!("{}", extra);
+        entry(
+            extra.to_string(),
+            "Ratio",
+            false,
+            quote!(#st::Value::Scalar(self.#f)),
+        );
+    }
+    quote! {
+        impl<T: ::mechanism::Real> #st::Fields<T> for #forces_ty<T> {
+            const FIELDS: &'static [#st::Field] = &[#(#infos),*];
+            fn get(&self, name: &::core::primitive::str) -> ::core::option::Option<#st::Value<T>> {
+                match name {
+                    #(#arms)*
+                    _ => ::core::option::Option::None,
+                }
+            }
+        }
+    }
+}
+
 /// The `forces` method: the emitter's code, then the struct's value.
 fn forces_method(
     names: &TypeNames,
@@ -467,6 +533,7 @@ mod tests {
             ty: quote!(T),
             value: quote!(x),
             doc: String::new(),
+            held: Held::Force,
         };
         let mut reactions = vec![
             reaction("r_ground_link2"),
