@@ -431,7 +431,7 @@ fn forces_method(
 
 #[cfg(test)]
 mod tests {
-    use super::{condition_code, power_code, unique_names, ForcesCode, Reaction};
+    use super::{condition_code, power_code, unique_names, ForcesCode, Held, Reaction};
     use crate::emit::test_support::{flat, four_bar, planned};
     use proc_macro2::TokenStream;
     use quote::{format_ident, quote};
