@@ -484,10 +484,15 @@ mod performance_batch {
     }
 }
 
+/// The tests that run samples writing to relative paths change the process'
+/// working directory: one at a time.
+static CWD: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
 /// docs/plots.md: both samples, with the data they assume made up here, run in
 /// a temporary directory (the drawing sample writes to relative paths).
 #[test]
 fn plots_samples_write_their_files() {
+    let _cwd = CWD.lock().unwrap_or_else(|e| e.into_inner());
     let dir = std::env::temp_dir().join(format!("doc_samples_plots_{}", std::process::id()));
     std::fs::create_dir_all(dir.join("target/plots/mine")).unwrap();
     std::env::set_current_dir(&dir).unwrap();
@@ -749,4 +754,50 @@ fn named_targets_and_paths_exist() {
         "names in the docs that do not exist:\n{}",
         bad.join("\n")
     );
+}
+
+mechanism::mechanism! {
+    /// The Jansen leg of `tests/describe.rs`, for the docs/plots.md sample.
+    pub JansenLeg {
+        let O = ground(0.0, 0.0);
+        let Z = ground(-38.0, -7.8);
+        let A = crank(O, 15.0, theta) as crank;
+        let B = rrr(A, 50.0, Z, 41.5, right) as (j, b);
+        let C = rrr(A, 61.9, Z, 39.3, left) as (k, c);
+        let D = rrr(B, 55.8, Z, 40.1, right) as (e, d);
+        let E = rrr(D, 39.4, C, 36.7, right) as (f, g);
+        let F = rrr(E, 65.7, C, 49.0, right) as (h, i);
+    }
+}
+
+/// docs/plots.md, "Any mechanism": the sample writes the animation and the
+/// table of a mechanism it has no drawing code for.
+#[test]
+fn any_mechanism_sample_writes_its_files() {
+    let _cwd = CWD.lock().unwrap_or_else(|e| e.into_inner());
+    let dir = std::env::temp_dir().join(format!("doc_samples_any_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let here = std::env::current_dir().unwrap();
+    std::env::set_current_dir(&dir).unwrap();
+    let written = any_sample();
+    std::env::set_current_dir(here).unwrap();
+    written.unwrap();
+    let svg = std::fs::read_to_string(dir.join("jansen.svg")).unwrap();
+    assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"));
+    let csv = std::fs::read_to_string(dir.join("jansen.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 74, "a header and 73 poses");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[rustfmt::skip] // verbatim from docs/plots.md
+fn any_sample() -> Result<(), Box<dyn std::error::Error>> {
+    let leg = JansenLeg::<f64>::default();
+    let poses: Vec<(f64, Option<JansenLegPosition>)> = (0..=72)
+        .map(|k| { let t = k as f64 * std::f64::consts::TAU / 72.0;
+                   (t, leg.position(&JansenLegInput { theta: t }).ok()) })
+        .collect();
+    mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", "cm", &poses, &["F"])?
+        .write_animation(4.0, "jansen.svg")?;
+    std::fs::write("jansen.csv", mechanism_plot::any::csv("theta", "rad", &poses))?;
+    Ok(())
 }
