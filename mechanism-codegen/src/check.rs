@@ -214,6 +214,22 @@ pub fn inputs(model: &Model, errors: &mut Errors) -> Vec<Input> {
                     show(hi)
                 ),
             );
+        } else if !(hi - lo).is_finite() || (hi - lo) / sweep::SAMPLES_1D as f64 <= 0.0 {
+            // The sweep steps by (hi - lo) / samples: a width that overflows
+            // (or a step that underflows) would leave it nothing to sample.
+            errors.push(
+                span,
+                format!(
+                    "the range of `{}`, ({}, {}), is too {} to sweep: its width hi - lo = {} and the sample step (width / {}) must be finite positive numbers; {} the range",
+                    decl.input,
+                    show(lo),
+                    show(hi),
+                    if (hi - lo).is_finite() { "narrow" } else { "wide" },
+                    show(hi - lo),
+                    sweep::SAMPLES_1D,
+                    if (hi - lo).is_finite() { "widen" } else { "narrow" },
+                ),
+            );
         } else if angle && hi - lo > 2.0 * PI * (1.0 + 1e-12) {
             errors.push(
                 span,
