@@ -217,17 +217,22 @@ pub fn inputs(model: &Model, errors: &mut Errors) -> Vec<Input> {
         } else if !(hi - lo).is_finite() || (hi - lo) / sweep::SAMPLES_1D as f64 <= 0.0 {
             // The sweep steps by (hi - lo) / samples: a width that overflows
             // (or a step that underflows) would leave it nothing to sample.
+            let sci = |x: f64| match angle {
+                true => format!("{:e} deg", x.to_degrees()),
+                false => format!("{x:e}"),
+            };
+            let (what, fix) = match (hi - lo).is_finite() {
+                true => ("its sample step (width / {n}) underflows to 0", "widen"),
+                false => ("its width hi - lo overflows an f64", "narrow"),
+            };
             errors.push(
                 span,
                 format!(
-                    "the range of `{}`, ({}, {}), is too {} to sweep: its width hi - lo = {} and the sample step (width / {}) must be finite positive numbers; {} the range",
+                    "the range of `{}`, ({}, {}), cannot be swept: {}; {fix} the range",
                     decl.input,
-                    show(lo),
-                    show(hi),
-                    if (hi - lo).is_finite() { "narrow" } else { "wide" },
-                    show(hi - lo),
-                    sweep::SAMPLES_1D,
-                    if (hi - lo).is_finite() { "widen" } else { "narrow" },
+                    sci(lo),
+                    sci(hi),
+                    what.replace("{n}", &sweep::SAMPLES_1D.to_string()),
                 ),
             );
         } else if angle && hi - lo > 2.0 * PI * (1.0 + 1e-12) {

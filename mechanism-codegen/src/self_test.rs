@@ -139,9 +139,8 @@ fn residuals(model: &Model, plan: &Plan, stmt: &Stmt) -> Vec<(String, TokenStrea
     let g = format_ident!("grp_{}", stmt.name);
     let mut r = Vec::new();
     let mut directions = Vec::new();
-    let mut push = |what: &str, code: TokenStream| {
-        r.push((format!("{name}: {what}"), code, Scale::Length))
-    };
+    let mut push =
+        |what: &str, code: TokenStream| r.push((format!("{name}: {what}"), code, Scale::Length));
     let link_axis = |link: &Ident| {
         let info = &plan.links[&link.to_string()];
         axis(&model.stmts[info.stmt], info.index)

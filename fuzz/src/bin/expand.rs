@@ -105,10 +105,7 @@ fn files(dir: &Path, out: &mut Vec<PathBuf>) {
             if path.file_name().is_some_and(|n| n != "target") {
                 files(&path, out);
             }
-        } else if path
-            .extension()
-            .is_some_and(|e| e == "rs" || e == "md")
-        {
+        } else if path.extension().is_some_and(|e| e == "rs" || e == "md") {
             out.push(path);
         }
     }
@@ -266,23 +263,115 @@ fn is_word(t: &Tok) -> bool {
 /// Numbers at the edges of `f64` and expressions that overflow or give NaN
 /// when folded, literal forms the language does not take, long chains.
 const EXTREME_NUMBERS: &[&str] = &[
-    "0", "0.0", "-0.0", "1e308", "-1e308", "1e-308", "5e-324", "1e309", "1.7976931348623157e308",
-    "(1e308 * 10.0)", "(1e200 * 1e200 - 1e200 * 1e200)", "(0.0 / 0.0)", "(1.0 / 0.0)",
-    "(1e-300 * 1e-300)", "(1e308 + 1e308)", "(-1e308 - 1e308)", "1u8", "0x10", "0b1",
-    "1.5f32", "2.0f64", "1_000.0", "18446744073709551616", "340282366920938463463374607431768211456",
-    "1e", "1.", ".5", "4294967296.0", "3.4e38", "1e-45",
+    "0",
+    "0.0",
+    "-0.0",
+    "1e308",
+    "-1e308",
+    "1e-308",
+    "5e-324",
+    "1e309",
+    "1.7976931348623157e308",
+    "(1e308 * 10.0)",
+    "(1e200 * 1e200 - 1e200 * 1e200)",
+    "(0.0 / 0.0)",
+    "(1.0 / 0.0)",
+    "(1e-300 * 1e-300)",
+    "(1e308 + 1e308)",
+    "(-1e308 - 1e308)",
+    "1u8",
+    "0x10",
+    "0b1",
+    "1.5f32",
+    "2.0f64",
+    "1_000.0",
+    "18446744073709551616",
+    "340282366920938463463374607431768211456",
+    "1e",
+    "1.",
+    ".5",
+    "4294967296.0",
+    "3.4e38",
+    "1e-45",
 ];
 
 /// Names that are Rust keywords, reserved in the generated code, or
 /// meaningful to the language.
 const WORDS: &[&str] = &[
-    "self", "Self", "super", "crate", "r#type", "r#fn", "r#match", "fn", "let", "const", "as",
-    "in", "mod", "struct", "impl", "dyn", "async", "await", "try", "union", "_", "T", "f64",
-    "pos", "vel", "acc", "input", "loads", "forces", "deg", "rad", "from", "left", "right",
-    "plus", "minus", "cos_sin", "ground", "guide", "crank", "slider", "actuator", "rrr", "rrp",
-    "rpr", "prp", "rpp", "point", "params", "analysis", "outputs", "dof", "mass", "gravity",
-    "force", "torque", "range", "allow", "singular", "slide", "along", "at", "on", "m", "j",
-    "position", "velocity", "acceleration", "grp_x", "in_x", "pos_x", "ü", "é", "__x",
+    "self",
+    "Self",
+    "super",
+    "crate",
+    "r#type",
+    "r#fn",
+    "r#match",
+    "fn",
+    "let",
+    "const",
+    "as",
+    "in",
+    "mod",
+    "struct",
+    "impl",
+    "dyn",
+    "async",
+    "await",
+    "try",
+    "union",
+    "_",
+    "T",
+    "f64",
+    "pos",
+    "vel",
+    "acc",
+    "input",
+    "loads",
+    "forces",
+    "deg",
+    "rad",
+    "from",
+    "left",
+    "right",
+    "plus",
+    "minus",
+    "cos_sin",
+    "ground",
+    "guide",
+    "crank",
+    "slider",
+    "actuator",
+    "rrr",
+    "rrp",
+    "rpr",
+    "prp",
+    "rpp",
+    "point",
+    "params",
+    "analysis",
+    "outputs",
+    "dof",
+    "mass",
+    "gravity",
+    "force",
+    "torque",
+    "range",
+    "allow",
+    "singular",
+    "slide",
+    "along",
+    "at",
+    "on",
+    "m",
+    "j",
+    "position",
+    "velocity",
+    "acceleration",
+    "grp_x",
+    "in_x",
+    "pos_x",
+    "ü",
+    "é",
+    "__x",
 ];
 
 const PUNCTS: &[&str] = &[
@@ -296,7 +385,9 @@ fn pick<'a>(rng: &mut fastrand::Rng, from: &[&'a str]) -> &'a str {
 
 /// `(((x)))` with `n` levels, or a long chain of unary minus or of sums.
 fn deep(rng: &mut fastrand::Rng, inner: &str) -> String {
-    let n = *rng.choice(&[8usize, 40, 100, 300, 800, 2000, 5000]).unwrap_or(&8);
+    let n = *rng
+        .choice(&[8usize, 40, 100, 300, 800, 2000, 5000])
+        .unwrap_or(&8);
     match rng.u8(..3) {
         0 => format!("{}{inner}{}", "(".repeat(n), ")".repeat(n)),
         1 => format!("{}{inner}", "- ".repeat(n)),
@@ -328,13 +419,20 @@ fn mutate(rng: &mut fastrand::Rng, toks: &mut Vec<Tok>, words: &[String], donor:
                 toks.swap(i, j);
             }
             3 | 4 => {
-                let numbers: Vec<usize> = (0..toks.len()).filter(|&k| is_number(&toks[k])).collect();
-                let k = numbers.get(rng.usize(..numbers.len().max(1))).copied().unwrap_or(i);
+                let numbers: Vec<usize> =
+                    (0..toks.len()).filter(|&k| is_number(&toks[k])).collect();
+                let k = numbers
+                    .get(rng.usize(..numbers.len().max(1)))
+                    .copied()
+                    .unwrap_or(i);
                 toks[k] = tok(pick(rng, EXTREME_NUMBERS));
             }
             5 | 6 => {
                 let names: Vec<usize> = (0..toks.len()).filter(|&k| is_word(&toks[k])).collect();
-                let k = names.get(rng.usize(..names.len().max(1))).copied().unwrap_or(i);
+                let k = names
+                    .get(rng.usize(..names.len().max(1)))
+                    .copied()
+                    .unwrap_or(i);
                 toks[k] = if rng.bool() || words.is_empty() {
                     tok(pick(rng, WORDS))
                 } else {
@@ -423,8 +521,12 @@ impl Gen<'_> {
     /// An expression: numbers, parameters, constants, `+ - * /`, parens.
     fn value(&mut self, depth: u32) -> String {
         match self.rng.u8(..if depth == 0 { 3 } else { 7 }) {
-            0 if !self.params.is_empty() => self.params[self.rng.usize(..self.params.len())].clone(),
-            1 if !self.consts.is_empty() => self.consts[self.rng.usize(..self.consts.len())].clone(),
+            0 if !self.params.is_empty() => {
+                self.params[self.rng.usize(..self.params.len())].clone()
+            }
+            1 if !self.consts.is_empty() => {
+                self.consts[self.rng.usize(..self.consts.len())].clone()
+            }
             3 => format!("-{}", self.value(depth - 1)),
             4 => format!("({})", self.value(depth - 1)),
             5 | 6 => {
@@ -455,7 +557,9 @@ impl Gen<'_> {
 
     fn point(&mut self) -> String {
         let points = self.points.clone();
-        self.any(&points).cloned().unwrap_or_else(|| "O".to_string())
+        self.any(&points)
+            .cloned()
+            .unwrap_or_else(|| "O".to_string())
     }
 
     fn side(&mut self, a: &str, b: &str) -> String {
@@ -483,18 +587,26 @@ impl Gen<'_> {
             let (l3, l4) = (self.fresh("coupler"), self.fresh("rocker"));
             let (c, k) = (self.length(3.0), self.length(3.0));
             let mode = self.side("left", "right");
-            out.push(format!("let {b} = rrr({a}, {c}, {o4}, {k}, {mode}) as ({l3}, {l4});"));
+            out.push(format!(
+                "let {b} = rrr({a}, {c}, {o4}, {k}, {mode}) as ({l3}, {l4});"
+            ));
             self.points.push(o4);
             self.links.push(l3);
             self.links.push(l4);
         } else {
             let line = self.fresh("line");
-            let angle = if self.rng.bool() { "0 deg".to_string() } else { self.angle() };
+            let angle = if self.rng.bool() {
+                "0 deg".to_string()
+            } else {
+                self.angle()
+            };
             out.push(format!("let {line} = guide((0.0, 0.0), {angle});"));
             let (rod, block, s) = (self.fresh("rod"), self.fresh("block"), self.fresh("s"));
             let l = self.length(3.0);
             let mode = self.side("plus", "minus");
-            out.push(format!("let {b} = rrp({a}, {l}, {line}, {mode}) as ({rod}, {block}) slide {s};"));
+            out.push(format!(
+                "let {b} = rrp({a}, {l}, {line}, {mode}) as ({rod}, {block}) slide {s};"
+            ));
             self.guides.push(line);
             self.links.push(rod);
             self.links.push(block);
@@ -505,15 +617,30 @@ impl Gen<'_> {
     /// One extra statement of any kind.
     fn extra(&mut self, out: &mut Vec<String>) {
         let name = self.fresh("P");
-        let link = self.any(&self.links.clone()).cloned().unwrap_or_else(|| "link".into());
+        let link = self
+            .any(&self.links.clone())
+            .cloned()
+            .unwrap_or_else(|| "link".into());
         let (p, q) = (self.point(), self.point());
         let stmt = match self.rng.u8(..16) {
-            0 => format!("let {name} = point({link}, from {p}, {}, {});", self.length(0.5), self.angle()),
-            1 => format!("let {name} = point({link}, from {p}, ({}, {}));", self.value(1), self.value(1)),
+            0 => format!(
+                "let {name} = point({link}, from {p}, {}, {});",
+                self.length(0.5),
+                self.angle()
+            ),
+            1 => format!(
+                "let {name} = point({link}, from {p}, ({}, {}));",
+                self.value(1),
+                self.value(1)
+            ),
             2 => {
                 let (l1, l2) = (self.fresh("l"), self.fresh("l"));
                 let mode = self.side("left", "right");
-                format!("let {name} = rrr({p}, {}, {q}, {}, {mode}) as ({l1}, {l2});", self.length(3.0), self.length(3.0))
+                format!(
+                    "let {name} = rrr({p}, {}, {q}, {}, {mode}) as ({l1}, {l2});",
+                    self.length(3.0),
+                    self.length(3.0)
+                )
             }
             3 => {
                 let g = self.fresh("g");
@@ -521,24 +648,49 @@ impl Gen<'_> {
                 out.push(format!("let {g} = guide({p}, {angle});"));
                 self.guides.push(g.clone());
                 let (l1, l2, s) = (self.fresh("l"), self.fresh("l"), self.fresh("s"));
-                format!("let {name} = rrp({q}, {}, {g}, plus) as ({l1}, {l2}) slide {s};", self.length(2.0))
+                format!(
+                    "let {name} = rrp({q}, {}, {g}, plus) as ({l1}, {l2}) slide {s};",
+                    self.length(2.0)
+                )
             }
-            4 => format!("let {name} = rpr({p}, {q}, {}) as ({}, {});", self.side("plus", "minus"), self.fresh("b"), self.fresh("l")),
+            4 => format!(
+                "let {name} = rpr({p}, {q}, {}) as ({}, {});",
+                self.side("plus", "minus"),
+                self.fresh("b"),
+                self.fresh("l")
+            ),
             5 => format!("let {name} = ground({}, {});", self.value(2), self.value(2)),
-            6 => format!("mass {link} {{ m = {}, at = {p}, j = {} }}", self.value(1), self.value(1)),
+            6 => format!(
+                "mass {link} {{ m = {}, at = {p}, j = {} }}",
+                self.value(1),
+                self.value(1)
+            ),
             7 => format!("gravity ({}, {});", self.value(2), self.value(2)),
             8 => {
                 let load = self.fresh("f");
                 out.push(format!("loads {{ {load} = {} }}", self.number()));
-                format!("force at {p} = ({load} * {}, {});", self.value(2), self.value(1))
+                format!(
+                    "force at {p} = ({load} * {}, {});",
+                    self.value(2),
+                    self.value(1)
+                )
             }
             9 => format!("torque on {link} = {} * {};", self.value(2), self.value(1)),
             10 => {
-                let input = self.any(&self.inputs.clone()).cloned().unwrap_or_else(|| "th".into());
+                let input = self
+                    .any(&self.inputs.clone())
+                    .cloned()
+                    .unwrap_or_else(|| "th".into());
                 let (lo, hi) = (self.angle(), self.angle());
                 format!("range {input} = ({lo}, {hi});")
             }
-            11 => format!("analysis {};", pick(self.rng, &["position", "velocity", "acceleration", "forces"])),
+            11 => format!(
+                "analysis {};",
+                pick(
+                    self.rng,
+                    &["position", "velocity", "acceleration", "forces"]
+                )
+            ),
             12 => format!("outputs {{ {p}, {link} }}"),
             13 => format!("dof {};", self.rng.u8(..4)),
             14 => "allow singular;".to_string(),
@@ -571,7 +723,10 @@ fn generate(rng: &mut fastrand::Rng) -> String {
     if g.rng.u8(..8) == 0 {
         out.push("#[self_test]".to_string());
     }
-    out.push(format!("pub {} {{", pick(g.rng, &["Gen", "FourBar", "M", "Slider"])));
+    out.push(format!(
+        "pub {} {{",
+        pick(g.rng, &["Gen", "FourBar", "M", "Slider"])
+    ));
     let mut body = Vec::new();
     let n_params = g.rng.usize(..4);
     if n_params > 0 {
@@ -610,7 +765,9 @@ fn random_stream(rng: &mut fastrand::Rng, depth: u32) -> String {
             5 => out.push_str(&format!("{:?}", rng.f64() * 100.0)),
             6 | 7 => out.push_str(pick(rng, PUNCTS)),
             _ if depth < 6 => {
-                let (o, c) = *rng.choice(&[("(", ")"), ("{", "}"), ("[", "]")]).unwrap_or(&("(", ")"));
+                let (o, c) = *rng
+                    .choice(&[("(", ")"), ("{", "}"), ("[", "]")])
+                    .unwrap_or(&("(", ")"));
                 out.push_str(o);
                 out.push_str(&random_stream(rng, depth + 1));
                 out.push_str(c);
@@ -670,10 +827,7 @@ fn misplaced_errors(out: &TokenStream, input: &std::ops::Range<usize>) -> Vec<St
                 let r = i.span().byte_range();
                 let on_user = r.start < r.end && r.start >= input.start && r.end <= input.end;
                 if !on_user {
-                    let message = trees
-                        .get(k + 2)
-                        .map(|g| g.to_string())
-                        .unwrap_or_default();
+                    let message = trees.get(k + 2).map(|g| g.to_string()).unwrap_or_default();
                     bad.push(format!("span {r:?} outside the input {input:?}: {message}"));
                 }
             }
@@ -757,16 +911,28 @@ impl Compiler {
         }
         let written = std::fs::write(dir.join("Cargo.toml"), manifest)
             .and_then(|_| std::fs::write(dir.join("src/lib.rs"), lib))
-            .and_then(|_| std::fs::copy(self.root.join("Cargo.lock"), dir.join("Cargo.lock")).map(|_| ()));
+            .and_then(|_| {
+                std::fs::copy(self.root.join("Cargo.lock"), dir.join("Cargo.lock")).map(|_| ())
+            });
         if let Err(e) = written {
             eprintln!("compile sample: cannot write {}: {e}", dir.display());
             self.failures += 1;
             return;
         }
         let child = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
-            .args(["check", "--tests", "--offline", "--quiet", "--message-format", "short"])
+            .args([
+                "check",
+                "--tests",
+                "--offline",
+                "--quiet",
+                "--message-format",
+                "short",
+            ])
             .current_dir(&dir)
-            .env("CARGO_TARGET_DIR", target_dir(&self.root).join("fuzz-expand-check"))
+            .env(
+                "CARGO_TARGET_DIR",
+                target_dir(&self.root).join("fuzz-expand-check"),
+            )
             .stdout(Stdio::null())
             .stderr(Stdio::piped())
             .spawn();
@@ -832,7 +998,10 @@ struct Counts {
 fn save(out_dir: &Path, kind: &str, seed: u64, n: u64, text: &str, detail: &str) -> PathBuf {
     let _ = std::fs::create_dir_all(out_dir);
     let path = out_dir.join(format!("{kind}-{seed}-{n}.txt"));
-    let body = format!("{text}\n/* ---- {kind} ----\n{}\n*/\n", detail.replace("*/", "* /"));
+    let body = format!(
+        "{text}\n/* ---- {kind} ----\n{}\n*/\n",
+        detail.replace("*/", "* /")
+    );
     let _ = std::fs::write(&path, body);
     path
 }
@@ -916,7 +1085,12 @@ fn main() {
             v
         })
         .collect();
-    let mut words: Vec<String> = flat.iter().flatten().filter(|t| is_word(t)).map(|t| t.text.clone()).collect();
+    let mut words: Vec<String> = flat
+        .iter()
+        .flatten()
+        .filter(|t| is_word(t))
+        .map(|t| t.text.clone())
+        .collect();
     words.sort();
     words.dedup();
 
@@ -1010,7 +1184,11 @@ fn main() {
         compiler.flush(o.seed);
         compiler.wait();
     }
-    let sources: Vec<String> = counts.by_source.iter().map(|(k, v)| format!("{k} {v}")).collect();
+    let sources: Vec<String> = counts
+        .by_source
+        .iter()
+        .map(|(k, v)| format!("{k} {v}"))
+        .collect();
     println!(
         "{n} cases in {:.0} s ({}): not a token stream {}, ok {}, errors {}, panics {}, hangs {}, non-parsing {}, errors off the user's tokens {}; compiled {} expansions in {} batches, compile failures {}",
         start.elapsed().as_secs_f64(),
@@ -1036,4 +1214,3 @@ fn main() {
         std::process::exit(1);
     }
 }
-
