@@ -966,10 +966,12 @@ pub fn definition(input: proc_macro2::TokenStream) -> syn::Result<Definition> {
     )
 }
 
-/// Rules on single tokens, checked on the whole input before it is parsed
-/// (every error collected, each on its token), and the bound [`MAX_PATH`].
+/// The bound [`MAX_PATH`], checked on the whole input before it is parsed,
+/// and, with `rules`, rules on single tokens of the body (every error
+/// collected, each on its token; the head may hold `pub(crate)`).
 #[derive(Default)]
 struct Lexical {
+    rules: bool,
     errors: Option<syn::Error>,
 }
 
@@ -1023,13 +1025,13 @@ impl Lexical {
                 TokenTree::Group(g) => {
                     inner = inner.max(self.walk(g.stream(), depth + 1, g.span_open())?)
                 }
-                TokenTree::Ident(i) => self.ident(i),
-                TokenTree::Literal(l) => {
+                TokenTree::Ident(i) if self.rules => self.ident(i),
+                TokenTree::Literal(l) if self.rules => {
                     if let Some(e) = crate::value::literal_form(&Lit::new(l.clone())) {
                         self.push(e);
                     }
                 }
-                TokenTree::Punct(_) => {}
+                _ => {}
             }
             run += 1;
             let first = first.get_or_insert_with(|| tree.clone()).clone();
@@ -1047,12 +1049,8 @@ impl Lexical {
 
 impl Parse for Definition {
     fn parse(input: ParseStream) -> syn::Result<Self> {
-        let mut lexical = Lexical::default();
         let all: proc_macro2::TokenStream = input.fork().parse()?;
-        lexical.walk(all, 0, input.span())?;
-        if let Some(e) = lexical.errors {
-            return Err(e);
-        }
+        Lexical::default().walk(all, 0, input.span())?;
         let mut docs = input.call(Attribute::parse_outer)?;
         let self_test = docs
             .iter()
@@ -1097,6 +1095,14 @@ impl Parse for Definition {
         }
         let content;
         braced!(content in input);
+        let mut lexical = Lexical {
+            rules: true,
+            errors: None,
+        };
+        lexical.walk(content.fork().parse()?, 1, content.span())?;
+        if let Some(e) = lexical.errors {
+            return Err(e);
+        }
         let mut items = Vec::new();
         while !content.is_empty() {
             items.push(content.parse()?);

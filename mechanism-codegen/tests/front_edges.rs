@@ -144,6 +144,15 @@ fn path_keywords_are_not_names() {
         let suggestion = format!("`{}_`", word.to_lowercase());
         one_error_at(&src, word, &["Rust keyword", &suggestion]);
     }
+    // The head's visibility may name them.
+    for vis in ["pub(crate)", "pub(super)", "pub(in crate)", "pub(self)"] {
+        let src = format!(
+            "{vis} V {{ let O = ground(0.0, 0.0); let O4 = ground(3.5, 0.0);
+    let A = crank(O, 1.0, th) as link2;
+    let B = rrr(A, 3.0, O4, 3.0, left) as (link3, link4); }}"
+        );
+        assert_eq!(expand(&src), vec![], "{vis}");
+    }
 }
 
 // Numbers with a type suffix or in another base: an error with the decimal

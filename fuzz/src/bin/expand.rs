@@ -372,6 +372,9 @@ const WORDS: &[&str] = &[
     "ü",
     "é",
     "__x",
+    "self_test",
+    "doc",
+    "pub",
 ];
 
 const PUNCTS: &[&str] = &[
@@ -723,10 +726,9 @@ fn generate(rng: &mut fastrand::Rng) -> String {
     if g.rng.u8(..8) == 0 {
         out.push("#[self_test]".to_string());
     }
-    out.push(format!(
-        "pub {} {{",
-        pick(g.rng, &["Gen", "FourBar", "M", "Slider"])
-    ));
+    let vis = pick(g.rng, &["pub", "", "pub(crate)", "pub(super)"]);
+    let name = pick(g.rng, &["Gen", "FourBar", "M", "Slider"]);
+    out.push(format!("{vis} {name} {{"));
     let mut body = Vec::new();
     let n_params = g.rng.usize(..4);
     if n_params > 0 {
