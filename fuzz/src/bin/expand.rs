@@ -1034,6 +1034,20 @@ fn quiet_panics() {
     }));
 }
 
+/// The message of each `compile_error!` in `out`.
+fn error_messages(out: &TokenStream, into: &mut Vec<String>) {
+    let trees: Vec<TokenTree> = out.clone().into_iter().collect();
+    for (k, t) in trees.iter().enumerate() {
+        match t {
+            TokenTree::Ident(i) if i == "compile_error" => {
+                into.push(trees.get(k + 2).map(|g| g.to_string()).unwrap_or_default())
+            }
+            TokenTree::Group(g) => error_messages(&g.stream(), into),
+            _ => {}
+        }
+    }
+}
+
 fn repro(path: &Path) -> i32 {
     let Ok(text) = std::fs::read_to_string(path) else {
         eprintln!("cannot read {}", path.display());
@@ -1042,10 +1056,23 @@ fn repro(path: &Path) -> i32 {
     // A saved case ends with a comment block: tokens only matter.
     quiet_panics();
     let (tx, rx) = spawn_worker();
-    let _ = tx.send(text);
+    let _ = tx.send(text.clone());
     match rx.recv() {
-        Ok(Verdict::Ok(out)) => println!("ok:\n{out}"),
-        Ok(Verdict::Errors) => println!("errors, each on a user token"),
+        Ok(Verdict::Ok(out)) => println!(
+            "ok, {} bytes:\n{}",
+            out.len(),
+            out.chars().take(2000).collect::<String>()
+        ),
+        Ok(Verdict::Errors) => {
+            println!("errors, each on a user token:");
+            if let Ok(input) = text.parse::<TokenStream>() {
+                let mut messages = Vec::new();
+                error_messages(&mechanism_codegen::expand(input), &mut messages);
+                for m in messages {
+                    println!("  {m}");
+                }
+            }
+        }
         Ok(Verdict::Unlexable) => println!("not a token stream"),
         Ok(Verdict::Panic(m)) => println!("PANIC: {m}"),
         Ok(Verdict::NotParsing(m)) => println!("OUTPUT DOES NOT PARSE: {m}"),
