@@ -217,22 +217,28 @@ pub fn inputs(model: &Model, errors: &mut Errors) -> Vec<Input> {
         } else if !(hi - lo).is_finite() || (hi - lo) / sweep::SAMPLES_1D as f64 <= 0.0 {
             // The sweep steps by (hi - lo) / samples: a width that overflows
             // (or a step that underflows) would leave it nothing to sample.
-            let sci = |x: f64| match angle {
-                true => format!("{:e} deg", x.to_degrees()),
-                false => format!("{x:e}"),
+            let sci = |x: f64| {
+                if angle {
+                    format!("{:e} deg", x.to_degrees())
+                } else {
+                    format!("{x:e}")
+                }
             };
-            let (what, fix) = match (hi - lo).is_finite() {
-                true => ("its sample step (width / {n}) underflows to 0", "widen"),
-                false => ("its width hi - lo overflows an f64", "narrow"),
+            let why = if (hi - lo).is_finite() {
+                format!(
+                    "its sample step (width / {}) underflows to 0; widen the range",
+                    sweep::SAMPLES_1D
+                )
+            } else {
+                "its width hi - lo overflows an f64; narrow the range".to_string()
             };
             errors.push(
                 span,
                 format!(
-                    "the range of `{}`, ({}, {}), cannot be swept: {}; {fix} the range",
+                    "the range of `{}`, ({}, {}), cannot be swept: {why}",
                     decl.input,
                     sci(lo),
                     sci(hi),
-                    what.replace("{n}", &sweep::SAMPLES_1D.to_string()),
                 ),
             );
         } else if angle && hi - lo > 2.0 * PI * (1.0 + 1e-12) {

@@ -219,7 +219,8 @@ fn nesting_is_bounded_and_the_bound_fits_the_stack() {
 }
 
 // A range whose width overflows f64 is an error (the sweep returned at
-// once on an infinite width and reported that every group assembles).
+// once on an infinite width and reported that every group assembles), and
+// so is one whose sample step underflows.
 #[test]
 fn a_range_whose_width_overflows_is_an_error() {
     let src = "pub W { let line = guide((0.0, 0.0), 0 deg); let P = ground(0.0, 1.0);
@@ -227,6 +228,14 @@ fn a_range_whose_width_overflows_is_an_error() {
     let B = rrr(C, 1.2, P, 0.9, left) as (l1, l2);
     range s = (-1e308, 1e308); }";
     one_error_at(src, "1e308)", &["cannot be swept", "overflows"]);
+    // A width whose sample step underflows to 0 (the sweep would sample
+    // one point 3601 times).
+    let src = src.replace("(-1e308, 1e308)", "(0.0, 5e-321)");
+    one_error_at(
+        &src,
+        "5e-321",
+        &["cannot be swept", "underflows to 0; widen"],
+    );
 }
 
 // An error at the end of the input points at the last token, not at the
