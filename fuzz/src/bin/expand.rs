@@ -1243,3 +1243,40 @@ fn main() {
         std::process::exit(1);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    // The corpus reader finds each body, skipping braces in comments and
+    // strings, and both delimiters of a macro call.
+    #[test]
+    fn bodies_are_cut_at_their_own_braces() {
+        let text = "mechanism! { a { b } // }\n c \"}\" }\nx mechanism!(d) mechanism! e";
+        assert_eq!(bodies(text), vec![" a { b } // }\n c \"}\" ", "d"]);
+    }
+
+    // The span rule flags a `compile_error!` at the call site (byte range
+    // 0..0) and passes one on a token of the input.
+    #[test]
+    fn errors_off_the_input_are_flagged() {
+        proc_macro2::extra::invalidate_current_thread_spans();
+        let input: TokenStream = "pub M { x }".parse().expect("tokens");
+        let range = input_range(&input).expect("a range");
+        let at_call_site = quote::quote!(::core::compile_error!("m"););
+        assert_eq!(misplaced_errors(&at_call_site, &range).len(), 1);
+        let on_input = syn::Error::new_spanned(&input, "m").to_compile_error();
+        assert!(misplaced_errors(&on_input, &range).is_empty());
+    }
+
+    // Every verdict of a case the macro rejects is `Errors`, and a
+    // definition of the repository expands.
+    #[test]
+    fn judge_tells_errors_from_expansions() {
+        assert!(matches!(judge("pub M { let }"), Verdict::Errors));
+        let ok = "pub M { let O = ground(0.0, 0.0); let O4 = ground(3.5, 0.0);
+            let A = crank(O, 1.0, th) as l2; let B = rrr(A, 3.0, O4, 3.0, left) as (l3, l4); }";
+        assert!(matches!(judge(ok), Verdict::Ok(_)));
+        assert!(matches!(judge("pub M { ( }"), Verdict::Unlexable));
+    }
+}
