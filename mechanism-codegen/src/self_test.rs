@@ -348,7 +348,7 @@ pub fn emit(
     let d = inputs.len();
     let ks: Vec<usize> = (0..d).collect();
     let input_names: Vec<&Ident> = inputs.iter().map(|i| &i.name).collect();
-    let (mut lo, mut hi, mut hstep, mut unit) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut lo, mut hi, mut unit) = (Vec::new(), Vec::new(), Vec::new());
     for i in inputs {
         let r = i.range.expect("self_test requires ranges");
         lo.push(r.lo);
@@ -359,7 +359,6 @@ pub fn emit(
         // input moves by 1e-4 of its scale, and the acceleration term
         // (A h^2 / 2) stays 1e-4 below the rate term at every scale.
         unit.push(if i.angle { 1.0 } else { r.hi - r.lo });
-        hstep.push(1e-4);
     }
 
     // Residuals.
@@ -638,7 +637,6 @@ pub fn emit(
     }
     let doc_w: Vec<f64> = (0..d).map(|i| [1.0, -0.7][i] * unit[i]).collect();
     let doc_a: Vec<f64> = (0..d).map(|i| [0.5, 0.3][i] * unit[i]).collect();
-    let h_min = hstep.iter().copied().fold(f64::INFINITY, f64::min);
     let labels_arr = labels.clone();
     let samples_n: usize = if d == 1 { 90 } else { 100 };
     let sample_code = if d == 1 {
@@ -665,9 +663,9 @@ pub fn emit(
 
             const LO: [f64; #d] = [#(#lo),*];
             const HI: [f64; #d] = [#(#hi),*];
-            /// Finite-difference steps per input.
-            const H: [f64; #d] = [#(#hstep),*];
-            const H_MIN: f64 = #h_min;
+            /// Finite-difference step in time (every input moves by 1e-4
+            /// of its scale per step, see `W`).
+            const H_MIN: f64 = 1e-4;
             /// Input rates and accelerations of the trajectories, per unit of
             /// time: 1 rad or one range width (a displacement) times a factor.
             const W: [f64; #d] = [#(#doc_w),*];
