@@ -26,7 +26,7 @@ use proc_macro2::TokenStream;
 
 /// Expands a mechanism definition into Rust items.
 pub fn expand(input: TokenStream) -> TokenStream {
-    let definition: parse::Definition = match syn::parse2(input) {
+    let definition = match parse::definition(input) {
         Ok(d) => d,
         Err(e) => return e.to_compile_error(),
     };

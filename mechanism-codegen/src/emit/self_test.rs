@@ -81,14 +81,28 @@ fn axis(stmt: &Stmt, k: usize) -> TokenStream {
     }
 }
 
-/// Residuals of one statement's constraints (code: `(label, residual)` pairs,
-/// lengths in the definition's unit).
-fn residuals(model: &Model, plan: &Plan, stmt: &Stmt) -> Vec<(String, TokenStream)> {
+/// What a residual's rounding scales with (its tolerance is 64 eps times
+/// this): a length residual with the mechanism's size; a guide direction
+/// (the difference of two unit vectors, dimensionless) computed from an
+/// angle with 1; one turned from a link's axis, recomputed from two solved
+/// points, with the size over the shortest link (the axis's rounding).
+#[derive(Clone, Copy)]
+enum Scale {
+    Length,
+    Direction,
+    CarriedDirection,
+}
+
+/// Residuals of one statement's constraints (code: `(label, residual,
+/// scale)`, lengths in the definition's unit).
+fn residuals(model: &Model, plan: &Plan, stmt: &Stmt) -> Vec<(String, TokenStream, Scale)> {
     let n = &stmt.name;
     let name = n.to_string();
     let g = format_ident!("grp_{}", stmt.name);
     let mut r = Vec::new();
-    let mut push = |what: &str, code: TokenStream| r.push((format!("{name}: {what}"), code));
+    let mut directions = Vec::new();
+    let mut push =
+        |what: &str, code: TokenStream| r.push((format!("{name}: {what}"), code, Scale::Length));
     let link_axis = |link: &Ident| {
         let info = &plan.links[&link.to_string()];
         axis(&model.stmts[info.stmt], info.index)
@@ -101,10 +115,11 @@ fn residuals(model: &Model, plan: &Plan, stmt: &Stmt) -> Vec<(String, TokenStrea
             ..
         } => {
             let a = f(angle);
-            push(
-                "fixed guide direction",
+            directions.push((
+                format!("{name}: fixed guide direction"),
                 quote!(norm(sub(vc(&pos.#n.dir), turn([1.0, 0.0], #a)))),
-            );
+                Scale::Direction,
+            ));
         }
         Kind::Guide {
             carrier: Some(l),
@@ -112,10 +127,11 @@ fn residuals(model: &Model, plan: &Plan, stmt: &Stmt) -> Vec<(String, TokenStrea
             origin,
         } => {
             let (ax, a) = (link_axis(l), f(angle));
-            push(
-                "carried guide direction",
+            directions.push((
+                format!("{name}: carried guide direction"),
                 quote!(norm(sub(vc(&pos.#n.dir), turn(#ax, #a)))),
-            );
+                Scale::CarriedDirection,
+            ));
             if let Origin::Point(p) = origin {
                 push(
                     "carried guide origin",
@@ -272,6 +288,7 @@ fn residuals(model: &Model, plan: &Plan, stmt: &Stmt) -> Vec<(String, TokenStrea
             );
         }
     }
+    r.extend(directions);
     r
 }
 
@@ -288,22 +305,32 @@ pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
     let d = inputs.len();
     let ks: Vec<usize> = (0..d).collect();
     let input_names: Vec<&Ident> = inputs.iter().map(|i| &i.name).collect();
-    let (mut lo, mut hi, mut hstep) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut lo, mut hi, mut unit) = (Vec::new(), Vec::new(), Vec::new());
     for i in inputs {
         let r = i.range.expect("self_test requires ranges");
         lo.push(r.lo);
         hi.push(r.hi);
-        // FD step: 1e-4 rad for angles; 1e-4 of the range for displacements.
-        hstep.push(if i.angle { 1e-4 } else { 1e-4 * (r.hi - r.lo) });
+        // The trajectories' input rates are in units of the input's scale
+        // (1 rad for an angle, the range's width for a displacement) per
+        // unit of time, and the finite differences step time by 1e-4: an
+        // input moves by 1e-4 of its scale, and the acceleration term
+        // (A h^2 / 2) stays 1e-4 below the rate term at every scale.
+        unit.push(if i.angle { 1.0 } else { r.hi - r.lo });
     }
 
     // Residuals.
     let mut labels = Vec::new();
     let mut codes = Vec::new();
+    let mut scales = Vec::new();
     for &i in &checked.order {
-        for (label, code) in residuals(model, plan, &model.stmts[i]) {
+        for (label, code, scale) in residuals(model, plan, &model.stmts[i]) {
             labels.push(label);
             codes.push(code);
+            scales.push(match scale {
+                Scale::Length => quote!(size),
+                Scale::Direction => quote!(1.0),
+                Scale::CarriedDirection => quote!(size / L_MIN),
+            });
         }
     }
     let nres = codes.len();
@@ -417,11 +444,15 @@ pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
         quote! {
             /// Velocities against central differences of positions along
             /// `q(t) = q0 + W t`: `D(h) = (p(t + h) - p(t - h)) / 2h` with
-            /// `h` = 1e-4 rad (1e-4 of the range for displacements). Its error
+            /// `h` = 1e-4 (time; the rates `W` are 1 rad or 1 range width
+            /// per unit of time, so an input moves by 1e-4 of it). Its error
             /// is `c h^2` (estimated by `|D(2h) - D(h)|`, three times it) plus
             /// rounding, `eps_p / h` with `eps_p` = 16 eps times the size of
             /// the column (the mechanism's size for lengths, size / shortest
-            /// link for angles). A wrong velocity is off by its own magnitude.
+            /// link for angles); the velocity's own rounding adds 16 eps
+            /// times the largest velocity of its kind (it dominates where `h`
+            /// is large: a displacement input far above unit scale). A wrong
+            /// velocity is off by its own magnitude.
             #[test]
             fn velocity_vs_finite_differences() {
                 let m = #name::<f64>::default();
@@ -434,9 +465,11 @@ pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
                     let Some(d2) = fd_pos(&m, q, 2.0) else { continue };
                     let got = rate_row(&v);
                     let size = size_of(&pos);
+                    let (got_len, got_ang) = family_max(&got);
                     for j in 0..K {
                         let eps_p = 16.0 * f64::EPSILON * if ANGLE[j] { size / L_MIN } else { size };
-                        let tol = (d2[j] - d1[j]).abs() + 2.0 * eps_p / H_MIN;
+                        let own = 16.0 * f64::EPSILON * if ANGLE[j] { got_ang } else { got_len };
+                        let tol = (d2[j] - d1[j]).abs() + 2.0 * eps_p / H_MIN + own;
                         assert!((got[j] - d1[j]).abs() <= tol, "sample {q:?}, column {j}: velocity {} vs finite difference {} (tolerance {tol:e})", got[j], d1[j]);
                     }
                     checked += 1;
@@ -453,7 +486,7 @@ pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
             /// `q(t) = q0 + W t + A t^2 / 2`, rates `W + A t` (the input
             /// accelerations `A` nonzero, so their terms are exercised);
             /// tolerance as for the velocities, with the velocity columns'
-            /// largest magnitude for the rounding term.
+            /// largest magnitude for the rounding term of the difference.
             #[test]
             fn acceleration_vs_finite_differences() {
                 let m = #name::<f64>::default();
@@ -467,13 +500,12 @@ pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
                     let Some(d2) = fd_vel(&m, q, 2.0) else { continue };
                     let v = rate_row(&vel);
                     let got = rate_row(&a);
-                    let (mut v_len, mut v_ang) = (0.0f64, 0.0f64);
-                    for j in 0..K {
-                        if ANGLE[j] { v_ang = v_ang.max(v[j].abs()) } else { v_len = v_len.max(v[j].abs()) }
-                    }
+                    let (v_len, v_ang) = family_max(&v);
+                    let (got_len, got_ang) = family_max(&got);
                     for j in 0..K {
                         let eps_v = 16.0 * f64::EPSILON * if ANGLE[j] { v_ang } else { v_len };
-                        let tol = (d2[j] - d1[j]).abs() + 2.0 * eps_v / H_MIN;
+                        let own = 16.0 * f64::EPSILON * if ANGLE[j] { got_ang } else { got_len };
+                        let tol = (d2[j] - d1[j]).abs() + 2.0 * eps_v / H_MIN + own;
                         assert!((got[j] - d1[j]).abs() <= tol, "sample {q:?}, column {j}: acceleration {} vs finite difference {} (tolerance {tol:e})", got[j], d1[j]);
                     }
                     checked += 1;
@@ -560,9 +592,8 @@ pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
             });
         }
     }
-    let doc_w: Vec<f64> = (0..d).map(|i| [1.0, -0.7][i]).collect();
-    let doc_a: Vec<f64> = (0..d).map(|i| [0.5, 0.3][i]).collect();
-    let h_min = hstep.iter().copied().fold(f64::INFINITY, f64::min);
+    let doc_w: Vec<f64> = (0..d).map(|i| [1.0, -0.7][i] * unit[i]).collect();
+    let doc_a: Vec<f64> = (0..d).map(|i| [0.5, 0.3][i] * unit[i]).collect();
     let labels_arr = labels.clone();
     let samples_n: usize = if d == 1 { 90 } else { 100 };
     let sample_code = if d == 1 {
@@ -589,10 +620,11 @@ pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
 
             const LO: [f64; #d] = [#(#lo),*];
             const HI: [f64; #d] = [#(#hi),*];
-            /// Finite-difference steps per input.
-            const H: [f64; #d] = [#(#hstep),*];
-            const H_MIN: f64 = #h_min;
-            /// Input rates and accelerations of the trajectories.
+            /// Finite-difference step in time (every input moves by 1e-4
+            /// of its scale per step, see `W`).
+            const H_MIN: f64 = 1e-4;
+            /// Input rates and accelerations of the trajectories, per unit of
+            /// time: 1 rad or one range width (a displacement) times a factor.
             const W: [f64; #d] = [#(#doc_w),*];
             const A: [f64; #d] = [#(#doc_a),*];
             const K: usize = #k;
@@ -636,6 +668,15 @@ pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
             }
             fn pos_row<T: ::mechanism::Real>(pos: &#position_ty<T>) -> [f64; #k] { [#(#pos_row),*] }
             fn rate_row<V: RateRow>(v: &V) -> [f64; #k] { v.row() }
+            /// The largest magnitude among the length columns of `row` and
+            /// among its angle columns.
+            fn family_max(row: &[f64; #k]) -> (f64, f64) {
+                let (mut len, mut ang) = (0.0f64, 0.0f64);
+                for j in 0..K {
+                    if ANGLE[j] { ang = ang.max(row[j].abs()) } else { len = len.max(row[j].abs()) }
+                }
+                (len, ang)
+            }
             /// Output rows of the velocity and acceleration structs.
             trait RateRow { fn row(&self) -> [f64; #k]; }
             #rate_impls
@@ -676,11 +717,14 @@ pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
             }
 
             /// Every constraint of every group, recomputed from the solved
-            /// points, within 64 eps times the mechanism's size: each residual
-            /// is a few roundings of numbers of that size (a group's
-            /// constraints hold to rounding whatever its conditioning; errors
-            /// of its inputs do not enter, its residuals are measured from
-            /// them).
+            /// points, within 64 eps times its scale: the mechanism's size
+            /// for a length (each is a few roundings of numbers of that
+            /// size), 1 for a guide direction from an angle (a difference of
+            /// unit vectors), the size over the shortest link for a direction
+            /// turned from a link's axis (recomputed from two solved points).
+            /// A group's constraints hold to rounding whatever its
+            /// conditioning; errors of its inputs do not enter, its residuals
+            /// are measured from them.
             fn loop_closure<T: ::mechanism::Real>() {
                 let m = #name::<T>::default();
                 let eps = T::eps().as_f64();
@@ -689,8 +733,10 @@ pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
                     let q = sample(s);
                     let Ok(pos) = m.position(&input(q)) else { continue };
                     let r = m.self_test_residuals(&pos);
-                    let tol = 64.0 * eps * size_of(&pos);
+                    let size = size_of(&pos);
+                    let scale: [f64; #nres] = [#(#scales),*];
                     for (j, x) in r.iter().enumerate() {
+                        let tol = 64.0 * eps * scale[j];
                         assert!(x.abs() <= tol, "sample {q:?}: {} off by {x:e} (tolerance {tol:e})", LABELS[j]);
                     }
                     checked += 1;

@@ -8,7 +8,7 @@ use super::{Kind, Model};
 use crate::diag::{did_you_mean, show_value, Diagnostics};
 use crate::parse::{Arg, RangeDecl};
 use crate::value::{convert, Scope};
-use mechanism_core::sweep::Range;
+use mechanism_core::sweep::{self, Range};
 use proc_macro2::Span;
 use std::f64::consts::PI;
 use syn::Ident;
@@ -217,6 +217,33 @@ pub(super) fn inputs(model: &Model, ranges: &[RangeDecl], errors: &mut Diagnosti
                     decl.input,
                     show(lo),
                     show(hi)
+                ),
+            );
+        } else if !(hi - lo).is_finite() || (hi - lo) / sweep::SAMPLES_1D as f64 <= 0.0 {
+            // The sweep steps by (hi - lo) / samples: a width that overflows
+            // (or a step that underflows) would leave it nothing to sample.
+            let sci = |x: f64| {
+                if angle {
+                    format!("{:e} deg", x.to_degrees())
+                } else {
+                    format!("{x:e}")
+                }
+            };
+            let why = if (hi - lo).is_finite() {
+                format!(
+                    "its sample step (width / {}) underflows to 0; widen the range",
+                    sweep::SAMPLES_1D
+                )
+            } else {
+                "its width hi - lo overflows an f64; narrow the range".to_string()
+            };
+            errors.push(
+                span,
+                format!(
+                    "the range of `{}`, ({}, {}), cannot be swept: {why}",
+                    decl.input,
+                    sci(lo),
+                    sci(hi),
                 ),
             );
         } else if angle && hi - lo > 2.0 * PI * (1.0 + 1e-12) {

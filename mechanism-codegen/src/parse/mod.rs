@@ -24,8 +24,12 @@
 //! names      := IDENT | '(' IDENT,* ')'
 //! ```
 
+mod lexical;
 mod statements;
 pub mod vocabulary;
+
+use lexical::Lexical;
+pub use lexical::MAX_PATH;
 
 use proc_macro2::{Delimiter, Span, TokenTree};
 use syn::buffer::Cursor;
@@ -408,8 +412,33 @@ impl Parse for Arg {
     }
 }
 
+/// Parses a whole definition. An error at the end of the input points at
+/// its last token (rather than at the whole invocation).
+pub fn definition(input: proc_macro2::TokenStream) -> syn::Result<Definition> {
+    let last = input.clone().into_iter().last().map(|t| match t {
+        TokenTree::Group(g) => g.span_close(),
+        other => other.span(),
+    });
+    let Some(last) = last else {
+        return syn::parse2(input);
+    };
+    // The content of a group reports its end at the closing delimiter.
+    let mut group = proc_macro2::Group::new(Delimiter::Brace, input);
+    group.set_span(last);
+    syn::parse::Parser::parse2(
+        |outer: ParseStream| {
+            let content;
+            braced!(content in outer);
+            Definition::parse(&content)
+        },
+        TokenTree::Group(group).into(),
+    )
+}
+
 impl Parse for Definition {
     fn parse(input: ParseStream) -> syn::Result<Self> {
+        let all: proc_macro2::TokenStream = input.fork().parse()?;
+        Lexical::default().walk(all, 0, input.span())?;
         let mut docs = input.call(Attribute::parse_outer)?;
         let self_test = docs
             .iter()
@@ -454,6 +483,14 @@ impl Parse for Definition {
         }
         let content;
         braced!(content in input);
+        let mut lexical = Lexical {
+            rules: true,
+            errors: None,
+        };
+        lexical.walk(content.fork().parse()?, 1, content.span())?;
+        if let Some(e) = lexical.errors {
+            return Err(e);
+        }
         let mut items = Vec::new();
         while !content.is_empty() {
             items.push(content.parse()?);
