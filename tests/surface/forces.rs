@@ -24,11 +24,7 @@
 //! dropped, a force put on the other link of its joint) and must then fail:
 //! the mistakes are at least 1e-3 of the largest term, 1e10 times `TOL`.
 
-#[path = "zoo/common.rs"]
-#[allow(dead_code)]
-mod common;
-
-use common::*;
+use crate::equilibrium::*;
 use mechanism::{mechanism, Vector2};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
