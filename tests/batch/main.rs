@@ -1,7 +1,7 @@
 //! The batch API (`solve_batch` and its lane kernel) against the scalar path,
 //! element by element, over grids that include failing poses:
 //!
-//! - [`scenes`]: every example scene and the drivers and groups the scenes do
+//! - [`examples`]: every example scene and the drivers and groups the scenes do
 //!   not use; the tolerance and the four points checked are stated there;
 //! - [`surface`]: the unusual definitions of `tests/common/surface_defs.rs`
 //!   and more (carried guides, points on blocks, two inputs, output subsets).
@@ -16,5 +16,5 @@ mod batch_compare;
 #[path = "../common/surface_defs.rs"]
 mod surface_defs;
 
-mod scenes;
+mod examples;
 mod surface;

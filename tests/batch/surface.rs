@@ -1,5 +1,5 @@
 //! The batch API (`solve_batch` and its lane kernel) against the scalar
-//! path, element by element, on definitions `scenes.rs` does not
+//! path, element by element, on definitions `examples.rs` does not
 //! cover: the unusual ones of `tests/surface/dsl.rs` (unicode and DSL words
 //! as names, statements out of order, parameters everywhere, group offsets
 //! and a slot angle from parameters, a guide carried by a block, two cranks
@@ -13,9 +13,9 @@
 //! assemble, singular ones, NaN, infinite and huge inputs and infinite
 //! rates.
 //!
-//! The comparison (`compare!`, shared with `scenes.rs` through
+//! The comparison (`compare!`, shared with `examples.rs` through
 //! `tests/common/batch_compare.rs`) checks the four points of
-//! `scenes.rs`'s module documentation: a lane kernel exists, it accepts
+//! `examples.rs`'s module documentation: a lane kernel exists, it accepts
 //! only elements the scalar path solves and hands back at most 1 % of the
 //! others, statuses and failed levels match the scalar path bit for bit, and
 //! ok elements agree within `K = 64` eps of the level's scale times

@@ -1,6 +1,6 @@
 //! The batch-versus-scalar comparison of the test crates `tests/batch/` and
 //! `tests/surface/` (`long_chain.rs`), included by their `main.rs` with
-//! `#[path]` and `#[macro_use]`; see `tests/batch/scenes.rs`'s module
+//! `#[path]` and `#[macro_use]`; see `tests/batch/examples.rs`'s module
 //! documentation for the four points checked and for the tolerance `K`.
 //!
 //! `compare!` takes, before its other arguments, the analysis level of the
@@ -19,7 +19,7 @@ use std::collections::HashMap;
 /// of elements the scalar path solves, failed elements)`.
 pub type Found = (f64, usize, usize);
 
-/// Bound on the scaled error (see `tests/batch/scenes.rs`'s module documentation).
+/// Bound on the scaled error (see `tests/batch/examples.rs`'s module documentation).
 pub const K: f64 = 64.0;
 
 /// The number of levels of `pos`, `vel`, `acc`.
@@ -155,7 +155,7 @@ macro_rules! scalar_levels {
 /// (maps from input name to one value per element, `f64`; the rates and
 /// accelerations are not read below their level) through `solve_batch`,
 /// through the lane kernel alone and through the scalar path, and checks
-/// points 1 to 4 of `tests/batch/scenes.rs`'s module documentation. `$p`: the point
+/// points 1 to 4 of `tests/batch/examples.rs`'s module documentation. `$p`: the point
 /// outputs, `$s`: the scalar ones (link angles, slides). Returns [`Found`].
 macro_rules! compare {
     ($lv:ident; $m:expr, $t:ty, $ty:ident, [$($i:ident),*], [$($p:ident),*], [$($s:ident),*], $q:expr, $w:expr, $a:expr) => {{

@@ -203,10 +203,10 @@ fn scales_1e_minus9_to_1e9_f32() {
 
 /// Lengths far from 1 where the RRR's Heron product (fourth power of the
 /// lengths) leaves the normal range while every length, square and result is
-/// an ordinary number: f32 3e-12 .. 1e12 (before the fix: 5e5 eps wrong,
-/// silently, at 3e-12 from a subnormal product; `CannotAssemble`/`Singular`
-/// from 3e9 up from an infinite one), f64 1e-100 and 1e100 (a zero or
-/// infinite product). Same bound as the ordinary scales.
+/// an ordinary number: f32 3e-12 .. 1e12 (a Heron product taken whole is
+/// 5e5 eps wrong, silently, at 3e-12 from a subnormal product, and gives
+/// `CannotAssemble`/`Singular` from 3e9 up from an infinite one), f64 1e-100
+/// and 1e100 (a zero or infinite product). Same bound as the ordinary scales.
 #[test]
 fn rrr_lengths_far_from_one() {
     scales_run::<f32>(
@@ -259,11 +259,11 @@ fn mixed_scales_small_crank_large_frame() {
 // at lengths far from 1.
 
 /// `mechanism::dyad::rrr::velocity` takes the scale of its determinant from
-/// the link vectors. Before the fix it was `sqrt(|r1|^2 |r2|^2)`, a fourth
-/// power of the lengths: f32 lengths of 1e-12 gave a zero product and a
+/// the link vectors `|r1| |r2|`. Taken as `sqrt(|r1|^2 |r2|^2)`, a fourth
+/// power of the lengths, f32 lengths of 1e-12 give a zero product and a
 /// false `Singular`, 1e-11 a subnormal one (the indicator off), 1e10 an
 /// infinite one (`Singular` again), while the position (which takes its
-/// Heron roots apart there) was fine. A crank-rocker pose (condition 0.8)
+/// Heron roots apart there) is fine. A crank-rocker pose (condition 0.8)
 /// at scales from 1e-12 to 1e12 (f32) and 1e-100 .. 1e100 (f64): rates
 /// within `c eps / kappa^2` (`c = 16`: the position's error `eps / kappa`
 /// carried through the 2x2 system, plus a few roundings; measured below 4)

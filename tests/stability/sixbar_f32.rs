@@ -19,9 +19,9 @@ const EPS32: f64 = f32::EPSILON as f64;
 /// tangency, the RRP joint is accurate to a few eps of `l`, not to
 /// `eps / sqrt(delta)`: the reference takes the same `A`, `l` and the exact
 /// direction of the rounded pair, so the only error left is the group's own
-/// rounding. Before the compensation (`k` carried with its rounding error,
-/// the direction divided by its length) the error grew like
-/// `eps / sqrt(delta)`: 84 eps of `l` here (at `delta = 5.3e-5`); now 1.1.
+/// rounding. Without the compensation (`k` carried with its rounding error,
+/// the direction divided by its length) the error grows like
+/// `eps / sqrt(delta)`: 84 eps of `l` here (at `delta = 5.3e-5`); with it 1.1.
 #[test]
 fn rrp_f32_near_tangency_with_a_rounded_direction() {
     let l = 60.0f32;

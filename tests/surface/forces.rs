@@ -1484,8 +1484,8 @@ mechanism! {
 
 /// A literal mass that is not positive is a compile error; one from `params`
 /// must be a run-time error naming the group that creates the link: a
-/// negative mass gives finite, balanced and wrong reactions (the reviewer's
-/// `m = -1` returned `Ok` with a power residual of 1e-16). Zero is not a mass
+/// negative mass gives finite, balanced and wrong reactions (unchecked, `m =
+/// -1` returns `Ok` with a power residual of 1e-16). Zero is not a mass
 /// (leave the statement out), a moment of inertia may be zero, and NaN is
 /// `NonFinite`.
 #[test]
