@@ -1,8 +1,8 @@
-//! Long chains of Assur groups: the definitions of `tests/surface/long_chain.rs` and
+//! Long chains of Assur groups: the definitions of `tests/long_chain.rs` and
 //! what they cost the macro (a measurement, not a test).
 //!
 //! - `cargo run --release --example long_chain_cost -- --defs` prints the
-//!   definitions that `tests/surface/long_chain.rs` holds (they were pasted from this
+//!   definitions that `tests/long_chain.rs` holds (they were pasted from this
 //!   output; the generator is the functions below);
 //! - `cargo run --example long_chain_cost` (dev profile: the profile rustc
 //!   builds proc macros in) or with `--release`: for chains of 5 to 160

@@ -1,7 +1,7 @@
 //! The batch-versus-scalar comparison of the test crates `tests/batch/` and
-//! `tests/surface/` (`long_chain.rs`), included by their `main.rs` with
-//! `#[path]` and `#[macro_use]`; see `tests/batch/examples.rs`'s module
-//! documentation for the four points checked and for the tolerance `K`.
+//! `tests/long_chain.rs`, included with `#[path]` and `#[macro_use]`; see
+//! `tests/batch/examples.rs`'s module documentation for the four points
+//! checked and for the tolerance `K`.
 //!
 //! `compare!` takes, before its other arguments, the analysis level of the
 //! definition (`pos;`, `vel;`, `acc;`; without one, `acc`): a definition

@@ -9,13 +9,12 @@
 //!   subsets and `#[self_test]` in combinations the other tests do not write;
 //! - [`sweep`]: the assembly-range checks (`check()`, the run-time errors at
 //!   the limits, the ranges the expansion-time check suggests);
-//! - [`forces`]: the force analysis on loaded definitions the zoo does not have;
-//! - [`long_chain`]: chains of 10, 20 and 40 groups.
+//! - [`forces`]: the force analysis on loaded definitions the zoo does not have.
+//!
+//! Chains of 10, 20 and 40 groups are a test crate of their own
+//! (`tests/long_chain.rs`): their expansion is the largest single cost of a
+//! rebuild, and on its own it builds beside this crate instead of after it.
 
-// `compare!` (the batch path against the scalar one), used by `long_chain`.
-#[macro_use]
-#[path = "../common/batch_compare.rs"]
-mod batch_compare;
 #[path = "../common/equilibrium.rs"]
 #[allow(dead_code)]
 mod equilibrium;
@@ -24,6 +23,5 @@ mod surface_defs;
 
 mod dsl;
 mod forces;
-mod long_chain;
 mod statement_kinds;
 mod sweep;

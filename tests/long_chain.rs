@@ -20,14 +20,18 @@
 //! differences with a truncation estimate, the drive torque from the power
 //! balance, the group named by a failure, and the batch path against the
 //! scalar one (`tests/common/batch_compare.rs`). Run: `cargo test --release
-//! --test surface long_chain -- --nocapture` (prints the figures).
+//! --test long_chain -- --nocapture` (prints the figures).
 #![allow(non_snake_case)]
 
 use std::collections::HashMap;
 
 use mechanism::{mechanism, Fault, Point2, Primitive, Vector2};
 
-use crate::batch_compare::{one, rates, Found, K};
+// `compare!`: the batch path against the scalar one.
+#[macro_use]
+#[path = "common/batch_compare.rs"]
+mod batch_compare;
+use batch_compare::{one, rates, Found, K};
 
 const EPS: f64 = f64::EPSILON;
 const DEG: f64 = std::f64::consts::PI / 180.0;
