@@ -32,7 +32,7 @@ use reference::{Kind, Scene};
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// Interleaved rounds per method (the issue asks for at least 5).
+/// Interleaved rounds per method (the targets ask for at least 5).
 const ROUNDS: usize = 21;
 /// Minimum duration of one timed sample (ns): long against the timer.
 const MIN_SAMPLE_NS: f64 = 1.5e7;

@@ -1,6 +1,6 @@
-//! The harness both extreme-surface test files use: the finiteness check,
-//! the typed-error check, the bound check with its summary figures, and the
-//! decades a singular pose is approached by.
+//! The harness of `scale_definitions.rs` and `singular_definitions.rs`: the
+//! finiteness check, the typed-error check, the bound check with its summary
+//! figures, and the decades a singular pose is approached by.
 #![allow(dead_code)]
 
 use mechanism::{Error, Fault, Real};

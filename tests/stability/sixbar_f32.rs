@@ -1,13 +1,9 @@
 //! The f32 accuracy of the RRP group near tangency and of the generated
-//! six-bar (issue 5), against the double-double reference
+//! six-bar, against the double-double reference
 //! (`mechanism-reference`). The analysis behind the bounds is in
 //! `docs/stability.md`, section "f32 six-bar".
 
-#[path = "../examples/report/reference.rs"]
-#[allow(dead_code)]
-mod reference;
-#[path = "../examples/common/scenes.rs"]
-mod scenes;
+use crate::{reference, scenes};
 
 use mechanism::dyad::{rrp, rrr};
 use mechanism::guide::{Line, LineAcceleration, LineVelocity};
@@ -23,9 +19,9 @@ const EPS32: f64 = f32::EPSILON as f64;
 /// tangency, the RRP joint is accurate to a few eps of `l`, not to
 /// `eps / sqrt(delta)`: the reference takes the same `A`, `l` and the exact
 /// direction of the rounded pair, so the only error left is the group's own
-/// rounding. Before the compensation (`k` carried with its rounding error,
-/// the direction divided by its length) the error grew like
-/// `eps / sqrt(delta)`: 84 eps of `l` here (at `delta = 5.3e-5`); now 1.1.
+/// rounding. Without the compensation (`k` carried with its rounding error,
+/// the direction divided by its length) the error grows like
+/// `eps / sqrt(delta)`: 84 eps of `l` here (at `delta = 5.3e-5`); with it 1.1.
 #[test]
 fn rrp_f32_near_tangency_with_a_rounded_direction() {
     let l = 60.0f32;
@@ -154,7 +150,7 @@ fn generated_f32_six_bar_against_reference() {
 /// at the same f32-rounded crank angle (whose own error, about 1e-14, is far
 /// below what is measured). Prints one line per variant; asserts that the
 /// all-f32 replay is the generated f32 code (so that the study studies it).
-/// `cargo test --release --test sixbar_f32 -- --ignored --nocapture`.
+/// `cargo test --release --test stability sixbar_f32 -- --ignored --nocapture`.
 #[test]
 #[ignore = "prints the stage study (seconds in release)"]
 fn stage_study() {

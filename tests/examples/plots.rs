@@ -4,12 +4,8 @@
 //! in the legend, every joint drawn, links keeping their lengths across the animation,
 //! exactly one pose visible at any time.
 
-#[path = "../mechanism-plot/tests/check/mod.rs"]
-mod check;
-#[path = "../examples/common/mod.rs"]
-mod common;
-
-use check::*;
+use crate::check::*;
+use crate::common;
 use std::path::{Path, PathBuf};
 
 /// What a scene's pictures must hold, counted from its definition in

@@ -1,342 +1,34 @@
-//! Extreme surface: definitions and inputs the stability suite does not use,
-//! against the double-double reference (`mechanism_reference`, about 106
-//! bits: Newton on the loop closure for whole definitions, `groups` for single
-//! groups, `newton_euler` for forces).
+//! Definitions the stability suite's scenes do not have, driven to their
+//! singular poses, against the double-double references: a five-bar whose
+//! forearms become collinear, an RPR whose line passes through its pin and
+//! an RPR at its edge of assembly with an offset (whole definitions, against
+//! the loop-closure reference); a PRP whose guides become parallel (carried
+//! and fixed), an RPP whose slot becomes parallel to its guide, a linear
+//! actuator at its dead centres, an RRP at its edge with an offset (per
+//! group, from exact inputs).
 //!
-//! Every case asserts: an `Ok` answer is finite and within a bound of the form
-//! `c eps (1 / kappa)^k` of the reference (`kappa` the exact condition of the
-//! pose, `k` and `c` stated per case with the reason), an `Err` is typed (it
-//! names the group, its `Fault` is the one the geometry calls for), nothing
-//! panics. Errors are normwise relative per stage: `max |x - ref| / max |ref|`
-//! over the points (positions, velocities, accelerations separately) and over
-//! the angular quantities.
+//! Every case asserts: an `Ok` answer is finite and within `c eps / kappa^k`
+//! of the reference (normwise relative per stage), `kappa` the exact
+//! condition of the pose and `k`, `c` stated per case with the reason; an
+//! `Err` names the group and carries the fault the geometry calls for; the
+//! velocity's `condition` indicator is within a factor of the exact `kappa`
+//! (so it falls when the digits do); nothing panics.
 //!
-//! `cargo test --release --test extreme_surface -- --nocapture` prints the
-//! measured worst figures.
+//! `cargo test --release --test stability singular_definitions --
+//! --nocapture` prints the measured worst figures.
 
+use super::bounds::{all_finite, decades, typed, Worst};
+use super::param_defs::*;
+use super::reference_errors::*;
+use super::scale_definitions::SWEEP_K;
 use mechanism::{mechanism, Error, Fault, Real};
-use mechanism_reference::constraint::{Constraint, Linkage, Point, Side, V2};
+use mechanism_reference::constraint::{Constraint, Linkage, Point, Side};
+use mechanism_reference::groups::{self as rg, Line};
 use mechanism_reference::loop_closure;
 use mechanism_reference::Dd;
 
-#[path = "common/extreme.rs"]
-mod extreme;
-use extreme::{all_finite, decades, typed, Worst};
-
 // ---------------------------------------------------------------------------
-// Helpers.
-
-/// A fixed reference point.
-fn fixed(x: f64, y: f64) -> Point {
-    Point::Fixed(V2::new(x, y))
-}
-
-/// The reference's positions, velocities and accelerations of every point.
-struct Reference {
-    p: Vec<V2>,
-    v: Vec<V2>,
-    a: Vec<V2>,
-}
-
-/// Solves the reference linkage for inputs `q` (rad), rates `w`, accelerations
-/// `al`, from the start guess `start` (the code under test's answer: it only
-/// picks the branch).
-fn reference(
-    l: &Linkage,
-    q: &[f64],
-    w: &[f64],
-    al: &[f64],
-    start: &[(f64, f64)],
-) -> Option<Reference> {
-    let dd = |x: &[f64]| x.iter().map(|&v| Dd::from_f64(v)).collect::<Vec<_>>();
-    let (q, w, al) = (dd(q), dd(w), dd(al));
-    let pose = loop_closure::position(l, &q, start).ok()?;
-    let v = loop_closure::velocity(l, &pose, &q, &w).ok()?;
-    let a = loop_closure::acceleration(l, &pose, &v, &q, &w, &al).ok()?;
-    Some(Reference {
-        p: pose.points,
-        v,
-        a,
-    })
-}
-
-/// `|V2|` in double-double.
-fn norm(v: V2) -> Dd {
-    v.dot(v).sqrt()
-}
-
-/// Normwise relative error of `got` against `r`: `max |got - r| / max |r|`.
-fn rel_pts(got: &[(f64, f64)], r: &[V2]) -> f64 {
-    let mut e = 0.0f64;
-    let mut s = 0.0f64;
-    for (g, r) in got.iter().zip(r) {
-        e = e.max(norm(V2::new(g.0, g.1).minus(*r)).to_f64());
-        s = s.max(norm(*r).to_f64());
-    }
-    if s > 0.0 {
-        e / s
-    } else {
-        e
-    }
-}
-
-/// Normwise relative error of scalars.
-fn rel_scalars(got: &[f64], r: &[Dd]) -> f64 {
-    let mut e = 0.0f64;
-    let mut s = 0.0f64;
-    for (g, r) in got.iter().zip(r) {
-        e = e.max((Dd::from_f64(*g) - *r).abs().to_f64());
-        s = s.max(r.abs().to_f64());
-    }
-    if s > 0.0 {
-        e / s
-    } else {
-        e
-    }
-}
-
-/// `sin` of the angle between two vectors, exact to double-double.
-fn sin_between(a: V2, b: V2) -> f64 {
-    (a.cross(b).abs() / (norm(a) * norm(b))).to_f64()
-}
-
-fn pt<T: Real>(p: &mechanism::Point2<T>) -> (f64, f64) {
-    (p.x.as_f64(), p.y.as_f64())
-}
-
-fn vc<T: Real>(p: &mechanism::Vector2<T>) -> (f64, f64) {
-    (p.x.as_f64(), p.y.as_f64())
-}
-
-// ---------------------------------------------------------------------------
-// 1. Scales through run-time params: 1e-9 .. 1e9, f64 and f32; mixed scales.
-
-mechanism! {
-    /// Crank-rocker four-bar with every dimension a run-time parameter
-    /// (lengths in any unit; the defaults are the seed's in decimetres).
-    pub ScaledFourBar {
-        params { ground = 3.048, crank = 1.016, coupler = 2.54, rocker = 1.778, px = 1.2, py = 0.5 }
-        let O2 = ground(0.0, 0.0);
-        let O4 = ground(ground, 0.0);
-        let A = crank(O2, crank, theta) as link2;
-        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
-        let P = point(link3, from A, (px, py));
-    }
-}
-
-/// The reference of [`ScaledFourBar`] with the given (exact) dimensions:
-/// points O2, O4, A, B, P.
-fn fourbar_linkage(g: f64, r: f64, c: f64, k: f64, px: f64, py: f64) -> Linkage {
-    // P = A + px (B - A) / c + py perp(B - A) / c.
-    let (a, b) = (
-        Dd::from_f64(px) / Dd::from_f64(c),
-        Dd::from_f64(py) / Dd::from_f64(c),
-    );
-    Linkage {
-        points: vec![
-            fixed(0.0, 0.0),
-            fixed(g, 0.0),
-            Point::Unknown,
-            Point::Unknown,
-            Point::Unknown,
-        ],
-        constraints: vec![
-            Constraint::Crank {
-                p: 2,
-                o: 0,
-                r,
-                input: 0,
-            },
-            Constraint::Distance { p: 3, q: 2, len: c },
-            Constraint::Distance { p: 3, q: 1, len: k },
-            Constraint::Affine {
-                p: 4,
-                o: 2,
-                q: 3,
-                a,
-                b,
-            },
-        ],
-        sides: vec![Side::Left {
-            p: 3,
-            a: 2,
-            b: 1,
-            sign: 1.0,
-        }],
-        scale: g,
-    }
-}
-
-/// One scaled four-bar sample in `T`: errors per stage against the
-/// reference, kappa (sine of the transmission angle), or `None` if the
-/// reference fails (never expected here).
-fn fourbar_sample<T: Real + core::fmt::Debug>(
-    m: &ScaledFourBar<T>,
-    theta: f64,
-    w: f64,
-    al: f64,
-    what: &str,
-) -> ([f64; 3], f64) {
-    let inp = |x: f64| ScaledFourBarInput { theta: T::lit(x) };
-    let s = m
-        .solve(&inp(theta), &inp(w), &inp(al))
-        .unwrap_or_else(|e| panic!("{what}: the crank-rocker assembles everywhere: {e:?}"));
-    let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
-    let gp = [pt(&p.A), pt(&p.B), pt(&p.P)];
-    let gv = [vc(&v.A), vc(&v.B), vc(&v.P)];
-    let ga = [vc(&a.A), vc(&a.B), vc(&a.P)];
-    let ang_v = [v.link3.as_f64(), v.link4.as_f64()];
-    let ang_a = [a.link3.as_f64(), a.link4.as_f64()];
-    let flat: Vec<f64> = gp
-        .iter()
-        .chain(&gv)
-        .chain(&ga)
-        .flat_map(|x| [x.0, x.1])
-        .chain(ang_v)
-        .chain(ang_a)
-        .chain([v.condition.as_f64()])
-        .collect();
-    all_finite(&flat, what);
-    let l = fourbar_linkage(
-        m.ground.as_f64(),
-        m.crank.as_f64(),
-        m.coupler.as_f64(),
-        m.rocker.as_f64(),
-        m.px.as_f64(),
-        m.py.as_f64(),
-    );
-    // The angle the code used is the T-rounded one.
-    let th = T::lit(theta).as_f64();
-    let start = [(0.0, 0.0), (0.0, 0.0), gp[0], gp[1], gp[2]];
-    let r = reference(
-        &l,
-        &[th],
-        &[T::lit(w).as_f64()],
-        &[T::lit(al).as_f64()],
-        &start,
-    )
-    .unwrap_or_else(|| panic!("{what}: reference failed"));
-    let ep = rel_pts(&gp, &r.p[2..]);
-    let wr = [
-        loop_closure::angular_velocity(&r.p, &r.v, 2, 3),
-        loop_closure::angular_velocity(&r.p, &r.v, 1, 3),
-    ];
-    let ar = [
-        loop_closure::angular_acceleration(&r.p, &r.v, &r.a, 2, 3),
-        loop_closure::angular_acceleration(&r.p, &r.v, &r.a, 1, 3),
-    ];
-    let ev = rel_pts(&gv, &r.v[2..]).max(rel_scalars(&ang_v, &wr));
-    let ea = rel_pts(&ga, &r.a[2..]).max(rel_scalars(&ang_a, &ar));
-    let kappa = sin_between(r.p[3].minus(r.p[2]), r.p[3].minus(r.p[1]));
-    ([ep, ev, ea], kappa)
-}
-
-fn scaled<T: Real>(s: f64) -> ScaledFourBar<T> {
-    let b = ScaledFourBar::<f64>::default();
-    ScaledFourBar {
-        ground: T::lit(b.ground * s),
-        crank: T::lit(b.crank * s),
-        coupler: T::lit(b.coupler * s),
-        rocker: T::lit(b.rocker * s),
-        px: T::lit(b.px * s),
-        py: T::lit(b.py * s),
-    }
-}
-
-/// Bound for the whole-definition sweeps at ordinary poses (kappa >= 0.3 for
-/// this crank-rocker): positions `c eps / kappa` (the joint's height over the
-/// line of centres, see `stability.md`), rates `c eps / kappa^2` and
-/// accelerations `c eps / kappa^3` (each stage solves the same 2x2 system,
-/// whose inverse has norm `1 / kappa`, on data carrying the previous stage's
-/// error). `c = 32`: the parameters themselves round (half an ulp each,
-/// relative), the angle's `cos`/`sin` are within an ulp, and a handful of
-/// operations per stage each add half an ulp: the measured constants
-/// (printed) stay below 8; 32 leaves a factor of four without hiding a lost
-/// digit.
-const SWEEP_K: [i32; 3] = [1, 2, 3];
-const SWEEP_C: [f64; 3] = [32.0, 32.0, 32.0];
-
-fn scales_run<T: Real + core::fmt::Debug>(scales: &[f64], eps: f64, name: &str) {
-    for &s in scales {
-        let m = scaled::<T>(s);
-        let mut worst = Worst::new();
-        for i in 0..48 {
-            let theta = -3.1 + 0.1311 * i as f64;
-            let what = format!("{name} scale {s:e} theta {theta}");
-            let (e, kappa) = fourbar_sample(&m, theta, 7.3, -41.0, &what);
-            worst.record(e, kappa, SWEEP_K, SWEEP_C, eps, &what);
-        }
-        worst.print(&format!("{name} four-bar at scale {s:e}"));
-    }
-}
-
-#[test]
-fn scales_1e_minus9_to_1e9_f64() {
-    scales_run::<f64>(&[1e-9, 1e-3, 1.0, 1e3, 1e9], f64::EPSILON, "f64");
-}
-
-#[test]
-fn scales_1e_minus9_to_1e9_f32() {
-    // f32 represents 1e-9 .. 1e9 lengths; squared lengths (1e-19 .. 1e19 here
-    // with the 0.1 .. 0.3 base) are normal numbers too.
-    scales_run::<f32>(&[1e-9, 1e-3, 1.0, 1e3, 1e9], f32::EPSILON as f64, "f32");
-}
-
-/// Lengths far from 1 where the RRR's Heron product (fourth power of the
-/// lengths) leaves the normal range while every length, square and result is
-/// an ordinary number: f32 3e-12 .. 1e12 (before the fix: 5e5 eps wrong,
-/// silently, at 3e-12 from a subnormal product; `CannotAssemble`/`Singular`
-/// from 3e9 up from an infinite one), f64 1e-100 and 1e100 (a zero or
-/// infinite product). Same bound as the ordinary scales.
-#[test]
-fn rrr_lengths_far_from_one() {
-    scales_run::<f32>(
-        &[3e-12, 1e-11, 1e-10, 3e9, 1e10, 1e12],
-        f32::EPSILON as f64,
-        "f32 far",
-    );
-    scales_run::<f64>(&[1e-100, 1e-80, 1e80, 1e100], f64::EPSILON, "f64 far");
-}
-
-/// Mixed scales in one definition: a 1.3e-3 crank on a 1000.3 frame (a
-/// crank-rocker: 1.3e-3 + 1000.3 <= 999.1 + 1.7). Errors per stage relative
-/// to the stage's largest value: the crank's motion is tiny against the
-/// frame, so this checks that nothing is lost against the large lengths.
-#[test]
-fn mixed_scales_small_crank_large_frame() {
-    let m = ScaledFourBar::<f64> {
-        ground: 1000.3,
-        crank: 1.3e-3,
-        coupler: 999.1,
-        rocker: 1.7,
-        px: 500.0,
-        py: 0.01,
-    };
-    let mut worst = Worst::new();
-    for i in 0..48 {
-        let theta = -3.1 + 0.1311 * i as f64;
-        let what = format!("mixed theta {theta}");
-        let (e, kappa) = fourbar_sample(&m, theta, 7.3, -41.0, &what);
-        // Positions relative to the frame (1000). The rocker (1.7) is
-        // pivoted at 1000.3: its pivot, and B, carry rounding of eps * 1000,
-        // which is eps * 1000 / 1.7 of the rocker's direction, hence of the
-        // rates and accelerations (inherent: the input O4 itself is rounded
-        // so). Bound: `c = 4` times that ratio for rates and accelerations.
-        let lratio = m.ground / m.rocker;
-        worst.record(
-            e,
-            kappa,
-            SWEEP_K,
-            [SWEEP_C[0], 4.0 * lratio, 4.0 * lratio],
-            f64::EPSILON,
-            &what,
-        );
-    }
-    worst.print("f64 mixed 1.3e-3 crank on 1000.3 frame");
-}
-
-// ---------------------------------------------------------------------------
-// 2. Toggles and dead centres approached geometrically.
+// Toggles and dead centres of whole definitions approached geometrically.
 
 /// Distances from the singular pose: 1e-1 .. 1e-15 (rad), both sides, with a
 /// non-round mantissa.
@@ -744,4 +436,258 @@ fn rpr_edge_of_assembly_with_offset() {
     worst.print("rpr edge with offset");
     println!("rpr edge with offset: {skipped} samples without a converged reference");
     assert!(skipped <= 6, "{skipped} samples without a reference");
+}
+
+// ---------------------------------------------------------------------------
+// The parameter definitions (`param_defs.rs`) approaching their singular
+// poses.
+
+/// Runs `sample` over `cases` (label, argument); asserts the bound on `Ok`
+/// samples and the indicator, `err_ok` on errors (which must be typed for
+/// `group`); returns the worst figures.
+#[allow(clippy::too_many_arguments)]
+fn approach_run<T: Real + core::fmt::Debug>(
+    cases: &[(String, f64)],
+    sample: impl Fn(f64, &str) -> Sample<T>,
+    group: &str,
+    k: [i32; 3],
+    c: [f64; 3],
+    fault_ok: impl Fn(&Fault<T>, f64) -> bool,
+    name: &str,
+) -> Worst {
+    let eps = T::eps().as_f64();
+    let mut worst = Worst::new();
+    for (label, x) in cases {
+        let what = format!("{name} {label}");
+        match sample(*x, &what) {
+            // No reference (inside the code's rounding band): no figures.
+            Ok((e, _, _)) if e[0].is_nan() => {}
+            Ok((e, kappa, cond)) => {
+                worst.record(e, kappa, k, c, eps, &what);
+                worst.indicator(cond, kappa, &what);
+            }
+            Err(er) => {
+                typed(&er, group, |f| fault_ok(f, *x), &what);
+                worst.errs += 1;
+            }
+        }
+    }
+    worst.print(name);
+    worst
+}
+
+/// PRP with its guides approaching parallel: the rod (carried by the crank)
+/// at `theta = phi + delta`, `delta` 1e-1 .. 1e-15 rad (f32: to 1e-7), both
+/// sides. `kappa = |sin delta|`. The determinant `cross(d1, d2)` cancels to
+/// `kappa` from unit vectors each rounded to an ulp: `eps / kappa` relative,
+/// which is the positions' error (`C ~ h / kappa`, `k = 1`); the rates and
+/// accelerations are quotients by the same determinant of data carrying
+/// `C`'s relative error (`w ~ omega perp(C)`, no further cancellation), so
+/// `k = 1` for them too. `c = 16`: the angle's `sin`/`cos` within an ulp,
+/// `phi`'s own, and a handful of roundings (measured constants printed).
+/// `Singular` naming C only where `kappa <= 16 eps` (the threshold) up to
+/// rounding (2x).
+fn prp_parallel_run<T: Real + core::fmt::Debug>(name: &str, smallest: f64) {
+    let m = PrpRod::<T>::default();
+    let eps = T::eps().as_f64();
+    let mut cases = Vec::new();
+    for x in decades().into_iter().filter(|&x| x >= smallest) {
+        for sign in [1.0, -1.0] {
+            cases.push((format!("delta {:e}", sign * x), 0.4 + sign * x));
+        }
+    }
+    // The carried guide and the fixed one: also both carried through the
+    // other crossing, theta = phi + pi.
+    for x in decades().into_iter().filter(|&x| x >= smallest) {
+        cases.push((format!("delta pi + {x:e}"), 0.4 + std::f64::consts::PI + x));
+    }
+    approach_run::<T>(
+        &cases,
+        |x, w| prp_sample(&m, x, w),
+        "C",
+        [1, 1, 1],
+        [16.0; 3],
+        |f, x| {
+            let delta = ((x - 0.4).sin()).abs();
+            matches!(f, Fault::Singular { .. }) && delta < 64.0 * eps
+        },
+        name,
+    );
+}
+
+#[test]
+fn prp_guides_approaching_parallel() {
+    prp_parallel_run::<f64>("f64 prp rod to parallel", 0.0);
+    prp_parallel_run::<f32>("f32 prp rod to parallel", 1e-7);
+}
+
+/// PRP on two fixed guides (the group's primitive, as the generated code
+/// calls it for fixed guides): the second guide at `phi + delta`. Position
+/// only (the rates of fixed guides are zero): `k = 1`, `c = 16` as above.
+#[test]
+fn prp_fixed_guides_approaching_parallel() {
+    use mechanism::dyad::prp;
+    use mechanism::guide::Line as CLine;
+    use nalgebra::{Point2, Vector2};
+    let mut worst = Worst::new();
+    for x in decades() {
+        for sign in [1.0, -1.0] {
+            let what = format!("prp fixed delta {:e}", sign * x);
+            let (p1, p2) = (0.4f64, 0.4 + sign * x);
+            let g1 = CLine {
+                origin: Point2::new(0.0, 0.0),
+                dir: Vector2::new(p1.cos(), p1.sin()),
+            };
+            let g2 = CLine {
+                origin: Point2::new(0.3, 1.0),
+                dir: Vector2::new(p2.cos(), p2.sin()),
+            };
+            match prp::position(&g1, 0.1, &g2, -0.2) {
+                Ok(p) => {
+                    let got = [p.c.x, p.c.y, p.s1, p.s2];
+                    all_finite(&got, &what);
+                    let r1 = Line::new([0.0, 0.0], [g1.dir.x, g1.dir.y]);
+                    let r2 = Line::new([0.3, 1.0], [g2.dir.x, g2.dir.y]);
+                    let (c, s1, s2) = rg::prp_position(&r1, 0.1, &r2, -0.2).unwrap();
+                    let e = rel(&got[..2], &flat(&[c])).max(rel(&got[2..], &[s1, s2]));
+                    let kappa = rg::cross(r1.dir, r2.dir).abs().to_f64();
+                    worst.record(
+                        [e, 0.0, 0.0],
+                        kappa,
+                        [1, 1, 1],
+                        [16.0; 3],
+                        f64::EPSILON,
+                        &what,
+                    );
+                }
+                Err(e) => {
+                    assert!(matches!(e.fault, Fault::Singular { .. }), "{what}: {e:?}");
+                    assert!(x < 64.0 * f64::EPSILON, "{what}: {e:?}");
+                    worst.errs += 1;
+                }
+            }
+        }
+    }
+    worst.print("f64 prp fixed guides to parallel");
+}
+
+/// RPP with the slot approaching parallel to the guide (`slot = delta`, and
+/// `pi - delta`). `kappa = |sin slot|`. The determinant is `|dir|^2 sin
+/// slot` (no cancellation: the slot's world direction is built from the
+/// guide's), so the slides `~ 1 / kappa` carry only the rounding of their
+/// data and of `sin`: `k = 1` is the bound's allowance for the rates'
+/// right-hand sides, measured far below it; `c = 16`. `Singular` naming Q
+/// only at `kappa <= 16 eps` (2x rounding).
+fn rpp_parallel_run<T: Real + core::fmt::Debug>(name: &str, smallest: f64) {
+    let eps = T::eps().as_f64();
+    let mut cases = Vec::new();
+    for x in decades().into_iter().filter(|&x| x >= smallest) {
+        cases.push((format!("slot {x:e}"), x));
+        cases.push((format!("slot pi - {x:e}"), std::f64::consts::PI - x));
+    }
+    approach_run::<T>(
+        &cases,
+        |x, w| {
+            let m = RppSlot::<T> {
+                slot: T::lit(x),
+                ..RppSlot::<T>::default()
+            };
+            rpp_sample(&m, 0.9, w)
+        },
+        "Q",
+        [1, 1, 1],
+        [16.0; 3],
+        |f, x| matches!(f, Fault::Singular { .. }) && x.sin().abs() < 64.0 * eps,
+        name,
+    );
+}
+
+#[test]
+fn rpp_slot_approaching_parallel() {
+    rpp_parallel_run::<f64>("f64 rpp slot to parallel", 0.0);
+    rpp_parallel_run::<f32>("f32 rpp slot to parallel", 1e-7);
+}
+
+/// The linear actuator at full extension (`len = (b + r)(1 - delta)`) and
+/// full retraction (`len = (b - r)(1 + delta)`): the RRR toggle, `kappa ~
+/// sqrt(delta)`. Positions `c eps / kappa`, rates `/ kappa^2`,
+/// accelerations `/ kappa^3` (the RRR's reasons, `TOGGLE_C` above),
+/// `c = 8`. Errors (`Singular`, or `CannotAssemble` from the other side of
+/// the rounding band) naming C only for `delta < 1e-13` (the band `4 eps`).
+#[test]
+fn actuator_dead_centres() {
+    for (name, base, sign) in [("extension", 3.0, -1.0), ("retraction", 1.0, 1.0)] {
+        let cases: Vec<(String, f64)> = decades()
+            .into_iter()
+            .map(|x| (format!("delta {x:e}"), base * (1.0 + sign * x)))
+            .collect();
+        let m = Ram::<f64>::default();
+        approach_run::<f64>(
+            &cases,
+            |len, w| ram_sample(&m, len, 0.7, -3.0, w),
+            "C",
+            [1, 2, 3],
+            [8.0; 3],
+            |f, len| {
+                matches!(f, Fault::Singular { .. } | Fault::CannotAssemble { .. })
+                    && (len / base - 1.0).abs() < 1e-13
+            },
+            &format!("f64 actuator full {name}"),
+        );
+    }
+}
+
+/// RRP at its edge of assembly with a non-zero offset, both signs (the line
+/// y = e below the crank tip A and above it), from inside and outside: `e`
+/// puts A at `l (1 -+ rel)` from the line, rel 1e-1 .. 1e-15. `kappa =
+/// |cos|` of link 1 against the guide `~ sqrt(2 rel)`: positions `c eps /
+/// kappa`, rates `/ kappa^2`, accelerations `/ kappa^3`, `c = 8` (as the
+/// RRR's edge). Outside by more than the band (`4 eps l`, `rel > 1e-13`):
+/// `CannotAssemble` naming C; inside it must assemble unless within the
+/// band.
+#[test]
+fn rrp_edge_with_offset() {
+    let theta = 1.2f64;
+    let ay = theta.sin();
+    let l = 1.5;
+    let mut refused = 0;
+    for (side, dist_sign) in [("line below A", 1.0), ("line above A", -1.0)] {
+        for (way, rel_sign) in [("inside", -1.0), ("outside", 1.0)] {
+            let cases: Vec<(String, f64)> = decades()
+                .into_iter()
+                .map(|x| (format!("rel {x:e}"), x))
+                .collect();
+            let w = approach_run::<f64>(
+                &cases,
+                |x, what| {
+                    let e = ay - dist_sign * l * (1.0 + rel_sign * x);
+                    let m = RrpEdge::<f64> {
+                        e,
+                        l,
+                        ..RrpEdge::<f64>::default()
+                    };
+                    let r = rrp_sample(&m, theta, what);
+                    if r.is_ok() {
+                        assert!(!(rel_sign > 0.0 && x > 1e-13), "{what}: assembled outside");
+                    }
+                    r
+                },
+                "C",
+                [1, 2, 3],
+                [8.0; 3],
+                |f, x| {
+                    if rel_sign > 0.0 && x > 1e-13 {
+                        matches!(f, Fault::CannotAssemble { .. })
+                    } else {
+                        matches!(f, Fault::Singular { .. } | Fault::CannotAssemble { .. })
+                            && x < 1e-13
+                    }
+                },
+                &format!("f64 rrp edge, {side}, {way}"),
+            );
+            refused += w.errs;
+        }
+    }
+    // 13 decades outside by more than the band, on two sides.
+    assert!(refused >= 26, "only {refused} refused");
 }

@@ -62,7 +62,7 @@ fn cross(a: &V, b: &V) -> f64 {
 // Seed 003
 // ---------------------------------------------------------------------------
 
-#[path = "../../examples/common/seed003.rs"]
+#[path = "../../../examples/common/seed003.rs"]
 mod seed003;
 use seed003::group as seed_003;
 

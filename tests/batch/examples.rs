@@ -42,14 +42,10 @@
 use mechanism::mechanism;
 use std::collections::HashMap;
 
-// `compare!`, `one_input!` and their helpers, shared with
-// `tests/batch_surface.rs`.
-#[macro_use]
-#[path = "common/batch_compare.rs"]
-mod batch_compare;
-use batch_compare::*;
+// `compare!`, `one_input!` (declared in `main.rs`) and their helpers.
+use crate::batch_compare::*;
 
-#[path = "../examples/common/scenes.rs"]
+#[path = "../../examples/common/scenes.rs"]
 mod scenes;
 use scenes::*;
 

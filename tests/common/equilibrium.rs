@@ -1,14 +1,15 @@
-//! What every mechanism of the zoo is checked with: Newton-Euler per body,
-//! the power balance, constraint lengths and finite differences.
+//! What the zoo (`tests/zoo`) and the loaded definitions of
+//! `tests/surface/forces.rs` are checked with: Newton-Euler per body, the
+//! power balance, constraint lengths and finite differences.
 
 use mechanism::{force::PrismaticReaction, Point2, Vector2};
 
 /// Gravity (m/s^2).
 pub const G: Vector2<f64> = Vector2::new(0.0, -9.81);
 /// Equilibrium and power residuals, relative to the largest term (see
-/// `main.rs`).
+/// `tests/zoo/main.rs`).
 pub const TOL: f64 = 1e-13;
-/// Finite-difference step (see `main.rs`).
+/// Finite-difference step (see `tests/zoo/main.rs`).
 pub const H: f64 = 1e-5;
 
 pub fn cross(a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
@@ -125,7 +126,7 @@ pub fn assert_len(a: Point2<f64>, b: Point2<f64>, l: f64, what: &str) {
 }
 
 /// Asserts a generated rate against its central difference, to 1e-7 of
-/// `max(1, scale)` (see `main.rs`).
+/// `max(1, scale)` (see `tests/zoo/main.rs`).
 pub fn close_fd(got: Vector2<f64>, fd: Vector2<f64>, scale: f64, what: &str) {
     assert!(
         (got - fd).norm() <= 1e-7 * scale.max(1.0),

@@ -14,12 +14,10 @@
 //! 5. the five-bar's typed errors: an unreachable pose is `CannotAssemble` in
 //!    group `P`, never NaN.
 //!
-//! Every check prints its worst observed error (`cargo test --test examples --
+//! Every check prints its worst observed error (`cargo test --test examples kinematics --
 //! --nocapture`) and states in the assertion message what it observed.
 
-#[path = "../examples/common/mod.rs"]
-mod common;
-
+use crate::common;
 use common::scenes::*;
 use mechanism::{Error, Fault, Point2, Primitive, Real, Vector2};
 use std::f64::consts::PI;

@@ -1,6 +1,6 @@
 //! The batch API (`solve_batch` and its lane kernel) against the scalar
-//! path, element by element, on definitions `tests/batch_lane.rs` does not
-//! cover: the unusual ones of `tests/dsl_surface.rs` (unicode and DSL words
+//! path, element by element, on definitions `examples.rs` does not
+//! cover: the unusual ones of `tests/surface/dsl.rs` (unicode and DSL words
 //! as names, statements out of order, parameters everywhere, group offsets
 //! and a slot angle from parameters, a guide carried by a block, two cranks
 //! one read `as cos_sin`, a slider on a carried guide, output subsets down
@@ -13,30 +13,24 @@
 //! assemble, singular ones, NaN, infinite and huge inputs and infinite
 //! rates.
 //!
-//! The comparison (`compare!`, shared with `batch_lane.rs` through
+//! The comparison (`compare!`, shared with `examples.rs` through
 //! `tests/common/batch_compare.rs`) checks the four points of
-//! `batch_lane.rs`'s module documentation: a lane kernel exists, it accepts
+//! `examples.rs`'s module documentation: a lane kernel exists, it accepts
 //! only elements the scalar path solves and hands back at most 1 % of the
 //! others, statuses and failed levels match the scalar path bit for bit, and
 //! ok elements agree within `K = 64` eps of the level's scale times
 //! condition^2 (the justification is there). The worst scaled error per
 //! definition and precision is printed with `--nocapture`.
-#![allow(non_snake_case, mixed_script_confusables, confusable_idents)]
+#![allow(non_snake_case)]
 // `both!` takes parameters as `field: value` (it casts the value for f32).
 #![allow(clippy::redundant_field_names)]
 
+use crate::batch_compare::*;
+use crate::surface_defs::*;
 use mechanism::mechanism;
-#[path = "common/surface_defs.rs"]
-mod surface_defs;
 use std::collections::HashMap;
-use surface_defs::*;
 
-#[macro_use]
-#[path = "common/batch_compare.rs"]
-mod batch_compare;
-use batch_compare::*;
-
-// ------------------------------------------- from tests/dsl_surface.rs
+// ------------------------------------------- from tests/surface/dsl.rs
 
 // ------------------------------------------------------------- new ones
 

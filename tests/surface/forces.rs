@@ -24,11 +24,7 @@
 //! dropped, a force put on the other link of its joint) and must then fail:
 //! the mistakes are at least 1e-3 of the largest term, 1e10 times `TOL`.
 
-#[path = "zoo/common.rs"]
-#[allow(dead_code)]
-mod common;
-
-use common::*;
+use crate::equilibrium::*;
 use mechanism::{mechanism, Vector2};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -1488,8 +1484,8 @@ mechanism! {
 
 /// A literal mass that is not positive is a compile error; one from `params`
 /// must be a run-time error naming the group that creates the link: a
-/// negative mass gives finite, balanced and wrong reactions (the reviewer's
-/// `m = -1` returned `Ok` with a power residual of 1e-16). Zero is not a mass
+/// negative mass gives finite, balanced and wrong reactions (unchecked, `m =
+/// -1` returns `Ok` with a power residual of 1e-16). Zero is not a mass
 /// (leave the statement out), a moment of inertia may be zero, and NaN is
 /// `NonFinite`.
 #[test]

@@ -13,11 +13,9 @@
 //!   system defeats unscaled, unpivoted elimination.
 //!
 //! Seed 003 goes through the core primitive (`examples/assur_rrr.rs`); its
-//! test is `mechanism-core/tests/kinetostatics.rs`, which shares the data.
+//! test is `mechanism-core/tests/primitives/kinetostatics.rs`, which shares the data.
 
-#[path = "../examples/common/mod.rs"]
-mod common;
-
+use crate::common;
 use common::scenes::*;
 use mechanism::force::group::{assemble, Connection, Joint, Pair};
 use mechanism::force::Wrench;

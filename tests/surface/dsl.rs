@@ -1,5 +1,5 @@
 //! The definition language's surface in combinations the scenes, the zoo
-//! and macro_groups.rs do not write: DSL words, unicode and long names as
+//! and statement_kinds.rs do not write: DSL words, unicode and long names as
 //! names; statements in reverse dependency order; dimensions, offsets and
 //! angles from `params`, `const`s (one computed from another), arithmetic,
 //! negation, integer literals; every group's offset from a parameter; a
@@ -17,11 +17,9 @@
 //! (a two-input `#[self_test]` without both ranges; a slide named `B_x`
 //! beside a point `B` in the batch API).
 #![allow(non_snake_case, dead_code)]
+use crate::surface_defs::*;
 use mechanism::mechanism;
-#[path = "common/surface_defs.rs"]
-mod surface_defs;
 use mechanism::{Point2, Vector2};
-use surface_defs::*;
 
 mechanism! {
     pub ForceNameClash {
