@@ -41,7 +41,9 @@ macro_rules! impl_buffers {
         impl Buffers<$t> {
             fn new(n: usize) -> Self {
                 Buffers {
-                    theta: (0..n).map(|k| (k as f64 * 0.1).to_radians() as $t).collect(),
+                    theta: (0..n)
+                        .map(|k| (k as f64 * 0.1).to_radians() as $t)
+                        .collect(),
                     w: vec![250.0; n],
                     a: vec![0.0; n],
                     out: vec![vec![0.0; n]; 18],
@@ -102,7 +104,10 @@ fn per_thread<B: BatchSplit, F: Fn(B) -> usize + Sync>(b: B, pieces: usize, f: &
     let left = pieces / 2;
     let mid = b.len() * left / pieces;
     let (lo, hi) = b.split_at(mid);
-    let (x, y) = rayon::join(|| per_thread(lo, left, f), || per_thread(hi, pieces - left, f));
+    let (x, y) = rayon::join(
+        || per_thread(lo, left, f),
+        || per_thread(hi, pieces - left, f),
+    );
     x + y
 }
 
@@ -161,7 +166,10 @@ fn main() {
     println!(
         "threads {}, load average {}",
         rayon::current_num_threads(),
-        load.split_whitespace().take(3).collect::<Vec<_>>().join(" ")
+        load.split_whitespace()
+            .take(3)
+            .collect::<Vec<_>>()
+            .join(" ")
     );
     println!("\n| elements | scalar | {} |", POLICIES.join(" | "));
     println!("|---:|---|{}", "---:|".repeat(POLICIES.len()));

@@ -14,8 +14,14 @@ fn main() {
         out.push_str(line);
         out.push('\n');
         if line.trim_end() == "```rust" {
-            let block: Vec<&str> = lines.clone().take_while(|l| !l.starts_with("```")).collect();
-            if !block.iter().any(|l| l.contains("use mechanism::mechanism;")) {
+            let block: Vec<&str> = lines
+                .clone()
+                .take_while(|l| !l.starts_with("```"))
+                .collect();
+            if !block
+                .iter()
+                .any(|l| l.contains("use mechanism::mechanism;"))
+            {
                 out.push_str("# use mechanism::mechanism;\n");
             }
         }

@@ -30,6 +30,8 @@ pub mod link;
 pub mod linsolve;
 pub mod mode;
 pub mod scalar;
+#[cfg(feature = "serde")]
+mod serde_arrays;
 pub mod sincos64;
 pub mod sweep;
 pub mod trig;
