@@ -31,7 +31,7 @@ pub mod linsolve;
 pub mod mode;
 pub mod scalar;
 #[cfg(feature = "serde")]
-mod serde_arrays;
+mod ser;
 pub mod sincos64;
 pub mod sweep;
 pub mod trig;

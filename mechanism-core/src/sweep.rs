@@ -129,16 +129,10 @@ pub enum Event<const D: usize> {
         /// Index of the group.
         group: usize,
         /// Lower corner.
-        #[cfg_attr(
-            feature = "serde",
-            serde(serialize_with = "crate::serde_arrays::array")
-        )]
+        #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
         lo: [f64; D],
         /// Upper corner.
-        #[cfg_attr(
-            feature = "serde",
-            serde(serialize_with = "crate::serde_arrays::array")
-        )]
+        #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
         hi: [f64; D],
         /// The fault at the first failing sample.
         fault: Fault,
@@ -151,10 +145,7 @@ pub enum Event<const D: usize> {
         /// Index of the group.
         group: usize,
         /// Where.
-        #[cfg_attr(
-            feature = "serde",
-            serde(serialize_with = "crate::serde_arrays::array")
-        )]
+        #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
         at: [f64; D],
         /// The smallest scaled determinant found there.
         det: f64,
@@ -564,20 +555,14 @@ pub struct GroupReport<const D: usize> {
     pub failures: u32,
     /// The failing interval with the lowest start (one input), or the
     /// bounding box of the failing grid points (two inputs).
-    #[cfg_attr(
-        feature = "serde",
-        serde(serialize_with = "crate::serde_arrays::option_corners")
-    )]
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::opt_corners"))]
     pub failure: Option<([f64; D], [f64; D])>,
     /// The fault at the first failing sample.
     pub fault: Option<Fault>,
     /// Singular positions found (one input), or grid sign changes (two).
     pub singular: u32,
     /// The lowest singular input found.
-    #[cfg_attr(
-        feature = "serde",
-        serde(serialize_with = "crate::serde_arrays::option_array")
-    )]
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::opt_array"))]
     pub first_singular: Option<[f64; D]>,
 }
 
@@ -586,22 +571,13 @@ pub struct GroupReport<const D: usize> {
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Report<const G: usize, const D: usize> {
     /// The inputs' names.
-    #[cfg_attr(
-        feature = "serde",
-        serde(serialize_with = "crate::serde_arrays::array")
-    )]
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
     pub inputs: [&'static str; D],
     /// The ranges swept.
-    #[cfg_attr(
-        feature = "serde",
-        serde(serialize_with = "crate::serde_arrays::array")
-    )]
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
     pub ranges: [Range; D],
     /// Per group.
-    #[cfg_attr(
-        feature = "serde",
-        serde(serialize_with = "crate::serde_arrays::array")
-    )]
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
     pub groups: [GroupReport<D>; G],
     /// Per group: `true` where a vanishing determinant puts the joint at
     /// infinity (a PRP's parallel guides, an RPP's slot parallel to its

@@ -24,7 +24,7 @@ pub(crate) fn array<T: Serialize, const N: usize, S: Serializer>(
 }
 
 /// `Option<[T; N]>`: `None`, or the array as a sequence.
-pub(crate) fn option_array<T: Serialize, const N: usize, S: Serializer>(
+pub(crate) fn opt_array<T: Serialize, const N: usize, S: Serializer>(
     a: &Option<[T; N]>,
     s: S,
 ) -> Result<S::Ok, S::Error> {
@@ -36,7 +36,7 @@ pub(crate) fn option_array<T: Serialize, const N: usize, S: Serializer>(
 
 /// `Option<([T; N], [T; N])>` (an interval's corners): `None`, or a pair of
 /// sequences.
-pub(crate) fn option_corners<T: Serialize, const N: usize, S: Serializer>(
+pub(crate) fn opt_corners<T: Serialize, const N: usize, S: Serializer>(
     a: &Option<([T; N], [T; N])>,
     s: S,
 ) -> Result<S::Ok, S::Error> {
