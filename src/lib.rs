@@ -100,9 +100,9 @@ pub use mechanism_core::{lane, scalar, sincos64, sweep, trig64};
 pub use mechanism_macros::mechanism;
 
 mod batch;
+pub use batch::BatchSplit;
 #[cfg(feature = "rayon")]
 #[cfg_attr(docsrs, doc(cfg(feature = "rayon")))]
-pub use batch::par_solve;
-pub use batch::BatchSplit;
+pub use batch::{par_solve, PAR_MIN_PIECE};
 
 pub mod example;
