@@ -2,7 +2,9 @@
 //! the measurement behind `mechanism::PAR_MIN_PIECE` (`docs/performance.md`,
 //! "Over many cores"). A four-bar (outputs A, B, link3, link4 at three
 //! levels: 18 output columns), f64 and f32; per size, nanoseconds per element
-//! (median over interleaved rounds, each round at least 20 ms) of
+//! of each method, the minimum and the median over interleaved rounds of at
+//! least 2 ms each (the minimum is the round least disturbed by other
+//! processes: on a shared machine it is the figure to compare) of
 //!
 //! - `serial`: `solve_batch` on the calling thread;
 //! - `halves-512`: the batch halved recursively down to pieces of at most
@@ -11,7 +13,7 @@
 //! - `par_solve`: the library's function (`min_len` 0).
 //!
 //! `cargo bench --features rayon --bench par_batch` (prints a Markdown table;
-//! `PAR_BATCH_ROUNDS` sets the rounds, 11 by default).
+//! `PAR_BATCH_ROUNDS` sets the rounds, 51 by default).
 
 use mechanism::{mechanism, BatchSplit};
 use std::hint::black_box;
@@ -113,7 +115,8 @@ fn per_thread<B: BatchSplit, F: Fn(B) -> usize + Sync>(b: B, pieces: usize, f: &
 
 const POLICIES: [&str; 4] = ["serial", "halves-512", "per-thread", "par_solve"];
 
-/// Nanoseconds per element of each policy at `n` elements, median of `rounds`.
+/// Nanoseconds per element of each policy at `n` elements: (minimum, median)
+/// over `rounds`.
 macro_rules! measure {
     ($t:ty, $n:expr, $rounds:expr) => {{
         let n: usize = $n;
@@ -130,11 +133,11 @@ macro_rules! measure {
                 _ => mechanism::par_solve(b, 0, &solve),
             }
         };
-        // Repetitions per timed sample: at least 20 ms of the serial batch.
+        // Repetitions per timed sample: at least 2 ms of the serial batch.
         let t0 = Instant::now();
         black_box(run(0));
         let once = t0.elapsed().max(Duration::from_nanos(1));
-        let reps = (Duration::from_millis(20).as_nanos() / once.as_nanos()).max(1) as u32;
+        let reps = (Duration::from_millis(2).as_nanos() / once.as_nanos()).max(1) as u32;
         let mut ns: Vec<Vec<f64>> = vec![Vec::new(); POLICIES.len()];
         for _ in 0..$rounds {
             for (p, v) in ns.iter_mut().enumerate() {
@@ -148,9 +151,9 @@ macro_rules! measure {
         ns.into_iter()
             .map(|mut v| {
                 v.sort_by(f64::total_cmp);
-                v[v.len() / 2]
+                (v[0], v[v.len() / 2])
             })
-            .collect::<Vec<f64>>()
+            .collect::<Vec<(f64, f64)>>()
     }};
 }
 
@@ -158,7 +161,7 @@ fn main() {
     let rounds: usize = std::env::var("PAR_BATCH_ROUNDS")
         .ok()
         .and_then(|s| s.parse().ok())
-        .unwrap_or(11);
+        .unwrap_or(51);
     let sizes = [
         1_000, 2_000, 4_000, 8_000, 16_000, 32_000, 64_000, 100_000, 300_000, 1_000_000,
     ];
@@ -171,13 +174,17 @@ fn main() {
             .collect::<Vec<_>>()
             .join(" ")
     );
+    println!("\nns per element, minimum / median over {rounds} rounds");
     println!("\n| elements | scalar | {} |", POLICIES.join(" | "));
     println!("|---:|---|{}", "---:|".repeat(POLICIES.len()));
     for &n in &sizes {
         let r64 = measure!(f64, n, rounds);
         let r32 = measure!(f32, n, rounds);
         for (t, r) in [("f64", r64), ("f32", r32)] {
-            let cells: Vec<String> = r.iter().map(|x| format!("{x:.2}")).collect();
+            let cells: Vec<String> = r
+                .iter()
+                .map(|(lo, med)| format!("{lo:.2} / {med:.2}"))
+                .collect();
             println!("| {n} | {t} | {} |", cells.join(" | "));
         }
     }

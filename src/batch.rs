@@ -16,14 +16,16 @@ pub trait BatchSplit: Sized + Send {
 
 /// The smallest piece `par_solve` hands to a thread, in elements.
 ///
-/// Chosen from `benches/par_batch.rs` (`docs/performance.md`, "Over many
-/// cores"): handing a piece to another thread costs a few microseconds
-/// (waking a worker, joining), about what the four-bar's batch does in 2000
-/// to 4000 elements; with pieces of at least 16384 elements rayon was at
-/// least as fast as one thread at every size measured, in `f32` (the cheapest
-/// elements, 2 to 4 ns) as in `f64`.
+/// Chosen from `benches/par_batch.rs` (the table is in
+/// `docs/performance.md`, "Over many cores"): on the four-bar's batch (18
+/// output columns) two pieces beat one thread from about 2000 elements per
+/// piece in `f64` and 2000 to 4000 in `f32` (the cheaper elements), and
+/// smaller pieces lose up to 25 % to waking and joining a worker. 4096 is
+/// twice the `f32` break-even piece: below 8192 elements `par_solve` runs on
+/// the calling thread. A mechanism whose elements are cheaper than the
+/// four-bar's (fewer groups or outputs) passes a larger `min_len`.
 #[cfg(feature = "rayon")]
-pub const PAR_MIN_PIECE: usize = 16384;
+pub const PAR_MIN_PIECE: usize = 4096;
 
 /// Solves `batch` with `solve` over rayon's thread pool and returns the sum
 /// of what `solve` returns (with `solve_batch`: the number of failed
@@ -37,8 +39,35 @@ pub const PAR_MIN_PIECE: usize = 16384;
 /// raise the piece size (for a mechanism whose elements are cheaper than
 /// the four-bar's); pass 0 for the default.
 ///
-/// ```ignore
-/// let failed = mechanism::par_solve(batch, 0, &|mut b| model.solve_batch(&mut b));
+/// ```
+/// use mechanism::mechanism;
+///
+/// mechanism! {
+///     pub FourBar {
+///         params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+///         analysis position;
+///         outputs { B }
+///         let O2 = ground(0.0, 0.0);
+///         let O4 = ground(ground, 0.0);
+///         let A = crank(O2, crank, theta2) as link2;
+///         let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+///     }
+/// }
+///
+/// let n = 100_000;
+/// let theta: Vec<f64> = (0..n).map(|k| k as f64 * 1e-4).collect(); // rad
+/// let (mut bx, mut by, mut status) = (vec![0.0; n], vec![0.0; n], vec![0u8; n]);
+/// let batch = FourBarBatch {
+///     in_theta2: &theta,
+///     pos_B_x: &mut bx,
+///     pos_B_y: &mut by,
+///     status: &mut status,
+/// };
+/// let fb = FourBar::<f64>::default();
+/// let failed = mechanism::par_solve(batch, 0, &|mut piece| fb.solve_batch(&mut piece));
+/// assert_eq!(failed, 0);
+/// // Every element was solved: B lies right of the crank pivot (x >= 127 mm).
+/// assert!(bx.iter().all(|&x| x > 100.0));
 /// ```
 #[cfg(feature = "rayon")]
 pub fn par_solve<B, F>(batch: B, min_len: usize, solve: &F) -> usize
