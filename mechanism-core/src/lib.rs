@@ -17,6 +17,7 @@
 // assembly) is the one module allowed `unsafe`.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
 pub mod driver;
 pub mod dyad;
