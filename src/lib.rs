@@ -87,14 +87,17 @@
 extern crate self as mechanism;
 
 pub use mechanism_core as core_api;
+// Everything the core exports, for the generated code (which names the
+// core's modules through `::mechanism::`), including the kernels and
+// machinery (`lane`, `scalar`, `sincos64`, `sweep`, `trig64`) that are public
+// so that it can call them but are not part of the documented API ...
+#[doc(hidden)]
+pub use mechanism_core::*;
+// ... and, shadowing those, the documented API.
 pub use mechanism_core::{driver, dyad, error, force, geometry, guide, link, linsolve, mode, trig};
 pub use mechanism_core::{Error, Fault, Mode, Point2, Primitive, Real, Vector2};
 // What the generated `check()` returns (from the core's sweep).
 pub use mechanism_core::sweep::{Event, GroupReport, Range, Report};
-// Kernels and machinery the generated code calls: public so that it can,
-// not part of the documented API.
-#[doc(hidden)]
-pub use mechanism_core::{lane, scalar, sincos64, sweep, trig64};
 
 /// The [`mechanism!`] macro (see its page for the language).
 pub use mechanism_macros::mechanism;
