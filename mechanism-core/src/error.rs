@@ -15,6 +15,8 @@ use crate::scalar::Real;
 
 /// The kind of primitive that reported an error.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub enum Primitive {
     /// A crank driver (link turning about a known point).
     Crank,
@@ -63,6 +65,8 @@ impl Primitive {
 /// What went wrong, with the numbers that show by how much, in the scalar
 /// type `T` of the computation that failed (`f32` or `f64`).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
 pub enum Fault<T = f64> {
     /// The group cannot close at this pose. `miss` (> 0, length units) is how far
     /// the distance between the known joints lies outside the reachable range;
@@ -124,6 +128,7 @@ pub enum Fault<T = f64> {
 /// known), and the [`Fault`] with its numbers in the scalar type `T` (`f32` or
 /// `f64`, the default).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Error<T = f64> {
     /// The user's name for the group or driver (for example `"B"`), or `""` when
     /// a primitive was called directly.
@@ -147,6 +152,7 @@ impl<T> Error<T> {
 
     /// Attributes the error to the user's group `name` (generated code calls this).
     #[inline]
+    #[must_use]
     pub const fn in_group(mut self, name: &'static str) -> Self {
         self.group = name;
         self
@@ -158,6 +164,7 @@ impl<T: Real> Fault<T> {
     /// `f64`), for code that collects faults of either precision (the sweep
     /// of [`crate::sweep`], the generated `check`).
     #[inline]
+    #[must_use]
     pub fn to_f64(self) -> Fault<f64> {
         match self {
             Fault::CannotAssemble { miss, reach } => Fault::CannotAssemble {
@@ -189,6 +196,7 @@ impl<T: Real> Error<T> {
     /// The same error with its numbers widened to `f64` (exact); the group
     /// and primitive are kept.
     #[inline]
+    #[must_use]
     pub fn to_f64(self) -> Error<f64> {
         Error {
             group: self.group,

@@ -20,6 +20,7 @@
 // assembly) is the one module allowed `unsafe`.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
 pub mod driver;
 pub mod dyad;
@@ -33,6 +34,8 @@ pub mod link;
 pub mod linsolve;
 pub mod mode;
 pub mod scalar;
+#[cfg(feature = "serde")]
+mod ser;
 pub mod sincos64;
 pub mod structure;
 pub mod sweep;

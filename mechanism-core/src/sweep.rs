@@ -54,6 +54,7 @@ pub const SAMPLES_2D: usize = 120;
 
 /// The range of one input.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Range {
     /// Lower end (rad or length units).
     pub lo: f64,
@@ -65,6 +66,7 @@ pub struct Range {
 
 /// How finely the sweep resolves what it finds.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Tolerances {
     /// Bisection and golden-section searches stop at this fraction of the
     /// range's width.
@@ -118,6 +120,7 @@ pub type Outcome<const G: usize> = Result<[f64; G], (usize, Fault)>;
 
 /// A finding.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub enum Event<const D: usize> {
     /// Group `group` cannot be assembled: for inputs in `[lo, hi]` (one
     /// input), or at `count` grid points whose bounding box is `[lo, hi]`
@@ -126,8 +129,10 @@ pub enum Event<const D: usize> {
         /// Index of the group.
         group: usize,
         /// Lower corner.
+        #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
         lo: [f64; D],
         /// Upper corner.
+        #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
         hi: [f64; D],
         /// The fault at the first failing sample.
         fault: Fault,
@@ -140,6 +145,7 @@ pub enum Event<const D: usize> {
         /// Index of the group.
         group: usize,
         /// Where.
+        #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
         at: [f64; D],
         /// The smallest scaled determinant found there.
         det: f64,
@@ -677,6 +683,7 @@ pub fn sweep_2d<const G: usize>(
 
 /// What a sweep found for one group (the fixed-size summary `check()` returns).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct GroupReport<const D: usize> {
     /// The user's name of the group (the point it defines).
     pub group: &'static str,
@@ -685,28 +692,35 @@ pub struct GroupReport<const D: usize> {
     pub failures: u32,
     /// The failing interval with the lowest start (one input), or the
     /// bounding box of the failing grid points (two inputs).
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::opt_corners"))]
     pub failure: Option<([f64; D], [f64; D])>,
     /// The fault at the first failing sample.
     pub fault: Option<Fault>,
     /// Singular positions found (one input), or grid sign changes (two).
     pub singular: u32,
     /// The lowest singular input found.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::opt_array"))]
     pub first_singular: Option<[f64; D]>,
 }
 
 /// What a sweep found, per checked group in solve order; no heap.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Report<const G: usize, const D: usize> {
     /// The inputs' names.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
     pub inputs: [&'static str; D],
     /// The ranges swept.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
     pub ranges: [Range; D],
     /// Per group.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
     pub groups: [GroupReport<D>; G],
     /// Per group: `true` where a vanishing determinant puts the joint at
     /// infinity (a PRP's parallel guides, an RPP's slot parallel to its
     /// guide), so that a sign change found between two samples is a failure
     /// at that input, as a sample on it would be, not a singular position.
+    #[cfg_attr(feature = "serde", serde(skip))]
     at_infinity: [bool; G],
 }
 
@@ -731,6 +745,7 @@ impl<const G: usize, const D: usize> Report<G, D> {
     /// Marks the groups whose joint is at infinity where their determinant
     /// vanishes (see the field `at_infinity`); the generated `check()` of a
     /// mechanism with a PRP or an RPP calls it.
+    #[must_use]
     pub fn with_joints_at_infinity(mut self, at_infinity: [bool; G]) -> Self {
         self.at_infinity = at_infinity;
         self
