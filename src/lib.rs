@@ -94,7 +94,9 @@ pub use mechanism_core as core_api;
 #[doc(hidden)]
 pub use mechanism_core::*;
 // ... and, shadowing those, the documented API.
-pub use mechanism_core::{driver, dyad, error, force, geometry, guide, link, linsolve, mode, trig};
+pub use mechanism_core::{
+    driver, dyad, error, force, geometry, guide, link, linsolve, mode, structure, triad, trig,
+};
 pub use mechanism_core::{Error, Fault, Mode, Point2, Primitive, Real, Vector2};
 // What the generated `check()` returns (from the core's sweep).
 pub use mechanism_core::sweep::{Event, GroupReport, Range, Report};
