@@ -757,7 +757,7 @@ fn named_targets_and_paths_exist() {
 }
 
 mechanism::mechanism! {
-    /// The Jansen leg of `tests/describe.rs`, for the docs/plots.md sample.
+    /// The Jansen leg of `tests/surface/describe.rs`, for the docs/plots.md sample.
     pub JansenLeg {
         let O = ground(0.0, 0.0);
         let Z = ground(-38.0, -7.8);

@@ -8,8 +8,13 @@
 //!   forms, the power balance and every link's equilibrium;
 //! - [`plots`]: the examples' SVG pictures read back with an XML parser;
 //! - [`firmware_table`]: the host's values the firmware compares with
-//!   (`tests/firmware/src/expected.rs`) equal what the host computes now.
+//!   (`tests/firmware/src/expected.rs`) equal what the host computes now;
+//! - [`cli_options`]: the examples' command line (options, `--help`, typos).
 
+/// The examples' command line, at the crate root where its macros expect it.
+#[allow(unused_macros, dead_code)]
+#[path = "../../examples/common/cli.rs"]
+mod cli;
 #[path = "../../examples/common/mod.rs"]
 mod common;
 /// The scenes as `crate::scenes`, where `tests/firmware/src/rows.rs` expects them.
@@ -18,6 +23,7 @@ use common::scenes;
 #[path = "../../mechanism-plot/tests/check/mod.rs"]
 mod check;
 
+mod cli_options;
 mod firmware_table;
 mod forces;
 mod kinematics;

@@ -9,7 +9,10 @@
 //!   subsets and `#[self_test]` in combinations the other tests do not write;
 //! - [`sweep`]: the assembly-range checks (`check()`, the run-time errors at
 //!   the limits, the ranges the expansion-time check suggests);
-//! - [`forces`]: the force analysis on loaded definitions the zoo does not have.
+//! - [`forces`]: the force analysis on loaded definitions the zoo does not have;
+//! - [`describe`]: a mechanism's description of itself (`mechanism::structure`)
+//!   and the pictures and tables drawn from it alone;
+//! - [`self_test_scales`]: `#[self_test]` passing at scales from 1e-9 to 1e9.
 //!
 //! Chains of 10, 20 and 40 groups are a test crate of their own
 //! (`tests/long_chain.rs`): their expansion is the largest single cost of a
@@ -21,7 +24,9 @@ mod equilibrium;
 #[path = "../common/surface_defs.rs"]
 mod surface_defs;
 
+mod describe;
 mod dsl;
 mod forces;
+mod self_test_scales;
 mod statement_kinds;
 mod sweep;

@@ -3,11 +3,7 @@
 //! option or a missing value is an error that names the nearest option only
 //! when it is a plausible typo.
 
-#[macro_use]
-#[path = "../examples/common/cli.rs"]
-mod cli;
-
-use cli::{flag, parse_from, Opt, CSV};
+use crate::cli::{flag, parse_from, Opt, CSV};
 
 fn opts() -> [Opt; 3] {
     [
@@ -21,7 +17,7 @@ fn opts() -> [Opt; 3] {
     ]
 }
 
-fn run(args: &[&str]) -> Result<Option<cli::Args>, String> {
+fn run(args: &[&str]) -> Result<Option<crate::cli::Args>, String> {
     parse_from(args.iter().map(|s| s.to_string()), &opts())
 }
 
