@@ -12,7 +12,6 @@
 //! - [`cli_options`]: the examples' command line (options, `--help`, typos).
 
 /// The examples' command line, at the crate root where its macros expect it.
-#[allow(unused_macros, dead_code)]
 #[path = "../../examples/common/cli.rs"]
 mod cli;
 #[path = "../../examples/common/mod.rs"]
