@@ -130,10 +130,22 @@ mod owned {
             })
             .collect();
         let w = (0..n)
-            .map(|k| if k % 89 == 7 { f64::NAN } else { 250.0 - k as f64 * 0.1 })
+            .map(|k| {
+                if k % 89 == 7 {
+                    f64::NAN
+                } else {
+                    250.0 - k as f64 * 0.1
+                }
+            })
             .collect();
         let a = (0..n)
-            .map(|k| if k % 83 == 11 { f64::NAN } else { k as f64 * 0.5 - 300.0 })
+            .map(|k| {
+                if k % 83 == 11 {
+                    f64::NAN
+                } else {
+                    k as f64 * 0.5 - 300.0
+                }
+            })
             .collect();
         (q, w, a)
     }
@@ -189,9 +201,24 @@ mod owned {
         };
         assert_eq!(m.solve_batch(&mut b), Ok(failed));
         let owned = [
-            &c.pos_A_x, &c.pos_A_y, &c.pos_B_x, &c.pos_B_y, &c.pos_link3, &c.pos_link4,
-            &c.vel_A_x, &c.vel_A_y, &c.vel_B_x, &c.vel_B_y, &c.vel_link3, &c.vel_link4,
-            &c.acc_A_x, &c.acc_A_y, &c.acc_B_x, &c.acc_B_y, &c.acc_link3, &c.acc_link4,
+            &c.pos_A_x,
+            &c.pos_A_y,
+            &c.pos_B_x,
+            &c.pos_B_y,
+            &c.pos_link3,
+            &c.pos_link4,
+            &c.vel_A_x,
+            &c.vel_A_y,
+            &c.vel_B_x,
+            &c.vel_B_y,
+            &c.vel_link3,
+            &c.vel_link4,
+            &c.acc_A_x,
+            &c.acc_A_y,
+            &c.acc_B_x,
+            &c.acc_B_y,
+            &c.acc_link3,
+            &c.acc_link4,
         ];
         for (col, (mine, theirs)) in owned.iter().zip(&out).enumerate() {
             let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
@@ -219,9 +246,8 @@ mod owned {
                 (0, Ok(s)) => {
                     let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
                     let exact = [
-                        p.A.x, p.A.y, p.B.x, p.B.y, p.link3, p.link4,
-                        v.A.x, v.A.y, v.B.x, v.B.y, v.link3, v.link4,
-                        a.A.x, a.A.y, a.B.x, a.B.y, a.link3, a.link4,
+                        p.A.x, p.A.y, p.B.x, p.B.y, p.link3, p.link4, v.A.x, v.A.y, v.B.x, v.B.y,
+                        v.link3, v.link4, a.A.x, a.A.y, a.B.x, a.B.y, a.link3, a.link4,
                     ];
                     // The kernel's bound (docs/performance.md): 64 eps of the
                     // level's magnitude over the condition squared, the
@@ -230,7 +256,10 @@ mod owned {
                     for (j, (got, exp)) in row.iter().zip(exact).enumerate() {
                         let scale = [305.0, 305.0 * 250.0, 305.0 * 63_200.0][j / 6];
                         let bound = 64.0 * f64::EPSILON * scale / 0.09;
-                        assert!((got - exp).abs() <= bound, "element {k} column {j}: {got} {exp}");
+                        assert!(
+                            (got - exp).abs() <= bound,
+                            "element {k} column {j}: {got} {exp}"
+                        );
                     }
                 }
                 (level, _) => {
@@ -241,8 +270,8 @@ mod owned {
                         (1, _, _) => vec![],
                         (2, Some(p), _) => vec![p.A.x, p.A.y, p.B.x, p.B.y, p.link3, p.link4],
                         (3, Some(p), Some(Ok(v))) => vec![
-                            p.A.x, p.A.y, p.B.x, p.B.y, p.link3, p.link4,
-                            v.A.x, v.A.y, v.B.x, v.B.y, v.link3, v.link4,
+                            p.A.x, p.A.y, p.B.x, p.B.y, p.link3, p.link4, v.A.x, v.A.y, v.B.x,
+                            v.B.y, v.link3, v.link4,
                         ],
                         _ => unreachable!("level {level} at element {k}"),
                     };
@@ -254,7 +283,10 @@ mod owned {
             }
         }
         assert_eq!(failed, n - levels[0]);
-        assert!(levels.iter().all(|l| *l > 0), "every status occurs: {levels:?}");
+        assert!(
+            levels.iter().all(|l| *l > 0),
+            "every status occurs: {levels:?}"
+        );
     }
 }
 
@@ -302,10 +334,19 @@ mod debug {
         let mut c = FourBar::<f64>::batch(2);
         c.in_theta2 = vec![0.5, 1.5];
         let owned = format!("{c:?}");
-        assert!(owned.starts_with("FourBarColumns { in_theta2: [0.5, 1.5], rate_theta2: [0.0, 0.0],"), "{owned}");
-        assert!(owned.ends_with("acc_link4: [0.0, 0.0], status: [0, 0] }"), "{owned}");
+        assert!(
+            owned.starts_with("FourBarColumns { in_theta2: [0.5, 1.5], rate_theta2: [0.0, 0.0],"),
+            "{owned}"
+        );
+        assert!(
+            owned.ends_with("acc_link4: [0.0, 0.0], status: [0, 0] }"),
+            "{owned}"
+        );
         let borrowed = format!("{:?}", c.as_batch());
-        assert!(borrowed.starts_with("FourBarBatch { in_theta2: [0.5, 1.5],"), "{borrowed}");
+        assert!(
+            borrowed.starts_with("FourBarBatch { in_theta2: [0.5, 1.5],"),
+            "{borrowed}"
+        );
         assert!(borrowed.contains(", pos_B_x: [0.0, 0.0],"), "{borrowed}");
         assert!(borrowed.ends_with("status: [0, 0] }"), "{borrowed}");
     }

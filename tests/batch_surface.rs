@@ -715,7 +715,10 @@ fn a_short_slice_is_an_error_before_any_write() {
     let mut b = batch!();
     assert_eq!(b.len(), 200);
     let e = m.solve_batch(&mut b).unwrap_err();
-    assert_eq!((e.slice, e.len, e.reference, e.expected), ("pos_x", 150, "in_theta", 200));
+    assert_eq!(
+        (e.slice, e.len, e.reference, e.expected),
+        ("pos_x", 150, "in_theta", 200)
+    );
     assert!(status.iter().all(|s| *s == 9));
     assert!(bufs.iter().all(|v| v.iter().all(|x| *x == 7.0)));
     bufs[4].resize(200, 7.0);

@@ -400,12 +400,17 @@ mod performance_batch {
         let mut b = FourBar::<f64>::batch(3600); // FourBarColumns: every column and status zero
         b.in_theta2 = (0..3600).map(|k| k as f64 * 1e-3).collect();
         let failed = m.solve_columns(&mut b)?; // elements whose status is not 0
+
         // Seed 002's four-bar is a crank-rocker: every pose assembles. B.x
         // against the scalar path with the bound of the borrowed sample below.
         assert_eq!(failed, 0);
         assert!(b.status.iter().all(|&s| s == 0));
         for k in [0, 900, 1234, 3599] {
-            let p = m.position(&FourBarInput { theta2: b.in_theta2[k] }).unwrap();
+            let p = m
+                .position(&FourBarInput {
+                    theta2: b.in_theta2[k],
+                })
+                .unwrap();
             assert!((b.pos_B_x[k] - p.B.x).abs() < 64.0 * f64::EPSILON * 305.0 / 0.09);
         }
         Ok(())
@@ -449,6 +454,7 @@ mod performance_batch {
         assert!(o.next().is_none(), "18 buffers, as the sample says");
         assert_eq!(b.len(), n);
         let failed = m.solve_batch(&mut b)?; // elements whose status is not 0
+
         // Seed 002's four-bar is a crank-rocker: every pose assembles.
         assert_eq!(failed, 0);
         assert!(status.iter().all(|&s| s == 0));
