@@ -1,8 +1,8 @@
 //! Batches: the generated `solve_batch` works on a structure of arrays
 //! (`<Name>Batch`, borrowed slices), which implements [`BatchSplit`] so that
-//! a sweep can be cut into pieces, e.g. over cores with [`par_solve`]
+//! a sweep can be cut into pieces, e.g. over cores with `par_solve`
 //! (feature `rayon`). Every slice of a batch must have the same length:
-//! `solve_batch`, [`BatchSplit::check`] and [`par_solve`] return a
+//! `solve_batch`, [`BatchSplit::check`] and `par_solve` return a
 //! [`BatchError`] naming the first slice that does not, before evaluating
 //! anything.
 //!
