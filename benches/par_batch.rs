@@ -123,14 +123,17 @@ macro_rules! measure {
         let m = FourBar::<$t>::default();
         let mut buf = Buffers::<$t>::new(n);
         let threads = rayon::current_num_threads();
-        let solve = |mut b: FourBarBatch<'_, $t>| m.solve_batch(&mut b);
+        // The lengths are equal by construction: the batch's check cannot fail.
+        let solve = |mut b: FourBarBatch<'_, $t>| m.solve_batch(&mut b).unwrap_or(usize::MAX);
+        let checked =
+            |b: FourBarBatch<'_, $t>| -> Result<usize, mechanism::BatchError> { Ok(solve(b)) };
         let mut run = |p: usize| -> usize {
             let b = buf.view();
             match p {
                 0 => solve(b),
                 1 => halves(b, 512, &solve),
                 2 => per_thread(b, threads, &solve),
-                _ => mechanism::par_solve(b, 0, &solve),
+                _ => mechanism::par_solve(b, 0, &checked).unwrap_or(usize::MAX),
             }
         };
         // Repetitions per timed sample: at least 2 ms of the serial batch.

@@ -104,10 +104,21 @@ pub use mechanism_core::sweep::{Event, GroupReport, Range, Report};
 /// The [`mechanism!`] macro (see its page for the language).
 pub use mechanism_macros::mechanism;
 
-mod batch;
-pub use batch::BatchSplit;
+pub mod batch;
 #[cfg(feature = "rayon")]
 #[cfg_attr(docsrs, doc(cfg(feature = "rayon")))]
 pub use batch::{par_solve, PAR_MIN_PIECE};
+pub use batch::{BatchError, BatchSplit};
 
 pub mod example;
+
+#[cfg(feature = "alloc")]
+extern crate alloc;
+
+/// `alloc` for the owned batch form of the generated code (inside
+/// `__with_alloc!`, feature `alloc`; see [`batch`]). Not public API.
+#[cfg(feature = "alloc")]
+#[doc(hidden)]
+pub mod __alloc {
+    pub use alloc::vec::Vec;
+}

@@ -395,7 +395,29 @@ mod performance_batch {
     }
 
     #[test]
-    fn batch_sample_in_full_matches_the_scalar_path() {
+    fn owned_sample_matches_the_scalar_path() -> Result<(), mechanism::BatchError> {
+        let m = FourBar::<f64>::default();
+        let mut b = FourBar::<f64>::batch(3600); // FourBarColumns: every column and status zero
+        b.in_theta2 = (0..3600).map(|k| k as f64 * 1e-3).collect();
+        let failed = m.solve_columns(&mut b)?; // elements whose status is not 0
+
+        // Seed 002's four-bar is a crank-rocker: every pose assembles. B.x
+        // against the scalar path with the bound of the borrowed sample below.
+        assert_eq!(failed, 0);
+        assert!(b.status.iter().all(|&s| s == 0));
+        for k in [0, 900, 1234, 3599] {
+            let p = m
+                .position(&FourBarInput {
+                    theta2: b.in_theta2[k],
+                })
+                .unwrap();
+            assert!((b.pos_B_x[k] - p.B.x).abs() < 64.0 * f64::EPSILON * 305.0 / 0.09);
+        }
+        Ok(())
+    }
+
+    #[test]
+    fn batch_sample_in_full_matches_the_scalar_path() -> Result<(), mechanism::BatchError> {
         let m = FourBar::<f64>::default();
         let n = 3600;
         let theta: Vec<f64> = (0..n)
@@ -431,8 +453,9 @@ mod performance_batch {
         };
         assert!(o.next().is_none(), "18 buffers, as the sample says");
         assert_eq!(b.len(), n);
-        let failed = m.solve_batch(&mut b); // elements whose status is not 0
-                                            // Seed 002's four-bar is a crank-rocker: every pose assembles.
+        let failed = m.solve_batch(&mut b)?; // elements whose status is not 0
+
+        // Seed 002's four-bar is a crank-rocker: every pose assembles.
         assert_eq!(failed, 0);
         assert!(status.iter().all(|&s| s == 0));
         // B.x (out[0]) against the scalar path at a few poses; the batch agrees
@@ -442,11 +465,12 @@ mod performance_batch {
             let p = m.position(&FourBarInput { theta2: theta[k] }).unwrap();
             assert!((out[0][k] - p.B.x).abs() < 64.0 * f64::EPSILON * 305.0 / 0.09);
         }
+        Ok(())
     }
 
     #[cfg(feature = "rayon")]
     #[test]
-    fn par_solve_sample() {
+    fn par_solve_sample() -> Result<(), mechanism::BatchError> {
         let m = FourBar::<f64>::default();
         let n = 10_000;
         let theta: Vec<f64> = (0..n).map(|k| k as f64 * 1e-3).collect();
@@ -479,8 +503,16 @@ mod performance_batch {
             acc_link4: nx(),
             status: &mut status,
         };
-        let failed = mechanism::par_solve(b, 4096, &|mut chunk| m.solve_batch(&mut chunk));
+        let failed = mechanism::par_solve(b, 4096, &|mut chunk| m.solve_batch(&mut chunk))?;
         assert_eq!(failed, 0);
+        // The owned form, as the doc writes it.
+        let mut b = FourBar::<f64>::batch(n);
+        b.in_theta2 = theta;
+        let failed =
+            mechanism::par_solve(b.as_batch(), 4096, &|mut chunk| m.solve_batch(&mut chunk))?;
+        assert_eq!(failed, 0);
+        assert_eq!(b.pos_B_x, out[2]);
+        Ok(())
     }
 }
 
@@ -582,12 +614,12 @@ const SCHEMATIC: &[(&str, &str, &str)] = &[
     ),
     (
         "docs/performance.md",
-        "let m = FourBar::<f64>::default();\nlet n = 3600;\nlet theta: Vec<f64> = (0..n).map(|k| k as f64 * core::f64::consts::TAU / n as f64).collect();\nlet (w, a) = (vec![250.0; n], vec![0.0; n]);\nlet mut out = vec![vec![0.0; n]; 18];           // A, B (x, y), link3, link4 at 3 levels\nlet mut status = vec![0u8; n];\nlet mut o = out.iter_mut();\nlet mut b = FourBarBatch {\n    in_theta2: &theta, rate_theta2: &w, accel_theta2: &a,\n    pos_B_x: o.next().unwrap(), /* ... every pos_*, vel_*, acc_* output ... */\n    status: &mut status,\n};\nlet failed = m.solve_batch(&mut b);             // elements whose status is not 0",
+        "let m = FourBar::<f64>::default();\nlet n = 3600;\nlet theta: Vec<f64> = (0..n).map(|k| k as f64 * core::f64::consts::TAU / n as f64).collect();\nlet (w, a) = (vec![250.0; n], vec![0.0; n]);\nlet mut out = vec![vec![0.0; n]; 18];           // A, B (x, y), link3, link4 at 3 levels\nlet mut status = vec![0u8; n];\nlet mut o = out.iter_mut();\nlet mut b = FourBarBatch {\n    in_theta2: &theta, rate_theta2: &w, accel_theta2: &a,\n    pos_B_x: o.next().unwrap(), /* ... every pos_*, vel_*, acc_* output ... */\n    status: &mut status,\n};\nlet failed = m.solve_batch(&mut b)?;             // elements whose status is not 0",
         "the output fields are elided; `performance_batch` has them all",
     ),
     (
         "docs/performance.md",
-        "let failed = mechanism::par_solve(b, 4096, &|mut chunk| m.solve_batch(&mut chunk));",
+        "let failed = mechanism::par_solve(b.as_batch(), 4096, &|mut chunk| m.solve_batch(&mut chunk))?;",
         "needs the feature `rayon`; `performance_batch::par_solve_sample` runs it with the feature",
     ),
 ];

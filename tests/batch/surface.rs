@@ -666,46 +666,59 @@ fn subsets_at_lower_levels_with_carried_guides() {
     );
 }
 
-/// Slices of different lengths: the shortest one (here an output slice)
-/// sets how many elements are evaluated, by the kernel and by the scalar
-/// path alike; the status bytes past it are left as they were.
+/// Slices of different lengths are an error naming the first one that
+/// differs (here an output slice), returned before the kernel or the scalar
+/// path writes anything; with every slice as long as the input, a NaN
+/// acceleration fails every element at level 3 (tests/batch_owned.rs covers
+/// every kind of slice).
 #[test]
-fn shortest_slice_sets_the_length() {
+fn a_short_slice_is_an_error_before_any_write() {
     let m = OutOfOrder::<f64>::default();
     let q: Vec<f64> = (0..200).map(|i| i as f64 * 0.05).collect();
     let (w, a) = (vec![1.0; 200], vec![f64::NAN; 200]);
     let mut bufs = vec![vec![7.0; 200]; 15];
     bufs[4].truncate(150);
     let mut status = vec![9u8; 200];
-    let mut it = bufs.iter_mut();
-    let mut nx = || it.next().unwrap().as_mut_slice();
-    let mut b = OutOfOrderBatch {
-        in_theta: &q,
-        rate_theta: &w,
-        accel_theta: &a,
-        pos_P_x: nx(),
-        pos_P_y: nx(),
-        pos_Q_x: nx(),
-        pos_Q_y: nx(),
-        pos_x: nx(),
-        vel_P_x: nx(),
-        vel_P_y: nx(),
-        vel_Q_x: nx(),
-        vel_Q_y: nx(),
-        vel_x: nx(),
-        acc_P_x: nx(),
-        acc_P_y: nx(),
-        acc_Q_x: nx(),
-        acc_Q_y: nx(),
-        acc_x: nx(),
-        status: &mut status,
-    };
-    assert_eq!(b.len(), 150);
-    // A NaN acceleration everywhere: every evaluated element fails at
-    // level 3, after the kernel handed it to the scalar path.
-    assert_eq!(m.solve_batch(&mut b), 150);
-    assert!(status[..150].iter().all(|s| *s == 3));
-    assert!(status[150..].iter().all(|s| *s == 9));
-    assert!(bufs[0][150..].iter().all(|x| *x == 7.0));
-    assert!(bufs[10][..150].iter().all(|x| *x == 0.0));
+    macro_rules! batch {
+        () => {{
+            let mut it = bufs.iter_mut();
+            let mut nx = || it.next().unwrap().as_mut_slice();
+            OutOfOrderBatch {
+                in_theta: &q,
+                rate_theta: &w,
+                accel_theta: &a,
+                pos_P_x: nx(),
+                pos_P_y: nx(),
+                pos_Q_x: nx(),
+                pos_Q_y: nx(),
+                pos_x: nx(),
+                vel_P_x: nx(),
+                vel_P_y: nx(),
+                vel_Q_x: nx(),
+                vel_Q_y: nx(),
+                vel_x: nx(),
+                acc_P_x: nx(),
+                acc_P_y: nx(),
+                acc_Q_x: nx(),
+                acc_Q_y: nx(),
+                acc_x: nx(),
+                status: &mut status,
+            }
+        }};
+    }
+    let mut b = batch!();
+    assert_eq!(b.len(), 200);
+    let e = m.solve_batch(&mut b).unwrap_err();
+    assert_eq!(
+        (e.slice, e.len, e.reference, e.expected),
+        ("pos_x", 150, "in_theta", 200)
+    );
+    assert!(status.iter().all(|s| *s == 9));
+    assert!(bufs.iter().all(|v| v.iter().all(|x| *x == 7.0)));
+    bufs[4].resize(200, 7.0);
+    // A NaN acceleration everywhere: every element fails at level 3, after
+    // the kernel handed it to the scalar path, with zero accelerations.
+    assert_eq!(m.solve_batch(&mut batch!()), Ok(200));
+    assert!(status.iter().all(|s| *s == 3));
+    assert!(bufs[10].iter().all(|x| *x == 0.0));
 }

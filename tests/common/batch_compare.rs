@@ -173,7 +173,7 @@ macro_rules! compare {
             let mut lane = full.clone();
             let mut status = vec![7u8; n];
             let mut lane_status = vec![7u8; n];
-            let failed = m.solve_batch(&mut batch!($lv; $ty, [$($i),*], [$($p),*], [$($s),*], q, w, a, full, &mut status));
+            let failed = m.solve_batch(&mut batch!($lv; $ty, [$($i),*], [$($p),*], [$($s),*], q, w, a, full, &mut status)).expect("slices of one length");
             assert!(
                 m.__solve_batch_lane_only(&mut batch!($lv; $ty, [$($i),*], [$($p),*], [$($s),*], q, w, a, lane, &mut lane_status)),
                 "{}: no lane kernel",

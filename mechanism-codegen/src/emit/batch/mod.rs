@@ -7,13 +7,19 @@
 //! - `FourBarBatch<'a, T>`: `in_<input>`, `rate_<input>`, `accel_<input>`
 //!   (`&'a [T]`), `pos_<out>` / `vel_<out>` / `acc_<out>` (`&'a mut [T]`; a
 //!   point gives `_x` and `_y` slices), and `status: &'a mut [u8]`;
-//! - `FourBar::solve_batch(&self, &mut FourBarBatch) -> usize`: evaluates
-//!   every element (the shortest slice's length), writes its outputs (zero
-//!   for an element that failed: no NaN ever reaches the buffers) and its
-//!   status (0 ok, 1 position, 2 velocity, 3 acceleration failed), and returns
-//!   the number of failed elements;
-//! - `impl ::mechanism::BatchSplit` (length, split in two), so that
-//!   `mechanism::par_solve` (feature `rayon`) can spread a batch over cores.
+//! - `FourBar::solve_batch(&self, &mut FourBarBatch) -> Result<usize,
+//!   mechanism::BatchError>`: checks once that every slice has the length of
+//!   the first input slice (the error names the first that does not,
+//!   nothing evaluated), then evaluates every element, writes its outputs
+//!   (zero for an element that failed: no NaN ever reaches the buffers) and
+//!   its status (0 ok, 1 position, 2 velocity, 3 acceleration failed), and
+//!   returns the number of failed elements;
+//! - `impl ::mechanism::BatchSplit` (length, check, split in two), so that
+//!   `mechanism::par_solve` (feature `rayon`) can spread a batch over cores;
+//! - inside `::mechanism::__with_alloc!` (so only with the facade's feature
+//!   `alloc`, whatever the features of the invoking crate): the owned form
+//!   `FourBarColumns<T>` (the same fields as `Vec`s, `as_batch`),
+//!   `FourBar::batch(n)` and `FourBar::solve_columns`.
 //!
 //! No early return inside the loop: the per-element work is straight-line
 //! apart from the checks inside the primitives.
@@ -109,6 +115,7 @@ pub fn emit(
     let kernel = lane::kernel(model, plan, &fields.input_names(), outputs, levels);
     let mut items = batch_struct(model, &fields);
     items.extend(solve_batch(model, inputs, &fields, levels, kernel));
+    items.extend(owned(model, &fields));
     items
 }
 
@@ -168,19 +175,33 @@ fn clashes(model: &Model, outputs: &[(Ident, TokenStream)]) -> TokenStream {
 }
 
 /// The batch struct `NAMEBatch<'a, T>` (one `&'a [T]` per input field, one
-/// `&'a mut [T]` per output field, the `status` bytes), its `len` and
-/// `is_empty`, and `impl ::mechanism::BatchSplit` (every slice split at the
-/// same index, inputs with `split_at`, outputs with `split_at_mut`).
+/// `&'a mut [T]` per output field, the `status` bytes), its `len`,
+/// `is_empty` and `check` (every slice as long as the first input slice, or
+/// the `BatchError` naming the first that is not), and
+/// `impl ::mechanism::BatchSplit` (every slice split at the same index,
+/// inputs with `split_at`, outputs with `split_at_mut`).
 fn batch_struct(model: &Model, fields: &Fields) -> TokenStream {
     let name = &model.name;
     let vis = &model.vis;
     let batch_ty = format_ident!("{}Batch", name);
     let all_in = fields.input_names();
     let out_names = fields.output_names();
+    let status = format_ident!("status");
+    let reference = all_in.first().copied().unwrap_or(&status);
     let doc = format!(
-        "Structure-of-arrays buffers for [`{name}::solve_batch`]: `in_*` (and `rate_*`, `accel_*`) are the driver inputs per element, `pos_*`, `vel_*`, `acc_*` the outputs (points as `_x`, `_y`), `status` one byte per element (0 ok, 1 position, 2 velocity, 3 acceleration failed). Units as in the scalar API. Every slice should have the same length; the shortest one sets how many elements are evaluated."
+        "Structure-of-arrays buffers for [`{name}::solve_batch`]: `in_*` (and `rate_*`, `accel_*`) are the driver inputs per element, `pos_*`, `vel_*`, `acc_*` the outputs (points as `_x`, `_y`), `status` one byte per element (0 ok, 1 position, 2 velocity, 3 acceleration failed). Units as in the scalar API. Every slice must have the length of `{reference}` (`solve_batch` returns a `mechanism::BatchError` otherwise)."
     );
-    let n_expr = quote!(
+    let len_doc = format!("Number of elements: the length of `{reference}`.");
+    let checked: Vec<&Ident> = all_in
+        .iter()
+        .copied()
+        .chain(out_names.iter().copied())
+        .chain(core::iter::once(&status))
+        .filter(|f| *f != reference)
+        .collect();
+    let checked_names = checked.iter().map(|f| f.to_string());
+    let reference_name = reference.to_string();
+    let shortest = quote!(
         {
             let mut n = self.status.len();
             #(n = ::core::cmp::min(n, self.#all_in.len());)*
@@ -202,6 +223,7 @@ fn batch_struct(model: &Model, fields: &Fields) -> TokenStream {
     quote! {
         #[doc = #doc]
         #[allow(non_snake_case, missing_docs)]
+        #[derive(::core::fmt::Debug)]
         #vis struct #batch_ty<'a, T = ::core::primitive::f64> {
             #(pub #all_in: &'a [T],)*
             #(pub #out_names: &'a mut [T],)*
@@ -209,13 +231,30 @@ fn batch_struct(model: &Model, fields: &Fields) -> TokenStream {
         }
 
         impl<'a, T> #batch_ty<'a, T> {
-            /// Number of elements evaluated: the shortest slice's length.
+            #[doc = #len_doc]
             #[inline]
-            pub fn len(&self) -> usize #n_expr
-            /// `true` when no element would be evaluated.
+            pub fn len(&self) -> usize {
+                self.#reference.len()
+            }
+            /// `true` when there is no element.
             #[inline]
             pub fn is_empty(&self) -> bool {
                 self.len() == 0
+            }
+            /// The number of elements when every slice has the same length;
+            /// otherwise the error naming the first slice (in field order)
+            /// whose length differs.
+            #[inline]
+            pub fn check(&self) -> ::core::result::Result<usize, ::mechanism::BatchError> {
+                let n = self.len();
+                #(
+                    if self.#checked.len() != n {
+                        return ::core::result::Result::Err(::mechanism::BatchError::length_mismatch(
+                            #checked_names, self.#checked.len(), #reference_name, n,
+                        ));
+                    }
+                )*
+                ::core::result::Result::Ok(n)
             }
         }
 
@@ -225,9 +264,13 @@ fn batch_struct(model: &Model, fields: &Fields) -> TokenStream {
                 #batch_ty::len(self)
             }
             #[inline]
+            fn check(&self) -> ::core::result::Result<usize, ::mechanism::BatchError> {
+                #batch_ty::check(self)
+            }
+            #[inline]
             #[allow(non_snake_case)]
             fn split_at(self, mid: usize) -> (Self, Self) {
-                let mid = ::core::cmp::min(mid, #batch_ty::len(&self));
+                let mid = ::core::cmp::min(mid, #shortest);
                 #(#split_in)*
                 #(#split_out)*
                 let (status_lo, status_hi) = self.status.split_at_mut(mid);
@@ -235,6 +278,95 @@ fn batch_struct(model: &Model, fields: &Fields) -> TokenStream {
                     #batch_ty { #(#in_lo,)* #(#out_names: #lo,)* status: status_lo },
                     #batch_ty { #(#in_hi,)* #(#out_names: #hi,)* status: status_hi },
                 )
+            }
+        }
+    }
+}
+
+/// The owned form, inside `::mechanism::__with_alloc!` (emitted only when
+/// the facade's feature `alloc` is on): `NAMEColumns<T>` (the batch's fields
+/// as `Vec`s), its `zeros`, `len`, `is_empty` and `as_batch`, and
+/// `NAME::batch(n)` and `NAME::solve_columns`.
+fn owned(model: &Model, fields: &Fields) -> TokenStream {
+    let name = &model.name;
+    let vis = &model.vis;
+    let batch_ty = format_ident!("{}Batch", name);
+    let cols_ty = format_ident!("{}Columns", name);
+    let all_in = fields.input_names();
+    let out_names = fields.output_names();
+    let all: Vec<&Ident> = all_in.iter().chain(out_names.iter()).copied().collect();
+    let reference = match all_in.first() {
+        Some(r) => quote!(#r),
+        None => quote!(status),
+    };
+    let vec = quote!(::mechanism::__alloc::Vec);
+    let doc = format!(
+        "The owned form of [`{batch_ty}`] (feature `alloc` of `mechanism`): the same fields as `Vec`s. [`{name}::batch`] makes one of `n` zeroed elements; fill the `in_*` (`rate_*`, `accel_*`) columns, then [`{name}::solve_columns`] (or [`Self::as_batch`] for `solve_batch` and `mechanism::par_solve`)."
+    );
+    let batch_doc = format!(
+        "A [`{cols_ty}`] of `n` elements, every column and `status` zero: `{name}::<f64>::batch(n)`."
+    );
+    let solve_doc = format!(
+        "[`Self::solve_batch`] on the columns (`columns.as_batch()`): the number of failed elements, or the `mechanism::BatchError` naming the first column whose length differs from `{reference}`'s (nothing evaluated)."
+    );
+    quote! {
+        ::mechanism::__with_alloc! {
+            #[doc = #doc]
+            #[allow(non_snake_case, missing_docs)]
+            #[derive(::core::fmt::Debug, ::core::clone::Clone, ::core::cmp::PartialEq)]
+            #vis struct #cols_ty<T = ::core::primitive::f64> {
+                #(pub #all: #vec<T>,)*
+                pub status: #vec<::core::primitive::u8>,
+            }
+
+            impl<T: ::mechanism::Real> #cols_ty<T> {
+                /// `n` elements, every column and `status` zero.
+                pub fn zeros(n: usize) -> Self {
+                    let column = || {
+                        let mut v = #vec::new();
+                        v.resize(n, <T as ::mechanism::Real>::lit(0.0));
+                        v
+                    };
+                    let mut status = #vec::new();
+                    status.resize(n, 0u8);
+                    #cols_ty { #(#all: column(),)* status }
+                }
+            }
+
+            impl<T> #cols_ty<T> {
+                /// Number of elements: the length of the reference column
+                /// (the first input's).
+                #[inline]
+                pub fn len(&self) -> usize {
+                    self.#reference.len()
+                }
+                /// `true` when there is no element.
+                #[inline]
+                pub fn is_empty(&self) -> bool {
+                    self.len() == 0
+                }
+                /// The columns as the borrowed batch of `solve_batch`.
+                #[inline]
+                pub fn as_batch(&mut self) -> #batch_ty<'_, T> {
+                    #batch_ty {
+                        #(#all_in: &self.#all_in,)*
+                        #(#out_names: &mut self.#out_names,)*
+                        status: &mut self.status,
+                    }
+                }
+            }
+
+            impl<T: ::mechanism::Real> #name<T> {
+                #[doc = #batch_doc]
+                pub fn batch(n: usize) -> #cols_ty<T> {
+                    #cols_ty::zeros(n)
+                }
+                #[doc = #solve_doc]
+                #[must_use = "the number of failed elements; an error means no element was evaluated"]
+                #[inline]
+                pub fn solve_columns(&self, columns: &mut #cols_ty<T>) -> ::core::result::Result<usize, ::mechanism::BatchError> {
+                    self.solve_batch(&mut columns.as_batch())
+                }
             }
         }
     }
@@ -327,7 +459,7 @@ fn solve_batch(
         (TokenStream::new(), TokenStream::new())
     };
     let method_doc = format!(
-        "Evaluates every element of [`{batch_ty}`]: outputs into its slices (zero where an element failed), a status byte per element; returns the number of failed elements. No allocation, no early return, no panic."
+        "Evaluates every element of [`{batch_ty}`]: outputs into its slices (zero where an element failed), a status byte per element; returns the number of failed elements. No allocation, no panic.\n\n# Errors\n\n`mechanism::BatchError` when the slices differ in length (checked once, before any element is evaluated or written)."
     );
     let allow_lints = crate::emit::allow_literal_lints();
     quote! {
@@ -336,8 +468,9 @@ fn solve_batch(
             #[doc = #method_doc]
             #[inline]
             #[allow(non_snake_case, unused_variables)]
-            pub fn solve_batch(&self, b: &mut #batch_ty<'_, T>) -> usize {
-                let n = b.len();
+            #[must_use = "the number of failed elements; an error means no element was evaluated"]
+            pub fn solve_batch(&self, b: &mut #batch_ty<'_, T>) -> ::core::result::Result<usize, ::mechanism::BatchError> {
+                let n = b.check()?;
                 let zero = <T as ::mechanism::Real>::lit(0.0);
                 let mut failed = 0usize;
                 #lane_call
@@ -356,7 +489,7 @@ fn solve_batch(
                     }
                     start = end;
                 }
-                failed
+                ::core::result::Result::Ok(failed)
             }
 
             /// The vectorized kernel of [`Self::solve_batch`] alone (for
