@@ -25,37 +25,25 @@ pub(super) struct OutputRows {
 impl OutputRows {
     /// The columns of the definition's outputs: points, link angles, slides.
     pub fn new(out: &Outputs) -> Self {
-        let mut rows = OutputRows {
-            pos: Vec::new(),
-            rate: Vec::new(),
-            angle: Vec::new(),
-        };
+        let (mut pos, mut rate, mut angle) = (Vec::new(), Vec::new(), Vec::new());
         for p in &out.points {
-            rows.pos
-                .push(quote!(<T as ::mechanism::Real>::as_f64(pos.#p.x)));
-            rows.pos
-                .push(quote!(<T as ::mechanism::Real>::as_f64(pos.#p.y)));
-            rows.rate
-                .push(quote!(<T as ::mechanism::Real>::as_f64(v.#p.x)));
-            rows.rate
-                .push(quote!(<T as ::mechanism::Real>::as_f64(v.#p.y)));
-            rows.angle.extend([false, false]);
+            pos.push(quote!(<T as ::mechanism::Real>::as_f64(pos.#p.x)));
+            pos.push(quote!(<T as ::mechanism::Real>::as_f64(pos.#p.y)));
+            rate.push(quote!(<T as ::mechanism::Real>::as_f64(v.#p.x)));
+            rate.push(quote!(<T as ::mechanism::Real>::as_f64(v.#p.y)));
+            angle.extend([false, false]);
         }
         for l in &out.links {
-            rows.pos
-                .push(quote!(<T as ::mechanism::Real>::as_f64(pos.#l)));
-            rows.rate
-                .push(quote!(<T as ::mechanism::Real>::as_f64(v.#l)));
-            rows.angle.push(true);
+            pos.push(quote!(<T as ::mechanism::Real>::as_f64(pos.#l)));
+            rate.push(quote!(<T as ::mechanism::Real>::as_f64(v.#l)));
+            angle.push(true);
         }
         for s in out.slides.iter().map(|s| &s.name) {
-            rows.pos
-                .push(quote!(<T as ::mechanism::Real>::as_f64(pos.#s)));
-            rows.rate
-                .push(quote!(<T as ::mechanism::Real>::as_f64(v.#s)));
-            rows.angle.push(false);
+            pos.push(quote!(<T as ::mechanism::Real>::as_f64(pos.#s)));
+            rate.push(quote!(<T as ::mechanism::Real>::as_f64(v.#s)));
+            angle.push(false);
         }
-        rows
+        OutputRows { pos, rate, angle }
     }
 
     /// The number of columns (`K`).
