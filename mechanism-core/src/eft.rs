@@ -1,15 +1,15 @@
 //! Error-free transformations (Knuth's two-sum, Dekker's product with
 //! Veltkamp's split) for the places where one rounding matters: the RRP
 //! group's distance from its guide in `f32` near tangency (scalar
-//! [`crate::dyad::rrp::position`] and [`crate::lane::rrp`]), and the
+//! [`crate::dyad::rrp::position`] and [`crate::__private::lane::rrp`]), and the
 //! Cody-Waite reduction of the sine and cosine kernels ([`reduce`]:
-//! [`crate::sincos64`], [`crate::lane::sin_cos`]). Branch-free and without
+//! [`crate::sincos64`], [`crate::__private::lane::sin_cos`]). Branch-free and without
 //! fused multiply-add, so they vectorize and run on a Cortex-M4F.
 
 use crate::scalar::{single, Real};
 
 /// Whether the RRP position ([`crate::dyad::rrp::position`], and its lane
-/// version [`crate::lane::rrp`]) carries rounding errors: for `f32`
+/// version [`crate::__private::lane::rrp`]) carries rounding errors: for `f32`
 /// (24-bit significand), where without it the f32 six-bar's largest rate
 /// error was 7.3e-6 instead of 3.7e-6 (`docs/stability.md`, "f32 six-bar");
 /// not for `f64`, whose rounding is `2^29` times finer (the f64 six-bar is

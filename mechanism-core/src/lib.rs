@@ -29,7 +29,6 @@ pub mod error;
 pub mod force;
 pub mod geometry;
 pub mod guide;
-pub mod lane;
 pub mod link;
 pub mod linsolve;
 pub mod mode;
@@ -42,6 +41,9 @@ pub mod sweep;
 pub mod triad;
 pub mod trig;
 pub mod trig64;
+
+#[doc(hidden)]
+pub mod __private;
 
 pub use error::{Error, Fault, Primitive};
 pub use mode::Mode;

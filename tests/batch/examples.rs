@@ -20,7 +20,7 @@
 //! # Tolerance
 //!
 //! The lane primitives use the scalar primitives' formulas with elementary
-//! functions within 1 to 2.5 ulp of libm's (`mechanism::lane`'s tests) and
+//! functions within 1 to 2.5 ulp of libm's (`mechanism::__private::lane`'s tests) and
 //! reciprocals where the scalar code divides, so every intermediate value
 //! differs from the scalar one by a few ulp of its own magnitude. A group
 //! solve amplifies such differences by at most `1 / condition` (the rate

@@ -15,11 +15,15 @@ pub(crate) fn det_code(model: &Model, stmt_index: usize) -> TokenStream {
     let stmt = &model.stmts[stmt_index];
     let g = format_ident!("grp_{}", stmt.name);
     match &stmt.kind {
-        Kind::Rrr { .. } | Kind::Actuator { .. } => quote!(::mechanism::sweep::det_rrr(&pos.#g)),
-        Kind::Rrp { guide, .. } => quote!(::mechanism::sweep::det_rrp(&pos.#g, &pos.#guide)),
-        Kind::Rpr { a, b, .. } => quote!(::mechanism::sweep::det_rpr(&pos.#g, &pos.#a, &pos.#b)),
-        Kind::Prp { g1, g2, .. } => quote!(::mechanism::sweep::det_prp(&pos.#g1, &pos.#g2)),
-        Kind::Rpp { guide, .. } => quote!(::mechanism::sweep::det_rpp(&pos.#g, &pos.#guide)),
+        Kind::Rrr { .. } | Kind::Actuator { .. } => {
+            quote!(::mechanism::__private::det_rrr(&pos.#g))
+        }
+        Kind::Rrp { guide, .. } => quote!(::mechanism::__private::det_rrp(&pos.#g, &pos.#guide)),
+        Kind::Rpr { a, b, .. } => {
+            quote!(::mechanism::__private::det_rpr(&pos.#g, &pos.#a, &pos.#b))
+        }
+        Kind::Prp { g1, g2, .. } => quote!(::mechanism::__private::det_prp(&pos.#g1, &pos.#g2)),
+        Kind::Rpp { guide, .. } => quote!(::mechanism::__private::det_rpp(&pos.#g, &pos.#guide)),
         _ => quote!(1.0),
     }
 }

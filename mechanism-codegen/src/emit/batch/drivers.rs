@@ -39,7 +39,7 @@ pub(super) fn crank(
     let rates = s.rates(0)?;
     let (omega, alpha) = (&rates.omega, &rates.alpha);
     s.emit(quote! {
-        let #g = ::mechanism::lane::crank(#ppx, #ppy, #r, #th[k]);
+        let #g = ::mechanism::__private::lane::crank(#ppx, #ppy, #r, #th[k]);
         ok &= #g.ok;
         let #px = #g.x; let #py = #g.y;
     });
@@ -48,7 +48,7 @@ pub(super) fn crank(
         let (pvx, pvy) = (&p.vx, &p.vy);
         s.emit(quote! {
             let #omega = #rate[k];
-            let (tx, ty) = ::mechanism::lane::rel_vel(#g.rx, #g.ry, #omega);
+            let (tx, ty) = ::mechanism::__private::lane::rel_vel(#g.rx, #g.ry, #omega);
             let #vx = #pvx + tx; let #vy = #pvy + ty;
         });
         s.check([quote!(#omega)]);
@@ -58,7 +58,7 @@ pub(super) fn crank(
         let (pax, pay) = (&p.ax, &p.ay);
         s.emit(quote! {
             let #alpha = #accel[k];
-            let (tx, ty) = ::mechanism::lane::rel_acc(#g.rx, #g.ry, #omega, #alpha);
+            let (tx, ty) = ::mechanism::__private::lane::rel_acc(#g.rx, #g.ry, #omega, #alpha);
             let #ax = #pax + tx; let #ay = #pay + ty;
         });
         s.check([quote!(#alpha)]);
@@ -70,7 +70,7 @@ pub(super) fn crank(
                 x: quote!(#g.ux),
                 y: quote!(#g.uy),
             },
-            angle: quote!(::mechanism::lane::wrap_angle(#th[k])),
+            angle: quote!(::mechanism::__private::lane::wrap_angle(#th[k])),
             omega: quote!(#omega),
             alpha: quote!(#alpha),
         },
@@ -102,20 +102,20 @@ pub(super) fn slider(
     let o = offset.emit();
     let input_s = format_ident!("in_{}", input);
     s.emit(quote! {
-        let (#px, #py) = ::mechanism::lane::slider(&#line, #o, #input_s[k]);
+        let (#px, #py) = ::mechanism::__private::lane::slider(&#line, #o, #input_s[k]);
     });
     s.check([quote!(#input_s[k])]);
     let rate = format_ident!("rate_{}", input);
     if lane.vel {
         s.emit(quote! {
-            let (#vx, #vy) = ::mechanism::lane::slider_velocity(&#line, #px, #py, #rate[k], #gv);
+            let (#vx, #vy) = ::mechanism::__private::lane::slider_velocity(&#line, #px, #py, #rate[k], #gv);
         });
         s.check([quote!(#rate[k])]);
     }
     if lane.acc {
         let accel = format_ident!("accel_{}", input);
         s.emit(quote! {
-            let (#ax, #ay) = ::mechanism::lane::slider_acceleration(&#line, #px, #py, #rate[k], #accel[k], #gv, #ga);
+            let (#ax, #ay) = ::mechanism::__private::lane::slider_acceleration(&#line, #px, #py, #rate[k], #accel[k], #gv, #ga);
         });
         s.check([quote!(#accel[k])]);
     }

@@ -1,6 +1,6 @@
 //! Lane code of the Assur groups (dyads): RRR (and the linear actuator, an
 //! RRR whose second side is an input), RRP, RPR, PRP and RPP. Each calls the
-//! `mechanism::lane` function of its kind for the position (a struct with
+//! `mechanism::__private::lane` function of its kind for the position (a struct with
 //! an `ok` flag, stricter than the scalar checks), then its `_rates` and
 //! `_accels` functions at the velocity and acceleration levels, and checks
 //! every value the scalar path checks.
@@ -77,7 +77,7 @@ pub(super) fn dyad(
     let (w1, al1, w2, al2) = (&r1.omega, &r1.alpha, &r2.omega, &r2.alpha);
     let (apx, apy, bpx, bpy) = (&pa.px, &pa.py, &pb.px, &pb.py);
     s.emit(quote! {
-        let #g = ::mechanism::lane::rrr(#apx, #apy, #l1, #bpx, #bpy, #l2, #sign);
+        let #g = ::mechanism::__private::lane::rrr(#apx, #apy, #l1, #bpx, #bpy, #l2, #sign);
         ok &= #g.ok;
         let #px = #g.x; let #py = #g.y;
     });
@@ -85,18 +85,18 @@ pub(super) fn dyad(
         let (avx, avy, bvx, bvy) = (&pa.vx, &pa.vy, &pb.vx, &pb.vy);
         let rates = match second {
             SecondSide::Length(_) => {
-                quote!(::mechanism::lane::rrr_rates(&#g, #bvx - #avx, #bvy - #avy))
+                quote!(::mechanism::__private::lane::rrr_rates(&#g, #bvx - #avx, #bvy - #avy))
             }
             SecondSide::Input(input) => {
                 let rate = format_ident!("rate_{}", input);
                 s.check([quote!(#rate[k])]);
-                quote!(::mechanism::lane::actuator_rates(&#g, #bvx - #avx, #bvy - #avy, #l2, #rate[k]))
+                quote!(::mechanism::__private::lane::actuator_rates(&#g, #bvx - #avx, #bvy - #avy, #l2, #rate[k]))
             }
         };
         s.emit(quote! {
             ok &= #g.ok_rate;
             let (#w1, #w2) = #rates;
-            let (tx, ty) = ::mechanism::lane::rel_vel(#g.r1x, #g.r1y, #w1);
+            let (tx, ty) = ::mechanism::__private::lane::rel_vel(#g.r1x, #g.r1y, #w1);
             let #vx = #avx + tx; let #vy = #avy + ty;
         });
         s.check([quote!(#w1), quote!(#w2)]);
@@ -105,7 +105,7 @@ pub(super) fn dyad(
         let (aax, aay, bax, bay) = (&pa.ax, &pa.ay, &pb.ax, &pb.ay);
         let accels = match second {
             SecondSide::Length(_) => {
-                quote!(::mechanism::lane::rrr_accels(&#g, #bax - #aax, #bay - #aay, #w1, #w2))
+                quote!(::mechanism::__private::lane::rrr_accels(&#g, #bax - #aax, #bay - #aay, #w1, #w2))
             }
             SecondSide::Input(input) => {
                 let (rate, accel) = (
@@ -113,12 +113,12 @@ pub(super) fn dyad(
                     format_ident!("accel_{}", input),
                 );
                 s.check([quote!(#accel[k])]);
-                quote!(::mechanism::lane::actuator_accels(&#g, #bax - #aax, #bay - #aay, #l2, #rate[k], #accel[k], #w1, #w2))
+                quote!(::mechanism::__private::lane::actuator_accels(&#g, #bax - #aax, #bay - #aay, #l2, #rate[k], #accel[k], #w1, #w2))
             }
         };
         s.emit(quote! {
             let (#al1, #al2) = #accels;
-            let (tx, ty) = ::mechanism::lane::rel_acc(#g.r1x, #g.r1y, #w1, #al1);
+            let (tx, ty) = ::mechanism::__private::lane::rel_acc(#g.r1x, #g.r1y, #w1, #al1);
             let #ax = #aax + tx; let #ay = #aay + ty;
         });
         s.check([quote!(#al1), quote!(#al2)]);
@@ -181,7 +181,7 @@ pub(super) fn rrp(
     let (sl, sd, sdd) = (&slide.s, &slide.sd, &slide.sdd);
     let (apx, apy) = (&pa.px, &pa.py);
     s.emit(quote! {
-        let #g = ::mechanism::lane::rrp(#apx, #apy, #l, &#line, #o, #sign);
+        let #g = ::mechanism::__private::lane::rrp(#apx, #apy, #l, &#line, #o, #sign);
         ok &= #g.ok;
         let #px = #g.x; let #py = #g.y;
         let #sl = #g.s;
@@ -191,14 +191,14 @@ pub(super) fn rrp(
         let (avx, avy) = (&pa.vx, &pa.vy);
         s.emit(quote! {
             ok &= #g.ok_rate;
-            let (#w1, #sd, #vx, #vy) = ::mechanism::lane::rrp_rates(&#g, &#line, #avx, #avy, #gv);
+            let (#w1, #sd, #vx, #vy) = ::mechanism::__private::lane::rrp_rates(&#g, &#line, #avx, #avy, #gv);
         });
         s.check([quote!(#w1), quote!(#sd)]);
     }
     if lane.acc {
         let (aax, aay) = (&pa.ax, &pa.ay);
         s.emit(quote! {
-            let (#al1, #sdd, #ax, #ay) = ::mechanism::lane::rrp_accels(&#g, &#line, #aax, #aay, #w1, #sd, #gv, #ga);
+            let (#al1, #sdd, #ax, #ay) = ::mechanism::__private::lane::rrp_accels(&#g, &#line, #aax, #aay, #w1, #sd, #gv, #ga);
         });
         s.check([quote!(#al1), quote!(#sdd)]);
     }
@@ -233,7 +233,7 @@ pub(super) fn rpr(
     let (sl, sd, sdd) = (&slide.s, &slide.sd, &slide.sdd);
     let (apx, apy, bpx, bpy) = (&pa.px, &pa.py, &pb.px, &pb.py);
     s.emit(quote! {
-        let #g = ::mechanism::lane::rpr(#apx, #apy, #bpx, #bpy, #o, #sign);
+        let #g = ::mechanism::__private::lane::rpr(#apx, #apy, #bpx, #bpy, #o, #sign);
         ok &= #g.ok;
         let #sl = #g.s;
     });
@@ -242,14 +242,14 @@ pub(super) fn rpr(
         let (avx, avy, bvx, bvy) = (&pa.vx, &pa.vy, &pb.vx, &pb.vy);
         s.emit(quote! {
             ok &= #g.ok_rate;
-            let (#w, #sd) = ::mechanism::lane::rpr_rates(&#g, #avx - #bvx, #avy - #bvy);
+            let (#w, #sd) = ::mechanism::__private::lane::rpr_rates(&#g, #avx - #bvx, #avy - #bvy);
         });
         s.check([quote!(#w), quote!(#sd)]);
     }
     if lane.acc {
         let (aax, aay, bax, bay) = (&pa.ax, &pa.ay, &pb.ax, &pb.ay);
         s.emit(quote! {
-            let (#al, #sdd) = ::mechanism::lane::rpr_accels(&#g, #aax - #bax, #aay - #bay, #w, #sd);
+            let (#al, #sdd) = ::mechanism::__private::lane::rpr_accels(&#g, #aax - #bax, #aay - #bay, #w, #sd);
         });
         s.check([quote!(#al), quote!(#sdd)]);
     }
@@ -293,7 +293,7 @@ pub(super) fn prp(
     let (s1, sd1, sdd1) = (&slide1.s, &slide1.sd, &slide1.sdd);
     let (s2, sd2, sdd2) = (&slide2.s, &slide2.sd, &slide2.sdd);
     s.emit(quote! {
-        let #g = ::mechanism::lane::prp(&#l1, #o1, &#l2, #o2);
+        let #g = ::mechanism::__private::lane::prp(&#l1, #o1, &#l2, #o2);
         ok &= #g.ok;
         let #px = #g.x; let #py = #g.y;
         let #s1 = #g.s1; let #s2 = #g.s2;
@@ -301,13 +301,13 @@ pub(super) fn prp(
     s.check([quote!(#s1), quote!(#s2)]);
     if lane.vel {
         s.emit(quote! {
-            let (#sd1, #sd2, #vx, #vy) = ::mechanism::lane::prp_rates(&#g, &#l1, &#l2, #gv1, #gv2);
+            let (#sd1, #sd2, #vx, #vy) = ::mechanism::__private::lane::prp_rates(&#g, &#l1, &#l2, #gv1, #gv2);
         });
         s.check([quote!(#sd1), quote!(#sd2)]);
     }
     if lane.acc {
         s.emit(quote! {
-            let (#sdd1, #sdd2, #ax, #ay) = ::mechanism::lane::prp_accels(&#g, &#l1, &#l2, #sd1, #sd2, #gv1, #ga1, #gv2, #ga2);
+            let (#sdd1, #sdd2, #ax, #ay) = ::mechanism::__private::lane::prp_accels(&#g, &#l1, &#l2, #sd1, #sd2, #gv1, #ga1, #gv2, #ga2);
         });
         s.check([quote!(#sdd1), quote!(#sdd2)]);
     }
@@ -354,7 +354,7 @@ pub(super) fn rpp(
     let (s2, sd2, sdd2) = (&slide2.s, &slide2.sd, &slide2.sdd);
     let (apx, apy) = (&pa.px, &pa.py);
     s.emit(quote! {
-        let #g = ::mechanism::lane::rpp(#apx, #apy, &#line, #o, #lx, #ly);
+        let #g = ::mechanism::__private::lane::rpp(#apx, #apy, &#line, #o, #lx, #ly);
         ok &= #g.ok;
         let #px = #g.x; let #py = #g.y;
         let #s1 = #g.s1; let #s2 = #g.s2;
@@ -363,14 +363,14 @@ pub(super) fn rpp(
     if lane.vel {
         let (avx, avy) = (&pa.vx, &pa.vy);
         s.emit(quote! {
-            let (#sd1, #sd2, #vx, #vy) = ::mechanism::lane::rpp_rates(&#g, &#line, #apx, #apy, #avx, #avy, #gv);
+            let (#sd1, #sd2, #vx, #vy) = ::mechanism::__private::lane::rpp_rates(&#g, &#line, #apx, #apy, #avx, #avy, #gv);
         });
         s.check([quote!(#sd1), quote!(#sd2)]);
     }
     if lane.acc {
         let (aax, aay) = (&pa.ax, &pa.ay);
         s.emit(quote! {
-            let (#sdd1, #sdd2, #ax, #ay) = ::mechanism::lane::rpp_accels(&#g, &#line, #apx, #apy, #aax, #aay, #sd1, #sd2, #gv, #ga);
+            let (#sdd1, #sdd2, #ax, #ay) = ::mechanism::__private::lane::rpp_accels(&#g, &#line, #apx, #apy, #aax, #aay, #sd1, #sd2, #gv, #ga);
         });
         s.check([quote!(#sdd1), quote!(#sdd2)]);
     }

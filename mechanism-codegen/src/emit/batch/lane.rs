@@ -6,10 +6,10 @@
 //!
 //! Every local of the loop body is named after the statement that makes it:
 //! `p_A_x` / `v_A_x` / `a_A_x` a point's position, velocity and acceleration
-//! components, `g_A` the group solution (a `mechanism::lane` struct),
+//! components, `g_A` the group solution (a `mechanism::__private::lane` struct),
 //! `w_link3` / `al_link3` a link's angular velocity and acceleration,
 //! `s0_B` / `sd0_B` / `sdd0_B` a slide and its rates, `ln_line` a guide's
-//! `mechanism::lane::Line`. Values that do not depend on the element (a unit
+//! `mechanism::__private::lane::Line`. Values that do not depend on the element (a unit
 //! vector at a run-time angle, `u_NAME`) are computed once before the loop.
 
 use super::{drivers, groups, points};
@@ -108,7 +108,7 @@ impl LaneLink {
         };
         LaneLink {
             axis,
-            angle: quote!(::mechanism::lane::angle(#y, #x)),
+            angle: quote!(::mechanism::__private::lane::angle(#y, #x)),
             omega,
             alpha,
         }
@@ -125,7 +125,7 @@ impl LaneLink {
     }
 }
 
-/// A guide in the lane code: the `mechanism::lane::Line` local, the body's
+/// A guide in the lane code: the `mechanism::__private::lane::Line` local, the body's
 /// motion as `Option<&LineVelocity>` / `Option<&LineAcceleration>`
 /// expressions (`None` for a fixed guide, so its terms fold away), and the
 /// body's angular velocity and acceleration (for the blocks sliding on it).
@@ -370,7 +370,7 @@ pub(super) struct Step<'s> {
     pub name: &'s Ident,
     /// The locals of the point it defines (if it defines one).
     pub own: PointLocals,
-    /// The local holding its `mechanism::lane` group solution (`g_NAME`).
+    /// The local holding its `mechanism::__private::lane` group solution (`g_NAME`).
     pub g: Ident,
     pre: TokenStream,
     body: TokenStream,
@@ -517,7 +517,7 @@ pub(super) fn tree_sum(terms: &[TokenStream]) -> Option<TokenStream> {
     }
 }
 
-/// The assembly mode as the sign literal the `mechanism::lane` group
+/// The assembly mode as the sign literal the `mechanism::__private::lane` group
 /// functions take: `1.0` for `plus`, `-1.0` for `minus`.
 pub(super) fn sign(mode: &Mode) -> TokenStream {
     lit(match mode {
@@ -543,9 +543,9 @@ pub(super) struct Kernel {
 /// The kernel takes every slice as its own argument (so the compiler knows
 /// they do not overlap: no run-time alias checks that would stop the
 /// vectorizer), evaluates every element branch-free with
-/// `mechanism::lane`, writes its outputs and a status of 0 (ok) or 255 (to be
+/// `mechanism::__private::lane`, writes its outputs and a status of 0 (ok) or 255 (to be
 /// evaluated again by the scalar path, which writes zeros and the real
-/// status). The checks of `mechanism::lane` are stricter than the scalar
+/// status). The checks of `mechanism::__private::lane` are stricter than the scalar
 /// ones, so an element the kernel accepts is one the scalar path accepts.
 /// Values that do not depend on the element (a guide's direction given by a
 /// run-time parameter) are computed once, before the loop, by the scalar
@@ -568,7 +568,7 @@ pub(super) fn kernel(
     let ins = all_in;
     let real = quote!(<T as ::mechanism::Real>);
     let method = quote! {
-        /// The vectorizable part of [`Self::solve_batch`] (see `mechanism::lane`):
+        /// The vectorizable part of [`Self::solve_batch`] (see `mechanism::__private::lane`):
         /// every element branch-free; status 0, or 255 where the scalar path
         /// must evaluate the element again.
         #[doc(hidden)]

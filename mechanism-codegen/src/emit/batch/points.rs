@@ -30,7 +30,7 @@ pub(super) fn ground(s: &mut Step, x: &Value, y: &Value) {
 }
 
 /// A guide line through `origin` at `angle` (radians): fixed, a
-/// `mechanism::lane::Line` local `ln_NAME` whose motion is `None`; or
+/// `mechanism::__private::lane::Line` local `ln_NAME` whose motion is `None`; or
 /// carried by the link `carrier`, its direction the link's axis turned by
 /// `angle` (`lane::carried`), its motion `LineVelocity` / `LineAcceleration`
 /// locals (`gv_NAME`, `ga_NAME`) from the origin's motion and the link's
@@ -54,7 +54,7 @@ pub(super) fn guide(
             let Vector { x: ox, y: oy } = &origin.p;
             let Vector { x: dx, y: dy } = s.unit(angle);
             s.emit(quote! {
-                let #line = ::mechanism::lane::Line { ox: #ox, oy: #oy, dx: #dx, dy: #dy };
+                let #line = ::mechanism::__private::lane::Line { ox: #ox, oy: #oy, dx: #dx, dy: #dy };
             });
             let none = quote!(::core::option::Option::None);
             LaneGuide {
@@ -125,12 +125,12 @@ fn carried(
     let Vector { x: axx, y: axy } = &l.axis;
     if angle.fold() == Some(0.0) {
         s.emit(quote! {
-            let #line = ::mechanism::lane::Line { ox: #ox, oy: #oy, dx: #axx, dy: #axy };
+            let #line = ::mechanism::__private::lane::Line { ox: #ox, oy: #oy, dx: #axx, dy: #axy };
         });
     } else {
         let Vector { x: lx, y: ly } = s.unit(angle);
         s.emit(quote! {
-            let #line = ::mechanism::lane::carried(#ox, #oy, (#axx, #axy), (#lx, #ly));
+            let #line = ::mechanism::__private::lane::carried(#ox, #oy, (#axx, #axy), (#lx, #ly));
         });
     }
     let (gv, ga) = (
@@ -141,13 +141,13 @@ fn carried(
     if lane.vel {
         let Vector { x: ovx, y: ovy } = &origin.v;
         s.emit(quote! {
-            let #gv = ::mechanism::lane::LineVelocity { vx: #ovx, vy: #ovy, omega: #omega };
+            let #gv = ::mechanism::__private::lane::LineVelocity { vx: #ovx, vy: #ovy, omega: #omega };
         });
     }
     if lane.acc {
         let Vector { x: oax, y: oay } = &origin.a;
         s.emit(quote! {
-            let #ga = ::mechanism::lane::LineAcceleration { ax: #oax, ay: #oay, alpha: #alpha };
+            let #ga = ::mechanism::__private::lane::LineAcceleration { ax: #oax, ay: #oay, alpha: #alpha };
         });
     }
     Some(LaneGuide {
@@ -196,14 +196,14 @@ pub(super) fn point(
     if lane.vel {
         let (fvx, fvy) = (&f.vx, &f.vy);
         s.emit(quote! {
-            let (tx, ty) = ::mechanism::lane::rel_vel(#ox, #oy, #omega);
+            let (tx, ty) = ::mechanism::__private::lane::rel_vel(#ox, #oy, #omega);
             let #vx = #fvx + tx; let #vy = #fvy + ty;
         });
     }
     if lane.acc {
         let (fax, fay) = (&f.ax, &f.ay);
         s.emit(quote! {
-            let (tx, ty) = ::mechanism::lane::rel_acc(#ox, #oy, #omega, #alpha);
+            let (tx, ty) = ::mechanism::__private::lane::rel_acc(#ox, #oy, #omega, #alpha);
             let #ax = #fax + tx; let #ay = #fay + ty;
         });
     }

@@ -110,7 +110,7 @@ fn a_position_only_kernel_has_no_rate_terms() {
         assert!(!pos.contains(term), "{term} in {pos}");
         assert!(acc.contains(term), "{term} not in {acc}");
     }
-    assert!(pos.contains("::mechanism::lane::rrr("), "{pos}");
+    assert!(pos.contains("::mechanism::__private::lane::rrr("), "{pos}");
 }
 
 /// An output the kernel does not compute (here a point no statement
