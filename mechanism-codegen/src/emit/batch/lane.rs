@@ -12,9 +12,7 @@
 //! `mechanism::__private::lane::Line`. Values that do not depend on the element (a unit
 //! vector at a run-time angle, `u_NAME`) are computed once before the loop.
 
-use super::{drivers, groups, points};
-use crate::model::{Kind, Mode, Model, Stmt};
-use crate::plan::Plan;
+use crate::model::{Kind, Mode, Stmt};
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -162,8 +160,8 @@ pub(super) struct Lane {
     pub vel: bool,
     /// The kernel computes accelerations.
     pub acc: bool,
-    pre: TokenStream,
-    body: TokenStream,
+    pub(super) pre: TokenStream,
+    pub(super) body: TokenStream,
     points: BTreeSet<String>,
     links: BTreeMap<String, LaneLink>,
     guides: BTreeMap<String, LaneGuide>,
@@ -204,62 +202,6 @@ impl Lane {
         self.guides.get(&g.to_string())
     }
 
-    /// Adds the lane code of one statement, `None` when it has no lane
-    /// version here (an argument the kernel does not know).
-    pub(super) fn statement(&mut self, stmt: &Stmt) -> Option<()> {
-        let mut s = Step::new(stmt);
-        match &stmt.kind {
-            Kind::Ground { x, y } => points::ground(&mut s, x, y),
-            Kind::Guide {
-                origin,
-                angle,
-                carrier,
-            } => points::guide(self, &mut s, origin, angle, carrier.as_ref())?,
-            Kind::Point { link, from, local } => points::point(self, &mut s, link, from, local)?,
-            Kind::Crank {
-                pivot,
-                radius,
-                input,
-                ..
-            } => drivers::crank(self, &mut s, pivot, radius, input)?,
-            Kind::Slider {
-                guide,
-                input,
-                offset,
-            } => drivers::slider(self, &mut s, guide, input, offset)?,
-            Kind::Actuator {
-                a,
-                l,
-                b,
-                input,
-                mode,
-            } => drivers::actuator(self, &mut s, a, l, b, input, mode)?,
-            Kind::Rrr { a, l1, b, l2, mode } => groups::rrr(self, &mut s, a, l1, b, l2, mode)?,
-            Kind::Rrp {
-                a,
-                l,
-                guide,
-                mode,
-                offset,
-            } => groups::rrp(self, &mut s, a, l, guide, mode, offset)?,
-            Kind::Rpr { a, b, mode, offset } => groups::rpr(self, &mut s, a, b, mode, offset)?,
-            Kind::Prp {
-                g1,
-                g2,
-                offset1,
-                offset2,
-            } => groups::prp(self, &mut s, g1, g2, offset1, offset2)?,
-            Kind::Rpp {
-                a,
-                guide,
-                slot,
-                offset,
-            } => groups::rpp(self, &mut s, a, guide, slot, offset)?,
-        }
-        self.commit(s);
-        Some(())
-    }
-
     /// Appends a statement's code and makes what it defines known.
     ///
     /// Every value the scalar path checks is checked here too (finite),
@@ -267,7 +209,7 @@ impl Lane {
     /// scalar path accepts: summed into `chk` (one add each, as a balanced
     /// tree), the sum is finite unless one of them is not (or, harmlessly,
     /// the sum overflows: the element then goes to the scalar path).
-    fn commit(&mut self, step: Step) {
+    pub(super) fn commit(&mut self, step: Step) {
         let Step {
             name,
             own,
@@ -312,7 +254,7 @@ impl Lane {
 
     /// The writes of the outputs into their slices, per level: `None` when
     /// an output is not known to the kernel.
-    fn writes(&self, outputs: &[(Ident, TokenStream)], levels: usize) -> Option<Writes> {
+    pub(super) fn writes(&self, outputs: &[(Ident, TokenStream)], levels: usize) -> Option<Writes> {
         let mut w = Writes {
             slices: Vec::new(),
             code: TokenStream::new(),
@@ -345,9 +287,9 @@ impl Lane {
 
 /// The output slices the kernel writes (its `&mut [T]` arguments, in
 /// order) and the code writing element `k` of each.
-struct Writes {
-    slices: Vec<Ident>,
-    code: TokenStream,
+pub(super) struct Writes {
+    pub(super) slices: Vec<Ident>,
+    pub(super) code: TokenStream,
 }
 
 impl Writes {
@@ -382,7 +324,7 @@ pub(super) struct Step<'s> {
 }
 
 impl<'s> Step<'s> {
-    fn new(stmt: &'s Stmt) -> Step<'s> {
+    pub(super) fn new(stmt: &'s Stmt) -> Step<'s> {
         Step {
             stmt,
             name: &stmt.name,
@@ -524,77 +466,4 @@ pub(super) fn sign(mode: &Mode) -> TokenStream {
         Mode::Plus => 1.0,
         Mode::Minus => -1.0,
     })
-}
-
-/// The vectorizable kernel and the call of it from `solve_batch`.
-pub(super) struct Kernel {
-    /// The `__lane_batch` method.
-    pub method: TokenStream,
-    /// `self.__lane_batch(...)` on the batch `b`.
-    pub call: TokenStream,
-}
-
-/// The vectorizable kernel (`__lane_batch`) and the code that calls it, when
-/// every statement the outputs need has a lane version (every kind of
-/// statement has one: ground points, guides, cranks, sliders, actuators, the
-/// five groups, points on links); `None` otherwise (the batch is then
-/// evaluated by the scalar path alone).
-///
-/// The kernel takes every slice as its own argument (so the compiler knows
-/// they do not overlap: no run-time alias checks that would stop the
-/// vectorizer), evaluates every element branch-free with
-/// `mechanism::__private::lane`, writes its outputs and a status of 0 (ok) or 255 (to be
-/// evaluated again by the scalar path, which writes zeros and the real
-/// status). The checks of `mechanism::__private::lane` are stricter than the scalar
-/// ones, so an element the kernel accepts is one the scalar path accepts.
-/// Values that do not depend on the element (a guide's direction given by a
-/// run-time parameter) are computed once, before the loop, by the scalar
-/// functions the scalar path uses.
-pub(super) fn kernel(
-    model: &Model,
-    plan: &Plan,
-    all_in: &[&Ident],
-    outputs: &[(Ident, TokenStream)],
-    levels: usize,
-) -> Option<Kernel> {
-    let mut lane = Lane::new(levels);
-    // Only the statements the outputs need, as in the scalar path (a failing
-    // statement nobody asked for must not send elements to the scalar path).
-    for &i in &plan.solve {
-        lane.statement(&model.stmts[i])?;
-    }
-    let Writes { slices, code } = lane.writes(outputs, levels)?;
-    let Lane { pre, body, .. } = lane;
-    let ins = all_in;
-    let real = quote!(<T as ::mechanism::Real>);
-    let method = quote! {
-        /// The vectorizable part of [`Self::solve_batch`] (see `mechanism::__private::lane`):
-        /// every element branch-free; status 0, or 255 where the scalar path
-        /// must evaluate the element again.
-        #[doc(hidden)]
-        #[inline]
-        #[allow(non_snake_case, unused_variables, dead_code, clippy::too_many_arguments)]
-        fn __lane_batch(&self, #(#ins: &[T],)* #(#slices: &mut [T],)* status: &mut [::core::primitive::u8]) {
-            let mut n = status.len();
-            #(n = ::core::cmp::min(n, #ins.len());)*
-            #(n = ::core::cmp::min(n, #slices.len());)*
-            #(let #ins = &#ins[..n];)*
-            #(let #slices = &mut #slices[..n];)*
-            let status = &mut status[..n];
-            let zero = #real::lit(0.0);
-            #pre
-            for k in 0..n {
-                let mut ok = true;
-                let mut chk = zero;
-                #body
-                #code
-                ok &= #real::finite(chk);
-                status[k] = if ok { 0 } else { ::core::primitive::u8::MAX };
-            }
-        }
-    };
-    let call = quote! {
-        self.__lane_batch(#(b.#ins,)* #(&mut *b.#slices,)* &mut *b.status);
-    };
-    Some(Kernel { method, call })
 }

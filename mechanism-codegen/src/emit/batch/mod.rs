@@ -33,6 +33,7 @@
 
 mod drivers;
 mod groups;
+mod kernel;
 mod lane;
 mod points;
 #[cfg(test)]
@@ -112,7 +113,7 @@ pub fn emit(
             .collect(),
         outputs: out_slices(outputs, levels),
     };
-    let kernel = lane::kernel(model, plan, &fields.input_names(), outputs, levels);
+    let kernel = kernel::kernel(model, plan, &fields.input_names(), outputs, levels);
     let mut items = batch_struct(model, &fields);
     items.extend(solve_batch(model, inputs, &fields, levels, kernel));
     items.extend(owned(model, &fields));
@@ -433,7 +434,7 @@ fn solve_batch(
     inputs: &[Ident],
     fields: &Fields,
     levels: usize,
-    kernel: Option<lane::Kernel>,
+    kernel: Option<kernel::Kernel>,
 ) -> TokenStream {
     let name = &model.name;
     let batch_ty = format_ident!("{}Batch", name);

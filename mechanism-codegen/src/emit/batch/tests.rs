@@ -22,7 +22,8 @@ fn scalar_named_like_a_point_coordinate() {
     assert_eq!(out.matches("compile_error").count(), 1, "{out}");
 }
 
-use super::lane::{kernel, tree_sum, Lane};
+use super::kernel::{kernel, statement};
+use super::lane::{tree_sum, Lane};
 use crate::diag::Diagnostics;
 use crate::model::Model;
 use crate::plan::Plan;
@@ -78,12 +79,12 @@ fn a_group_before_its_joints_falls_back() {
         .iter()
         .position(|s| s.name == "B")
         .expect("statement B");
-    assert!(Lane::new(3).statement(&model.stmts[rrr]).is_none());
+    assert!(statement(&mut Lane::new(3), &model.stmts[rrr]).is_none());
     let mut lane = Lane::new(3);
     for s in &model.stmts[..rrr] {
-        assert!(lane.statement(s).is_some(), "{}", s.name);
+        assert!(statement(&mut lane, s).is_some(), "{}", s.name);
     }
-    assert!(lane.statement(&model.stmts[rrr]).is_some());
+    assert!(statement(&mut lane, &model.stmts[rrr]).is_some());
 }
 
 /// The kernel of a position-only scene computes no rates: no input rate or
