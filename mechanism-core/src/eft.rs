@@ -89,3 +89,10 @@ pub(crate) fn reduce(x: f64, k: f64, p1: f64, p2: f64, p3: f64) -> (f64, f64) {
     let err = (t - (hi - v)) + (-w - v);
     (hi, err - k * p3)
 }
+
+/// `pi/2 = P1 + P2 + P3` for the argument reductions of `lane::sin_cos` and
+/// [`crate::sincos64`]: `P1`, `P2` have 33 significant bits, so `k P1` and
+/// `k P2` are exact for `|k| < 2^20`; `P3` is the rest, rounded.
+pub(crate) const P1: f64 = 1.570_796_326_734_125_6; // 0x1.921fb544p+0, 33 bits
+pub(crate) const P2: f64 = 6.077_100_506_303_966e-11; // 0x1.0b4611a6p-34, 33 bits
+pub(crate) const P3: f64 = 2.022_266_248_795_950_6e-21; // the rest, rounded

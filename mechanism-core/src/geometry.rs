@@ -27,15 +27,7 @@ pub fn dot<T: Real>(a: &Vector2<T>, b: &Vector2<T>) -> T {
     a.x * b.x + a.y * b.y
 }
 
-/// Absolute value.
-#[inline(always)]
-pub fn abs<T: Real>(x: T) -> T {
-    if x < T::zero() {
-        -x
-    } else {
-        x
-    }
-}
+pub use crate::scalar::abs;
 
 /// The smaller of `a` and `b` (`b` when either is NaN). A comparison, where
 /// `RealField::min` calls libm's `fminf`/`fmin` (about 24 instructions on a

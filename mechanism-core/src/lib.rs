@@ -32,6 +32,7 @@ pub mod guide;
 pub mod link;
 pub mod linsolve;
 pub mod mode;
+mod real;
 pub mod scalar;
 #[cfg(feature = "serde")]
 mod ser;

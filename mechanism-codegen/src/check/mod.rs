@@ -17,9 +17,9 @@
 //! - the generated `check()` (`emit::check_fn`) runs the same sweep at run
 //!   time through the generated `position()`, for any parameters.
 //!
-//! Files: [`eval`] solves the position in `f64`; [`failures`] and
-//! [`singular`] turn the sweep's findings into errors and warnings;
-//! [`explain`] says what a finding means in the user's numbers.
+//! Files: `eval` solves the position in `f64`; `failures` and `singular`
+//! turn the sweep's findings into errors and warnings; `explain` says what a
+//! finding means in the user's numbers.
 //!
 //! Two inputs are checked only when both have declared ranges (a grid over the
 //! box); three or more are not checked.

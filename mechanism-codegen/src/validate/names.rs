@@ -61,7 +61,7 @@ pub const RESERVED: &[&str] = &[
 ];
 
 /// Every defined name with its category and defining token. A name defined
-/// twice (an error of its own, from [`unique_names`]) keeps its first
+/// twice (an error of its own, from `unique_names`) keeps its first
 /// meaning, so its uses raise no second error.
 pub fn symbols(model: &Model) -> BTreeMap<String, (Category, Ident)> {
     let mut table = Table(BTreeMap::new());

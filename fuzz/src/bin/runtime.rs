@@ -1,2 +1,0 @@
-//! Placeholder: the runtime fuzzer is being written.
-fn main() {}
