@@ -904,7 +904,7 @@ impl Compiler {
         self.batches += 1;
         let _ = std::fs::create_dir_all(dir.join("src"));
         let manifest = format!(
-            "[package]\nname = \"fuzz-sample\"\nversion = \"0.0.0\"\nedition = \"2021\"\npublish = false\n\n[dependencies]\nmechanism = {{ path = {:?} }}\n\n[workspace]\n",
+            "[package]\nname = \"fuzz-sample\"\nversion = \"0.0.0\"\nedition = \"2021\"\npublish = false\n\n[dependencies]\nmechanism = {{ package = \"planar-mechanism\", path = {:?} }}\n\n[workspace]\n",
             self.root.display().to_string()
         );
         let mut lib = String::from("#![allow(warnings)]\n");
