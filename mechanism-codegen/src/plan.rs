@@ -31,6 +31,8 @@ pub struct LinkInfo {
     pub turn: Turn,
     /// Whether the user named it.
     pub named: bool,
+    /// The guide it slides on (a block), if any.
+    pub guide: Option<String>,
 }
 
 /// What the plan knows of a guide.
@@ -169,7 +171,8 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
     for (i, stmt) in model.stmts.iter().enumerate() {
         for (j, (points, turn, guide)) in link_shapes(stmt).into_iter().enumerate() {
             let turn = match guide
-                .and_then(|g| guides.get(&g))
+                .as_ref()
+                .and_then(|g| guides.get(g))
                 .and_then(|g| g.carrier.clone())
             {
                 Some(carrier) => Turn::With(carrier),
@@ -183,6 +186,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
                     points,
                     turn,
                     named: stmt.links_named[j],
+                    guide,
                 },
             );
         }

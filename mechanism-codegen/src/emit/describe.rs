@@ -69,17 +69,15 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
             let Some(info) = plan.links.get(&l.to_string()) else {
                 continue;
             };
-            let (kind, guide) = match (&stmt.kind, j) {
-                (Kind::Crank { .. }, _) => (quote!(Crank), None),
-                (Kind::Actuator { .. }, 1) => (quote!(Cylinder), None),
-                (Kind::Slider { guide, .. }, _)
-                | (Kind::Rrp { guide, .. }, 1)
-                | (Kind::Rpp { guide, .. }, _) => (quote!(Block), Some(guide.to_string())),
-                (Kind::Prp { g1, .. }, 0) => (quote!(Block), Some(g1.to_string())),
-                (Kind::Prp { g2, .. }, _) => (quote!(Block), Some(g2.to_string())),
-                (Kind::Rpr { .. }, 0) => (quote!(Block), None),
-                _ => (quote!(Bar), None),
+            // A link on a guide is a block (the plan knows which guide); so
+            // is an RPR's first link, sliding along its second.
+            let kind = match (&stmt.kind, j, &info.guide) {
+                (_, _, Some(_)) | (Kind::Rpr { .. }, 0, None) => quote!(Block),
+                (Kind::Crank { .. }, _, None) => quote!(Crank),
+                (Kind::Actuator { .. }, 1, None) => quote!(Cylinder),
+                _ => quote!(Bar),
             };
+            let guide = info.guide.clone();
             let n = l.to_string();
             let named = info.named;
             let pts = &info.points;
@@ -148,55 +146,95 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
     }
 }
 
+/// One field of a `Fields` impl: its name, what it measures (a
+/// `mechanism::structure::Quantity` variant), whether it is planar (a point
+/// or a vector), and the `Value` that reads it (code in terms of `self`).
+pub struct FieldEntry {
+    /// The name `get` answers to.
+    pub name: String,
+    /// The `Quantity` variant.
+    pub quantity: &'static str,
+    /// `true` for a point or a vector.
+    pub planar: bool,
+    /// The `mechanism::structure::Value` expression.
+    pub value: TokenStream,
+}
+
+impl FieldEntry {
+    /// A field read as `Value::KIND(self.READ)`, `KIND` one of `Point`,
+    /// `Vector`, `Scalar`.
+    pub fn new(name: String, quantity: &'static str, kind: &str, read: TokenStream) -> Self {
+        let (value, kind) = (path("Value"), format_ident!("{}", kind));
+        FieldEntry {
+            name,
+            quantity,
+            planar: kind != "Scalar",
+            value: quote!(#value::#kind(self.#read)),
+        }
+    }
+}
+
+/// The `Fields` impl of the struct `ty` with `entries`, in order (empty for
+/// the stubs emitted on error).
+pub fn fields_impl(ty: &syn::Ident, entries: &[FieldEntry]) -> TokenStream {
+    let (field, quantity, value) = (path("Field"), path("Quantity"), path("Value"));
+    let infos = entries.iter().map(|e| {
+        let (n, q, planar) = (&e.name, format_ident!("{}", e.quantity), e.planar);
+        quote!(#field { name: #n, quantity: #quantity::#q, planar: #planar })
+    });
+    let arms = entries.iter().map(|e| {
+        let (n, v) = (&e.name, &e.value);
+        quote!(#n => ::core::option::Option::Some(#v),)
+    });
+    // No field: no `match` of one wildcard arm (clippy's
+    // `match_single_binding` in the user's crate).
+    let body = if entries.is_empty() {
+        quote!(::core::option::Option::None)
+    } else {
+        quote!(match name { #(#arms)* _ => ::core::option::Option::None, })
+    };
+    quote! {
+        impl<T: ::mechanism::Real> ::mechanism::structure::Fields<T> for #ty<T> {
+            const FIELDS: &'static [#field] = &[#(#infos),*];
+            #[allow(unused_variables)]
+            fn get(&self, name: &::core::primitive::str) -> ::core::option::Option<#value<T>> {
+                #body
+            }
+        }
+    }
+}
+
 /// The `Fields` impl of one result struct: `level` 0 position, 1 velocity,
 /// 2 acceleration. Its fields are the definition's outputs (points, named
 /// links' angles and rates, slides), in the struct's order.
 fn fields(plan: &Plan, ty: &syn::Ident, level: usize) -> TokenStream {
     let out = &plan.outputs;
-    let (field, quantity, value) = (path("Field"), path("Quantity"), path("Value"));
     let [point_q, angle_q, slide_q] = [
         ["Length", "Angle", "Length"],
         ["Velocity", "AngularVelocity", "Velocity"],
         ["Acceleration", "AngularAcceleration", "Acceleration"],
-    ][level]
-        .map(|q| format_ident!("{}", q));
-    let point_value = if level == 0 {
-        quote!(Point)
-    } else {
-        quote!(Vector)
-    };
-    let mut infos = Vec::new();
-    let mut arms = Vec::new();
+    ][level];
+    let point_kind = if level == 0 { "Point" } else { "Vector" };
+    let mut entries = Vec::new();
     for p in &out.points {
-        let n = p.to_string();
-        infos.push(quote!(#field { name: #n, quantity: #quantity::#point_q, planar: true }));
-        arms.push(quote!(#n => ::core::option::Option::Some(#value::#point_value(self.#p)),));
+        entries.push(FieldEntry::new(
+            p.to_string(),
+            point_q,
+            point_kind,
+            quote!(#p),
+        ));
     }
     let scalars = out
         .links
         .iter()
-        .map(|l| (l, &angle_q))
-        .chain(out.slides.iter().map(|s| (&s.name, &slide_q)));
+        .map(|l| (l, angle_q))
+        .chain(out.slides.iter().map(|s| (&s.name, slide_q)));
     for (s, q) in scalars {
-        let n = s.to_string();
-        infos.push(quote!(#field { name: #n, quantity: #quantity::#q, planar: false }));
-        arms.push(quote!(#n => ::core::option::Option::Some(#value::Scalar(self.#s)),));
+        entries.push(FieldEntry::new(s.to_string(), q, "Scalar", quote!(#s)));
     }
     if level == 1 {
-        infos.push(quote!(#field { name: "condition", quantity: #quantity::Ratio, planar: false }));
-        arms.push(
-            quote!("condition" => ::core::option::Option::Some(#value::Scalar(self.condition)),),
-        );
+        let read = quote!(condition);
+        entries.push(FieldEntry::new("condition".into(), "Ratio", "Scalar", read));
     }
-    quote! {
-        impl<T: ::mechanism::Real> ::mechanism::structure::Fields<T> for #ty<T> {
-            const FIELDS: &'static [#field] = &[#(#infos),*];
-            fn get(&self, name: &::core::primitive::str) -> ::core::option::Option<#value<T>> {
-                match name {
-                    #(#arms)*
-                    _ => ::core::option::Option::None,
-                }
-            }
-        }
-    }
+    fields_impl(ty, &entries)
 }

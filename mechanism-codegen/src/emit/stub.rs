@@ -151,24 +151,16 @@ fn describe_stub(model: &Model) -> TokenStream {
     let text = name.to_string();
     let st = quote!(::mechanism::structure);
     let forces = model.kinetics.declared || model.level == Level::Forces;
-    let fields: Vec<Ident> = ["Position", "Velocity", "Acceleration", "Forces"]
+    let fields = ["Position", "Velocity", "Acceleration", "Forces"]
         .iter()
         .take(if forces { 4 } else { 3 })
-        .map(|s| format_ident!("{}{}", name, s))
-        .collect();
+        .map(|s| super::describe::fields_impl(&format_ident!("{}{}", name, s), &[]));
     quote! {
         impl<T: ::mechanism::Real> #st::Describe for #name<T> {
             const STRUCTURE: #st::Structure = #st::Structure {
                 name: #text, points: &[], links: &[], guides: &[], inputs: &[], masses: &[],
             };
         }
-        #(
-            impl<T: ::mechanism::Real> #st::Fields<T> for #fields<T> {
-                const FIELDS: &'static [#st::Field] = &[];
-                fn get(&self, name: &::core::primitive::str) -> ::core::option::Option<#st::Value<T>> {
-                    ::core::option::Option::None
-                }
-            }
-        )*
+        #(#fields)*
     }
 }

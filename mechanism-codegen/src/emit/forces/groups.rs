@@ -51,20 +51,16 @@ fn prismatic(
     }
 }
 
-/// The driving effort of `input`, field `field` of `rx`, documented by `doc`.
-fn drive(rx: &Ident, input: &Ident, field: &str, doc: String) -> Reaction {
-    let held_field = field;
+/// The driving effort of `input`, field `field` of `rx` (a torque or a push
+/// along the driver's line, as `held` says), documented by `doc`.
+fn drive(rx: &Ident, input: &Ident, field: &str, held: Held, doc: String) -> Reaction {
     let field = format_ident!("{}", field);
     Reaction {
         name: format_ident!("drive_{}", input),
         ty: quote!(T),
         value: quote!(#rx.#field),
         doc,
-        held: if held_field == "torque" {
-            Held::Torque
-        } else {
-            Held::Push
-        },
+        held,
     }
 }
 
@@ -122,7 +118,8 @@ impl ForceEmitter<'_> {
             .push(revolute(&rx, &body, link, pivot, "pivot"));
         self.power.push(quote!(#rx.torque * vel.rates.#input));
         let doc = format!("Driving torque on `{link}` (input `{input}`; force x length units, counter-clockwise positive): the balancing moment.");
-        self.reactions.push(drive(&rx, input, "torque", doc));
+        self.reactions
+            .push(drive(&rx, input, "torque", Held::Torque, doc));
     }
 
     fn slider(&mut self, stmt: &Stmt, guide: &Ident, input: &Ident) {
@@ -142,7 +139,8 @@ impl ForceEmitter<'_> {
             .push(prismatic(&rx, &body, link, name, "guide"));
         self.power.push(quote!(#rx.drive * vel.rates.#input));
         let doc = format!("Driving force on `{link}` along its guide (input `{input}`; force units, positive along the guide's direction).");
-        self.reactions.push(drive(&rx, input, "drive", doc));
+        self.reactions
+            .push(drive(&rx, input, "drive", Held::Push, doc));
     }
 
     fn actuator(&mut self, stmt: &Stmt, a: &Ident, b: &Ident, input: &Ident) {
@@ -163,7 +161,8 @@ impl ForceEmitter<'_> {
         self.power.push(quote!(#rx.axial * vel.rates.#input));
         self.conditions.push(quote!(#rx.min_pivot_ratio));
         let doc = format!("Axial force of the actuator `{}` (input `{input}`; force units, positive when it pushes its ends apart).", links[1]);
-        self.reactions.push(drive(&rx, input, "axial", doc));
+        self.reactions
+            .push(drive(&rx, input, "axial", Held::Push, doc));
     }
 
     fn rrr(&mut self, stmt: &Stmt, a: &Ident, b: &Ident) {

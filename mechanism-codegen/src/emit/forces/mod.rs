@@ -12,6 +12,7 @@
 mod groups;
 mod loads;
 
+use super::describe::{fields_impl, FieldEntry};
 use super::names::TypeNames;
 use crate::model::Model;
 use crate::plan::Plan;
@@ -348,50 +349,31 @@ fn forces_struct(
 /// reaction and effort by name with its quantity, a prismatic pair's as
 /// `NAME.force` and `NAME.moment`, then `condition` and `power_residual`.
 fn forces_fields(names: &TypeNames, reactions: &[Reaction]) -> TokenStream {
-    let st = quote!(::mechanism::structure);
-    let forces_ty = &names.forces;
-    let mut infos = Vec::new();
-    let mut arms = Vec::new();
-    let mut entry = |name: String, quantity: &str, planar: bool, value: TokenStream| {
-        let q = format_ident!("{}", quantity);
-        infos
-            .push(quote!(#st::Field { name: #name, quantity: #st::Quantity::#q, planar: #planar }));
-        arms.push(quote!(#name => ::core::option::Option::Some(#value),));
-    };
+    let mut entries = Vec::new();
     for r in reactions {
         let (n, text) = (&r.name, r.name.to_string());
         match r.held {
-            Held::Force => entry(text, "Force", true, quote!(#st::Value::Vector(self.#n))),
+            Held::Force => entries.push(FieldEntry::new(text, "Force", "Vector", quote!(#n))),
             Held::Prismatic => {
-                let force = quote!(#st::Value::Vector(self.#n.force));
-                entry(format!("{text}.force"), "Force", true, force);
-                let moment = quote!(#st::Value::Scalar(self.#n.moment));
-                entry(format!("{text}.moment"), "Moment", false, moment);
+                let (force, moment) = (quote!(#n.force), quote!(#n.moment));
+                entries.push(FieldEntry::new(
+                    format!("{text}.force"),
+                    "Force",
+                    "Vector",
+                    force,
+                ));
+                let name = format!("{text}.moment");
+                entries.push(FieldEntry::new(name, "Moment", "Scalar", moment));
             }
-            Held::Torque => entry(text, "Moment", false, quote!(#st::Value::Scalar(self.#n))),
-            Held::Push => entry(text, "Force", false, quote!(#st::Value::Scalar(self.#n))),
+            Held::Torque => entries.push(FieldEntry::new(text, "Moment", "Scalar", quote!(#n))),
+            Held::Push => entries.push(FieldEntry::new(text, "Force", "Scalar", quote!(#n))),
         }
     }
     for extra in ["condition", "power_residual"] {
         let f = format_ident!("{}", extra);
-        entry(
-            extra.to_string(),
-            "Ratio",
-            false,
-            quote!(#st::Value::Scalar(self.#f)),
-        );
+        entries.push(FieldEntry::new(extra.into(), "Ratio", "Scalar", quote!(#f)));
     }
-    quote! {
-        impl<T: ::mechanism::Real> #st::Fields<T> for #forces_ty<T> {
-            const FIELDS: &'static [#st::Field] = &[#(#infos),*];
-            fn get(&self, name: &::core::primitive::str) -> ::core::option::Option<#st::Value<T>> {
-                match name {
-                    #(#arms)*
-                    _ => ::core::option::Option::None,
-                }
-            }
-        }
-    }
+    fields_impl(&names.forces, &entries)
 }
 
 /// The `forces` method: the emitter's code, then the struct's value.
