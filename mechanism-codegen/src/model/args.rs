@@ -5,7 +5,7 @@
 
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::Arg;
-use crate::value::{Scope, Value, ValueKind};
+use crate::value::{convert, Scope, Value};
 use proc_macro2::Span;
 use std::collections::BTreeMap;
 use syn::spanned::Spanned;
@@ -73,52 +73,6 @@ impl Scope for NumberScope<'_> {
                 did_you_mean(&s, all.iter().map(String::as_str))
             ),
         )
-    }
-}
-
-/// Converts a user expression ([`crate::value::convert`]) and rejects a value
-/// that is not a finite number: a literal too large for `f64`, a division by
-/// an expression that folds to zero, or a folded result that overflows. Such a
-/// value would put infinities or NaN into the expansion-time check and the
-/// generated literals, so it is an error on the user's tokens.
-pub(super) fn convert(expr: &Expr, scope: &dyn Scope) -> Result<Value, syn::Error> {
-    let v = crate::value::convert(expr, scope)?;
-    check_finite(&v)?;
-    Ok(v)
-}
-
-/// An error when `v` is, or contains, a value that is not a finite number.
-pub(super) fn check_finite(v: &Value) -> Result<(), syn::Error> {
-    finite(v)?;
-    match v.fold() {
-        Some(x) if !x.is_finite() => Err(syn::Error::new_spanned(
-            &v.tokens,
-            format!("this evaluates to {x}, not a finite number; dimensions must be finite"),
-        )),
-        _ => Ok(()),
-    }
-}
-
-/// The first non-finite literal or division by zero inside `v`.
-fn finite(v: &Value) -> Result<(), syn::Error> {
-    match &v.kind {
-        ValueKind::Lit(x) if !x.is_finite() => Err(syn::Error::new_spanned(
-            &v.tokens,
-            format!("`{}` is not a finite number (too large for an f64, it rounds to {x}); dimensions must be finite", v.tokens),
-        )),
-        ValueKind::Neg(a) => finite(a),
-        ValueKind::Bin(a, op, b) => {
-            finite(a)?;
-            finite(b)?;
-            if *op == '/' && b.fold() == Some(0.0) {
-                return Err(syn::Error::new_spanned(
-                    &v.tokens,
-                    format!("division by zero: `{}` is 0, so this is not a finite number; dimensions must be finite", b.tokens),
-                ));
-            }
-            Ok(())
-        }
-        _ => Ok(()),
     }
 }
 

@@ -2,11 +2,12 @@
 //! checked against the vocabulary and its arity, then one function per kind
 //! reading the arguments by role ([`Args`]).
 
-use super::args::{convert, Args, NumberScope};
+use super::args::{Args, NumberScope};
 use super::{Kind, Local, Origin};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::vocabulary::{arity, unsupported_driver, usage, KINDS};
 use crate::parse::{self, Arg};
+use crate::value::convert;
 use crate::value::{Scope, Value};
 use syn::spanned::Spanned;
 use syn::Expr;

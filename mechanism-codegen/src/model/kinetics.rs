@@ -2,11 +2,12 @@
 //! and `torque` (their links and points are checked in `validate`, once the
 //! plan knows which points each link has).
 
-use super::args::{convert, NumberScope};
+use super::args::NumberScope;
 use super::lower::{once, Body};
 use super::{ForceSpec, ForceSpecValue, MassSpec, TorqueSpec};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::{self, Arg};
+use crate::value::convert;
 use proc_macro2::Span;
 use syn::{Expr, Ident};
 

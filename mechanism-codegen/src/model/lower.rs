@@ -3,12 +3,13 @@
 //! statements in the order written ([`Body`]), then the inputs with their
 //! ranges and the allowances.
 
-use super::args::{check_finite, convert, literal_scope_for, NumberScope};
+use super::args::{literal_scope_for, NumberScope};
 use super::kinds::lower_kind;
 use super::{inputs, Allowed, Failed, Kinetics, Level, Model, Stmt};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::vocabulary::{input_position, links_created, KINDS};
 use crate::parse::{self, Arg, Assign, Definition, Item, RangeDecl};
+use crate::value::convert;
 use proc_macro2::Span;
 use std::collections::BTreeMap;
 use syn::{Expr, Ident, LitInt};
@@ -291,7 +292,7 @@ impl<'a> Body<'a> {
             Item::Gravity(span, x, y) => self.gravity(span, x, y, errors),
             Item::Force(f) => self.force(f, errors),
             Item::Torque(on, value) => self.torque(on, value, errors),
-            Item::Range(r) => self.range(r, errors),
+            Item::Range(r) => self.range(r),
             Item::Allow(span, what, groups) => self.checks.allow.push((span, what, groups)),
             Item::Loads(_) => {}
             Item::Params(_) | Item::Const(_) => {}
@@ -371,20 +372,11 @@ impl<'a> Body<'a> {
         });
     }
 
-    /// `range INPUT = (lo, hi);`: kept for [`inputs::inputs`].
-    fn range(&mut self, r: RangeDecl, errors: &mut Diagnostics) {
-        // The checks read the bounds; a bound that is no finite number
-        // is reported here, the rest (units, names) there.
-        let infinite = [&r.lo, &r.hi].into_iter().find_map(|bound| match bound {
-            Arg::Value(e, _) => crate::value::convert(e, self.scope)
-                .ok()
-                .and_then(|v| check_finite(&v).err()),
-            Arg::From(_) => None,
-        });
-        match infinite {
-            Some(e) => errors.error(e),
-            None => self.checks.ranges.push(r),
-        }
+    /// `range INPUT = (lo, hi);`: kept for [`inputs::inputs`], which reads
+    /// the bounds and reports what is wrong with them (a non-finite number
+    /// included, from [`crate::value::convert`]).
+    fn range(&mut self, r: RangeDecl) {
+        self.checks.ranges.push(r);
     }
 }
 
