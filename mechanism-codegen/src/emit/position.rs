@@ -3,7 +3,7 @@
 //! the `position` and `position_cos_sin` methods.
 
 use super::names::{
-    debug_impl, grp, local, marker, mode_tokens, output_docs, tag, unit_vector, Generated,
+    debug_impl, grp, local, marker, mode_arg, output_docs, tag, unit_vector, Generated,
     TypeNames,
 };
 use super::reads::{Analysis, Reads};
@@ -205,7 +205,7 @@ impl<'a> Emitter<'a> {
                 (code, vec![own])
             }
             Kind::Rpr { a, b, mode, offset } => {
-                let (m, o) = (mode_tokens(*mode), offset.emit());
+                let (m, o) = (mode_arg(stmt, *mode), offset.emit());
                 let (a_l, b_l) = (local(a), local(b));
                 let code = quote! {
                     let #g = ::mechanism::dyad::rpr::position(&#a_l, &#b_l, #o, #m) #t;
@@ -269,13 +269,13 @@ impl<'a> Emitter<'a> {
                 input,
                 mode,
             } => {
-                let (l, m) = (l.emit(), mode_tokens(*mode));
+                let (l, m) = (l.emit(), mode_arg(stmt, *mode));
                 let (a_l, b_l) = (local(a), local(b));
                 let call = quote!(::mechanism::driver::actuator::position(&#a_l, #l, &#b_l, input.#input, #m));
                 (call, "c")
             }
             Kind::Rrr { a, l1, b, l2, mode } => {
-                let (l1, l2, m) = (l1.emit(), l2.emit(), mode_tokens(*mode));
+                let (l1, l2, m) = (l1.emit(), l2.emit(), mode_arg(stmt, *mode));
                 let (a_l, b_l) = (local(a), local(b));
                 let call = quote!(::mechanism::dyad::rrr::position(&#a_l, #l1, &#b_l, #l2, #m));
                 (call, "c")
@@ -287,7 +287,7 @@ impl<'a> Emitter<'a> {
                 mode,
                 offset,
             } => {
-                let (l, m, o) = (l.emit(), mode_tokens(*mode), offset.emit());
+                let (l, m, o) = (l.emit(), mode_arg(stmt, *mode), offset.emit());
                 let (a_l, guide_l) = (local(a), local(guide));
                 let call = quote!(::mechanism::dyad::rrp::position(&#a_l, #l, &#guide_l, #o, #m));
                 (call, "c")

@@ -5,7 +5,7 @@
 //! `_accels` functions at the velocity and acceleration levels, and checks
 //! every value the scalar path checks.
 
-use super::lane::{sign, Lane, LaneLink, PointLocals, Step, Vector};
+use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use crate::model::Mode;
 use crate::value::Value;
 use quote::{format_ident, quote};
@@ -72,7 +72,7 @@ pub(super) fn dyad(
             quote!(#s_in[k])
         }
     };
-    let sign = sign(mode);
+    let sign = s.sign(mode);
     let (r1, r2) = (s.rates(0)?, s.rates(1)?);
     let (w1, al1, w2, al2) = (&r1.omega, &r1.alpha, &r2.omega, &r2.alpha);
     let (apx, apy, bpx, bpy) = (&pa.px, &pa.py, &pb.px, &pb.py);
@@ -174,7 +174,7 @@ pub(super) fn rrp(
     } = s.own.clone();
     let g = s.g.clone();
     let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
-    let (l, o, sign) = (l.emit(), offset.emit(), sign(mode));
+    let (l, o, sign) = (l.emit(), offset.emit(), s.sign(mode));
     let r1 = s.rates(0)?;
     let (w1, al1) = (&r1.omega, &r1.alpha);
     let slide = s.slide_locals(0);
@@ -226,7 +226,7 @@ pub(super) fn rpr(
     let (pa, pb) = (lane.point(a)?, lane.point(b)?);
     s.defines_no_point();
     let g = s.g.clone();
-    let (o, sign) = (offset.emit(), sign(mode));
+    let (o, sign) = (offset.emit(), s.sign(mode));
     let r = s.rates(0)?;
     let (w, al) = (&r.omega, &r.alpha);
     let slide = s.slide_locals(0);

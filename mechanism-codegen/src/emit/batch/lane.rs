@@ -324,6 +324,15 @@ pub(super) struct Step<'s> {
 }
 
 impl<'s> Step<'s> {
+    /// The sign of the statement's assembly mode `mode` (see [`sign`]), or
+    /// of its run-time mode parameter (`self.PARAM`).
+    pub(super) fn sign(&self, mode: &Mode) -> TokenStream {
+        match &self.stmt.mode_param {
+            Some(param) => quote!(::mechanism::Mode::sign::<T>(self.#param)),
+            None => sign(mode),
+        }
+    }
+
     pub(super) fn new(stmt: &'s Stmt) -> Step<'s> {
         Step {
             stmt,

@@ -1,0 +1,75 @@
+//! Run-time assembly modes: `params { circuit = left }` makes `circuit` a
+//! field of type `mechanism::Mode` (default `Mode::Plus`), and a group that
+//! names it in its mode's place (`rrr(A, l1, B, l2, circuit)`) reads it at
+//! run time. The group's kind keeps the default as its mode, so everything
+//! that evaluates the definition at expansion time sees the default, and
+//! `expand` runs the expansion-time check once more per other value.
+
+use super::{Kind, Mode};
+use crate::parse::{self, Arg};
+use syn::{Expr, Ident};
+
+/// The words of an assembly mode, with the mode each names.
+const WORDS: [(&str, Mode); 4] = [
+    ("left", Mode::Plus),
+    ("plus", Mode::Plus),
+    ("right", Mode::Minus),
+    ("minus", Mode::Minus),
+];
+
+/// The mode a parameter's default names, when it is a mode word (`left`,
+/// `right`, `plus`, `minus`), `None` for anything else (a number).
+pub(super) fn mode_word(value: &Expr) -> Option<Mode> {
+    let Expr::Path(p) = value else { return None };
+    let word = p.path.get_ident()?.to_string();
+    WORDS.iter().find(|(w, _)| *w == word).map(|(_, m)| *m)
+}
+
+/// The position of the mode among a statement kind's arguments.
+fn mode_index(kind: &str) -> Option<usize> {
+    match kind {
+        "rrr" | "actuator" => Some(4),
+        "rrp" => Some(3),
+        "rpr" => Some(2),
+        _ => None,
+    }
+}
+
+/// When the statement `l` names a mode parameter of `modes` in its mode's
+/// place, that parameter; the argument is replaced by the word of its
+/// default (on the parameter's span), so the statement lowers as with a
+/// literal mode.
+pub(super) fn take_mode_param(l: &mut parse::Let, modes: &[(Ident, Mode)]) -> Option<Ident> {
+    let at = mode_index(&l.kind.to_string())?;
+    let Some(Arg::Value(Expr::Path(p), None)) = l.args.get(at) else {
+        return None;
+    };
+    let name = p.path.get_ident()?.clone();
+    let (_, mode) = modes.iter().find(|(m, _)| *m == name)?;
+    let word = match mode {
+        Mode::Plus => "plus",
+        Mode::Minus => "minus",
+    };
+    let word = Ident::new(word, name.span());
+    l.args[at] = Arg::Value(syn::parse_quote!(#word), None);
+    Some(name)
+}
+
+/// The other mode.
+pub fn flipped(mode: Mode) -> Mode {
+    match mode {
+        Mode::Plus => Mode::Minus,
+        Mode::Minus => Mode::Plus,
+    }
+}
+
+/// The assembly mode of a statement kind that has one.
+pub fn mode_mut(kind: &mut Kind) -> Option<&mut Mode> {
+    match kind {
+        Kind::Actuator { mode, .. }
+        | Kind::Rrr { mode, .. }
+        | Kind::Rrp { mode, .. }
+        | Kind::Rpr { mode, .. } => Some(mode),
+        _ => None,
+    }
+}

@@ -1,0 +1,93 @@
+//! What the generated `Display` and serde impls call (not public API):
+//! number formatting that honours the formatter's precision, and, with the
+//! feature `serde`, the serde crate itself and `__with_serde!`.
+
+use core::fmt::{Display, Formatter, Result};
+
+/// With the feature `serde`: the serde crate the generated impls name
+/// (`::mechanism::__interop::serde::Serialize`), so a user's crate needs no
+/// serde dependency of its own for them.
+#[cfg(feature = "serde")]
+pub use serde;
+
+/// Writes `x` with the formatter's precision when it has one (`{:.3}`),
+/// else as `Display` does.
+#[inline]
+pub fn number<T: Display>(f: &mut Formatter<'_>, x: T) -> Result {
+    match f.precision() {
+        Some(p) => write!(f, "{x:.p$}"),
+        None => write!(f, "{x}"),
+    }
+}
+
+/// Writes `SEP NAME = VALUE UNIT`: `sep` before every entry but a line's
+/// first, `unit` after the value (with its leading space, or empty).
+#[inline]
+pub fn scalar<T: Display>(
+    f: &mut Formatter<'_>,
+    sep: &str,
+    name: &str,
+    x: T,
+    unit: &str,
+) -> Result {
+    write!(f, "{sep}{name} = ")?;
+    number(f, x)?;
+    f.write_str(unit)
+}
+
+/// Writes `SEP NAME = (X, Y) UNIT` (a point, a vector).
+#[inline]
+pub fn pair<T: Display>(
+    f: &mut Formatter<'_>,
+    sep: &str,
+    name: &str,
+    x: T,
+    y: T,
+    unit: &str,
+) -> Result {
+    write!(f, "{sep}{name} = (")?;
+    number(f, x)?;
+    f.write_str(", ")?;
+    number(f, y)?;
+    write!(f, "){unit}")
+}
+
+/// Writes a prismatic pair's reaction: `SEP NAME = (normal N F, moment M F L)`.
+#[inline]
+pub fn prismatic<T: Display>(
+    f: &mut Formatter<'_>,
+    sep: &str,
+    name: &str,
+    normal: T,
+    moment: T,
+) -> Result {
+    write!(f, "{sep}{name} = (normal ")?;
+    number(f, normal)?;
+    f.write_str(" F, moment ")?;
+    number(f, moment)?;
+    f.write_str(" F L)")
+}
+
+/// Emits its input when this crate's feature `serde` is on (the serde impls
+/// a definition's `#[derive(Serialize)]` asks for); without it, a compile
+/// error saying how to turn the feature on. Not public API.
+#[cfg(feature = "serde")]
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __with_serde {
+    ($($item:tt)*) => { $($item)* };
+}
+
+/// Emits its input when this crate's feature `serde` is on (the serde impls
+/// a definition's `#[derive(Serialize)]` asks for); without it, a compile
+/// error saying how to turn the feature on. Not public API.
+#[cfg(not(feature = "serde"))]
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __with_serde {
+    ($($item:tt)*) => {
+        ::core::compile_error! {
+            "`#[derive(Serialize)]` / `#[derive(Deserialize)]` on a `mechanism!` definition needs the feature `serde` of `planar-mechanism`: `planar-mechanism = { version = \"0.1\", features = [\"serde\"] }`"
+        }
+    };
+}
