@@ -68,9 +68,26 @@ pub fn prismatic<T: Display>(
     f.write_str(" F L)")
 }
 
+/// Implemented when this crate's feature `serde` is on: the generated code of
+/// a definition with `#[derive(Serialize)]` or `#[derive(Deserialize)]`
+/// calls [`serde_feature`] on the derive's tokens, so that without the
+/// feature the compile error is there and says how to turn it on.
+#[diagnostic::on_unimplemented(
+    message = "`#[derive(Serialize)]` / `#[derive(Deserialize)]` on a `mechanism!` definition needs the feature `serde` of `planar-mechanism`",
+    label = "the impls this asks for need the feature `serde`",
+    note = "in Cargo.toml: `planar-mechanism = {{ version = \"0.1\", features = [\"serde\"] }}`"
+)]
+pub trait SerdeFeature {}
+
+#[cfg(feature = "serde")]
+impl SerdeFeature for () {}
+
+/// Compiles only with the feature `serde` (see [`SerdeFeature`]).
+pub const fn serde_feature<T: SerdeFeature>() {}
+
 /// Emits its input when this crate's feature `serde` is on (the serde impls
-/// a definition's `#[derive(Serialize)]` asks for); without it, a compile
-/// error saying how to turn the feature on. Not public API.
+/// a definition's `#[derive(Serialize)]` asks for), nothing otherwise (the
+/// error is [`SerdeFeature`]'s). Not public API.
 #[cfg(feature = "serde")]
 #[doc(hidden)]
 #[macro_export]
@@ -79,15 +96,11 @@ macro_rules! __with_serde {
 }
 
 /// Emits its input when this crate's feature `serde` is on (the serde impls
-/// a definition's `#[derive(Serialize)]` asks for); without it, a compile
-/// error saying how to turn the feature on. Not public API.
+/// a definition's `#[derive(Serialize)]` asks for), nothing otherwise (the
+/// error is [`SerdeFeature`]'s). Not public API.
 #[cfg(not(feature = "serde"))]
 #[doc(hidden)]
 #[macro_export]
 macro_rules! __with_serde {
-    ($($item:tt)*) => {
-        ::core::compile_error! {
-            "`#[derive(Serialize)]` / `#[derive(Deserialize)]` on a `mechanism!` definition needs the feature `serde` of `planar-mechanism`: `planar-mechanism = { version = \"0.1\", features = [\"serde\"] }`"
-        }
-    };
+    ($($item:tt)*) => {};
 }

@@ -51,7 +51,7 @@ pub fn other_modes(model: &mut Model, plan: &Plan, errors: &mut Diagnostics) {
         for e in sub.finish().into_iter().flat_map(syn::Error::into_iter) {
             errors.push(
                 e.span(),
-                format!("{e} (with the run-time mode {})", with.join(", ")),
+                format!("with the run-time mode {}: {e}", with.join(", ")),
             );
         }
     }

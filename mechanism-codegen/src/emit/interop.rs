@@ -14,9 +14,10 @@
 //!   struct, whose fields are all the user's.
 //!
 //! The serde impls name serde through the facade
-//! (`::mechanism::__interop::serde`), inside `::mechanism::__with_serde!`: with
-//! the facade's feature `serde` off, that is a compile error on the derive
-//! saying how to turn it on.
+//! (`::mechanism::__interop::serde`), inside `::mechanism::__with_serde!`,
+//! which emits nothing with the facade's feature `serde` off; a call of
+//! `::mechanism::__interop::serde_feature` on the derive's tokens is then a
+//! compile error there saying how to turn it on.
 
 use super::forces::ForceField;
 use super::names::TypeNames;
@@ -118,10 +119,13 @@ pub fn emit(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>) 
             DeriveKind::Other => continue,
         };
         let cfg = d.cfg_attr();
-        let with_serde = quote_spanned!(span=> ::mechanism::__with_serde!);
+        // Without the facade's feature `serde`: an error on the derive.
+        let feature = quote_spanned!(span=> ::mechanism::__interop::serde_feature::<()>());
         out.extend(quote! {
             #cfg
-            #with_serde { #impls }
+            const _: () = #feature;
+            #cfg
+            ::mechanism::__with_serde! { #impls }
         });
     }
     out
