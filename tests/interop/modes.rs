@@ -55,23 +55,42 @@ fn each_circuit_agrees_to_the_bit_with_its_fixed_definition() {
     assert_eq!(switched.circuit, Mode::Plus);
     let (left, right) = (Left::<f64>::default(), Right::<f64>::default());
     for theta2 in angles() {
-        let (rates, accels) = (SwitchedInput { theta2: 250.0 }, SwitchedInput { theta2: -40.0 });
+        let (rates, accels) = (
+            SwitchedInput { theta2: 250.0 },
+            SwitchedInput { theta2: -40.0 },
+        );
         let input = SwitchedInput { theta2 };
         let fixed = |f: &dyn Fn() -> String| f();
         switched.circuit = Mode::Plus;
         let l = format!("{:?}", switched.solve(&input, &rates, &accels).unwrap());
         let want_l = fixed(&|| {
-            let (i, r, a) = (LeftInput { theta2 }, LeftInput { theta2: 250.0 }, LeftInput { theta2: -40.0 });
+            let (i, r, a) = (
+                LeftInput { theta2 },
+                LeftInput { theta2: 250.0 },
+                LeftInput { theta2: -40.0 },
+            );
             format!("{:?}", left.solve(&i, &r, &a).unwrap())
         });
-        assert_eq!(l.replace("Switched", ""), want_l.replace("Left", ""), "left at {theta2}");
+        assert_eq!(
+            l.replace("Switched", ""),
+            want_l.replace("Left", ""),
+            "left at {theta2}"
+        );
         switched.circuit = Mode::Minus;
         let r = format!("{:?}", switched.solve(&input, &rates, &accels).unwrap());
         let want_r = fixed(&|| {
-            let (i, rr, a) = (RightInput { theta2 }, RightInput { theta2: 250.0 }, RightInput { theta2: -40.0 });
+            let (i, rr, a) = (
+                RightInput { theta2 },
+                RightInput { theta2: 250.0 },
+                RightInput { theta2: -40.0 },
+            );
             format!("{:?}", right.solve(&i, &rr, &a).unwrap())
         });
-        assert_eq!(r.replace("Switched", ""), want_r.replace("Right", ""), "right at {theta2}");
+        assert_eq!(
+            r.replace("Switched", ""),
+            want_r.replace("Right", ""),
+            "right at {theta2}"
+        );
         assert_ne!(l.replace("Switched", ""), want_r.replace("Right", ""));
     }
 }
@@ -104,6 +123,12 @@ fn the_batch_agrees_to_the_bit_for_each_circuit() {
     r.rate_theta2 = vec![250.0; n];
     r.accel_theta2 = vec![-40.0; n];
     assert_eq!(Right::<f64>::default().solve_columns(&mut r).unwrap(), 0);
-    assert_eq!(run_switched(Mode::Plus).replace("Switched", ""), format!("{l:?}").replace("Left", ""));
-    assert_eq!(run_switched(Mode::Minus).replace("Switched", ""), format!("{r:?}").replace("Right", ""));
+    assert_eq!(
+        run_switched(Mode::Plus).replace("Switched", ""),
+        format!("{l:?}").replace("Left", "")
+    );
+    assert_eq!(
+        run_switched(Mode::Minus).replace("Switched", ""),
+        format!("{r:?}").replace("Right", "")
+    );
 }

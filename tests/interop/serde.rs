@@ -26,9 +26,13 @@ fn a_solution_serializes_its_user_fields_only() {
     let i = |theta2| FourBarInput { theta2 };
     let s = fb.solve(&i(0.5), &i(250.0), &i(0.0)).unwrap();
     let json = serde_json::to_string(&s).unwrap();
-    assert!(!json.contains("grp_") && !json.contains("rates") && !json.contains("input"), "{json}");
+    assert!(
+        !json.contains("grp_") && !json.contains("rates") && !json.contains("input"),
+        "{json}"
+    );
     let v: serde_json::Value = serde_json::from_str(&json).unwrap();
-    let keys = |part: &str| -> Vec<String> { v[part].as_object().unwrap().keys().cloned().collect() };
+    let keys =
+        |part: &str| -> Vec<String> { v[part].as_object().unwrap().keys().cloned().collect() };
     let mut want = vec!["A", "B", "O2", "O4", "P", "link2", "link3", "link4"];
     assert_eq!(keys("position"), want);
     want.push("condition");
@@ -69,7 +73,14 @@ fn parameters_and_inputs_round_trip() {
     let input: FourBarInput = serde_json::from_str(r#"{"theta2":0.25}"#).unwrap();
     assert_eq!(input, FourBarInput { theta2: 0.25 });
     let missing = serde_json::from_str::<FourBarInput>("{}").unwrap_err();
-    assert!(missing.to_string().contains("missing field `theta2`"), "{missing}");
-    let unknown = serde_json::from_str::<FourBarInput>(r#"{"theta2":0.25,"theta3":1.0}"#).unwrap_err();
-    assert!(unknown.to_string().contains("unknown field `theta3`"), "{unknown}");
+    assert!(
+        missing.to_string().contains("missing field `theta2`"),
+        "{missing}"
+    );
+    let unknown =
+        serde_json::from_str::<FourBarInput>(r#"{"theta2":0.25,"theta3":1.0}"#).unwrap_err();
+    assert!(
+        unknown.to_string().contains("unknown field `theta3`"),
+        "{unknown}"
+    );
 }

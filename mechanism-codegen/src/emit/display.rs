@@ -44,7 +44,11 @@ pub fn emit(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>) 
     if model.level < Level::Acceleration {
         return out;
     }
-    out.extend(line_impl(&names.acceleration, "acceleration", &outputs(plan, 2)));
+    out.extend(line_impl(
+        &names.acceleration,
+        "acceleration",
+        &outputs(plan, 2),
+    ));
     let mut parts = vec![quote!(position), quote!(velocity), quote!(acceleration)];
     if let Some(f) = forces {
         let mut fields: Vec<(Ident, Shown)> = f
@@ -93,7 +97,10 @@ fn outputs(plan: &Plan, level: usize) -> Vec<(Ident, Shown)> {
     let o = &plan.outputs;
     let points = o.points.iter().map(|p| (p.clone(), Shown::Pair(point)));
     let links = o.links.iter().map(|l| (l.clone(), Shown::Scalar(angle)));
-    let slides = o.slides.iter().map(|s| (s.name.clone(), Shown::Scalar(slide)));
+    let slides = o
+        .slides
+        .iter()
+        .map(|s| (s.name.clone(), Shown::Scalar(slide)));
     points.chain(links).chain(slides).collect()
 }
 

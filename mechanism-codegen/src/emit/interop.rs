@@ -69,7 +69,10 @@ fn data_types(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>
     let mut out = vec![own(&names.name, params), own(&names.input, inputs)];
     let loads = &model.kinetics.loads;
     if model.has_forces() && !loads.is_empty() {
-        out.push(own(&names.loads, loads.iter().map(|(n, _)| n.clone()).collect()));
+        out.push(own(
+            &names.loads,
+            loads.iter().map(|(n, _)| n.clone()).collect(),
+        ));
     }
     let o = &plan.outputs;
     let outputs: Vec<Ident> = o
@@ -108,7 +111,11 @@ pub fn emit(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>) 
     let mut out = TokenStream::new();
     let types = data_types(model, plan, forces);
     for d in &model.derives {
-        let span = d.path.segments.last().map_or_else(Span::call_site, |s| s.ident.span());
+        let span = d
+            .path
+            .segments
+            .last()
+            .map_or_else(Span::call_site, |s| s.ident.span());
         let impls: TokenStream = match d.kind {
             DeriveKind::Serialize => types.iter().map(serialize_impl).collect(),
             DeriveKind::Deserialize => types
@@ -195,5 +202,76 @@ fn deserialize_impl(model: &Model, t: &DataType) -> TokenStream {
                 }
             }
         };
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::emit::test_support::{flat, four_bar};
+    use proc_macro2::TokenStream;
+    use std::str::FromStr;
+
+    /// The expansion of `src` without whitespace.
+    fn expand(src: &str) -> String {
+        flat(&crate::expand(TokenStream::from_str(src).unwrap()))
+    }
+
+    // Proves a derive the macro does not generate goes, as written (with its
+    // `cfg_attr`), onto the mechanism's and the inputs' structs only.
+    #[test]
+    fn other_derives_go_onto_the_parameter_and_input_structs() {
+        let code = expand(&format!(
+            "#[derive(my::Thing)] #[cfg_attr(feature = \"x\", derive(Other))] {}",
+            four_bar("")
+        ));
+        let thing = "#[derive(my::Thing)]#[cfg_attr(feature=\"x\",derive(Other))]";
+        assert_eq!(code.matches(thing).count(), 2, "{code}");
+        assert!(
+            code.contains(&format!("{thing}pubstructFourBar<")),
+            "{code}"
+        );
+        assert!(
+            code.contains(&format!(
+                "{thing}#[allow(non_snake_case)]pubstructFourBarInput<"
+            )),
+            "{code}"
+        );
+    }
+
+    // Proves `Serialize` writes the user's names of each struct and none of
+    // the hidden fields the structs keep (`grp_B` is kept in the position for
+    // the velocity code), behind the feature gate and its `cfg`; and that a
+    // definition without derives has no serde code at all.
+    #[test]
+    fn serialize_writes_user_fields_only_behind_the_gates() {
+        let code = expand(&format!(
+            "#[cfg_attr(feature = \"x\", derive(serde::Serialize))] {}",
+            four_bar("")
+        ));
+        assert!(
+            code.contains(
+                "#[cfg(feature=\"x\")]const_:()=::mechanism::__interop::serde_feature::<()>();"
+            ),
+            "{code}"
+        );
+        assert!(
+            code.contains("#[cfg(feature=\"x\")]::mechanism::__with_serde!{"),
+            "{code}"
+        );
+        assert!(
+            code.contains("serialize_struct(\"FourBarPosition\",8usize)"),
+            "{code}"
+        );
+        assert!(
+            code.contains("serialize_field(\"condition\",&self.condition)"),
+            "{code}"
+        );
+        assert!(!code.contains("serialize_field(\"grp_"), "{code}");
+        assert!(
+            code.contains("pubgrp_B:"),
+            "the position keeps grp_B: {code}"
+        );
+        let plain = expand(&four_bar(""));
+        assert!(!plain.contains("serde"), "{plain}");
     }
 }

@@ -127,10 +127,8 @@ fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
     }
     // `Display` of the result structs, and what the definition's derives ask for.
     let force_fields = forces.as_ref().map(|f| f.fields.as_slice());
-    out.items
-        .extend(display::emit(model, plan, force_fields));
-    out.items
-        .extend(interop::emit(model, plan, force_fields));
+    out.items.extend(display::emit(model, plan, force_fields));
+    out.items.extend(interop::emit(model, plan, force_fields));
     // Batch API (structure of arrays, issue 5): see `batch`.
     out.items
         .extend(batch::emit(model, plan, &inputs, &position.outputs));

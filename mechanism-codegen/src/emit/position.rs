@@ -3,8 +3,7 @@
 //! the `position` and `position_cos_sin` methods.
 
 use super::names::{
-    debug_impl, grp, local, marker, mode_arg, output_docs, tag, unit_vector, Generated,
-    TypeNames,
+    debug_impl, grp, local, marker, mode_arg, output_docs, tag, unit_vector, Generated, TypeNames,
 };
 use super::reads::{Analysis, Reads};
 use crate::model::{Kind, Local, Model, Origin, Stmt};

@@ -52,7 +52,8 @@ pub(super) fn own_items(model: &Model, plan: &Plan, inputs: &[Ident]) -> Generat
     let (params_marker, params_marker_init) =
         marker(param_names.is_empty() && model.modes.is_empty());
     let mode_names: Vec<&Ident> = model.modes.iter().map(|(n, _)| n).collect();
-    let mode_defaults: Vec<TokenStream> = model.modes.iter().map(|(_, m)| mode_tokens(*m)).collect();
+    let mode_defaults: Vec<TokenStream> =
+        model.modes.iter().map(|(_, m)| mode_tokens(*m)).collect();
     let structure = structure_doc(model, plan);
     let derives = super::interop::passed_on(model);
     let input_doc = format!("Inputs of [`{name}`], one per driver: angles in rad, lengths in the definition's unit. The same struct carries their rates and accelerations.");

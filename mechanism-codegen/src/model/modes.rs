@@ -73,3 +73,51 @@ pub fn mode_mut(kind: &mut Kind) -> Option<&mut Mode> {
         _ => None,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::diag::Diagnostics;
+    use crate::model::{Kind, Mode};
+
+    // Proves a mode word as a parameter's default makes a mode parameter (not
+    // a number), that a group naming it in its mode's place reads it with the
+    // default as its mode, and that the position code passes `self.PARAM`.
+    #[test]
+    fn a_mode_parameter_is_read_by_the_group_that_names_it() {
+        let src = "pub F {
+            params { crank = 1.0, circuit = right }
+            let O2 = ground(0.0, 0.0);
+            let O4 = ground(3.0, 0.0);
+            let A = crank(O2, crank, t) as link2;
+            let B = rrr(A, 3.0, O4, 2.0, circuit) as (link3, link4);
+        }";
+        let mut diag = Diagnostics::new();
+        let model = crate::model::lower(syn::parse_str(src).unwrap(), &mut diag);
+        assert!(diag.finish().is_empty());
+        assert_eq!(model.params.len(), 1);
+        assert_eq!(model.modes.len(), 1);
+        assert_eq!(
+            (model.modes[0].0.to_string(), model.modes[0].1),
+            ("circuit".into(), Mode::Minus)
+        );
+        let b = model.stmts.iter().find(|s| s.name == "B").unwrap();
+        assert_eq!(b.mode_param.as_ref().unwrap().to_string(), "circuit");
+        assert!(matches!(
+            b.kind,
+            Kind::Rrr {
+                mode: Mode::Minus,
+                ..
+            }
+        ));
+        let code = crate::expand(src.parse().unwrap())
+            .to_string()
+            .replace(' ', "");
+        assert!(code.contains("pubcircuit:::mechanism::Mode,"), "{code}");
+        assert!(code.contains("circuit:::mechanism::Mode::Minus,"), "{code}");
+        assert!(code.contains(",self.circuit)"), "{code}");
+        assert!(
+            code.contains("::mechanism::Mode::sign::<T>(self.circuit)"),
+            "{code}"
+        );
+    }
+}

@@ -95,8 +95,10 @@ pub fn sort(attrs: Vec<Attribute>) -> syn::Result<Attrs> {
                 ));
             }
             out.self_test = Some(attr.span());
-        } else {
+        } else if path.is_ident("derive") || path.is_ident("cfg_attr") {
             meta(&attr.meta, None, &mut out.derives)?;
+        } else {
+            return Err(unknown(&attr));
         }
     }
     for kind in [DeriveKind::Serialize, DeriveKind::Deserialize] {
@@ -110,7 +112,7 @@ pub fn sort(attrs: Vec<Attribute>) -> syn::Result<Attrs> {
     Ok(out)
 }
 
-/// One attribute's meta (`derive(..)` or `cfg_attr(..)`, under the
+/// One attribute's meta (`derive(..)`, else `cfg_attr(..)`, under the
 /// predicate `cfg` of the `cfg_attr`s around it), its derives added to
 /// `derives`.
 fn meta(meta: &Meta, cfg: Option<&TokenStream>, derives: &mut Vec<Derive>) -> syn::Result<()> {
@@ -141,10 +143,12 @@ fn meta(meta: &Meta, cfg: Option<&TokenStream>, derives: &mut Vec<Derive>) -> sy
         }
         return Ok(());
     }
-    if path.is_ident("cfg_attr") {
-        return cfg_attr(meta, cfg, derives);
-    }
-    let word = path.to_token_stream().to_string().replace(' ', "");
+    cfg_attr(meta, cfg, derives)
+}
+
+/// The error on an attribute a definition does not take (`attr`: its tokens).
+fn unknown(attr: &Attribute) -> syn::Error {
+    let word = attr.path().to_token_stream().to_string().replace(' ', "");
     let why = match word.as_str() {
         "serde" => "; serde's options do not apply: the generated impls use the definition's names as the keys and have no other form. Remove it".to_string(),
         "cfg" => "; a definition is not compiled conditionally: put `#[cfg(..)]` on a module holding it, or gate a derive with `#[cfg_attr(PREDICATE, derive(..))]`".to_string(),
@@ -153,10 +157,10 @@ fn meta(meta: &Meta, cfg: Option<&TokenStream>, derives: &mut Vec<Derive>) -> sy
         }
         _ => crate::diag::did_you_mean(&word, ["self_test", "derive", "cfg_attr"]),
     };
-    Err(syn::Error::new_spanned(
-        meta,
+    syn::Error::new_spanned(
+        attr,
         format!("unknown attribute `#[{word}]`; {ACCEPTED}{why}"),
-    ))
+    )
 }
 
 /// `cfg_attr(PRED, attr, ..)`: each `attr` under `PRED` (and `outer`).
@@ -187,7 +191,10 @@ fn cfg_attr(
         any = true;
     }
     if !any {
-        return Err(syn::Error::new_spanned(meta, format!("{usage}; this one gates nothing")));
+        return Err(syn::Error::new_spanned(
+            meta,
+            format!("{usage}; this one gates nothing"),
+        ));
     }
     Ok(())
 }
@@ -289,9 +296,15 @@ mod tests {
             ("#[derive(Debug)]", "already implements `Debug`"),
             ("#[derive(Hash)]", "floating-point"),
             ("#[derive(Default)]", "`Default` is generated"),
-            ("#[serde(rename_all = \"camelCase\")]", "serde's options do not apply"),
+            (
+                "#[serde(rename_all = \"camelCase\")]",
+                "serde's options do not apply",
+            ),
             ("#[cfg_attr(feature = \"x\")]", "gates nothing"),
-            ("#[cfg_attr(feature = \"x\", repr(C))]", "gates derives only"),
+            (
+                "#[cfg_attr(feature = \"x\", repr(C))]",
+                "gates derives only",
+            ),
             ("#[repr(C)]", "fixed: remove it"),
             ("#[drive(Serialize)]", "did you mean `derive`?"),
             ("#[self_test(x)]", "takes no arguments"),
@@ -301,7 +314,9 @@ mod tests {
             ),
         ];
         for (src, says) in cases {
-            let e = sorted(src).err().unwrap_or_else(|| panic!("{src} accepted"));
+            let e = sorted(src)
+                .err()
+                .unwrap_or_else(|| panic!("{src} accepted"));
             assert!(e.to_string().contains(says), "{src}: {e}");
         }
     }
