@@ -2,7 +2,8 @@
 //! number formatting that honours the formatter's precision, and, with the
 //! feature `serde`, the serde crate itself and `__with_serde!`.
 
-use core::fmt::{Display, Formatter, Result};
+use crate::Real;
+use core::fmt::{Formatter, Result};
 
 /// With the feature `serde`: the serde crate the generated impls name
 /// (`::mechanism::__interop::serde::Serialize`), so a user's crate needs no
@@ -11,9 +12,11 @@ use core::fmt::{Display, Formatter, Result};
 pub use serde;
 
 /// Writes `x` with the formatter's precision when it has one (`{:.3}`),
-/// else as `Display` does.
+/// else as `Display` does; a zero prints without sign (`-0.0 + 0.0` is
+/// `+0.0`: a reaction that vanishes by symmetry reads `0`, not `-0`).
 #[inline]
-pub fn number<T: Display>(f: &mut Formatter<'_>, x: T) -> Result {
+pub fn number<T: Real>(f: &mut Formatter<'_>, x: T) -> Result {
+    let x = x + T::lit(0.0);
     match f.precision() {
         Some(p) => write!(f, "{x:.p$}"),
         None => write!(f, "{x}"),
@@ -23,13 +26,7 @@ pub fn number<T: Display>(f: &mut Formatter<'_>, x: T) -> Result {
 /// Writes `SEP NAME = VALUE UNIT`: `sep` before every entry but a line's
 /// first, `unit` after the value (with its leading space, or empty).
 #[inline]
-pub fn scalar<T: Display>(
-    f: &mut Formatter<'_>,
-    sep: &str,
-    name: &str,
-    x: T,
-    unit: &str,
-) -> Result {
+pub fn scalar<T: Real>(f: &mut Formatter<'_>, sep: &str, name: &str, x: T, unit: &str) -> Result {
     write!(f, "{sep}{name} = ")?;
     number(f, x)?;
     f.write_str(unit)
@@ -37,7 +34,7 @@ pub fn scalar<T: Display>(
 
 /// Writes `SEP NAME = (X, Y) UNIT` (a point, a vector).
 #[inline]
-pub fn pair<T: Display>(
+pub fn pair<T: Real>(
     f: &mut Formatter<'_>,
     sep: &str,
     name: &str,
@@ -54,7 +51,7 @@ pub fn pair<T: Display>(
 
 /// Writes a prismatic pair's reaction: `SEP NAME = (normal N F, moment M F L)`.
 #[inline]
-pub fn prismatic<T: Display>(
+pub fn prismatic<T: Real>(
     f: &mut Formatter<'_>,
     sep: &str,
     name: &str,
@@ -103,4 +100,29 @@ macro_rules! __with_serde {
 #[macro_export]
 macro_rules! __with_serde {
     ($($item:tt)*) => {};
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use std::format;
+
+    struct N(f64);
+
+    impl core::fmt::Display for N {
+        fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+            super::number(f, self.0)
+        }
+    }
+
+    // Proves a negative zero prints unsigned with and without a precision,
+    // and any other number exactly as `Display` prints it.
+    #[test]
+    fn negative_zero_prints_unsigned() {
+        assert_eq!(format!("{:.3}", N(-0.0)), "0.000");
+        assert_eq!(format!("{}", N(-0.0)), "0");
+        assert_eq!(format!("{:.3}", N(-1e-9)), "-0.000");
+        assert_eq!(format!("{:.2}", N(-1.005)), format!("{:.2}", -1.005f64));
+        assert_eq!(format!("{}", N(0.1 + 0.2)), "0.30000000000000004");
+    }
 }

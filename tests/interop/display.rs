@@ -99,3 +99,40 @@ fn a_group_in_every_line() {
          acceleration: B = (-3.964, -1.134) L/s^2, link4 = 1.000 rad/s^2"
     );
 }
+
+mechanism! {
+    /// A ram of mass 2 on a horizontal guide, pushed along it, under gravity
+    /// 10 downwards.
+    pub Ram {
+        outputs { P }
+        let line = guide((0.0, 0.0), 0 deg);
+        let P = slider(line, s) as ram;
+        mass ram { m = 2.0, at = P };
+        gravity (0.0, -10.0);
+    }
+}
+
+// Proves a prismatic reaction and a slider's force print with their units,
+// and that zeros print unsigned: the ram at s = 1.5 accelerating at 3 L/s^2
+// needs a push m a = 6.000 F along the guide; the guide holds the weight,
+// a normal force of +20.000 F along the guide's left normal (0, 1), with no
+// couple about P, where the weight acts; P has no y motion (0.000, not
+// -0.000).
+#[test]
+fn a_prismatic_reaction_and_a_push() {
+    let ram = Ram::<f64>::default();
+    let s = ram
+        .solve(
+            &RamInput { s: 1.5 },
+            &RamInput { s: 0.5 },
+            &RamInput { s: 3.0 },
+        )
+        .unwrap();
+    assert_eq!(
+        format!("{s:.3}"),
+        "position: P = (1.500, 0.000) L\n\
+         velocity: P = (0.500, 0.000) L/s, condition = 1.000\n\
+         acceleration: P = (3.000, 0.000) L/s^2\n\
+         forces: r_ground_ram = (normal 20.000 F, moment 0.000 F L), drive_s = 6.000 F, condition = 1.000, power_residual = 0.000"
+    );
+}

@@ -84,3 +84,29 @@ fn parameters_and_inputs_round_trip() {
         "{unknown}"
     );
 }
+
+mechanism! {
+    /// A press whose load is given per evaluation; `Deserialize` only, under
+    /// a `cfg_attr` whose predicate holds.
+    #[cfg_attr(all(), derive(serde::Deserialize))]
+    pub Press {
+        params { crank = 0.1, rod = 0.4 }
+        loads { press = 0.0 }
+        let O = ground(0.0, 0.0);
+        let line = guide((0.0, 0.0), 0 deg);
+        let A = crank(O, crank, theta) as link2;
+        let B = rrp(A, rod, line, plus) as (link3, ram) slide x;
+        mass ram { m = 5.0, at = B };
+        force at B on ram along line = -press;
+    }
+}
+
+// Proves the loads struct reads from JSON (with the parameters and inputs),
+// through a derive under `cfg_attr`.
+#[test]
+fn loads_read_back() {
+    let loads: PressLoads = serde_json::from_str(r#"{"press":1000.0}"#).unwrap();
+    assert_eq!(loads, PressLoads { press: 1000.0 });
+    let p: Press = serde_json::from_str(r#"{"crank":0.2,"rod":0.5}"#).unwrap();
+    assert_eq!((p.crank, p.rod), (0.2, 0.5));
+}

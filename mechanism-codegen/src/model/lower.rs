@@ -3,7 +3,7 @@
 //! statements in the order written ([`Body`]), then the inputs with their
 //! ranges and the allowances.
 
-use super::args::{literal_scope_for, NumberScope};
+use super::args::{literal_scope_for, NumberScope, MODE_PARAM};
 use super::kinds::lower_kind;
 use super::{inputs, modes, Allowed, Failed, Kinetics, Level, Mode, Model, Stmt};
 use crate::diag::{did_you_mean, Diagnostics};
@@ -94,7 +94,7 @@ fn defined_names(items: &[Item]) -> Vec<(String, &'static str)> {
     for item in items {
         if let Item::Params(list) = item {
             let modes = list.iter().filter(|p| modes::mode_word(&p.value).is_some());
-            names.extend(modes.map(|p| (p.name.to_string(), "an assembly mode parameter")));
+            names.extend(modes.map(|p| (p.name.to_string(), MODE_PARAM)));
         }
         if let Item::Let(l) = item {
             let kind = l.kind.to_string();
