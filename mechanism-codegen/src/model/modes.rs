@@ -120,4 +120,20 @@ mod tests {
             "{code}"
         );
     }
+
+    // Proves a mode parameter shares the parameters' namespace: a second
+    // definition of its name, or a reserved name, is an error.
+    #[test]
+    fn a_mode_parameter_name_is_checked_like_a_parameter() {
+        for (params, says) in [
+            ("a = 1.0, a = left", "`a` is already defined"),
+            ("input = left", "reserved"),
+        ] {
+            let src = format!(
+                "pub F {{ params {{ {params} }} let O = ground(0.0, 0.0); let A = crank(O, 1.0, t) as l; }}"
+            );
+            let code = crate::expand(src.parse().unwrap()).to_string();
+            assert!(code.contains(says), "{params}: {code}");
+        }
+    }
 }
