@@ -4,7 +4,8 @@
 //!
 //! 1. the docs.rs quick start is `src/bin/quick_start.rs` verbatim (compared
 //!    here with the crate page's sample, hidden lines dropped; `.ci/run` runs
-//!    that binary too);
+//!    that binary too). Do not run `cargo fmt` here: it would reformat that
+//!    copy (the root's `cargo fmt --all` does not reach this crate);
 //! 2. a solution serializes to JSON holding the user's names only, and the
 //!    parameters read back;
 //! 3. a 10^5-element owned batch, on one thread (`solve_columns`) and over

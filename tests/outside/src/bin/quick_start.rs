@@ -13,16 +13,11 @@ mechanism! {
 }
 
 fn main() -> Result<(), mechanism::Error> {
-    let fb = FourBar::<f64>::default(); // parameters at their literal values
+    let fb = FourBar::<f64>::default();                     // parameters at their literal values
     let input = FourBarInput { theta2: 0.5 };
-    let p = fb.position(&input)?; // p.B, p.P: Point2; p.link3: angle (rad)
-    let v = fb.velocity(&p, &FourBarInput { theta2: 250.0 })?; // v.link3: rad/s, v.P: mm/s
-    println!(
-        "B = ({:.3}, {:.3}) mm, theta3 = {:.3} deg, omega3 = {:.3} rad/s",
-        p.B.x,
-        p.B.y,
-        p.link3.to_degrees(),
-        v.link3
-    );
+    let p = fb.position(&input)?;                           // p.B, p.P: Point2; p.link3: angle (rad)
+    let v = fb.velocity(&p, &FourBarInput { theta2: 250.0 })?;   // v.link3: rad/s, v.P: mm/s
+    println!("B = ({:.3}, {:.3}) mm, theta3 = {:.3} deg, omega3 = {:.3} rad/s",
+        p.B.x, p.B.y, p.link3.to_degrees(), v.link3);
     Ok(())
 }
