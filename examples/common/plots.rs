@@ -274,37 +274,31 @@ pub fn sine_mechanism(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
 }
 
 /// The shaper with masses, gravity and a 5 kN cutting force on the forward stroke at
-/// 60 rpm: its kinematics, drawing and animation, and the driving torque and the
-/// reactions (`forces.svg`).
+/// 60 rpm: the driving torque and the reactions (`forces.svg`), plus the shaper's
+/// pictures (the same linkage as `shaper`; the scene `ShaperForces` keeps only the
+/// outputs its table needs, so its poses cannot be drawn whole).
 pub fn shaper_forces(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
     let m = ShaperForces::<f64>::default();
-    let rows: Vec<_> = grid(0.0, 360.0, 360)
+    let forces: Vec<_> = grid(0.0, 360.0, 360)
         .into_iter()
         .map(|d| {
             let p = m.position(&ShaperForcesInput {
                 crank: d.to_radians(),
             });
             let rates = ShaperForcesInput { crank: 2.0 * PI };
-            let s = p.and_then(|p| {
+            let f = p.and_then(|p| {
                 let v = m.velocity(&p, &rates)?;
                 let a = m.acceleration(&p, &v, &ShaperForcesInput { crank: 0.0 })?;
                 let cut = if v.s_ram > 0.0 { -5000.0 } else { 0.0 };
-                let f = m.forces(&p, &v, &a, &ShaperForcesLoads { cut })?;
-                Ok(((p, v, a), f))
+                m.forces(&p, &v, &a, &ShaperForcesLoads { cut })
             });
-            (d, s.ok())
+            (d, f.ok())
         })
         .collect();
-    let kin: Vec<_> = rows.iter().map(|(d, r)| (*d, r.map(|r| r.0))).collect();
-    let forces: Vec<_> = rows.iter().map(|(d, r)| (*d, r.map(|r| r.1))).collect();
     let title = "Shaper with masses and gravity, 60 rpm, 5 kN cut on the forward stroke";
-    let x = ("crank angle", "deg");
-    let fig = any::kinematics_chart(title, x, M, &kin, &["s_ram", "link3", "link4"])?;
-    let poses = &positions(&kin, 4)[..90];
-    let sk = any::sketch_with::<ShaperForces<f64>, _>(title, "m", poses, &["D"], degrees("crank"))?;
-    let mut files = save(dir, fig, &sk, 15)?;
+    let mut files = shaper(dir)?;
     let path = dir.join("forces.svg");
-    any::force_chart(title, x, M, &forces)?.write(&path)?;
+    any::force_chart(title, ("crank angle", "deg"), M, &forces)?.write(&path)?;
     files.push(path);
     Ok(files)
 }

@@ -103,8 +103,15 @@ fn frame<P: Fields<f64>>(s: &Structure, caption: &str, pos: &P, traced: &[&str])
         let Some(xy) = point_of(pos, p.name) else {
             continue;
         };
+        // A point fixed on one link where another is pinned is a joint too.
+        let links = s
+            .links
+            .iter()
+            .filter(|l| l.points.contains(&p.name))
+            .count();
         match p.kind {
             PointKind::Joint => f = f.joint(p.name, xy),
+            PointKind::OnLink if links >= 2 => f = f.joint(p.name, xy),
             PointKind::OnLink if traced.contains(&p.name) => f = f.point(p.name, xy),
             _ => {}
         }

@@ -7,7 +7,7 @@
 //! link keeps its length on screen. Symbols (joints, sliders, supports, hatching) have a
 //! fixed size in pixels, so they read the same at any scale.
 
-use crate::svg::{self, num, text, PALETTE};
+use crate::svg::{self, num, text, text_width, PALETTE};
 use crate::{write_file, PlotError, Xy};
 use std::fmt::Write;
 use std::path::Path;
@@ -141,6 +141,9 @@ pub struct Sketch {
 
 /// World-to-pixel mapping: uniform scale, y flipped.
 struct View {
+    /// The px column of `xmin`: the margin, plus half the extra width when the
+    /// title is wider than the drawing (the drawing stays centred).
+    left: f64,
     xmin: f64,
     ymax: f64,
     scale: f64,
@@ -151,7 +154,7 @@ struct View {
 impl View {
     fn px(&self, p: Xy) -> [f64; 2] {
         [
-            MARGIN + (p[0] - self.xmin) * self.scale,
+            self.left + (p[0] - self.xmin) * self.scale,
             HEAD + MARGIN + (self.ymax - p[1]) * self.scale,
         ]
     }
@@ -324,11 +327,16 @@ impl Sketch {
             ymax += extent / 2.0;
         }
         let scale = (MAX_W / (xmax - xmin)).min(MAX_H / (ymax - ymin));
+        let drawing = 2.0 * MARGIN + (xmax - xmin) * scale;
+        // The bold title (about 10 % wider than regular text) with 14 px each side.
+        let title = 28.0 + 1.1 * text_width(&self.title, 15.0);
+        let width = drawing.max(title);
         Ok(View {
+            left: MARGIN + (width - drawing) / 2.0,
             xmin,
             ymax,
             scale,
-            width: 2.0 * MARGIN + (xmax - xmin) * scale,
+            width,
             height: HEAD + FOOT + 2.0 * MARGIN + (ymax - ymin) * scale,
         })
     }
@@ -454,7 +462,7 @@ impl Sketch {
     fn close(&self, out: &mut String, view: &View) {
         for (name, p) in &self.pivots {
             let [x, y] = view.px(*p);
-            joint(out, x, y, "ground-joint");
+            joint(out, x, y, "ground-joint", name);
             label(out, x, y, name);
         }
         // Scale bar: the largest 1-2-5 length up to a quarter of the drawing's width.
@@ -599,9 +607,9 @@ impl Sketch {
         }
         for s in &f.shapes {
             match s {
-                Shape::Joint { p, .. } => {
+                Shape::Joint { p, name } => {
                     let [x, y] = view.px(*p);
-                    joint(out, x, y, "joint");
+                    joint(out, x, y, "joint", name);
                 }
                 Shape::Point { p, .. } => {
                     let [x, y] = view.px(*p);
@@ -643,11 +651,12 @@ fn key(k: usize, n: usize) -> String {
     format!("{:.6}", k as f64 / n as f64)
 }
 
-/// A revolute joint: a white disc with a dark ring.
-fn joint(out: &mut String, x: f64, y: f64, class: &str) {
+/// A revolute joint: a white disc with a dark ring, its name in `data-name`.
+fn joint(out: &mut String, x: f64, y: f64, class: &str, name: &str) {
     let _ = writeln!(
         out,
-        r##"<circle class="{class}" cx="{}" cy="{}" r="5.5" fill="white" stroke="#222" stroke-width="2"/>"##,
+        r##"<circle class="{class}" data-name="{}" cx="{}" cy="{}" r="5.5" fill="white" stroke="#222" stroke-width="2"/>"##,
+        svg::esc(name),
         num(x),
         num(y)
     );

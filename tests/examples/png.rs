@@ -1,0 +1,73 @@
+//! Every example's drawing and first chart rendered to pixels (resvg) and
+//! looked at: not blank, more than one colour, every label laid out and
+//! inside the canvas (`mechanism-plot/tests/check/png.rs`). With
+//! `MECHANISM_DOC_PNGS=<dir>` set, the pictures shown in `docs/plots.md` are
+//! written there.
+
+use crate::common;
+use crate::render::{look, save_for_docs};
+use std::path::{Path, PathBuf};
+
+type Make = fn(&Path) -> Result<Vec<PathBuf>, mechanism_plot::PlotError>;
+
+/// Each example, the index of its first chart and of its drawing in the files
+/// it writes, and the docs' names for them (if shown there).
+const EXAMPLES: [(&str, Make, usize, usize, Option<(&str, &str)>); 7] = [
+    (
+        "fourbar",
+        common::plots::fourbar,
+        0,
+        1,
+        Some(("fourbar-kinematics.png", "fourbar-drawing.png")),
+    ),
+    ("sixbar", common::plots::sixbar, 0, 1, None),
+    ("shaper", common::plots::shaper, 0, 1, None),
+    ("slider_crank", common::plots::slider_crank, 0, 1, None),
+    ("five_bar", common::plots::five_bar, 0, 1, None),
+    ("sine_mechanism", common::plots::sine_mechanism, 0, 1, None),
+    // Its forces chart is the picture of interest.
+    (
+        "shaper_forces",
+        common::plots::shaper_forces,
+        3,
+        1,
+        Some(("shaper-forces.png", "shaper-drawing.png")),
+    ),
+];
+
+/// Renders each example's first chart and its drawing; each must be at least
+/// 2 % ink (the emptiest, a drawing of a few bars on a 900 x 700 canvas, is
+/// about 4 %; a blank or title-only picture is under 0.5 %).
+#[test]
+fn every_example_picture_renders_with_its_labels_inside() {
+    let dir = std::env::temp_dir().join(format!("mechanism-png-test-{}", std::process::id()));
+    for (name, make, chart, drawing, docs) in EXAMPLES {
+        let files = make(&dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let read = |k: usize| std::fs::read_to_string(&files[k]).unwrap();
+        let c = look(&read(chart), &format!("{name} chart"), 0.02);
+        let d = look(&read(drawing), &format!("{name} drawing"), 0.02);
+        eprintln!(
+            "{name}: chart {}x{} px, {:.1} % ink, {} colours, {} labels; drawing {}x{} px, {:.1} % ink, {} colours, {} labels",
+            c.size.0, c.size.1, 100.0 * c.inked, c.colours, c.texts,
+            d.size.0, d.size.1, 100.0 * d.inked, d.colours, d.texts
+        );
+        if let Some((chart_png, drawing_png)) = docs {
+            save_for_docs(&c, chart_png);
+            save_for_docs(&d, drawing_png);
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The check can fail: a picture with a label pushed off the canvas, and a
+/// blank one, are refused.
+#[test]
+fn the_look_refuses_a_label_off_the_canvas_and_a_blank_picture() {
+    let off = r##"<svg xmlns="http://www.w3.org/2000/svg" width="200" height="100" font-family="DejaVu Sans, sans-serif"><rect width="200" height="100" fill="white"/><path d="M10 10 L190 90" stroke="#0072B2" stroke-width="8"/><path d="M10 90 L190 10" stroke="#D55E00" stroke-width="8"/><text x="150" y="50" font-size="13">a long label</text></svg>"##;
+    let r = std::panic::catch_unwind(|| look(off, "off", 0.02));
+    assert!(r.is_err(), "a label beyond the right edge is refused");
+    let inside = off.replace(r#"x="150""#, r#"x="20""#);
+    assert!(look(&inside, "inside", 0.02).texts == 1);
+    let blank = r#"<svg xmlns="http://www.w3.org/2000/svg" width="200" height="100"><rect width="200" height="100" fill="white"/></svg>"#;
+    assert!(std::panic::catch_unwind(|| look(blank, "blank", 0.02)).is_err());
+}
