@@ -7,6 +7,9 @@
 use mechanism::mechanism;
 use mechanism::structure::{Describe, Fields, LinkKind, PointKind, Quantity, Value};
 
+#[path = "../../mechanism-plot/tests/check/png.rs"]
+mod render;
+
 mechanism! {
     /// Crank-rocker four-bar (mm) with a coupler point.
     pub FourBar {
@@ -139,10 +142,12 @@ mechanism! {
     }
 }
 
-/// A mechanism defined only here gets its drawing, animation, foot path and
-/// table from the generic calls: the drawing has one frame per pose, every
-/// link of the structure is drawn, the path of F spans the foot's stride,
-/// and the CSV has a header with units and one row per pose.
+/// A mechanism defined only here gets its drawing, animation, foot path, a
+/// chart of its foot and table from the generic calls: the drawing has one
+/// frame per pose, every link of the structure is drawn, the path of F spans
+/// the foot's stride, the chart has F's two coordinates in cm, both pictures
+/// render to pixels with their labels inside, and the CSV has a header with
+/// units and one row per pose.
 #[test]
 fn jansen_leg_pictures_and_table_from_its_description_alone() {
     let leg = JansenLeg::<f64>::default();
@@ -187,6 +192,25 @@ fn jansen_leg_pictures_and_table_from_its_description_alone() {
         .map(|(_, p)| p.as_ref().unwrap().F.x)
         .fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
     assert!(xmax - xmin > 30.0, "stride {}", xmax - xmin);
+    // A chart of one output, the foot F, from its name alone: one panel of
+    // positions in cm with F.x and F.y over the turn.
+    let units = mechanism_plot::any::Units {
+        length: "cm",
+        force: "N",
+    };
+    let chart = mechanism_plot::any::chart("Jansen leg: foot", ("θ", "rad"), units, &poses, &["F"])
+        .unwrap()
+        .to_svg()
+        .unwrap();
+    assert!(chart.contains("position (cm)"), "the unit of F");
+    for series in ["\"F.x\"", "\"F.y\""] {
+        assert_eq!(chart.matches(series).count(), 1, "{series} drawn once");
+    }
+    // Looked at: rendered to pixels, not blank, labels inside the canvas.
+    let drawing_png = render::look(&drawing, "Jansen drawing", 0.01);
+    let chart_png = render::look(&chart, "Jansen chart", 0.01);
+    render::save_for_docs(&drawing_png, "jansen-drawing.png");
+    render::save_for_docs(&chart_png, "jansen-foot.png");
     let table = mechanism_plot::any::csv("theta", "rad", &poses);
     let mut lines = table.lines();
     let header = lines.next().unwrap();
