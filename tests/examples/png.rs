@@ -10,29 +10,42 @@ use std::path::{Path, PathBuf};
 
 type Make = fn(&Path) -> Result<Vec<PathBuf>, mechanism_plot::PlotError>;
 
-/// Each example, the index of its first chart and of its drawing in the files
-/// it writes, and the docs' names for them (if shown there).
-const EXAMPLES: [(&str, Make, usize, usize, Option<(&str, &str)>); 7] = [
-    (
-        "fourbar",
-        common::plots::fourbar,
-        0,
-        1,
-        Some(("fourbar-kinematics.png", "fourbar-drawing.png")),
-    ),
-    ("sixbar", common::plots::sixbar, 0, 1, None),
-    ("shaper", common::plots::shaper, 0, 1, None),
-    ("slider_crank", common::plots::slider_crank, 0, 1, None),
-    ("five_bar", common::plots::five_bar, 0, 1, None),
-    ("sine_mechanism", common::plots::sine_mechanism, 0, 1, None),
-    // Its forces chart is the picture of interest.
-    (
-        "shaper_forces",
-        common::plots::shaper_forces,
-        3,
-        1,
-        Some(("shaper-forces.png", "shaper-drawing.png")),
-    ),
+/// An example's pictures: which of the files it writes is its first chart and
+/// which its drawing, and the docs' names for them (if shown there).
+struct Example {
+    name: &'static str,
+    make: Make,
+    chart: usize,
+    drawing: usize,
+    docs: Option<(&'static str, &'static str)>,
+}
+
+const fn example(name: &'static str, make: Make) -> Example {
+    Example {
+        name,
+        make,
+        chart: 0,
+        drawing: 1,
+        docs: None,
+    }
+}
+
+const EXAMPLES: [Example; 7] = [
+    Example {
+        docs: Some(("fourbar-kinematics.png", "fourbar-drawing.png")),
+        ..example("fourbar", common::plots::fourbar)
+    },
+    example("sixbar", common::plots::sixbar),
+    example("shaper", common::plots::shaper),
+    example("slider_crank", common::plots::slider_crank),
+    example("five_bar", common::plots::five_bar),
+    example("sine_mechanism", common::plots::sine_mechanism),
+    // Its forces chart (after the shaper's three pictures) is the one of interest.
+    Example {
+        chart: 3,
+        docs: Some(("shaper-forces.png", "shaper-drawing.png")),
+        ..example("shaper_forces", common::plots::shaper_forces)
+    },
 ];
 
 /// Renders each example's first chart and its drawing; each must be at least
@@ -41,7 +54,14 @@ const EXAMPLES: [(&str, Make, usize, usize, Option<(&str, &str)>); 7] = [
 #[test]
 fn every_example_picture_renders_with_its_labels_inside() {
     let dir = std::env::temp_dir().join(format!("mechanism-png-test-{}", std::process::id()));
-    for (name, make, chart, drawing, docs) in EXAMPLES {
+    for Example {
+        name,
+        make,
+        chart,
+        drawing,
+        docs,
+    } in EXAMPLES
+    {
         let files = make(&dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
         let read = |k: usize| std::fs::read_to_string(&files[k]).unwrap();
         let c = look(&read(chart), &format!("{name} chart"), 0.01);
