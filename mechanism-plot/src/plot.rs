@@ -668,7 +668,25 @@ impl Figure {
         let right = layouts.iter().map(|l| l.right).fold(0.0, f64::max);
         let width = self.panels.iter().map(|p| p.width).fold(0.0, f64::max);
         let head = if self.title.is_empty() { 0.0 } else { 34.0 };
-        let height = head + self.panels.iter().map(|p| p.height).sum::<f64>();
+        // A panel grows to hold its legend (20 px a row from 12 px below the
+        // plot area's top) when it has more series than its height shows.
+        let panels: Vec<Plot> = self
+            .panels
+            .iter()
+            .map(|p| {
+                let mut p = p.clone();
+                let top = if p.title.is_empty() {
+                    TOP_PLAIN
+                } else {
+                    TOP_TITLE
+                };
+                p.height = p
+                    .height
+                    .max(top + 12.0 + 20.0 * p.series.len() as f64 + BOTTOM);
+                p
+            })
+            .collect();
+        let height = head + panels.iter().map(|p| p.height).sum::<f64>();
         let mut out = String::new();
         svg::open_svg(&mut out, width, height);
         if !self.title.is_empty() {
@@ -683,7 +701,7 @@ impl Figure {
             );
         }
         let mut y0 = head;
-        for (k, (p, lay)) in self.panels.iter().zip(&layouts).enumerate() {
+        for (k, (p, lay)) in panels.iter().zip(&layouts).enumerate() {
             // Every panel spans the figure's width.
             let mut p = p.clone();
             p.width = width;

@@ -369,3 +369,34 @@ fn a_generic_chart_has_gaps_where_rows_fail() {
         Err(PlotError::NoField { ref name, .. }) if name == "nope"
     ));
 }
+
+/// A panel with more series than its height shows grows to hold its legend:
+/// with 30 series (600 px of legend rows in a 340 px panel) every legend entry
+/// lies inside the panel's part of the canvas, above the next panel.
+#[test]
+fn a_long_legend_stays_inside_its_panel() {
+    let (xs, ys) = sine();
+    let mut many = Plot::new("many").x_axis("x", "");
+    for k in 0..30 {
+        let shifted: Vec<f64> = ys.iter().map(|y| y + k as f64).collect();
+        many = many.series(&format!("s{k}"), &xs, &shifted);
+    }
+    let svg = Figure::new("fig")
+        .panel(many)
+        .panel(Plot::new("below").series("a", &xs, &ys))
+        .to_svg()
+        .unwrap();
+    let (doc, vb) = parse(&svg);
+    assert_inside(&doc, vb);
+    let ps = panels(&doc);
+    let legend = with_class(doc.root_element(), "legend");
+    let last = elements(legend[0], "text")
+        .iter()
+        .map(|t| num(t, "y"))
+        .fold(f64::MIN, f64::max);
+    assert!(
+        last < ps[1].area[1] - 30.0,
+        "the last legend row ({last} px) above the next panel's plot area ({} px)",
+        ps[1].area[1]
+    );
+}
