@@ -32,6 +32,7 @@
 #![forbid(unsafe_code)]
 
 pub mod any;
+mod labels;
 mod plot;
 mod sketch;
 mod svg;

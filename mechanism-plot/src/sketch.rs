@@ -7,6 +7,7 @@
 //! link keeps its length on screen. Symbols (joints, sliders, supports, hatching) have a
 //! fixed size in pixels, so they read the same at any scale.
 
+use crate::labels::{self, Obstacles, Placed};
 use crate::svg::{self, num, text, text_width, PALETTE};
 use crate::{write_file, PlotError, Xy};
 use std::fmt::Write;
@@ -214,9 +215,10 @@ impl Sketch {
             frames: self.frames.len(),
         })?;
         let view = self.view()?;
+        let pivots = self.pivot_labels(&view, frame);
         let mut out = self.open(&view);
-        self.render_frame(&mut out, &view, frame, None);
-        self.close(&mut out, &view);
+        self.render_frame(&mut out, &view, frame, None, &pivots);
+        self.close(&mut out, &view, &pivots);
         Ok(out)
     }
 
@@ -236,12 +238,14 @@ impl Sketch {
             4.0
         };
         let view = self.view()?;
+        // The ground pivots' labels stay put: placed against the first pose.
+        let pivots = self.pivot_labels(&view, &self.frames[0]);
         let mut out = self.open(&view);
         let n = self.frames.len();
         for (k, f) in self.frames.iter().enumerate() {
-            self.render_frame(&mut out, &view, f, Some((k, n, seconds)));
+            self.render_frame(&mut out, &view, f, Some((k, n, seconds)), &pivots);
         }
-        self.close(&mut out, &view);
+        self.close(&mut out, &view, &pivots);
         Ok(out)
     }
 
@@ -458,12 +462,63 @@ impl Sketch {
         out
     }
 
+    /// What labels should not cover in pose `f` (px): joints, points and blocks
+    /// as discs, links and guides as thick segments, ground supports as boxes,
+    /// the canvas between the title band and the foot band.
+    fn obstacles(&self, view: &View, f: &Frame) -> Obstacles {
+        let mut o = Obstacles {
+            canvas: [2.0, HEAD, view.width - 2.0, view.height - FOOT],
+            ..Default::default()
+        };
+        for (_, p) in &self.pivots {
+            let [x, y] = view.px(*p);
+            o.discs.push(([x, y], 7.5));
+            o.boxes.push([x - 18.0, y, x + 18.0, y + 27.0]);
+        }
+        for (a, b) in &self.ground_guides {
+            o.segments.push((view.px(*a), view.px(*b), 6.0));
+        }
+        for s in &f.shapes {
+            match s {
+                Shape::Link { points, .. } => {
+                    let px: Vec<[f64; 2]> = points.iter().map(|p| view.px(*p)).collect();
+                    let closed = if px.len() >= 3 {
+                        px.len()
+                    } else {
+                        px.len().saturating_sub(1)
+                    };
+                    for k in 0..closed {
+                        o.segments.push((px[k], px[(k + 1) % px.len()], 5.5));
+                    }
+                }
+                Shape::Joint { p, .. } => o.discs.push((view.px(*p), 7.5)),
+                Shape::Point { p, .. } => o.discs.push((view.px(*p), 6.5)),
+                // Half the block's diagonal: it may turn any way.
+                Shape::Slider { p, .. } => o.discs.push((view.px(*p), 20.5)),
+                Shape::Guide { a, b } => o.segments.push((view.px(*a), view.px(*b), 2.5)),
+            }
+        }
+        o
+    }
+
+    /// The ground pivots' labels, placed against pose `f`.
+    fn pivot_labels(&self, view: &View, f: &Frame) -> Vec<Placed> {
+        let mut o = self.obstacles(view, f);
+        self.pivots
+            .iter()
+            .map(|(name, p)| {
+                let [x, y] = view.px(*p);
+                o.place(name, x, y)
+            })
+            .collect()
+    }
+
     /// Ground pivots' joints and labels (over the links), scale bar, end of document.
-    fn close(&self, out: &mut String, view: &View) {
-        for (name, p) in &self.pivots {
+    fn close(&self, out: &mut String, view: &View, labels: &[Placed]) {
+        for ((name, p), at) in self.pivots.iter().zip(labels) {
             let [x, y] = view.px(*p);
             joint(out, x, y, "ground-joint", name);
-            label(out, x, y, name);
+            label(out, at, name);
         }
         // Scale bar: the largest 1-2-5 length up to a quarter of the drawing's width.
         let world_w = (view.width - 2.0 * MARGIN) / view.scale;
@@ -515,6 +570,7 @@ impl Sketch {
         view: &View,
         f: &Frame,
         anim: Option<(usize, usize, f64)>,
+        pivots: &[Placed],
     ) {
         match anim {
             Some((k, n, seconds)) => {
@@ -624,10 +680,14 @@ impl Sketch {
                 _ => {}
             }
         }
+        let mut obstacles = self.obstacles(view, f);
+        obstacles.boxes.extend(pivots.iter().map(|p| p.rect));
         for s in &f.shapes {
             if let Shape::Joint { name, p } | Shape::Point { name, p } = s {
-                let [x, y] = view.px(*p);
-                label(out, x, y, name);
+                if !name.is_empty() {
+                    let [x, y] = view.px(*p);
+                    label(out, &obstacles.place(name, x, y), name);
+                }
             }
         }
         // In the foot band, right: clear of the title and of the scale bar (left).
@@ -662,17 +722,18 @@ fn joint(out: &mut String, x: f64, y: f64, class: &str, name: &str) {
     );
 }
 
-/// A joint's name up and right of it, on a white halo so that it reads over links.
-fn label(out: &mut String, x: f64, y: f64, name: &str) {
+/// A joint's name where [`Obstacles::place`] put it, on a white halo so that it
+/// reads over links.
+fn label(out: &mut String, at: &Placed, name: &str) {
     if name.is_empty() {
         return;
     }
     text(
         out,
-        x + 9.0,
-        y - 9.0,
-        13.0,
-        "start",
+        at.x,
+        at.y,
+        labels::SIZE,
+        at.anchor,
         r##" class="label" fill="#111" stroke="white" stroke-width="3" paint-order="stroke" stroke-linejoin="round""##,
         name,
     );

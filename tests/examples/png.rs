@@ -79,15 +79,23 @@ fn every_example_picture_renders_with_its_labels_inside() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// The check can fail: a picture with a label pushed off the canvas, and a
-/// blank one, are refused.
+/// The check can fail: a picture with a label pushed off the canvas, one
+/// with two labels over each other, and a blank one, are refused.
 #[test]
-fn the_look_refuses_a_label_off_the_canvas_and_a_blank_picture() {
+fn the_look_refuses_labels_off_the_canvas_or_overlapping_and_blank_pictures() {
     let off = r##"<svg xmlns="http://www.w3.org/2000/svg" width="200" height="100" font-family="DejaVu Sans, sans-serif"><rect width="200" height="100" fill="white"/><path d="M10 10 L190 90" stroke="#0072B2" stroke-width="8"/><path d="M10 90 L190 10" stroke="#D55E00" stroke-width="8"/><text x="150" y="50" font-size="13">a long label</text></svg>"##;
     let r = std::panic::catch_unwind(|| look(off, "off", 0.02));
     assert!(r.is_err(), "a label beyond the right edge is refused");
     let inside = off.replace(r#"x="150""#, r#"x="20""#);
     assert!(look(&inside, "inside", 0.02).texts == 1);
+    let twice = inside.replace(
+        "</svg>",
+        r#"<text x="24" y="54" font-size="13">again</text></svg>"#,
+    );
+    assert!(
+        std::panic::catch_unwind(|| look(&twice, "twice", 0.02)).is_err(),
+        "two labels over each other are refused"
+    );
     let blank = r#"<svg xmlns="http://www.w3.org/2000/svg" width="200" height="100"><rect width="200" height="100" fill="white"/></svg>"#;
     assert!(std::panic::catch_unwind(|| look(blank, "blank", 0.02)).is_err());
 }

@@ -1,8 +1,8 @@
 //! Pictures looked at, not only parsed: an SVG rendered to pixels with resvg
 //! (pure Rust; text laid out with the system's fonts) and checked as a person
 //! would see it: the image is not blank, it has more than one colour, every
-//! text element was laid out (a font was found for it) and every label's box
-//! lies inside the canvas.
+//! text element was laid out (a font was found for it), no two texts overlap
+//! and every label's box lies inside the canvas.
 //!
 //! Shared by the tests that render pictures (`#[path]`-included; a
 //! dev-dependency only, the library stays free of it).
@@ -108,8 +108,9 @@ fn text_boxes(group: &usvg::Group, out: &mut Vec<[f32; 4]>) {
 
 /// Renders `svg` (named `what` in messages) and checks it: at least `min_ink`
 /// of the pixels are not white, at least 3 colours, as many text nodes laid
-/// out as the SVG has non-empty `<text>` elements, and every text box inside
-/// the canvas (to 0.5 px: anti-aliasing of the box's edge). On a system with
+/// out as the SVG has non-empty `<text>` elements, no two text boxes
+/// overlapping, and every text box inside the canvas (to 0.5 px:
+/// anti-aliasing of the box's edge). On a system with
 /// no font the text cannot be laid out: the boxes are then estimated
 /// ([`estimated_boxes`]) and a note says so on stderr.
 pub fn look(svg: &str, what: &str, min_ink: f64) -> Look {
@@ -154,6 +155,20 @@ pub fn look(svg: &str, what: &str, min_ink: f64) -> Look {
         );
         boxes
     };
+    // No two texts overlap (by more than 1 px each way: glyph boxes touch at
+    // their anti-aliased edges).
+    for (i, a) in boxes.iter().enumerate() {
+        for b in &boxes[..i] {
+            let (dx, dy) = (
+                a[2].min(b[2]) - a[0].max(b[0]),
+                a[3].min(b[3]) - a[1].max(b[1]),
+            );
+            assert!(
+                dx <= 1.0 || dy <= 1.0,
+                "{what}: texts at {a:?} and {b:?} overlap"
+            );
+        }
+    }
     for b in &boxes {
         assert!(
             b[0] >= -0.5 && b[1] >= -0.5 && b[2] <= w as f32 + 0.5 && b[3] <= h as f32 + 0.5,
