@@ -1,11 +1,14 @@
-//! Pictures and tables of any mechanism `mechanism!` generates, from its
-//! description of itself (`mechanism::structure`): no drawing code per
+//! Pictures, charts and tables of any mechanism `mechanism!` generates, from
+//! its description of itself (`mechanism::structure`): no drawing code per
 //! mechanism.
 //!
 //! The caller solves the poses (one `position()` per input value, `None` where
 //! it fails) and hands them over with the input; everything else comes from
-//! the structure: which points are ground pivots, which link joins which
-//! points, which blocks slide on which guides.
+//! the structure and the result structs' fields: which points are ground
+//! pivots, which link joins which points, which blocks slide on which guides,
+//! what each output measures and in which unit. [`sketch`] draws and animates,
+//! [`chart`], [`kinematics_chart`] and [`force_chart`] plot outputs against
+//! the input (failed poses as gaps), [`csv`] tabulates.
 //!
 //! ```ignore
 //! let poses: Vec<(f64, Option<FourBarPosition>)> = thetas
