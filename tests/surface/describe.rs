@@ -298,3 +298,64 @@ fn forces_read_by_name_with_quantities() {
         Some(Value::Scalar(f.power_residual))
     );
 }
+
+/// Where a real mechanism cannot be assembled, the generic pictures show a
+/// gap, not a line across it: the four-bar with a 200 mm crank cannot close
+/// while A is more than coupler + rocker = 431.8 mm from O4 (crank angles
+/// round 180 deg), so over a turn its chart of link3 has two runs with no
+/// vertex for the failed rows, the drawn path of P two pieces, the drawing
+/// one frame per pose that closes, and the CSV an empty row per failure.
+#[test]
+fn poses_that_fail_are_gaps_in_every_picture() {
+    let fb = FourBar::<f64> {
+        crank: 200.0,
+        ..Default::default()
+    };
+    let rows: Vec<(f64, Option<FourBarPosition<f64>>)> = (0..=72)
+        .map(|k| {
+            let deg = 5.0 * k as f64;
+            let input = FourBarInput {
+                theta2: deg.to_radians(),
+            };
+            (deg, fb.position(&input).ok())
+        })
+        .collect();
+    // Independently: A = 200 (cos t, sin t), O4 = (304.8, 0).
+    let closes = |deg: f64| {
+        let t = deg.to_radians();
+        (200.0 * t.cos() - 304.8).hypot(200.0 * t.sin()) <= 254.0 + 177.8
+    };
+    for (deg, p) in &rows {
+        assert_eq!(p.is_some(), closes(*deg), "{deg} deg");
+    }
+    let solved = rows.iter().filter(|(_, p)| p.is_some()).count();
+    assert!(solved > 20 && solved < 60, "{solved} of 73 close");
+    let units = mechanism_plot::any::Units {
+        length: "mm",
+        force: "N",
+    };
+    let chart = mechanism_plot::any::chart("gaps", ("θ2", "deg"), units, &rows, &["link3"])
+        .unwrap()
+        .to_svg()
+        .unwrap();
+    let doc = roxmltree::Document::parse(&chart).unwrap();
+    let d = doc
+        .descendants()
+        .find(|n| n.attribute("data-series") == Some("link3"))
+        .and_then(|n| n.attribute("d"))
+        .unwrap();
+    assert_eq!(d.matches('M').count(), 2, "two runs: {d}");
+    assert_eq!(
+        d.matches('L').count(),
+        solved - 2,
+        "one vertex per solved row"
+    );
+    let sketch =
+        mechanism_plot::any::sketch::<FourBar<f64>, _>("gaps", "mm", &rows, &["P"]).unwrap();
+    assert_eq!(sketch.frame_count(), solved);
+    let drawing = sketch.drawing(0).unwrap();
+    assert_eq!(drawing.matches(r#"class="path" data-name="P""#).count(), 2);
+    let csv = mechanism_plot::any::csv("theta2", "deg", &rows);
+    let empty = csv.lines().filter(|l| l.ends_with(",,,,")).count();
+    assert_eq!(empty, 73 - solved);
+}
