@@ -2,8 +2,8 @@
 //! the distances that do not close, the links that align, the four-bar's
 //! Grashof condition, and a `range` statement that would pass.
 
-use super::eval::num;
 use crate::diag::show_num;
+use crate::kinds::pose::num;
 use crate::model::{Input, Kind, Model};
 use crate::plan::Plan;
 use mechanism_core::Fault;

@@ -1,0 +1,78 @@
+//! `actuator(A, l, B, INPUT, mode) as (ARM, CYLINDER)`: a linear actuator of
+//! input length (length units) from `B` to the joint, an arm of length `l`
+//! from `A` to it.
+
+use super::tokens::{arm, local, mode_tokens};
+use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::kinds::pose::{mode, num};
+use crate::model::{Mode, Stmt};
+use crate::value::Value;
+use mechanism_core::{driver, sweep};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// An `actuator` statement.
+pub(super) struct Actuator<'a> {
+    pub stmt: &'a Stmt,
+    pub a: &'a Ident,
+    pub l: &'a Value,
+    pub b: &'a Ident,
+    pub input: &'a Ident,
+    pub mode: Mode,
+}
+
+impl<'a> GroupKind<'a> for Actuator<'a> {
+    fn references(&self) -> Vec<&'a Ident> {
+        vec![self.a, self.b]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        let n = &self.stmt.name;
+        vec![
+            LinkShape::new(&[self.a, n], Turn::Own, None),
+            LinkShape::new(&[self.b, n], Turn::Own, None),
+        ]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.l.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let len = input(self.input);
+        let (pa, pb) = (pose.point(self.a), pose.point(self.b));
+        let p = driver::actuator::position(&pa, num(self.l), &pb, len, mode(self.mode))?;
+        pose.found(self.stmt, Some(p.c), &[p.r1 / num(self.l), p.r2 / len]);
+        Ok(Some(sweep::det_rrr(&p)))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::driver::actuator::ActuatorPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (l, m, input) = (self.l.emit(), mode_tokens(self.mode), self.input);
+        let (a, b) = (local(self.a), local(self.b));
+        Solve::Group {
+            call: quote!(::mechanism::driver::actuator::position(&#a, #l, &#b, input.#input, #m)),
+            joint: Some("c"),
+        }
+    }
+
+    fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
+        let input = self.input;
+        match index {
+            0 => arm(self.stmt, "r1", self.l.emit()),
+            _ => arm(self.stmt, "r2", quote!(input.#input)),
+        }
+    }
+}

@@ -1,0 +1,83 @@
+//! `crank(PIVOT, r, INPUT) as LINK`: a link turning about a pivot by the
+//! input angle (rad, counter-clockwise from +x).
+
+use super::tokens::{local, unit_field};
+use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::kinds::pose::num;
+use crate::model::Stmt;
+use crate::value::Value;
+use mechanism_core::driver;
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// A `crank` statement. `cos_sin`: its input is marked `as cos_sin`.
+pub(super) struct Crank<'a> {
+    pub stmt: &'a Stmt,
+    pub pivot: &'a Ident,
+    pub radius: &'a Value,
+    pub input: &'a Ident,
+    pub cos_sin: bool,
+}
+
+impl<'a> GroupKind<'a> for Crank<'a> {
+    fn references(&self) -> Vec<&'a Ident> {
+        vec![self.pivot]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        vec![LinkShape::new(
+            &[self.pivot, &self.stmt.name],
+            Turn::Own,
+            None,
+        )]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.radius.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let pivot = pose.point(self.pivot);
+        let c = driver::crank::position(&pivot, num(self.radius), input(self.input))?;
+        pose.found(self.stmt, Some(c.tip), &[c.axis]);
+        Ok(None)
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::driver::crank::CrankPosition<T>)
+    }
+
+    fn position(&self, cos_sin: bool) -> Solve {
+        let (r, pivot, input) = (self.radius.emit(), local(self.pivot), self.input);
+        let call = if self.cos_sin && cos_sin {
+            quote!(::mechanism::driver::crank::position_cos_sin(&#pivot, #r, input_cs.#input.cos, input_cs.#input.sin))
+        } else {
+            quote!(::mechanism::driver::crank::position(&#pivot, #r, input.#input))
+        };
+        Solve::Group {
+            call,
+            joint: Some("tip"),
+        }
+    }
+
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        unit_field(self.stmt, "axis")
+    }
+
+    /// Its input, reduced to (-pi, pi] (no atan2), except in
+    /// `position_cos_sin` for a crank marked `as cos_sin`.
+    fn link_angle(&self, cos_sin: bool) -> Option<TokenStream> {
+        let input = self.input;
+        (!(cos_sin && self.cos_sin))
+            .then(|| quote!(::mechanism::geometry::wrap_angle(input.#input)))
+    }
+}

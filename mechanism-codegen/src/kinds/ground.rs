@@ -1,0 +1,48 @@
+//! `ground(x, y)`: a fixed point.
+
+use super::{GroupKind, Pose, Solve};
+use crate::kinds::pose::num;
+use crate::model::Stmt;
+use crate::value::Value;
+use mechanism_core::Point2;
+use quote::quote;
+use syn::Ident;
+
+/// A `ground` statement.
+pub(super) struct Ground<'a> {
+    pub stmt: &'a Stmt,
+    pub x: &'a Value,
+    pub y: &'a Value,
+}
+
+impl<'a> GroupKind<'a> for Ground<'a> {
+    fn references(&self) -> Vec<&'a Ident> {
+        vec![]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(None)
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.x.clone(), self.y.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let p = Point2::new(num(self.x), num(self.y));
+        pose.found(self.stmt, Some(p), &[]);
+        Ok(None)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (x, y) = (self.x.emit(), self.y.emit());
+        Solve::Own {
+            expr: quote!(::mechanism::Point2::new(#x, #y)),
+            ty: quote!(::mechanism::Point2<T>),
+        }
+    }
+}

@@ -1,0 +1,97 @@
+//! `guide(origin, angle)` and `guide(origin, angle) on LINK`: a line, fixed
+//! or carried by a link (turning with the link's axis).
+
+use super::tokens::{axis, local, unit_vector};
+use super::{GroupKind, Pose, Solve};
+use crate::kinds::pose::num;
+use crate::model::{Origin, Stmt};
+use crate::value::Value;
+use mechanism_core::guide::Line;
+use mechanism_core::{geometry, link, Point2};
+use quote::quote;
+use syn::Ident;
+
+/// A `guide` statement.
+pub(super) struct Guide<'a> {
+    pub stmt: &'a Stmt,
+    pub origin: &'a Origin,
+    pub angle: &'a Value,
+    pub carrier: Option<&'a Ident>,
+}
+
+impl<'a> GroupKind<'a> for Guide<'a> {
+    fn references(&self) -> Vec<&'a Ident> {
+        let mut r = vec![];
+        if let Origin::Point(p) = self.origin {
+            r.push(p);
+        }
+        r.extend(self.carrier);
+        r
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        None
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        let mut v = Vec::new();
+        if let Origin::Coords(x, y) = self.origin {
+            v.extend([x.clone(), y.clone()]);
+        }
+        v.push(self.angle.clone());
+        v
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let origin = match self.origin {
+            Origin::Point(p) => pose.point(p),
+            Origin::Coords(x, y) => Point2::new(num(x), num(y)),
+        };
+        let u = geometry::unit(num(self.angle));
+        let dir = match self.carrier {
+            None => u,
+            Some(l) => link::local_offset(&pose.axis(l), &u),
+        };
+        pose.found_line(self.stmt, Line { origin, dir });
+        Ok(None)
+    }
+
+    /// The line: its origin and its direction (a carried guide turns with
+    /// its link's axis).
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let origin = match self.origin {
+            Origin::Point(p) => {
+                let p = local(p);
+                quote!(#p)
+            }
+            Origin::Coords(x, y) => {
+                let (x, y) = (x.emit(), y.emit());
+                quote!(::mechanism::Point2::new(#x, #y))
+            }
+        };
+        let dir = match self.carrier {
+            None => unit_vector(self.angle),
+            Some(link) => {
+                let axis = axis(link);
+                if self.angle.fold() == Some(0.0) {
+                    quote!(#axis)
+                } else {
+                    let u = unit_vector(self.angle);
+                    quote!(::mechanism::link::local_offset(&#axis, &#u))
+                }
+            }
+        };
+        Solve::Own {
+            expr: quote!(::mechanism::guide::Line { origin: #origin, dir: #dir }),
+            ty: quote!(::mechanism::guide::Line<T>),
+        }
+    }
+
+    fn reads_axis(&self) -> Option<&'a Ident> {
+        self.carrier
+    }
+}

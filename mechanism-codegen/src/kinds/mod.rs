@@ -1,0 +1,260 @@
+//! Stage 2b, kinds: everything the macro knows about one statement kind, one
+//! module per kind behind the [`GroupKind`] trait: the names it refers to,
+//! the links it creates and how they turn, which body owns its point, the
+//! values its position uses, its position in `f64` at expansion time (the
+//! evaluator of `check`) and the core call it emits for `position()` (the
+//! emitter), both calling the same `mechanism-core` primitive with the same
+//! arguments.
+//!
+//! [`of`] is the one place where a [`Kind`] is dispatched to its module.
+//! This stage reads `model` and `value` only; `validate`, `plan`, `check`
+//! and `emit` read it.
+
+mod actuator;
+mod crank;
+mod ground;
+mod guide;
+mod point;
+pub mod pose;
+mod prp;
+mod rpp;
+mod rpr;
+mod rrp;
+mod rrr;
+mod slider;
+pub(crate) mod tokens;
+
+use crate::model::{Kind, Stmt};
+use crate::value::Value;
+pub use pose::Pose;
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// How a link turns.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Turn {
+    /// It never turns (a block on a fixed guide).
+    None,
+    /// It has its own angular velocity, found by the statement that creates it.
+    Own,
+    /// It turns with another link (a block on a carried guide).
+    With(String),
+}
+
+/// A link a statement creates: the points fixed on it (the first is the
+/// link's origin), how it turns (before guide carriers are resolved), and
+/// the guide it slides on (a block), if any.
+pub struct LinkShape {
+    /// Points fixed on the link, its origin first.
+    pub points: Vec<String>,
+    /// How it turns, a block on a guide as `Turn::None`.
+    pub turn: Turn,
+    /// The guide it slides on.
+    pub guide: Option<String>,
+}
+
+impl LinkShape {
+    /// A link through `points` that turns as `turn` and slides on `guide`.
+    fn new(points: &[&Ident], turn: Turn, guide: Option<&Ident>) -> Self {
+        LinkShape {
+            points: points.iter().map(ToString::to_string).collect(),
+            turn,
+            guide: guide.map(ToString::to_string),
+        }
+    }
+}
+
+/// How a statement's position is emitted.
+pub enum Solve {
+    /// `let pos_NAME = EXPR;`, a value of type `ty` (a point or a line).
+    Own {
+        /// The expression (tagged, if it can fail).
+        expr: TokenStream,
+        /// Its type.
+        ty: TokenStream,
+    },
+    /// `let grp_NAME = CALL TAG;`, then `let pos_NAME = grp_NAME.JOINT;`
+    /// when the statement names a point.
+    Group {
+        /// The core call, untagged.
+        call: TokenStream,
+        /// The field of its result that is the statement's point.
+        joint: Option<&'static str>,
+    },
+}
+
+/// What the macro knows about one statement kind. Implemented once per
+/// kind, on a view of one statement of that kind ([`of`]).
+pub trait GroupKind<'a> {
+    /// Names the statement refers to (points, guides, links), with their tokens.
+    fn references(&self) -> Vec<&'a Ident>;
+
+    /// The links the statement creates, in the order of `Stmt::links`.
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        Vec::new()
+    }
+
+    /// The body the statement's point belongs to when another group is
+    /// pinned there (`Some(None)`: the ground); `None` for statements that
+    /// define no point (guides, RPR slides). See `plan::point_owner`.
+    fn point_owner(&self) -> Option<Option<String>>;
+
+    /// Every value its position uses, in the order the evaluator reads them.
+    fn position_values(&self) -> Vec<Value>;
+
+    /// Its position in `f64` at expansion time: what it finds goes into
+    /// `pose`; returns its scaled determinant (`None` for statements without
+    /// a rate system). `input` reads a driver's input value.
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>>;
+
+    /// The core type of its solved position state (`grp_NAME`), `()` for none.
+    fn position_type(&self) -> TokenStream {
+        quote!(())
+    }
+
+    /// Its position code; `cos_sin`: emitting `position_cos_sin`.
+    fn position(&self, cos_sin: bool) -> Solve;
+
+    /// Unit axis and raw direction of its link `index`, in position scope.
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        (
+            quote!(::mechanism::Vector2::x()),
+            quote!(::mechanism::Vector2::x()),
+        )
+    }
+
+    /// The field of its position state holding its slide `slot`.
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    /// The angle output of its link, when not the angle of the link's
+    /// direction (a crank's is its input). `cos_sin`: in `position_cos_sin`.
+    fn link_angle(&self, _cos_sin: bool) -> Option<TokenStream> {
+        None
+    }
+
+    /// The link whose unit axis its position reads (a link point's link, a
+    /// carried guide's carrier).
+    fn reads_axis(&self) -> Option<&'a Ident> {
+        None
+    }
+}
+
+/// The statement `stmt` as its kind: the one dispatch from [`Kind`] to the
+/// kinds' modules.
+pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
+    match &stmt.kind {
+        Kind::Ground { x, y } => Box::new(ground::Ground { stmt, x, y }),
+        Kind::Guide {
+            origin,
+            angle,
+            carrier,
+        } => Box::new(guide::Guide {
+            stmt,
+            origin,
+            angle,
+            carrier: carrier.as_ref(),
+        }),
+        Kind::Crank {
+            pivot,
+            radius,
+            input,
+            cos_sin,
+        } => Box::new(crank::Crank {
+            stmt,
+            pivot,
+            radius,
+            input,
+            cos_sin: *cos_sin,
+        }),
+        Kind::Slider {
+            guide,
+            input,
+            offset,
+        } => Box::new(slider::Slider {
+            stmt,
+            guide,
+            input,
+            offset,
+        }),
+        Kind::Actuator {
+            a,
+            l,
+            b,
+            input,
+            mode,
+        } => Box::new(actuator::Actuator {
+            stmt,
+            a,
+            l,
+            b,
+            input,
+            mode: *mode,
+        }),
+        Kind::Rrr { a, l1, b, l2, mode } => Box::new(rrr::Rrr {
+            stmt,
+            a,
+            l1,
+            b,
+            l2,
+            mode: *mode,
+        }),
+        Kind::Rrp {
+            a,
+            l,
+            guide,
+            mode,
+            offset,
+        } => Box::new(rrp::Rrp {
+            stmt,
+            a,
+            l,
+            guide,
+            mode: *mode,
+            offset,
+        }),
+        Kind::Rpr { a, b, mode, offset } => Box::new(rpr::Rpr {
+            stmt,
+            a,
+            b,
+            mode: *mode,
+            offset,
+        }),
+        Kind::Prp {
+            g1,
+            g2,
+            offset1,
+            offset2,
+        } => Box::new(prp::Prp {
+            stmt,
+            g1,
+            g2,
+            offset1,
+            offset2,
+        }),
+        Kind::Rpp {
+            a,
+            guide,
+            slot,
+            offset,
+        } => Box::new(rpp::Rpp {
+            stmt,
+            a,
+            guide,
+            slot,
+            offset,
+        }),
+        Kind::Point { link, from, local } => Box::new(point::Point {
+            stmt,
+            link,
+            from,
+            local,
+        }),
+    }
+}

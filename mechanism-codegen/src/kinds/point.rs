@@ -1,0 +1,84 @@
+//! `point(LINK, from P, d, angle)` and `point(LINK, from P, (x, y))`: a point
+//! fixed on a link, given in the link's frame.
+
+use super::tokens::{axis, local, tag, unit_vector};
+use super::{GroupKind, Pose, Solve};
+use crate::kinds::pose::num;
+use crate::model::{Local, Stmt};
+use crate::value::{lit, Value};
+use mechanism_core::{geometry, link, Vector2};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// A `point` statement.
+pub(super) struct Point<'a> {
+    pub stmt: &'a Stmt,
+    pub link: &'a Ident,
+    pub from: &'a Ident,
+    pub local: &'a Local,
+}
+
+impl<'a> GroupKind<'a> for Point<'a> {
+    fn references(&self) -> Vec<&'a Ident> {
+        vec![self.link, self.from]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.link.to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        match self.local {
+            Local::Polar(a, b) | Local::Cartesian(a, b) => vec![a.clone(), b.clone()],
+        }
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let offset = match self.local {
+            Local::Cartesian(x, y) => Vector2::new(num(x), num(y)),
+            Local::Polar(d, a) => geometry::unit(num(a)) * num(d),
+        };
+        let p = link::point_position(&pose.point(self.from), &pose.axis(self.link), &offset)?;
+        pose.found(self.stmt, Some(p), &[]);
+        Ok(None)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (axis, from, t) = (axis(self.link), local(self.from), tag(self.stmt));
+        let offset = offset(self.local);
+        Solve::Own {
+            expr: quote!(::mechanism::link::point_position(&#from, &#axis, &#offset) #t),
+            ty: quote!(::mechanism::Point2<T>),
+        }
+    }
+
+    fn reads_axis(&self) -> Option<&'a Ident> {
+        Some(self.link)
+    }
+}
+
+/// A point's offset in its link's frame, folded when literal.
+fn offset(offset: &Local) -> TokenStream {
+    match offset {
+        Local::Cartesian(x, y) => {
+            let (x, y) = (x.emit(), y.emit());
+            quote!(::mechanism::Vector2::new(#x, #y))
+        }
+        Local::Polar(d, a) => match (d.fold(), a.fold()) {
+            (Some(d), Some(a)) => {
+                let (s, c) = a.sin_cos();
+                let (x, y) = (lit(d * c), lit(d * s));
+                quote!(::mechanism::Vector2::new(#x, #y))
+            }
+            _ => {
+                let (d, u) = (d.emit(), unit_vector(a));
+                quote!((#u * #d))
+            }
+        },
+    }
+}

@@ -1,0 +1,81 @@
+//! `prp(GUIDE1, GUIDE2) as (BLOCK1, BLOCK2)`: the PRP dyad, two blocks on two
+//! guides pinned together at the defined point.
+
+use super::tokens::{along, local};
+use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::kinds::pose::num;
+use crate::model::Stmt;
+use crate::value::Value;
+use mechanism_core::{dyad, sweep};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// A `prp` statement.
+pub(super) struct Prp<'a> {
+    pub stmt: &'a Stmt,
+    pub g1: &'a Ident,
+    pub g2: &'a Ident,
+    pub offset1: &'a Value,
+    pub offset2: &'a Value,
+}
+
+impl<'a> GroupKind<'a> for Prp<'a> {
+    fn references(&self) -> Vec<&'a Ident> {
+        vec![self.g1, self.g2]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        let n = &self.stmt.name;
+        vec![
+            LinkShape::new(&[n], Turn::None, Some(self.g1)),
+            LinkShape::new(&[n], Turn::None, Some(self.g2)),
+        ]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.offset1.clone(), self.offset2.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (l1, l2) = (pose.line(self.g1), pose.line(self.g2));
+        let p = dyad::prp::position(&l1, num(self.offset1), &l2, num(self.offset2))?;
+        pose.found(self.stmt, Some(p.c), &[l1.dir, l2.dir]);
+        Ok(Some(sweep::det_prp(&l1, &l2)))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::dyad::prp::PrpPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (o1, o2) = (self.offset1.emit(), self.offset2.emit());
+        let (g1, g2) = (local(self.g1), local(self.g2));
+        Solve::Group {
+            call: quote!(::mechanism::dyad::prp::position(&#g1, #o1, &#g2, #o2)),
+            joint: Some("c"),
+        }
+    }
+
+    fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
+        match index {
+            0 => along(self.g1),
+            _ => along(self.g2),
+        }
+    }
+
+    fn slide_field(&self, slot: usize) -> TokenStream {
+        match slot {
+            0 => quote!(s1),
+            _ => quote!(s2),
+        }
+    }
+}

@@ -1,0 +1,83 @@
+//! `rpp(A, GUIDE, slot angle) as (YOKE, BLOCK)`: the RPP dyad, a yoke pinned
+//! at `A` whose slot (at the given angle to the guide) carries a block that
+//! slides on the guide; the defined point is the yoke's reference point.
+
+use super::tokens::{along, local, unit_field, unit_vector};
+use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::kinds::pose::num;
+use crate::model::Stmt;
+use crate::value::Value;
+use mechanism_core::{dyad, geometry, sweep};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// An `rpp` statement.
+pub(super) struct Rpp<'a> {
+    pub stmt: &'a Stmt,
+    pub a: &'a Ident,
+    pub guide: &'a Ident,
+    pub slot: &'a Value,
+    pub offset: &'a Value,
+}
+
+impl<'a> GroupKind<'a> for Rpp<'a> {
+    fn references(&self) -> Vec<&'a Ident> {
+        vec![self.a, self.guide]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        vec![
+            LinkShape::new(&[self.a], Turn::None, Some(self.guide)),
+            LinkShape::new(&[&self.stmt.name], Turn::None, Some(self.guide)),
+        ]
+    }
+
+    /// The reference point belongs to the yoke, the second link.
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[1].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.slot.clone(), self.offset.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (pa, gl) = (pose.point(self.a), pose.line(self.guide));
+        let u = geometry::unit(num(self.slot));
+        let p = dyad::rpp::position(&pa, &gl, num(self.offset), &u)?;
+        pose.found(self.stmt, Some(p.q), &[p.slot, gl.dir]);
+        Ok(Some(sweep::det_rpp(&p, &gl)))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::dyad::rpp::RppPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (u, o) = (unit_vector(self.slot), self.offset.emit());
+        let (a, guide) = (local(self.a), local(self.guide));
+        Solve::Group {
+            call: quote!(::mechanism::dyad::rpp::position(&#a, &#guide, #o, &#u)),
+            joint: Some("q"),
+        }
+    }
+
+    fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
+        match index {
+            1 => along(self.guide),
+            _ => unit_field(self.stmt, "slot"),
+        }
+    }
+
+    fn slide_field(&self, slot: usize) -> TokenStream {
+        match slot {
+            0 => quote!(s1),
+            _ => quote!(s2),
+        }
+    }
+}

@@ -1,0 +1,70 @@
+//! `rpr(A, B, mode) as (LINK1, LINK2)`: the RPR dyad, a block pinned at `A`
+//! sliding on a link turning about `B`; the defined name is the slide.
+
+use super::tokens::{local, mode_tokens, unit_field};
+use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::kinds::pose::{mode, num};
+use crate::model::{Mode, Stmt};
+use crate::value::Value;
+use mechanism_core::{dyad, sweep};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// An `rpr` statement.
+pub(super) struct Rpr<'a> {
+    pub stmt: &'a Stmt,
+    pub a: &'a Ident,
+    pub b: &'a Ident,
+    pub mode: Mode,
+    pub offset: &'a Value,
+}
+
+impl<'a> GroupKind<'a> for Rpr<'a> {
+    fn references(&self) -> Vec<&'a Ident> {
+        vec![self.a, self.b]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        vec![
+            LinkShape::new(&[self.a], Turn::Own, None),
+            LinkShape::new(&[self.b], Turn::Own, None),
+        ]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        None
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.offset.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (pa, pb) = (pose.point(self.a), pose.point(self.b));
+        let p = dyad::rpr::position(&pa, &pb, num(self.offset), mode(self.mode))?;
+        pose.found(self.stmt, None, &[p.axis, p.axis]);
+        Ok(Some(sweep::det_rpr(&p, &pa, &pb)))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::dyad::rpr::RprPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (m, o) = (mode_tokens(self.mode), self.offset.emit());
+        let (a, b) = (local(self.a), local(self.b));
+        Solve::Group {
+            call: quote!(::mechanism::dyad::rpr::position(&#a, &#b, #o, #m)),
+            joint: None,
+        }
+    }
+
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        unit_field(self.stmt, "axis")
+    }
+}

@@ -1,0 +1,75 @@
+//! `rrp(A, l, GUIDE, mode) as (LINK, BLOCK)`: the RRP dyad, a link of length
+//! `l` from `A` pinned at the defined point to a block on a guide.
+
+use super::tokens::{along, arm, local, mode_tokens};
+use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::kinds::pose::{mode, num};
+use crate::model::{Mode, Stmt};
+use crate::value::Value;
+use mechanism_core::{dyad, sweep};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// An `rrp` statement.
+pub(super) struct Rrp<'a> {
+    pub stmt: &'a Stmt,
+    pub a: &'a Ident,
+    pub l: &'a Value,
+    pub guide: &'a Ident,
+    pub mode: Mode,
+    pub offset: &'a Value,
+}
+
+impl<'a> GroupKind<'a> for Rrp<'a> {
+    fn references(&self) -> Vec<&'a Ident> {
+        vec![self.a, self.guide]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        let n = &self.stmt.name;
+        vec![
+            LinkShape::new(&[self.a, n], Turn::Own, None),
+            LinkShape::new(&[n], Turn::None, Some(self.guide)),
+        ]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.l.clone(), self.offset.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (pa, gl, l) = (pose.point(self.a), pose.line(self.guide), num(self.l));
+        let p = dyad::rrp::position(&pa, l, &gl, num(self.offset), mode(self.mode))?;
+        pose.found(self.stmt, Some(p.c), &[p.r1 / l, gl.dir]);
+        Ok(Some(sweep::det_rrp(&p, &gl)))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::dyad::rrp::RrpPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (l, m, o) = (self.l.emit(), mode_tokens(self.mode), self.offset.emit());
+        let (a, guide) = (local(self.a), local(self.guide));
+        Solve::Group {
+            call: quote!(::mechanism::dyad::rrp::position(&#a, #l, &#guide, #o, #m)),
+            joint: Some("c"),
+        }
+    }
+
+    fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
+        match index {
+            0 => arm(self.stmt, "r1", self.l.emit()),
+            _ => along(self.guide),
+        }
+    }
+}

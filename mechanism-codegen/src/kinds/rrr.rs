@@ -1,0 +1,76 @@
+//! `rrr(A, l1, B, l2, mode) as (LINK1, LINK2)`: the RRR dyad, two links of
+//! lengths `l1` from `A` and `l2` from `B` pinned at the defined point.
+
+use super::tokens::{arm, local, mode_tokens};
+use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::kinds::pose::{mode, num};
+use crate::model::{Mode, Stmt};
+use crate::value::Value;
+use mechanism_core::{dyad, sweep};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// An `rrr` statement.
+pub(super) struct Rrr<'a> {
+    pub stmt: &'a Stmt,
+    pub a: &'a Ident,
+    pub l1: &'a Value,
+    pub b: &'a Ident,
+    pub l2: &'a Value,
+    pub mode: Mode,
+}
+
+impl<'a> GroupKind<'a> for Rrr<'a> {
+    fn references(&self) -> Vec<&'a Ident> {
+        vec![self.a, self.b]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        let n = &self.stmt.name;
+        vec![
+            LinkShape::new(&[self.a, n], Turn::Own, None),
+            LinkShape::new(&[self.b, n], Turn::Own, None),
+        ]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.l1.clone(), self.l2.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (pa, pb) = (pose.point(self.a), pose.point(self.b));
+        let (l1, l2) = (num(self.l1), num(self.l2));
+        let p = dyad::rrr::position(&pa, l1, &pb, l2, mode(self.mode))?;
+        pose.found(self.stmt, Some(p.c), &[p.r1 / l1, p.r2 / l2]);
+        Ok(Some(sweep::det_rrr(&p)))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::dyad::rrr::RrrPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (l1, l2, m) = (self.l1.emit(), self.l2.emit(), mode_tokens(self.mode));
+        let (a, b) = (local(self.a), local(self.b));
+        Solve::Group {
+            call: quote!(::mechanism::dyad::rrr::position(&#a, #l1, &#b, #l2, #m)),
+            joint: Some("c"),
+        }
+    }
+
+    fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
+        match index {
+            0 => arm(self.stmt, "r1", self.l1.emit()),
+            _ => arm(self.stmt, "r2", self.l2.emit()),
+        }
+    }
+}

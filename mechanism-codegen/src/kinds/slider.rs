@@ -1,0 +1,69 @@
+//! `slider(GUIDE, INPUT) as BLOCK`: a block driven along a guide by the
+//! input displacement (length units, along the guide's direction).
+
+use super::tokens::{along, local};
+use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::kinds::pose::num;
+use crate::model::Stmt;
+use crate::value::Value;
+use mechanism_core::driver;
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// A `slider` statement.
+pub(super) struct Slider<'a> {
+    pub stmt: &'a Stmt,
+    pub guide: &'a Ident,
+    pub input: &'a Ident,
+    pub offset: &'a Value,
+}
+
+impl<'a> GroupKind<'a> for Slider<'a> {
+    fn references(&self) -> Vec<&'a Ident> {
+        vec![self.guide]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        vec![LinkShape::new(
+            &[&self.stmt.name],
+            Turn::None,
+            Some(self.guide),
+        )]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.offset.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let g = pose.line(self.guide);
+        let s = driver::slider::position(&g, num(self.offset), input(self.input))?;
+        pose.found(self.stmt, Some(s.p), &[g.dir]);
+        Ok(None)
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::driver::slider::SliderPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (o, guide, input) = (self.offset.emit(), local(self.guide), self.input);
+        Solve::Group {
+            call: quote!(::mechanism::driver::slider::position(&#guide, #o, input.#input)),
+            joint: Some("p"),
+        }
+    }
+
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        along(self.guide)
+    }
+}
