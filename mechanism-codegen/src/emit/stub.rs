@@ -2,6 +2,7 @@
 //! the `compile_error!`s, and stubs with the real names and fields so the
 //! user's own code reports no follow-on errors.
 
+use crate::kinds::forces::FieldsOnly;
 use crate::model::{Kind, Level, Model};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -75,8 +76,9 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         .filter(|i| unique(i))
         .collect();
     // With a force analysis the stub keeps its shape too: `NameLoads` with
-    // `Default`, `solve` taking the loads, a `forces` field in the solution
-    // (the reactions' own fields come from a valid model only).
+    // `Default`, `solve` taking the loads, a `forces` field in the solution,
+    // and the reactions and efforts of every statement that lowered (named
+    // by the same per-kind code as the real forces struct).
     let (forces_stub, stub_loads_param, stub_forces_field) = if model.kinetics.declared
         || model.level == Level::Forces
     {
@@ -97,10 +99,14 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
                 quote!(, loads: &#loads_ty<T>),
             )
         };
+        let mut reactions = FieldsOnly::of(model);
+        super::forces::unique_names(&mut reactions);
+        let fields = reactions.iter().map(|r| &r.name);
+        let types = reactions.iter().map(|r| &r.ty);
         let stub = quote! {
             #loads_item
-            #[allow(dead_code)]
-            #vis struct #forces_ty<T: ::mechanism::Real = ::core::primitive::f64> { pub condition: T, pub power_residual: T }
+            #[allow(non_snake_case, dead_code)]
+            #vis struct #forces_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #fields: #types,)* pub condition: T, pub power_residual: T }
             #[allow(dead_code, unused_variables)]
             impl<T: ::mechanism::Real> #name<T> {
                 pub fn forces(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, acc: &#acceleration_ty<T> #loads_param) -> ::core::result::Result<#forces_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }

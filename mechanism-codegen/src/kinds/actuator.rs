@@ -2,6 +2,7 @@
 //! input length (length units) from `B` to the joint, an arm of length `l`
 //! from `A` to it.
 
+use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::tokens::{arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::{mode, num};
@@ -9,7 +10,7 @@ use crate::model::{Mode, Stmt};
 use crate::value::Value;
 use mechanism_core::{driver, sweep};
 use proc_macro2::TokenStream;
-use quote::quote;
+use quote::{format_ident, quote};
 use syn::Ident;
 
 /// An `actuator` statement.
@@ -74,5 +75,26 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
             0 => arm(self.stmt, "r1", self.l.emit()),
             _ => arm(self.stmt, "r2", quote!(input.#input)),
         }
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, a, b, input) = (self.stmt, self.a, self.b, self.input);
+        let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
+        let load = cx.load_about(&links[0], a);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::actuator::reactions(&pos.#a, &pos.#b, &pos.#name, &#load)),
+        );
+        let body_a = cx.pass_revolute(a, &rx, "a");
+        if let Some(body) = cx.body_of_point(b) {
+            let axis = format_ident!("rx_axis_{}", name);
+            cx.code(quote!(let #axis = (pos.#name - pos.#b) / ::mechanism::geometry::length(&(pos.#name - pos.#b));));
+            cx.force_on(&body, quote!(#axis * (-#rx.axial)), b);
+        }
+        cx.reaction(revolute(&rx, &body_a, &links[0], a, "a"));
+        cx.power(quote!(#rx.axial * vel.rates.#input));
+        cx.condition(quote!(#rx.min_pivot_ratio));
+        let doc = format!("Axial force of the actuator `{}` (input `{input}`; force units, positive when it pushes its ends apart).", links[1]);
+        cx.reaction(drive(&rx, input, "axial", Held::Push, doc));
     }
 }

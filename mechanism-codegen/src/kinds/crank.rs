@@ -1,6 +1,7 @@
 //! `crank(PIVOT, r, INPUT) as LINK`: a link turning about a pivot by the
 //! input angle (rad, counter-clockwise from +x).
 
+use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::tokens::{local, unit_field};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
@@ -79,5 +80,22 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         let input = self.input;
         (!(cos_sin && self.cos_sin))
             .then(|| quote!(::mechanism::geometry::wrap_angle(input.#input)))
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, pivot, input) = (self.stmt, self.pivot, self.input);
+        let (rx, link) = (rx(stmt), &stmt.links[0]);
+        let load = cx.load_about(link, pivot);
+        cx.solve(stmt, quote!(::mechanism::force::crank::reactions(&#load)));
+        let body = cx.body_of_point(pivot);
+        if let Some(b) = &body {
+            let r = cx.reference(b);
+            let w = quote!(::mechanism::force::Wrench::force_at(&(-#rx.pivot), &pos.#pivot, &pos.#r).with_couple(-#rx.torque));
+            cx.add(b, w);
+        }
+        cx.reaction(revolute(&rx, &body, link, pivot, "pivot"));
+        cx.power(quote!(#rx.torque * vel.rates.#input));
+        let doc = format!("Driving torque on `{link}` (input `{input}`; force x length units, counter-clockwise positive): the balancing moment.");
+        cx.reaction(drive(&rx, input, "torque", Held::Torque, doc));
     }
 }

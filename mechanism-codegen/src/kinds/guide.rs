@@ -94,4 +94,8 @@ impl<'a> GroupKind<'a> for Guide<'a> {
     fn reads_axis(&self) -> Option<&'a Ident> {
         self.carrier
     }
+
+    fn guide_carrier(&self) -> Option<Option<&'a Ident>> {
+        Some(self.carrier)
+    }
 }

@@ -12,6 +12,7 @@
 
 mod actuator;
 mod crank;
+pub mod forces;
 mod ground;
 mod guide;
 mod point;
@@ -136,6 +137,17 @@ pub trait GroupKind<'a> {
     /// The angle output of its link, when not the angle of the link's
     /// direction (a crank's is its input). `cos_sin`: in `position_cos_sin`.
     fn link_angle(&self, _cos_sin: bool) -> Option<TokenStream> {
+        None
+    }
+
+    /// Its part of the force analysis (drivers and groups): its reactions
+    /// from the loads of its links, passed (negated) to the bodies it is
+    /// attached to, its fields in the forces struct, its conditioning and
+    /// its driving power.
+    fn forces(&self, _cx: &mut dyn forces::ForceCx) {}
+
+    /// For a guide: its carrier (`None`: fixed). `None` for other kinds.
+    fn guide_carrier(&self) -> Option<Option<&'a Ident>> {
         None
     }
 

@@ -1,6 +1,7 @@
 //! `prp(GUIDE1, GUIDE2) as (BLOCK1, BLOCK2)`: the PRP dyad, two blocks on two
 //! guides pinned together at the defined point.
 
+use super::forces::{inner, prismatic, rx, ForceCx};
 use super::tokens::{along, local};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
@@ -77,5 +78,23 @@ impl<'a> GroupKind<'a> for Prp<'a> {
             0 => quote!(s1),
             _ => quote!(s2),
         }
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, g1, g2) = (self.stmt, self.g1, self.g2);
+        let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
+        let (l1, l2) = cx.loads_about(stmt, name);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::prp::reactions(&pos.#name, &pos.#g1.dir, &pos.#g2.dir, &#l1, &#l2)),
+        );
+        let c1 = cx.body_of_guide(g1);
+        let c2 = cx.body_of_guide(g2);
+        cx.prismatic_on(c1.clone(), quote!(#rx.guide1), name);
+        cx.prismatic_on(c2.clone(), quote!(#rx.guide2), name);
+        cx.reaction(prismatic(&rx, &c1, &links[0], name, "guide1"));
+        cx.reaction(prismatic(&rx, &c2, &links[1], name, "guide2"));
+        cx.reaction(inner(&rx, links, name, "c", false));
+        cx.condition(quote!(#rx.min_pivot_ratio));
     }
 }

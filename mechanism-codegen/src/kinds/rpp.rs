@@ -2,7 +2,8 @@
 //! at `A` whose slot (at the given angle to the guide) carries a block that
 //! slides on the guide; the defined point is the yoke's reference point.
 
-use super::tokens::{along, local, unit_field, unit_vector};
+use super::forces::{inner, prismatic, revolute, rx, ForceCx};
+use super::tokens::{along, grp, local, unit_field, unit_vector};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
@@ -79,5 +80,22 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
             0 => quote!(s1),
             _ => quote!(s2),
         }
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, a, guide) = (self.stmt, self.a, self.guide);
+        let (rx, links, g) = (rx(stmt), &stmt.links, grp(stmt));
+        let (l1, l2) = cx.loads_about(stmt, a);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::rpp::reactions(&pos.#a, &pos.#g.slot, &pos.#guide.dir, &#l1, &#l2)),
+        );
+        let ba = cx.pass_revolute(a, &rx, "a");
+        let bg = cx.body_of_guide(guide);
+        cx.prismatic_on(bg.clone(), quote!(#rx.guide), a);
+        cx.reaction(revolute(&rx, &ba, &links[0], a, "a"));
+        cx.reaction(inner(&rx, links, a, "slot", true));
+        cx.reaction(prismatic(&rx, &bg, &links[1], a, "guide"));
+        cx.condition(quote!(#rx.min_pivot_ratio));
     }
 }

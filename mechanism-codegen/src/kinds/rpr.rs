@@ -1,7 +1,8 @@
 //! `rpr(A, B, mode) as (LINK1, LINK2)`: the RPR dyad, a block pinned at `A`
 //! sliding on a link turning about `B`; the defined name is the slide.
 
-use super::tokens::{local, mode_tokens, unit_field};
+use super::forces::{inner, revolute, rx, ForceCx};
+use super::tokens::{grp, local, mode_tokens, unit_field};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
@@ -66,5 +67,21 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
 
     fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
         unit_field(self.stmt, "axis")
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, a, b) = (self.stmt, self.a, self.b);
+        let (rx, links, g) = (rx(stmt), &stmt.links, grp(stmt));
+        let (l1, l2) = cx.loads_about(stmt, a);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::rpr::reactions(&pos.#a, &pos.#b, &pos.#g.axis, &#l1, &#l2)),
+        );
+        let ba = cx.pass_revolute(a, &rx, "a");
+        let bb = cx.pass_revolute(b, &rx, "b");
+        cx.reaction(revolute(&rx, &ba, &links[0], a, "a"));
+        cx.reaction(revolute(&rx, &bb, &links[1], b, "b"));
+        cx.reaction(inner(&rx, links, a, "slide", true));
+        cx.condition(quote!(#rx.min_pivot_ratio));
     }
 }

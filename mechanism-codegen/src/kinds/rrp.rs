@@ -1,6 +1,7 @@
 //! `rrp(A, l, GUIDE, mode) as (LINK, BLOCK)`: the RRP dyad, a link of length
 //! `l` from `A` pinned at the defined point to a block on a guide.
 
+use super::forces::{inner, prismatic, revolute, rx, ForceCx};
 use super::tokens::{along, arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::{mode, num};
@@ -71,5 +72,22 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
             0 => arm(self.stmt, "r1", self.l.emit()),
             _ => along(self.guide),
         }
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, a, guide) = (self.stmt, self.a, self.guide);
+        let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
+        let (l1, l2) = cx.loads_about(stmt, name);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::rrp::reactions(&pos.#a, &pos.#name, &pos.#guide.dir, &#l1, &#l2)),
+        );
+        let ba = cx.pass_revolute(a, &rx, "a");
+        let bg = cx.body_of_guide(guide);
+        cx.prismatic_on(bg.clone(), quote!(#rx.guide), name);
+        cx.reaction(revolute(&rx, &ba, &links[0], a, "a"));
+        cx.reaction(inner(&rx, links, name, "c", false));
+        cx.reaction(prismatic(&rx, &bg, &links[1], name, "guide"));
+        cx.condition(quote!(#rx.min_pivot_ratio));
     }
 }

@@ -1,6 +1,7 @@
 //! `rrr(A, l1, B, l2, mode) as (LINK1, LINK2)`: the RRR dyad, two links of
 //! lengths `l1` from `A` and `l2` from `B` pinned at the defined point.
 
+use super::forces::{inner, revolute, rx, ForceCx};
 use super::tokens::{arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::{mode, num};
@@ -72,5 +73,21 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
             0 => arm(self.stmt, "r1", self.l1.emit()),
             _ => arm(self.stmt, "r2", self.l2.emit()),
         }
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, a, b) = (self.stmt, self.a, self.b);
+        let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
+        let (l1, l2) = cx.loads_about(stmt, name);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::rrr::reactions(&pos.#a, &pos.#b, &pos.#name, &#l1, &#l2)),
+        );
+        let ba = cx.pass_revolute(a, &rx, "a");
+        let bb = cx.pass_revolute(b, &rx, "b");
+        cx.reaction(revolute(&rx, &ba, &links[0], a, "a"));
+        cx.reaction(revolute(&rx, &bb, &links[1], b, "b"));
+        cx.reaction(inner(&rx, links, name, "c", false));
+        cx.condition(quote!(#rx.min_pivot_ratio));
     }
 }

@@ -1,6 +1,7 @@
 //! `slider(GUIDE, INPUT) as BLOCK`: a block driven along a guide by the
 //! input displacement (length units, along the guide's direction).
 
+use super::forces::{drive, prismatic, rx, ForceCx, Held};
 use super::tokens::{along, local};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
@@ -65,5 +66,25 @@ impl<'a> GroupKind<'a> for Slider<'a> {
 
     fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
         along(self.guide)
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, guide, input) = (self.stmt, self.guide, self.input);
+        let (rx, link, name) = (rx(stmt), &stmt.links[0], &stmt.name);
+        let load = cx.load_about(link, name);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::slider::reactions(&pos.#guide.dir, &#load)),
+        );
+        let body = cx.body_of_guide(guide);
+        if let Some(b) = &body {
+            let r = cx.reference(b);
+            let w = quote!(::mechanism::force::Wrench::force_at(&(-(#rx.guide.force + pos.#guide.dir * #rx.drive)), &pos.#name, &pos.#r).with_couple(-#rx.guide.moment));
+            cx.add(b, w);
+        }
+        cx.reaction(prismatic(&rx, &body, link, name, "guide"));
+        cx.power(quote!(#rx.drive * vel.rates.#input));
+        let doc = format!("Driving force on `{link}` along its guide (input `{input}`; force units, positive along the guide's direction).");
+        cx.reaction(drive(&rx, input, "drive", Held::Push, doc));
     }
 }

@@ -6,6 +6,7 @@
 
 use super::ForceEmitter;
 use crate::emit::tag;
+use crate::kinds::forces::ForceCx;
 use crate::model::{ForceSpec, ForceSpecValue, Kind, MassSpec, TorqueSpec};
 use crate::value::Value;
 use proc_macro2::TokenStream;
