@@ -3,6 +3,7 @@
 //! from `A` to it.
 
 use super::forces::{drive, revolute, rx, ForceCx, Held};
+use super::rates::{states, two_links, RateCx};
 use super::tokens::{arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::{mode, num};
@@ -75,6 +76,22 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
             0 => arm(self.stmt, "r1", self.l.emit()),
             _ => arm(self.stmt, "r2", quote!(input.#input)),
         }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let ((g, gv), input) = (states(self.stmt), self.input);
+        let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
+        let call = if cx.accel() {
+            quote!(::mechanism::driver::actuator::acceleration(&pos.#g, &vel.#gv, #ma, #mb, rates.#input, accels.#input))
+        } else {
+            quote!(::mechanism::driver::actuator::velocity(&pos.#g, #ma, #mb, rates.#input))
+        };
+        let gr = cx.group(self.stmt, call, quote!(driver::actuator), "Actuator");
+        two_links(cx, self.stmt, &gr);
+    }
+
+    fn rate_system(&self) -> bool {
+        true
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

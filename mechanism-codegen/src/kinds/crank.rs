@@ -2,7 +2,8 @@
 //! input angle (rad, counter-clockwise from +x).
 
 use super::forces::{drive, revolute, rx, ForceCx, Held};
-use super::tokens::{local, unit_field};
+use super::rates::{vec_ty, RateCx};
+use super::tokens::{grp, local, tag, unit_field};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
@@ -80,6 +81,26 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         let input = self.input;
         (!(cos_sin && self.cos_sin))
             .then(|| quote!(::mechanism::geometry::wrap_angle(input.#input)))
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let (stmt, pivot, input) = (self.stmt, self.pivot, self.input);
+        let (g, pv, t) = (grp(stmt), cx.motion(stmt), tag(stmt));
+        let w = cx.own(stmt, 0);
+        let m = cx.point_arg(pivot);
+        cx.code(if cx.accel() {
+            quote! {
+                let #pv = ::mechanism::driver::crank::acceleration(&pos.#g, #m, rates.#input, accels.#input) #t;
+                let #w = accels.#input;
+            }
+        } else {
+            quote! {
+                let #pv = ::mechanism::driver::crank::velocity(&pos.#g, #m, rates.#input) #t;
+                let #w = rates.#input;
+            }
+        });
+        cx.field(pv, vec_ty());
+        cx.field(w, quote!(T));
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

@@ -1,14 +1,15 @@
 //! `guide(origin, angle)` and `guide(origin, angle) on LINK`: a line, fixed
 //! or carried by a link (turning with the link's axis).
 
+use super::rates::RateCx;
 use super::tokens::{axis, local, unit_vector};
 use super::{GroupKind, Pose, Solve};
 use crate::kinds::pose::num;
 use crate::model::{Origin, Stmt};
-use crate::value::Value;
+use crate::value::{lit, Value};
 use mechanism_core::guide::Line;
 use mechanism_core::{geometry, link, Point2};
-use quote::quote;
+use quote::{format_ident, quote};
 use syn::Ident;
 
 /// A `guide` statement.
@@ -89,6 +90,40 @@ impl<'a> GroupKind<'a> for Guide<'a> {
             expr: quote!(::mechanism::guide::Line { origin: #origin, dir: #dir }),
             ty: quote!(::mechanism::guide::Line<T>),
         }
+    }
+
+    /// A carried guide: the motion of its line (a fixed one has none).
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let Some(link) = self.carrier else {
+            return;
+        };
+        let accel = cx.accel();
+        let gpfx = if accel { "gacc" } else { "gvel" };
+        let n = format_ident!("{}_{}", gpfx, self.stmt.name);
+        let origin_motion = match self.origin {
+            Origin::Point(p) if cx.moves(p) => {
+                let v = format_ident!("{}_{}", cx.pfx(), p);
+                quote!(#v)
+            }
+            _ => quote!(::mechanism::Vector2::zeros()),
+        };
+        let w = cx
+            .link_rate(link)
+            .map(|w| quote!(#w))
+            .unwrap_or_else(|| lit(0.0));
+        let (body, ty) = if accel {
+            (
+                quote!(::mechanism::guide::LineAcceleration { a_origin: #origin_motion, alpha: #w }),
+                quote!(::mechanism::guide::LineAcceleration<T>),
+            )
+        } else {
+            (
+                quote!(::mechanism::guide::LineVelocity { v_origin: #origin_motion, omega: #w }),
+                quote!(::mechanism::guide::LineVelocity<T>),
+            )
+        };
+        cx.code(quote!(let #n = #body;));
+        cx.field(n, ty);
     }
 
     fn reads_axis(&self) -> Option<&'a Ident> {

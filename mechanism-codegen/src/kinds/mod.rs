@@ -18,6 +18,7 @@ mod guide;
 mod point;
 pub mod pose;
 mod prp;
+pub mod rates;
 mod rpp;
 mod rpr;
 mod rrp;
@@ -138,6 +139,15 @@ pub trait GroupKind<'a> {
     /// direction (a crank's is its input). `cos_sin`: in `position_cos_sin`.
     fn link_angle(&self, _cos_sin: bool) -> Option<TokenStream> {
         None
+    }
+
+    /// Its velocity code (`cx.accel()` false) or acceleration code.
+    fn rates(&self, _cx: &mut dyn rates::RateCx) {}
+
+    /// `true` for the groups with a rate system (the dyads and the
+    /// actuator): their velocity's `condition` joins the mechanism's.
+    fn rate_system(&self) -> bool {
+        false
     }
 
     /// Its part of the force analysis (drivers and groups): its reactions

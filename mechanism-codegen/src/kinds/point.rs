@@ -1,6 +1,7 @@
 //! `point(LINK, from P, d, angle)` and `point(LINK, from P, (x, y))`: a point
 //! fixed on a link, given in the link's frame.
 
+use super::rates::{vec_ty, RateCx};
 use super::tokens::{axis, local, tag, unit_vector};
 use super::{GroupKind, Pose, Solve};
 use crate::kinds::pose::num;
@@ -8,7 +9,7 @@ use crate::model::{Local, Stmt};
 use crate::value::{lit, Value};
 use mechanism_core::{geometry, link, Vector2};
 use proc_macro2::TokenStream;
-use quote::quote;
+use quote::{format_ident, quote};
 use syn::Ident;
 
 /// A `point` statement.
@@ -55,6 +56,40 @@ impl<'a> GroupKind<'a> for Point<'a> {
             expr: quote!(::mechanism::link::point_position(&#from, &#axis, &#offset) #t),
             ty: quote!(::mechanism::Point2<T>),
         }
+    }
+
+    /// Its base point's motion plus its motion about it.
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let (stmt, link, from) = (self.stmt, self.link, self.from);
+        let name = &stmt.name;
+        if !cx.moves(name) {
+            return;
+        }
+        let (pv, t) = (cx.motion(stmt), tag(stmt));
+        let base = cx.moves(from).then(|| {
+            let b = format_ident!("{}_{}", cx.pfx(), from);
+            quote!(#b)
+        });
+        let relative = match (cx.link_rate(link), cx.accel()) {
+            (None, _) => None,
+            (Some(w), false) => {
+                Some(quote!(::mechanism::link::point_velocity(&(pos.#name - pos.#from), #w) #t))
+            }
+            (Some(alpha), true) => {
+                let w = cx.link_omega_in_accel(link).unwrap_or_else(|| lit(0.0));
+                Some(
+                    quote!(::mechanism::link::point_acceleration(&(pos.#name - pos.#from), #w, #alpha) #t),
+                )
+            }
+        };
+        let value = match (base, relative) {
+            (Some(b), Some(r)) => quote!(#b + #r),
+            (Some(b), None) => b,
+            (None, Some(r)) => r,
+            (None, None) => quote!(::mechanism::Vector2::zeros()),
+        };
+        cx.code(quote!(let #pv = #value;));
+        cx.field(pv, vec_ty());
     }
 
     fn reads_axis(&self) -> Option<&'a Ident> {

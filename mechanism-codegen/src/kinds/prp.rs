@@ -2,6 +2,7 @@
 //! guides pinned together at the defined point.
 
 use super::forces::{inner, prismatic, rx, ForceCx};
+use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, local};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
@@ -78,6 +79,26 @@ impl<'a> GroupKind<'a> for Prp<'a> {
             0 => quote!(s1),
             _ => quote!(s2),
         }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let ((g, gv), g1, g2) = (states(self.stmt), self.g1, self.g2);
+        let (v1, v2) = (cx.guide_vel(g1), cx.guide_vel(g2));
+        let call = if cx.accel() {
+            let (a1, a2) = (cx.guide_acc(g1), cx.guide_acc(g2));
+            quote!(::mechanism::dyad::prp::acceleration(&pos.#g, &pos.#g1, &pos.#g2, &vel.#gv, #v1, #a1, #v2, #a2))
+        } else {
+            quote!(::mechanism::dyad::prp::velocity(&pos.#g, &pos.#g1, &pos.#g2, #v1, #v2))
+        };
+        let gr = cx.group(self.stmt, call, quote!(dyad::prp), "Prp");
+        let Pieces { point, s1, s2, .. } = Pieces::of(cx.accel());
+        cx.named(cx.motion(self.stmt), quote!(#gr.#point), vec_ty());
+        cx.slide(0, quote!(#gr.#s1));
+        cx.slide(1, quote!(#gr.#s2));
+    }
+
+    fn rate_system(&self) -> bool {
+        true
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

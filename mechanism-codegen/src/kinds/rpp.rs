@@ -3,6 +3,7 @@
 //! slides on the guide; the defined point is the yoke's reference point.
 
 use super::forces::{inner, prismatic, revolute, rx, ForceCx};
+use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, grp, local, unit_field, unit_vector};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
@@ -80,6 +81,28 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
             0 => quote!(s1),
             _ => quote!(s2),
         }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let ((g, gv), a, guide) = (states(self.stmt), self.a, self.guide);
+        let (ma, gvel) = (cx.point_arg(a), cx.guide_vel(guide));
+        let call = if cx.accel() {
+            let gacc = cx.guide_acc(guide);
+            quote!(::mechanism::dyad::rpp::acceleration(&pos.#g, &pos.#a, &pos.#guide, &vel.#gv, #ma, #gvel, #gacc))
+        } else {
+            quote!(::mechanism::dyad::rpp::velocity(&pos.#g, &pos.#a, &pos.#guide, #ma, #gvel))
+        };
+        let gr = cx.group(self.stmt, call, quote!(dyad::rpp), "Rpp");
+        // The reference point's motion is `vq`/`aq`.
+        let q = if cx.accel() { quote!(aq) } else { quote!(vq) };
+        let Pieces { s1, s2, .. } = Pieces::of(cx.accel());
+        cx.named(cx.motion(self.stmt), quote!(#gr.#q), vec_ty());
+        cx.slide(0, quote!(#gr.#s1));
+        cx.slide(1, quote!(#gr.#s2));
+    }
+
+    fn rate_system(&self) -> bool {
+        true
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

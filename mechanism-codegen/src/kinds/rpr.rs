@@ -2,6 +2,7 @@
 //! sliding on a link turning about `B`; the defined name is the slide.
 
 use super::forces::{inner, revolute, rx, ForceCx};
+use super::rates::{states, Pieces, RateCx};
 use super::tokens::{grp, local, mode_tokens, unit_field};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::{mode, num};
@@ -67,6 +68,31 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
 
     fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
         unit_field(self.stmt, "axis")
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let ((g, gv), a, b) = (states(self.stmt), self.a, self.b);
+        let (ma, mb) = (cx.point_arg(a), cx.point_arg(b));
+        let call = if cx.accel() {
+            quote!(::mechanism::dyad::rpr::acceleration(&pos.#g, &pos.#a, &pos.#b, &vel.#gv, #ma, #mb))
+        } else {
+            quote!(::mechanism::dyad::rpr::velocity(&pos.#g, &pos.#a, &pos.#b, #ma, #mb))
+        };
+        let gr = cx.group(self.stmt, call, quote!(dyad::rpr), "Rpr");
+        // Both links turn together: the group's one rate.
+        let r = if cx.accel() {
+            quote!(alpha)
+        } else {
+            quote!(omega)
+        };
+        let s = Pieces::of(cx.accel()).s;
+        cx.named(cx.own(self.stmt, 0), quote!(#gr.#r), quote!(T));
+        cx.named(cx.own(self.stmt, 1), quote!(#gr.#r), quote!(T));
+        cx.slide(0, quote!(#gr.#s));
+    }
+
+    fn rate_system(&self) -> bool {
+        true
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

@@ -2,6 +2,7 @@
 //! `l` from `A` pinned at the defined point to a block on a guide.
 
 use super::forces::{inner, prismatic, revolute, rx, ForceCx};
+use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::{mode, num};
@@ -72,6 +73,26 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
             0 => arm(self.stmt, "r1", self.l.emit()),
             _ => along(self.guide),
         }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let ((g, gv), guide) = (states(self.stmt), self.guide);
+        let (ma, gvel) = (cx.point_arg(self.a), cx.guide_vel(guide));
+        let call = if cx.accel() {
+            let gacc = cx.guide_acc(guide);
+            quote!(::mechanism::dyad::rrp::acceleration(&pos.#g, &pos.#guide, &vel.#gv, #ma, #gvel, #gacc))
+        } else {
+            quote!(::mechanism::dyad::rrp::velocity(&pos.#g, &pos.#guide, #ma, #gvel))
+        };
+        let gr = cx.group(self.stmt, call, quote!(dyad::rrp), "Rrp");
+        let Pieces { point, r1, s, .. } = Pieces::of(cx.accel());
+        cx.named(cx.motion(self.stmt), quote!(#gr.#point), vec_ty());
+        cx.named(cx.own(self.stmt, 0), quote!(#gr.#r1), quote!(T));
+        cx.slide(0, quote!(#gr.#s));
+    }
+
+    fn rate_system(&self) -> bool {
+        true
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

@@ -2,6 +2,7 @@
 //! lengths `l1` from `A` and `l2` from `B` pinned at the defined point.
 
 use super::forces::{inner, revolute, rx, ForceCx};
+use super::rates::{states, two_links, RateCx};
 use super::tokens::{arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::{mode, num};
@@ -73,6 +74,24 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
             0 => arm(self.stmt, "r1", self.l1.emit()),
             _ => arm(self.stmt, "r2", self.l2.emit()),
         }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let (g, gv) = states(self.stmt);
+        let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
+        let call = if cx.accel() {
+            quote!(::mechanism::dyad::rrr::acceleration(&pos.#g, &vel.#gv, #ma, #mb))
+        } else {
+            // The link lengths are the determinant's scale: no square root.
+            let (l1, l2) = (self.l1.emit(), self.l2.emit());
+            quote!(::mechanism::dyad::rrr::velocity_lengths(&pos.#g, #l1, #l2, #ma, #mb))
+        };
+        let gr = cx.group(self.stmt, call, quote!(dyad::rrr), "Rrr");
+        two_links(cx, self.stmt, &gr);
+    }
+
+    fn rate_system(&self) -> bool {
+        true
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

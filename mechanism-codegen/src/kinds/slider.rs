@@ -2,7 +2,8 @@
 //! input displacement (length units, along the guide's direction).
 
 use super::forces::{drive, prismatic, rx, ForceCx, Held};
-use super::tokens::{along, local};
+use super::rates::{vec_ty, RateCx};
+use super::tokens::{along, grp, local, tag};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
@@ -66,6 +67,23 @@ impl<'a> GroupKind<'a> for Slider<'a> {
 
     fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
         along(self.guide)
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let (stmt, guide, input) = (self.stmt, self.guide, self.input);
+        let (g, pv, t) = (grp(stmt), cx.motion(stmt), tag(stmt));
+        let gvel = cx.guide_vel(guide);
+        cx.code(if cx.accel() {
+            let gacc = cx.guide_acc(guide);
+            quote! {
+                let #pv = ::mechanism::driver::slider::acceleration(&pos.#g, &pos.#guide, pos.input.#input, rates.#input, accels.#input, #gvel, #gacc) #t;
+            }
+        } else {
+            quote! {
+                let #pv = ::mechanism::driver::slider::velocity(&pos.#g, &pos.#guide, pos.input.#input, rates.#input, #gvel) #t;
+            }
+        });
+        cx.field(pv, vec_ty());
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {
