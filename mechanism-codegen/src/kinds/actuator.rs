@@ -2,6 +2,7 @@
 //! input length (length units) from `B` to the joint, an arm of length `l`
 //! from `A` to it.
 
+use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::rates::{states, two_links, RateCx};
 use super::tokens::{arm, local, mode_tokens};
@@ -92,6 +93,27 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
 
     fn rate_system(&self) -> bool {
         true
+    }
+
+    /// `C` at `l` from `A`, at the input length from `B`, on its branch.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let input = self.input;
+        r.at_length("|C - A| = l", self.a, f(self.l));
+        r.at_length(
+            "|C - B| = input length",
+            self.b,
+            quote!(<T as ::mechanism::Real>::as_f64(pos.input.#input)),
+        );
+        r.dyad_branch(self.a, self.b, self.mode);
+    }
+
+    fn closure_axis(&self, index: usize) -> TokenStream {
+        let from = if index == 0 { self.a } else { self.b };
+        axis_between(from, &self.stmt.name)
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        vec![self.l]
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

@@ -1,6 +1,7 @@
 //! `crank(PIVOT, r, INPUT) as LINK`: a link turning about a pivot by the
 //! input angle (rad, counter-clockwise from +x).
 
+use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{grp, local, tag, unit_field};
@@ -101,6 +102,19 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         });
         cx.field(pv, vec_ty());
         cx.field(w, quote!(T));
+    }
+
+    /// The tip at its radius from the pivot.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        r.at_length("|tip - pivot| = radius", self.pivot, f(self.radius));
+    }
+
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        axis_between(self.pivot, &self.stmt.name)
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        vec![self.radius]
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

@@ -1,6 +1,7 @@
 //! `guide(origin, angle)` and `guide(origin, angle) on LINK`: a line, fixed
 //! or carried by a link (turning with the link's axis).
 
+use super::closure::{f, Residuals, Scale};
 use super::rates::RateCx;
 use super::tokens::{axis, local, unit_vector};
 use super::{GroupKind, Pose, Solve};
@@ -9,6 +10,7 @@ use crate::model::{Origin, Stmt};
 use crate::value::{lit, Value};
 use mechanism_core::guide::Line;
 use mechanism_core::{geometry, link, Point2};
+use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
 
@@ -124,6 +126,33 @@ impl<'a> GroupKind<'a> for Guide<'a> {
         };
         cx.code(quote!(let #n = #body;));
         cx.field(n, ty);
+    }
+
+    /// Its direction (fixed, or turned from its carrier link's axis) and,
+    /// when carried through a point, its origin at that point.
+    fn residuals(&self, r: &mut Residuals<'_>, link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let n = r.n;
+        let a = f(self.angle);
+        let Some(carrier) = self.carrier else {
+            r.push_scaled(
+                "fixed guide direction",
+                quote!(norm(sub(vc(&pos.#n.dir), turn([1.0, 0.0], #a)))),
+                Scale::Direction,
+            );
+            return;
+        };
+        let ax = link_axis(carrier);
+        if let Origin::Point(p) = self.origin {
+            r.push(
+                "carried guide origin",
+                quote!(norm(sub(pt(&pos.#n.origin), pt(&pos.#p)))),
+            );
+        }
+        r.push_scaled(
+            "carried guide direction",
+            quote!(norm(sub(vc(&pos.#n.dir), turn(#ax, #a)))),
+            Scale::CarriedDirection,
+        );
     }
 
     fn reads_axis(&self) -> Option<&'a Ident> {

@@ -11,6 +11,7 @@
 //! and `emit` read it.
 
 mod actuator;
+pub mod closure;
 mod crank;
 pub mod forces;
 mod ground;
@@ -148,6 +149,26 @@ pub trait GroupKind<'a> {
     /// actuator): their velocity's `condition` joins the mechanism's.
     fn rate_system(&self) -> bool {
         false
+    }
+
+    /// Its loop-closure residuals for `#[self_test]`; `link_axis` gives a
+    /// link's unit axis from the solved points (code).
+    fn residuals(
+        &self,
+        _r: &mut closure::Residuals<'_>,
+        _link_axis: &dyn Fn(&Ident) -> TokenStream,
+    ) {
+    }
+
+    /// The unit axis of its link `index` from the solved points (code of
+    /// the self-test module).
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        quote!([1.0, 0.0])
+    }
+
+    /// Its link lengths (for the shortest link of the self-test tolerances).
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        Vec::new()
     }
 
     /// Its part of the force analysis (drivers and groups): its reactions

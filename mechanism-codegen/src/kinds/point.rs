@@ -1,6 +1,7 @@
 //! `point(LINK, from P, d, angle)` and `point(LINK, from P, (x, y))`: a point
 //! fixed on a link, given in the link's frame.
 
+use super::closure::{f, Residuals};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{axis, local, tag, unit_vector};
 use super::{GroupKind, Pose, Solve};
@@ -90,6 +91,26 @@ impl<'a> GroupKind<'a> for Point<'a> {
         };
         cx.code(quote!(let #pv = #value;));
         cx.field(pv, vec_ty());
+    }
+
+    /// `from` plus the link's axes times the local offset.
+    fn residuals(&self, r: &mut Residuals<'_>, link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let (n, from, axis) = (r.n, self.from, link_axis(self.link));
+        let (x, y) = match self.local {
+            Local::Cartesian(x, y) => (f(x), f(y)),
+            Local::Polar(d, a) => {
+                let (d, a) = (f(d), f(a));
+                (quote!(#d * (#a).cos()), quote!(#d * (#a).sin()))
+            }
+        };
+        r.push(
+            "P = from + the link's axes times the local offset",
+            quote!({
+                let u = #axis;
+                let (x, y) = (#x, #y);
+                norm(sub(sub(pt(&pos.#n), pt(&pos.#from)), [u[0] * x - u[1] * y, u[1] * x + u[0] * y]))
+            }),
+        );
     }
 
     fn reads_axis(&self) -> Option<&'a Ident> {

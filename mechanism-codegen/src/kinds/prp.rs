@@ -1,6 +1,7 @@
 //! `prp(GUIDE1, GUIDE2) as (BLOCK1, BLOCK2)`: the PRP dyad, two blocks on two
 //! guides pinned together at the defined point.
 
+use super::closure::{guide_axis, Residuals};
 use super::forces::{inner, prismatic, rx, ForceCx};
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, local};
@@ -99,6 +100,16 @@ impl<'a> GroupKind<'a> for Prp<'a> {
 
     fn rate_system(&self) -> bool {
         true
+    }
+
+    /// `C` on both guides' offset lines.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        r.on_offset_line("C on offset line 1", self.g1, self.offset1);
+        r.on_offset_line("C on offset line 2", self.g2, self.offset2);
+    }
+
+    fn closure_axis(&self, index: usize) -> TokenStream {
+        guide_axis(if index == 0 { self.g1 } else { self.g2 })
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

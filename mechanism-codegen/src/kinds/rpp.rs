@@ -2,6 +2,7 @@
 //! at `A` whose slot (at the given angle to the guide) carries a block that
 //! slides on the guide; the defined point is the yoke's reference point.
 
+use super::closure::{f, guide_axis, Residuals};
 use super::forces::{inner, prismatic, revolute, rx, ForceCx};
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, grp, local, unit_field, unit_vector};
@@ -103,6 +104,26 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
 
     fn rate_system(&self) -> bool {
         true
+    }
+
+    /// `Q` on the guide's offset line, `A` in the slot through `Q`.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let (n, a, guide, s) = (r.n, self.a, self.guide, f(self.slot));
+        r.on_offset_line("Q on the offset line", guide, self.offset);
+        r.push(
+            "A in the slot through Q",
+            quote!(cross(turn(unit_of(vc(&pos.#guide.dir)), #s), sub(pt(&pos.#a), pt(&pos.#n)))),
+        );
+    }
+
+    fn closure_axis(&self, index: usize) -> TokenStream {
+        match index {
+            1 => guide_axis(self.guide),
+            _ => {
+                let (guide, s) = (self.guide, f(self.slot));
+                quote!(turn(unit_of(vc(&pos.#guide.dir)), #s))
+            }
+        }
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

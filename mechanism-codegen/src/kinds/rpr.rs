@@ -1,6 +1,7 @@
 //! `rpr(A, B, mode) as (LINK1, LINK2)`: the RPR dyad, a block pinned at `A`
 //! sliding on a link turning about `B`; the defined name is the slide.
 
+use super::closure::{f, sign, Residuals};
 use super::forces::{inner, revolute, rx, ForceCx};
 use super::rates::{states, Pieces, RateCx};
 use super::tokens::{grp, local, mode_tokens, unit_field};
@@ -93,6 +94,34 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
 
     fn rate_system(&self) -> bool {
         true
+    }
+
+    /// Its slide line at its offset from `B`, the slide along it, a unit
+    /// axis, and the branch (the sign of the slide).
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let (g, a, b) = (grp(self.stmt), self.a, self.b);
+        let (m, o) = (sign(self.mode), f(self.offset));
+        r.push(
+            "slide line at its offset from B",
+            quote!(cross(vc(&pos.#g.axis), sub(pt(&pos.#a), pt(&pos.#b))) - #o),
+        );
+        r.push(
+            "slide = dot(A - B, u)",
+            quote!(dot(vc(&pos.#g.axis), sub(pt(&pos.#a), pt(&pos.#b))) - <T as ::mechanism::Real>::as_f64(pos.#g.s)),
+        );
+        r.push(
+            "unit axis (times |A - B|)",
+            quote!((norm(vc(&pos.#g.axis)) - 1.0) * norm(sub(pt(&pos.#a), pt(&pos.#b)))),
+        );
+        r.push(
+            "assembly branch",
+            quote!(wrong_side(#m * <T as ::mechanism::Real>::as_f64(pos.#g.s))),
+        );
+    }
+
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        let g = grp(self.stmt);
+        quote!(unit_of(vc(&pos.#g.axis)))
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

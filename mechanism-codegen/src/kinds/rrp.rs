@@ -1,6 +1,7 @@
 //! `rrp(A, l, GUIDE, mode) as (LINK, BLOCK)`: the RRP dyad, a link of length
 //! `l` from `A` pinned at the defined point to a block on a guide.
 
+use super::closure::{axis_between, f, guide_axis, sign, Residuals};
 use super::forces::{inner, prismatic, revolute, rx, ForceCx};
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, arm, local, mode_tokens};
@@ -93,6 +94,29 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
 
     fn rate_system(&self) -> bool {
         true
+    }
+
+    /// `C` at `l` from `A`, on the guide's offset line, on its branch
+    /// (along the guide from `A`).
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let (n, a, guide, m) = (r.n, self.a, self.guide, sign(self.mode));
+        r.at_length("|C - A| = l", a, f(self.l));
+        r.on_offset_line("C on the offset line", guide, self.offset);
+        r.push(
+            "assembly branch",
+            quote!(wrong_side(#m * dot(sub(pt(&pos.#n), pt(&pos.#a)), vc(&pos.#guide.dir)))),
+        );
+    }
+
+    fn closure_axis(&self, index: usize) -> TokenStream {
+        match index {
+            0 => axis_between(self.a, &self.stmt.name),
+            _ => guide_axis(self.guide),
+        }
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        vec![self.l]
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

@@ -1,6 +1,7 @@
 //! `rrr(A, l1, B, l2, mode) as (LINK1, LINK2)`: the RRR dyad, two links of
 //! lengths `l1` from `A` and `l2` from `B` pinned at the defined point.
 
+use super::closure::{axis_between, f, Residuals};
 use super::forces::{inner, revolute, rx, ForceCx};
 use super::rates::{states, two_links, RateCx};
 use super::tokens::{arm, local, mode_tokens};
@@ -92,6 +93,22 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
 
     fn rate_system(&self) -> bool {
         true
+    }
+
+    /// `C` at `l1` from `A` and `l2` from `B`, on its branch.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        r.at_length("|C - A| = l1", self.a, f(self.l1));
+        r.at_length("|C - B| = l2", self.b, f(self.l2));
+        r.dyad_branch(self.a, self.b, self.mode);
+    }
+
+    fn closure_axis(&self, index: usize) -> TokenStream {
+        let from = if index == 0 { self.a } else { self.b };
+        axis_between(from, &self.stmt.name)
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        vec![self.l1, self.l2]
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

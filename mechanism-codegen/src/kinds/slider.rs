@@ -1,6 +1,7 @@
 //! `slider(GUIDE, INPUT) as BLOCK`: a block driven along a guide by the
 //! input displacement (length units, along the guide's direction).
 
+use super::closure::{guide_axis, Residuals};
 use super::forces::{drive, prismatic, rx, ForceCx, Held};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{along, grp, local, tag};
@@ -84,6 +85,20 @@ impl<'a> GroupKind<'a> for Slider<'a> {
             }
         });
         cx.field(pv, vec_ty());
+    }
+
+    /// The pin on the guide's offset line, at the input displacement.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let (n, guide, input) = (r.n, self.guide, self.input);
+        r.on_offset_line("pin on the offset line", guide, self.offset);
+        r.push(
+            "pin at the input displacement",
+            quote!(dot(vc(&pos.#guide.dir), sub(pt(&pos.#n), pt(&pos.#guide.origin))) - <T as ::mechanism::Real>::as_f64(pos.input.#input)),
+        );
+    }
+
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        guide_axis(self.guide)
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {
