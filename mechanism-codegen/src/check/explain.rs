@@ -3,7 +3,7 @@
 //! Grashof condition, and a `range` statement that would pass.
 
 use crate::diag::show_num;
-use crate::kinds::pose::num;
+use crate::kinds::{self, pose::num};
 use crate::model::{Input, Kind, Model};
 use crate::plan::Plan;
 use mechanism_core::Fault;
@@ -39,81 +39,19 @@ pub fn suggest(input: &Input, lo: f64, hi: f64) -> Option<String> {
     })
 }
 
-/// What the failing group's fault means, in the user's words.
+/// What the failing group's fault means, in the user's words (as its kind
+/// says, or the fault's own text).
 pub fn explain(model: &Model, stmt_index: usize, fault: &Fault, at: &str) -> String {
-    let stmt = &model.stmts[stmt_index];
-    match (&stmt.kind, fault) {
-        (Kind::Actuator { a, b, .. }, Fault::CannotAssemble { miss, reach }) => format!(
-            "at {at}, `{a}` and `{b}` are {} outside the distances the link and the cylinder can span (bound {})",
-            show_num(*miss),
-            show_num(*reach)
-        ),
-        (Kind::Rrr { a, l1, b, l2, .. }, Fault::CannotAssemble { miss, reach }) => {
-            let (l1, l2) = (num(l1), num(l2));
-            if (reach - (l1 + l2)).abs() <= 1e-9 * reach.abs().max(1.0) {
-                format!(
-                    "at {at}, `{a}` and `{b}` are {} apart, {} more than the links reach ({} + {} = {})",
-                    show_num(reach + miss),
-                    show_num(*miss),
-                    show_num(l1),
-                    show_num(l2),
-                    show_num(*reach)
-                )
-            } else {
-                format!(
-                    "at {at}, `{a}` and `{b}` are {} apart, {} less than the links' difference (|{} - {}| = {})",
-                    show_num(reach - miss),
-                    show_num(*miss),
-                    show_num(l1),
-                    show_num(l2),
-                    show_num(*reach)
-                )
-            }
-        }
-        (Kind::Rrp { a, guide, .. }, Fault::CannotAssemble { miss, reach }) => format!(
-            "at {at}, `{a}` is {} from the line of guide `{guide}`, {} more than the link's length {} reaches",
-            show_num(reach + miss),
-            show_num(*miss),
-            show_num(*reach)
-        ),
-        (Kind::Rpr { a, b, .. }, Fault::CannotAssemble { miss, reach }) => format!(
-            "at {at}, `{a}` is {} from `{b}`, {} inside the offset {} of the slide line",
-            show_num(reach - miss),
-            show_num(*miss),
-            show_num(*reach)
-        ),
-        (Kind::Prp { g1, g2, .. }, Fault::Singular { .. }) => format!(
-            "at {at}, guides `{g1}` and `{g2}` are parallel: the joint is at infinity"
-        ),
-        (Kind::Rpp { guide, .. }, Fault::Singular { .. }) => format!(
-            "at {at}, the slot is parallel to guide `{guide}`: the joint is at infinity"
-        ),
-        (_, fault) => format!("at {at}: {fault}"),
-    }
+    kinds::of(&model.stmts[stmt_index])
+        .explain_fault(fault, at)
+        .unwrap_or_else(|| format!("at {at}: {fault}"))
 }
 
 /// Why a group is singular, in the user's words.
 pub fn singular_meaning(model: &Model, stmt_index: usize) -> String {
-    let stmt = &model.stmts[stmt_index];
-    let l = |k: usize| stmt.links[k].to_string();
-    match &stmt.kind {
-        Kind::Rrr { .. } => format!("links `{}` and `{}` are aligned (toggle)", l(0), l(1)),
-        Kind::Actuator { .. } => format!(
-            "the cylinder `{}` is aligned with link `{}` (dead centre)",
-            l(1),
-            l(0)
-        ),
-        Kind::Rrp { guide, .. } => format!(
-            "link `{}` is perpendicular to guide `{guide}` (the block cannot be pushed along it)",
-            l(0)
-        ),
-        Kind::Rpr { a, b, .. } => {
-            format!("`{a}` is at the foot of the perpendicular from `{b}` on the slide line")
-        }
-        Kind::Prp { g1, g2, .. } => format!("guides `{g1}` and `{g2}` are parallel"),
-        Kind::Rpp { guide, .. } => format!("the slot is parallel to guide `{guide}`"),
-        _ => "its rate system is singular".into(),
-    }
+    kinds::of(&model.stmts[stmt_index])
+        .singular_meaning()
+        .unwrap_or_else(|| "its rate system is singular".into())
 }
 
 /// For a crank driving an RRR group onto a ground point: the four-bar's

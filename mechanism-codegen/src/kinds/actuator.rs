@@ -7,10 +7,11 @@ use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::rates::{states, two_links, RateCx};
 use super::tokens::{arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
 use crate::value::Value;
-use mechanism_core::{driver, sweep};
+use mechanism_core::{driver, sweep, Fault};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
@@ -114,6 +115,26 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
 
     fn link_lengths(&self) -> Vec<&'a Value> {
         vec![self.l]
+    }
+
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let (a, b) = (self.a, self.b);
+        let Fault::CannotAssemble { miss, reach } = fault else {
+            return None;
+        };
+        Some(format!(
+            "at {at}, `{a}` and `{b}` are {} outside the distances the link and the cylinder can span (bound {})",
+            show_num(*miss),
+            show_num(*reach)
+        ))
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        let l = &self.stmt.links;
+        Some(format!(
+            "the cylinder `{}` is aligned with link `{}` (dead centre)",
+            l[1], l[0]
+        ))
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

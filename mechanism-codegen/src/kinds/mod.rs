@@ -171,6 +171,18 @@ pub trait GroupKind<'a> {
         Vec::new()
     }
 
+    /// What a fault of its position means, in the user's words and numbers
+    /// (`at`: where, as the user reads it); `None`: the fault's own text.
+    fn explain_fault(&self, _fault: &mechanism_core::Fault, _at: &str) -> Option<String> {
+        None
+    }
+
+    /// Why its rate system is singular, in the user's words; `None`: a
+    /// generic text.
+    fn singular_meaning(&self) -> Option<String> {
+        None
+    }
+
     /// Its part of the force analysis (drivers and groups): its reactions
     /// from the loads of its links, passed (negated) to the bodies it is
     /// attached to, its fields in the forces struct, its conditioning and

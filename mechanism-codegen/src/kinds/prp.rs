@@ -9,7 +9,7 @@ use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
-use mechanism_core::{dyad, sweep};
+use mechanism_core::{dyad, sweep, Fault};
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
@@ -110,6 +110,18 @@ impl<'a> GroupKind<'a> for Prp<'a> {
 
     fn closure_axis(&self, index: usize) -> TokenStream {
         guide_axis(if index == 0 { self.g1 } else { self.g2 })
+    }
+
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let (g1, g2) = (self.g1, self.g2);
+        matches!(fault, Fault::Singular { .. }).then(|| {
+            format!("at {at}, guides `{g1}` and `{g2}` are parallel: the joint is at infinity")
+        })
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        let (g1, g2) = (self.g1, self.g2);
+        Some(format!("guides `{g1}` and `{g2}` are parallel"))
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

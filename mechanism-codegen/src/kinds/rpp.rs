@@ -10,7 +10,7 @@ use super::{GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
-use mechanism_core::{dyad, geometry, sweep};
+use mechanism_core::{dyad, geometry, sweep, Fault};
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
@@ -124,6 +124,18 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
                 quote!(turn(unit_of(vc(&pos.#guide.dir)), #s))
             }
         }
+    }
+
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let guide = self.guide;
+        matches!(fault, Fault::Singular { .. }).then(|| {
+            format!("at {at}, the slot is parallel to guide `{guide}`: the joint is at infinity")
+        })
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        let guide = self.guide;
+        Some(format!("the slot is parallel to guide `{guide}`"))
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

@@ -6,10 +6,11 @@ use super::forces::{inner, revolute, rx, ForceCx};
 use super::rates::{states, Pieces, RateCx};
 use super::tokens::{grp, local, mode_tokens, unit_field};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
 use crate::value::Value;
-use mechanism_core::{dyad, sweep};
+use mechanism_core::{dyad, sweep, Fault};
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
@@ -122,6 +123,26 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
     fn closure_axis(&self, _index: usize) -> TokenStream {
         let g = grp(self.stmt);
         quote!(unit_of(vc(&pos.#g.axis)))
+    }
+
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let (a, b) = (self.a, self.b);
+        let Fault::CannotAssemble { miss, reach } = fault else {
+            return None;
+        };
+        Some(format!(
+            "at {at}, `{a}` is {} from `{b}`, {} inside the offset {} of the slide line",
+            show_num(reach - miss),
+            show_num(*miss),
+            show_num(*reach)
+        ))
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        let (a, b) = (self.a, self.b);
+        Some(format!(
+            "`{a}` is at the foot of the perpendicular from `{b}` on the slide line"
+        ))
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

@@ -6,10 +6,11 @@ use super::forces::{inner, prismatic, revolute, rx, ForceCx};
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
 use crate::value::Value;
-use mechanism_core::{dyad, sweep};
+use mechanism_core::{dyad, sweep, Fault};
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
@@ -117,6 +118,27 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
 
     fn link_lengths(&self) -> Vec<&'a Value> {
         vec![self.l]
+    }
+
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let (a, guide) = (self.a, self.guide);
+        let Fault::CannotAssemble { miss, reach } = fault else {
+            return None;
+        };
+        Some(format!(
+            "at {at}, `{a}` is {} from the line of guide `{guide}`, {} more than the link's length {} reaches",
+            show_num(reach + miss),
+            show_num(*miss),
+            show_num(*reach)
+        ))
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        let (l, guide) = (&self.stmt.links, self.guide);
+        Some(format!(
+            "link `{}` is perpendicular to guide `{guide}` (the block cannot be pushed along it)",
+            l[0]
+        ))
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

@@ -6,10 +6,11 @@ use super::forces::{inner, revolute, rx, ForceCx};
 use super::rates::{states, two_links, RateCx};
 use super::tokens::{arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
 use crate::value::Value;
-use mechanism_core::{dyad, sweep};
+use mechanism_core::{dyad, sweep, Fault};
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
@@ -109,6 +110,44 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
 
     fn link_lengths(&self) -> Vec<&'a Value> {
         vec![self.l1, self.l2]
+    }
+
+    /// Too far apart (beyond `l1 + l2`) or too close (within `|l1 - l2|`).
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let (a, b) = (self.a, self.b);
+        let Fault::CannotAssemble { miss, reach } = fault else {
+            return None;
+        };
+        let (l1, l2) = (num(self.l1), num(self.l2));
+        Some(
+            if (reach - (l1 + l2)).abs() <= 1e-9 * reach.abs().max(1.0) {
+                format!(
+                "at {at}, `{a}` and `{b}` are {} apart, {} more than the links reach ({} + {} = {})",
+                show_num(reach + miss),
+                show_num(*miss),
+                show_num(l1),
+                show_num(l2),
+                show_num(*reach)
+            )
+            } else {
+                format!(
+                "at {at}, `{a}` and `{b}` are {} apart, {} less than the links' difference (|{} - {}| = {})",
+                show_num(reach - miss),
+                show_num(*miss),
+                show_num(l1),
+                show_num(l2),
+                show_num(*reach)
+            )
+            },
+        )
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        let l = &self.stmt.links;
+        Some(format!(
+            "links `{}` and `{}` are aligned (toggle)",
+            l[0], l[1]
+        ))
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {
