@@ -16,7 +16,7 @@
 pub mod check;
 pub mod diag;
 pub mod emit;
-pub mod kinds;
+pub(crate) mod kinds;
 pub mod model;
 pub mod parse;
 pub mod plan;

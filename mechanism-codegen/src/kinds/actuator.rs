@@ -4,6 +4,8 @@
 
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, revolute, rx, ForceCx, Held};
+use super::lane::{Lane, Step};
+use super::lane_shapes::{dyad, SecondSide};
 use super::rates::{states, two_links, RateCx};
 use super::tokens::{arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
@@ -157,4 +159,26 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         let doc = format!("Axial force of the actuator `{}` (input `{input}`; force units, positive when it pushes its ends apart).", links[1]);
         cx.reaction(drive(&rx, input, "axial", Held::Push, doc));
     }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.a, self.l, self.b, self.input, &self.mode)
+    }
+}
+
+/// A linear actuator between `a` and `b`: an RRR dyad (`lane::rrr`) whose
+/// second side is the input length `in_INPUT[k]` (length unit), its rates
+/// from `lane::actuator_rates` / `lane::actuator_accels` with the input's
+/// rates. See [`groups::rrr`].
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    a: &Ident,
+    l: &Value,
+    b: &Ident,
+    input: &Ident,
+    mode: &Mode,
+) -> Option<()> {
+    dyad(lane, s, a, l, b, SecondSide::Input(input), mode)
 }

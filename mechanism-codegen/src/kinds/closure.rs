@@ -80,7 +80,7 @@ impl<'a> Residuals<'a> {
     /// The assembly branch of a dyad on the two points `a`, `b`: the point
     /// on the side of `a -> b` that `mode` names.
     pub fn dyad_branch(&mut self, a: &Ident, b: &Ident, mode: Mode) {
-        let (n, m) = (self.n, sign(mode));
+        let (n, m) = (self.n, mode_sign(mode));
         self.push(
             "assembly branch",
             quote!(wrong_side(#m * cross(sub(pt(&pos.#b), pt(&pos.#a)), sub(pt(&pos.#n), pt(&pos.#a))) / norm(sub(pt(&pos.#b), pt(&pos.#a))))),
@@ -113,7 +113,7 @@ pub fn f(v: &Value) -> TokenStream {
 }
 
 /// The sign of an assembly mode: +1 for `Plus`, -1 for `Minus`.
-pub fn sign(m: Mode) -> f64 {
+pub fn mode_sign(m: Mode) -> f64 {
     match m {
         Mode::Plus => 1.0,
         Mode::Minus => -1.0,

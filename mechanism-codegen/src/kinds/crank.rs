@@ -3,6 +3,7 @@
 
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, revolute, rx, ForceCx, Held};
+use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{grp, local, tag, unit_field};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
@@ -11,7 +12,7 @@ use crate::model::Stmt;
 use crate::value::Value;
 use mechanism_core::driver;
 use proc_macro2::TokenStream;
-use quote::quote;
+use quote::{format_ident, quote};
 use syn::Ident;
 
 /// A `crank` statement. `cos_sin`: its input is marked `as cos_sin`.
@@ -133,4 +134,78 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         let doc = format!("Driving torque on `{link}` (input `{input}`; force x length units, counter-clockwise positive): the balancing moment.");
         cx.reaction(drive(&rx, input, "torque", Held::Torque, doc));
     }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.pivot, self.radius, self.input)
+    }
+}
+
+/// A crank about `pivot` of length `radius` (length unit) at the input
+/// angle `in_INPUT[k]` (radians, counter-clockwise from +x):
+/// `lane::crank`, then the tip's velocity and acceleration with
+/// `lane::rel_vel` / `lane::rel_acc` from the input's rates (rad/s,
+/// rad/s^2), which become the link's `w_LINK` / `al_LINK`. The link's angle
+/// is the input wrapped (`lane::wrap_angle`). `None` when the pivot is not
+/// known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    pivot: &Ident,
+    radius: &Value,
+    input: &Ident,
+) -> Option<()> {
+    let p = lane.point(pivot)?;
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let g = s.g.clone();
+    let (ppx, ppy) = (&p.px, &p.py);
+    let r = radius.emit();
+    let th = format_ident!("in_{}", input);
+    let rates = s.rates(0)?;
+    let (omega, alpha) = (&rates.omega, &rates.alpha);
+    s.emit(quote! {
+        let #g = ::mechanism::__private::lane::crank(#ppx, #ppy, #r, #th[k]);
+        ok &= #g.ok;
+        let #px = #g.x; let #py = #g.y;
+    });
+    if lane.vel {
+        let rate = format_ident!("rate_{}", input);
+        let (pvx, pvy) = (&p.vx, &p.vy);
+        s.emit(quote! {
+            let #omega = #rate[k];
+            let (tx, ty) = ::mechanism::__private::lane::rel_vel(#g.rx, #g.ry, #omega);
+            let #vx = #pvx + tx; let #vy = #pvy + ty;
+        });
+        s.check([quote!(#omega)]);
+    }
+    if lane.acc {
+        let accel = format_ident!("accel_{}", input);
+        let (pax, pay) = (&p.ax, &p.ay);
+        s.emit(quote! {
+            let #alpha = #accel[k];
+            let (tx, ty) = ::mechanism::__private::lane::rel_acc(#g.rx, #g.ry, #omega, #alpha);
+            let #ax = #pax + tx; let #ay = #pay + ty;
+        });
+        s.check([quote!(#alpha)]);
+    }
+    s.defines_link(
+        0,
+        LaneLink {
+            axis: Vector {
+                x: quote!(#g.ux),
+                y: quote!(#g.uy),
+            },
+            angle: quote!(::mechanism::__private::lane::wrap_angle(#th[k])),
+            omega: quote!(#omega),
+            alpha: quote!(#alpha),
+        },
+    )
 }

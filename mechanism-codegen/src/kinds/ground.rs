@@ -1,5 +1,6 @@
 //! `ground(x, y)`: a fixed point.
 
+use super::lane::{Lane, PointLocals, Step};
 use super::{GroupKind, Pose, Solve};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
@@ -45,4 +46,32 @@ impl<'a> GroupKind<'a> for Ground<'a> {
             ty: quote!(::mechanism::Point2<T>),
         }
     }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, _lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(s, self.x, self.y);
+        Some(())
+    }
+}
+
+/// A ground point at `(x, y)` (length unit): its position locals are the
+/// coordinates, its velocity and acceleration locals `zero` (later code
+/// reads them like any point's; the compiler folds them). No core call,
+/// nothing to check beyond the coordinates (see `Lane::commit`).
+fn lane_steps(s: &mut Step, x: &Value, y: &Value) {
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let (x, y) = (x.emit(), y.emit());
+    s.emit(quote! {
+        let #px = #x; let #py = #y;
+        let #vx = zero; let #vy = zero;
+        let #ax = zero; let #ay = zero;
+    });
 }

@@ -2,6 +2,8 @@
 //! or carried by a link (turning with the link's axis).
 
 use super::closure::{f, Residuals, Scale};
+use super::lane::{Lane, LaneGuide, Step, Vector};
+use super::lane_shapes::{carried, OriginMotion};
 use super::rates::RateCx;
 use super::tokens::{axis, local, unit_vector};
 use super::{GroupKind, Pose, Solve};
@@ -162,4 +164,52 @@ impl<'a> GroupKind<'a> for Guide<'a> {
     fn guide_carrier(&self) -> Option<Option<&'a Ident>> {
         Some(self.carrier)
     }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.origin, self.angle, self.carrier)
+    }
+}
+
+/// A guide line through `origin` at `angle` (radians): fixed, a
+/// `mechanism::__private::lane::Line` local `ln_NAME` whose motion is `None`; or
+/// carried by the link `carrier`, its direction the link's axis turned by
+/// `angle` (`lane::carried`), its motion `LineVelocity` / `LineAcceleration`
+/// locals (`gv_NAME`, `ga_NAME`) from the origin's motion and the link's
+/// rates. Defines no point. `None` when the origin point or the carrier is
+/// not known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    origin: &Origin,
+    angle: &Value,
+    carrier: Option<&Ident>,
+) -> Option<()> {
+    s.defines_no_point();
+    let line = format_ident!("ln_{}", s.name);
+    let origin = match origin {
+        Origin::Point(p) => OriginMotion::point(lane.point(p)?),
+        Origin::Coords(x, y) => OriginMotion::fixed(x, y),
+    };
+    let guide = match carrier {
+        None => {
+            let Vector { x: ox, y: oy } = &origin.p;
+            let Vector { x: dx, y: dy } = s.unit(angle);
+            s.emit(quote! {
+                let #line = ::mechanism::__private::lane::Line { ox: #ox, oy: #oy, dx: #dx, dy: #dy };
+            });
+            let none = quote!(::core::option::Option::None);
+            LaneGuide {
+                line,
+                gv: none.clone(),
+                ga: none,
+                omega: quote!(zero),
+                alpha: quote!(zero),
+            }
+        }
+        Some(link) => carried(lane, s, line, &origin, angle, link)?,
+    };
+    s.defines_guide(guide);
+    Some(())
 }

@@ -16,6 +16,8 @@ mod crank;
 pub mod forces;
 mod ground;
 mod guide;
+pub mod lane;
+mod lane_shapes;
 mod point;
 pub mod pose;
 mod prp;
@@ -182,6 +184,11 @@ pub trait GroupKind<'a> {
     fn singular_meaning(&self) -> Option<String> {
         None
     }
+
+    /// Its lane code in the batch kernel (`None`: it has none, or an
+    /// argument the kernel does not know; the batch then takes the scalar
+    /// path).
+    fn lane(&self, lane: &mut lane::Lane, s: &mut lane::Step<'_>) -> Option<()>;
 
     /// Its part of the force analysis (drivers and groups): its reactions
     /// from the loads of its links, passed (negated) to the bodies it is

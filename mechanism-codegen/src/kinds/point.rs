@@ -2,6 +2,8 @@
 //! fixed on a link, given in the link's frame.
 
 use super::closure::{f, Residuals};
+use super::lane::{Lane, PointLocals, Step, Vector};
+use super::lane_shapes::local_vector;
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{axis, local, tag, unit_vector};
 use super::{GroupKind, Pose, Solve};
@@ -116,6 +118,12 @@ impl<'a> GroupKind<'a> for Point<'a> {
     fn reads_axis(&self) -> Option<&'a Ident> {
         Some(self.link)
     }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.link, self.from, self.local)
+    }
 }
 
 /// A point's offset in its link's frame, folded when literal.
@@ -137,4 +145,49 @@ fn offset(offset: &Local) -> TokenStream {
             }
         },
     }
+}
+
+/// A point fixed on `link` at `local` coordinates from the point `from`
+/// (length unit; polar angles in radians from the link's axis): the offset
+/// `o_NAME` is the local vector turned by the link's axis, the velocity and
+/// acceleration add `lane::rel_vel` / `lane::rel_acc` of that offset with
+/// the link's rates. `None` when the link or `from` is not known yet.
+fn lane_steps(lane: &Lane, s: &mut Step, link: &Ident, from: &Ident, local: &Local) -> Option<()> {
+    let l = lane.link(link)?;
+    let f = lane.point(from)?;
+    let Vector { x: lx, y: ly } = local_vector(s, local);
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let Vector { x: ux, y: uy } = &l.axis;
+    let (fpx, fpy) = (&f.px, &f.py);
+    let o = super::lane::pv("o", s.name);
+    let (ox, oy) = (&o.x, &o.y);
+    s.emit(quote! {
+        let (lx, ly) = (#lx, #ly);
+        let #ox = #ux * lx - #uy * ly;
+        let #oy = #uy * lx + #ux * ly;
+        let #px = #fpx + #ox; let #py = #fpy + #oy;
+    });
+    let (omega, alpha) = (&l.omega, &l.alpha);
+    if lane.vel {
+        let (fvx, fvy) = (&f.vx, &f.vy);
+        s.emit(quote! {
+            let (tx, ty) = ::mechanism::__private::lane::rel_vel(#ox, #oy, #omega);
+            let #vx = #fvx + tx; let #vy = #fvy + ty;
+        });
+    }
+    if lane.acc {
+        let (fax, fay) = (&f.ax, &f.ay);
+        s.emit(quote! {
+            let (tx, ty) = ::mechanism::__private::lane::rel_acc(#ox, #oy, #omega, #alpha);
+            let #ax = #fax + tx; let #ay = #fay + ty;
+        });
+    }
+    Some(())
 }

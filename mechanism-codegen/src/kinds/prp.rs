@@ -3,6 +3,8 @@
 
 use super::closure::{guide_axis, Residuals};
 use super::forces::{inner, prismatic, rx, ForceCx};
+use super::lane::{Lane, LaneLink, PointLocals, Step};
+use super::lane_shapes::line_axis;
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, local};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
@@ -141,4 +143,67 @@ impl<'a> GroupKind<'a> for Prp<'a> {
         cx.reaction(inner(&rx, links, name, "c", false));
         cx.condition(quote!(#rx.min_pivot_ratio));
     }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.g1, self.g2, self.offset1, self.offset2)
+    }
+}
+
+/// A PRP group: the joint of two blocks, on `g1` at `offset1` and on `g2`
+/// at `offset2` (length unit) (`lane::prp`), its two slides (`s0_NAME`,
+/// `s1_NAME`) and their rates (`lane::prp_rates` / `lane::prp_accels`).
+/// Each block turns with its guide's body. `None` when a guide is not
+/// known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    g1: &Ident,
+    g2: &Ident,
+    offset1: &Value,
+    offset2: &Value,
+) -> Option<()> {
+    let (d1, d2) = (lane.guide(g1)?, lane.guide(g2)?);
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let g = s.g.clone();
+    let (l1, gv1, ga1) = (&d1.line, &d1.gv, &d1.ga);
+    let (l2, gv2, ga2) = (&d2.line, &d2.gv, &d2.ga);
+    let (o1, o2) = (offset1.emit(), offset2.emit());
+    let (slide1, slide2) = (s.slide_locals(0), s.slide_locals(1));
+    let (s1, sd1, sdd1) = (&slide1.s, &slide1.sd, &slide1.sdd);
+    let (s2, sd2, sdd2) = (&slide2.s, &slide2.sd, &slide2.sdd);
+    s.emit(quote! {
+        let #g = ::mechanism::__private::lane::prp(&#l1, #o1, &#l2, #o2);
+        ok &= #g.ok;
+        let #px = #g.x; let #py = #g.y;
+        let #s1 = #g.s1; let #s2 = #g.s2;
+    });
+    s.check([quote!(#s1), quote!(#s2)]);
+    if lane.vel {
+        s.emit(quote! {
+            let (#sd1, #sd2, #vx, #vy) = ::mechanism::__private::lane::prp_rates(&#g, &#l1, &#l2, #gv1, #gv2);
+        });
+        s.check([quote!(#sd1), quote!(#sd2)]);
+    }
+    if lane.acc {
+        s.emit(quote! {
+            let (#sdd1, #sdd2, #ax, #ay) = ::mechanism::__private::lane::prp_accels(&#g, &#l1, &#l2, #sd1, #sd2, #gv1, #ga1, #gv2, #ga2);
+        });
+        s.check([quote!(#sdd1), quote!(#sdd2)]);
+    }
+    s.defines_slide(0, &slide1);
+    s.defines_slide(1, &slide2);
+    for (k, d) in [d1, d2].into_iter().enumerate() {
+        let block = LaneLink::along(line_axis(&d.line), None, d.omega.clone(), d.alpha.clone());
+        s.defines_link(k, block)?;
+    }
+    Some(())
 }

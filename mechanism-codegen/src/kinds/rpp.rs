@@ -4,6 +4,8 @@
 
 use super::closure::{f, guide_axis, Residuals};
 use super::forces::{inner, prismatic, revolute, rx, ForceCx};
+use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
+use super::lane_shapes::{along_line, line_axis};
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, grp, local, unit_field, unit_vector};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
@@ -154,4 +156,71 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
         cx.reaction(prismatic(&rx, &bg, &links[1], a, "guide"));
         cx.condition(quote!(#rx.min_pivot_ratio));
     }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.a, self.guide, self.slot, self.offset)
+    }
+}
+
+/// An RPP group: a block sliding on `guide` (at `offset`, length unit)
+/// carrying a slot at `slot` (radians from the guide) through which the
+/// point `a` slides (`lane::rpp`), its two slides (`s0_NAME` along the
+/// guide, `s1_NAME` along the slot) and their rates (`lane::rpp_rates` /
+/// `lane::rpp_accels`). Both links turn with the guide's body: link 1 (the
+/// block) along the slot `w`, link 2 (the yoke) along the guide, as in the
+/// scalar path. `None` when `a` or the guide is not known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    a: &Ident,
+    guide: &Ident,
+    slot: &Value,
+    offset: &Value,
+) -> Option<()> {
+    let pa = lane.point(a)?;
+    let gd = lane.guide(guide)?;
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let g = s.g.clone();
+    let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
+    let Vector { x: lx, y: ly } = s.unit(slot);
+    let o = offset.emit();
+    let (slide1, slide2) = (s.slide_locals(0), s.slide_locals(1));
+    let (s1, sd1, sdd1) = (&slide1.s, &slide1.sd, &slide1.sdd);
+    let (s2, sd2, sdd2) = (&slide2.s, &slide2.sd, &slide2.sdd);
+    let (apx, apy) = (&pa.px, &pa.py);
+    s.emit(quote! {
+        let #g = ::mechanism::__private::lane::rpp(#apx, #apy, &#line, #o, #lx, #ly);
+        ok &= #g.ok;
+        let #px = #g.x; let #py = #g.y;
+        let #s1 = #g.s1; let #s2 = #g.s2;
+    });
+    s.check([quote!(#s1), quote!(#s2)]);
+    if lane.vel {
+        let (avx, avy) = (&pa.vx, &pa.vy);
+        s.emit(quote! {
+            let (#sd1, #sd2, #vx, #vy) = ::mechanism::__private::lane::rpp_rates(&#g, &#line, #apx, #apy, #avx, #avy, #gv);
+        });
+        s.check([quote!(#sd1), quote!(#sd2)]);
+    }
+    if lane.acc {
+        let (aax, aay) = (&pa.ax, &pa.ay);
+        s.emit(quote! {
+            let (#sdd1, #sdd2, #ax, #ay) = ::mechanism::__private::lane::rpp_accels(&#g, &#line, #apx, #apy, #aax, #aay, #sd1, #sd2, #gv, #ga);
+        });
+        s.check([quote!(#sdd1), quote!(#sdd2)]);
+    }
+    s.defines_slide(0, &slide1);
+    s.defines_slide(1, &slide2);
+    let turning = |v: Vector| LaneLink::along(v, None, gd.omega.clone(), gd.alpha.clone());
+    s.defines_link(0, turning(along_line(&g, "w")))?;
+    s.defines_link(1, turning(line_axis(line)))
 }

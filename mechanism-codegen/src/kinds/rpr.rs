@@ -1,8 +1,10 @@
 //! `rpr(A, B, mode) as (LINK1, LINK2)`: the RPR dyad, a block pinned at `A`
 //! sliding on a link turning about `B`; the defined name is the slide.
 
-use super::closure::{f, sign, Residuals};
+use super::closure::{f, mode_sign, Residuals};
 use super::forces::{inner, revolute, rx, ForceCx};
+use super::lane::{sign, Lane, LaneLink, Step};
+use super::lane_shapes::along_line;
 use super::rates::{states, Pieces, RateCx};
 use super::tokens::{grp, local, mode_tokens, unit_field};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
@@ -101,7 +103,7 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
     /// axis, and the branch (the sign of the slide).
     fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
         let (g, a, b) = (grp(self.stmt), self.a, self.b);
-        let (m, o) = (sign(self.mode), f(self.offset));
+        let (m, o) = (mode_sign(self.mode), f(self.offset));
         r.push(
             "slide line at its offset from B",
             quote!(cross(vc(&pos.#g.axis), sub(pt(&pos.#a), pt(&pos.#b))) - #o),
@@ -160,4 +162,64 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
         cx.reaction(inner(&rx, links, a, "slide", true));
         cx.condition(quote!(#rx.min_pivot_ratio));
     }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.a, self.b, &self.mode, self.offset)
+    }
+}
+
+/// An RPR group: a slide through `a` and `b` at `offset` (length unit)
+/// from the line `a`-`b`, on the side `mode` (`lane::rpr`); defines no
+/// point, only the slide (`s0_NAME`, named after the statement when the
+/// definition gives none) and the rates of its two links, which share the
+/// group's direction `u` (`lane::rpr_rates` / `lane::rpr_accels`). `None`
+/// when `a` or `b` is not known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    a: &Ident,
+    b: &Ident,
+    mode: &Mode,
+    offset: &Value,
+) -> Option<()> {
+    let (pa, pb) = (lane.point(a)?, lane.point(b)?);
+    s.defines_no_point();
+    let g = s.g.clone();
+    let (o, sign) = (offset.emit(), sign(mode));
+    let r = s.rates(0)?;
+    let (w, al) = (&r.omega, &r.alpha);
+    let slide = s.slide_locals(0);
+    let (sl, sd, sdd) = (&slide.s, &slide.sd, &slide.sdd);
+    let (apx, apy, bpx, bpy) = (&pa.px, &pa.py, &pb.px, &pb.py);
+    s.emit(quote! {
+        let #g = ::mechanism::__private::lane::rpr(#apx, #apy, #bpx, #bpy, #o, #sign);
+        ok &= #g.ok;
+        let #sl = #g.s;
+    });
+    s.check([quote!(#sl), quote!(#g.ux), quote!(#g.uy)]);
+    if lane.vel {
+        let (avx, avy, bvx, bvy) = (&pa.vx, &pa.vy, &pb.vx, &pb.vy);
+        s.emit(quote! {
+            ok &= #g.ok_rate;
+            let (#w, #sd) = ::mechanism::__private::lane::rpr_rates(&#g, #avx - #bvx, #avy - #bvy);
+        });
+        s.check([quote!(#w), quote!(#sd)]);
+    }
+    if lane.acc {
+        let (aax, aay, bax, bay) = (&pa.ax, &pa.ay, &pb.ax, &pb.ay);
+        s.emit(quote! {
+            let (#al, #sdd) = ::mechanism::__private::lane::rpr_accels(&#g, #aax - #bax, #aay - #bay, #w, #sd);
+        });
+        s.check([quote!(#al), quote!(#sdd)]);
+    }
+    s.defines_slide(0, &slide);
+    for k in 0..2 {
+        s.defines_link(
+            k,
+            LaneLink::along(along_line(&g, "u"), None, quote!(#w), quote!(#al)),
+        )?;
+    }
+    Some(())
 }

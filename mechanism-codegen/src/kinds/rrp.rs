@@ -1,8 +1,10 @@
 //! `rrp(A, l, GUIDE, mode) as (LINK, BLOCK)`: the RRP dyad, a link of length
 //! `l` from `A` pinned at the defined point to a block on a guide.
 
-use super::closure::{axis_between, f, guide_axis, sign, Residuals};
+use super::closure::{axis_between, f, guide_axis, mode_sign, Residuals};
 use super::forces::{inner, prismatic, revolute, rx, ForceCx};
+use super::lane::{sign, Lane, LaneLink, PointLocals, Step};
+use super::lane_shapes::{along_line, line_axis};
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
@@ -100,7 +102,7 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
     /// `C` at `l` from `A`, on the guide's offset line, on its branch
     /// (along the guide from `A`).
     fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
-        let (n, a, guide, m) = (r.n, self.a, self.guide, sign(self.mode));
+        let (n, a, guide, m) = (r.n, self.a, self.guide, mode_sign(self.mode));
         r.at_length("|C - A| = l", a, f(self.l));
         r.on_offset_line("C on the offset line", guide, self.offset);
         r.push(
@@ -157,4 +159,71 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
         cx.reaction(prismatic(&rx, &bg, &links[1], name, "guide"));
         cx.condition(quote!(#rx.min_pivot_ratio));
     }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.a, self.l, self.guide, &self.mode, self.offset)
+    }
+}
+
+/// An RRP group: the joint at distance `l` (length unit) from `a` and at
+/// `offset` across `guide`, on the side `mode` (`lane::rrp`), its slide
+/// along the guide (`s0_NAME`), rates with `lane::rrp_rates` /
+/// `lane::rrp_accels`. Link 1 lies along `r1`, link 2 (the block) turns
+/// with the guide. `None` when `a` or the guide is not known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    a: &Ident,
+    l: &Value,
+    guide: &Ident,
+    mode: &Mode,
+    offset: &Value,
+) -> Option<()> {
+    let pa = lane.point(a)?;
+    let gd = lane.guide(guide)?;
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let g = s.g.clone();
+    let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
+    let (l, o, sign) = (l.emit(), offset.emit(), sign(mode));
+    let r1 = s.rates(0)?;
+    let (w1, al1) = (&r1.omega, &r1.alpha);
+    let slide = s.slide_locals(0);
+    let (sl, sd, sdd) = (&slide.s, &slide.sd, &slide.sdd);
+    let (apx, apy) = (&pa.px, &pa.py);
+    s.emit(quote! {
+        let #g = ::mechanism::__private::lane::rrp(#apx, #apy, #l, &#line, #o, #sign);
+        ok &= #g.ok;
+        let #px = #g.x; let #py = #g.y;
+        let #sl = #g.s;
+    });
+    s.check([quote!(#sl)]);
+    if lane.vel {
+        let (avx, avy) = (&pa.vx, &pa.vy);
+        s.emit(quote! {
+            ok &= #g.ok_rate;
+            let (#w1, #sd, #vx, #vy) = ::mechanism::__private::lane::rrp_rates(&#g, &#line, #avx, #avy, #gv);
+        });
+        s.check([quote!(#w1), quote!(#sd)]);
+    }
+    if lane.acc {
+        let (aax, aay) = (&pa.ax, &pa.ay);
+        s.emit(quote! {
+            let (#al1, #sdd, #ax, #ay) = ::mechanism::__private::lane::rrp_accels(&#g, &#line, #aax, #aay, #w1, #sd, #gv, #ga);
+        });
+        s.check([quote!(#al1), quote!(#sdd)]);
+    }
+    s.defines_slide(0, &slide);
+    let (w1, al1) = (quote!(#w1), quote!(#al1));
+    s.defines_link(0, LaneLink::along(along_line(&g, "r1"), Some(&l), w1, al1))?;
+    let block = LaneLink::along(line_axis(line), None, gd.omega.clone(), gd.alpha.clone());
+    s.defines_link(1, block)
 }

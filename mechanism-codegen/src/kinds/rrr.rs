@@ -3,6 +3,8 @@
 
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{inner, revolute, rx, ForceCx};
+use super::lane::{Lane, Step};
+use super::lane_shapes::{dyad, SecondSide};
 use super::rates::{states, two_links, RateCx};
 use super::tokens::{arm, local, mode_tokens};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
@@ -165,4 +167,25 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
         cx.reaction(inner(&rx, links, name, "c", false));
         cx.condition(quote!(#rx.min_pivot_ratio));
     }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.a, self.l1, self.b, self.l2, &self.mode)
+    }
+}
+
+/// An RRR group: the joint at distance `l1` from `a` and `l2` from `b`
+/// (length unit), on the side `mode` (`lane::rrr`), its rates with
+/// `lane::rrr_rates` / `lane::rrr_accels`. See [`dyad`].
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    a: &Ident,
+    l1: &Value,
+    b: &Ident,
+    l2: &Value,
+    mode: &Mode,
+) -> Option<()> {
+    dyad(lane, s, a, l1, b, SecondSide::Length(l2), mode)
 }

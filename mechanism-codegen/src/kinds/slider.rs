@@ -3,6 +3,7 @@
 
 use super::closure::{guide_axis, Residuals};
 use super::forces::{drive, prismatic, rx, ForceCx, Held};
+use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{along, grp, local, tag};
 use super::{GroupKind, LinkShape, Pose, Solve, Turn};
@@ -11,7 +12,7 @@ use crate::model::Stmt;
 use crate::value::Value;
 use mechanism_core::driver;
 use proc_macro2::TokenStream;
-use quote::quote;
+use quote::{format_ident, quote};
 use syn::Ident;
 
 /// A `slider` statement.
@@ -120,4 +121,66 @@ impl<'a> GroupKind<'a> for Slider<'a> {
         let doc = format!("Driving force on `{link}` along its guide (input `{input}`; force units, positive along the guide's direction).");
         cx.reaction(drive(&rx, input, "drive", Held::Push, doc));
     }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.guide, self.input, self.offset)
+    }
+}
+
+/// A slider on `guide` at the input displacement `in_INPUT[k]` (length
+/// unit, along the guide's direction) plus `offset` across it:
+/// `lane::slider`, `lane::slider_velocity` and `lane::slider_acceleration`
+/// (the guide's motion folds away for a fixed guide). The block's link
+/// turns with the guide's body. `None` when the guide is not known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    guide: &Ident,
+    input: &Ident,
+    offset: &Value,
+) -> Option<()> {
+    let gd = lane.guide(guide)?;
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
+    let o = offset.emit();
+    let input_s = format_ident!("in_{}", input);
+    s.emit(quote! {
+        let (#px, #py) = ::mechanism::__private::lane::slider(&#line, #o, #input_s[k]);
+    });
+    s.check([quote!(#input_s[k])]);
+    let rate = format_ident!("rate_{}", input);
+    if lane.vel {
+        s.emit(quote! {
+            let (#vx, #vy) = ::mechanism::__private::lane::slider_velocity(&#line, #px, #py, #rate[k], #gv);
+        });
+        s.check([quote!(#rate[k])]);
+    }
+    if lane.acc {
+        let accel = format_ident!("accel_{}", input);
+        s.emit(quote! {
+            let (#ax, #ay) = ::mechanism::__private::lane::slider_acceleration(&#line, #px, #py, #rate[k], #accel[k], #gv, #ga);
+        });
+        s.check([quote!(#accel[k])]);
+    }
+    s.defines_link(
+        0,
+        LaneLink::along(
+            Vector {
+                x: quote!(#line.dx),
+                y: quote!(#line.dy),
+            },
+            None,
+            gd.omega.clone(),
+            gd.alpha.clone(),
+        ),
+    )
 }

@@ -25,17 +25,11 @@
 //! apart from the checks inside the primitives.
 //!
 //! `solve_batch` first runs the vectorizable kernel `__lane_batch` when the
-//! definition has one (`lane`: the kernel and the state the statements
-//! share; one function per statement kind in `points` (ground, guide,
-//! point on a link), `drivers` (crank, slider, actuator) and `groups`
-//! (RRR, RRP, RPR, PRP, RPP)), then the scalar path for the elements the
-//! kernel did not accept.
+//! definition has one (`kernel`; the state the statements share is
+//! `kinds::lane`, each kind's lane code is its `GroupKind::lane`), then the
+//! scalar path for the elements the kernel did not accept.
 
-mod drivers;
-mod groups;
 mod kernel;
-mod lane;
-mod points;
 #[cfg(test)]
 mod tests;
 
