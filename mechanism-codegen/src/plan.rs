@@ -4,7 +4,7 @@
 
 use crate::diag::Diagnostics;
 use crate::kinds::{self, LinkShape};
-use crate::model::{ForceSpecValue, Kind, Model, Stmt};
+use crate::model::{ForceSpecValue, Model, Stmt};
 use std::collections::{BTreeMap, BTreeSet};
 use syn::Ident;
 
@@ -87,14 +87,15 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
             defined.insert(l.to_string(), i);
             let _ = j;
         }
-        if let Kind::Ground { .. } = stmt.kind {
+        let kind = kinds::of(stmt);
+        if kind.point_owner() == Some(None) {
             ground.push(stmt.name.to_string());
         }
-        if let Kind::Guide { carrier, .. } = &stmt.kind {
+        if let Some(carrier) = kind.guide_carrier() {
             guides.insert(
                 stmt.name.to_string(),
                 GuideInfo {
-                    carrier: carrier.as_ref().map(Ident::to_string),
+                    carrier: carrier.map(Ident::to_string),
                 },
             );
         }
@@ -135,7 +136,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
         }
     }
     for stmt in &model.stmts {
-        if let Kind::Point { link, .. } = &stmt.kind {
+        if let Some(link) = kinds::of(stmt).on_link() {
             if let Some(info) = links.get_mut(&link.to_string()) {
                 info.points.push(stmt.name.to_string());
             }
@@ -295,22 +296,15 @@ fn outputs(model: &Model, plan: &Plan) -> Outputs {
     };
     for &i in &plan.order {
         let stmt = &model.stmts[i];
-        match stmt.kind {
-            Kind::Guide { .. } => {}
-            Kind::Rpr { .. } => {
-                if wanted(&stmt.name) {
-                    out.slides.push(Slide {
-                        name: stmt.name.clone(),
-                        stmt: i,
-                        slot: 0,
-                    });
-                }
-            }
-            _ => {
-                if wanted(&stmt.name) {
-                    out.points.push(stmt.name.clone());
-                }
-            }
+        let kind = kinds::of(stmt);
+        if kind.names_slide() && wanted(&stmt.name) {
+            out.slides.push(Slide {
+                name: stmt.name.clone(),
+                stmt: i,
+                slot: 0,
+            });
+        } else if kind.point_kind().is_some() && wanted(&stmt.name) {
+            out.points.push(stmt.name.clone());
         }
         for (link, named) in stmt.links.iter().zip(&stmt.links_named) {
             if *named && wanted(link) {

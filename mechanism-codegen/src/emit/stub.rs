@@ -2,8 +2,8 @@
 //! the `compile_error!`s, and stubs with the real names and fields so the
 //! user's own code reports no follow-on errors.
 
-use crate::kinds::forces::FieldsOnly;
-use crate::model::{Kind, Level, Model};
+use crate::kinds::{self, forces::FieldsOnly};
+use crate::model::{Level, Model};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use std::collections::BTreeSet;
@@ -45,7 +45,7 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
     let points: Vec<&Ident> = model
         .stmts
         .iter()
-        .filter(|s| !matches!(s.kind, Kind::Guide { .. } | Kind::Rpr { .. }))
+        .filter(|s| kinds::of(s).point_kind().is_some())
         .map(|s| &s.name)
         .chain(
             model
@@ -60,7 +60,7 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         .stmts
         .iter()
         .flat_map(|s| {
-            let rpr = matches!(s.kind, Kind::Rpr { .. }).then_some(&s.name);
+            let rpr = kinds::of(s).names_slide().then_some(&s.name);
             s.links
                 .iter()
                 .zip(&s.links_named)

@@ -7,8 +7,8 @@ use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
 use super::rates::{states, two_links, RateCx};
-use super::tokens::{arm, local, mode_tokens};
-use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use super::tokens::{arm, grp, local, mode_tokens};
+use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
@@ -137,6 +137,37 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
             "the cylinder `{}` is aligned with link `{}` (dead centre)",
             l[1], l[0]
         ))
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Actuator"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let g = grp(self.stmt);
+        quote!(::mechanism::__private::det_rrr(&pos.#g))
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, a, b, input) = (
+            &self.stmt.name,
+            links_text(self.stmt),
+            self.a,
+            self.b,
+            self.input,
+        );
+        format!(
+            "driver: linear actuator `{links}` from `{b}`, link pivoted at `{a}`, input `{input}`, joint `{n}`, {}",
+            mode_text(self.mode)
+        )
+    }
+
+    fn link_kind(&self, index: usize) -> &'static str {
+        if index == 1 {
+            "Cylinder"
+        } else {
+            "Bar"
+        }
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

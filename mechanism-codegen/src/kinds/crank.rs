@@ -6,7 +6,7 @@ use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{grp, local, tag, unit_field};
-use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -116,6 +116,33 @@ impl<'a> GroupKind<'a> for Crank<'a> {
 
     fn link_lengths(&self) -> Vec<&'a Value> {
         vec![self.radius]
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Crank"
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, pivot, input) = (
+            &self.stmt.name,
+            links_text(self.stmt),
+            self.pivot,
+            self.input,
+        );
+        format!("driver: crank `{links}` about `{pivot}`, input `{input}`, tip `{n}`")
+    }
+
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Crank"
+    }
+
+    fn input_is_angle(&self) -> bool {
+        true
+    }
+
+    /// The crank's link: its angle is the input, its rates the input's.
+    fn given_by_caller(&self, output: &Ident) -> bool {
+        self.stmt.links.first() == Some(output)
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

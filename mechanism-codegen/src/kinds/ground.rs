@@ -47,6 +47,26 @@ impl<'a> GroupKind<'a> for Ground<'a> {
         }
     }
 
+    fn describe(&self) -> String {
+        format!("ground point `{}`", self.stmt.name)
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Ground")
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        false
+    }
+
+    fn given_by_caller(&self, output: &Ident) -> bool {
+        self.stmt.name == *output
+    }
+
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, _lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {

@@ -165,6 +165,26 @@ impl<'a> GroupKind<'a> for Guide<'a> {
         Some(self.carrier)
     }
 
+    fn describe(&self) -> String {
+        let n = &self.stmt.name;
+        match self.carrier {
+            None => format!("fixed guide `{n}`"),
+            Some(l) => format!("guide `{n}` carried by `{l}`"),
+        }
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        None
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        false
+    }
+
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {

@@ -12,7 +12,7 @@
 //! `mechanism::__private::lane::Line`. Values that do not depend on the element (a unit
 //! vector at a run-time angle, `u_NAME`) are computed once before the loop.
 
-use crate::model::{Kind, Mode, Stmt};
+use crate::model::{Mode, Stmt};
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -391,9 +391,9 @@ impl<'s> Step<'s> {
     /// (an RPR's slide without one under the statement's name; other
     /// unnamed slides are no output and stay unknown).
     pub fn defines_slide(&mut self, slot: usize, l: &SlideLocals) {
-        let slide = match (&self.stmt.kind, self.stmt.slides.get(slot)) {
-            (_, Some(Some(s))) => Some(s.to_string()),
-            (Kind::Rpr { .. }, _) => Some(self.name.to_string()),
+        let slide = match self.stmt.slides.get(slot) {
+            Some(Some(s)) => Some(s.to_string()),
+            _ if super::of(self.stmt).names_slide() => Some(self.name.to_string()),
             _ => None,
         };
         if let Some(name) = slide {

@@ -190,6 +190,60 @@ pub trait GroupKind<'a> {
     /// path).
     fn lane(&self, lane: &mut lane::Lane, s: &mut lane::Step<'_>) -> Option<()>;
 
+    /// The core's tag of the primitive it calls (`mechanism::Primitive`),
+    /// for run-time errors.
+    fn primitive(&self) -> &'static str {
+        "LinkPoint"
+    }
+
+    /// Its scaled determinant (the same as its `eval`'s) from the generated
+    /// position struct `pos` (code of `check()`); 1 without a rate system.
+    fn det_code(&self) -> TokenStream {
+        quote!(1.0)
+    }
+
+    /// Its line in the structure listing of the generated type's doc comment.
+    fn describe(&self) -> String;
+
+    /// The kind of point it defines (`mechanism::structure::PointKind`),
+    /// `None` when it defines none (a guide, an RPR's slide).
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Joint")
+    }
+
+    /// Whether the point it defines moves, given which links turn and
+    /// which points move before it.
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        true
+    }
+
+    /// The kind of its link `index` (`mechanism::structure::LinkKind`) when
+    /// it does not slide on a guide.
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Bar"
+    }
+
+    /// `true` when its input is an angle (rad), `false` a length.
+    fn input_is_angle(&self) -> bool {
+        false
+    }
+
+    /// `true` for an output the batch leaves out because the caller has it
+    /// already (a ground point, a crank's link).
+    fn given_by_caller(&self, _output: &Ident) -> bool {
+        false
+    }
+
+    /// `true` when its slide without a name of its own is an output under
+    /// the statement's name (an RPR's).
+    fn names_slide(&self) -> bool {
+        false
+    }
+
     /// Its part of the force analysis (drivers and groups): its reactions
     /// from the loads of its links, passed (negated) to the bodies it is
     /// attached to, its fields in the forces struct, its conditioning and
@@ -201,10 +255,29 @@ pub trait GroupKind<'a> {
         None
     }
 
+    /// For a point on a link: the link.
+    fn on_link(&self) -> Option<&'a Ident> {
+        None
+    }
+
     /// The link whose unit axis its position reads (a link point's link, a
     /// carried guide's carrier).
     fn reads_axis(&self) -> Option<&'a Ident> {
         None
+    }
+}
+
+/// The links of a statement, `a, b`, for listings.
+fn links_text(stmt: &Stmt) -> String {
+    let links: Vec<String> = stmt.links.iter().map(ToString::to_string).collect();
+    links.join(", ")
+}
+
+/// How the structure listing writes an assembly mode.
+fn mode_text(m: crate::model::Mode) -> &'static str {
+    match m {
+        crate::model::Mode::Plus => "mode plus (m = +1)",
+        crate::model::Mode::Minus => "mode minus (m = -1)",
     }
 }
 

@@ -119,6 +119,28 @@ impl<'a> GroupKind<'a> for Point<'a> {
         Some(self.link)
     }
 
+    fn on_link(&self) -> Option<&'a Ident> {
+        Some(self.link)
+    }
+
+    fn describe(&self) -> String {
+        let (n, link, from) = (&self.stmt.name, self.link, self.from);
+        format!("point `{n}` on `{link}` (from `{from}`)")
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("OnLink")
+    }
+
+    /// It moves when its link turns or its base point moves.
+    fn point_moves(
+        &self,
+        link_turns: &dyn Fn(&Ident) -> bool,
+        moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        link_turns(self.link) || moves(self.from)
+    }
+
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {

@@ -7,7 +7,7 @@ use super::lane::{Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::line_axis;
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, local};
-use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -124,6 +124,20 @@ impl<'a> GroupKind<'a> for Prp<'a> {
     fn singular_meaning(&self) -> Option<String> {
         let (g1, g2) = (self.g1, self.g2);
         Some(format!("guides `{g1}` and `{g2}` are parallel"))
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Prp"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let (g1, g2) = (self.g1, self.g2);
+        quote!(::mechanism::__private::det_prp(&pos.#g1, &pos.#g2))
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, g1, g2) = (&self.stmt.name, links_text(self.stmt), self.g1, self.g2);
+        format!("PRP group `{links}`: guides `{g1}`, `{g2}` -> `{n}`")
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

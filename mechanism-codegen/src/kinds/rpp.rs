@@ -8,7 +8,7 @@ use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::lane_shapes::{along_line, line_axis};
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, grp, local, unit_field, unit_vector};
-use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -138,6 +138,22 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
     fn singular_meaning(&self) -> Option<String> {
         let guide = self.guide;
         Some(format!("the slot is parallel to guide `{guide}`"))
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Rpp"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let (g, guide) = (grp(self.stmt), self.guide);
+        quote!(::mechanism::__private::det_rpp(&pos.#g, &pos.#guide))
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, a, guide) = (&self.stmt.name, links_text(self.stmt), self.a, self.guide);
+        format!(
+            "RPP group `{links}`: block at `{a}`, link on guide `{guide}`, reference point `{n}`"
+        )
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

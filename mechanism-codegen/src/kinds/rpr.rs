@@ -7,7 +7,7 @@ use super::lane::{sign, Lane, LaneLink, Step};
 use super::lane_shapes::along_line;
 use super::rates::{states, Pieces, RateCx};
 use super::tokens::{grp, local, mode_tokens, unit_field};
-use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
@@ -145,6 +145,49 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
         Some(format!(
             "`{a}` is at the foot of the perpendicular from `{b}` on the slide line"
         ))
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Rpr"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let (g, a, b) = (grp(self.stmt), self.a, self.b);
+        quote!(::mechanism::__private::det_rpr(&pos.#g, &pos.#a, &pos.#b))
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, a, b) = (&self.stmt.name, links_text(self.stmt), self.a, self.b);
+        format!(
+            "RPR group `{links}`: block at `{a}` on link pivoted at `{b}`, slide `{n}`, {}",
+            mode_text(self.mode)
+        )
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        None
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        false
+    }
+
+    /// The first link is the block sliding along the second.
+    fn link_kind(&self, index: usize) -> &'static str {
+        if index == 0 {
+            "Block"
+        } else {
+            "Bar"
+        }
+    }
+
+    /// Its slide is its defined name.
+    fn names_slide(&self) -> bool {
+        true
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

@@ -6,8 +6,8 @@ use super::forces::{inner, prismatic, revolute, rx, ForceCx};
 use super::lane::{sign, Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::{along_line, line_axis};
 use super::rates::{states, vec_ty, Pieces, RateCx};
-use super::tokens::{along, arm, local, mode_tokens};
-use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use super::tokens::{along, arm, grp, local, mode_tokens};
+use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
@@ -141,6 +141,23 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
             "link `{}` is perpendicular to guide `{guide}` (the block cannot be pushed along it)",
             l[0]
         ))
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Rrp"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let (g, guide) = (grp(self.stmt), self.guide);
+        quote!(::mechanism::__private::det_rrp(&pos.#g, &pos.#guide))
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, a, guide) = (&self.stmt.name, links_text(self.stmt), self.a, self.guide);
+        format!(
+            "RRP group `{links}`: `{a}` and guide `{guide}` -> `{n}`, {}",
+            mode_text(self.mode)
+        )
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

@@ -6,8 +6,8 @@ use super::forces::{inner, revolute, rx, ForceCx};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
 use super::rates::{states, two_links, RateCx};
-use super::tokens::{arm, local, mode_tokens};
-use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use super::tokens::{arm, grp, local, mode_tokens};
+use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
@@ -150,6 +150,23 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
             "links `{}` and `{}` are aligned (toggle)",
             l[0], l[1]
         ))
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Rrr"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let g = grp(self.stmt);
+        quote!(::mechanism::__private::det_rrr(&pos.#g))
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, a, b) = (&self.stmt.name, links_text(self.stmt), self.a, self.b);
+        format!(
+            "RRR group `{links}`: `{a}`, `{b}` -> `{n}`, {}",
+            mode_text(self.mode)
+        )
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

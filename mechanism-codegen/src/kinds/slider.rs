@@ -6,7 +6,7 @@ use super::forces::{drive, prismatic, rx, ForceCx, Held};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{along, grp, local, tag};
-use super::{GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, GroupKind, LinkShape, Pose, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -100,6 +100,20 @@ impl<'a> GroupKind<'a> for Slider<'a> {
 
     fn closure_axis(&self, _index: usize) -> TokenStream {
         guide_axis(self.guide)
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Slider"
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, guide, input) = (
+            &self.stmt.name,
+            links_text(self.stmt),
+            self.guide,
+            self.input,
+        );
+        format!("driver: slider `{links}` on `{guide}`, input `{input}`, pin `{n}`")
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {

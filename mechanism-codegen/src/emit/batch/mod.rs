@@ -33,7 +33,8 @@ mod kernel;
 #[cfg(test)]
 mod tests;
 
-use crate::model::{Kind, Level, Model};
+use crate::kinds;
+use crate::model::{Level, Model};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -509,9 +510,8 @@ fn solve_batch(
 /// the element's input, its rates the input's rates). Writing them for every
 /// element would be memory traffic only.
 fn given(model: &Model, output: &Ident) -> bool {
-    model.stmts.iter().any(|s| match &s.kind {
-        Kind::Ground { .. } => s.name == *output,
-        Kind::Crank { .. } => s.links.first() == Some(output),
-        _ => false,
-    })
+    model
+        .stmts
+        .iter()
+        .any(|s| kinds::of(s).given_by_caller(output))
 }
