@@ -71,7 +71,11 @@ pub fn point_owner(stmt: &Stmt) -> Option<Option<String>> {
 
 /// Names a statement refers to (points, guides, links), with their tokens.
 pub fn references(stmt: &Stmt) -> Vec<&Ident> {
-    kinds::of(stmt).references()
+    kinds::of(stmt)
+        .references()
+        .into_iter()
+        .map(|(r, _)| r)
+        .collect()
 }
 
 /// Builds the plan. Errors: dependency cycles (with the cycle spelled out).

@@ -5,7 +5,7 @@
 use super::names::{debug_impl, grp, local, marker, output_docs, tag, Generated, TypeNames};
 use super::reads::{Analysis, Reads};
 use crate::kinds::{self, tokens::axis, Solve};
-use crate::model::{Kind, Model, Stmt};
+use crate::model::{Model, Stmt};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -291,14 +291,7 @@ fn marked_cranks(model: &Model) -> Vec<&Ident> {
     model
         .stmts
         .iter()
-        .filter_map(|s| match &s.kind {
-            Kind::Crank {
-                input,
-                cos_sin: true,
-                ..
-            } => Some(input),
-            _ => None,
-        })
+        .filter_map(|s| kinds::of(s).cos_sin_input())
         .collect()
 }
 

@@ -8,7 +8,7 @@ use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
 use super::rates::{states, two_links, RateCx};
 use super::tokens::{arm, grp, local, mode_tokens};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
@@ -29,8 +29,8 @@ pub(super) struct Actuator<'a> {
 }
 
 impl<'a> GroupKind<'a> for Actuator<'a> {
-    fn references(&self) -> Vec<&'a Ident> {
-        vec![self.a, self.b]
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.a, Role::Point), (self.b, Role::Point)]
     }
 
     fn link_shapes(&self) -> Vec<LinkShape> {
@@ -189,6 +189,23 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         cx.condition(quote!(#rx.min_pivot_ratio));
         let doc = format!("Axial force of the actuator `{}` (input `{input}`; force units, positive when it pushes its ends apart).", links[1]);
         cx.reaction(drive(&rx, input, "axial", Held::Push, doc));
+    }
+
+    /// Cylinder = barrel + rod: three bodies, four lower pairs.
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (3, 4)
+    }
+
+    fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {
+        Some((
+            self.a,
+            self.b,
+            "points (the link's pivot and the cylinder's base)",
+        ))
+    }
+
+    fn cylinder(&self) -> Option<&'a Ident> {
+        self.stmt.links.get(1)
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

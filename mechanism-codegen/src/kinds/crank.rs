@@ -6,7 +6,7 @@ use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{grp, local, tag, unit_field};
-use super::{links_text, GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -25,8 +25,8 @@ pub(super) struct Crank<'a> {
 }
 
 impl<'a> GroupKind<'a> for Crank<'a> {
-    fn references(&self) -> Vec<&'a Ident> {
-        vec![self.pivot]
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.pivot, Role::Point)]
     }
 
     fn link_shapes(&self) -> Vec<LinkShape> {
@@ -160,6 +160,14 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         cx.power(quote!(#rx.torque * vel.rates.#input));
         let doc = format!("Driving torque on `{link}` (input `{input}`; force x length units, counter-clockwise positive): the balancing moment.");
         cx.reaction(drive(&rx, input, "torque", Held::Torque, doc));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (1, 1)
+    }
+
+    fn cos_sin_input(&self) -> Option<&'a Ident> {
+        self.cos_sin.then_some(self.input)
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

@@ -1,7 +1,7 @@
 //! `ground(x, y)`: a fixed point.
 
 use super::lane::{Lane, PointLocals, Step};
-use super::{GroupKind, Pose, Solve};
+use super::{GroupKind, Pose, Role, Solve};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -17,7 +17,7 @@ pub(super) struct Ground<'a> {
 }
 
 impl<'a> GroupKind<'a> for Ground<'a> {
-    fn references(&self) -> Vec<&'a Ident> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
         vec![]
     }
 

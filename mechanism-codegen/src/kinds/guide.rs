@@ -6,7 +6,7 @@ use super::lane::{Lane, LaneGuide, Step, Vector};
 use super::lane_shapes::{carried, OriginMotion};
 use super::rates::RateCx;
 use super::tokens::{axis, local, unit_vector};
-use super::{GroupKind, Pose, Solve};
+use super::{GroupKind, Pose, Role, Solve};
 use crate::kinds::pose::num;
 use crate::model::{Origin, Stmt};
 use crate::value::{lit, Value};
@@ -25,12 +25,12 @@ pub(super) struct Guide<'a> {
 }
 
 impl<'a> GroupKind<'a> for Guide<'a> {
-    fn references(&self) -> Vec<&'a Ident> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
         let mut r = vec![];
         if let Origin::Point(p) = self.origin {
-            r.push(p);
+            r.push((p, Role::Point));
         }
-        r.extend(self.carrier);
+        r.extend(self.carrier.map(|c| (c, Role::Link)));
         r
     }
 

@@ -47,6 +47,17 @@ pub enum Turn {
     With(String),
 }
 
+/// What a name a statement refers to must be.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Role {
+    /// A point.
+    Point,
+    /// A guide.
+    Guide,
+    /// A link.
+    Link,
+}
+
 /// A link a statement creates: the points fixed on it (the first is the
 /// link's origin), how it turns (before guide carriers are resolved), and
 /// the guide it slides on (a block), if any.
@@ -92,8 +103,9 @@ pub enum Solve {
 /// What the macro knows about one statement kind. Implemented once per
 /// kind, on a view of one statement of that kind ([`of`]).
 pub trait GroupKind<'a> {
-    /// Names the statement refers to (points, guides, links), with their tokens.
-    fn references(&self) -> Vec<&'a Ident>;
+    /// Names the statement refers to, with their tokens and what each must
+    /// name.
+    fn references(&self) -> Vec<(&'a Ident, Role)>;
 
     /// The links the statement creates, in the order of `Stmt::links`.
     fn link_shapes(&self) -> Vec<LinkShape> {
@@ -241,6 +253,35 @@ pub trait GroupKind<'a> {
     /// `true` when its slide without a name of its own is an output under
     /// the statement's name (an RPR's).
     fn names_slide(&self) -> bool {
+        false
+    }
+
+    /// The bodies it adds and the lower pairs it closes, for the mobility
+    /// count (Gruebler: `3 (n - 1) - 2 j`).
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (0, 0)
+    }
+
+    /// For a group on two known places: the two and what they are, for the
+    /// rule that they differ (`validate`).
+    fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {
+        None
+    }
+
+    /// The link that is a massless two-force member carrying no load (an
+    /// actuator's cylinder).
+    fn cylinder(&self) -> Option<&'a Ident> {
+        None
+    }
+
+    /// For a crank marked `as cos_sin`: its input.
+    fn cos_sin_input(&self) -> Option<&'a Ident> {
+        None
+    }
+
+    /// `true` for a group whose joint can be at infinity (its position
+    /// itself fails at a singular pose: the PRP, the RPP).
+    fn joint_at_infinity(&self) -> bool {
         false
     }
 

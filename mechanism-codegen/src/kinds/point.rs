@@ -6,7 +6,7 @@ use super::lane::{Lane, PointLocals, Step, Vector};
 use super::lane_shapes::local_vector;
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{axis, local, tag, unit_vector};
-use super::{GroupKind, Pose, Solve};
+use super::{GroupKind, Pose, Role, Solve};
 use crate::kinds::pose::num;
 use crate::model::{Local, Stmt};
 use crate::value::{lit, Value};
@@ -24,8 +24,8 @@ pub(super) struct Point<'a> {
 }
 
 impl<'a> GroupKind<'a> for Point<'a> {
-    fn references(&self) -> Vec<&'a Ident> {
-        vec![self.link, self.from]
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.link, Role::Link), (self.from, Role::Point)]
     }
 
     fn point_owner(&self) -> Option<Option<String>> {

@@ -7,7 +7,7 @@ use super::lane::{Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::line_axis;
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, local};
-use super::{links_text, GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -26,8 +26,8 @@ pub(super) struct Prp<'a> {
 }
 
 impl<'a> GroupKind<'a> for Prp<'a> {
-    fn references(&self) -> Vec<&'a Ident> {
-        vec![self.g1, self.g2]
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.g1, Role::Guide), (self.g2, Role::Guide)]
     }
 
     fn link_shapes(&self) -> Vec<LinkShape> {
@@ -156,6 +156,18 @@ impl<'a> GroupKind<'a> for Prp<'a> {
         cx.reaction(prismatic(&rx, &c2, &links[1], name, "guide2"));
         cx.reaction(inner(&rx, links, name, "c", false));
         cx.condition(quote!(#rx.min_pivot_ratio));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (2, 3)
+    }
+
+    fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {
+        Some((self.g1, self.g2, "guides"))
+    }
+
+    fn joint_at_infinity(&self) -> bool {
+        true
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

@@ -8,7 +8,7 @@ use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::lane_shapes::{along_line, line_axis};
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, grp, local, unit_field, unit_vector};
-use super::{links_text, GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -27,8 +27,8 @@ pub(super) struct Rpp<'a> {
 }
 
 impl<'a> GroupKind<'a> for Rpp<'a> {
-    fn references(&self) -> Vec<&'a Ident> {
-        vec![self.a, self.guide]
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.a, Role::Point), (self.guide, Role::Guide)]
     }
 
     fn link_shapes(&self) -> Vec<LinkShape> {
@@ -171,6 +171,14 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
         cx.reaction(inner(&rx, links, a, "slot", true));
         cx.reaction(prismatic(&rx, &bg, &links[1], a, "guide"));
         cx.condition(quote!(#rx.min_pivot_ratio));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (2, 3)
+    }
+
+    fn joint_at_infinity(&self) -> bool {
+        true
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

@@ -7,7 +7,7 @@ use super::lane::{sign, Lane, LaneLink, Step};
 use super::lane_shapes::along_line;
 use super::rates::{states, Pieces, RateCx};
 use super::tokens::{grp, local, mode_tokens, unit_field};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
@@ -27,8 +27,8 @@ pub(super) struct Rpr<'a> {
 }
 
 impl<'a> GroupKind<'a> for Rpr<'a> {
-    fn references(&self) -> Vec<&'a Ident> {
-        vec![self.a, self.b]
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.a, Role::Point), (self.b, Role::Point)]
     }
 
     fn link_shapes(&self) -> Vec<LinkShape> {
@@ -204,6 +204,18 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
         cx.reaction(revolute(&rx, &bb, &links[1], b, "b"));
         cx.reaction(inner(&rx, links, a, "slide", true));
         cx.condition(quote!(#rx.min_pivot_ratio));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (2, 3)
+    }
+
+    fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {
+        Some((
+            self.a,
+            self.b,
+            "points (the block's pin and the link's pivot)",
+        ))
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

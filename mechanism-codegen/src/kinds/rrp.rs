@@ -7,7 +7,7 @@ use super::lane::{sign, Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::{along_line, line_axis};
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, arm, grp, local, mode_tokens};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
@@ -28,8 +28,8 @@ pub(super) struct Rrp<'a> {
 }
 
 impl<'a> GroupKind<'a> for Rrp<'a> {
-    fn references(&self) -> Vec<&'a Ident> {
-        vec![self.a, self.guide]
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.a, Role::Point), (self.guide, Role::Guide)]
     }
 
     fn link_shapes(&self) -> Vec<LinkShape> {
@@ -175,6 +175,10 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
         cx.reaction(inner(&rx, links, name, "c", false));
         cx.reaction(prismatic(&rx, &bg, &links[1], name, "guide"));
         cx.condition(quote!(#rx.min_pivot_ratio));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (2, 3)
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

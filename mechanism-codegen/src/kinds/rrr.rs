@@ -7,7 +7,7 @@ use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
 use super::rates::{states, two_links, RateCx};
 use super::tokens::{arm, grp, local, mode_tokens};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
@@ -28,8 +28,8 @@ pub(super) struct Rrr<'a> {
 }
 
 impl<'a> GroupKind<'a> for Rrr<'a> {
-    fn references(&self) -> Vec<&'a Ident> {
-        vec![self.a, self.b]
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.a, Role::Point), (self.b, Role::Point)]
     }
 
     fn link_shapes(&self) -> Vec<LinkShape> {
@@ -183,6 +183,14 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
         cx.reaction(revolute(&rx, &bb, &links[1], b, "b"));
         cx.reaction(inner(&rx, links, name, "c", false));
         cx.condition(quote!(#rx.min_pivot_ratio));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (2, 3)
+    }
+
+    fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {
+        Some((self.a, self.b, "known joints"))
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

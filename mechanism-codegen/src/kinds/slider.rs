@@ -6,7 +6,7 @@ use super::forces::{drive, prismatic, rx, ForceCx, Held};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{along, grp, local, tag};
-use super::{links_text, GroupKind, LinkShape, Pose, Solve, Turn};
+use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -24,8 +24,8 @@ pub(super) struct Slider<'a> {
 }
 
 impl<'a> GroupKind<'a> for Slider<'a> {
-    fn references(&self) -> Vec<&'a Ident> {
-        vec![self.guide]
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.guide, Role::Guide)]
     }
 
     fn link_shapes(&self) -> Vec<LinkShape> {
@@ -134,6 +134,10 @@ impl<'a> GroupKind<'a> for Slider<'a> {
         cx.power(quote!(#rx.drive * vel.rates.#input));
         let doc = format!("Driving force on `{link}` along its guide (input `{input}`; force units, positive along the guide's direction).");
         cx.reaction(drive(&rx, input, "drive", Held::Push, doc));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (1, 1)
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

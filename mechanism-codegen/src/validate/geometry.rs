@@ -3,6 +3,7 @@
 //! point, a guide passes through a point of what carries it.
 
 use crate::diag::Diagnostics;
+use crate::kinds;
 use crate::model::{Kind, Model, Origin};
 use crate::plan::Plan;
 use syn::Ident;
@@ -19,14 +20,8 @@ fn literal_ground(model: &Model, name: &Ident) -> Option<(f64, f64)> {
 /// different points (guides), and not two ground points at the same place.
 pub(super) fn distinct_joints(model: &Model, errors: &mut Diagnostics) {
     for stmt in &model.stmts {
-        let (a, b, what) = match &stmt.kind {
-            Kind::Rrr { a, b, .. } => (a, b, "known joints"),
-            Kind::Rpr { a, b, .. } => (a, b, "points (the block's pin and the link's pivot)"),
-            Kind::Actuator { a, b, .. } => {
-                (a, b, "points (the link's pivot and the cylinder's base)")
-            }
-            Kind::Prp { g1, g2, .. } => (g1, g2, "guides"),
-            _ => continue,
+        let Some((a, b, what)) = kinds::of(stmt).distinct_pair() else {
+            continue;
         };
         let kind = &stmt.kind_token;
         if a == b {

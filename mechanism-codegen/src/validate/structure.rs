@@ -3,6 +3,7 @@
 
 use super::names::{is_named_link, link_hints, symbols, Category};
 use crate::diag::{did_you_mean, Diagnostics};
+use crate::kinds;
 use crate::model::{Input, Kind, Model};
 use proc_macro2::Span;
 
@@ -39,26 +40,9 @@ pub(super) fn dof_matches(model: &Model, errors: &mut Diagnostics) {
     let (mut links, mut joints) = (1i64, 0i64);
     let mut inputs = Vec::new();
     for stmt in &model.stmts {
-        match stmt.kind {
-            Kind::Crank { .. } | Kind::Slider { .. } => {
-                links += 1;
-                joints += 1;
-            }
-            // Cylinder = barrel + rod: three bodies, four lower pairs.
-            Kind::Actuator { .. } => {
-                links += 3;
-                joints += 4;
-            }
-            Kind::Rrr { .. }
-            | Kind::Rrp { .. }
-            | Kind::Rpr { .. }
-            | Kind::Prp { .. }
-            | Kind::Rpp { .. } => {
-                links += 2;
-                joints += 3;
-            }
-            _ => {}
-        }
+        let (bodies, pairs) = kinds::of(stmt).bodies_and_pairs();
+        links += bodies;
+        joints += pairs;
         if let Some(i) = stmt.kind.input() {
             inputs.push(i.to_string());
         }
