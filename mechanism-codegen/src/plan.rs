@@ -264,6 +264,22 @@ impl Plan {
     }
 }
 
+impl kinds::Placed for Plan {
+    fn link_points(&self, link: &Ident) -> Option<&[String]> {
+        self.links
+            .get(&link.to_string())
+            .map(|l| l.points.as_slice())
+    }
+
+    fn is_defined(&self, name: &str) -> bool {
+        self.defined.contains_key(name)
+    }
+
+    fn is_ground_point(&self, point: &str) -> bool {
+        self.is_ground(point)
+    }
+}
+
 /// A slide displacement the user named: its name, the statement that
 /// solves it and which of the statement's slides it is (0 or 1; an RPR's
 /// slide is its defined name, slot 0).

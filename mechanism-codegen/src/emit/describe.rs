@@ -4,8 +4,8 @@
 //! that draws or tabulates any mechanism. Unused, it costs nothing: a constant
 //! and trait methods nobody calls.
 
-use crate::kinds;
-use crate::model::{Kind, Level, Model, Origin};
+use crate::kinds::{self, GuideLine};
+use crate::model::{Level, Model};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -88,18 +88,15 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
     let mut guides = Vec::new();
     for &i in &plan.order {
         let stmt = &model.stmts[i];
-        if let Kind::Guide {
-            origin,
-            angle,
+        if let Some(GuideLine {
             carrier,
-        } = &stmt.kind
+            through,
+            angle,
+        }) = kinds::of(stmt).as_guide()
         {
             let n = stmt.name.to_string();
-            let carrier = option_str(carrier.as_ref().map(|c| c.to_string()));
-            let through = option_str(match origin {
-                Origin::Point(p) => Some(p.to_string()),
-                Origin::Coords(..) => None,
-            });
+            let carrier = option_str(carrier.map(|c| c.to_string()));
+            let through = option_str(through.map(|p| p.to_string()));
             let angle = match angle.fold().filter(|a| a.is_finite()) {
                 Some(a) => {
                     let a = proc_macro2::Literal::f64_suffixed(a);

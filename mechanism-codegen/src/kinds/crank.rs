@@ -6,7 +6,8 @@ use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{grp, local, tag, unit_field};
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
+use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -168,6 +169,18 @@ impl<'a> GroupKind<'a> for Crank<'a> {
 
     fn cos_sin_input(&self) -> Option<&'a Ident> {
         self.cos_sin.then_some(self.input)
+    }
+
+    /// It turns about a ground point.
+    fn check_placed(&self, plan: &dyn Placed, errors: &mut Diagnostics) {
+        let pivot = self.pivot;
+        let p = pivot.to_string();
+        if plan.is_defined(&p) && !plan.is_ground_point(&p) {
+            errors.push(
+                pivot.span(),
+                format!("a crank turns about a ground point, and `{p}` moves; define the pivot with `ground(x, y)`"),
+            );
+        }
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

@@ -67,6 +67,10 @@ impl<'a> GroupKind<'a> for Ground<'a> {
         self.stmt.name == *output
     }
 
+    fn literal_ground(&self) -> Option<(f64, f64)> {
+        Some((self.x.fold()?, self.y.fold()?))
+    }
+
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, _lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {

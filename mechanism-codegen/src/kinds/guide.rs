@@ -6,7 +6,8 @@ use super::lane::{Lane, LaneGuide, Step, Vector};
 use super::lane_shapes::{carried, OriginMotion};
 use super::rates::RateCx;
 use super::tokens::{axis, local, unit_vector};
-use super::{GroupKind, Pose, Role, Solve};
+use super::{GroupKind, GuideLine, Placed, Pose, Role, Solve};
+use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
 use crate::model::{Origin, Stmt};
 use crate::value::{lit, Value};
@@ -161,8 +162,15 @@ impl<'a> GroupKind<'a> for Guide<'a> {
         self.carrier
     }
 
-    fn guide_carrier(&self) -> Option<Option<&'a Ident>> {
-        Some(self.carrier)
+    fn as_guide(&self) -> Option<GuideLine<'a>> {
+        Some(GuideLine {
+            carrier: self.carrier,
+            through: match self.origin {
+                Origin::Point(p) => Some(p),
+                Origin::Coords(..) => None,
+            },
+            angle: self.angle,
+        })
     }
 
     fn describe(&self) -> String {
@@ -183,6 +191,35 @@ impl<'a> GroupKind<'a> for Guide<'a> {
         _moves: &dyn Fn(&Ident) -> bool,
     ) -> bool {
         false
+    }
+
+    /// Through a point of what carries it: a point of its link, or a
+    /// ground point for a fixed guide.
+    fn check_placed(&self, plan: &dyn Placed, errors: &mut Diagnostics) {
+        let Origin::Point(p) = self.origin else {
+            return;
+        };
+        match self.carrier {
+            Some(link) => {
+                if let Some(points) = plan.link_points(link) {
+                    if !points.contains(&p.to_string()) {
+                        errors.push(
+                            p.span(),
+                            format!("a guide carried by `{link}` must pass through one of its points, and `{p}` is not on it"),
+                        );
+                    }
+                }
+            }
+            None => {
+                let name = p.to_string();
+                if plan.is_defined(&name) && !plan.is_ground_point(&name) {
+                    errors.push(
+                        p.span(),
+                        format!("a fixed guide must pass through a ground point, and `{name}` moves; to slide on a moving link write `guide({name}, LINK)`"),
+                    );
+                }
+            }
+        }
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

@@ -29,6 +29,7 @@ mod rrr;
 mod slider;
 pub(crate) mod tokens;
 
+use crate::diag::Diagnostics;
 use crate::model::{Kind, Stmt};
 use crate::value::Value;
 pub use pose::Pose;
@@ -45,6 +46,26 @@ pub enum Turn {
     Own,
     /// It turns with another link (a block on a carried guide).
     With(String),
+}
+
+/// What the rules that need the plan ask of it (implemented by `plan::Plan`).
+pub trait Placed {
+    /// The points on `link`, `None` for an unknown link.
+    fn link_points(&self, link: &Ident) -> Option<&[String]>;
+    /// `true` when a statement defines `name`.
+    fn is_defined(&self, name: &str) -> bool;
+    /// `true` when `point` never moves.
+    fn is_ground_point(&self, point: &str) -> bool;
+}
+
+/// A guide's line as written.
+pub struct GuideLine<'a> {
+    /// The link carrying it (`None`: fixed).
+    pub carrier: Option<&'a Ident>,
+    /// The point it passes through (`None`: literal or parametric coordinates).
+    pub through: Option<&'a Ident>,
+    /// Its angle (rad, counter-clockwise from +x, or from the carrier's axis).
+    pub angle: &'a Value,
 }
 
 /// What a name a statement refers to must be.
@@ -285,15 +306,39 @@ pub trait GroupKind<'a> {
         false
     }
 
+    /// Why it cannot assemble when it is singular at every pose checked
+    /// (`over`: the inputs checked, as the user reads them), `None` when
+    /// that says nothing more than a failure at one input.
+    fn singular_everywhere(&self, _over: &str) -> Option<String> {
+        None
+    }
+
+    /// For a ground point with literal coordinates: where it is.
+    fn literal_ground(&self) -> Option<(f64, f64)> {
+        None
+    }
+
+    /// Its own rules on its arguments as written (`validate::model`).
+    fn check(&self, _errors: &mut Diagnostics) {}
+
+    /// Its own rules that need the plan (`validate::planned`): where its
+    /// points lie.
+    fn check_placed(&self, _plan: &dyn Placed, _errors: &mut Diagnostics) {}
+
     /// Its part of the force analysis (drivers and groups): its reactions
     /// from the loads of its links, passed (negated) to the bodies it is
     /// attached to, its fields in the forces struct, its conditioning and
     /// its driving power.
     fn forces(&self, _cx: &mut dyn forces::ForceCx) {}
 
+    /// For a guide: its line as written. `None` for other kinds.
+    fn as_guide(&self) -> Option<GuideLine<'a>> {
+        None
+    }
+
     /// For a guide: its carrier (`None`: fixed). `None` for other kinds.
     fn guide_carrier(&self) -> Option<Option<&'a Ident>> {
-        None
+        self.as_guide().map(|g| g.carrier)
     }
 
     /// For a point on a link: the link.

@@ -6,7 +6,8 @@ use super::lane::{Lane, PointLocals, Step, Vector};
 use super::lane_shapes::local_vector;
 use super::rates::{vec_ty, RateCx};
 use super::tokens::{axis, local, tag, unit_vector};
-use super::{GroupKind, Pose, Role, Solve};
+use super::{GroupKind, Placed, Pose, Role, Solve};
+use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
 use crate::model::{Local, Stmt};
 use crate::value::{lit, Value};
@@ -139,6 +140,28 @@ impl<'a> GroupKind<'a> for Point<'a> {
         moves: &dyn Fn(&Ident) -> bool,
     ) -> bool {
         link_turns(self.link) || moves(self.from)
+    }
+
+    /// It is measured from a point of its link.
+    fn check_placed(&self, plan: &dyn Placed, errors: &mut Diagnostics) {
+        let (link, from) = (self.link, self.from);
+        if let Some(points) = plan.link_points(link) {
+            let f = from.to_string();
+            if !points.contains(&f) && plan.is_defined(&f) {
+                errors.push(
+                    from.span(),
+                    format!(
+                        "`{f}` is not a point of `{link}`; measure from one of its points: {}",
+                        points
+                            .iter()
+                            .filter(|p| self.stmt.name != p.as_str())
+                            .map(|p| format!("`{p}`"))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                );
+            }
+        }
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

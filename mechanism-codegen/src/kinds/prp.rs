@@ -170,6 +170,16 @@ impl<'a> GroupKind<'a> for Prp<'a> {
         true
     }
 
+    /// Guides parallel at every pose checked (guides that turn together,
+    /// or keep their directions): said directly.
+    fn singular_everywhere(&self, over: &str) -> Option<String> {
+        let (g1, g2) = (self.g1, self.g2);
+        Some(format!(
+            "group `{}` (PRP) cannot assemble: guides `{g1}` and `{g2}` are parallel at every pose checked ({over}), so the joint is at infinity for every input\n  = help: make the guides cross: change the angle of one of them",
+            self.stmt.name
+        ))
+    }
+
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {

@@ -9,6 +9,7 @@ use super::lane_shapes::{along_line, line_axis};
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::tokens::{along, grp, local, unit_field, unit_vector};
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -179,6 +180,32 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
 
     fn joint_at_infinity(&self) -> bool {
         true
+    }
+
+    /// The slot crosses the guide. The slotted link translates along the
+    /// guide without turning relative to it (a carried guide turns the slot
+    /// with it), so the slot keeps its angle to the guide at every pose: a
+    /// slot parallel to the guide is parallel at every input, and the joint
+    /// is at infinity everywhere. Known at compile time for a slot angle that
+    /// folds to a number; "parallel" is the test the run-time solve applies
+    /// (`mechanism_core::dyad::rpp`: `|sin(slot)| <= 16 eps`, in f64 here).
+    fn check(&self, errors: &mut Diagnostics) {
+        let (guide, slot) = (self.guide, self.slot);
+        let Some(angle) = slot.fold() else {
+            return;
+        };
+        if angle.sin().abs() <= 16.0 * f64::EPSILON {
+            // Rounded to 1e-9 deg, so that `180 deg` (rounded once to
+            // radians and back) shows as 180.
+            let deg = (angle.to_degrees() * 1e9).round() / 1e9;
+            errors.push(
+                slot.span,
+                format!(
+                    "the slot of `{}` is at {deg} deg to guide `{guide}`, parallel to it; the slotted link slides along `{guide}` without turning, so the slot stays parallel at every pose and the block's pin is at infinity for every input: give the slot an angle across the guide (e.g. `90 deg`, a slot perpendicular to it)",
+                    self.stmt.name
+                ),
+            );
+        }
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel
