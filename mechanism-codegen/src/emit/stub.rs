@@ -170,3 +170,92 @@ fn describe_stub(model: &Model) -> TokenStream {
         #(#fields)*
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::emit::test_support::{four_bar, planned};
+    use proc_macro2::TokenStream;
+    use std::str::FromStr;
+
+    /// The fields (`name:type`, sorted) of the struct `ty` in `code`, doc
+    /// attributes left out.
+    fn fields(code: &TokenStream, ty: &str) -> Vec<String> {
+        let flat: String = code.to_string().split_whitespace().collect();
+        let start = flat
+            .find(&format!("struct{ty}<"))
+            .unwrap_or_else(|| panic!("no struct {ty}"));
+        let open = start + flat[start..].find('{').expect("a body") + 1;
+        let close = open + flat[open..].find('}').expect("a closed body");
+        let mut body = flat[open..close].to_string();
+        while let Some(a) = body.find("#[doc=") {
+            let b = a + body[a..].find("\"]").expect("a closed doc") + 2;
+            body.replace_range(a..b, "");
+        }
+        let mut fields: Vec<String> = body
+            .split(',')
+            .filter(|f| !f.is_empty())
+            .map(|f| f.trim_start_matches("pub").to_string())
+            .collect();
+        fields.sort();
+        fields
+    }
+
+    /// The forces struct of the valid definition `src` as expanded, and as
+    /// the stub emitted on error builds it from the same statements.
+    fn real_and_stub(src: &str, ty: &str) -> (Vec<String>, Vec<String>) {
+        let real = crate::expand(TokenStream::from_str(src).expect("tokens"));
+        assert!(!real.to_string().contains("compile_error"), "{ty}: {real}");
+        let (model, _) = planned(src);
+        (fields(&real, ty), fields(&super::emit(&model, vec![]), ty))
+    }
+
+    // Proves the stub's forces struct carries exactly the real one's
+    // reaction and effort fields, names and types, for every kind with
+    // reactions (crank, RRR; slider, RRP; RPR; RPP, PRP; actuator): user
+    // code that reads a reaction compiles against either.
+    #[test]
+    fn stub_forces_fields_are_the_real_ones() {
+        let four_bar = four_bar("mass link3 { m = 2.0, at = P };");
+        let shaper = "pub Shaper {
+            params { ab = 0.125, yc = -0.275, cd = 0.6, de = 0.15 }
+            let A = ground(0.0, 0.0);
+            let C = ground(0.0, yc);
+            let ram = guide((0.0, 0.3), 180 deg);
+            let B = crank(A, ab, theta) as link1;
+            let s3 = rpr(B, C, plus) as (block, link3);
+            let D = point(link3, from C, cd, 0 deg);
+            let E = rrp(D, de, ram, plus) as (link4, tool) slide x;
+            mass link3 { m = 20.0, at = D };
+        }";
+        let slots = "pub Slots {
+            let O = ground(0.0, 0.0);
+            let line = guide((0.0, 0.0), 0 deg);
+            let S = slider(line, s) as block;
+            let gv = guide((3.0, 0.0), 90 deg);
+            let Q = rpp(S, gv, 90 deg) as (pin, yoke) slide (q1, q2);
+            let gy = guide(Q, yoke, 45 deg);
+            let gh = guide((0.0, 1.0), 0 deg);
+            let F = prp(gy, gh) as (pa, pb) slide (u, v);
+            mass pb { m = 1.0, at = F };
+            range s = (0.0, 0.5);
+        }";
+        let boom = "pub Boom {
+            let A = ground(0.0, 0.0);
+            let B = ground(0.8, -0.2);
+            let C = actuator(A, 1.2, B, len, left) as (boom, cylinder);
+            let tip = point(boom, from A, 2.5, 10 deg);
+            mass boom { m = 120.0, at = tip };
+            range len = (0.9, 1.6);
+        }";
+        for (src, ty) in [
+            (four_bar.as_str(), "FourBarForces"),
+            (shaper, "ShaperForces"),
+            (slots, "SlotsForces"),
+            (boom, "BoomForces"),
+        ] {
+            let (real, stub) = real_and_stub(src, ty);
+            assert!(real.len() > 2, "{ty}: {real:?}");
+            assert_eq!(real, stub, "{ty}");
+        }
+    }
+}
