@@ -479,3 +479,104 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
         }),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diag::Diagnostics;
+    use crate::model::Model;
+
+    /// The definition `src` lowered (it must have no errors).
+    fn lowered(src: &str) -> Model {
+        let def = syn::parse_str::<crate::parse::Definition>(src).expect("parses");
+        let mut diag = Diagnostics::new();
+        let model = crate::model::lower(def, &mut diag);
+        let errors: Vec<String> = diag.finish().iter().map(ToString::to_string).collect();
+        assert!(errors.is_empty(), "{errors:?}");
+        model
+    }
+
+    /// One statement of every kind.
+    const EVERY_KIND: &str = "pub M {
+        let O = ground(0.0, 0.0);
+        let O4 = ground(3.0, 0.0);
+        let A = crank(O, 1.0, theta) as link2;
+        let B = rrr(A, 3.0, O4, 2.5, left) as (link3, link4);
+        let P = point(link3, from A, 1.0, 30 deg);
+        let line = guide((0.0, -1.0), 0 deg);
+        let S = slider(line, s) as block;
+        let E = rrp(P, 2.0, line, plus) as (rod, slide);
+        let z = rpr(B, O, plus) as (pin, arm);
+        let gv = guide((5.0, 0.0), 90 deg);
+        let Q = rpp(S, gv, 90 deg) as (qpin, yoke);
+        let gy = guide(Q, yoke, 45 deg);
+        let F = prp(gy, line) as (pa, pb);
+        let C = actuator(O, 1.2, O4, len, left) as (boom, cylinder);
+    }";
+
+    #[test]
+    fn every_kind_describes_the_links_the_model_gives_it() {
+        // Proves each kind's link shapes match the links the lowering gave
+        // its statement (one shape per link, in order), and each shape's
+        // points are the statement's references or its own point.
+        let model = lowered(EVERY_KIND);
+        assert_eq!(model.stmts.len(), 14);
+        for stmt in &model.stmts {
+            let kind = of(stmt);
+            let shapes = kind.link_shapes();
+            assert_eq!(shapes.len(), stmt.links.len(), "{}", stmt.name);
+            assert_eq!(shapes.len(), stmt.kind.link_count(), "{}", stmt.name);
+            let refs: Vec<String> = kind
+                .references()
+                .iter()
+                .map(|(r, _)| r.to_string())
+                .collect();
+            for shape in &shapes {
+                for p in &shape.points {
+                    assert!(
+                        refs.contains(p) || *p == stmt.name.to_string(),
+                        "{}: {p}",
+                        stmt.name
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn evaluator_steps_close_the_four_bar() {
+        // Proves the kinds' f64 steps solve a four-bar at theta = 0.7: the
+        // crank tip at (cos, sin) of the input, the RRR joint at l1 = 3 from
+        // `A` and l2 = 2.5 from `O4` (1e-12: a few roundings of numbers of
+        // size 3), on the left of `A -> O4`, and its determinant in (0, 1].
+        let model = lowered(
+            "pub M {
+                let O = ground(0.0, 0.0);
+                let O4 = ground(3.0, 0.0);
+                let A = crank(O, 1.0, theta) as link2;
+                let B = rrr(A, 3.0, O4, 2.5, left) as (link3, link4);
+            }",
+        );
+        let theta = 0.7;
+        let input = |_: &Ident| theta;
+        let mut pose = Pose::default();
+        let mut dets = Vec::new();
+        for stmt in &model.stmts {
+            dets.push(of(stmt).eval(&mut pose, &input).expect("assembles"));
+        }
+        let id = |n: &str| syn::Ident::new(n, proc_macro2::Span::call_site());
+        let (a, b, o4) = (
+            pose.point(&id("A")),
+            pose.point(&id("B")),
+            pose.point(&id("O4")),
+        );
+        assert!((a.x - theta.cos()).abs() <= 1e-15 && (a.y - theta.sin()).abs() <= 1e-15);
+        assert!(((b - a).norm() - 3.0).abs() <= 1e-12);
+        assert!(((b - o4).norm() - 2.5).abs() <= 1e-12);
+        let (r, s) = (o4 - a, b - a);
+        assert!(r.x * s.y - r.y * s.x > 0.0, "B is not left of A -> O4");
+        assert_eq!(&dets[..3], &[None, None, None]);
+        let det = dets[3].expect("the RRR has a rate system");
+        assert!(det > 0.0 && det <= 1.0, "{det}");
+    }
+}
