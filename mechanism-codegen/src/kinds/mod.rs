@@ -534,7 +534,7 @@ mod tests {
             for shape in &shapes {
                 for p in &shape.points {
                     assert!(
-                        refs.contains(p) || *p == stmt.name.to_string(),
+                        refs.contains(p) || stmt.name == p.as_str(),
                         "{}: {p}",
                         stmt.name
                     );
