@@ -3,8 +3,8 @@
 //! Grashof condition, and a `range` statement that would pass.
 
 use crate::diag::show_num;
-use crate::kinds::{self, pose::num};
-use crate::model::{Input, Kind, Model};
+use crate::kinds::{self};
+use crate::model::{Input, Model};
 use crate::plan::Plan;
 use mechanism_core::Fault;
 use syn::Ident;
@@ -55,50 +55,8 @@ pub fn singular_meaning(model: &Model, stmt_index: usize) -> String {
 }
 
 /// For a crank driving an RRR group onto a ground point: the four-bar's
-/// Grashof condition, in numbers.
+/// Grashof condition, in numbers (the RRR's `GroupKind::full_turn_hint`).
 pub fn grashof(model: &Model, plan: &Plan, stmt_index: usize) -> Option<String> {
-    let stmt = &model.stmts[stmt_index];
-    let Kind::Rrr { a, l1, b, l2, .. } = &stmt.kind else {
-        return None;
-    };
     let find = |n: &Ident| plan.defined.get(&n.to_string()).map(|&i| &model.stmts[i]);
-    let ground = |n: &Ident| match find(n).map(|s| &s.kind) {
-        Some(Kind::Ground { x, y }) => Some((num(x), num(y))),
-        _ => None,
-    };
-    let (crank, other) = match (find(a).map(|s| &s.kind), find(b).map(|s| &s.kind)) {
-        (Some(Kind::Crank { .. }), _) => (find(a)?, b),
-        (_, Some(Kind::Crank { .. })) => (find(b)?, a),
-        _ => return None,
-    };
-    let Kind::Crank { pivot, radius, .. } = &crank.kind else {
-        return None;
-    };
-    let (o, g) = (ground(pivot)?, ground(other)?);
-    let base = (o.0 - g.0).hypot(o.1 - g.1);
-    let r = num(radius);
-    let mut links = [
-        (r, format!("crank {}", show_num(r))),
-        (num(l1), show_num(num(l1))),
-        (num(l2), show_num(num(l2))),
-        (base, format!("ground {}", show_num(base))),
-    ];
-    links.sort_by(|x, y| x.0.total_cmp(&y.0));
-    let (s, p, q, l) = (&links[0], &links[1], &links[2], &links[3]);
-    let text = format!(
-        "s + l = {} + {} = {}, p + q = {} + {} = {}",
-        s.1,
-        l.1,
-        show_num(s.0 + l.0),
-        p.1,
-        q.1,
-        show_num(p.0 + q.0)
-    );
-    Some(if s.0 + l.0 > p.0 + q.0 {
-        format!("the four-bar `{pivot}`-`{}`-`{}`-`{other}` is not Grashof ({text}): no link turns fully", crank.name, stmt.name)
-    } else if s.0 < r {
-        format!("the four-bar `{pivot}`-`{}`-`{}`-`{other}` is Grashof ({text}), but the crank is not its shortest link: only the shortest link turns fully", crank.name, stmt.name)
-    } else {
-        return None;
-    })
+    kinds::of(&model.stmts[stmt_index]).full_turn_hint(&find)
 }

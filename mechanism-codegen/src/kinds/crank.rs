@@ -183,6 +183,10 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         }
     }
 
+    fn crank_arm(&self) -> Option<(&'a Ident, &'a Value)> {
+        Some((self.pivot, self.radius))
+    }
+
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {

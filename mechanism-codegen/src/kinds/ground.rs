@@ -71,6 +71,10 @@ impl<'a> GroupKind<'a> for Ground<'a> {
         Some((self.x.fold()?, self.y.fold()?))
     }
 
+    fn ground_at(&self) -> Option<(f64, f64)> {
+        Some((num(self.x), num(self.y)))
+    }
+
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, _lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {

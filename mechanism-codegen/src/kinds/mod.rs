@@ -313,6 +313,24 @@ pub trait GroupKind<'a> {
         None
     }
 
+    /// A hint on why it does not assemble over a crank's full turn, when
+    /// there is one in numbers (an RRR driven by a crank onto a ground
+    /// point: the four-bar's Grashof condition). `find` gives the statement
+    /// that defines a name.
+    fn full_turn_hint(&self, _find: &dyn Fn(&Ident) -> Option<&'a Stmt>) -> Option<String> {
+        None
+    }
+
+    /// For a crank: its pivot and radius.
+    fn crank_arm(&self) -> Option<(&'a Ident, &'a Value)> {
+        None
+    }
+
+    /// For a ground point: its coordinates (NaN where they do not fold).
+    fn ground_at(&self) -> Option<(f64, f64)> {
+        None
+    }
+
     /// For a ground point with literal coordinates: where it is.
     fn literal_ground(&self) -> Option<(f64, f64)> {
         None

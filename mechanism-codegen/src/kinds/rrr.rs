@@ -193,6 +193,27 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
         Some((self.a, self.b, "known joints"))
     }
 
+    /// Driven by a crank onto a ground point, it closes a four-bar: its
+    /// Grashof condition, in numbers.
+    fn full_turn_hint(&self, find: &dyn Fn(&Ident) -> Option<&'a Stmt>) -> Option<String> {
+        let arm = |n: &Ident| find(n).and_then(|s| super::of(s).crank_arm().map(|arm| (s, arm)));
+        let ground = |n: &Ident| find(n).and_then(|s| super::of(s).ground_at());
+        let ((crank, (pivot, radius)), other) = match (arm(self.a), arm(self.b)) {
+            (Some(c), _) => (c, self.b),
+            (_, Some(c)) => (c, self.a),
+            _ => return None,
+        };
+        let (o, g) = (ground(pivot)?, ground(other)?);
+        let four_bar = FourBar {
+            names: [pivot, &crank.name, &self.stmt.name, other],
+            crank: num(radius),
+            coupler: num(self.l1),
+            rocker: num(self.l2),
+            ground: (o.0 - g.0).hypot(o.1 - g.1),
+        };
+        four_bar.grashof()
+    }
+
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
@@ -213,4 +234,47 @@ fn lane_steps(
     mode: &Mode,
 ) -> Option<()> {
     dyad(lane, s, a, l1, b, SecondSide::Length(l2), mode)
+}
+
+/// A four-bar closed by a crank and an RRR: its joints' names (pivot, crank
+/// tip, RRR joint, other ground point) and its link lengths.
+struct FourBar<'n> {
+    names: [&'n Ident; 4],
+    crank: f64,
+    coupler: f64,
+    rocker: f64,
+    ground: f64,
+}
+
+impl FourBar<'_> {
+    /// Why no full turn: not Grashof, or the crank not the shortest link;
+    /// `None` when the crank can turn fully.
+    fn grashof(&self) -> Option<String> {
+        let r = self.crank;
+        let mut links = [
+            (r, format!("crank {}", show_num(r))),
+            (self.coupler, show_num(self.coupler)),
+            (self.rocker, show_num(self.rocker)),
+            (self.ground, format!("ground {}", show_num(self.ground))),
+        ];
+        links.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let (s, p, q, l) = (&links[0], &links[1], &links[2], &links[3]);
+        let text = format!(
+            "s + l = {} + {} = {}, p + q = {} + {} = {}",
+            s.1,
+            l.1,
+            show_num(s.0 + l.0),
+            p.1,
+            q.1,
+            show_num(p.0 + q.0)
+        );
+        let [pivot, tip, joint, other] = self.names;
+        Some(if s.0 + l.0 > p.0 + q.0 {
+            format!("the four-bar `{pivot}`-`{tip}`-`{joint}`-`{other}` is not Grashof ({text}): no link turns fully")
+        } else if s.0 < r {
+            format!("the four-bar `{pivot}`-`{tip}`-`{joint}`-`{other}` is Grashof ({text}), but the crank is not its shortest link: only the shortest link turns fully")
+        } else {
+            return None;
+        })
+    }
 }
