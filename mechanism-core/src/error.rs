@@ -265,7 +265,7 @@ impl<T: Real> fmt::Display for Rounded<T> {
         }
         // `d.ddde<exp>` of |x|, correctly rounded to 4 significant digits.
         let mut sci = Buf::new();
-        write!(sci, "{:.*e}", DIGITS - 1, crate::geometry::abs(x))?;
+        write!(sci, "{:.*e}", DIGITS - 1, crate::scalar::abs(x))?;
         let [d0, b'.', d1, d2, d3, b'e', exp_text @ ..] = &sci.bytes[..sci.len] else {
             return Err(fmt::Error);
         };

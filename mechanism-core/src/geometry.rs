@@ -27,15 +27,9 @@ pub fn dot<T: Real>(a: &Vector2<T>, b: &Vector2<T>) -> T {
     a.x * b.x + a.y * b.y
 }
 
-/// Absolute value.
-#[inline(always)]
-pub fn abs<T: Real>(x: T) -> T {
-    if x < T::zero() {
-        -x
-    } else {
-        x
-    }
-}
+/// Absolute value (defined in [`crate::scalar`], which [`crate::error`] uses
+/// too; re-exported here beside the other helpers).
+pub use crate::scalar::abs;
 
 /// The smaller of `a` and `b` (`b` when either is NaN). A comparison, where
 /// `RealField::min` calls libm's `fminf`/`fmin` (about 24 instructions on a
@@ -78,15 +72,36 @@ pub fn angle<T: Real>(v: &Vector2<T>) -> T {
     (v.y + T::zero()).atan2_kernel(v.x)
 }
 
-/// `angle` (rad) reduced to `(-pi, pi]`: `angle - 2 pi k` with `k` the nearest
-/// integer to `angle / 2 pi`. Exact for `|angle| <= pi`; otherwise the error is
-/// the rounding of `2 pi k` (about `|angle| eps`). A crank's link angle is its
-/// input reduced this way, with no `atan2`.
+/// Largest `|angle|` (rad) that [`wrap_angle`] reduces by subtracting a
+/// multiple of `2 pi` (the limit of the batch kernels' `sin_cos` too,
+/// [`crate::lane::SIN_COS_LIMIT`]); beyond it, the angle of `(cos, sin)`.
+pub const WRAP_LIMIT: f64 = 1.0e5;
+
+/// `angle` (rad) reduced to `(-pi, pi]`, for every finite `angle`: a
+/// crank's link angle is its input reduced this way.
+///
+/// - `|angle| <= pi`: unchanged (exact).
+/// - `pi < |angle| <= WRAP_LIMIT` (1e5 rad): `angle - 2 pi k` with `k` the
+///   nearest integer to `angle / 2 pi`, moved into the range if rounding
+///   left it just outside; the error is the rounding of `2 pi k`, about
+///   `|angle| eps` (f64 at 1e5: 2e-11 rad; f32 at 1e3: 1e-4 rad).
+/// - beyond (f32 inputs there are at least 0.0078 rad apart, f64 1.5e-11):
+///   the angle of `(cos angle, sin angle)` from the same sine and cosine
+///   the crank is placed with ([`unit`], which reduces any finite argument
+///   exactly), so the result is the direction of the crank's axis, within a
+///   few ulp of `pi` of the exact reduction, and in the range by
+///   construction ([`angle`]). The one-step subtraction would be off by
+///   whole turns there (f32 2.2e8 gave -9.7).
+///
+/// NaN or an infinity gives NaN (the crank reports the input as an error).
 #[inline]
 pub fn wrap_angle<T: Real>(angle: T) -> T {
     let pi = T::pi();
     if angle <= pi && angle > -pi {
         return angle;
+    }
+    if !(abs(angle) <= T::lit(WRAP_LIMIT)) {
+        return wrap_far(angle);
     }
     let two_pi = T::two_pi();
     let reduced = angle - two_pi * (angle / two_pi).round();
@@ -96,6 +111,18 @@ pub fn wrap_angle<T: Real>(angle: T) -> T {
         reduced - two_pi
     } else {
         reduced
+    }
+}
+
+/// [`wrap_angle`] beyond [`WRAP_LIMIT`] (cold path): the angle of the unit
+/// vector at `angle`. NaN for a non-finite `angle`.
+#[cold]
+#[inline(never)]
+fn wrap_far<T: Real>(angle: T) -> T {
+    if angle.finite() {
+        self::angle(&unit(angle))
+    } else {
+        angle - angle
     }
 }
 

@@ -7,7 +7,9 @@
 //! skips the trigonometry.
 
 use crate::error::{Error, Fault, Primitive};
-use crate::geometry::{all_finite, finite_vec, plus, positive};
+use crate::geometry::{
+    abs, all_finite, dot, finite_vec, max, plain_square, plus, positive, pow2_scale,
+};
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -54,7 +56,11 @@ pub struct CosSin<T> {
 }
 
 /// Places the crank from `(cos theta, sin theta)`, which need not be exactly
-/// unit: it is normalized (an encoder's pair rarely is).
+/// unit: it is normalized (an encoder's pair rarely is). Any positive
+/// multiple of the pair gives the same crank, to rounding, for every finite
+/// pair that is not zero, subnormal ones included (the pair is scaled by a
+/// power of two before it is squared where its square would leave the normal
+/// range).
 ///
 /// Errors: `NonFinite`; `NonPositive` for `length <= 0` or a zero pair.
 #[inline(always)]
@@ -65,8 +71,34 @@ pub fn position_cos_sin<T: Real>(
     sin: T,
 ) -> Result<CrankPosition<T>, Error<T>> {
     let v = finite_vec(Vector2::new(cos, sin), P, "crank (cos, sin)")?;
-    let norm = positive(crate::geometry::length(&v), P, "crank |(cos, sin)|")?;
+    // `|v|^2` plainly where it is a normal number with room below (the
+    // usual encoder pair, of size about 1); a pair far from unit size (f64
+    // components below about 1e-138 or above 1e154, f32 1e-12 .. 1e19)
+    // would give a subnormal, zero or infinite square: scaled first.
+    let q = dot(&v, &v);
+    let (v, norm) = if plain_square(q) {
+        (v, q.sqrt_kernel())
+    } else {
+        scaled_pair(v)
+    };
+    let norm = positive(norm, P, "crank |(cos, sin)|")?;
     place(pivot, length, v / norm, true)
+}
+
+/// `(v 2^-e, |v 2^-e|)` with `2^e` the power of two at or below the larger
+/// component of `v` (within the normal exponents of `T`): the pair scaled
+/// exactly to a size between 1 and 2, so its square neither underflows nor
+/// overflows; `(v, 0)` for a zero pair (cold path of [`position_cos_sin`]).
+#[cold]
+#[inline(never)]
+fn scaled_pair<T: Real>(v: Vector2<T>) -> (Vector2<T>, T) {
+    let m = max(abs(v.x), abs(v.y));
+    if m > T::zero() {
+        let u = v * pow2_scale(m).0;
+        (u, dot(&u, &u).sqrt_kernel())
+    } else {
+        (v, T::zero())
+    }
 }
 
 /// The crank at unit `axis`: two comparisons on the ordinary path (a

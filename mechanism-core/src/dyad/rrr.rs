@@ -32,7 +32,8 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, all_finite, check_det, cross, difference, dot, length, min, normal_range, perp, plus,
+    abs, all_finite, check_det, cross, difference, dot, length, max, min, normal_range, perp,
+    plus, pow2_scale, scaled_length,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -128,10 +129,12 @@ pub fn position<T: Real>(
     let dsq = dot(&d, &d);
     let sum = l1 + l2;
     let diff = l1 - l2;
+    let (lo, hi) = normal_range::<T>();
     // The ordinary case in three comparisons (NaN fails each); anything else
-    // is sorted out on the cold path, in the order of the doc comment.
-    if !(l1 > T::zero() && l2 > T::zero() && dsq > T::zero()) {
-        return Err(position_error(d, l1, l2, Check::Degenerate));
+    // (a bad input, `A = B`, or `|B - A|^2` below the normal range, where it
+    // has lost bits) is sorted out on the cold path.
+    if !(l1 > T::zero() && l2 > T::zero() && dsq >= lo) {
+        return position_cold(a, &d, l1, l2, mode);
     }
     // Heron's factors; a negative one means the triangle does not close.
     let outer = sum * sum - dsq; // < 0: too far apart
@@ -139,43 +142,33 @@ pub fn position<T: Real>(
 
     // The band `4 eps (l1 + l2)` on `|d|`, to first order on `D`: `D` moves
     // by `2 |d| delta` when `|d|` moves by `delta`, and `|d|` is `l1 + l2` or
-    // `|l1 - l2|` at the two edges.
+    // `|l1 - l2|` at the two edges. Outside it, the cold path decides (it
+    // checks the band on `|d|` itself and reports the miss).
     let band = T::lit(8.0) * T::eps() * sum;
     if outer < -(band * sum) || inner < -(band * abs(diff)) {
-        return Err(position_error(d, l1, l2, Check::Reach));
+        return position_cold(a, &d, l1, l2, mode);
     }
-    let clamp = |x: T| if x < T::zero() { T::zero() } else { x };
-    let (outer, inner) = (clamp(outer), clamp(inner));
     // sqrt(16 area^2) = 4 area, signed by the mode. The product is of the
-    // fourth power of the lengths: outside the normal range (f32 lengths
-    // below about 1e-10 or above about 4e9; f64 beyond 1e-77 .. 1e77) it
-    // would be subnormal (bits silently lost), zero (a false `Singular` later)
-    // or infinite; there the two factors' roots are taken apart (cold path,
-    // one square root more). Zero at the edge takes that path too and gives 0.
+    // fourth power of the lengths. Where it is a normal number, and `D` is
+    // too (checked above), the third powers below are normal as well (`d *
+    // along` and `perp(d) * height` make a vector of length `2 D l1`, and
+    // `prod <= (l1 + l2)^2 D`), so every product keeps full precision.
+    // Elsewhere (the edge of assembly, where a factor is 0 or in the
+    // rounding band; lengths beyond about f32 1e-10 .. 4e9, f64 1e-77 ..
+    // 1e77; or `|B - A|` far below the lengths, where `d * along` would be
+    // subnormal: at f64 |B - A| = 1e-150 and links of 1e-51, `C` came out on
+    // `A`) the cold path solves in a form without powers above the first.
     let prod = outer * inner;
-    let (lo, hi) = normal_range::<T>();
-    let root = if prod >= lo && prod <= hi {
-        prod.sqrt_kernel()
-    } else {
-        // Where the product is normal the lengths are too (f32: 1.4e-10 ..
-        // 2.4e11, since `prod <= 16 L^4` and the rounding band keeps a
-        // non-zero `inner` above `eps L^2`), and so are the third powers
-        // below. Here they may not be: `d * along` (L^3) is subnormal for
-        // f32 lengths below about 2.3e-13 (at 1e-14 `C` came out 3 % off,
-        // at 1e-18 on `A`, with no error) or overflows above 7e12: there the
-        // root is NaN ([`split_root`]), so `C` fails its finiteness test, a
-        // typed `NonFinite` that names the range. (An error, not a rescaled
-        // solve: that doubled the group's code on the Cortex-M4F.)
-        split_root(outer, inner, sum)
-    };
-    let height = mode.sign::<T>() * root;
+    if !(prod >= lo && prod <= hi) {
+        return position_cold(a, &d, l1, l2, mode);
+    }
+    let height = mode.sign::<T>() * prod.sqrt_kernel();
     let along = diff * sum + dsq;
     // The reciprocal runs beside the square root (one rounding more than two
     // divisions, off the critical path).
     let inv_2dsq = T::one() / (T::lit(2.0) * dsq);
-    // `d * along` is a third power of the lengths: normal here (lengths out
-    // of its range took `rescaled` above); scaling the coefficients instead
-    // would round twice where a 3-4-5 triangle is now exact.
+    // Scaling the coefficients instead of the sum would round twice where a
+    // 3-4-5 triangle is now exact.
     let r1 = (d * along + perp(&d) * height) * inv_2dsq;
     let c = a + r1;
     // One test for every non-finite input that got this far (an infinite
@@ -195,42 +188,73 @@ pub fn position<T: Real>(
     })
 }
 
-/// `true` when the group's scale `l1 + l2` (L; `|B - A|` is at most that
-/// where it assembles) lies where [`position`]'s third powers are normal
-/// numbers: `2^-42 .. 2^42` (2.3e-13 .. 4.4e12) in f32, `2^-340 .. 2^340`
-/// (4.5e-103 .. 2.2e102) in f64, powers of two whose cubes are at least the
-/// smallest normal number (below it a product is rounded to the subnormal
-/// spacing, more than `eps` of the cube) and with `2 (l1 + l2)^3`, a bound
-/// on `d * along`, at most the largest. NaN is `false`.
-#[inline(always)]
-fn in_range<T: Real>(sum: T) -> bool {
-    let single = crate::scalar::single::<T>();
-    let lo = T::lit(if single {
-        2.273_736_754_432_320_6e-13
-    } else {
-        4.464_794_497_196_387e-103
-    });
-    let hi = T::lit(if single {
-        4_398_046_511_104.0
-    } else {
-        2.239_744_742_177_804_2e102
-    });
-    sum >= lo && sum <= hi
+/// [`position`] where its ordinary path does not apply (cold path): a bad
+/// input, `A = B`, a distance outside the reach, the rounding band at the
+/// edge of assembly, or scales where a square or a fourth power of the
+/// lengths leaves the normal range. Solves in a form whose products are of
+/// first powers of the lengths only, so it is accurate for every normal
+/// length (and any `|B - A|` down to the subnormal ones) as long as
+/// `l1 + l2 + |B - A|` is finite:
+///
+/// `dist = |d|` (scaled), `e = d / dist`, the foot of `C` on `AB` at
+/// `f = (l1 - l2) / dist (l1 + l2) / 2 + dist / 2` from `A` (clamped to
+/// `[-l1, l1]`: inside the rounding band it could otherwise exceed the link,
+/// where `dist` is far below `l1 - l2`), the height `h = sqrt(l1 + l2 -
+/// dist) sqrt(l1 + l2 + dist) (sqrt(dist - |l1 - l2|) sqrt(dist + |l1 -
+/// l2|) / dist) / 2` (Heron, each factor a length, clamped at zero in the
+/// band), `r1 = f e + s h perp(e)`, and `cross(r1, r2) = s h dist`.
+#[cold]
+#[inline(never)]
+fn position_cold<T: Real>(
+    a: &Point2<T>,
+    d: &Vector2<T>,
+    l1: T,
+    l2: T,
+    mode: Mode,
+) -> Result<RrrPosition<T>, Error<T>> {
+    let good = |x: T| x.finite() && x > T::zero();
+    let zero = T::zero();
+    if !(good(l1) && good(l2) && all_finite([d.x, d.y])) || (d.x == zero && d.y == zero) {
+        return Err(position_error(*d, l1, l2, Check::Degenerate));
+    }
+    let m = max(abs(d.x), abs(d.y));
+    let (down, up) = pow2_scale(m);
+    let u = d * down;
+    let ulen = length(&u);
+    let (e, dist) = (u / ulen, ulen * up);
+    let (sum, diff) = (l1 + l2, l1 - l2);
+    let adiff = abs(diff);
+    let (outer, inner) = (sum - dist, dist - adiff);
+    let band = T::lit(4.0) * T::eps() * sum;
+    if outer < -band || inner < -band {
+        return Err(position_error(*d, l1, l2, Check::Reach));
+    }
+    let clamp = |x: T| max(x, zero);
+    let half = T::lit(0.5);
+    let foot = (diff / dist) * (sum * half) + dist * half;
+    let foot = min(max(foot, -l1), l1);
+    let wide = clamp(outer).sqrt_kernel() * (sum + dist).sqrt_kernel();
+    let narrow = clamp(inner).sqrt_kernel() * (dist + adiff).sqrt_kernel() / dist;
+    let h = mode.sign::<T>() * (wide * narrow * half);
+    let r1 = e * foot + perp(&e) * h;
+    let c = a + r1;
+    if !all_finite([c.x, c.y, h * dist]) {
+        return Err(position_error(*d, l1, l2, Check::JointFinite));
+    }
+    Ok(RrrPosition {
+        c,
+        r1,
+        r2: r1 - d,
+        det: h * dist,
+    })
 }
 
 /// `sqrt(a) sqrt(b)` for a product `a b` outside the normal range (cold
-/// path of [`position`] and [`velocity`]); both factors are `>= 0`. In
-/// [`position`] (`sum = l1 + l2` given) NaN where the lengths are outside
-/// [`in_range`], which [`position`]'s finiteness test turns into an error
-/// ([`velocity`] passes 1: its squares have their own guard).
+/// path of [`velocity`]); both factors are `>= 0`.
 #[cold]
 #[inline(never)]
-fn split_root<T: Real>(a: T, b: T, sum: T) -> T {
-    if in_range(sum) {
-        a.sqrt_kernel() * b.sqrt_kernel()
-    } else {
-        T::lit(f64::NAN)
-    }
+fn split_root<T: Real>(a: T, b: T) -> T {
+    a.sqrt_kernel() * b.sqrt_kernel()
 }
 
 /// Which check of [`position`] failed (the cold path's only knowledge of
@@ -273,7 +297,7 @@ fn position_error<T: Real>(d: Vector2<T>, l1: T, l2: T, failed: Check) -> Error<
         match failed {
             Check::Degenerate => (Kind::Singular, "", T::zero(), T::zero()),
             Check::Reach => {
-                let dist = length(&d);
+                let dist = scaled_length(&d);
                 let (outer, inner) = (sum - dist, dist - diff);
                 if outer <= inner {
                     (Kind::Reach, "", -outer, sum)
@@ -281,10 +305,11 @@ fn position_error<T: Real>(d: Vector2<T>, l1: T, l2: T, failed: Check) -> Error<
                     (Kind::Reach, "", -inner, diff)
                 }
             }
-            // An overflow, or lengths outside [`in_range`] (the root NaN).
+            // An overflow: `l1 + l2 + |B - A|` or a coordinate of `C`
+            // beyond the largest finite number of `T`.
             Check::JointFinite => (
                 Kind::NonFinite,
-                "RRR joint C (lengths beyond the range of the scalar type? see `in_range`)",
+                "RRR joint C (overflow)",
                 sum,
                 sum,
             ),
@@ -335,7 +360,7 @@ pub fn velocity<T: Real>(
     let scale = if prod >= lo && prod <= hi {
         prod.sqrt_kernel()
     } else {
-        split_root(q1, q2, T::one())
+        split_root(q1, q2)
     };
     rates(pos, scale, va, vb)
 }
@@ -612,23 +637,30 @@ mod tests {
         worst
     }
 
-    /// f32 lengths 1e-30 .. 1e30 at every decade: accurate from 1e-12 to
-    /// 1e12 ([`in_range`]: `l1 + l2 = 2.2 s` within 2.3e-13 .. 4.4e12), a
-    /// typed error beyond. Before
-    /// the check, lengths below about 4.6e-11 lost bits in `d * along` with
-    /// no error (at 1e-18 `C` came out on `A`, at 1e-14 3 % off).
+    /// f32 lengths 1e-36 .. 1e19 at every decade (`l1 = 1.3 s`, `|B - A|`
+    /// down to `0.4 s`): accurate throughout, through the cold path where a
+    /// square or fourth power of the lengths leaves the normal range (below
+    /// about 1e-10 and above about 4e9). Before the check of `in_range`,
+    /// lengths below about 4.6e-11 lost bits in `d * along` with no error
+    /// (at 1e-18 `C` came out on `A`, at 1e-14 3 % off); with it they were a
+    /// typed error outside 1e-12 .. 1e12.
     #[test]
     fn f32_rrr_matches_reference_or_is_out_of_range() {
-        let w = sweep::<f32>(-30..=30, -12, 12);
-        std::println!("f32 RRR 1e-12 .. 1e12: worst position {w:.2} (eps l1 / kappa)");
+        // Above 1e19 `cross(r1, r2)` (L^2, in the result) overflows: a
+        // typed `NonFinite` except next to the edges, where it is small.
+        let w = sweep::<f32>(-36..=19, -36, 19);
+        std::println!("f32 RRR 1e-36 .. 1e19: worst position {w:.2} (eps l1 / kappa)");
     }
 
-    /// f64 lengths 1e-150 .. 1e150 every 5 decades: accurate from 1e-100 to
-    /// 1e100 ([`in_range`]: 4.5e-103 .. 2.2e102), the typed error beyond
-    /// (before, 1e-150 was off by 4e15 of this unit, with no error).
+    /// f64 lengths 1e-150 .. 1e150 every 5 decades (below, the
+    /// double-double reference's squares underflow; above 1e154,
+    /// `cross(r1, r2)`, L^2, overflows as in f32; `tests/working_ranges.rs`
+    /// covers the rest by powers of two): accurate throughout
+    /// (before, 1e-150 was off by 4e15 of this unit, with no error; then a
+    /// typed error outside 1e-100 .. 1e100).
     #[test]
     fn f64_rrr_matches_reference_or_is_out_of_range() {
-        let w = sweep::<f64>((-30..=30).map(|k| 5 * k), -100, 100);
-        std::println!("f64 RRR 1e-100 .. 1e100: worst position {w:.2} (eps l1 / kappa)");
+        let w = sweep::<f64>((-30..=30).map(|k| 5 * k), -150, 150);
+        std::println!("f64 RRR 1e-150 .. 1e150: worst position {w:.2} (eps l1 / kappa)");
     }
 }

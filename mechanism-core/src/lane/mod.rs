@@ -100,10 +100,9 @@ const R64: f64 = 6_755_399_441_055_744.0;
 /// `1.5 2^23`: the same for `f32` and `|x| < 2^22`.
 const R32: f64 = 12_582_912.0;
 
-/// `pi/2` in three parts (see the module documentation).
-pub(crate) const P1: f64 = 1.570_796_326_734_125_6; // 0x1.921fb544p+0, 33 bits
-pub(crate) const P2: f64 = 6.077_100_506_303_966e-11; // 0x1.0b4611a6p-34, 33 bits
-pub(crate) const P3: f64 = 2.022_266_248_795_950_6e-21; // the rest, rounded
+// `pi/2` in three parts (see the module documentation), shared with
+// `crate::sincos64`: they live in `crate::eft`, beside the reduction.
+use crate::eft::{P1, P2, P3};
 const FRAC_2_PI: f64 = core::f64::consts::FRAC_2_PI;
 
 /// `pi/2` minus its `f64` rounding (`FRAC_PI_2`).
