@@ -67,9 +67,20 @@ pub fn length<T: Real>(v: &Vector2<T>) -> T {
 /// `v.y + 0` turns a negative zero into `+0` (IEEE 754: `-0 + 0 = +0` when
 /// rounding to nearest), so a vector along `-x` gives `pi` whatever the sign
 /// of its zero `y`: `atan2(-0, -1)` is `-pi`, outside the range.
+///
+/// A vector just below `-x` (`y` a tiny negative number, `x < 0`) has an
+/// exact angle above `-pi` by less than half an ulp of `pi`; it rounds to
+/// `-pi` of `T` (an f32 shaper's rod gave `-3.1415927`): that is the same
+/// direction as `pi`, so `-pi` is returned as `pi`.
 #[inline(always)]
 pub fn angle<T: Real>(v: &Vector2<T>) -> T {
-    (v.y + T::zero()).atan2_kernel(v.x)
+    let a = (v.y + T::zero()).atan2_kernel(v.x);
+    let pi = T::pi();
+    if a <= -pi {
+        pi
+    } else {
+        a
+    }
 }
 
 /// Largest `|angle|` (rad) that [`wrap_angle`] reduces by subtracting a
@@ -453,8 +464,31 @@ mod tests {
             );
         }
         // Elsewhere the sign of a zero component is kept: -0 along +x stays
-        // 0 (its sign aside), and a negative y still gives a negative angle.
+        // 0 (its sign aside), and a negative y gives a negative angle where
+        // that angle is above `-pi` of the type.
         assert_eq!(angle(&Vector2::new(1.0f64, -0.0)), 0.0);
-        assert!(angle(&Vector2::new(-1.0f64, -1e-300)) < 0.0);
+        assert!(angle(&Vector2::new(-1.0f64, -1e-10)) < 0.0);
+        assert!(angle(&Vector2::new(-1.0f32, -1e-3)) < 0.0);
+    }
+
+    /// A vector just below `-x`, whose exact angle `-pi + |y|` rounds to
+    /// `-pi` of the type, is at `pi` (the same direction, inside `(-pi,
+    /// pi]`): f32 `(-1, -1e-10)` gave `-3.1415927` through an f32 shaper's
+    /// rod (found by the run-time fuzzer), f64 `(-1, -1e-300)` gave
+    /// `-3.141592653589793`.
+    #[test]
+    fn angle_just_below_minus_x_is_pi() {
+        assert_eq!(angle(&Vector2::new(-1.0f32, -1e-10)), core::f32::consts::PI);
+        assert_eq!(angle(&Vector2::new(-1.0f64, -1e-300)), core::f64::consts::PI);
+        assert_eq!(
+            crate::lane::angle(-1e-10f32, -1.0),
+            core::f32::consts::PI
+        );
+        assert_eq!(crate::lane::angle(-1e-300f64, -1.0), core::f64::consts::PI);
+        for k in 1..200 {
+            let y = -(k as f64) * 1e-9;
+            let a = angle(&Vector2::new(-1.0f32, y as f32));
+            assert!(a > -core::f32::consts::PI && a <= core::f32::consts::PI, "{y}: {a}");
+        }
     }
 }

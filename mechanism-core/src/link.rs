@@ -23,10 +23,14 @@ pub fn relative_velocity<T: Real>(r: &Vector2<T>, omega: T) -> Vector2<T> {
     perp(r) * omega
 }
 
-/// Acceleration of `P` relative to `O`: `alpha perp(r) - omega^2 r` (L/s^2).
+/// Acceleration of `P` relative to `O`: `alpha perp(r) - omega^2 r` (L/s^2),
+/// the last term as `(r omega) omega`: `omega^2` alone underflows for
+/// `|omega|` below about 1e-19 rad/s in f32 (1e-154 in f64) while the
+/// centripetal acceleration of a long enough link is still a normal number
+/// (f32: 5e-26 rad/s on a 7.6e29 crank lost its 2e-21 entirely).
 #[inline(always)]
 pub fn relative_acceleration<T: Real>(r: &Vector2<T>, omega: T, alpha: T) -> Vector2<T> {
-    perp(r) * alpha - r * (omega * omega)
+    perp(r) * alpha - (r * omega) * omega
 }
 
 /// Offset `P - O` of a point given in the link's local frame: `local.x` along
@@ -66,4 +70,16 @@ pub fn point_acceleration<T: Real>(
         P,
         "link point acceleration",
     )
+}
+
+/// `base + relative`, checked finite (L/s or L/s^2): the velocity or
+/// acceleration of a point of a moving link from its origin's and the
+/// relative one ([`point_velocity`], [`point_acceleration`]), whose sum can
+/// overflow where both are finite (f32: a coupler point at 2.9e38 plus
+/// 1e38 gave an infinite `Ok`).
+///
+/// Errors: `NonFinite` when the sum is not finite.
+#[inline(always)]
+pub fn point_sum<T: Real>(base: &Vector2<T>, relative: Vector2<T>) -> Result<Vector2<T>, Error<T>> {
+    finite_vec(base + relative, P, "link point velocity or acceleration")
 }

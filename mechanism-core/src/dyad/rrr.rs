@@ -397,9 +397,18 @@ fn rates<T: Real>(
     let condition = min(abs(det) / scale, T::one());
     let inv_det = T::one() / det;
     let dv = difference(vb, va);
-    let omega1 = dot(&dv, &pos.r2) * inv_det;
-    let omega2 = dot(&dv, &pos.r1) * inv_det;
-    let vc = plus(va, relative_velocity(&pos.r1, omega1));
+    // `r / det` (1/L) before the dot products: `dot(dv, r2)` (L^2/s) is
+    // subnormal for f32 lengths and speeds of about 1e-19 (a four-bar at
+    // that scale turning at 1e-4 rad/s lost its rocker's rate), while the
+    // rates (1/s) are ordinary numbers there.
+    let omega1 = dot(&dv, &(pos.r2 * inv_det));
+    let omega2 = dot(&dv, &(pos.r1 * inv_det));
+    let mut vc = plus(va, relative_velocity(&pos.r1, omega1));
+    if !(abs(omega1) >= normal_range::<T>().0) {
+        // `omega1` below the normal range (or zero) while `omega1 r1` may
+        // not be: speeds far below long links (f32: 1e-33 L/s on 1e13 L).
+        vc = plus(va, rate_times_link(&pos.r1, inv_det, dot(&dv, &pos.r2)));
+    }
     // One check for the results: a non-finite `va`, `vb` (so `dv`) makes
     // `omega1` non-finite (`r2 != 0`), and with it `vc` (`r1 != 0`, and
     // `va` enters `vc` directly); `omega2` covers `dv` through `r1`.
@@ -425,6 +434,16 @@ fn rates<T: Real>(
     }
 }
 
+/// `perp(r1) n / det` with `r1 / det` (1/L) formed first and `n` (L^2/s or
+/// L^2/s^2) the rate's numerator: for a rate `n / det` below the normal
+/// range (cold path of [`velocity`] and [`acceleration`]), where the rate
+/// itself has lost its bits but the velocity it gives has not.
+#[cold]
+#[inline(never)]
+fn rate_times_link<T: Real>(r1: &Vector2<T>, inv_det: T, n: T) -> Vector2<T> {
+    perp(&(r1 * inv_det)) * n
+}
+
 /// Accelerations of the group from the accelerations of `A` and `B` (L/s^2;
 /// `None`: fixed) and the rates.
 ///
@@ -442,10 +461,17 @@ pub fn acceleration<T: Real>(
     ab: Option<&Vector2<T>>,
 ) -> Result<RrrAcceleration<T>, Error<T>> {
     let da = difference(ab, aa);
-    let w = da + pos.r1 * (vel.omega1 * vel.omega1) - pos.r2 * (vel.omega2 * vel.omega2);
-    let alpha1 = dot(&w, &pos.r2) * vel.inv_det;
-    let alpha2 = dot(&w, &pos.r1) * vel.inv_det;
-    let ac = plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1));
+    // `omega^2 r` as `(r omega) omega` (a velocity times a rate): `omega^2`
+    // alone underflows first. `r / det` first, as in `rates`.
+    let w = da + (pos.r1 * vel.omega1) * vel.omega1 - (pos.r2 * vel.omega2) * vel.omega2;
+    let alpha1 = dot(&w, &(pos.r2 * vel.inv_det));
+    let alpha2 = dot(&w, &(pos.r1 * vel.inv_det));
+    let mut ac = plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1));
+    if !(abs(alpha1) >= normal_range::<T>().0) {
+        // As in `rates`: `alpha1 perp(r1)` without `alpha1`.
+        let turn = rate_times_link(&pos.r1, vel.inv_det, dot(&w, &pos.r2));
+        ac = plus(aa, turn - (pos.r1 * vel.omega1) * vel.omega1);
+    }
     // One check, as in `velocity_lengths`: `w` (so `aa`, `ab` and the rates)
     // propagates into `alpha1`, `ac` and `alpha2`.
     if all_finite([alpha2, ac.x, ac.y]) {
