@@ -272,8 +272,8 @@ pub fn non_negative<T: Real>(
 pub const SINGULAR_RELATIVE: f64 = 16.0;
 
 /// Checks a determinant against its scale; `Err(Singular)` when
-/// `|det| <= SINGULAR_RELATIVE * eps * scale`, `scale <= 0`, or either is not
-/// finite.
+/// `|det| <= SINGULAR_RELATIVE * eps * scale`, `|det|` is below the normal
+/// range of `T` (subnormal or zero), `scale <= 0`, or either is not finite.
 #[inline(always)]
 pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, Error<T>> {
     let threshold = T::lit(SINGULAR_RELATIVE) * T::eps() * scale;
@@ -282,7 +282,14 @@ pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, E
     // infinite condition.
     // `abs(det) > threshold` is false for a NaN `det` or a NaN or infinite
     // `scale`; an infinite `det` with a finite scale is left to `all_finite`.
-    if abs(det) > threshold && scale > T::zero() && all_finite([det]) {
+    // A subnormal `det` (a second power of f32 lengths below about 1e-19)
+    // has lost bits and its reciprocal may overflow: `Singular` too, as a
+    // number the rates cannot be resolved from.
+    if abs(det) > threshold
+        && abs(det) >= normal_range::<T>().0
+        && scale > T::zero()
+        && all_finite([det])
+    {
         Ok(det)
     } else {
         Err(Error::new(primitive, Fault::Singular { det, scale }))
