@@ -486,16 +486,19 @@ mod tests {
     #[test]
     fn angle_just_below_minus_x_is_pi() {
         assert_eq!(angle(&Vector2::new(-1.0f32, -1e-10)), core::f32::consts::PI);
-        assert_eq!(angle(&Vector2::new(-1.0f64, -1e-300)), core::f64::consts::PI);
         assert_eq!(
-            crate::lane::angle(-1e-10f32, -1.0),
-            core::f32::consts::PI
+            angle(&Vector2::new(-1.0f64, -1e-300)),
+            core::f64::consts::PI
         );
+        assert_eq!(crate::lane::angle(-1e-10f32, -1.0), core::f32::consts::PI);
         assert_eq!(crate::lane::angle(-1e-300f64, -1.0), core::f64::consts::PI);
         for k in 1..200 {
             let y = -(k as f64) * 1e-9;
             let a = angle(&Vector2::new(-1.0f32, y as f32));
-            assert!(a > -core::f32::consts::PI && a <= core::f32::consts::PI, "{y}: {a}");
+            assert!(
+                a > -core::f32::consts::PI && a <= core::f32::consts::PI,
+                "{y}: {a}"
+            );
         }
     }
 }

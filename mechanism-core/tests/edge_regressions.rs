@@ -35,11 +35,17 @@ fn tiny_cos_sin_pair_keeps_the_crank_length() {
         let got = crank::position_cos_sin(&o, T::lit(101.6), T::lit(c), T::lit(s)).unwrap();
         let r = dist(&got.tip, &o);
         let eps = T::eps().as_f64();
-        assert!((r - 101.6).abs() <= 2.0 * eps * 101.6, "({c:e}, {s:e}): radius {r}");
+        assert!(
+            (r - 101.6).abs() <= 2.0 * eps * 101.6,
+            "({c:e}, {s:e}): radius {r}"
+        );
         let (cd, sd) = (T::lit(c).as_f64(), T::lit(s).as_f64());
         let n = cd.hypot(sd);
         let off = (cd / n) * got.tip.y.as_f64() - (sd / n) * got.tip.x.as_f64();
-        assert!(off.abs() <= 2.0 * eps * 101.6, "({c:e}, {s:e}): off by {off:e}");
+        assert!(
+            off.abs() <= 2.0 * eps * 101.6,
+            "({c:e}, {s:e}): off by {off:e}"
+        );
     }
     check::<f64>(0.8775825618903728e-161, 0.479425538604203e-161);
     check::<f32>(4.33e-23, 2.17e-23);
@@ -75,14 +81,22 @@ fn rrr_with_joints_far_closer_than_its_links() {
         // a power of two (exact; the reference squares its lengths).
         let s = 2f64.powi(-(l.log2().floor() as i32));
         let v = |q: &Point2<T>| reference::v(q.x.as_f64() * s, q.y.as_f64() * s);
-        let want = reference::to_f64(
-            reference::rrr_position(v(&a), l * s, v(&c), l * s, true).unwrap(),
-        );
+        let want =
+            reference::to_f64(reference::rrr_position(v(&a), l * s, v(&c), l * s, true).unwrap());
         let err = (got.c.x.as_f64() * s - want[0]).hypot(got.c.y.as_f64() * s - want[1]);
-        assert!(err <= 4.0 * eps, "P off the reference by {err:e} of the link");
+        assert!(
+            err <= 4.0 * eps,
+            "P off the reference by {err:e} of the link"
+        );
     }
     check::<f64>(1e-150, 1e-153, 1e-51, 1.8, 0.8);
-    check::<f32>(8.852912e-30, 1.1069633e-18, 6.565753e-13, 5.02377e-6, 0.8000002);
+    check::<f32>(
+        8.852912e-30,
+        1.1069633e-18,
+        6.565753e-13,
+        5.02377e-6,
+        0.8000002,
+    );
 }
 
 /// Found while fixing the above: inside the rounding band of the inner
@@ -99,7 +113,10 @@ fn rrr_in_the_band_keeps_c_at_l1() {
         let b = Point2::new(d, 0.0);
         let got = rrr::position(&a, l1, &b, l2, Mode::Plus).unwrap();
         let r = dist(&got.c, &a);
-        assert!((r - l1).abs() <= 2.0 * f64::EPSILON, "|B - A| = {d:e}: |C - A| = {r}");
+        assert!(
+            (r - l1).abs() <= 2.0 * f64::EPSILON,
+            "|B - A| = {d:e}: |C - A| = {r}"
+        );
     }
 }
 
@@ -116,10 +133,16 @@ fn crank_link_angle_of_huge_inputs() {
         assert!(a <= T::pi() && a > -T::pi(), "{theta:e}: {a:e}");
         let (s, c) = t.as_f64().sin_cos();
         let d = (a.as_f64() - s.atan2(c)).sin().abs();
-        assert!(d <= 4.0 * T::eps().as_f64(), "{theta:e}: {a:e} off by {d:e}");
+        assert!(
+            d <= 4.0 * T::eps().as_f64(),
+            "{theta:e}: {a:e} off by {d:e}"
+        );
         let tip = crank::position(&p::<T>(0.0, 0.0), T::one(), t).unwrap().tip;
         let along = (a.as_f64().cos() * tip.y.as_f64() - a.as_f64().sin() * tip.x.as_f64()).abs();
-        assert!(along <= 8.0 * T::eps().as_f64(), "{theta:e}: the tip is {along:e} off the angle");
+        assert!(
+            along <= 8.0 * T::eps().as_f64(),
+            "{theta:e}: the tip is {along:e} off the angle"
+        );
     }
     check::<f32>(2.2e8);
     check::<f32>(4e12);
@@ -133,9 +156,15 @@ fn crank_link_angle_of_huge_inputs() {
 #[test]
 fn angle_just_below_minus_x() {
     let a = angle(&Vector2::new(-0.5f32, -1e-12));
-    assert!(a > -core::f32::consts::PI && a <= core::f32::consts::PI, "{a}");
+    assert!(
+        a > -core::f32::consts::PI && a <= core::f32::consts::PI,
+        "{a}"
+    );
     let a = angle(&Vector2::new(-0.5f64, -1e-300));
-    assert!(a > -core::f64::consts::PI && a <= core::f64::consts::PI, "{a}");
+    assert!(
+        a > -core::f64::consts::PI && a <= core::f64::consts::PI,
+        "{a}"
+    );
 }
 
 /// Fuzzer (f64 slider-crank, seed 1 case 1378): a 7.1e-260 crank at 66.7
@@ -153,18 +182,31 @@ fn rrp_slow_crank_on_a_long_rod() {
     let (r, theta, omega) = (7.14050873496136e-260, 5.307579458781303, -66.67395185456759);
     let cr = crank::position(&o, r, theta).unwrap();
     let va = crank::velocity(&cr, None, omega).unwrap();
-    let pos = rrp::position(&cr.tip, 4.2896715268258184e68, &line, 2.2175085314116414e-260, Mode::Plus)
-        .unwrap();
+    let pos = rrp::position(
+        &cr.tip,
+        4.2896715268258184e68,
+        &line,
+        2.2175085314116414e-260,
+        Mode::Plus,
+    )
+    .unwrap();
     let v = rrp::velocity(&pos, &line, Some(&va), None).unwrap();
     // `hypot`, not `norm`: the square of 5e-258 underflows.
     let speed = va.x.hypot(va.y);
     let across = line.dir.x * v.vc.y - line.dir.y * v.vc.x;
-    assert!(across.abs() <= 4.0 * f64::EPSILON * speed, "across the guide: {across:e}");
+    assert!(
+        across.abs() <= 4.0 * f64::EPSILON * speed,
+        "across the guide: {across:e}"
+    );
     // (vc - va) . r1 = 0 (the rod's length is fixed), so the slide speed
     // is dot(va, r1 / |r1|) / dot(dir, r1 / |r1|).
     let u = pos.r1 / pos.r1.x.hypot(pos.r1.y);
     let want = va.dot(&u) / line.dir.dot(&u);
-    assert!((v.s_dot - want).abs() <= 4.0 * f64::EPSILON * speed, "{} vs {want}", v.s_dot);
+    assert!(
+        (v.s_dot - want).abs() <= 4.0 * f64::EPSILON * speed,
+        "{} vs {want}",
+        v.s_dot
+    );
 }
 
 /// Fuzzer (f32 four-bar at 1e-19, seed 2 case 1272): the RRR's rates were
@@ -188,8 +230,16 @@ fn rrr_rates_of_tiny_slow_links_f32() {
     let (w1, w2) = (dv.dot(&r2) / det, dv.dot(&r1) / det);
     let kappa = det.abs() / (r1.norm() * r2.norm());
     let tol = 8.0 * f32::EPSILON as f64 / (kappa * kappa) * w1.abs().max(w2.abs());
-    assert!((got.omega1 as f64 - w1).abs() <= tol, "omega1 {} vs {w1:e}", got.omega1);
-    assert!((got.omega2 as f64 - w2).abs() <= tol, "omega2 {} vs {w2:e}", got.omega2);
+    assert!(
+        (got.omega1 as f64 - w1).abs() <= tol,
+        "omega1 {} vs {w1:e}",
+        got.omega1
+    );
+    assert!(
+        (got.omega2 as f64 - w2).abs() <= tol,
+        "omega2 {} vs {w2:e}",
+        got.omega2
+    );
 }
 
 /// Fuzzer (f32 four-bar, a 1.2e-26 crank at 2.7e-5 rad/s on 1.8e17 links,
@@ -208,8 +258,15 @@ fn rrr_slow_short_crank_on_long_links_f32() {
     let tol = 4.0 * f32::EPSILON as f64 * w(va).norm() * l1 as f64;
     let c1 = (w(v.vc) - w(va)).dot(&w(pos.r1));
     let c2 = w(v.vc).dot(&w(pos.r2));
-    assert!(c1.abs() <= tol && c2.abs() <= tol, "{c1:e} {c2:e} (tolerance {tol:e})");
-    assert!(w(v.vc).norm() > 0.1 * w(va).norm(), "the joint moves: {:?}", v.vc);
+    assert!(
+        c1.abs() <= tol && c2.abs() <= tol,
+        "{c1:e} {c2:e} (tolerance {tol:e})"
+    );
+    assert!(
+        w(v.vc).norm() > 0.1 * w(va).norm(),
+        "the joint moves: {:?}",
+        v.vc
+    );
 }
 
 /// Fuzzer (f32 slider-crank, seed 1 case 348310): a 7.6e29 crank at
@@ -223,7 +280,10 @@ fn crank_centripetal_acceleration_of_a_slow_long_crank_f32() {
     let want = (omega as f64).powi(2) * r as f64;
     // In f64: the f32 square of 2e-21 is subnormal.
     let got = (acc.x as f64).hypot(acc.y as f64);
-    assert!((got - want).abs() <= 2.0 * f32::EPSILON as f64 * want, "{got:e} vs {want:e}");
+    assert!(
+        (got - want).abs() <= 2.0 * f32::EPSILON as f64 * want,
+        "{got:e} vs {want:e}"
+    );
 }
 
 /// Fuzzer (f32 five-bar, seed 2 case 75246): with the rates formed from
@@ -232,13 +292,57 @@ fn crank_centripetal_acceleration_of_a_slow_long_crank_f32() {
 /// typed `NonFinite`.
 #[test]
 fn rrr_overflowing_rate_is_an_error() {
-    let (a, l1, b, l2) = (p::<f32>(0.0, 0.0), 1.3e-5f32, p::<f32>(1.5e-5, 0.0), 0.9e-5f32);
+    let (a, l1, b, l2) = (
+        p::<f32>(0.0, 0.0),
+        1.3e-5f32,
+        p::<f32>(1.5e-5, 0.0),
+        0.9e-5f32,
+    );
     let pos = rrr::position(&a, l1, &b, l2, Mode::Plus).unwrap();
     let va = Vector2::new(3.4e33f32, -1.0e33);
     match rrr::velocity_lengths(&pos, l1, l2, Some(&va), None) {
         Ok(v) => assert!(
-            [v.omega1, v.omega2, v.vc.x, v.vc.y].iter().all(|x| x.is_finite()),
+            [v.omega1, v.omega2, v.vc.x, v.vc.y]
+                .iter()
+                .all(|x| x.is_finite()),
             "{v:?}"
+        ),
+        Err(e) => assert!(matches!(e.fault, mechanism_core::Fault::NonFinite { .. })),
+    }
+}
+
+/// Fuzzer (f64 five-bar, seed 1795688701575150348 case 33748155): an input
+/// rate of -1.8e308 made `dot(vB - vA, r2 / det)` NaN (an infinite minus
+/// an infinite product) while the joint's velocity, taken by the cold path
+/// for a rate below the normal range (NaN compares false), stayed finite:
+/// the `Ok` carried `omega1 = NaN`. Likewise for `alpha1`. Now a typed
+/// `NonFinite`.
+#[test]
+fn rrr_nan_rate_is_an_error() {
+    // The fuzzer's five-bar, through the core's primitives.
+    let (base, prox1, prox2) = (
+        0.05897133357513611,
+        0.10556718576848685,
+        0.11889294866435747,
+    );
+    let (dist1, dist2) = (0.12492302425891956, 0.17723224999531423);
+    let (o1, o2) = (Point2::<f64>::new(0.0, 0.0), Point2::new(base, 0.0));
+    let c1 = crank::position(&o1, prox1, 0.7866454115971535).unwrap();
+    let c2 = crank::position(&o2, prox2, -4.353719601348215).unwrap();
+    let pos = rrr::position(&c1.tip, dist1, &c2.tip, dist2, Mode::Plus).unwrap();
+    let va = crank::velocity(&c1, None, 3.8369235967771473).unwrap();
+    let vc = crank::velocity(&c2, None, -1.7976931348623157e308).unwrap();
+    let no_nan = |xs: [f64; 4]| xs.iter().all(|x| x.is_finite());
+    match rrr::velocity_lengths(&pos, dist1, dist2, Some(&va), Some(&vc)) {
+        Ok(v) => assert!(no_nan([v.omega1, v.omega2, v.vc.x, v.vc.y]), "{v:?}"),
+        Err(e) => assert!(matches!(e.fault, mechanism_core::Fault::NonFinite { .. })),
+    }
+    // The same rates as accelerations of the joints (alpha1's check).
+    let v = rrr::velocity_lengths(&pos, dist1, dist2, None, None).unwrap();
+    match rrr::acceleration(&pos, &v, Some(&va), Some(&vc)) {
+        Ok(acc) => assert!(
+            no_nan([acc.alpha1, acc.alpha2, acc.ac.x, acc.ac.y]),
+            "{acc:?}"
         ),
         Err(e) => assert!(matches!(e.fault, mechanism_core::Fault::NonFinite { .. })),
     }

@@ -84,25 +84,60 @@ mod crank_driver {
         }
         let o = p::<T>(0.0, 0.0);
         let e = |r: Result<crank::CrankPosition<T>, Error<T>>| kind(&r.unwrap_err());
-        assert_eq!(e(crank::position(&o, T::one(), T::lit(f64::NAN))), "NonFinite");
-        assert_eq!(e(crank::position(&o, T::one(), T::lit(f64::INFINITY))), "NonFinite");
+        assert_eq!(
+            e(crank::position(&o, T::one(), T::lit(f64::NAN))),
+            "NonFinite"
+        );
+        assert_eq!(
+            e(crank::position(&o, T::one(), T::lit(f64::INFINITY))),
+            "NonFinite"
+        );
         assert_eq!(e(crank::position(&o, T::zero(), T::one())), "NonPositive");
-        assert_eq!(e(crank::position(&o, T::lit(-1.0), T::one())), "NonPositive");
-        assert_eq!(e(crank::position(&o, T::lit(f64::NAN), T::one())), "NonFinite");
+        assert_eq!(
+            e(crank::position(&o, T::lit(-1.0), T::one())),
+            "NonPositive"
+        );
+        assert_eq!(
+            e(crank::position(&o, T::lit(f64::NAN), T::one())),
+            "NonFinite"
+        );
         // Pivot and length both near the largest number: the tip overflows.
         let far = p::<T>(max, 0.0);
-        assert_eq!(e(crank::position(&far, T::lit(max), T::zero())), "NonFinite");
+        assert_eq!(
+            e(crank::position(&far, T::lit(max), T::zero())),
+            "NonFinite"
+        );
     }
 
     #[test]
     fn f64_crank_position_range() {
-        let angles = [0.0, 1.0, -3.0, core::f64::consts::PI, 1e5, 1.0e5 + 1.0, 4e12, 1.3e17, f64::MAX];
+        let angles = [
+            0.0,
+            1.0,
+            -3.0,
+            core::f64::consts::PI,
+            1e5,
+            1.0e5 + 1.0,
+            4e12,
+            1.3e17,
+            f64::MAX,
+        ];
         position_range::<f64>(&angles, f64::MAX, f64::MIN_POSITIVE);
     }
 
     #[test]
     fn f32_crank_position_range() {
-        let angles = [0.0, 1.0, -3.0, 3.1415927, 1e5, 1.0e5 + 1.0, 2.2e8, 4e12, f32::MAX as f64];
+        let angles = [
+            0.0,
+            1.0,
+            -3.0,
+            3.1415927,
+            1e5,
+            1.0e5 + 1.0,
+            2.2e8,
+            4e12,
+            f32::MAX as f64,
+        ];
         position_range::<f32>(&angles, f32::MAX as f64, f32::MIN_POSITIVE as f64);
     }
 
@@ -133,18 +168,34 @@ mod crank_driver {
                     "pair ({cd:e}, {sd:e}): radius {radius} for {r}"
                 );
                 let off = (ux * y - uy * x).abs();
-                assert!(off <= 2.0 * eps * r, "pair ({cd:e}, {sd:e}): off its direction by {off:e}");
+                assert!(
+                    off <= 2.0 * eps * r,
+                    "pair ({cd:e}, {sd:e}): off its direction by {off:e}"
+                );
             }
         }
         let o = p::<T>(0.0, 0.0);
         let e = |r: Result<crank::CrankPosition<T>, Error<T>>| kind(&r.unwrap_err());
-        assert_eq!(e(crank::position_cos_sin(&o, T::one(), T::zero(), T::zero())), "NonPositive");
         assert_eq!(
-            e(crank::position_cos_sin(&o, T::one(), T::lit(f64::NAN), T::one())),
+            e(crank::position_cos_sin(&o, T::one(), T::zero(), T::zero())),
+            "NonPositive"
+        );
+        assert_eq!(
+            e(crank::position_cos_sin(
+                &o,
+                T::one(),
+                T::lit(f64::NAN),
+                T::one()
+            )),
             "NonFinite"
         );
         assert_eq!(
-            e(crank::position_cos_sin(&o, T::one(), T::one(), T::lit(f64::INFINITY))),
+            e(crank::position_cos_sin(
+                &o,
+                T::one(),
+                T::one(),
+                T::lit(f64::INFINITY)
+            )),
             "NonFinite"
         );
     }
@@ -203,7 +254,10 @@ mod crank_driver {
                 } else {
                     4.0 * eps
                 };
-                assert!(d <= bound, "{x:e}: {got:e} against {want:e} ({d:e} > {bound:e})");
+                assert!(
+                    d <= bound,
+                    "{x:e}: {got:e} against {want:e} ({d:e} > {bound:e})"
+                );
             }
         }
         assert!(wrap_angle(T::lit(f64::NAN)).as_f64().is_nan());
@@ -212,12 +266,40 @@ mod crank_driver {
 
     #[test]
     fn f32_wrap_angle_range() {
-        wrap_range::<f32>(&[0.0, 1.0, 3.1415927, 3.1415928, 7.0, 1e3, 99_999.99, 1e5, 100_000.01, 2.2e8, 4e12, 1e30, f32::MAX as f64]);
+        wrap_range::<f32>(&[
+            0.0,
+            1.0,
+            3.1415927,
+            3.1415928,
+            7.0,
+            1e3,
+            99_999.99,
+            1e5,
+            100_000.01,
+            2.2e8,
+            4e12,
+            1e30,
+            f32::MAX as f64,
+        ]);
     }
 
     #[test]
     fn f64_wrap_angle_range() {
-        wrap_range::<f64>(&[0.0, 1.0, core::f64::consts::PI, 3.1415926535897936, 7.0, 1e3, 99_999.999, 1e5, 100_000.000_001, 1e12, 1.3e17, 1e300, f64::MAX]);
+        wrap_range::<f64>(&[
+            0.0,
+            1.0,
+            core::f64::consts::PI,
+            3.1415926535897936,
+            7.0,
+            1e3,
+            99_999.999,
+            1e5,
+            100_000.000_001,
+            1e12,
+            1.3e17,
+            1e300,
+            f64::MAX,
+        ]);
     }
 }
 
@@ -245,19 +327,30 @@ mod slider_driver {
             );
             let sd = T::lit(s).as_f64();
             let want = [
-                (Dd::from(ox) + Dd::from(sd) * Dd::from(dx) - Dd::from(0.125) * Dd::from(dy)).to_f64(),
-                (Dd::from(oy) + Dd::from(sd) * Dd::from(dy) + Dd::from(0.125) * Dd::from(dx)).to_f64(),
+                (Dd::from(ox) + Dd::from(sd) * Dd::from(dx) - Dd::from(0.125) * Dd::from(dy))
+                    .to_f64(),
+                (Dd::from(oy) + Dd::from(sd) * Dd::from(dy) + Dd::from(0.125) * Dd::from(dx))
+                    .to_f64(),
             ];
             assert!(rel(&[pin.x, pin.y], &want) <= 3.0 * eps, "s {s:e}");
         }
         let e = |r: Result<slider::SliderPosition<T>, Error<T>>| kind(&r.unwrap_err());
-        assert_eq!(e(slider::position(&g, T::zero(), T::lit(f64::NAN))), "NonFinite");
-        assert_eq!(e(slider::position(&g, T::lit(f64::INFINITY), T::one())), "NonFinite");
+        assert_eq!(
+            e(slider::position(&g, T::zero(), T::lit(f64::NAN))),
+            "NonFinite"
+        );
+        assert_eq!(
+            e(slider::position(&g, T::lit(f64::INFINITY), T::one())),
+            "NonFinite"
+        );
         let far = Line {
             origin: p::<T>(max, max),
             dir: g.dir,
         };
-        assert_eq!(e(slider::position(&far, T::zero(), T::lit(max))), "NonFinite");
+        assert_eq!(
+            e(slider::position(&far, T::zero(), T::lit(max))),
+            "NonFinite"
+        );
     }
 
     #[test]
@@ -339,7 +432,10 @@ mod rrr_group {
             if let Ok(w) = position_at::<T>(j) {
                 let unit = T::eps().as_f64() * 1.3 / 0.75;
                 let err = w * unit * pow2(j);
-                assert!(err <= 16.0 * spacing + 4.0 * unit * pow2(j), "2^{j}: {err:e}");
+                assert!(
+                    err <= 16.0 * spacing + 4.0 * unit * pow2(j),
+                    "2^{j}: {err:e}"
+                );
             }
         }
         for j in [-130, -135, -140, -145] {
@@ -366,8 +462,12 @@ mod rrr_group {
         let (a0, l10, b0, l20) = rrr_case::<f64>(0);
         let (va0, vb0) = (reference::v(a0.x, a0.y), reference::v(b0.x, b0.y));
         let c = reference::rrr_position(va0, l10, vb0, l20, true).unwrap();
-        let (w1, w2) = reference::rrr_rates(va0, vb0, c, reference::v(0.0, 0.0), reference::v(0.7, -0.3)).unwrap();
-        let err = (got.omega1.as_f64() - w1.to_f64()).abs().max((got.omega2.as_f64() - w2.to_f64()).abs());
+        let (w1, w2) =
+            reference::rrr_rates(va0, vb0, c, reference::v(0.0, 0.0), reference::v(0.7, -0.3))
+                .unwrap();
+        let err = (got.omega1.as_f64() - w1.to_f64())
+            .abs()
+            .max((got.omega2.as_f64() - w2.to_f64()).abs());
         Ok(err / (T::eps().as_f64() / (0.75 * 0.75)))
     }
 
@@ -382,7 +482,11 @@ mod rrr_group {
             assert!(w <= 8.0, "f64 2^{j}: {w}");
         }
         for j in [-66, -70, -100] {
-            assert_eq!(kind(&rates_at::<f32>(j).unwrap_err()), "Singular", "f32 2^{j}");
+            assert_eq!(
+                kind(&rates_at::<f32>(j).unwrap_err()),
+                "Singular",
+                "f32 2^{j}"
+            );
         }
         assert_eq!(kind(&rates_at::<f64>(-540).unwrap_err()), "Singular");
     }
@@ -405,11 +509,15 @@ mod rrr_group {
                     let c = rrr::position(&a, l1, &Point2::new(d, 0.0), l2, Mode::Plus)
                         .unwrap_or_else(|e| panic!("{l1} {l2} at {d:e}: {e:?}"));
                     let r = c.c.coords.norm();
-                    assert!((r - l1).abs() <= 2.0 * eps * l1, "{l1} {l2} at {d:e}: |C - A| = {r}");
+                    assert!(
+                        (r - l1).abs() <= 2.0 * eps * l1,
+                        "{l1} {l2} at {d:e}: |C - A| = {r}"
+                    );
                 }
                 let d = edge + sign * 5.0 * eps * sum;
                 if d > 0.0 {
-                    let e = rrr::position(&a, l1, &Point2::new(d, 0.0), l2, Mode::Plus).unwrap_err();
+                    let e =
+                        rrr::position(&a, l1, &Point2::new(d, 0.0), l2, Mode::Plus).unwrap_err();
                     assert_eq!(kind(&e), "CannotAssemble", "{l1} {l2} at {d:e}");
                 }
             }
@@ -435,11 +543,17 @@ mod actuator_driver {
             };
             let s = pow2(j) as f32;
             let close = |x: f32, y: f32| (x - y * s).abs() <= 4.0 * f32::EPSILON * 1.3 * s;
-            assert!(close(got.c.x, unit.c.x) && close(got.c.y, unit.c.y), "2^{j}");
+            assert!(
+                close(got.c.x, unit.c.x) && close(got.c.y, unit.c.y),
+                "2^{j}"
+            );
         }
         let (a, l, b, len) = rrr_case::<f32>(66);
         let e = actuator::position(&a, l, &b, len, Mode::Minus).unwrap_err();
-        assert_eq!((e.primitive, kind(&e)), (mechanism_core::Primitive::Actuator, "NonFinite"));
+        assert_eq!(
+            (e.primitive, kind(&e)),
+            (mechanism_core::Primitive::Actuator, "NonFinite")
+        );
     }
 }
 
@@ -514,7 +628,9 @@ mod sliding_groups {
             Ok(vec![pos.s, v.s_dot])
         }
         let (unit32, unit64) = (at::<f32>(0).unwrap(), at::<f64>(0).unwrap());
-        let (_, s) = reference::rpr_position(reference::v(0.4, 0.9), reference::v(-0.2, 0.1), 0.1, true).unwrap();
+        let (_, s) =
+            reference::rpr_position(reference::v(0.4, 0.9), reference::v(-0.2, 0.1), 0.1, true)
+                .unwrap();
         assert!(rel(&unit64[..1], &[s.to_f64()]) <= 2.0 * f64::EPSILON);
         assert!(rel(&unit32[..1], &[s.to_f64()]) <= 2.0 * f32::EPSILON as f64);
         for j in [-100, 100] {
@@ -556,12 +672,24 @@ mod sliding_groups {
         assert!(rel(&u32p[..2], &c) <= 4.0 * f32::EPSILON as f64);
         let (u32r, u64r) = (rpp_at::<f32>(0).unwrap(), rpp_at::<f64>(0).unwrap());
         for j in [-100, 119] {
-            assert!(scaled(j, &prp_at::<f32>(j).unwrap(), &u32p), "PRP f32 2^{j}");
-            assert!(scaled(j, &rpp_at::<f32>(j).unwrap(), &u32r), "RPP f32 2^{j}");
+            assert!(
+                scaled(j, &prp_at::<f32>(j).unwrap(), &u32p),
+                "PRP f32 2^{j}"
+            );
+            assert!(
+                scaled(j, &rpp_at::<f32>(j).unwrap(), &u32r),
+                "RPP f32 2^{j}"
+            );
         }
         for j in [-996, 1016] {
-            assert!(scaled(j, &prp_at::<f64>(j).unwrap(), &u64p), "PRP f64 2^{j}");
-            assert!(scaled(j, &rpp_at::<f64>(j).unwrap(), &u64r), "RPP f64 2^{j}");
+            assert!(
+                scaled(j, &prp_at::<f64>(j).unwrap(), &u64p),
+                "PRP f64 2^{j}"
+            );
+            assert!(
+                scaled(j, &rpp_at::<f64>(j).unwrap(), &u64r),
+                "RPP f64 2^{j}"
+            );
         }
     }
 }
@@ -589,11 +717,20 @@ mod link_points {
         }
         let o = p::<T>(max, max);
         let local = vec2::<T>(max, 0.0);
-        assert_eq!(kind(&link::point_position(&o, &axis, &local).unwrap_err()), "NonFinite");
+        assert_eq!(
+            kind(&link::point_position(&o, &axis, &local).unwrap_err()),
+            "NonFinite"
+        );
         let off = vec2::<T>(max / 2.0, max / 2.0);
-        assert_eq!(kind(&link::point_velocity(&off, T::lit(4.0)).unwrap_err()), "NonFinite");
+        assert_eq!(
+            kind(&link::point_velocity(&off, T::lit(4.0)).unwrap_err()),
+            "NonFinite"
+        );
         let base = vec2::<T>(max / 1.5, 0.0);
-        assert_eq!(kind(&link::point_sum(&base, vec2::<T>(max / 1.5, 0.0)).unwrap_err()), "NonFinite");
+        assert_eq!(
+            kind(&link::point_sum(&base, vec2::<T>(max / 1.5, 0.0)).unwrap_err()),
+            "NonFinite"
+        );
         assert!(link::point_sum(&base, vec2::<T>(-max / 1.5, 1.0)).is_ok());
     }
 
@@ -629,9 +766,14 @@ mod linear_solver {
         for k in [4.0, 16.0, 1e3] {
             let d = eps * T::lit(k);
             let (a, b) = sys(d);
-            let x = linsolve::solve(a, b).unwrap_or_else(|e| panic!("d = {k} eps: {e:?}")).x;
+            let x = linsolve::solve(a, b)
+                .unwrap_or_else(|e| panic!("d = {k} eps: {e:?}"))
+                .x;
             let err = rel(&x, &[1.0, 1.0]);
-            assert!(err <= 4.0 * eps.as_f64() / d.as_f64() + 4.0 * eps.as_f64(), "d = {k} eps: {err:e}");
+            assert!(
+                err <= 4.0 * eps.as_f64() / d.as_f64() + 4.0 * eps.as_f64(),
+                "d = {k} eps: {err:e}"
+            );
         }
         for d in [eps, T::zero()] {
             let (a, b) = sys(d);
@@ -642,7 +784,10 @@ mod linear_solver {
         assert_eq!(kind(&linsolve::solve(a, b).unwrap_err()), "NonFinite");
         let big = T::lit(if eps.as_f64() > 1e-10 { 3e38 } else { 1.7e308 });
         let a = [[T::lit(1e-30), T::zero()], [T::zero(), T::one()]];
-        assert_eq!(kind(&linsolve::solve(a, [big, T::one()]).unwrap_err()), "NonFinite");
+        assert_eq!(
+            kind(&linsolve::solve(a, [big, T::one()]).unwrap_err()),
+            "NonFinite"
+        );
     }
 
     #[test]
@@ -704,7 +849,11 @@ mod force_groups {
             let err = rel(&gotv, &want);
             assert!(err <= 8.0 * eps / s, "s {s:e}: {err:e}");
         }
-        let (a, b, c) = (Point2::new(0.0, 0.0), Point2::new(2.0, 0.0), Point2::new(1.0, 1.0));
+        let (a, b, c) = (
+            Point2::new(0.0, 0.0),
+            Point2::new(2.0, 0.0),
+            Point2::new(1.0, 1.0),
+        );
         let bad = Wrench::new(Vector2::new(f64::NAN, 0.0), 0.0);
         let e = rrr_force::reactions(&a, &b, &c, &bad, &Wrench::zero()).unwrap_err();
         assert_eq!(kind(&e), "NonFinite");

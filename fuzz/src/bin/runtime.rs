@@ -155,7 +155,6 @@ struct Check<'a> {
     /// rad/s in f32 gives velocities known only to that spacing, and a rate
     /// that underflows to zero moves a result by less than this.
     floor: f64,
-
 }
 
 /// `2^floor(log2 x)` for a finite `x > 0` (1 otherwise).
@@ -287,7 +286,18 @@ impl Check<'_> {
     /// units of `s2` (positions) with the rates unscaled: `(ax - ay) . (x -
     /// y) / s2 + |vx - vy|^2 / s2`, against `amax + vmax^2 / s2`.
     #[allow(clippy::too_many_arguments)]
-    fn dist_acc(&mut self, what: &str, x: P, y: P, vx: P, vy: P, ax: P, ay: P, vmax: f64, amax: f64) {
+    fn dist_acc(
+        &mut self,
+        what: &str,
+        x: P,
+        y: P,
+        vx: P,
+        vy: P,
+        ax: P,
+        ay: P,
+        vmax: f64,
+        amax: f64,
+    ) {
         let dv = sub(vx, vy);
         let r = dot(sub(ax, ay), sub(self.sc(x), self.sc(y))) + dot(self.sc(dv), dv);
         self.small(what, r, amax + vmax * (vmax / self.s2));
@@ -310,7 +320,11 @@ impl Check<'_> {
         let u = unit(angle.as_f64());
         let off = cross(u, sub(self.sc(tip), self.sc(o)));
         let turn = if turn.is_finite() { turn.min(1e5) } else { 0.0 };
-        self.small(&format!("{what} direction"), off, 1.0 + (4.0 + turn) * r.abs() / self.s2);
+        self.small(
+            &format!("{what} direction"),
+            off,
+            1.0 + (4.0 + turn) * r.abs() / self.s2,
+        );
         if dot(u, sub(self.sc(tip), self.sc(o))) < -0.5 * r.abs() / self.s2 {
             self.fail(format!("{what}: tip opposite its angle"));
         }
@@ -326,8 +340,13 @@ impl Check<'_> {
 
 /// Largest of the absolute values (NaN counts as infinite).
 fn amax(xs: &[f64]) -> f64 {
-    xs.iter()
-        .fold(0.0f64, |m, &x| if x.is_nan() { f64::INFINITY } else { m.max(x.abs()) })
+    xs.iter().fold(0.0f64, |m, &x| {
+        if x.is_nan() {
+            f64::INFINITY
+        } else {
+            m.max(x.abs())
+        }
+    })
 }
 
 /// Largest `|v|` over vectors.
@@ -389,13 +408,27 @@ impl Gen {
             0 => 0.0 * sign,
             1 => f64::INFINITY * sign,
             2 => f64::NAN,
-            3 => sign * if self.single { f32::MAX as f64 } else { f64::MAX },
-            4 => sign * if self.single { f32::MIN_POSITIVE as f64 } else { f64::MIN_POSITIVE },
-            5 => sign * if self.single {
-                f32::from_bits(r.u32(1..0x0080_0000)) as f64
-            } else {
-                f64::from_bits(r.u64(1..0x0010_0000_0000_0000))
-            },
+            3 => {
+                sign * if self.single {
+                    f32::MAX as f64
+                } else {
+                    f64::MAX
+                }
+            }
+            4 => {
+                sign * if self.single {
+                    f32::MIN_POSITIVE as f64
+                } else {
+                    f64::MIN_POSITIVE
+                }
+            }
+            5 => {
+                sign * if self.single {
+                    f32::from_bits(r.u32(1..0x0080_0000)) as f64
+                } else {
+                    f64::from_bits(r.u64(1..0x0010_0000_0000_0000))
+                }
+            }
             6 | 7 => sign * 10f64.powf(r.f64() * 616.0 - 308.0),
             8 => sign * 10f64.powi(r.i32(-45..=45)) * (1.0 + r.f64()),
             _ => {
@@ -524,13 +557,27 @@ fn four_bar<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     ]);
     let inp = |x: T| FourBarInput { theta: x };
     let check_pos = |c: &mut Check, q: &FourBarPosition<T>, what: &str, turn: f64| {
-        let xs = [q.A.x, q.A.y, q.B.x, q.B.y, q.P.x, q.P.y, q.link2, q.link3, q.link4];
+        let xs = [
+            q.A.x, q.A.y, q.B.x, q.B.y, q.P.x, q.P.y, q.link2, q.link3, q.link4,
+        ];
         if !c.finite(what, &xs.map(|x| x.as_f64())) {
             return;
         }
         let (o2, o4) = ((0.0, 0.0), (m.ground.as_f64(), m.oy.as_f64()));
-        c.crank(&format!("{what} crank"), o2, pt(&q.A), m.crank.as_f64(), q.link2, turn);
-        c.dist(&format!("{what} coupler"), pt(&q.B), pt(&q.A), m.coupler.as_f64());
+        c.crank(
+            &format!("{what} crank"),
+            o2,
+            pt(&q.A),
+            m.crank.as_f64(),
+            q.link2,
+            turn,
+        );
+        c.dist(
+            &format!("{what} coupler"),
+            pt(&q.B),
+            pt(&q.A),
+            m.coupler.as_f64(),
+        );
         c.dist(&format!("{what} rocker"), pt(&q.B), o4, m.rocker.as_f64());
         c.angle(&format!("{what} link3"), q.link3);
         c.angle(&format!("{what} link4"), q.link4);
@@ -547,14 +594,20 @@ fn four_bar<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
             );
             let r = norm(sub(c.sc(pt(&q.P)), c.sc(want)));
             let lever = (px.abs() + py.abs()) / n;
-            c.small(&format!("{what} coupler point"), r, 1.0 + 4.0 * lever * scale / c.s2);
+            c.small(
+                &format!("{what} coupler point"),
+                r,
+                1.0 + 4.0 * lever * scale / c.s2,
+            );
         }
     };
     let mut c = Check::new::<T>(f, scale);
     if let Some(q) = st.count(m.position(&inp(th))) {
         check_pos(&mut c, &q, "position", th.as_f64().abs());
         if let Some(v) = st.count(m.velocity(&q, &inp(w))) {
-            let vs = [v.A.x, v.A.y, v.B.x, v.B.y, v.P.x, v.P.y, v.link2, v.link3, v.link4];
+            let vs = [
+                v.A.x, v.A.y, v.B.x, v.B.y, v.P.x, v.P.y, v.link2, v.link3, v.link4,
+            ];
             if c.finite("velocity", &vs.map(|x| x.as_f64())) {
                 c.condition("velocity", v.condition);
                 let vm = vmax(&[ve(&v.A), ve(&v.B)]);
@@ -563,12 +616,24 @@ fn four_bar<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
                 c.dist_rate("velocity coupler", b, a, ve(&v.B), ve(&v.A), vm);
                 c.dist_rate("velocity rocker", b, o4, ve(&v.B), (0.0, 0.0), vm);
                 if let Some(ac) = st.count(m.acceleration(&q, &v, &inp(al))) {
-                    let xs = [ac.A.x, ac.A.y, ac.B.x, ac.B.y, ac.P.x, ac.P.y, ac.link3, ac.link4];
+                    let xs = [
+                        ac.A.x, ac.A.y, ac.B.x, ac.B.y, ac.P.x, ac.P.y, ac.link3, ac.link4,
+                    ];
                     if c.finite("acceleration", &xs.map(|x| x.as_f64())) {
                         let am = vmax(&[ve(&ac.A), ve(&ac.B)]);
                         let z = (0.0, 0.0);
                         c.dist_acc("acc crank", a, z, ve(&v.A), z, ve(&ac.A), z, vm, am);
-                        c.dist_acc("acc coupler", b, a, ve(&v.B), ve(&v.A), ve(&ac.B), ve(&ac.A), vm, am);
+                        c.dist_acc(
+                            "acc coupler",
+                            b,
+                            a,
+                            ve(&v.B),
+                            ve(&v.A),
+                            ve(&ac.B),
+                            ve(&ac.A),
+                            vm,
+                            am,
+                        );
                         c.dist_acc("acc rocker", b, o4, ve(&v.B), z, ve(&ac.B), z, vm, am);
                     }
                 }
@@ -646,7 +711,17 @@ fn slider_crank<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> Strin
     if c.finite("acceleration", &xs.map(|x| x.as_f64())) {
         let am = vmax(&[ve(&ac.A), ve(&ac.B)]);
         c.dist_acc("acc crank", a, o, ve(&v.A), z, ve(&ac.A), z, vm, am);
-        c.dist_acc("acc rod", b, a, ve(&v.B), ve(&v.A), ve(&ac.B), ve(&ac.A), vm, am);
+        c.dist_acc(
+            "acc rod",
+            b,
+            a,
+            ve(&v.B),
+            ve(&v.A),
+            ve(&ac.B),
+            ve(&ac.A),
+            vm,
+            am,
+        );
         c.along("acc slider", dir, ve(&ac.B), am);
     }
     desc
@@ -677,8 +752,19 @@ fn shaper<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
         return desc;
     };
     let xs = [
-        q.B.x, q.B.y, q.D.x, q.D.y, q.E.x, q.E.y, q.link2, q.link3, q.link4, q.block, q.cb,
-        q.s_ram, q.ram_block,
+        q.B.x,
+        q.B.y,
+        q.D.x,
+        q.D.y,
+        q.E.x,
+        q.E.y,
+        q.link2,
+        q.link3,
+        q.link4,
+        q.block,
+        q.cb,
+        q.s_ram,
+        q.ram_block,
     ];
     if !c.finite("position", &xs.map(|x| x.as_f64())) {
         return desc;
@@ -704,7 +790,9 @@ fn shaper<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     let Some(v) = st.count(m.velocity(&q, &inp(w))) else {
         return desc;
     };
-    let vs = [v.B.x, v.B.y, v.D.x, v.D.y, v.E.x, v.E.y, v.link3, v.link4, v.cb, v.s_ram];
+    let vs = [
+        v.B.x, v.B.y, v.D.x, v.D.y, v.E.x, v.E.y, v.link3, v.link4, v.cb, v.s_ram,
+    ];
     if !c.finite("velocity", &vs.map(|x| x.as_f64())) {
         return desc;
     }
@@ -718,12 +806,24 @@ fn shaper<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     let Some(ac) = st.count(m.acceleration(&q, &v, &inp(al))) else {
         return desc;
     };
-    let xs = [ac.B.x, ac.B.y, ac.D.x, ac.D.y, ac.E.x, ac.E.y, ac.link3, ac.link4];
+    let xs = [
+        ac.B.x, ac.B.y, ac.D.x, ac.D.y, ac.E.x, ac.E.y, ac.link3, ac.link4,
+    ];
     if c.finite("acceleration", &xs.map(|x| x.as_f64())) {
         let am = vmax(&[ve(&ac.B), ve(&ac.D), ve(&ac.E)]);
         c.dist_acc("acc crank", b, a0, ve(&v.B), z, ve(&ac.B), z, vm, am);
         c.dist_acc("acc CD", d, c0, ve(&v.D), z, ve(&ac.D), z, vm, am);
-        c.dist_acc("acc DE", e, d, ve(&v.E), ve(&v.D), ve(&ac.E), ve(&ac.D), vm, am);
+        c.dist_acc(
+            "acc DE",
+            e,
+            d,
+            ve(&v.E),
+            ve(&v.D),
+            ve(&ac.E),
+            ve(&ac.D),
+            vm,
+            am,
+        );
         c.along("acc ram", ram_dir, ve(&ac.E), am);
     }
     desc
@@ -756,14 +856,30 @@ fn five_bar<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     let Some(q) = st.count(m.position(&inp(q1, q2))) else {
         return desc;
     };
-    let xs = [q.A.x, q.A.y, q.C.x, q.C.y, q.P.x, q.P.y, q.arm1, q.arm2, q.fore1, q.fore2];
+    let xs = [
+        q.A.x, q.A.y, q.C.x, q.C.y, q.P.x, q.P.y, q.arm1, q.arm2, q.fore1, q.fore2,
+    ];
     if !c.finite("position", &xs.map(|x| x.as_f64())) {
         return desc;
     }
     let (o1, o2) = ((0.0, 0.0), (m.base.as_f64(), 0.0));
     let (a, cc, pp) = (pt(&q.A), pt(&q.C), pt(&q.P));
-    c.crank("crank 1", o1, a, m.prox1.as_f64(), q.arm1, q1.as_f64().abs());
-    c.crank("crank 2", o2, cc, m.prox2.as_f64(), q.arm2, q2.as_f64().abs());
+    c.crank(
+        "crank 1",
+        o1,
+        a,
+        m.prox1.as_f64(),
+        q.arm1,
+        q1.as_f64().abs(),
+    );
+    c.crank(
+        "crank 2",
+        o2,
+        cc,
+        m.prox2.as_f64(),
+        q.arm2,
+        q2.as_f64().abs(),
+    );
     c.dist("distal 1", pp, a, m.dist1.as_f64());
     c.dist("distal 2", pp, cc, m.dist2.as_f64());
     c.angle("fore1", q.fore1);
@@ -785,13 +901,35 @@ fn five_bar<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     let Some(ac) = st.count(m.acceleration(&q, &v, &al)) else {
         return desc;
     };
-    let xs = [ac.A.x, ac.A.y, ac.C.x, ac.C.y, ac.P.x, ac.P.y, ac.fore1, ac.fore2];
+    let xs = [
+        ac.A.x, ac.A.y, ac.C.x, ac.C.y, ac.P.x, ac.P.y, ac.fore1, ac.fore2,
+    ];
     if c.finite("acceleration", &xs.map(|x| x.as_f64())) {
         let am = vmax(&[ve(&ac.A), ve(&ac.C), ve(&ac.P)]);
         c.dist_acc("acc crank 1", a, o1, ve(&v.A), z, ve(&ac.A), z, vm, am);
         c.dist_acc("acc crank 2", cc, o2, ve(&v.C), z, ve(&ac.C), z, vm, am);
-        c.dist_acc("acc distal 1", pp, a, ve(&v.P), ve(&v.A), ve(&ac.P), ve(&ac.A), vm, am);
-        c.dist_acc("acc distal 2", pp, cc, ve(&v.P), ve(&v.C), ve(&ac.P), ve(&ac.C), vm, am);
+        c.dist_acc(
+            "acc distal 1",
+            pp,
+            a,
+            ve(&v.P),
+            ve(&v.A),
+            ve(&ac.P),
+            ve(&ac.A),
+            vm,
+            am,
+        );
+        c.dist_acc(
+            "acc distal 2",
+            pp,
+            cc,
+            ve(&v.P),
+            ve(&v.C),
+            ve(&ac.P),
+            ve(&ac.C),
+            vm,
+            am,
+        );
     }
     desc
 }
@@ -823,8 +961,21 @@ fn slides<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
         return desc;
     };
     let xs = [
-        q.A.x, q.A.y, q.Q.x, q.Q.y, q.C.x, q.C.y, q.crank_link, q.block, q.yoke, q.b1, q.b2,
-        q.s_slot, q.s_yoke, q.s1, q.s2,
+        q.A.x,
+        q.A.y,
+        q.Q.x,
+        q.Q.y,
+        q.C.x,
+        q.C.y,
+        q.crank_link,
+        q.block,
+        q.yoke,
+        q.b1,
+        q.b2,
+        q.s_slot,
+        q.s_yoke,
+        q.s1,
+        q.s2,
     ];
     if !c.finite("position", &xs.map(|x| x.as_f64())) {
         return desc;
@@ -833,7 +984,12 @@ fn slides<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     let (o, vv) = ((0.0, 0.0), (m.vx.as_f64(), 0.0));
     let (a, qq, cc) = (pt(&q.A), pt(&q.Q), pt(&q.C));
     c.crank("crank", o, a, m.crank.as_f64(), q.crank_link, turn);
-    for (what, x) in [("block", q.block), ("yoke", q.yoke), ("b1", q.b1), ("b2", q.b2)] {
+    for (what, x) in [
+        ("block", q.block),
+        ("yoke", q.yoke),
+        ("b1", q.b1),
+        ("b2", q.b2),
+    ] {
         c.angle(what, x);
     }
     // RPP: Q on the offset line of the vertical guide, A = Q + s_slot w.
@@ -860,11 +1016,20 @@ fn slides<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     let turn = if turn.is_finite() { turn.min(1e5) } else { 0.0 };
     let on1 = cross(u, c.sc(cc)) - m.o1.as_f64() / c.s2;
     c.small("C on the crank's line", on1, far * (4.0 + turn));
-    c.on_line_scaled("C on the tilted guide", cc, vv, unit(m.tilt.as_f64()), m.o2.as_f64(), far);
+    c.on_line_scaled(
+        "C on the tilted guide",
+        cc,
+        vv,
+        unit(m.tilt.as_f64()),
+        m.o2.as_f64(),
+        far,
+    );
     let Some(v) = st.count(m.velocity(&q, &inp(w))) else {
         return desc;
     };
-    let vs = [v.A.x, v.A.y, v.Q.x, v.Q.y, v.C.x, v.C.y, v.b1, v.s1, v.s2, v.s_slot, v.s_yoke];
+    let vs = [
+        v.A.x, v.A.y, v.Q.x, v.Q.y, v.C.x, v.C.y, v.b1, v.s1, v.s2, v.s_slot, v.s_yoke,
+    ];
     if !c.finite("velocity", &vs.map(|x| x.as_f64())) {
         return desc;
     }
@@ -876,11 +1041,18 @@ fn slides<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     // size |omega| |C| cancel in it.
     let (wn, cn) = (v.crank_link.as_f64().abs(), norm(cc));
     let vc_scale = norm(ve(&v.C)) + wn * cn;
-    c.along("velocity C on the tilted guide", unit(m.tilt.as_f64()), ve(&v.C), vc_scale);
+    c.along(
+        "velocity C on the tilted guide",
+        unit(m.tilt.as_f64()),
+        ve(&v.C),
+        vc_scale,
+    );
     let Some(ac) = st.count(m.acceleration(&q, &v, &inp(al))) else {
         return desc;
     };
-    let xs = [ac.A.x, ac.A.y, ac.Q.x, ac.Q.y, ac.C.x, ac.C.y, ac.b1, ac.s1, ac.s2];
+    let xs = [
+        ac.A.x, ac.A.y, ac.Q.x, ac.Q.y, ac.C.x, ac.C.y, ac.b1, ac.s1, ac.s2,
+    ];
     if c.finite("acceleration", &xs.map(|x| x.as_f64())) {
         let am = vmax(&[ve(&ac.A), ve(&ac.Q)]);
         let z = (0.0, 0.0);
@@ -922,7 +1094,9 @@ fn press<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
         return desc;
     };
     let (q, v, ac, fo) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
-    let xs = [q.A.x, q.A.y, q.B.x, q.B.y, q.G3.x, q.G3.y, q.link2, q.link3, q.ram, q.x];
+    let xs = [
+        q.A.x, q.A.y, q.B.x, q.B.y, q.G3.x, q.G3.y, q.link2, q.link3, q.ram, q.x,
+    ];
     if !c.finite("position", &xs.map(|x| x.as_f64())) {
         return desc;
     }
@@ -933,7 +1107,9 @@ fn press<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     c.angle("link3", q.link3);
     c.angle("ram", q.ram);
     let vs = [v.A.x, v.A.y, v.B.x, v.B.y, v.G3.x, v.G3.y, v.link3, v.x];
-    let acs = [ac.A.x, ac.A.y, ac.B.x, ac.B.y, ac.G3.x, ac.G3.y, ac.link3, ac.x];
+    let acs = [
+        ac.A.x, ac.A.y, ac.B.x, ac.B.y, ac.G3.x, ac.G3.y, ac.link3, ac.x,
+    ];
     if !(c.finite("velocity", &vs.map(|x| x.as_f64()))
         && c.finite("acceleration", &acs.map(|x| x.as_f64())))
     {
@@ -944,7 +1120,17 @@ fn press<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     let am = vmax(&[ve(&ac.A), ve(&ac.B)]);
     c.dist_rate("velocity rod", b, a, ve(&v.B), ve(&v.A), vm);
     c.along("velocity ram", (1.0, 0.0), ve(&v.B), vm);
-    c.dist_acc("acc rod", b, a, ve(&v.B), ve(&v.A), ve(&ac.B), ve(&ac.A), vm, am);
+    c.dist_acc(
+        "acc rod",
+        b,
+        a,
+        ve(&v.B),
+        ve(&v.A),
+        ve(&ac.B),
+        ve(&ac.A),
+        vm,
+        am,
+    );
     c.along("acc ram", (1.0, 0.0), ve(&ac.B), am);
     let fs = [
         fo.r_ground_link2.x,
@@ -1020,15 +1206,18 @@ fn run_case(seed: u64, case: u64, st: &mut Stats) -> Result<(), String> {
         Ok(desc) if !fails.is_empty() => {
             for f in &fails {
                 let check = f.split(':').next().unwrap_or("");
-                let e = st.kinds.entry(format!("{name}: {check}")).or_insert((0, case));
+                let e = st
+                    .kinds
+                    .entry(format!("{name}: {check}"))
+                    .or_insert((0, case));
                 e.0 += 1;
             }
             Err(format!(
-            "{name} ({:?}, scale {:e}): {desc}\n    {}",
-            g.style,
-            g.scale,
-            fails.join("\n    ")
-        ))
+                "{name} ({:?}, scale {:e}): {desc}\n    {}",
+                g.style,
+                g.scale,
+                fails.join("\n    ")
+            ))
         }
         Ok(_) => Ok(()),
     }

@@ -234,11 +234,7 @@ pub fn velocity<T: Real>(
     // `omega1` (1/s) underflows where the speeds are far below the lengths
     // (f64: a 7e-260 crank's tip at 5e-258 L/s on a 4e68 rod gave `vc =
     // va`, off its guide).
-    let vc = finite_vec(
-        plus(va, perp(&q) * n),
-        P,
-        "RRP velocity of C",
-    )?;
+    let vc = finite_vec(plus(va, perp(&q) * n), P, "RRP velocity of C")?;
     Ok(RrpVelocity {
         omega1,
         s_dot,
@@ -280,11 +276,7 @@ pub fn acceleration<T: Real>(
     let n = cross(&g.dir, &w);
     let alpha1 = finite(n * inv, P, "RRP angular acceleration")?;
     let s_ddot = finite(-dot(&w, &q), P, "RRP sliding acceleration")?;
-    let ac = finite_vec(
-        plus(aa, perp(&q) * n - c1),
-        P,
-        "RRP acceleration of C",
-    )?;
+    let ac = finite_vec(plus(aa, perp(&q) * n - c1), P, "RRP acceleration of C")?;
     Ok(RrpAcceleration { alpha1, s_ddot, ac })
 }
 
