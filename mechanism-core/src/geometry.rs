@@ -111,7 +111,8 @@ pub fn wrap_angle<T: Real>(angle: T) -> T {
     if angle <= pi && angle > -pi {
         return angle;
     }
-    if !(abs(angle) <= T::lit(WRAP_LIMIT)) {
+    // NaN stays on the path below and gives NaN.
+    if abs(angle) > T::lit(WRAP_LIMIT) {
         return wrap_far(angle);
     }
     let two_pi = T::two_pi();
@@ -133,7 +134,7 @@ fn wrap_far<T: Real>(angle: T) -> T {
     if angle.finite() {
         self::angle(&unit(angle))
     } else {
-        angle - angle
+        T::lit(f64::NAN)
     }
 }
 

@@ -242,7 +242,8 @@ impl Check<'_> {
             UNCHECKED.fetch_add(1, Ordering::Relaxed);
             return;
         }
-        if !(residual.abs() <= tol) {
+        // NaN was excluded above, so `>` is the negation of `<=` here.
+        if residual.abs() > tol {
             self.fail(format!(
                 "{what}: residual {:e} above {:e} (scale {:e}, unit {:e})",
                 residual.abs(),
@@ -939,11 +940,11 @@ fn slides<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     let m = Slides::<T> {
         crank: l(g, 0.1),
         vx: l(g, 0.3),
-        beta: T::lit(g.plain(-1.5707963267948966)),
+        beta: T::lit(g.plain(-std::f64::consts::FRAC_PI_2)),
         e: l(g, 0.01),
         o1: l(g, 0.005),
         o2: l(g, 0.01),
-        tilt: T::lit(g.plain(1.5707963267948966)),
+        tilt: T::lit(g.plain(std::f64::consts::FRAC_PI_2)),
     };
     let th = T::lit(g.angle());
     let (w, al) = (T::lit(g.rate()), T::lit(g.rate()));
@@ -1153,8 +1154,10 @@ fn press<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
         // of the crank-rod angle near a dead centre (so it may pass 1
         // there), 1 when a power overflows; never negative or NaN.
         let r = fo.power_residual;
-        if !(r >= T::zero()) {
-            c.fail(format!("forces: power_residual {r:e} negative"));
+        if r < T::zero() || !r.finite() {
+            c.fail(format!(
+                "forces: power_residual {r:e} negative or not finite"
+            ));
         }
     }
     desc

@@ -417,7 +417,7 @@ fn rates<T: Real>(
     let omega1 = dot(&dv, &(pos.r2 * inv_det));
     let omega2 = dot(&dv, &(pos.r1 * inv_det));
     let mut vc = plus(va, relative_velocity(&pos.r1, omega1));
-    if !(abs(omega1) >= normal_range::<T>().0) {
+    if abs(omega1) < normal_range::<T>().0 {
         // `omega1` below the normal range (or zero) while `omega1 r1` may
         // not be: speeds far below long links (f32: 1e-33 L/s on 1e13 L).
         vc = plus(va, rate_times_link(&pos.r1, inv_det, dot(&dv, &pos.r2)));
@@ -480,7 +480,7 @@ pub fn acceleration<T: Real>(
     let alpha1 = dot(&w, &(pos.r2 * vel.inv_det));
     let alpha2 = dot(&w, &(pos.r1 * vel.inv_det));
     let mut ac = plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1));
-    if !(abs(alpha1) >= normal_range::<T>().0) {
+    if abs(alpha1) < normal_range::<T>().0 {
         // As in `rates`: `alpha1 perp(r1)` without `alpha1`.
         let turn = rate_times_link(&pos.r1, vel.inv_det, dot(&w, &pos.r2));
         ac = plus(aa, turn - (pos.r1 * vel.omega1) * vel.omega1);
