@@ -83,39 +83,56 @@ pub fn angle<T: Real>(v: &Vector2<T>) -> T {
     }
 }
 
-/// Largest `|angle|` (rad) that [`wrap_angle`] reduces by subtracting a
-/// multiple of `2 pi` (the limit of the batch kernels' `sin_cos` too,
-/// [`crate::lane::SIN_COS_LIMIT`]); beyond it, the angle of `(cos, sin)`.
-pub const WRAP_LIMIT: f64 = 1.0e5;
+/// Largest `|angle|` (rad) at which an input angle still means one: `2^24`
+/// (1.7e7) for `f32`, `2^53` (9.0e15) for `f64`, where the spacing of the
+/// type's numbers reaches 2 rad (one ulp of the input turns a crank by a
+/// third of a turn). [`crate::driver::crank::position`] reports a larger
+/// angle as an error; [`wrap_angle`] is accurate to `|angle| eps` below it.
+#[inline(always)]
+pub fn angle_limit<T: Real>() -> T {
+    if crate::scalar::single::<T>() {
+        T::lit(16_777_216.0)
+    } else {
+        T::lit(9_007_199_254_740_992.0)
+    }
+}
 
 /// `angle` (rad) reduced to `(-pi, pi]`, for every finite `angle`: a
 /// crank's link angle is its input reduced this way.
 ///
 /// - `|angle| <= pi`: unchanged (exact).
-/// - `pi < |angle| <= WRAP_LIMIT` (1e5 rad): `angle - 2 pi k` with `k` the
-///   nearest integer to `angle / 2 pi`, moved into the range if rounding
-///   left it just outside; the error is the rounding of `2 pi k`, about
-///   `|angle| eps` (f64 at 1e5: 2e-11 rad; f32 at 1e3: 1e-4 rad).
-/// - beyond (f32 inputs there are at least 0.0078 rad apart, f64 1.5e-11):
-///   the angle of `(cos angle, sin angle)` from the same sine and cosine
-///   the crank is placed with ([`unit`], which reduces any finite argument
-///   exactly), so the result is the direction of the crank's axis, within a
-///   few ulp of `pi` of the exact reduction, and in the range by
-///   construction ([`angle`]). The one-step subtraction would be off by
-///   whole turns there (f32 2.2e8 gave -9.7).
+/// - `pi < |angle| < angle_limit` (f32 1.7e7, f64 9.0e15): `angle - 2 pi
+///   k` with `k` the nearest integer to `angle / 2 pi`, moved into the
+///   range if rounding left it just outside; the error is the rounding of
+///   `2 pi k`, about `|angle| eps` (f64 at 1e5: 2e-11 rad; f32 at 1e3:
+///   1e-4 rad), below 1.5 rad at the limit, so one move suffices.
+/// - beyond ([`angle_limit`], where the input's own spacing is 2 rad or
+///   more: the crank reports such an angle as an error) the reduction is
+///   repeated until the result is in the range: in the range, but not the
+///   angle of `(cos angle, sin angle)` (the one-step reduction of f32
+///   2.2e8 gave -9.7, outside the range).
 ///
-/// NaN or an infinity gives NaN (the crank reports the input as an error).
+/// NaN or an infinity gives NaN.
 #[inline]
 pub fn wrap_angle<T: Real>(angle: T) -> T {
     let pi = T::pi();
     if angle <= pi && angle > -pi {
         return angle;
     }
-    // NaN stays on the path below and gives NaN.
-    if abs(angle) > T::lit(WRAP_LIMIT) {
-        return wrap_far(angle);
+    let mut reduced = reduce_turns(angle);
+    // Beyond the limit, or NaN: once more while outside (each pass divides
+    // the magnitude by about 1 / eps; NaN and infinities leave at once).
+    while reduced.finite() && (reduced > pi || reduced <= -pi) {
+        reduced = reduce_turns(reduced);
     }
-    let two_pi = T::two_pi();
+    reduced
+}
+
+/// `angle - 2 pi round(angle / 2 pi)`, moved by `2 pi` when rounding left
+/// it just outside `(-pi, pi]`.
+#[inline]
+fn reduce_turns<T: Real>(angle: T) -> T {
+    let (pi, two_pi) = (T::pi(), T::two_pi());
     let reduced = angle - two_pi * (angle / two_pi).round();
     if reduced <= -pi {
         reduced + two_pi
@@ -123,18 +140,6 @@ pub fn wrap_angle<T: Real>(angle: T) -> T {
         reduced - two_pi
     } else {
         reduced
-    }
-}
-
-/// [`wrap_angle`] beyond [`WRAP_LIMIT`] (cold path): the angle of the unit
-/// vector at `angle`. NaN for a non-finite `angle`.
-#[cold]
-#[inline(never)]
-fn wrap_far<T: Real>(angle: T) -> T {
-    if angle.finite() {
-        self::angle(&unit(angle))
-    } else {
-        T::lit(f64::NAN)
     }
 }
 

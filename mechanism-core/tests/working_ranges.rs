@@ -60,15 +60,15 @@ fn kind<T: Real>(e: &Error<T>) -> &'static str {
 mod crank_driver {
     use super::*;
 
-    /// `crank::position`: every finite angle and positive length whose tip
-    /// is finite. Inside: the tip within 2 ulp of `r (cos, sin)` of the
-    /// angle (against `std`'s `f64` sine and cosine, exact enough for an
-    /// `f32` result; for `f64` within 4 eps of `r`), at angles from 0 to
-    /// the largest finite one and lengths from the smallest normal number
-    /// to a quarter of the largest. Outside: a non-finite angle or length
-    /// is `NonFinite`, a length `<= 0` `NonPositive`, a tip that overflows
-    /// `NonFinite`.
-    fn position_range<T: Real>(angles: &[f64], max: f64, min_normal: f64) {
+    /// `crank::position`: angles below `angle_limit` (f32 2^24, f64 2^53)
+    /// and positive lengths whose tip is finite. Inside: the tip within 2
+    /// ulp of `r (cos, sin)` of the angle (against `std`'s `f64` sine and
+    /// cosine, exact enough for an `f32` result), at angles from 0 to just
+    /// below the limit and lengths from the smallest normal number to a
+    /// quarter of the largest. Outside: an angle at or beyond the limit, a
+    /// non-finite angle or length, or a tip that overflows is `NonFinite`,
+    /// a length `<= 0` `NonPositive`.
+    fn position_range<T: Real>(angles: &[f64], beyond: &[f64], max: f64, min_normal: f64) {
         let eps = T::eps().as_f64();
         for &th in angles {
             for r in [min_normal, 1.0, max / 4.0] {
@@ -119,10 +119,10 @@ mod crank_driver {
             1e5,
             1.0e5 + 1.0,
             4e12,
-            1.3e17,
-            f64::MAX,
+            9_007_199_254_740_990.0,
         ];
-        position_range::<f64>(&angles, f64::MAX, f64::MIN_POSITIVE);
+        let beyond = [9_007_199_254_740_992.0, 1.3e17, f64::MAX, f64::INFINITY];
+        position_range::<f64>(&angles, &beyond, f64::MAX, f64::MIN_POSITIVE);
     }
 
     #[test]
@@ -134,11 +134,10 @@ mod crank_driver {
             core::f32::consts::PI as f64,
             1e5,
             1.0e5 + 1.0,
-            2.2e8,
-            4e12,
-            f32::MAX as f64,
+            16_777_215.0,
         ];
-        position_range::<f32>(&angles, f32::MAX as f64, f32::MIN_POSITIVE as f64);
+        let beyond = [16_777_216.0, 2.2e8, 4e12, f32::MAX as f64];
+        position_range::<f32>(&angles, &beyond, f32::MAX as f64, f32::MIN_POSITIVE as f64);
     }
 
     /// `crank::position_cos_sin`: "any positive multiple" of the pair, for
@@ -230,11 +229,11 @@ mod crank_driver {
 
     /// The link angle (`geometry::wrap_angle`, what the generated code
     /// reports for a crank): in `(-pi, pi]` of the type for every finite
-    /// input; inside `|theta| <= 1e5` (the reduction's range) within
-    /// `2 |theta| eps` of the exact reduction (the documented `|theta| eps`
-    /// and one rounding of the result); beyond, within 4 eps of the angle
-    /// of `(cos theta, sin theta)` from `std`'s `f64` functions (exact for
-    /// `f32` inputs, glibc's reduction for `f64` ones).
+    /// input; below `angle_limit` (f32 2^24, f64 2^53) within `2 |theta|
+    /// eps` of the angle of `(cos theta, sin theta)` from `std`'s `f64`
+    /// functions (exact for `f32` inputs, glibc's reduction for `f64`
+    /// ones): the documented `|theta| eps` and one rounding; beyond (the
+    /// crank reports such an angle as an error), in the range only.
     fn wrap_range<T: Real>(inputs: &[f64]) {
         let eps = T::eps().as_f64();
         let pi = T::pi();
@@ -249,15 +248,14 @@ mod crank_driver {
                 // Compare as directions (a result near +-pi may be on
                 // either side of the cut).
                 let d = (got.as_f64() - want).sin().abs();
-                let bound = if xd.abs() <= 1e5 {
-                    2.0 * eps * xd.abs().max(4.0)
-                } else {
-                    4.0 * eps
-                };
-                assert!(
-                    d <= bound,
-                    "{x:e}: {got:e} against {want:e} ({d:e} > {bound:e})"
-                );
+                let limit = mechanism_core::geometry::angle_limit::<T>().as_f64();
+                if xd.abs() < limit {
+                    let bound = 2.0 * eps * xd.abs().max(4.0);
+                    assert!(
+                        d <= bound,
+                        "{x:e}: {got:e} against {want:e} ({d:e} > {bound:e})"
+                    );
+                }
             }
         }
         assert!(wrap_angle(T::lit(f64::NAN)).as_f64().is_nan());

@@ -311,16 +311,16 @@ impl Check<'_> {
 
     /// The crank's tip at `r` from the pivot in the direction of its link
     /// angle; `turn` is `|theta|` of an angle input (0 for an encoder's
-    /// pair): below the wrap limit of 1e5 rad the link angle is the input
-    /// reduced by `2 pi k`, within about `|theta| eps` (its documented
-    /// error), beyond it the angle of the crank's own `(cos, sin)`.
+    /// pair): the link angle is the input reduced by `2 pi k`, within
+    /// about `|theta| eps` (its documented error; an input beyond
+    /// `angle_limit` is an error of the crank).
     #[allow(clippy::too_many_arguments)]
     fn crank<T: Real>(&mut self, what: &str, o: P, tip: P, r: f64, angle: T, turn: f64) {
         self.angle(what, angle);
         self.dist(what, tip, o, r);
         let u = unit(angle.as_f64());
         let off = cross(u, sub(self.sc(tip), self.sc(o)));
-        let turn = if turn.is_finite() { turn.min(1e5) } else { 0.0 };
+        let turn = if turn.is_finite() { turn } else { 0.0 };
         self.small(
             &format!("{what} direction"),
             off,
@@ -1014,7 +1014,7 @@ fn slides<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     // is the link angle, known to |phi| eps below the wrap limit).
     let u = unit(q.crank_link.as_f64());
     let far = norm(c.sc(cc)) + 1.0;
-    let turn = if turn.is_finite() { turn.min(1e5) } else { 0.0 };
+    let turn = if turn.is_finite() { turn } else { 0.0 };
     let on1 = cross(u, c.sc(cc)) - m.o1.as_f64() / c.s2;
     c.small("C on the crank's line", on1, far * (4.0 + turn));
     c.on_line_scaled(

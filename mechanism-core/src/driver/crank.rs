@@ -8,7 +8,7 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, all_finite, dot, finite_vec, max, plain_square, plus, positive, pow2_scale,
+    abs, all_finite, angle_limit, dot, finite_vec, max, plain_square, plus, positive,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::scalar::Real;
@@ -27,20 +27,39 @@ pub struct CrankPosition<T: Real> {
     pub axis: Vector2<T>,
 }
 
-/// Places the crank at `theta` (rad).
+/// Places the crank at `theta` (rad), `|theta|` below
+/// [`angle_limit`](crate::geometry::angle_limit) (f32 1.7e7, f64 9.0e15:
+/// beyond, the spacing of the type's numbers is 2 rad or more, so the input
+/// no longer says where the crank is, and its link angle could not be
+/// reported consistently).
 ///
 /// Errors: `NonPositive` for `length <= 0`; `NonFinite` for a non-finite angle
-/// or pivot.
+/// or pivot, or an angle beyond the limit.
 #[inline(always)]
 pub fn position<T: Real>(
     pivot: &Point2<T>,
     length: T,
     theta: T,
 ) -> Result<CrankPosition<T>, Error<T>> {
+    if abs(theta) >= angle_limit::<T>() {
+        return Err(angle_beyond(theta));
+    }
     // In the scalar's own precision (f32 stays f32: see `crate::trig`). A
     // non-finite angle gives NaN here, caught by `place`'s one test.
     let (sin, cos) = theta.sin_cos_kernel();
     place(pivot, length, Vector2::new(cos, sin), theta.finite())
+}
+
+/// The error for an angle at or beyond the limit (an infinite one too).
+#[cold]
+#[inline(never)]
+fn angle_beyond<T: Real>(theta: T) -> Error<T> {
+    let what = if theta.finite() {
+        "crank angle (beyond 2^24 rad in f32, 2^53 in f64: spacing of 2 rad or more)"
+    } else {
+        "crank angle"
+    };
+    Error::new(P, Fault::NonFinite { what })
 }
 
 /// A crank angle given by its cosine and sine (as an encoder or a resolver
@@ -85,16 +104,16 @@ pub fn position_cos_sin<T: Real>(
     place(pivot, length, v / norm, true)
 }
 
-/// `(v 2^-e, |v 2^-e|)` with `2^e` the power of two at or below the larger
-/// component of `v` (within the normal exponents of `T`): the pair scaled
-/// exactly to a size between 1 and 2, so its square neither underflows nor
-/// overflows; `(v, 0)` for a zero pair (cold path of [`position_cos_sin`]).
+/// `(v / m, |v / m|)` with `m` the larger component's magnitude: the pair
+/// brought to a size between 1 and `sqrt 2` (each division within half an
+/// ulp), so its square neither underflows nor overflows; `(v, 0)` for a
+/// zero pair (cold path of [`position_cos_sin`]).
 #[cold]
 #[inline(never)]
 fn scaled_pair<T: Real>(v: Vector2<T>) -> (Vector2<T>, T) {
     let m = max(abs(v.x), abs(v.y));
     if m > T::zero() {
-        let u = v * pow2_scale(m).0;
+        let u = v / m;
         (u, dot(&u, &u).sqrt_kernel())
     } else {
         (v, T::zero())
