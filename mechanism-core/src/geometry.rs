@@ -119,9 +119,21 @@ pub fn wrap_angle<T: Real>(angle: T) -> T {
     if angle <= pi && angle > -pi {
         return angle;
     }
-    let mut reduced = reduce_turns(angle);
-    // Beyond the limit, or NaN: once more while outside (each pass divides
-    // the magnitude by about 1 / eps; NaN and infinities leave at once).
+    let reduced = reduce_turns(angle);
+    if reduced > pi || reduced <= -pi {
+        // Only beyond the limit (NaN compares false and is returned).
+        return wrap_far(reduced);
+    }
+    reduced
+}
+
+/// [`wrap_angle`] beyond [`angle_limit`] (cold path): the reduction
+/// repeated while the result is outside the range (each pass divides the
+/// magnitude by about `1 / eps`; an infinity gives NaN at once).
+#[cold]
+#[inline(never)]
+fn wrap_far<T: Real>(mut reduced: T) -> T {
+    let pi = T::pi();
     while reduced.finite() && (reduced > pi || reduced <= -pi) {
         reduced = reduce_turns(reduced);
     }

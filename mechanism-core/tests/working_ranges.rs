@@ -84,8 +84,14 @@ mod crank_driver {
         }
         let o = p::<T>(0.0, 0.0);
         let e = |r: Result<crank::CrankPosition<T>, Error<T>>| kind(&r.unwrap_err());
+        for &th in beyond {
+            for th in [th, -th] {
+                let got = crank::position(&o, T::one(), T::lit(th));
+                assert_eq!(e(got), "NonFinite", "{th:e}");
+            }
+        }
         assert_eq!(
-            e(crank::position(&o, T::one(), T::lit(f64::NAN))),
+            e(crank::position(&o, T::lit(1.0), T::lit(f64::NAN))),
             "NonFinite"
         );
         assert_eq!(

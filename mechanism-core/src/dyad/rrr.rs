@@ -147,36 +147,37 @@ pub fn position<T: Real>(
     let sum = l1 + l2;
     let diff = l1 - l2;
     let (lo, hi) = normal_range::<T>();
-    // The ordinary case in three comparisons (NaN fails each); anything else
-    // (a bad input, `A = B`, or `|B - A|^2` below the normal range, where it
-    // has lost bits) is sorted out on the cold path.
-    if !(l1 > T::zero() && l2 > T::zero() && dsq >= lo) {
-        return position_cold(a, &d, l1, l2, mode);
-    }
     // Heron's factors; a negative one means the triangle does not close.
     let outer = sum * sum - dsq; // < 0: too far apart
     let inner = dsq - diff * diff; // < 0: one link too long
-
-    // The band `4 eps (l1 + l2)` on `|d|`, to first order on `D`: `D` moves
-    // by `2 |d| delta` when `|d|` moves by `delta`, and `|d|` is `l1 + l2` or
-    // `|l1 - l2|` at the two edges. Outside it, the cold path decides (it
-    // checks the band on `|d|` itself and reports the miss).
+                                   // The band `4 eps (l1 + l2)` on `|d|`, to first order on `D`: `D` moves
+                                   // by `2 |d| delta` when `|d|` moves by `delta`, and `|d|` is `l1 + l2` or
+                                   // `|l1 - l2|` at the two edges.
     let band = T::lit(8.0) * T::eps() * sum;
-    if outer < -(band * sum) || inner < -(band * abs(diff)) {
-        return position_cold(a, &d, l1, l2, mode);
-    }
-    // sqrt(16 area^2) = 4 area, signed by the mode. The product is of the
+    // sqrt(16 area^2) = 4 area, signed by the mode: the product is of the
     // fourth power of the lengths. Where it is a normal number, and `D` is
-    // too (checked above), the third powers below are normal as well (`d *
-    // along` and `perp(d) * height` make a vector of length `2 D l1`, and
-    // `prod <= (l1 + l2)^2 D`), so every product keeps full precision.
-    // Elsewhere (the edge of assembly, where a factor is 0 or in the
-    // rounding band; lengths beyond about f32 1e-10 .. 4e9, f64 1e-77 ..
-    // 1e77; or `|B - A|` far below the lengths, where `d * along` would be
-    // subnormal: at f64 |B - A| = 1e-150 and links of 1e-51, `C` came out on
-    // `A`) the cold path solves in a form without powers above the first.
-    let prod = outer * inner;
-    if !(prod >= lo && prod <= hi) {
+    // too, the third powers below are normal as well (`d * along` and
+    // `perp(d) * height` make a vector of length `2 D l1`, and `prod <= (l1
+    // + l2)^2 D`), so every product keeps full precision.
+    let clamp = |x: T| if x < T::zero() { T::zero() } else { x };
+    let prod = clamp(outer) * clamp(inner);
+    // The ordinary case in one test (NaN fails it). Anything else goes to
+    // the cold path, which checks the inputs in the order of the doc
+    // comment, checks the band on `|d|` itself and reports the miss, or
+    // solves in a form without powers above the first: a bad input, `A =
+    // B`, `|B - A|^2` below the normal range, a distance outside the reach,
+    // the edge of assembly (a factor 0 or in the band), lengths beyond
+    // about f32 1e-10 .. 4e9 (f64 1e-77 .. 1e77), or `|B - A|` far below the
+    // links, where `d * along` would be subnormal (at f64 |B - A| = 1e-150
+    // and links of 1e-51, `C` came out on `A`).
+    let ordinary = l1 > T::zero()
+        && l2 > T::zero()
+        && dsq >= lo
+        && outer >= -(band * sum)
+        && inner >= -(band * abs(diff))
+        && prod >= lo
+        && prod <= hi;
+    if !ordinary {
         return position_cold(a, &d, l1, l2, mode);
     }
     let height = mode.sign::<T>() * prod.sqrt_kernel();
