@@ -44,7 +44,7 @@ fn atan2(c: &mut Criterion) {
         b.iter(|| {
             black_box(&p)
                 .iter()
-                .map(|&(y, x)| mechanism::lane::atan2(y, x))
+                .map(|&(y, x)| mechanism::__private::lane::atan2(y, x))
                 .sum::<f64>()
         })
     });
@@ -98,7 +98,7 @@ fn sin_cos(c: &mut Criterion) {
             black_box(&angles)
                 .iter()
                 .map(|&x| {
-                    let (s, c, _) = mechanism::lane::sin_cos(x);
+                    let (s, c, _) = mechanism::__private::lane::sin_cos(x);
                     s + c
                 })
                 .sum::<f64>()

@@ -4,10 +4,18 @@
 //! in `common/seed003.rs`, shared with the core's tests).
 //!
 //! Run: `cargo run --release --example assur_rrr` or with `-- --csv`.
+#[macro_use]
+#[path = "common/cli.rs"]
+mod cli;
 mod common;
 use common::seed003;
 
 fn main() {
+    let args = cli::parse(
+        "assur_rrr",
+        "Seed 003: an RRR group's reactions through the core primitive, against the printed values.",
+        &[cli::CSV],
+    );
     let ours = seed003::group::<f64>(-1.0);
     let text = seed003::group::<f64>(1.0);
     // The document's printed results (two decimals; F23 is not printed).
@@ -20,20 +28,23 @@ fn main() {
         ("F23x", ours.f23.x, f64::NAN, text.f23.x),
         ("F23y", ours.f23.y, f64::NAN, text.f23.y),
     ];
-    if common::csv_mode() {
-        println!("name,ours,printed,text_formula");
+    if args.flag("--csv") {
+        outln!("name,ours,printed,text_formula");
         for (name, o, p, t) in rows {
-            println!("{name},{}", common::csv_row(&[o, p, t]));
+            outln!("{name},{}", common::csv_row(&[o, p, t]));
         }
         return;
     }
-    println!("Seed 003: RRR group with inertia (Mu = -J e), weights (g = 9.81) and F = (1000, 1000) N at D");
-    println!(
+    outln!("Seed 003: RRR group with inertia (Mu = -J e), weights (g = 9.81) and F = (1000, 1000) N at D");
+    outln!(
         "reactions in N; `text formula` uses the text's Mu3 = +J3 e3 (a typo: 3.6 N off the print)"
     );
-    println!(
+    outln!(
         "{:>6} {:>14} {:>10} {:>14}",
-        "", "ours", "printed", "text formula"
+        "",
+        "ours",
+        "printed",
+        "text formula"
     );
     for (name, o, p, t) in rows {
         let printed = if p.is_nan() {
@@ -41,9 +52,9 @@ fn main() {
         } else {
             format!("{p:.2}")
         };
-        println!("{name:>6} {o:>14.6} {printed:>10} {t:>14.6}");
+        outln!("{name:>6} {o:>14.6} {printed:>10} {t:>14.6}");
     }
-    println!(
+    outln!(
         "conditioning indicator (smallest relative pivot): {:.4}",
         ours.ratio
     );

@@ -6,18 +6,26 @@
 //!
 //! Also writes SVG pictures (kinematics, a drawing, an animation) to
 //! `target/plots/five_bar/` and says where on stderr (`docs/plots.md`).
+#[macro_use]
+#[path = "common/cli.rs"]
+mod cli;
 mod common;
 use common::scenes::{FiveBar, FiveBarInput};
 
 fn main() {
-    let csv = common::csv_mode();
+    let args = cli::parse(
+        "five_bar",
+        "A two-input five-bar robot (m): the end point over a grid of both crank angles.",
+        &[cli::CSV],
+    );
+    let csv = args.flag("--csv");
     let m = FiveBar::<f64>::default();
     let names = ["q1_deg", "q2_deg", "p_x", "p_y", "vp_x", "vp_y"];
     if csv {
-        println!("{}", names.join(","));
+        outln!("{}", names.join(","));
     } else {
-        println!("Five-bar: base 0.08 m, proximal 0.1 m, distal 0.16 m; both cranks at 1 rad/s");
-        println!("{}", common::header(&names, 12));
+        outln!("Five-bar: base 0.08 m, proximal 0.1 m, distal 0.16 m; both cranks at 1 rad/s");
+        outln!("{}", common::header(&names, 12));
     }
     for i in 0..=6 {
         for j in 0..=6 {
@@ -35,12 +43,12 @@ fn main() {
                 Ok((p, v)) => {
                     let row = [q1, q2, p.P.x, p.P.y, v.P.x, v.P.y];
                     if csv {
-                        println!("{}", common::csv_row(&row));
+                        outln!("{}", common::csv_row(&row));
                     } else {
-                        println!("{}", common::table_row(&row, 12, 5));
+                        outln!("{}", common::table_row(&row, 12, 5));
                     }
                 }
-                Err(e) if !csv => println!("{q1:>12.1} {q2:>12.1}   {e}"),
+                Err(e) if !csv => outln!("{q1:>12.1} {q2:>12.1}   {e}"),
                 Err(_) => {}
             }
         }

@@ -6,6 +6,9 @@
 //!
 //! Also writes SVG pictures (kinematics, a drawing, an animation) to
 //! `target/plots/fourbar/` and says where on stderr (`docs/plots.md`).
+#[macro_use]
+#[path = "common/cli.rs"]
+mod cli;
 mod common;
 use common::scenes::{FourBar, FourBarInput};
 use mechanism::geometry::angle_deg_0_360;
@@ -14,7 +17,12 @@ use mechanism::geometry::angle_deg_0_360;
 const OMEGA2: f64 = 250.0;
 
 fn main() {
-    let csv = common::csv_mode();
+    let args = cli::parse(
+        "fourbar",
+        "Seed 002's crank-rocker four-bar (mm), crank at 250 rad/s: angles, angular velocities and accelerations over a full turn.",
+        &[cli::CSV],
+    );
+    let csv = args.flag("--csv");
     let fb = FourBar::<f64>::default();
     let names = [
         "theta2_deg",
@@ -26,10 +34,10 @@ fn main() {
         "alpha4",
     ];
     if csv {
-        println!("{}", names.join(","));
+        outln!("{}", names.join(","));
     } else {
-        println!("Four-bar of seed 002: ground 304.8, crank 101.6, coupler 254.0, rocker 177.8 mm; crank 250 rad/s");
-        println!(
+        outln!("Four-bar of seed 002: ground 304.8, crank 101.6, coupler 254.0, rocker 177.8 mm; crank 250 rad/s");
+        outln!(
             "angles in deg, omega in rad/s, alpha in rad/s^2\n{}",
             common::header(&names, 14)
         );
@@ -56,9 +64,9 @@ fn main() {
             a.link4,
         ];
         if csv {
-            println!("{}", common::csv_row(&row));
+            outln!("{}", common::csv_row(&row));
         } else {
-            println!("{}", common::table_row(&row, 14, 4));
+            outln!("{}", common::table_row(&row, 14, 4));
         }
     }
     common::plots::write_and_report("fourbar", common::plots::fourbar);

@@ -26,6 +26,10 @@
 //! 0.9, so that group alone cannot be assembled for `theta` above about
 //! 135.2 deg (the range declared stops at 120 deg).
 
+#[macro_use]
+#[path = "common/cli.rs"]
+mod cli;
+
 use std::fmt::Write as _;
 use std::str::FromStr;
 use std::time::Instant;
@@ -198,7 +202,7 @@ fn measure(label: &str, groups: usize, body: &str) {
     let text = prettyplease::unparse(&file);
     let lines = text.lines().count();
     let compile_errors = text.matches("compile_error").count();
-    println!(
+    outln!(
         "{label:>8} {groups:>4} groups: expand {:9.2} ms ({:6.3} ms/group), {bytes:>8} B ({:6} B/group), {lines:>6} lines ({:5} lines/group), nesting {nest}, compile_error! {compile_errors}",
         times[2],
         times[2] / groups as f64,
@@ -208,29 +212,44 @@ fn measure(label: &str, groups: usize, body: &str) {
 }
 
 fn main() {
-    if std::env::args().any(|a| a == "--defs") {
+    let args = cli::parse(
+        "long_chain_cost",
+        "What long chains of Assur groups cost the macro: expansion time, output size and nesting for 5 to 160 groups.",
+        &[
+            cli::flag("--defs", "print the definitions of tests/long_chain.rs instead"),
+            cli::Opt {
+                name: "--show",
+                value: Some("N"),
+                help: "print the expansion of a ladder of N groups instead",
+            },
+        ],
+    );
+    if args.flag("--defs") {
         for (name, n) in [("Ladder10", 10), ("Ladder20", 20), ("Ladder40", 40)] {
-            println!("mechanism! {{\n{}}}\n", ladder(name, n, true, None));
+            outln!("mechanism! {{\n{}}}\n", ladder(name, n, true, None));
         }
-        println!(
+        outln!(
             "mechanism! {{\n{}}}\n",
             ladder("Faulty20", 20, false, Some(13))
         );
         for (name, b) in [("Mixed10", 2), ("Mixed20", 4), ("Mixed40", 8)] {
-            println!("mechanism! {{\n{}}}\n", mixed(name, b));
+            outln!("mechanism! {{\n{}}}\n", mixed(name, b));
         }
         return;
     }
-    if let Some(n) = std::env::args().skip_while(|a| a != "--show").nth(1) {
-        let n: usize = n.parse().expect("--show N");
+    if let Some(n) = args.value("--show") {
+        let Ok(n) = n.parse::<usize>() else {
+            eprintln!("error: `--show N` needs a number of groups, got `{n}`");
+            std::process::exit(2);
+        };
         let out = mechanism_codegen::expand(
             proc_macro2::TokenStream::from_str(&ladder("L", n, true, None)).expect("tokens"),
         );
         let file: syn::File = syn::parse2(out).expect("expansion is valid Rust");
-        print!("{}", prettyplease::unparse(&file));
+        out!("{}", prettyplease::unparse(&file));
         return;
     }
-    println!(
+    outln!(
         "profile: {}",
         if cfg!(debug_assertions) {
             "dev"

@@ -6,12 +6,20 @@
 //!
 //! Also writes SVG pictures (kinematics, a drawing, an animation) to
 //! `target/plots/shaper/` and says where on stderr (`docs/plots.md`).
+#[macro_use]
+#[path = "common/cli.rs"]
+mod cli;
 mod common;
 use common::scenes::{Shaper, ShaperInput};
 use mechanism::geometry::{angle_deg_0_360, unit};
 
 fn main() {
-    let csv = common::csv_mode();
+    let args = cli::parse(
+        "shaper",
+        "Seed 001's quick-return shaper (m), crank at 1 rad/s: angles, rates and the ram's motion over a full turn.",
+        &[cli::CSV],
+    );
+    let csv = args.flag("--csv");
     let m = Shaper::<f64>::default();
     let names = [
         "crank_deg",
@@ -26,11 +34,11 @@ fn main() {
         "a_e",
     ];
     if csv {
-        println!("{}", names.join(","));
+        outln!("{}", names.join(","));
     } else {
-        println!("Quick-return shaper of seed 001 (m); crank 1 rad/s");
-        println!("angles deg, rates rad/s and rad/s^2; ram E: m, m/s, m/s^2");
-        println!("{}", common::header(&names, 11));
+        outln!("Quick-return shaper of seed 001 (m); crank 1 rad/s");
+        outln!("angles deg, rates rad/s and rad/s^2; ram E: m, m/s, m/s^2");
+        outln!("{}", common::header(&names, 11));
     }
     for step in 0..=12 {
         let deg = 30.0 * step as f64;
@@ -57,9 +65,9 @@ fn main() {
             a.E.x,
         ];
         if csv {
-            println!("{}", common::csv_row(&row));
+            outln!("{}", common::csv_row(&row));
         } else {
-            println!("{}", common::table_row(&row, 11, 6));
+            outln!("{}", common::table_row(&row, 11, 6));
         }
     }
     common::plots::write_and_report("shaper", common::plots::shaper);

@@ -11,6 +11,9 @@
 //! Pictures: `target/plots/shaper_forces/` (forces, drawing, animation).
 //!
 //! Run: `cargo run --release --example shaper_forces` or with `-- --csv`.
+#[macro_use]
+#[path = "common/cli.rs"]
+mod cli;
 mod common;
 use common::scenes::{ShaperForces, ShaperForcesInput, ShaperForcesLoads};
 
@@ -20,6 +23,11 @@ const OMEGA: f64 = 2.0 * std::f64::consts::PI;
 const CUT: f64 = 5000.0;
 
 fn main() {
+    let args = cli::parse(
+        "shaper_forces",
+        "The shaper of seed 001 with masses, gravity and a cutting force: driving torque and joint reactions over a full turn.",
+        &[cli::CSV],
+    );
     let shaper = ShaperForces::<f64>::default();
     let input = |deg: f64| ShaperForcesInput {
         crank: deg.to_radians(),
@@ -55,20 +63,20 @@ fn main() {
         "guide_M",
         "residual",
     ];
-    let csv = common::csv_mode();
+    let csv = args.flag("--csv");
     if csv {
-        println!("{}", names.join(","));
+        outln!("{}", names.join(","));
     } else {
-        println!("Shaper of seed 001 with masses and gravity; crank 60 rpm; cutting force {CUT} N on the working stroke");
-        println!(
+        outln!("Shaper of seed 001 with masses and gravity; crank 60 rpm; cutting force {CUT} N on the working stroke");
+        outln!(
             "stroke {:.4} m; working stroke moves the ram along {} its guide (crank {:.1} % of the turn)",
             hi - lo,
             if working_sign > 0.0 { "+" } else { "-" },
             100.0 * if working_sign > 0.0 { forward } else { sweep.len() - forward } as f64
                 / sweep.len() as f64
         );
-        println!("s along the guide (m, m/s); forces N, torque N m (ccw +); r_C: ground on rocker at C; guide: ground on ram (normal N, couple about E)");
-        println!("{}", common::header(&names, 11));
+        outln!("s along the guide (m, m/s); forces N, torque N m (ccw +); r_C: ground on rocker at C; guide: ground on ram (normal N, couple about E)");
+        outln!("{}", common::header(&names, 11));
     }
     for step in 0..72 {
         let deg = 5.0 * step as f64;
@@ -99,11 +107,11 @@ fn main() {
             f.power_residual,
         ];
         if csv {
-            println!("{}", common::csv_row(&row));
+            outln!("{}", common::csv_row(&row));
         } else {
             let mut line = common::table_row(&row[..9], 11, 3);
             line.push_str(&format!(" {:>11.1e}", row[9]));
-            println!("{line}");
+            outln!("{line}");
         }
     }
     common::plots::write_and_report("shaper_forces", common::plots::shaper_forces);

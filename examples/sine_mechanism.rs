@@ -20,6 +20,9 @@
 //! Run: `cargo run --release --example sine_mechanism` (tables at g = 10, the
 //! document's, and at g = 9.80665), or with `-- --csv` (the g = 10 table as
 //! CSV, 17 significant digits), `-- --csv --standard-gravity` (g = 9.80665).
+#[macro_use]
+#[path = "common/cli.rs"]
+mod cli;
 mod common;
 use common::scenes::{SineMechanism, SineMechanismForces, SineMechanismInput};
 
@@ -62,7 +65,7 @@ fn row(deg: f64, g: f64) -> [f64; 6] {
 }
 
 fn table(g: f64) {
-    println!(
+    outln!(
         "\ng = {g} m/s^2 (m2 = {:.6} kg, m3 = {:.6} kg)",
         G2 / g,
         G3 / g
@@ -77,31 +80,36 @@ fn table(g: f64) {
         "doc_FR12x",
         "doc_FR4",
     ];
-    println!("{}", common::header(&names, 11));
+    outln!("{}", common::header(&names, 11));
     for step in 0..72 {
         let r = row(5.0 * step as f64, g);
         let doc = [-r[2], -r[5] / H2];
         let all = [r[0], r[1], r[2], r[3], r[4], r[5], doc[0], doc[1]];
-        println!("{}", common::table_row(&all, 11, 4));
+        outln!("{}", common::table_row(&all, 11, 4));
     }
 }
 
 fn main() {
-    let standard = std::env::args().any(|a| a == "--standard-gravity");
-    if common::csv_mode() {
+    let args = cli::parse(
+        "sine_mechanism",
+        "Seed 000, problem 4-23: kinetostatics of a sine mechanism (driving torque and reactions), ours and the document's convention.",
+        &[cli::CSV, cli::flag("--standard-gravity", "with --csv: g = 9.80665 m/s^2 instead of the document's 10")],
+    );
+    let standard = args.flag("--standard-gravity");
+    if args.flag("--csv") {
         let g = if standard { 9.80665 } else { 10.0 };
-        println!("phi1_deg,mb,r12x,r12y,r23y,m43");
+        outln!("phi1_deg,mb,r12x,r12y,r23y,m43");
         for step in 0..72 {
-            println!("{}", common::csv_row(&row(5.0 * step as f64, g)));
+            outln!("{}", common::csv_row(&row(5.0 * step as f64, g)));
         }
         common::plots::write_and_report("sine_mechanism", common::plots::sine_mechanism);
         return;
     }
-    println!(
+    outln!(
         "Sine mechanism of seed 000, problem 4-23 (N, N m); crank 0.1 m at 10 rad/s, Fr = 400 N"
     );
-    println!("ours: mb on the crank (ccw +), r12 = crank 1 on block 2, r23y = block 2 on link 3, m43 = guide on link 3 about S3");
-    println!("document: FR12x = -r12x (block on crank), FR4 = FR4' = -m43/h2");
+    outln!("ours: mb on the crank (ccw +), r12 = crank 1 on block 2, r23y = block 2 on link 3, m43 = guide on link 3 about S3");
+    outln!("document: FR12x = -r12x (block on crank), FR4 = FR4' = -m43/h2");
     table(10.0);
     table(9.80665);
     common::plots::write_and_report("sine_mechanism", common::plots::sine_mechanism);

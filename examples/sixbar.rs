@@ -8,6 +8,9 @@
 //!
 //! Also writes SVG pictures (kinematics, a drawing, an animation) to
 //! `target/plots/sixbar/` and says where on stderr (`docs/plots.md`).
+#[macro_use]
+#[path = "common/cli.rs"]
+mod cli;
 mod common;
 use common::scenes::{SixBar, SixBarInput};
 use mechanism::geometry::angle_deg_0_360;
@@ -16,7 +19,12 @@ use mechanism::geometry::angle_deg_0_360;
 const OMEGA1: f64 = 10.0;
 
 fn main() {
-    let csv = common::csv_mode();
+    let args = cli::parse(
+        "sixbar",
+        "Seed 000, problem 3-28: the six-bar whose block slides along the crank, crank 40..55 deg.",
+        &[cli::CSV],
+    );
+    let csv = args.flag("--csv");
     let m = SixBar::<f64>::default();
     let names = [
         "phi1_deg",
@@ -38,13 +46,11 @@ fn main() {
         "ac_y",
     ];
     if csv {
-        println!("{}", names.join(","));
+        outln!("{}", names.join(","));
     } else {
-        println!("Six-bar of seed 000 (problem 3-28), mm; crank 10 rad/s");
-        println!(
-            "angles deg, rates rad/s, rad/s^2; af mm, v_f mm/s, a_f mm/s^2; C in mm/s, mm/s^2"
-        );
-        println!("{}", common::header(&names, 11));
+        outln!("Six-bar of seed 000 (problem 3-28), mm; crank 10 rad/s");
+        outln!("angles deg, rates rad/s, rad/s^2; af mm, v_f mm/s, a_f mm/s^2; C in mm/s, mm/s^2");
+        outln!("{}", common::header(&names, 11));
     }
     // The document's grid: linspace(40, 55, 15), both ends included.
     for step in 0..15 {
@@ -79,9 +85,9 @@ fn main() {
             a.C.y,
         ];
         if csv {
-            println!("{}", common::csv_row(&row));
+            outln!("{}", common::csv_row(&row));
         } else {
-            println!("{}", common::table_row(&row, 11, 3));
+            outln!("{}", common::table_row(&row, 11, 3));
         }
     }
     common::plots::write_and_report("sixbar", common::plots::sixbar);

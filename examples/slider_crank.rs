@@ -5,12 +5,20 @@
 //!
 //! Also writes SVG pictures (kinematics, a drawing, an animation) to
 //! `target/plots/slider_crank/` and says where on stderr (`docs/plots.md`).
+#[macro_use]
+#[path = "common/cli.rs"]
+mod cli;
 mod common;
 use common::scenes::{SliderCrank, SliderCrankInput};
 use mechanism::geometry::{angle_deg_0_360, unit};
 
 fn main() {
-    let csv = common::csv_mode();
+    let args = cli::parse(
+        "slider_crank",
+        "An offset slider-crank (m) at 3000 rpm over a full turn.",
+        &[cli::CSV],
+    );
+    let csv = args.flag("--csv");
     let m = SliderCrank::<f64>::default();
     let omega = 3000.0 * 2.0 * std::f64::consts::PI / 60.0;
     let names = [
@@ -23,11 +31,11 @@ fn main() {
         "a_b",
     ];
     if csv {
-        println!("{}", names.join(","));
+        outln!("{}", names.join(","));
     } else {
-        println!("Offset slider-crank: crank 0.1 m, rod 0.4 m, offset 0.02 m, 3000 rpm");
-        println!("angles deg, rod rates rad/s and rad/s^2; slider B: m, m/s, m/s^2");
-        println!("{}", common::header(&names, 12));
+        outln!("Offset slider-crank: crank 0.1 m, rod 0.4 m, offset 0.02 m, 3000 rpm");
+        outln!("angles deg, rod rates rad/s and rad/s^2; slider B: m, m/s, m/s^2");
+        outln!("{}", common::header(&names, 12));
     }
     for step in 0..36 {
         let deg = 10.0 * step as f64;
@@ -51,9 +59,9 @@ fn main() {
             a.x,
         ];
         if csv {
-            println!("{}", common::csv_row(&row));
+            outln!("{}", common::csv_row(&row));
         } else {
-            println!("{}", common::table_row(&row, 12, 5));
+            outln!("{}", common::table_row(&row, 12, 5));
         }
     }
     common::plots::write_and_report("slider_crank", common::plots::slider_crank);

@@ -1,15 +1,124 @@
-//! `mechanism`: planar linkage analysis generated per mechanism.
+//! Planar linkage analysis generated per mechanism.
 //!
-//! Depend on this crate only. It re-exports the `no_std` core
-//! ([`mechanism_core`], as [`core_api`]) and the [`mechanism!`] macro.
+//! The [`mechanism!`] macro reads a declarative definition of a planar
+//! linkage (points, links, Assur groups, dimensions, masses, loads) and
+//! generates specialized, allocation-free, `no_std` code for that one
+//! mechanism: position, velocity and acceleration analysis, and the force
+//! analysis (joint reactions and the driving torque or force) when the
+//! definition gives masses and loads, generic over `f32` and `f64`. A
+//! definition that does not make sense, or that cannot move over its input
+//! range, is a compile error on the offending name.
+//!
+//! # Quick start
+//!
+//! In `Cargo.toml` (the package is `planar-mechanism`, the library
+//! `mechanism`):
+//!
+//! ```toml
+//! [dependencies]
+//! planar-mechanism = "0.1"
+//! ```
+//!
+//! A crank-rocker four-bar with a coupler point, its position and velocity at
+//! one crank angle:
+//!
+//! ```
+//! use mechanism::mechanism;
+//!
+//! mechanism! {
+//!     /// Crank-rocker four-bar of seed 002 (mm).
+//!     pub FourBar {
+//!         params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+//!         let O2 = ground(0.0, 0.0);
+//!         let O4 = ground(ground, 0.0);
+//!         let A = crank(O2, crank, theta2) as link2;
+//!         let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+//!         let P = point(link3, from A, 120.0, 30 deg);
+//!     }
+//! }
+//!
+//! fn main() -> Result<(), mechanism::Error> {
+//!     let fb = FourBar::<f64>::default();                     // parameters at their literal values
+//!     let input = FourBarInput { theta2: 0.5 };
+//!     let p = fb.position(&input)?;                           // p.B, p.P: Point2; p.link3: angle (rad)
+//!     let v = fb.velocity(&p, &FourBarInput { theta2: 250.0 })?;   // v.link3: rad/s, v.P: mm/s
+//!     println!("B = ({:.3}, {:.3}) mm, theta3 = {:.3} deg, omega3 = {:.3} rad/s",
+//!         p.B.x, p.B.y, p.link3.to_degrees(), v.link3);
+//!     # assert_eq!(format!("{:.3} {:.3} {:.3} {:.3}", p.B.x, p.B.y, p.link3.to_degrees(), v.link3),
+//!     #     "307.929 177.772 30.539 -101.971");
+//!     Ok(())
+//! }
+//! ```
+//!
+//! prints
+//!
+//! ```text
+//! B = (307.929, 177.772) mm, theta3 = 30.539 deg, omega3 = -101.971 rad/s
+//! ```
+//!
+//! The types this definition generates (`FourBar`, `FourBarInput`,
+//! `FourBarPosition`, ...) are shown, with their documentation, in the
+//! [`example`] module. The language (drivers, the five groups, points on
+//! links, masses and loads, analyses, outputs, ranges) is described on the
+//! page of the [`mechanism!`] macro.
+//!
+//! # Conventions
+//!
+//! Lengths in the user's unit L throughout (results scale with it); angles in
+//! radians from +x, counter-clockwise positive; rates per second. Every
+//! generated function returns `Result<_, `[`Error`]`>`: an input at which a
+//! group cannot be assembled, or a singular rate or force system, is a typed
+//! error naming the group; no `Ok` holds NaN or infinity, and nothing panics.
+//!
+//! # Features
+//!
+//! - `rayon`: `par_solve`, a generated batch split over rayon's thread pool
+//!   (needs `std`).
+//! - `serde`: `Serialize` for the core's results, errors and check reports
+//!   (and `Deserialize` where the type owns its data), `no_std` compatible.
+//!
+//! Without features the crate is `#![no_std]` and allocates nothing.
 #![no_std]
 #![forbid(unsafe_code)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
+
+// Generated code names this crate `::mechanism`; inside the crate itself
+// (the `example` module) that path needs this alias.
+extern crate self as mechanism;
 
 pub use mechanism_core as core_api;
+// Everything the core exports, for the generated code (which names the
+// core's modules through `::mechanism::`), including the kernels and
+// machinery (`lane`, `scalar`, `sincos64`, `sweep`, `trig64`) that are public
+// so that it can call them but are not part of the documented API ...
+#[doc(hidden)]
 pub use mechanism_core::*;
+// ... and, shadowing those, the documented API.
+pub use mechanism_core::{
+    driver, dyad, error, force, geometry, guide, link, linsolve, mode, structure, triad, trig,
+};
+pub use mechanism_core::{Error, Fault, Mode, Point2, Primitive, Real, Vector2};
+// What the generated `check()` returns (from the core's sweep).
+pub use mechanism_core::sweep::{Event, GroupReport, Range, Report};
+
+/// The [`mechanism!`] macro (see its page for the language).
 pub use mechanism_macros::mechanism;
 
-mod batch;
+pub mod batch;
 #[cfg(feature = "rayon")]
-pub use batch::par_solve;
-pub use batch::BatchSplit;
+#[cfg_attr(docsrs, doc(cfg(feature = "rayon")))]
+pub use batch::{par_solve, PAR_MIN_PIECE};
+pub use batch::{BatchError, BatchSplit};
+
+pub mod example;
+
+#[cfg(feature = "alloc")]
+extern crate alloc;
+
+/// `alloc` for the owned batch form of the generated code (inside
+/// `__with_alloc!`, feature `alloc`; see [`batch`]). Not public API.
+#[cfg(feature = "alloc")]
+#[doc(hidden)]
+pub mod __alloc {
+    pub use alloc::vec::Vec;
+}

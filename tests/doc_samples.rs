@@ -395,7 +395,29 @@ mod performance_batch {
     }
 
     #[test]
-    fn batch_sample_in_full_matches_the_scalar_path() {
+    fn owned_sample_matches_the_scalar_path() -> Result<(), mechanism::BatchError> {
+        let m = FourBar::<f64>::default();
+        let mut b = FourBar::<f64>::batch(3600); // FourBarColumns: every column and status zero
+        b.in_theta2 = (0..3600).map(|k| k as f64 * 1e-3).collect();
+        let failed = m.solve_columns(&mut b)?; // elements whose status is not 0
+
+        // Seed 002's four-bar is a crank-rocker: every pose assembles. B.x
+        // against the scalar path with the bound of the borrowed sample below.
+        assert_eq!(failed, 0);
+        assert!(b.status.iter().all(|&s| s == 0));
+        for k in [0, 900, 1234, 3599] {
+            let p = m
+                .position(&FourBarInput {
+                    theta2: b.in_theta2[k],
+                })
+                .unwrap();
+            assert!((b.pos_B_x[k] - p.B.x).abs() < 64.0 * f64::EPSILON * 305.0 / 0.09);
+        }
+        Ok(())
+    }
+
+    #[test]
+    fn batch_sample_in_full_matches_the_scalar_path() -> Result<(), mechanism::BatchError> {
         let m = FourBar::<f64>::default();
         let n = 3600;
         let theta: Vec<f64> = (0..n)
@@ -431,8 +453,9 @@ mod performance_batch {
         };
         assert!(o.next().is_none(), "18 buffers, as the sample says");
         assert_eq!(b.len(), n);
-        let failed = m.solve_batch(&mut b); // elements whose status is not 0
-                                            // Seed 002's four-bar is a crank-rocker: every pose assembles.
+        let failed = m.solve_batch(&mut b)?; // elements whose status is not 0
+
+        // Seed 002's four-bar is a crank-rocker: every pose assembles.
         assert_eq!(failed, 0);
         assert!(status.iter().all(|&s| s == 0));
         // B.x (out[0]) against the scalar path at a few poses; the batch agrees
@@ -442,11 +465,12 @@ mod performance_batch {
             let p = m.position(&FourBarInput { theta2: theta[k] }).unwrap();
             assert!((out[0][k] - p.B.x).abs() < 64.0 * f64::EPSILON * 305.0 / 0.09);
         }
+        Ok(())
     }
 
     #[cfg(feature = "rayon")]
     #[test]
-    fn par_solve_sample() {
+    fn par_solve_sample() -> Result<(), mechanism::BatchError> {
         let m = FourBar::<f64>::default();
         let n = 10_000;
         let theta: Vec<f64> = (0..n).map(|k| k as f64 * 1e-3).collect();
@@ -479,15 +503,28 @@ mod performance_batch {
             acc_link4: nx(),
             status: &mut status,
         };
-        let failed = mechanism::par_solve(b, 4096, &|mut chunk| m.solve_batch(&mut chunk));
+        let failed = mechanism::par_solve(b, 4096, &|mut chunk| m.solve_batch(&mut chunk))?;
         assert_eq!(failed, 0);
+        // The owned form, as the doc writes it.
+        let mut b = FourBar::<f64>::batch(n);
+        b.in_theta2 = theta;
+        let failed =
+            mechanism::par_solve(b.as_batch(), 4096, &|mut chunk| m.solve_batch(&mut chunk))?;
+        assert_eq!(failed, 0);
+        assert_eq!(b.pos_B_x, out[2]);
+        Ok(())
     }
 }
+
+/// The tests that run samples writing to relative paths change the process'
+/// working directory: one at a time.
+static CWD: std::sync::Mutex<()> = std::sync::Mutex::new(());
 
 /// docs/plots.md: both samples, with the data they assume made up here, run in
 /// a temporary directory (the drawing sample writes to relative paths).
 #[test]
 fn plots_samples_write_their_files() {
+    let _cwd = CWD.lock().unwrap_or_else(|e| e.into_inner());
     let dir = std::env::temp_dir().join(format!("doc_samples_plots_{}", std::process::id()));
     std::fs::create_dir_all(dir.join("target/plots/mine")).unwrap();
     std::env::set_current_dir(&dir).unwrap();
@@ -577,12 +614,12 @@ const SCHEMATIC: &[(&str, &str, &str)] = &[
     ),
     (
         "docs/performance.md",
-        "let m = FourBar::<f64>::default();\nlet n = 3600;\nlet theta: Vec<f64> = (0..n).map(|k| k as f64 * core::f64::consts::TAU / n as f64).collect();\nlet (w, a) = (vec![250.0; n], vec![0.0; n]);\nlet mut out = vec![vec![0.0; n]; 18];           // A, B (x, y), link3, link4 at 3 levels\nlet mut status = vec![0u8; n];\nlet mut o = out.iter_mut();\nlet mut b = FourBarBatch {\n    in_theta2: &theta, rate_theta2: &w, accel_theta2: &a,\n    pos_B_x: o.next().unwrap(), /* ... every pos_*, vel_*, acc_* output ... */\n    status: &mut status,\n};\nlet failed = m.solve_batch(&mut b);             // elements whose status is not 0",
+        "let m = FourBar::<f64>::default();\nlet n = 3600;\nlet theta: Vec<f64> = (0..n).map(|k| k as f64 * core::f64::consts::TAU / n as f64).collect();\nlet (w, a) = (vec![250.0; n], vec![0.0; n]);\nlet mut out = vec![vec![0.0; n]; 18];           // A, B (x, y), link3, link4 at 3 levels\nlet mut status = vec![0u8; n];\nlet mut o = out.iter_mut();\nlet mut b = FourBarBatch {\n    in_theta2: &theta, rate_theta2: &w, accel_theta2: &a,\n    pos_B_x: o.next().unwrap(), /* ... every pos_*, vel_*, acc_* output ... */\n    status: &mut status,\n};\nlet failed = m.solve_batch(&mut b)?;             // elements whose status is not 0",
         "the output fields are elided; `performance_batch` has them all",
     ),
     (
         "docs/performance.md",
-        "let failed = mechanism::par_solve(b, 4096, &|mut chunk| m.solve_batch(&mut chunk));",
+        "let failed = mechanism::par_solve(b.as_batch(), 4096, &|mut chunk| m.solve_batch(&mut chunk))?;",
         "needs the feature `rayon`; `performance_batch::par_solve_sample` runs it with the feature",
     ),
 ];
@@ -749,4 +786,50 @@ fn named_targets_and_paths_exist() {
         "names in the docs that do not exist:\n{}",
         bad.join("\n")
     );
+}
+
+mechanism::mechanism! {
+    /// The Jansen leg of `tests/surface/describe.rs`, for the docs/plots.md sample.
+    pub JansenLeg {
+        let O = ground(0.0, 0.0);
+        let Z = ground(-38.0, -7.8);
+        let A = crank(O, 15.0, theta) as crank;
+        let B = rrr(A, 50.0, Z, 41.5, right) as (j, b);
+        let C = rrr(A, 61.9, Z, 39.3, left) as (k, c);
+        let D = rrr(B, 55.8, Z, 40.1, right) as (e, d);
+        let E = rrr(D, 39.4, C, 36.7, right) as (f, g);
+        let F = rrr(E, 65.7, C, 49.0, right) as (h, i);
+    }
+}
+
+/// docs/plots.md, "Any mechanism": the sample writes the animation and the
+/// table of a mechanism it has no drawing code for.
+#[test]
+fn any_mechanism_sample_writes_its_files() {
+    let _cwd = CWD.lock().unwrap_or_else(|e| e.into_inner());
+    let dir = std::env::temp_dir().join(format!("doc_samples_any_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let here = std::env::current_dir().unwrap();
+    std::env::set_current_dir(&dir).unwrap();
+    let written = any_sample();
+    std::env::set_current_dir(here).unwrap();
+    written.unwrap();
+    let svg = std::fs::read_to_string(dir.join("jansen.svg")).unwrap();
+    assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"));
+    let csv = std::fs::read_to_string(dir.join("jansen.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 74, "a header and 73 poses");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[rustfmt::skip] // verbatim from docs/plots.md
+fn any_sample() -> Result<(), Box<dyn std::error::Error>> {
+    let leg = JansenLeg::<f64>::default();
+    let poses: Vec<(f64, Option<JansenLegPosition>)> = (0..=72)
+        .map(|k| { let t = k as f64 * std::f64::consts::TAU / 72.0;
+                   (t, leg.position(&JansenLegInput { theta: t }).ok()) })
+        .collect();
+    mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", "cm", &poses, &["F"])?
+        .write_animation(4.0, "jansen.svg")?;
+    std::fs::write("jansen.csv", mechanism_plot::any::csv("theta", "rad", &poses))?;
+    Ok(())
 }

@@ -94,8 +94,8 @@ fn generated_code_binds_no_name_of_the_users_scope() {
 /// clippy's `approx_constant`, deny by default, would flag in the user's
 /// crate) passes clippy's default lints. `.ci/run` runs `cargo clippy
 /// --all-targets -- -D warnings`, so a lint in the generated code of this
-/// module fails CI. Before the generated impls allowed these two lints, this
-/// definition made `cargo clippy` fail with two errors.
+/// module fails CI. Without the generated impls' allowance of these two
+/// lints, this definition makes `cargo clippy` fail with two errors.
 mod lint_clean {
     use mechanism::mechanism;
 

@@ -27,8 +27,9 @@ use std::collections::HashMap;
 
 use mechanism::{mechanism, Fault, Point2, Primitive, Vector2};
 
-#[path = "common/batch_compare.rs"]
+// `compare!`: the batch path against the scalar one.
 #[macro_use]
+#[path = "common/batch_compare.rs"]
 mod batch_compare;
 use batch_compare::{one, rates, Found, K};
 

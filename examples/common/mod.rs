@@ -1,14 +1,10 @@
-//! Shared by the examples: `--csv` detection and full-precision CSV rows.
+//! Shared by the examples: full-precision CSV rows and aligned table rows
+//! (the command line is `cli.rs`, mounted at each example's root).
 #![allow(dead_code)]
 
 pub mod plots;
 pub mod scenes;
 pub mod seed003;
-
-/// `true` when the example was run with `--csv`.
-pub fn csv_mode() -> bool {
-    std::env::args().any(|a| a == "--csv")
-}
 
 /// One CSV row, every number with 17 significant digits (round-trip exact for f64).
 pub fn csv_row(values: &[f64]) -> String {

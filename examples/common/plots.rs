@@ -1,7 +1,7 @@
 //! Pictures of the example mechanisms (`mechanism-plot`): for each scene, a figure of
 //! its kinematic outputs against the input, a drawing of one pose with the paths of its
 //! points, and an animation over the input range. The examples write them to
-//! `target/plots/<example>/`; `tests/plots.rs` writes them to a temporary directory and
+//! `target/plots/<example>/`; `tests/examples/plots.rs` writes them to a temporary directory and
 //! checks every SVG.
 //!
 //! The curves use a finer input grid than the examples' tables (which keep the source

@@ -1,5 +1,5 @@
 //! The mechanisms of the examples, defined once and shared by the examples,
-//! the tests (`tests/examples.rs`) and the benchmarks.
+//! the tests (`tests/examples/` and others) and the benchmarks.
 #![allow(dead_code)]
 
 use mechanism::mechanism;

@@ -186,12 +186,12 @@ macro_rules! batch_methods {
                 }
             }
             let mut buf = Buffers::new(&grid, &w, &a, names.clone());
-            m.solve_batch(&mut view(&mut buf));
+            m.solve_batch(&mut view(&mut buf)).expect("slices of one length");
             let s = buf.samples(&grid64, $sample);
             let cell = RefCell::new(buf);
             let sweep: Sweep = Box::new(move || {
                 let mut b = cell.borrow_mut();
-                let failed = m.solve_batch(&mut view(&mut b));
+                let failed = m.solve_batch(&mut view(&mut b)).expect("slices of one length");
                 let acc: $t = b.out[sum_at].iter().sum();
                 std::hint::black_box(acc) as f64 + failed as f64
             });
@@ -205,12 +205,14 @@ macro_rules! batch_methods {
             #[cfg(feature = "rayon")]
             {
                 let mut buf = Buffers::new(&grid, &w, &a, names);
-                mechanism::par_solve(view(&mut buf), 512, &|mut b| m.solve_batch(&mut b));
+                mechanism::par_solve(view(&mut buf), 512, &|mut b| m.solve_batch(&mut b))
+                    .expect("slices of one length");
                 let s = buf.samples(&grid64, $sample);
                 let cell = RefCell::new(buf);
                 let sweep: Sweep = Box::new(move || {
                     let mut b = cell.borrow_mut();
-                    let failed = mechanism::par_solve(view(&mut b), 512, &|mut c| m.solve_batch(&mut c));
+                    let failed = mechanism::par_solve(view(&mut b), 512, &|mut c| m.solve_batch(&mut c))
+                        .expect("slices of one length");
                     let acc: $t = b.out[sum_at].iter().sum();
                     std::hint::black_box(acc) as f64 + failed as f64
                 });

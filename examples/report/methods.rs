@@ -409,7 +409,7 @@ fn ok(b: bool) -> &'static str {
     }
 }
 
-/// The targets for one scene, as sentences with the measured figures.
+/// The performance and accuracy targets for one scene, as sentences with the measured figures.
 /// `floor`: the f32 floor of the scene (positions, rates; `main::cos_sin_floor`).
 pub fn targets(scene: &Scene, ms: &[Method], floor: (f64, f64)) -> Vec<String> {
     let mut out = Vec::new();

@@ -1,20 +1,24 @@
 //! Code generation for `mechanism!`, as a plain library so it can be unit- and
-//! snapshot-tested: [`parse`] -> [`model`] -> [`validate`] -> [`plan`] ->
-//! [`check`] (the mechanism assembled over its input range at expansion time)
-//! -> [`emit`] (with [`self_test`], the generated tests of `#[self_test]`).
+//! snapshot-tested. The pipeline, in stage order (each stage reads only the
+//! ones before it):
 //!
-//! Errors are accumulated across stages and reported together, each on the
-//! user's token; on error, stub items with the real names keep the user's own
-//! code free of follow-on errors.
+//! [`parse`] (tokens to syntax) -> [`model`] (typed statements, inputs and
+//! their ranges) -> [`validate`] (one rule per function) -> [`plan`] (solve
+//! order, owners, what each analysis needs) -> [`check`] (the mechanism
+//! assembled over its input range at expansion time) -> [`emit`] (the
+//! generated items, one file per family).
+//!
+//! Errors from every stage go to one [`diag::Diagnostics`] and are reported
+//! together, sorted by position, each on the user's token; on error, stub
+//! items with the real names keep the user's own code free of follow-on
+//! errors.
 
-pub mod batch;
 pub mod check;
+pub mod diag;
 pub mod emit;
-pub mod kinetostatics;
 pub mod model;
 pub mod parse;
 pub mod plan;
-pub mod self_test;
 pub mod validate;
 pub mod value;
 
@@ -22,68 +26,25 @@ use proc_macro2::TokenStream;
 
 /// Expands a mechanism definition into Rust items.
 pub fn expand(input: TokenStream) -> TokenStream {
-    let definition: parse::Definition = match syn::parse2(input) {
+    let definition = match parse::definition(input) {
         Ok(d) => d,
         Err(e) => return e.to_compile_error(),
     };
-    let kinds_failed = definition.items.iter().any(|item| match item {
-        parse::Item::Let(l) => !model::KINDS.contains(&l.kind.to_string().as_str()),
-        _ => false,
-    });
-    let (model, mut errors) = model::lower(definition);
-    validate::unique_names(&model, &mut errors);
-    validate::reserved_names(&model, &mut errors);
-    validate::references_resolve(&model, &mut errors);
-    validate::has_driver(&model, kinds_failed, &mut errors);
-    validate::dof_matches(&model, &mut errors);
-    validate::outputs_exist(&model, &mut errors);
-    validate::rpp_slot_crosses_guide(&model, &mut errors);
-    let inputs = check::inputs(&model, &mut errors);
-    let allowed = check::allowances(&model, &mut errors);
-    if !errors.0.is_empty() {
-        return emit::emit_stub(&model, errors.0);
+    let mut diag = diag::Diagnostics::new();
+    let model = model::lower(definition, &mut diag);
+    validate::model(&model, &mut diag);
+    let plan = plan::plan(&model, &mut diag);
+    if let Some(plan) = &plan {
+        validate::planned(&model, plan, &mut diag);
     }
-    let plan = match plan::plan(&model) {
-        Ok(p) => p,
-        Err(e) => return emit::emit_stub(&model, e),
+    let plan = match plan {
+        Some(plan) if diag.is_empty() => plan,
+        _ => return emit::stub::emit(&model, diag.finish()),
     };
-    validate::geometry_consistent(&model, &plan, &mut errors);
-    validate::kinetics_consistent(&model, &plan, &mut errors);
-    if !errors.0.is_empty() {
-        return emit::emit_stub(&model, errors.0);
+    let findings = check::expansion_check(&model, &plan, &mut diag);
+    if !diag.is_empty() {
+        return emit::stub::emit(&model, diag.finish());
     }
-    let mut findings = check::expansion_check(&model, &plan, &inputs, &allowed);
-    let mut errors = std::mem::take(&mut findings.errors);
-    if let Some(span) = model.checks.self_test {
-        if let Some(e) = self_test::requirements(&model, &inputs, span) {
-            errors.push(e);
-        }
-    }
-    if !errors.is_empty() {
-        return emit::emit_stub(&model, errors);
-    }
-    let check = check::emit_check(&model, &plan, &inputs, &findings.summary);
-    let self_tests = model
-        .checks
-        .self_test
-        .map(|_| self_test::emit(&model, &plan, &inputs, &allowed, &findings));
-    // The position struct keeps the fields these read (`pos.NAME`).
-    let readers = format!(
-        "{} {}",
-        check,
-        self_tests
-            .as_ref()
-            .map(|t| t.to_string())
-            .unwrap_or_default()
-    );
-    let mut out = emit::emit(&model, &plan, &readers);
-    let name = &model.name;
-    let allow_lints = emit::allow_literal_lints();
-    out.extend(quote::quote! {
-        #allow_lints
-        impl<T: ::mechanism::Real> #name<T> { #check }
-    });
-    out.extend(findings.warnings.clone());
-    out.extend(self_tests);
-    out
+    diag.finish();
+    emit::mechanism(&model, &plan, &findings)
 }

@@ -2,8 +2,9 @@
 //! each point, link and guide is: which link a point rides on, how each link
 //! turns (its own angular velocity, a guide's, or none), which guides move.
 
-use crate::model::{Kind, Model, Origin, Stmt};
-use std::collections::BTreeMap;
+use crate::diag::Diagnostics;
+use crate::model::{ForceSpecValue, Kind, Model, Origin, Stmt};
+use std::collections::{BTreeMap, BTreeSet};
 use syn::Ident;
 
 /// How a link turns.
@@ -30,6 +31,8 @@ pub struct LinkInfo {
     pub turn: Turn,
     /// Whether the user named it.
     pub named: bool,
+    /// The guide it slides on (a block), if any.
+    pub guide: Option<String>,
 }
 
 /// What the plan knows of a guide.
@@ -55,6 +58,12 @@ pub struct Plan {
     /// ground). A joint of two links belongs to the first link of the
     /// statement that defines it; see [`point_owner`].
     pub owner: BTreeMap<String, Option<String>>,
+    /// What the definition asks to see: its outputs.
+    pub outputs: Outputs,
+    /// The statements the outputs and the force analysis need, in solve
+    /// order: what `position()` solves (a coupler point nobody asked for is
+    /// left out).
+    pub solve: Vec<usize>,
 }
 
 /// The body a statement's point belongs to when another group is pinned there:
@@ -135,7 +144,7 @@ fn link_shapes(stmt: &Stmt) -> Vec<(Vec<String>, Turn, Option<String>)> {
 
 /// Builds the plan. Errors: dependency cycles (with the cycle spelled out).
 /// Undefined names were reported by `validate`; they are skipped here.
-pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
+pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
     let mut defined = BTreeMap::new();
     let mut links = BTreeMap::new();
     let mut guides = BTreeMap::new();
@@ -162,7 +171,8 @@ pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
     for (i, stmt) in model.stmts.iter().enumerate() {
         for (j, (points, turn, guide)) in link_shapes(stmt).into_iter().enumerate() {
             let turn = match guide
-                .and_then(|g| guides.get(&g))
+                .as_ref()
+                .and_then(|g| guides.get(g))
                 .and_then(|g| g.carrier.clone())
             {
                 Some(carrier) => Turn::With(carrier),
@@ -176,6 +186,7 @@ pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
                     points,
                     turn,
                     named: stmt.links_named[j],
+                    guide,
                 },
             );
         }
@@ -215,7 +226,12 @@ pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
                 order.push(i);
             }
             _ => {
-                // Everything left waits on something left: report the cycle.
+                // Everything left waits on something left: report the cycle,
+                // unless an error is already reported (a duplicate name reads
+                // as a statement that needs itself: a follow-on, not a cycle).
+                if !errors.is_empty() {
+                    return None;
+                }
                 let left: Vec<usize> = (0..n).filter(|&i| !done[i]).collect();
                 let start = left[0];
                 let mut cycle = vec![start];
@@ -232,9 +248,8 @@ pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
                     .iter()
                     .map(|&i| model.stmts[i].name.to_string())
                     .collect();
-                let mut errors = Vec::new();
                 let first = &model.stmts[cycle[0]];
-                errors.push(syn::Error::new(
+                errors.error(syn::Error::new(
                     first.name.span(),
                     format!(
                         "dependency cycle: {} -> {}; each statement may use only names that do not, in turn, need it: break the cycle by fixing one of them to the ground or to a driver",
@@ -242,18 +257,29 @@ pub fn plan(model: &Model) -> Result<Plan, Vec<syn::Error>> {
                         names[0]
                     ),
                 ));
-                return Err(errors);
+                return None;
             }
         }
     }
-    Ok(Plan {
+    let mut plan = Plan {
         order,
         defined,
         links,
         guides,
         ground,
         owner,
-    })
+        outputs: Outputs::default(),
+        solve: Vec::new(),
+    };
+    plan.outputs = outputs(model, &plan);
+    let needed = needed_statements(model, &plan, &plan.outputs);
+    plan.solve = plan
+        .order
+        .iter()
+        .copied()
+        .filter(|i| needed.contains(i))
+        .collect();
+    Some(plan)
 }
 
 impl Plan {
@@ -293,5 +319,261 @@ impl Plan {
             }
         }
         None
+    }
+}
+
+/// A slide displacement the user named: its name, the statement that
+/// solves it and which of the statement's slides it is (0 or 1; an RPR's
+/// slide is its defined name, slot 0).
+#[derive(Clone, Debug)]
+pub struct Slide {
+    /// The user's name (a field of the output structs).
+    pub name: Ident,
+    /// The statement (index into `Model::stmts`).
+    pub stmt: usize,
+    /// Which of the statement's slides.
+    pub slot: usize,
+}
+
+/// Which names the user wants in the output structs.
+#[derive(Default)]
+pub struct Outputs {
+    /// Points, in solve order.
+    pub points: Vec<Ident>,
+    /// Named links, in solve order.
+    pub links: Vec<Ident>,
+    /// Slide displacements.
+    pub slides: Vec<Slide>,
+}
+
+fn outputs(model: &Model, plan: &Plan) -> Outputs {
+    let wanted = |name: &Ident| match &model.outputs {
+        None => true,
+        Some(list) => list.iter().any(|o| o == name),
+    };
+    let mut out = Outputs {
+        points: vec![],
+        links: vec![],
+        slides: vec![],
+    };
+    for &i in &plan.order {
+        let stmt = &model.stmts[i];
+        match stmt.kind {
+            Kind::Guide { .. } => {}
+            Kind::Rpr { .. } => {
+                if wanted(&stmt.name) {
+                    out.slides.push(Slide {
+                        name: stmt.name.clone(),
+                        stmt: i,
+                        slot: 0,
+                    });
+                }
+            }
+            _ => {
+                if wanted(&stmt.name) {
+                    out.points.push(stmt.name.clone());
+                }
+            }
+        }
+        for (link, named) in stmt.links.iter().zip(&stmt.links_named) {
+            if *named && wanted(link) {
+                out.links.push(link.clone());
+            }
+        }
+        for (slot, slide) in stmt.slides.iter().enumerate() {
+            if let Some(s) = slide {
+                if wanted(s) {
+                    out.slides.push(Slide {
+                        name: s.clone(),
+                        stmt: i,
+                        slot,
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+/// Statements the outputs need, directly or through the statements they use.
+/// The rest (a coupler point nobody asked for) is left out.
+fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usize> {
+    let mut stack: Vec<usize> = roots(model, plan);
+    for p in &out.points {
+        stack.extend(plan.defined.get(&p.to_string()));
+    }
+    for l in &out.links {
+        stack.extend(plan.links.get(&l.to_string()).map(|i| i.stmt));
+    }
+    stack.extend(out.slides.iter().map(|s| s.stmt));
+    let mut needed = BTreeSet::new();
+    while let Some(i) = stack.pop() {
+        if needed.insert(i) {
+            for r in references(&model.stmts[i]) {
+                stack.extend(plan.defined.get(&r.to_string()));
+            }
+        }
+    }
+    needed
+}
+
+/// Statements the force analysis needs besides those of the outputs: every
+/// statement that creates a link (all reactions are outputs), the centres of
+/// mass, the points where forces act and the guides forces follow.
+fn roots(model: &Model, plan: &Plan) -> Vec<usize> {
+    if !model.has_forces() {
+        return Vec::new();
+    }
+    let k = &model.kinetics;
+    let mut roots: Vec<usize> = model
+        .stmts
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| !s.links.is_empty())
+        .map(|(i, _)| i)
+        .collect();
+    let named = k
+        .masses
+        .iter()
+        .map(|m| m.at.to_string())
+        .chain(k.forces.iter().map(|f| f.at.to_string()))
+        .chain(k.forces.iter().filter_map(|f| match &f.value {
+            ForceSpecValue::Along(g, _) => Some(g.to_string()),
+            ForceSpecValue::Components(..) => None,
+        }));
+    roots.extend(named.filter_map(|n| plan.defined.get(&n).copied()));
+    roots
+}
+
+/// The statements the generated `position()` solves (those the outputs
+/// need), in solve order, and among them the checked groups.
+pub struct Checked {
+    /// Statement indices in solve order.
+    pub order: Vec<usize>,
+    /// Statement indices of the checked groups (drivers, groups, link points).
+    pub groups: Vec<usize>,
+}
+
+/// The statements `position()` solves and the checked groups among them.
+pub fn checked(model: &Model, plan: &Plan) -> Checked {
+    let order = plan.solve.clone();
+    let groups = order
+        .iter()
+        .copied()
+        .filter(|&i| crate::model::group_kind(&model.stmts[i].kind).is_some())
+        .collect();
+    Checked { order, groups }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{model, validate};
+
+    /// The model and plan of the definition `src` (which must be valid).
+    fn planned(src: &str) -> (Model, Plan) {
+        let def = syn::parse_str::<crate::parse::Definition>(src).unwrap();
+        let mut diag = Diagnostics::new();
+        let model = model::lower(def, &mut diag);
+        validate::model(&model, &mut diag);
+        let plan = plan(&model, &mut diag);
+        let errors: Vec<String> = diag.finish().iter().map(ToString::to_string).collect();
+        assert!(errors.is_empty(), "{errors:?}");
+        (model, plan.expect("a plan"))
+    }
+
+    /// The names of the statements `order` (indices) of `model`.
+    fn names(model: &Model, order: &[usize]) -> Vec<String> {
+        order
+            .iter()
+            .map(|&i| model.stmts[i].name.to_string())
+            .collect()
+    }
+
+    /// A four-bar with a coupler point `P`, its statements in the order
+    /// written, and `extra` after them.
+    fn four_bar(extra: &str) -> String {
+        format!(
+            "pub M {{
+                let O2 = ground(0.0, 0.0);
+                let O4 = ground(4.0, 0.0);
+                let A = crank(O2, 1.0, theta) as link2;
+                let B = rrr(A, 3.0, O4, 2.5, left) as (link3, link4);
+                let P = point(link3, from A, 1.0, 30 deg);
+                {extra}
+            }}"
+        )
+    }
+
+    #[test]
+    fn statements_written_out_of_order_are_solved_in_dependency_order() {
+        // Proves the solve order puts each statement after those it uses,
+        // keeping the written order among the ready ones (`O4` before `O2`).
+        let (model, plan) = planned(
+            "pub M {
+                let B = rrr(A, 3.0, O4, 2.5, left) as (link3, link4);
+                let A = crank(O2, 1.0, theta) as link2;
+                let O4 = ground(4.0, 0.0);
+                let O2 = ground(0.0, 0.0);
+            }",
+        );
+        assert_eq!(names(&model, &plan.order), ["O4", "O2", "A", "B"]);
+        assert_eq!(names(&model, &plan.solve), ["O4", "O2", "A", "B"]);
+    }
+
+    #[test]
+    fn a_joint_belongs_to_the_first_link_of_its_group() {
+        // Proves the owners: a ground point to the ground, a crank's joint to
+        // the crank, a group's joint to its first link, a link point to its
+        // link; and the points each link carries.
+        let (_, plan) = planned(&four_bar(""));
+        let owner = |p: &str| plan.owner.get(p).cloned();
+        assert_eq!(owner("O2"), Some(None));
+        assert_eq!(owner("A"), Some(Some("link2".to_string())));
+        assert_eq!(owner("B"), Some(Some("link3".to_string())));
+        assert_eq!(owner("P"), Some(Some("link3".to_string())));
+        assert_eq!(plan.links["link3"].points, ["A", "B", "P"]);
+        assert_eq!(plan.links["link4"].points, ["O4", "B"]);
+        assert_eq!(plan.links_with_point("B"), ["link3", "link4"]);
+        assert!(plan.is_ground("O4") && !plan.is_ground("A"));
+    }
+
+    #[test]
+    fn solve_leaves_out_a_coupler_point_nobody_needs() {
+        // Proves `solve` holds what the outputs need: without `P` among the
+        // outputs its statement is left out, with it (or with a mass at it,
+        // for the force analysis) it is solved.
+        let (model, plan) = planned(&four_bar("outputs { B }"));
+        assert_eq!(names(&model, &plan.solve), ["O2", "O4", "A", "B"]);
+        assert_eq!(names(&model, &plan.order), ["O2", "O4", "A", "B", "P"]);
+        let (model, plan) = planned(&four_bar("outputs { P }"));
+        assert_eq!(names(&model, &plan.solve), ["O2", "O4", "A", "B", "P"]);
+        let (model, plan) = planned(&four_bar("outputs { B } mass link3 { m = 1.0, at = P }"));
+        assert_eq!(names(&model, &plan.solve), ["O2", "O4", "A", "B", "P"]);
+    }
+
+    #[test]
+    fn a_dependency_cycle_is_spelled_out() {
+        // Proves two groups that need each other get no plan but the error
+        // naming the cycle, on the first statement of it.
+        let def = syn::parse_str::<crate::parse::Definition>(
+            "pub M {
+                let O = ground(0.0, 0.0);
+                let A = crank(O, 1.0, theta) as link2;
+                let B = rrr(A, 1.0, C, 1.0, left) as (link3, link4);
+                let C = rrr(B, 1.0, O, 1.0, left) as (link5, link6);
+            }",
+        )
+        .unwrap();
+        let mut diag = Diagnostics::new();
+        let model = model::lower(def, &mut diag);
+        assert!(plan(&model, &mut diag).is_none());
+        let errors = diag.finish();
+        assert_eq!(errors.len(), 1);
+        assert_eq!(
+            errors[0].to_string(),
+            "dependency cycle: B -> C -> B; each statement may use only names that do not, in turn, need it: break the cycle by fixing one of them to the ground or to a driver"
+        );
+        assert_eq!(errors[0].span().start().line, 4);
     }
 }

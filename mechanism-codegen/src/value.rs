@@ -108,10 +108,76 @@ impl Value {
     }
 }
 
-/// `T::lit(x)` with `x` printed exactly (shortest round-trip form).
+/// `T::lit(x)` with `x` printed exactly (shortest round-trip form). Every
+/// number the front end folds is checked finite on the user's tokens
+/// ([`convert`]); a non-finite `x` here would be a bug of the code generator,
+/// so it becomes a compile error rather than a panic of the macro.
 pub fn lit(x: f64) -> TokenStream {
+    if !x.is_finite() {
+        let message = format!("mechanism! internal error: the non-finite number {x} reached the generated code; please report this definition");
+        return quote!(::core::compile_error!(#message));
+    }
     let literal = proc_macro2::Literal::f64_suffixed(x);
     quote!(<T as ::mechanism::Real>::lit(#literal))
+}
+
+/// An error when `v`, a node just built by [`convert`] whose operands were
+/// checked already, folds to a number that is not finite: a literal too
+/// large for `f64`, a division by an expression that folds to zero, or a
+/// folded operation that overflows or gives NaN. The check runs on every
+/// sub-expression, so `r + 1e308 * 10.0` with `r` a parameter is an error
+/// on `1e308 * 10.0` wherever it stands (a dimension, a load, gravity, an
+/// angle, a torque).
+fn check_finite(v: &Value) -> Result<(), syn::Error> {
+    let folded = v.fold();
+    let message = match (&v.kind, folded) {
+        (ValueKind::Bin(_, '/', b), _) if b.fold() == Some(0.0) => format!(
+            "division by zero: `{}` is 0, so this is not a finite number; dimensions must be finite",
+            b.tokens
+        ),
+        (ValueKind::Lit(x), _) if !x.is_finite() => format!(
+            "`{}` is not a finite number (too large for an f64, it rounds to {x}); dimensions must be finite",
+            v.tokens
+        ),
+        (_, Some(x)) if !x.is_finite() => format!(
+            "`{}` evaluates to {x}, not a finite number (it overflows an f64); every number in a definition must be finite",
+            v.tokens
+        ),
+        _ => return Ok(()),
+    };
+    Err(syn::Error::new_spanned(&v.tokens, message))
+}
+
+/// An error for a number written with a type suffix (`1u8`, `1.5f32`) or in
+/// another base (`0x10`, `0b1`, `0o7`): the language takes plain decimal
+/// numbers, whose type is the mechanism's scalar `T`; `fix` is the number as
+/// it should be written. Checked on every token of a definition before it
+/// is parsed ([`crate::parse`]).
+pub fn literal_form(lit: &Lit) -> Option<syn::Error> {
+    let (suffix, digits) = match lit {
+        Lit::Int(i) => (i.suffix(), i.base10_digits()),
+        Lit::Float(f) => (f.suffix(), f.base10_digits()),
+        _ => return None,
+    };
+    let text = quote::ToTokens::to_token_stream(lit).to_string();
+    let radix = ["0x", "0o", "0b"].iter().any(|p| text.starts_with(p));
+    if suffix.is_empty() && !radix {
+        return None;
+    }
+    let fix = if digits.contains(['.', 'e', 'E']) {
+        digits.to_string()
+    } else {
+        format!("{digits}.0")
+    };
+    let what = if radix {
+        "a number in another base than ten"
+    } else {
+        "a number with a type suffix"
+    };
+    Some(syn::Error::new(
+        lit.span(),
+        format!("`{text}` is {what}; numbers in a definition are plain decimals whose type is the mechanism's scalar (`f32` or `f64`): write `{fix}`"),
+    ))
 }
 
 /// How names inside an expression resolve.
@@ -191,9 +257,11 @@ pub fn convert(expr: &Expr, scope: &dyn Scope) -> Result<Value, syn::Error> {
             ))
         }
     };
-    Ok(Value {
+    let value = Value {
         kind,
         span,
         tokens: quote::ToTokens::to_token_stream(expr),
-    })
+    };
+    check_finite(&value)?;
+    Ok(value)
 }

@@ -1,15 +1,15 @@
 //! Error-free transformations (Knuth's two-sum, Dekker's product with
 //! Veltkamp's split) for the places where one rounding matters: the RRP
 //! group's distance from its guide in `f32` near tangency (scalar
-//! [`crate::dyad::rrp::position`] and [`crate::lane::rrp`]), and the
+//! [`crate::dyad::rrp::position`] and [`crate::__private::lane::rrp`]), and the
 //! Cody-Waite reduction of the sine and cosine kernels ([`reduce`]:
-//! [`crate::sincos64`], [`crate::lane::sin_cos`]). Branch-free and without
+//! [`crate::sincos64`], [`crate::__private::lane::sin_cos`]). Branch-free and without
 //! fused multiply-add, so they vectorize and run on a Cortex-M4F.
 
 use crate::scalar::{single, Real};
 
 /// Whether the RRP position ([`crate::dyad::rrp::position`], and its lane
-/// version [`crate::lane::rrp`]) carries rounding errors: for `f32`
+/// version [`crate::__private::lane::rrp`]) carries rounding errors: for `f32`
 /// (24-bit significand), where without it the f32 six-bar's largest rate
 /// error was 7.3e-6 instead of 3.7e-6 (`docs/stability.md`, "f32 six-bar");
 /// not for `f64`, whose rounding is `2^29` times finer (the f64 six-bar is
@@ -99,3 +99,10 @@ pub(crate) fn reduce(x: f64, k: f64, p1: f64, p2: f64, p3: f64) -> (f64, f64) {
     let err = (t - (hi - v)) + (-w - v);
     (hi, err - k * p3)
 }
+
+/// `pi/2 = P1 + P2 + P3` for the argument reductions of `lane::sin_cos` and
+/// [`crate::sincos64`]: `P1`, `P2` have 33 significant bits, so `k P1` and
+/// `k P2` are exact for `|k| < 2^20`; `P3` is the rest, rounded.
+pub(crate) const P1: f64 = 1.570_796_326_734_125_6; // 0x1.921fb544p+0, 33 bits
+pub(crate) const P2: f64 = 6.077_100_506_303_966e-11; // 0x1.0b4611a6p-34, 33 bits
+pub(crate) const P3: f64 = 2.022_266_248_795_950_6e-21; // the rest, rounded

@@ -15,6 +15,8 @@ use crate::scalar::Real;
 
 /// The kind of primitive that reported an error.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[non_exhaustive]
 pub enum Primitive {
     /// A crank driver (link turning about a known point).
     Crank,
@@ -34,6 +36,9 @@ pub enum Primitive {
     Prp,
     /// Class II group revolute-prismatic-prismatic.
     Rpp,
+    /// Class III group: a ternary link on three revolute legs
+    /// ([`crate::triad`]).
+    Triad,
     /// The linear solver ([`crate::linsolve`]).
     LinearSystem,
 }
@@ -51,6 +56,7 @@ impl Primitive {
             Primitive::Rpr => "RPR",
             Primitive::Prp => "PRP",
             Primitive::Rpp => "RPP",
+            Primitive::Triad => "triad",
             Primitive::LinearSystem => "linear system",
         }
     }
@@ -59,6 +65,8 @@ impl Primitive {
 /// What went wrong, with the numbers that show by how much, in the scalar
 /// type `T` of the computation that failed (`f32` or `f64`).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[non_exhaustive]
 pub enum Fault<T = f64> {
     /// The group cannot close at this pose. `miss` (> 0, length units) is how far
     /// the distance between the known joints lies outside the reachable range;
@@ -91,6 +99,21 @@ pub enum Fault<T = f64> {
         /// The value given.
         value: T,
     },
+    /// A group with several assemblies (the triad) was asked for the one
+    /// nearest a given pose, and no assembly is clearly that one: the nearest
+    /// is `nearest` from the pose (L, root-sum-square over the joints) and
+    /// either the next is `next`, less than twice as far, or `nearest`
+    /// exceeds the largest distance accepted, `next` (half the group's
+    /// shortest dimension). Tracking, the same when the followed assembly
+    /// has met another one and vanished (a branch point): `nearest` is then
+    /// the jump to the closest assembly left on the same side of the branch
+    /// point (infinite when none is left).
+    NotNear {
+        /// Distance from the pose to the nearest assembly (L).
+        nearest: T,
+        /// Distance to the next one, or the largest jump accepted (L).
+        next: T,
+    },
     /// An input that must be zero or positive (a moment of inertia) was
     /// negative.
     Negative {
@@ -105,6 +128,7 @@ pub enum Fault<T = f64> {
 /// known), and the [`Fault`] with its numbers in the scalar type `T` (`f32` or
 /// `f64`, the default).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Error<T = f64> {
     /// The user's name for the group or driver (for example `"B"`), or `""` when
     /// a primitive was called directly.
@@ -128,6 +152,7 @@ impl<T> Error<T> {
 
     /// Attributes the error to the user's group `name` (generated code calls this).
     #[inline]
+    #[must_use]
     pub const fn in_group(mut self, name: &'static str) -> Self {
         self.group = name;
         self
@@ -139,6 +164,7 @@ impl<T: Real> Fault<T> {
     /// `f64`), for code that collects faults of either precision (the sweep
     /// of [`crate::sweep`], the generated `check`).
     #[inline]
+    #[must_use]
     pub fn to_f64(self) -> Fault<f64> {
         match self {
             Fault::CannotAssemble { miss, reach } => Fault::CannotAssemble {
@@ -158,6 +184,10 @@ impl<T: Real> Fault<T> {
                 what,
                 value: value.as_f64(),
             },
+            Fault::NotNear { nearest, next } => Fault::NotNear {
+                nearest: nearest.as_f64(),
+                next: next.as_f64(),
+            },
         }
     }
 }
@@ -166,6 +196,7 @@ impl<T: Real> Error<T> {
     /// The same error with its numbers widened to `f64` (exact); the group
     /// and primitive are kept.
     #[inline]
+    #[must_use]
     pub fn to_f64(self) -> Error<f64> {
         Error {
             group: self.group,
@@ -373,6 +404,16 @@ impl<T: Real> Fault<T> {
             Fault::Negative { what, value } => {
                 write!(f, "{what} must be zero or positive, got {}", Rounded(value))
             }
+            Fault::NotNear { nearest, next } => write!(
+                f,
+                "no assembly is clearly the one asked for: the nearest is {} from the \
+                 given pose and the next {} (or the largest distance accepted; a clear \
+                 match is at most half as far as the next and within half the shortest \
+                 link); give the joints' approximate positions more closely, or, \
+                 tracking, the followed assembly met another one and vanished here",
+                Rounded(nearest),
+                Rounded(next)
+            ),
         }
     }
 }

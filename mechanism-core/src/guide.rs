@@ -17,6 +17,7 @@ use nalgebra::{Point2, Vector2};
 
 /// A straight guide: `origin` (L) and unit direction `dir`.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Line<T: Real> {
     /// A reference point on the line (L); slider displacements are measured from it.
     pub origin: Point2<T>,
@@ -35,6 +36,7 @@ impl<T: Real> Line<T> {
 
 /// Velocity state of the body carrying a guide.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LineVelocity<T: Real> {
     /// Velocity of the line's `origin` (L/s).
     pub v_origin: Vector2<T>,
@@ -44,6 +46,7 @@ pub struct LineVelocity<T: Real> {
 
 /// Acceleration state of the body carrying a guide.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LineAcceleration<T: Real> {
     /// Acceleration of the line's `origin` (L/s^2).
     pub a_origin: Vector2<T>,

@@ -5,6 +5,9 @@
 //! - [`link`]: points fixed on a link and rigid-body rate relations;
 //! - [`dyad`]: the five class II Assur groups RRR, RRP, RPR, PRP, RPP, each with
 //!   `position`, `velocity` and `acceleration` (and kinetostatics in [`force`]);
+//! - [`triad`]: the class III group of the Stephenson III six-bar (a ternary
+//!   link on three legs): every assembly by a search, the one nearest a given
+//!   pose, tracking, rates and the 12x12 reactions;
 //! - [`linsolve`]: Gaussian elimination with row scaling and partial pivoting on
 //!   fixed-size arrays;
 //! - [`error`]: the typed errors.
@@ -17,6 +20,7 @@
 // assembly) is the one module allowed `unsafe`.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
 pub mod driver;
 pub mod dyad;
@@ -25,15 +29,22 @@ pub mod error;
 pub mod force;
 pub mod geometry;
 pub mod guide;
-pub mod lane;
 pub mod link;
 pub mod linsolve;
 pub mod mode;
+mod real;
 pub mod scalar;
+#[cfg(feature = "serde")]
+mod ser;
 pub mod sincos64;
+pub mod structure;
 pub mod sweep;
+pub mod triad;
 pub mod trig;
 pub mod trig64;
+
+#[doc(hidden)]
+pub mod __private;
 
 pub use error::{Error, Fault, Primitive};
 pub use mode::Mode;

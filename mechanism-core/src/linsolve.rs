@@ -33,8 +33,10 @@ const P: Primitive = Primitive::LinearSystem;
 
 /// The solution of `A x = b` with a cheap conditioning indicator.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Solution<T, const N: usize> {
     /// The solution `x`, in the units of `b` divided by those of `A`'s columns.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
     pub x: [T; N],
     /// The smallest pivot of the elimination of the row-equilibrated matrix,
     /// in absolute value: `min_k |u_kk|`, where `U` is the upper-triangular

@@ -9,6 +9,7 @@ use crate::scalar::Real;
 
 /// Which of the two closures of a group to take.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Mode {
     /// `m = +1` (for RRR: the joint lies to the left of the line from the first
     /// known joint to the second).

@@ -13,7 +13,7 @@
 //! 1. `j = round(x 32/pi)` (adding and subtracting `1.5 2^52`; `|j| <=
 //!    32 000 000 / pi < 2^20` for `|x| <= 1e5`), `r = x - j pi/32` by
 //!    Cody-Waite with `pi/32 = Q1 + Q2 + Q3` (the three parts of `pi/2` of
-//!    [`crate::eft`] divided by 16, exact): `Q1`, `Q2` have 33 significant
+//!    `eft` divided by 16, exact): `Q1`, `Q2` have 33 significant
 //!    bits, so `j Q1` and `j Q2` are exact; `x - j Q1` is exact (Sterbenz:
 //!    for `j != 0` the two are within a factor of 2); its difference with
 //!    `j Q2` is split exactly into `hi + err` (two-sum), and `r + rt` carries
@@ -54,7 +54,7 @@ pub const SIN_COS_F64_LIMIT: f64 = 1.0e5;
 const INV_PI_32: f64 = 32.0 / core::f64::consts::PI;
 /// `1.5 2^52`: `(x + R52) - R52` rounds `|x| < 2^51` to an integer.
 const R52: f64 = 6_755_399_441_055_744.0;
-/// `pi/32 = Q1 + Q2 + Q3`: the parts of `pi/2` of [`crate::eft`] over 16.
+/// `pi/32 = Q1 + Q2 + Q3`: the parts of `pi/2` of `eft` over 16.
 const Q1: f64 = crate::eft::P1 / 16.0;
 const Q2: f64 = crate::eft::P2 / 16.0;
 const Q3: f64 = crate::eft::P3 / 16.0;

@@ -54,6 +54,7 @@ pub const SAMPLES_2D: usize = 120;
 
 /// The range of one input.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Range {
     /// Lower end (rad or length units).
     pub lo: f64,
@@ -65,6 +66,7 @@ pub struct Range {
 
 /// How finely the sweep resolves what it finds.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Tolerances {
     /// Bisection and golden-section searches stop at this fraction of the
     /// range's width.
@@ -118,6 +120,7 @@ pub type Outcome<const G: usize> = Result<[f64; G], (usize, Fault)>;
 
 /// A finding.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub enum Event<const D: usize> {
     /// Group `group` cannot be assembled: for inputs in `[lo, hi]` (one
     /// input), or at `count` grid points whose bounding box is `[lo, hi]`
@@ -126,8 +129,10 @@ pub enum Event<const D: usize> {
         /// Index of the group.
         group: usize,
         /// Lower corner.
+        #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
         lo: [f64; D],
         /// Upper corner.
+        #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
         hi: [f64; D],
         /// The fault at the first failing sample.
         fault: Fault,
@@ -140,6 +145,7 @@ pub enum Event<const D: usize> {
         /// Index of the group.
         group: usize,
         /// Where.
+        #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
         at: [f64; D],
         /// The smallest scaled determinant found there.
         det: f64,
@@ -177,6 +183,14 @@ fn may_reach(f0: f64, f1: f64, f2: f64, tol: &Tolerances) -> bool {
 /// At most this many halvings (a width ratio of 2^-80 is below any tolerance).
 const MAX_STEPS: usize = 80;
 
+/// Whether a group's `|det|` at a sample, `here`, is a local minimum between
+/// its neighbours `before` and `after` (equal steps) worth refining: no sign
+/// change was found in the step before (`changed`), where the bisection
+/// already searched, and the minimum may reach the threshold ([`may_reach`]).
+fn dips(before: f64, here: f64, after: f64, changed: bool, tol: &Tolerances) -> bool {
+    here <= before && here < after && !changed && may_reach(before, here, after, tol)
+}
+
 /// Sweeps one input over `range` at `samples + 1` points; see the module
 /// documentation. `report` receives every finding, failing intervals in
 /// increasing order of their end (a periodic interval joined across the
@@ -185,92 +199,390 @@ pub fn sweep_1d<const G: usize>(
     range: &Range,
     samples: usize,
     tol: &Tolerances,
-    mut eval: impl FnMut(&[f64; 1]) -> Outcome<G>,
-    mut report: impl FnMut(Event<1>),
+    eval: impl FnMut(&[f64; 1]) -> Outcome<G>,
+    report: impl FnMut(Event<1>),
 ) {
-    let n = if samples < 2 { 2 } else { samples };
-    let width = range.hi - range.lo;
-    if width.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) || !width.is_finite() {
-        return;
+    if let Some(mut sweep) = Sweep1d::new(range, samples, tol, eval, report) {
+        sweep.run();
     }
-    let step = width / n as f64;
-    // One singular position per group per sample step: where the scaled
-    // determinant is at rounding level (a clamped toggle) a sample can take
-    // either sign, and the sign-change bisection and the minimum search may
-    // then both find the same position.
-    let mut last_singular = [f64::NAN; G];
-    let mut report = |e: Event<1>| {
+}
+
+/// A failing interval whose other end is not known yet.
+#[derive(Clone, Copy)]
+struct Open {
+    /// The group that fails.
+    group: usize,
+    /// The known end (input units): the start while the walk is inside the
+    /// interval; its end for one held back to be joined across a periodic
+    /// range's end.
+    at: f64,
+    /// The fault at its first failing sample.
+    fault: Fault,
+}
+
+/// A one-input sweep: the range's sampling, the tolerances in input units,
+/// the caller's `eval` and `report`, and the last singular position reported
+/// per group (to report one per sample step).
+struct Sweep1d<'a, const G: usize, E, R> {
+    /// The range swept.
+    range: &'a Range,
+    /// The tolerances, `edge` as a fraction of the width.
+    tol: &'a Tolerances,
+    /// Sample steps, at least 2.
+    n: usize,
+    /// `range.hi - range.lo` (input units, > 0).
+    width: f64,
+    /// `width / n` (input units).
+    step: f64,
+    /// Searches stop at this width (input units): `tol.edge * width`.
+    edge: f64,
+    /// The caller's position solve: scaled determinants or the failing group.
+    eval: E,
+    /// The caller's receiver of findings.
+    report: R,
+    /// Per group, the input of the last singular position reported (NaN:
+    /// none yet).
+    last_singular: [f64; G],
+}
+
+/// Where the walk over the samples stands after sample `prev.0`.
+struct Walk<const G: usize> {
+    /// The last sample: input and outcome.
+    prev: (f64, Outcome<G>),
+    /// The sample before it, when both assemble and no change of outcome lies
+    /// between them (the left neighbour of a candidate minimum).
+    prev2: Option<(f64, [f64; G])>,
+    /// The determinants at the second sample (`lo + step`), when it
+    /// assembles: the right neighbour of `hi` on a periodic range.
+    second: Option<[f64; G]>,
+    /// Per group: the determinant changed sign between `prev2` and `prev`.
+    changed: [bool; G],
+    /// The failing interval the walk is in.
+    open: Option<Open>,
+    /// On a periodic range, the failing interval that starts at `lo`, held
+    /// back to be joined with one that runs to `hi`.
+    held: Option<Open>,
+}
+
+impl<'a, const G: usize, E, R> Sweep1d<'a, G, E, R>
+where
+    E: FnMut(&[f64; 1]) -> Outcome<G>,
+    R: FnMut(Event<1>),
+{
+    /// The sweep of `range` at `samples` steps (at least 2), or `None` (nothing
+    /// to sweep, nothing reported) when the range's width is not finite and
+    /// positive.
+    fn new(
+        range: &'a Range,
+        samples: usize,
+        tol: &'a Tolerances,
+        eval: E,
+        report: R,
+    ) -> Option<Self> {
+        let n = if samples < 2 { 2 } else { samples };
+        let width = range.hi - range.lo;
+        if width.partial_cmp(&0.0) != Some(core::cmp::Ordering::Greater) || !width.is_finite() {
+            return None;
+        }
+        Some(Sweep1d {
+            range,
+            tol,
+            n,
+            width,
+            step: width / n as f64,
+            edge: tol.edge * width,
+            eval,
+            report,
+            last_singular: [f64::NAN; G],
+        })
+    }
+
+    /// Sample `i` of `0..=n` (input units); sample `n` is exactly `hi`.
+    fn at(&self, i: usize) -> f64 {
+        if i == self.n {
+            self.range.hi
+        } else {
+            self.range.lo + self.step * i as f64
+        }
+    }
+
+    /// The caller's outcome at input `x`.
+    fn eval(&mut self, x: f64) -> Outcome<G> {
+        (self.eval)(&[x])
+    }
+
+    /// Passes a finding to the caller, except a singular position within a
+    /// sample step of the last one reported for its group: where the scaled
+    /// determinant is at rounding level (a clamped toggle) a sample can take
+    /// either sign, and the sign-change bisection and the minimum search may
+    /// then both find the same position.
+    fn report(&mut self, e: Event<1>) {
         if let Event::Singular { group, at, .. } = &e {
-            if abs(at[0] - last_singular[*group]) < step {
+            if abs(at[0] - self.last_singular[*group]) < self.step {
                 return;
             }
-            last_singular[*group] = at[0];
+            self.last_singular[*group] = at[0];
         }
-        report(e)
-    };
-    let at = |i: usize| {
-        if i == n {
-            range.hi
-        } else {
-            range.lo + step * i as f64
-        }
-    };
-    let edge = tol.edge * width;
-    let mut f = |x: f64| eval(&[x]);
+        (self.report)(e)
+    }
 
-    // Bisects between `a` (outcome class `ca`) and `b` (another class).
-    let bisect_class = |f: &mut dyn FnMut(f64) -> Outcome<G>, mut a: f64, mut b: f64, ca| {
+    /// Reports that group `group` fails over `[lo, hi]` (input units).
+    fn report_fails(&mut self, group: usize, lo: f64, hi: f64, fault: Fault) {
+        self.report(Event::Fails {
+            group,
+            lo: [lo],
+            hi: [hi],
+            fault,
+            count: 1,
+        });
+    }
+
+    /// Reports a singular position of group `group` at input `at`, `det` the
+    /// smallest scaled determinant found there.
+    fn report_singular(&mut self, group: usize, at: f64, det: f64) {
+        self.report(Event::Singular {
+            group,
+            at: [at],
+            det,
+            count: 1,
+        });
+    }
+
+    /// The walk: the first sample, every step to the next sample, the end of
+    /// the range, then the failing intervals still open.
+    fn run(&mut self) {
+        let lo = self.at(0);
+        let first = self.eval(lo);
+        if let (Ok(d), false) = (&first, self.range.periodic) {
+            self.singular_samples(d, self.range.lo);
+        }
+        let mut walk = Walk {
+            prev: (lo, first),
+            prev2: None,
+            second: None,
+            changed: [false; G],
+            open: match first {
+                Err((group, fault)) => Some(Open {
+                    group,
+                    at: self.range.lo,
+                    fault,
+                }),
+                Ok(_) => None,
+            },
+            held: None,
+        };
+        for i in 1..=self.n {
+            let x = self.at(i);
+            let cur = self.eval(x);
+            if i == 1 {
+                walk.second = cur.as_ref().ok().copied();
+            }
+            self.advance(&mut walk, x, cur);
+        }
+        if self.range.periodic {
+            self.wrap_minima(&walk);
+        } else if let Ok(d) = &walk.prev.1 {
+            self.singular_samples(d, self.range.hi);
+        }
+        self.close(walk.open, walk.held);
+    }
+
+    /// Reports every group whose scaled determinant `d` at the sample `at`
+    /// (an end of a non-periodic range) is below the singular threshold.
+    fn singular_samples(&mut self, d: &[f64; G], at: f64) {
+        for (g, x) in d.iter().enumerate() {
+            if abs(*x) < self.tol.singular {
+                self.report_singular(g, at, *x);
+            }
+        }
+    }
+
+    /// One step, from `walk.prev` to the sample `x` with outcome `cur`: a
+    /// change of outcome is bisected; between two assembling samples, sign
+    /// changes and minima of the determinants are searched.
+    fn advance(&mut self, walk: &mut Walk<G>, x: f64, cur: Outcome<G>) {
+        let (cp, cc) = (class(&walk.prev.1), class(&cur));
+        let mut now_changed = [false; G];
+        if cp != cc {
+            self.outcome_change(walk, x, &cur, cp);
+            walk.prev2 = None;
+        } else if let (Ok(dp), Ok(dc)) = (&walk.prev.1, &cur) {
+            let dp = *dp;
+            now_changed = self.signs_and_minima(walk, (x, dc), &dp);
+            walk.prev2 = Some((walk.prev.0, dp));
+        } else {
+            walk.prev2 = None;
+        }
+        walk.changed = now_changed;
+        walk.prev = (x, cur);
+    }
+
+    /// The outcome changes between `walk.prev` (class `cp`) and the sample `x`
+    /// (outcome `cur`): bisects where, closes the open failing interval there
+    /// (or holds it back when it starts at a periodic range's `lo`), and opens
+    /// one when `cur` fails.
+    fn outcome_change(&mut self, walk: &mut Walk<G>, x: f64, cur: &Outcome<G>, cp: Option<usize>) {
+        let b = self.bisect_outcome(walk.prev.0, x, cp);
+        if let Some(open) = walk.open.take() {
+            if self.range.periodic && open.at == self.range.lo && walk.held.is_none() {
+                walk.held = Some(Open { at: b, ..open });
+            } else {
+                self.report_fails(open.group, open.at, b, open.fault);
+            }
+        }
+        if let Err((group, fault)) = *cur {
+            walk.open = Some(Open {
+                group,
+                at: b,
+                fault,
+            });
+        }
+    }
+
+    /// Between `walk.prev` (determinants `dp`) and the sample `x` (`dc`), both
+    /// assembling: per group, a sign change is bisected and reported;
+    /// otherwise the determinant at `walk.prev` is tested as a minimum between
+    /// `walk.prev2` and `x` and refined. Returns the groups whose sign changed.
+    fn signs_and_minima(
+        &mut self,
+        walk: &Walk<G>,
+        (x, dc): (f64, &[f64; G]),
+        dp: &[f64; G],
+    ) -> [bool; G] {
+        let mut changed = [false; G];
+        for g in 0..G {
+            if (dp[g] < 0.0) != (dc[g] < 0.0) && dp[g] != 0.0 && dc[g] != 0.0 {
+                changed[g] = true;
+                let (q, det) = self.bisect_sign(g, walk.prev.0, dp[g], x);
+                self.report_singular(g, q, det);
+            } else if let Some((x2, d2)) = walk.prev2 {
+                if dips(
+                    abs(d2[g]),
+                    abs(dp[g]),
+                    abs(dc[g]),
+                    walk.changed[g],
+                    self.tol,
+                ) {
+                    let (q, det) = self.golden(g, x2, x);
+                    if det < self.tol.singular {
+                        self.report_singular(g, q, det);
+                    }
+                }
+            }
+        }
+        changed
+    }
+
+    /// Periodic range: the sample at `hi` is the one at `lo`; tests it as a
+    /// minimum between the last step and the first, and reports a position
+    /// found beyond `hi` at its equivalent in the range.
+    fn wrap_minima(&mut self, walk: &Walk<G>) {
+        let (Some((x2, d2)), Ok(dn), Some(d1)) = (walk.prev2, &walk.prev.1, walk.second) else {
+            return;
+        };
+        for g in 0..G {
+            if dips(
+                abs(d2[g]),
+                abs(dn[g]),
+                abs(d1[g]),
+                walk.changed[g],
+                self.tol,
+            ) {
+                let (q, det) = self.golden(g, x2, self.range.hi + self.step);
+                if det < self.tol.singular {
+                    let q = if q >= self.range.hi {
+                        q - self.width
+                    } else {
+                        q
+                    };
+                    self.report_singular(g, q, det);
+                }
+            }
+        }
+    }
+
+    /// Reports the failing intervals left at the end of the walk: `open` runs
+    /// to `hi`, `held` from `lo`; on a periodic range the two are one interval
+    /// `[open - width, held]` when the same group fails in both.
+    fn close(&mut self, open: Option<Open>, held: Option<Open>) {
+        let (lo, hi) = (self.range.lo, self.range.hi);
+        match (open, held) {
+            (Some(o), Some(h)) if o.group == h.group => {
+                self.report_fails(o.group, o.at - self.width, h.at, o.fault);
+            }
+            (Some(o), Some(h)) => {
+                self.report_fails(h.group, lo, h.at, h.fault);
+                self.report_fails(o.group, o.at, hi, o.fault);
+            }
+            (Some(o), None) => self.report_fails(o.group, o.at, hi, o.fault),
+            (None, Some(h)) => self.report_fails(h.group, lo, h.at, h.fault),
+            (None, None) => {}
+        }
+    }
+
+    /// Bisects between `a` (outcome class `ca`) and `b` (another class) to
+    /// `edge`; returns the midpoint of the last bracket (input units).
+    fn bisect_outcome(&mut self, mut a: f64, mut b: f64, ca: Option<usize>) -> f64 {
         for _ in 0..MAX_STEPS {
-            if abs(b - a) <= edge {
+            if abs(b - a) <= self.edge {
                 break;
             }
             let m = 0.5 * (a + b);
-            if class(&f(m)) == ca {
+            if class(&self.eval(m)) == ca {
                 a = m;
             } else {
                 b = m;
             }
         }
         0.5 * (a + b)
-    };
-    // Bisects a sign change of group g's determinant (da at a).
-    let bisect_sign =
-        |f: &mut dyn FnMut(f64) -> Outcome<G>, g: usize, mut a: f64, da: f64, mut b: f64| {
-            let mut best = (0.5 * (a + b), f64::INFINITY);
-            for _ in 0..MAX_STEPS {
-                if abs(b - a) <= edge {
-                    break;
-                }
-                let m = 0.5 * (a + b);
-                match f(m) {
-                    Ok(d) => {
-                        if abs(d[g]) < best.1 {
-                            best = (m, abs(d[g]));
-                        }
-                        if (d[g] < 0.0) == (da < 0.0) {
-                            a = m;
-                        } else {
-                            b = m;
-                        }
-                    }
-                    Err(_) => return (m, 0.0),
-                }
+    }
+
+    /// Bisects a sign change of group `g`'s determinant between `a` (where it
+    /// is `da`) and `b`, to `edge`. Returns the midpoint of the last bracket
+    /// and the smallest `|det|` met on the way (0 when no midpoint assembled
+    /// or one failed: the position is then at the midpoint that failed).
+    fn bisect_sign(&mut self, g: usize, mut a: f64, da: f64, mut b: f64) -> (f64, f64) {
+        let mut best = (0.5 * (a + b), f64::INFINITY);
+        for _ in 0..MAX_STEPS {
+            if abs(b - a) <= self.edge {
+                break;
             }
-            (0.5 * (a + b), if best.1.is_finite() { best.1 } else { 0.0 })
-        };
-    // Golden-section search for the smallest |det| of group g in [a, b].
-    let golden = |f: &mut dyn FnMut(f64) -> Outcome<G>, g: usize, mut a: f64, mut b: f64| {
-        const R: f64 = 0.618_033_988_749_894_8;
-        let val = |f: &mut dyn FnMut(f64) -> Outcome<G>, x: f64| match f(x) {
+            let m = 0.5 * (a + b);
+            match self.eval(m) {
+                Ok(d) => {
+                    if abs(d[g]) < best.1 {
+                        best = (m, abs(d[g]));
+                    }
+                    if (d[g] < 0.0) == (da < 0.0) {
+                        a = m;
+                    } else {
+                        b = m;
+                    }
+                }
+                Err(_) => return (m, 0.0),
+            }
+        }
+        (0.5 * (a + b), if best.1.is_finite() { best.1 } else { 0.0 })
+    }
+
+    /// `|det|` of group `g` at `x`; infinite where the mechanism fails.
+    fn abs_det(&mut self, g: usize, x: f64) -> f64 {
+        match self.eval(x) {
             Ok(d) => abs(d[g]),
             Err(_) => f64::INFINITY,
-        };
+        }
+    }
+
+    /// Golden-section search for the smallest `|det|` of group `g` in
+    /// `[a, b]`, to `edge`: the input and the `|det|` there.
+    fn golden(&mut self, g: usize, mut a: f64, mut b: f64) -> (f64, f64) {
+        const R: f64 = 0.618_033_988_749_894_8;
         let mut x1 = b - R * (b - a);
         let mut x2 = a + R * (b - a);
-        let mut f1 = val(f, x1);
-        let mut f2 = val(f, x2);
+        let mut f1 = self.abs_det(g, x1);
+        let mut f2 = self.abs_det(g, x2);
         for _ in 0..2 * MAX_STEPS {
-            if abs(b - a) <= edge {
+            if abs(b - a) <= self.edge {
                 break;
             }
             if f1 <= f2 {
@@ -278,13 +590,13 @@ pub fn sweep_1d<const G: usize>(
                 x2 = x1;
                 f2 = f1;
                 x1 = b - R * (b - a);
-                f1 = val(f, x1);
+                f1 = self.abs_det(g, x1);
             } else {
                 a = x1;
                 x1 = x2;
                 f1 = f2;
                 x2 = a + R * (b - a);
-                f2 = val(f, x2);
+                f2 = self.abs_det(g, x2);
             }
         }
         if f1 <= f2 {
@@ -292,175 +604,6 @@ pub fn sweep_1d<const G: usize>(
         } else {
             (x2, f2)
         }
-    };
-
-    let first = f(at(0));
-    let mut prev = (at(0), first);
-    // An open failing interval: (group, start, fault).
-    let mut open: Option<(usize, f64, Fault)> = match first {
-        Err((g, fault)) => Some((g, range.lo, fault)),
-        Ok(_) => None,
-    };
-    // A periodic interval that starts at `lo`, held back to be joined.
-    let mut held: Option<(usize, f64, Fault)> = None;
-    let mut prev2: Option<(f64, [f64; G])> = None;
-    let mut second: Option<[f64; G]> = None;
-    // Sign changed between prev2 and prev, per group.
-    let mut changed = [false; G];
-    if let (Ok(d), false) = (&first, range.periodic) {
-        for (g, x) in d.iter().enumerate() {
-            if abs(*x) < tol.singular {
-                report(Event::Singular {
-                    group: g,
-                    at: [range.lo],
-                    det: *x,
-                    count: 1,
-                });
-            }
-        }
-    }
-    for i in 1..=n {
-        let x = at(i);
-        let cur = f(x);
-        if i == 1 {
-            second = cur.as_ref().ok().copied();
-        }
-        let (cp, cc) = (class(&prev.1), class(&cur));
-        let mut now_changed = [false; G];
-        if cp != cc {
-            let b = bisect_class(&mut f, prev.0, x, cp);
-            if let Some((g, start, fault)) = open.take() {
-                if range.periodic && start == range.lo && held.is_none() {
-                    held = Some((g, b, fault));
-                } else {
-                    report(Event::Fails {
-                        group: g,
-                        lo: [start],
-                        hi: [b],
-                        fault,
-                        count: 1,
-                    });
-                }
-            }
-            if let Err((g, fault)) = cur {
-                open = Some((g, b, fault));
-            }
-            prev2 = None;
-        } else if let (Ok(dp), Ok(dc)) = (&prev.1, &cur) {
-            for g in 0..G {
-                if (dp[g] < 0.0) != (dc[g] < 0.0) && dp[g] != 0.0 && dc[g] != 0.0 {
-                    now_changed[g] = true;
-                    let (q, det) = bisect_sign(&mut f, g, prev.0, dp[g], x);
-                    report(Event::Singular {
-                        group: g,
-                        at: [q],
-                        det,
-                        count: 1,
-                    });
-                } else if let Some((x2, d2)) = prev2 {
-                    let m = abs(dp[g]);
-                    if m <= abs(d2[g])
-                        && m < abs(dc[g])
-                        && !changed[g]
-                        && may_reach(abs(d2[g]), m, abs(dc[g]), tol)
-                    {
-                        let (q, det) = golden(&mut f, g, x2, x);
-                        if det < tol.singular {
-                            report(Event::Singular {
-                                group: g,
-                                at: [q],
-                                det,
-                                count: 1,
-                            });
-                        }
-                    }
-                }
-            }
-            prev2 = Some((prev.0, *dp));
-        } else {
-            prev2 = None;
-        }
-        changed = now_changed;
-        prev = (x, cur);
-    }
-    // Periodic: the sample at `hi` is the one at `lo`; test it as a minimum
-    // between the last step and the first.
-    if range.periodic {
-        if let (Some((x2, d2)), Ok(dn), Some(d1)) = (prev2, &prev.1, second) {
-            for g in 0..G {
-                let m = abs(dn[g]);
-                if m <= abs(d2[g])
-                    && m < abs(d1[g])
-                    && !changed[g]
-                    && may_reach(abs(d2[g]), m, abs(d1[g]), tol)
-                {
-                    let (q, det) = golden(&mut f, g, x2, range.hi + step);
-                    if det < tol.singular {
-                        let q = if q >= range.hi { q - width } else { q };
-                        report(Event::Singular {
-                            group: g,
-                            at: [q],
-                            det,
-                            count: 1,
-                        });
-                    }
-                }
-            }
-        }
-    } else if let Ok(d) = &prev.1 {
-        for (g, x) in d.iter().enumerate() {
-            if abs(*x) < tol.singular {
-                report(Event::Singular {
-                    group: g,
-                    at: [range.hi],
-                    det: *x,
-                    count: 1,
-                });
-            }
-        }
-    }
-    match (open, held) {
-        (Some((g, start, fault)), Some((h, end, hfault))) => {
-            if g == h {
-                report(Event::Fails {
-                    group: g,
-                    lo: [start - width],
-                    hi: [end],
-                    fault,
-                    count: 1,
-                });
-            } else {
-                report(Event::Fails {
-                    group: h,
-                    lo: [range.lo],
-                    hi: [end],
-                    fault: hfault,
-                    count: 1,
-                });
-                report(Event::Fails {
-                    group: g,
-                    lo: [start],
-                    hi: [range.hi],
-                    fault,
-                    count: 1,
-                });
-            }
-        }
-        (Some((g, start, fault)), None) => report(Event::Fails {
-            group: g,
-            lo: [start],
-            hi: [range.hi],
-            fault,
-            count: 1,
-        }),
-        (None, Some((h, end, fault))) => report(Event::Fails {
-            group: h,
-            lo: [range.lo],
-            hi: [end],
-            fault,
-            count: 1,
-        }),
-        (None, None) => {}
     }
 }
 
@@ -540,6 +683,7 @@ pub fn sweep_2d<const G: usize>(
 
 /// What a sweep found for one group (the fixed-size summary `check()` returns).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct GroupReport<const D: usize> {
     /// The user's name of the group (the point it defines).
     pub group: &'static str,
@@ -548,28 +692,35 @@ pub struct GroupReport<const D: usize> {
     pub failures: u32,
     /// The failing interval with the lowest start (one input), or the
     /// bounding box of the failing grid points (two inputs).
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::opt_corners"))]
     pub failure: Option<([f64; D], [f64; D])>,
     /// The fault at the first failing sample.
     pub fault: Option<Fault>,
     /// Singular positions found (one input), or grid sign changes (two).
     pub singular: u32,
     /// The lowest singular input found.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::opt_array"))]
     pub first_singular: Option<[f64; D]>,
 }
 
 /// What a sweep found, per checked group in solve order; no heap.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Report<const G: usize, const D: usize> {
     /// The inputs' names.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
     pub inputs: [&'static str; D],
     /// The ranges swept.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
     pub ranges: [Range; D],
     /// Per group.
+    #[cfg_attr(feature = "serde", serde(serialize_with = "crate::ser::array"))]
     pub groups: [GroupReport<D>; G],
     /// Per group: `true` where a vanishing determinant puts the joint at
     /// infinity (a PRP's parallel guides, an RPP's slot parallel to its
     /// guide), so that a sign change found between two samples is a failure
     /// at that input, as a sample on it would be, not a singular position.
+    #[cfg_attr(feature = "serde", serde(skip))]
     at_infinity: [bool; G],
 }
 
@@ -594,6 +745,7 @@ impl<const G: usize, const D: usize> Report<G, D> {
     /// Marks the groups whose joint is at infinity where their determinant
     /// vanishes (see the field `at_infinity`); the generated `check()` of a
     /// mechanism with a PRP or an RPP calls it.
+    #[must_use]
     pub fn with_joints_at_infinity(mut self, at_infinity: [bool; G]) -> Self {
         self.at_infinity = at_infinity;
         self

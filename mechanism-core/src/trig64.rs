@@ -5,7 +5,7 @@
 //! Why: glibc's `atan2` is a general routine (special-case tests on both
 //! arguments, several reduction intervals, slow paths kept for correct
 //! rounding); the link angles of the generated solves call it twice per
-//! evaluation. [`crate::lane::atan2`] is branch-free for vectorization
+//! evaluation. [`crate::__private::lane::atan2`] is branch-free for vectorization
 //! (two divisions, its table value picked by a chain of selects) and in
 //! scalar use no faster than glibc. This kernel takes one division, indexes
 //! its tables, folds the quadrant into a table and keeps two predictable

@@ -31,6 +31,7 @@
 //! ```
 #![forbid(unsafe_code)]
 
+pub mod any;
 mod plot;
 mod sketch;
 mod svg;

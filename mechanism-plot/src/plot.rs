@@ -233,7 +233,8 @@ impl Plot {
     }
 
     /// Draws the panel into `out` with its top-left corner at `(0, y0)`, plot area from
-    /// `left` to `width - right`.
+    /// `left` to `width - right` (px): title, grid and frame, ticks, axis labels, series,
+    /// legend, in this order.
     fn render(&self, out: &mut String, id: usize, y0: f64, lay: &Layout, left: f64, right: f64) {
         let top = y0
             + if self.title.is_empty() {
@@ -241,18 +242,17 @@ impl Plot {
             } else {
                 TOP_TITLE
             };
-        let x0p = left;
-        let x1p = self.width - right;
-        let y1p = y0 + self.height - BOTTOM;
-        let (pw, ph) = (x1p - x0p, y1p - top);
-        let (x, y) = (&lay.x, &lay.y);
-        let px = |v: f64| x0p + (v - x.lo) / (x.hi - x.lo) * pw;
-        let py = |v: f64| y1p - (v - y.lo) / (y.hi - y.lo) * ph;
-
+        let area = Area::new(
+            lay,
+            left,
+            self.width - right,
+            top,
+            y0 + self.height - BOTTOM,
+        );
         if !self.title.is_empty() {
             text(
                 out,
-                (x0p + x1p) / 2.0,
+                (area.x0 + area.x1) / 2.0,
                 y0 + 20.0,
                 LARGE,
                 "middle",
@@ -260,94 +260,28 @@ impl Plot {
                 &self.title,
             );
         }
-        // Grid, zero line, frame.
-        let _ = writeln!(out, r##"<g stroke="#e3e3e3" stroke-width="1">"##);
-        for &v in &x.values {
-            let _ = writeln!(
-                out,
-                r#"<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>"#,
-                num(px(v)),
-                num(top),
-                num(y1p)
-            );
-        }
-        for &v in &y.values {
-            let _ = writeln!(
-                out,
-                r#"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>"#,
-                num(py(v)),
-                num(x0p),
-                num(x1p)
-            );
-        }
-        let _ = writeln!(out, "</g>");
-        if y.lo < 0.0 && y.hi > 0.0 {
-            let _ = writeln!(
-                out,
-                r##"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}" stroke="#888" stroke-width="1"/>"##,
-                num(py(0.0)),
-                num(x0p),
-                num(x1p)
-            );
-        }
-        let _ = writeln!(
-            out,
-            r##"<rect x="{}" y="{}" width="{}" height="{}" fill="none" stroke="#333" stroke-width="1"/>"##,
-            num(x0p),
-            num(top),
-            num(pw),
-            num(ph)
-        );
-        // Ticks and their labels.
-        let _ = writeln!(
-            out,
-            r##"<g class="x-ticks" stroke="#333" stroke-width="1">"##
-        );
-        for &v in &x.values {
-            let _ = writeln!(
-                out,
-                r#"<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>"#,
-                num(px(v)),
-                num(y1p),
-                num(y1p + 5.0)
-            );
-        }
-        let _ = writeln!(out, "</g>");
-        let _ = writeln!(out, r#"<g class="x-tick-labels">"#);
-        for &v in &x.values {
-            text(out, px(v), y1p + 19.0, SMALL, "middle", "", &x.label(v));
-        }
-        let _ = writeln!(out, "</g>");
-        let _ = writeln!(
-            out,
-            r##"<g class="y-ticks" stroke="#333" stroke-width="1">"##
-        );
-        for &v in &y.values {
-            let _ = writeln!(
-                out,
-                r#"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>"#,
-                num(py(v)),
-                num(x0p - 5.0),
-                num(x0p)
-            );
-        }
-        let _ = writeln!(out, "</g>");
-        let _ = writeln!(out, r#"<g class="y-tick-labels">"#);
-        for &v in &y.values {
-            text(out, x0p - 8.0, py(v) + 4.0, SMALL, "end", "", &y.label(v));
-        }
-        let _ = writeln!(out, "</g>");
-        // Axis labels.
+        area.grid(out);
+        area.ticks(out);
+        self.axis_labels(out, &area);
+        let markers = self
+            .markers
+            .unwrap_or_else(|| self.series.iter().all(|s| s.xs.len() <= MARKER_MAX_POINTS));
+        self.render_series(out, &area, id, markers);
+        self.legend(out, &area, markers);
+    }
+
+    /// The axis titles: x centred below the tick labels, y rotated, centred left of them.
+    fn axis_labels(&self, out: &mut String, area: &Area) {
         text(
             out,
-            (x0p + x1p) / 2.0,
-            y1p + 40.0,
+            (area.x0 + area.x1) / 2.0,
+            area.y1 + 40.0,
             MEDIUM,
             "middle",
             r#" class="x-label""#,
-            &axis_title(&self.x_label, &self.x_unit, x.exponent),
+            &axis_title(&self.x_label, &self.x_unit, area.x.exponent),
         );
-        let (lx, ly) = (16.0, (top + y1p) / 2.0);
+        let (lx, ly) = (16.0, (area.top + area.y1) / 2.0);
         text(
             out,
             lx,
@@ -359,20 +293,22 @@ impl Plot {
                 num(lx),
                 num(ly)
             ),
-            &axis_title(&self.y_label, &self.y_unit, y.exponent),
+            &axis_title(&self.y_label, &self.y_unit, area.y.exponent),
         );
-        // Series, clipped to the plot area.
+    }
+
+    /// Every series as a path (and markers on its points when `markers`), clipped to the
+    /// plot area by a clip path whose id is made unique in the document by the panel
+    /// index `id`.
+    fn render_series(&self, out: &mut String, area: &Area, id: usize, markers: bool) {
         let _ = writeln!(
             out,
             r#"<clipPath id="mp-clip-{id}"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath>"#,
-            num(x0p),
-            num(top),
-            num(pw),
-            num(ph)
+            num(area.x0),
+            num(area.top),
+            num(area.pw),
+            num(area.ph)
         );
-        let markers = self
-            .markers
-            .unwrap_or_else(|| self.series.iter().all(|s| s.xs.len() <= MARKER_MAX_POINTS));
         let _ = writeln!(
             out,
             r#"<g class="series" clip-path="url(#mp-clip-{id})" fill="none" stroke-width="2" stroke-linejoin="round" stroke-linecap="round">"#
@@ -382,7 +318,7 @@ impl Plot {
             let pts: Vec<[f64; 2]> =
                 s.xs.iter()
                     .zip(&s.ys)
-                    .map(|(&a, &b)| [px(a), py(b)])
+                    .map(|(&a, &b)| [area.px(a), area.py(b)])
                     .collect();
             let _ = writeln!(
                 out,
@@ -404,12 +340,16 @@ impl Plot {
             }
         }
         let _ = writeln!(out, "</g>");
-        // Legend, right of the plot area.
+    }
+
+    /// The legend right of the plot area: one row of 20 px per series, its line style
+    /// (and marker when `markers`) and name.
+    fn legend(&self, out: &mut String, area: &Area, markers: bool) {
         let _ = writeln!(out, r#"<g class="legend">"#);
-        let lx = x1p + 16.0;
+        let lx = area.x1 + 16.0;
         for (k, s) in self.series.iter().enumerate() {
             let (color, dash) = style(k);
-            let ly = top + 12.0 + 20.0 * k as f64;
+            let ly = area.top + 12.0 + 20.0 * k as f64;
             let _ = writeln!(
                 out,
                 r#"<line x1="{}" y1="{2}" x2="{}" y2="{2}" stroke="{color}" stroke-width="2"{dash}/>"#,
@@ -426,6 +366,153 @@ impl Plot {
                 );
             }
             text(out, lx + 30.0, ly + 4.0, SMALL, "start", "", &s.name);
+        }
+        let _ = writeln!(out, "</g>");
+    }
+}
+
+/// A panel's plot area in px (SVG coordinates, y down) and the axes mapped onto it.
+struct Area<'a> {
+    /// Left edge.
+    x0: f64,
+    /// Right edge.
+    x1: f64,
+    /// Top edge.
+    top: f64,
+    /// Bottom edge.
+    y1: f64,
+    /// Width, `x1 - x0`.
+    pw: f64,
+    /// Height, `y1 - top`.
+    ph: f64,
+    /// The x axis' ticks (x units).
+    x: &'a Ticks,
+    /// The y axis' ticks (y units).
+    y: &'a Ticks,
+}
+
+impl<'a> Area<'a> {
+    /// The area from `x0` to `x1` across and from `top` down to `y1` (px).
+    fn new(lay: &'a Layout, x0: f64, x1: f64, top: f64, y1: f64) -> Self {
+        Area {
+            x0,
+            x1,
+            top,
+            y1,
+            pw: x1 - x0,
+            ph: y1 - top,
+            x: &lay.x,
+            y: &lay.y,
+        }
+    }
+
+    /// The px column of x value `v` (x units).
+    fn px(&self, v: f64) -> f64 {
+        self.x0 + (v - self.x.lo) / (self.x.hi - self.x.lo) * self.pw
+    }
+
+    /// The px row of y value `v` (y units): `y.lo` at the bottom edge.
+    fn py(&self, v: f64) -> f64 {
+        self.y1 - (v - self.y.lo) / (self.y.hi - self.y.lo) * self.ph
+    }
+
+    /// Grid lines at every tick, a darker line at y = 0 when the y axis spans it, and the
+    /// frame.
+    fn grid(&self, out: &mut String) {
+        let _ = writeln!(out, r##"<g stroke="#e3e3e3" stroke-width="1">"##);
+        for &v in &self.x.values {
+            let _ = writeln!(
+                out,
+                r#"<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>"#,
+                num(self.px(v)),
+                num(self.top),
+                num(self.y1)
+            );
+        }
+        for &v in &self.y.values {
+            let _ = writeln!(
+                out,
+                r#"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>"#,
+                num(self.py(v)),
+                num(self.x0),
+                num(self.x1)
+            );
+        }
+        let _ = writeln!(out, "</g>");
+        if self.y.lo < 0.0 && self.y.hi > 0.0 {
+            let _ = writeln!(
+                out,
+                r##"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}" stroke="#888" stroke-width="1"/>"##,
+                num(self.py(0.0)),
+                num(self.x0),
+                num(self.x1)
+            );
+        }
+        let _ = writeln!(
+            out,
+            r##"<rect x="{}" y="{}" width="{}" height="{}" fill="none" stroke="#333" stroke-width="1"/>"##,
+            num(self.x0),
+            num(self.top),
+            num(self.pw),
+            num(self.ph)
+        );
+    }
+
+    /// Tick marks (5 px, outside the frame) and their labels, x below and y left of the
+    /// plot area.
+    fn ticks(&self, out: &mut String) {
+        let _ = writeln!(
+            out,
+            r##"<g class="x-ticks" stroke="#333" stroke-width="1">"##
+        );
+        for &v in &self.x.values {
+            let _ = writeln!(
+                out,
+                r#"<line x1="{0}" y1="{1}" x2="{0}" y2="{2}"/>"#,
+                num(self.px(v)),
+                num(self.y1),
+                num(self.y1 + 5.0)
+            );
+        }
+        let _ = writeln!(out, "</g>");
+        let _ = writeln!(out, r#"<g class="x-tick-labels">"#);
+        for &v in &self.x.values {
+            text(
+                out,
+                self.px(v),
+                self.y1 + 19.0,
+                SMALL,
+                "middle",
+                "",
+                &self.x.label(v),
+            );
+        }
+        let _ = writeln!(out, "</g>");
+        let _ = writeln!(
+            out,
+            r##"<g class="y-ticks" stroke="#333" stroke-width="1">"##
+        );
+        for &v in &self.y.values {
+            let _ = writeln!(
+                out,
+                r#"<line x1="{1}" y1="{0}" x2="{2}" y2="{0}"/>"#,
+                num(self.py(v)),
+                num(self.x0 - 5.0),
+                num(self.x0)
+            );
+        }
+        let _ = writeln!(out, "</g>");
+        let _ = writeln!(out, r#"<g class="y-tick-labels">"#);
+        for &v in &self.y.values {
+            text(
+                out,
+                self.x0 - 8.0,
+                self.py(v) + 4.0,
+                SMALL,
+                "end",
+                "",
+                &self.y.label(v),
+            );
         }
         let _ = writeln!(out, "</g>");
     }

@@ -7,7 +7,7 @@
 //! composite operations follow the "sloppy" double-double algorithms analysed
 //! by Dekker (1971) and Hida, Li and Bailey (QD library report, 2000). The
 //! elementary functions are written here from their series and Newton
-//! iterations; `tests/dd.rs` checks each against `astro-float` at 200 bits.
+//! iterations; `tests/exact/dd.rs` checks each against `astro-float` at 200 bits.
 //!
 //! This type exists to be an independent reference: it shares no code with
 //! `mechanism-core` or the generated code.

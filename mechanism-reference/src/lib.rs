@@ -15,5 +15,6 @@ pub mod groups;
 pub mod linear;
 pub mod loop_closure;
 pub mod newton_euler;
+pub mod triad;
 
 pub use dd::Dd;

@@ -1,7 +1,7 @@
-//! The batch-versus-scalar comparison shared by `tests/batch_lane.rs` and
-//! `tests/batch_surface.rs` (included by both with `#[path]`; see
-//! `batch_lane.rs`'s module documentation for the four points checked and
-//! for the tolerance `K`).
+//! The batch-versus-scalar comparison of the test crates `tests/batch/` and
+//! `tests/long_chain.rs`, included with `#[path]` and `#[macro_use]`; see
+//! `tests/batch/examples.rs`'s module documentation for the four points
+//! checked and for the tolerance `K`.
 //!
 //! `compare!` takes, before its other arguments, the analysis level of the
 //! definition (`pos;`, `vel;`, `acc;`; without one, `acc`): a definition
@@ -19,7 +19,7 @@ use std::collections::HashMap;
 /// of elements the scalar path solves, failed elements)`.
 pub type Found = (f64, usize, usize);
 
-/// Bound on the scaled error (see `batch_lane.rs`'s module documentation).
+/// Bound on the scaled error (see `tests/batch/examples.rs`'s module documentation).
 pub const K: f64 = 64.0;
 
 /// The number of levels of `pos`, `vel`, `acc`.
@@ -155,7 +155,7 @@ macro_rules! scalar_levels {
 /// (maps from input name to one value per element, `f64`; the rates and
 /// accelerations are not read below their level) through `solve_batch`,
 /// through the lane kernel alone and through the scalar path, and checks
-/// points 1 to 4 of `batch_lane.rs`'s module documentation. `$p`: the point
+/// points 1 to 4 of `tests/batch/examples.rs`'s module documentation. `$p`: the point
 /// outputs, `$s`: the scalar ones (link angles, slides). Returns [`Found`].
 macro_rules! compare {
     ($lv:ident; $m:expr, $t:ty, $ty:ident, [$($i:ident),*], [$($p:ident),*], [$($s:ident),*], $q:expr, $w:expr, $a:expr) => {{
@@ -173,7 +173,7 @@ macro_rules! compare {
             let mut lane = full.clone();
             let mut status = vec![7u8; n];
             let mut lane_status = vec![7u8; n];
-            let failed = m.solve_batch(&mut batch!($lv; $ty, [$($i),*], [$($p),*], [$($s),*], q, w, a, full, &mut status));
+            let failed = m.solve_batch(&mut batch!($lv; $ty, [$($i),*], [$($p),*], [$($s),*], q, w, a, full, &mut status)).expect("slices of one length");
             assert!(
                 m.__solve_batch_lane_only(&mut batch!($lv; $ty, [$($i),*], [$($p),*], [$($s),*], q, w, a, lane, &mut lane_status)),
                 "{}: no lane kernel",

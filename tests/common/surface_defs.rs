@@ -1,6 +1,6 @@
-//! Definitions shared by `tests/dsl_surface.rs` (values checked against
+//! Definitions shared by `tests/surface/dsl.rs` (values checked against
 //! constraints, literal twins, finite differences and power balances) and
-//! `tests/batch_surface.rs` (`solve_batch` against the scalar path): unusual
+//! `tests/batch/surface.rs` (`solve_batch` against the scalar path): unusual
 //! corners of the definition language (DSL words and unicode as names,
 //! statements out of order, params and expressions everywhere, output subsets,
 //! guides on blocks and carried guides, two inputs, forces only).

@@ -13,7 +13,7 @@
 //! `f64` algorithm fed rounded inputs can do better in general. We measure
 //! `c = max err sqrt(delta) / eps` with `err = |C - C_ref| / L` (`L` the
 //! group's size) and assert it below a stated constant. Since
-//! `sqrt(delta) >= delta`, this implies the form `c eps / delta` with
+//! `sqrt(delta) >= delta`, this implies the form `c eps / delta` with
 //! the same `c`.
 
 use crate::common::*;

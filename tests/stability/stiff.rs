@@ -1,4 +1,4 @@
-//! Part 4: stiff kinetostatics. Builds on `mechanism-core/tests/kinetostatics.rs`
+//! Part 4: stiff kinetostatics. Builds on `mechanism-core/tests/primitives/kinetostatics.rs`
 //! (one stiff pose against rational arithmetic, and the naive solver's zero
 //! pivot at a horizontal link 2): here the same RRR group, in millimetres,
 //! with a 1e6 kg link and a 1e-6 kg link (12 orders of magnitude, and their
@@ -173,7 +173,7 @@ pub fn angles() -> Vec<f64> {
 /// pivoting without row scaling is as good as the scaled solver on this
 /// group (its rows are not badly scaled against each other in the pivot
 /// columns): here the fix is the pivoting; the scaling's own failure case is
-/// `badly_scaled_force_moment_mix` in `mechanism-core/tests/linsolve.rs`.
+/// `badly_scaled_force_moment_mix` in `mechanism-core/tests/primitives/linsolve.rs`.
 /// The measured numbers are printed for `docs/stability.md`.
 #[test]
 fn stiff_sweep_scaled_pivoting_against_naive() {

@@ -13,7 +13,7 @@
 //!   a force analysis checked by Newton-Euler per body and by the power
 //!   balance, each check shown to fail on a deliberate mistake.
 
-use super::common::*;
+use crate::equilibrium::*;
 use mechanism::{mechanism, Point2, Real, Vector2};
 use mechanism_reference::constraint::{Constraint, Linkage, Point, Side, V2};
 use mechanism_reference::{loop_closure, Dd};

@@ -1,7 +1,7 @@
 //! Groups whose outer joints all move: an RPR between two moving links (a
 //! floating cylinder) and an RRP whose pinned end and guide are both carried.
 
-use super::common::*;
+use crate::equilibrium::*;
 use mechanism::{mechanism, Point2, Vector2};
 
 mechanism! {

@@ -51,8 +51,9 @@
 //!   non-zero; a pull along the rod, a force along the slot, a couple on the
 //!   rocker.
 //!
-//! Against the double-double reference's Newton-Euler and closed forms
-//! (`probe3.rs`, bounds `c eps S / kappa^k` justified there):
+//! Toggle presses, against the double-double reference's Newton-Euler and
+//! closed forms (`toggle_press.rs`, bounds `c eps S / kappa^k` justified
+//! there; the shared reference helpers in `dd_reference.rs`):
 //!
 //! - `KnucklePress`: crank -> RRR -> RRP toggle press, 100 kN on the ram,
 //!   swept by decades to 1.4e-12 rad of both toggles in f64 and f32: the
@@ -60,6 +61,9 @@
 //! - `SliderKnuckle`: the knuckle driven by its ram into the RRR's fold and
 //!   past it: reactions growing as `1 / sin` accurate to `eps S / sin^2`, a
 //!   typed error naming the group past the fold.
+//!
+//! Quick return (`quick_return.rs`, against the same reference):
+//!
 //! - `Whitworth`: quick return with a ram, masses, gravity, a cutting force:
 //!   forces over a turn (f64, f32), masses 1e-6 .. 1e6 kg, lengths times
 //!   1e-6 and 1e6; the strokes' crank angles, time ratio and stroke against
@@ -76,9 +80,13 @@
 //! derivative (1e-10 of the scale) and a rounding error of `eps / h` (2e-11);
 //! 1e-7 of the scale leaves room and catches a wrong term (order 1e-1).
 
+#[path = "../common/equilibrium.rs"]
+mod equilibrium;
+
 mod classic;
-mod common;
+mod dd_reference;
 mod floating;
 mod prismatic;
-mod probe3;
+mod quick_return;
 mod revolute;
+mod toggle_press;

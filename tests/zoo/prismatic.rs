@@ -3,7 +3,7 @@
 //! `main.rs`). Each prismatic reaction is applied as its normal force at its
 //! stated reference point plus its couple.
 
-use crate::common::*;
+use crate::equilibrium::*;
 use mechanism::mechanism;
 use mechanism::Vector2;
 

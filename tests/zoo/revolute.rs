@@ -1,6 +1,6 @@
 //! Revolute chains: `WattII`, `StephensonIII`, `LoadedFiveBar` (see `main.rs`).
 
-use crate::common::*;
+use crate::equilibrium::*;
 use mechanism::mechanism;
 use mechanism::Vector2;
 

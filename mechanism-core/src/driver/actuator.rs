@@ -38,6 +38,7 @@ pub type ActuatorPosition<T> = RrrPosition<T>;
 
 /// Rates of the actuator and its link.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ActuatorVelocity<T: Real> {
     /// Angular velocity of link 1 (rad/s, counter-clockwise positive).
     pub omega1: T,
@@ -56,6 +57,7 @@ pub struct ActuatorVelocity<T: Real> {
 
 /// Accelerations of the actuator and its link.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ActuatorAcceleration<T: Real> {
     /// Angular acceleration of link 1 (rad/s^2).
     pub alpha1: T,

@@ -18,6 +18,7 @@ const P: Primitive = Primitive::Crank;
 
 /// Crank at a given angle.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CrankPosition<T: Real> {
     /// The tip `A` (L).
     pub tip: Point2<T>,
@@ -67,6 +68,7 @@ fn angle_beyond<T: Real>(theta: T) -> Error<T> {
 /// writes `crank(O, r, INPUT as cos_sin)`. The pair need not be exactly unit:
 /// [`position_cos_sin`] normalizes it.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CosSin<T> {
     /// `cos theta` (any positive multiple of it, together with `sin`).
     pub cos: T,

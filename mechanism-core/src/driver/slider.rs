@@ -29,6 +29,7 @@ const P: Primitive = Primitive::Slider;
 
 /// Slider at a given displacement.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SliderPosition<T: Real> {
     /// The block's pin `P = g.at(s, offset)` (L).
     pub p: Point2<T>,

@@ -45,6 +45,7 @@ const P: Primitive = Primitive::Prp;
 
 /// Closed PRP group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PrpPosition<T: Real> {
     /// The revolute `C` between the blocks (L).
     pub c: Point2<T>,
@@ -56,6 +57,7 @@ pub struct PrpPosition<T: Real> {
 
 /// Rates of the PRP group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PrpVelocity<T: Real> {
     /// Sliding speed of block 1 along `g1`, relative to `g1`'s body (L/s).
     pub s1_dot: T,
@@ -74,6 +76,7 @@ pub struct PrpVelocity<T: Real> {
 
 /// Accelerations of the PRP group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PrpAcceleration<T: Real> {
     /// Sliding acceleration of block 1 relative to `g1`'s body (L/s^2).
     pub s1_ddot: T,

@@ -45,6 +45,7 @@ const P: Primitive = Primitive::Rpp;
 
 /// Closed RPP group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RppPosition<T: Real> {
     /// Link 2's reference point `Q = g.at(s2, offset)` (L), where the slot
     /// crosses the guide's offset line.
@@ -59,6 +60,7 @@ pub struct RppPosition<T: Real> {
 
 /// Rates of the RPP group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RppVelocity<T: Real> {
     /// Sliding speed of the block in the slot, relative to link 2 (L/s).
     pub s1_dot: T,
@@ -77,6 +79,7 @@ pub struct RppVelocity<T: Real> {
 
 /// Accelerations of the RPP group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RppAcceleration<T: Real> {
     /// Sliding acceleration of the block relative to link 2 (L/s^2).
     pub s1_ddot: T,

@@ -56,6 +56,7 @@ const P: Primitive = Primitive::Rpr;
 
 /// Closed RPR group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RprPosition<T: Real> {
     /// Unit axis `u` of link 2, which is also the block's axis (the slide
     /// direction). Link 2's angle is `atan2(u.y, u.x)`.
@@ -71,6 +72,7 @@ pub struct RprPosition<T: Real> {
 
 /// Rates of the RPR group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RprVelocity<T: Real> {
     /// Angular velocity of link 2 and of the block (rad/s, counter-clockwise).
     pub omega: T,
@@ -90,6 +92,7 @@ pub struct RprVelocity<T: Real> {
 
 /// Accelerations of the RPR group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RprAcceleration<T: Real> {
     /// Angular acceleration of link 2 and of the block (rad/s^2).
     pub alpha: T,

@@ -73,6 +73,7 @@ const P: Primitive = Primitive::Rrp;
 
 /// Closed RRP group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RrpPosition<T: Real> {
     /// The revolute `C` between link 1 and the block (L).
     pub c: Point2<T>,
@@ -88,6 +89,7 @@ pub struct RrpPosition<T: Real> {
 
 /// Rates of the RRP group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RrpVelocity<T: Real> {
     /// Angular velocity of link 1 (rad/s, counter-clockwise positive).
     pub omega1: T,
@@ -107,6 +109,7 @@ pub struct RrpVelocity<T: Real> {
 
 /// Accelerations of the RRP group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RrpAcceleration<T: Real> {
     /// Angular acceleration of link 1 (rad/s^2).
     pub alpha1: T,

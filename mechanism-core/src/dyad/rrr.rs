@@ -61,6 +61,7 @@ const P: Primitive = Primitive::Rrr;
 
 /// Closed RRR group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RrrPosition<T: Real> {
     /// The inner joint `C` (L).
     pub c: Point2<T>,
@@ -95,6 +96,7 @@ impl<T: Real> RrrPosition<T> {
 
 /// Angular velocities of the two links and the velocity of `C`.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RrrVelocity<T: Real> {
     /// Angular velocity of link 1 (rad/s, counter-clockwise positive).
     pub omega1: T,
@@ -117,6 +119,7 @@ pub struct RrrVelocity<T: Real> {
 
 /// Angular accelerations of the two links and the acceleration of `C`.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RrrAcceleration<T: Real> {
     /// Angular acceleration of link 1 (rad/s^2).
     pub alpha1: T,

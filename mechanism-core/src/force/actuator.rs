@@ -30,6 +30,7 @@ const P: Primitive = Primitive::Actuator;
 
 /// Reactions of a linear-actuator driver.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct ActuatorReactions<T: Real> {
     /// Force of the carrying body on the link at the pivot `A` (`M L / s^2`).
     pub a: Vector2<T>,

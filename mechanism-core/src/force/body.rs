@@ -18,6 +18,7 @@ use nalgebra::{Point2, Vector2};
 /// Two wrenches add only when they are about the same point; [`Wrench::moved`]
 /// changes the point.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Wrench<T: Real> {
     /// Resultant force (`M L / s^2`, N in SI).
     pub force: Vector2<T>,

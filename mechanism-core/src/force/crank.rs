@@ -19,6 +19,7 @@ const P: Primitive = Primitive::Crank;
 
 /// Reactions of a crank driver.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CrankReactions<T: Real> {
     /// Force of the carrying body on the crank at the pivot `O` (`M L / s^2`).
     pub pivot: Vector2<T>,

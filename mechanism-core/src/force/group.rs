@@ -37,6 +37,7 @@ use nalgebra::{Point2, Vector2};
 /// Which two bodies a joint connects, in the order "giver -> receiver": the
 /// unknowns of the joint are the action of the first on the second.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Connection {
     /// The outside body (ground or an earlier group's link) acts on link 1.
     OutsideToLink1,
@@ -48,6 +49,7 @@ pub enum Connection {
 
 /// The kind and geometry of a kinematic pair.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum Pair<T: Real> {
     /// A revolute through `point` (L).
     Revolute {
@@ -69,6 +71,7 @@ pub enum Pair<T: Real> {
 
 /// One joint of a group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Joint<T: Real> {
     /// The pair and its geometry.
     pub pair: Pair<T>,
@@ -78,6 +81,7 @@ pub struct Joint<T: Real> {
 
 /// The assembled 6x6 system (see the module documentation for the layout).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GroupSystem<T: Real> {
     /// `matrix[i][j]`: row `i` (link `i / 3`, equation `Fx`, `Fy`, moment),
     /// column `j` (joint `j / 2`, unknown `j % 2`).
@@ -93,6 +97,7 @@ pub struct GroupSystem<T: Real> {
 
 /// The solved reactions of a group.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GroupSolution<T: Real> {
     /// Per joint, in the order given: `[Fx, Fy]` for a revolute, `[N, M]` for a
     /// prismatic pair (couple `M` about the pair's point, already multiplied

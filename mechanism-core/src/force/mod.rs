@@ -79,6 +79,7 @@ use nalgebra::{Point2, Vector2};
 /// names (see the module documentation), reduced to the pair's stated
 /// reference point.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PrismaticReaction<T: Real> {
     /// Signed normal force (N in SI): the force is `normal * perp(dir)` with
     /// `dir` the pair's unit direction.

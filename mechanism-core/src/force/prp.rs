@@ -26,6 +26,7 @@ const P: Primitive = Primitive::Prp;
 
 /// Reactions of a PRP group (forces `M L / s^2`, moments `M L^2 / s^2`).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct PrpReactions<T: Real> {
     /// Reaction of guide 1 (outside body) on link 1: normal force along
     /// `perp(dir1)` through `C`, couple about `C`.

@@ -28,6 +28,7 @@ const P: Primitive = Primitive::Rpp;
 
 /// Reactions of an RPP group (forces `M L / s^2`, moments `M L^2 / s^2`).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RppReactions<T: Real> {
     /// Force of the outside body on the block (link 1), at `A`.
     pub a: Vector2<T>,

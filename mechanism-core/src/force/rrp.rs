@@ -27,6 +27,7 @@ const P: Primitive = Primitive::Rrp;
 
 /// Reactions of an RRP group (forces `M L / s^2`, moments `M L^2 / s^2`).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RrpReactions<T: Real> {
     /// Force of the outside body on link 1, at `A`.
     pub a: Vector2<T>,

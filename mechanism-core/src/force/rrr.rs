@@ -27,6 +27,7 @@ const P: Primitive = Primitive::Rrr;
 
 /// Reactions of an RRR group (forces in `M L / s^2`, N in SI; global frame).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RrrReactions<T: Real> {
     /// Force of the outside body (the body carrying `A`) on link 1, at `A`.
     pub a: Vector2<T>,

@@ -23,6 +23,7 @@ const P: Primitive = Primitive::Slider;
 
 /// Reactions of a slider driver.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SliderReactions<T: Real> {
     /// Reaction of the guide on the block: normal force along `perp(dir)`
     /// through the pin `P`, couple about `P`.

@@ -100,9 +100,6 @@ const R64: f64 = 6_755_399_441_055_744.0;
 /// `1.5 2^23`: the same for `f32` and `|x| < 2^22`.
 const R32: f64 = 12_582_912.0;
 
-// `pi/2` in three parts (see the module documentation), shared with
-// `crate::sincos64`: they live in `crate::eft`, beside the reduction.
-use crate::eft::{P1, P2, P3};
 const FRAC_2_PI: f64 = core::f64::consts::FRAC_2_PI;
 
 /// `pi/2` minus its `f64` rounding (`FRAC_PI_2`).
@@ -151,7 +148,7 @@ pub fn sin_cos<T: Real>(x: T) -> (T, T, bool) {
     let ok = abs(x) <= T::lit(SIN_COS_LIMIT);
     let xd = select(ok, x, T::zero()).as_f64();
     let k = (xd * FRAC_2_PI + R64) - R64;
-    let (r, rt) = crate::eft::reduce(xd, k, P1, P2, P3);
+    let (r, rt) = crate::eft::reduce(xd, k, crate::eft::P1, crate::eft::P2, crate::eft::P3);
     // k mod 4 in 0..=3: k/4 is exact, and k/4 - 3/8 rounds to floor(k/4).
     let q = k - 4.0 * ((k * 0.25 - 0.375 + R64) - R64);
     let (s, c) = if single::<T>() {
@@ -247,12 +244,9 @@ pub fn atan2<T: Real>(y: T, x: T) -> T {
 /// Angle of `(x, y)` from +x (rad, in `(-pi, pi]`), as
 /// [`crate::geometry::angle`]: [`atan2`] with a negative zero `y` made `+0`,
 /// so a vector along `-x` gives `pi`.
-/// A result that rounded to `-pi` (a tiny negative `y`) is returned as `pi`.
 #[inline(always)]
 pub fn angle<T: Real>(y: T, x: T) -> T {
-    let a = atan2(y + T::zero(), x);
-    let pi = T::pi();
-    select(a <= -pi, pi, a)
+    atan2(y + T::zero(), x)
 }
 
 /// `angle` (rad) reduced to `(-pi, pi]` like [`crate::geometry::wrap_angle`]

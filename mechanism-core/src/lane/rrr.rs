@@ -128,7 +128,7 @@ pub fn rrr_accels<T: Real>(g: &Rrr<T>, dax: T, day: T, w1: T, w2: T) -> (T, T) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lane::crank;
+    use crate::__private::lane::crank;
     use crate::mode::Mode;
     use nalgebra::Point2;
 

@@ -1,5 +1,5 @@
 //! An independent reader of the SVG files `mechanism-plot` writes, shared by
-//! `mechanism-plot/tests/api.rs` and the root `tests/plots.rs`. It parses the XML with
+//! `mechanism-plot/tests/api.rs` and the root `tests/examples/plots.rs`. It parses the XML with
 //! `roxmltree` (a real parser: a malformed file fails here) and reads the geometry back
 //! from the attributes, without using the crate's code.
 #![allow(dead_code)]

@@ -29,14 +29,14 @@ use mechanism::Error;
 /// differ only in the elementary functions (libm here, glibc on the host),
 /// each within 1 ulp, so each input to the chain moves by at most an eps or
 /// two, amplified by the sweeps' conditioning (below about 20, see
-/// `tests/examples.rs`): up to about 20 eps. 32 eps covers that (about 1 eps
+/// `tests/examples/kinematics.rs`): up to about 20 eps. 32 eps covers that (about 1 eps
 /// observed) and would still catch any wrong operation, which moves values by
 /// many orders more.
 const TOL64: f64 = 32.0 * f64::EPSILON;
 
 /// f32 against the host's f64, relative to each column's largest value. f32
 /// rounds at 1.2e-7 and the chains of a few tens of operations are amplified
-/// by the conditioning (transmission angle, rate ratios): `tests/examples.rs`
+/// by the conditioning (transmission angle, rate ratios): `tests/examples/kinematics.rs`
 /// observes up to 2.6e-6 for these two mechanisms over more poses and motions
 /// (and justifies 2e-5 for all its scenes); here about 3.6e-7 is observed.
 /// 5e-6 leaves a factor of 2 over the worst seen on the host. The f32 sine and

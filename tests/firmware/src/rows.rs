@@ -1,5 +1,5 @@
 //! The sweeps the firmware checks, shared word for word with the host test
-//! `tests/firmware_table.rs` that writes and re-checks `expected.rs`: one row of
+//! `tests/examples/firmware_table.rs` that writes and re-checks `expected.rs`: one row of
 //! outputs per crank angle, generic over the scalar, widened to `f64` (the
 //! values and the error's numbers).
 //!
@@ -28,7 +28,7 @@ pub const FOURBAR_COLUMNS: [&str; 9] = [
 pub const FOURBAR_ANGLES: [bool; 9] = [true, false, false, true, true, false, false, false, false];
 /// Crank speed (rad/s) and angular acceleration (rad/s^2) of the four-bar
 /// sweep: the example's 250 rad/s and an acceleration whose term is comparable
-/// to the omega^2 term (as in `tests/examples.rs`).
+/// to the omega^2 term (as in `tests/examples/kinematics.rs`).
 pub const FOURBAR_MOTION: (f64, f64) = (250.0, 2.0e4);
 
 /// One four-bar row at crank angle `theta` (rad).
@@ -64,7 +64,7 @@ pub const SHAPER_COLUMNS: [&str; 9] = [
 ];
 /// Which shaper columns are angles (compared modulo 2 pi).
 pub const SHAPER_ANGLES: [bool; 9] = [true, false, true, true, false, false, false, false, false];
-/// Crank speed and acceleration of the shaper sweep (as in `tests/examples.rs`).
+/// Crank speed and acceleration of the shaper sweep (as in `tests/examples/kinematics.rs`).
 pub const SHAPER_MOTION: (f64, f64) = (1.0, 0.7);
 
 /// One shaper row at crank angle `crank` (rad).

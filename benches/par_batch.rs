@@ -1,0 +1,194 @@
+//! `par_solve` against the single-thread batch, from 10^3 to 10^6 elements:
+//! the measurement behind `mechanism::PAR_MIN_PIECE` (`docs/performance.md`,
+//! "Over many cores"). A four-bar (outputs A, B, link3, link4 at three
+//! levels: 18 output columns), f64 and f32; per size, nanoseconds per element
+//! of each method, the minimum and the median over interleaved rounds of at
+//! least 2 ms each (the minimum is the round least disturbed by other
+//! processes: on a shared machine it is the figure to compare) of
+//!
+//! - `serial`: `solve_batch` on the calling thread;
+//! - `halves-512`: the batch halved recursively down to pieces of at most
+//!   512 elements, each half joined with `rayon::join`;
+//! - `per-thread`: one piece per thread of the pool at every size;
+//! - `par_solve`: the library's function (`min_len` 0).
+//!
+//! `cargo bench --features rayon --bench par_batch` (prints a Markdown table;
+//! `PAR_BATCH_ROUNDS` sets the rounds, 51 by default).
+
+use mechanism::{mechanism, BatchSplit};
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+mechanism! {
+    pub FourBar {
+        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+    }
+}
+
+/// The inputs, 18 output columns and the status of `n` elements.
+struct Buffers<T> {
+    theta: Vec<T>,
+    w: Vec<T>,
+    a: Vec<T>,
+    out: Vec<Vec<T>>,
+    status: Vec<u8>,
+}
+
+macro_rules! impl_buffers {
+    ($t:ty) => {
+        impl Buffers<$t> {
+            fn new(n: usize) -> Self {
+                Buffers {
+                    theta: (0..n)
+                        .map(|k| (k as f64 * 0.1).to_radians() as $t)
+                        .collect(),
+                    w: vec![250.0; n],
+                    a: vec![0.0; n],
+                    out: vec![vec![0.0; n]; 18],
+                    status: vec![0; n],
+                }
+            }
+
+            fn view(&mut self) -> FourBarBatch<'_, $t> {
+                let mut o = self.out.iter_mut().map(|v| v.as_mut_slice());
+                let mut nx = || o.next().expect("18 columns");
+                FourBarBatch {
+                    in_theta2: &self.theta,
+                    rate_theta2: &self.w,
+                    accel_theta2: &self.a,
+                    pos_A_x: nx(),
+                    pos_A_y: nx(),
+                    pos_B_x: nx(),
+                    pos_B_y: nx(),
+                    pos_link3: nx(),
+                    pos_link4: nx(),
+                    vel_A_x: nx(),
+                    vel_A_y: nx(),
+                    vel_B_x: nx(),
+                    vel_B_y: nx(),
+                    vel_link3: nx(),
+                    vel_link4: nx(),
+                    acc_A_x: nx(),
+                    acc_A_y: nx(),
+                    acc_B_x: nx(),
+                    acc_B_y: nx(),
+                    acc_link3: nx(),
+                    acc_link4: nx(),
+                    status: &mut self.status,
+                }
+            }
+        }
+    };
+}
+impl_buffers!(f64);
+impl_buffers!(f32);
+
+/// Halves `b` recursively until pieces have at most `leaf` elements.
+fn halves<B: BatchSplit, F: Fn(B) -> usize + Sync>(b: B, leaf: usize, f: &F) -> usize {
+    let n = b.len();
+    if n <= leaf {
+        return f(b);
+    }
+    let (lo, hi) = b.split_at(n / 2);
+    let (x, y) = rayon::join(|| halves(lo, leaf, f), || halves(hi, leaf, f));
+    x + y
+}
+
+/// `pieces` equal pieces, joined pairwise.
+fn per_thread<B: BatchSplit, F: Fn(B) -> usize + Sync>(b: B, pieces: usize, f: &F) -> usize {
+    if pieces <= 1 {
+        return f(b);
+    }
+    let left = pieces / 2;
+    let mid = b.len() * left / pieces;
+    let (lo, hi) = b.split_at(mid);
+    let (x, y) = rayon::join(
+        || per_thread(lo, left, f),
+        || per_thread(hi, pieces - left, f),
+    );
+    x + y
+}
+
+const POLICIES: [&str; 4] = ["serial", "halves-512", "per-thread", "par_solve"];
+
+/// Nanoseconds per element of each policy at `n` elements: (minimum, median)
+/// over `rounds`.
+macro_rules! measure {
+    ($t:ty, $n:expr, $rounds:expr) => {{
+        let n: usize = $n;
+        let m = FourBar::<$t>::default();
+        let mut buf = Buffers::<$t>::new(n);
+        let threads = rayon::current_num_threads();
+        // The lengths are equal by construction: the batch's check cannot fail.
+        let solve = |mut b: FourBarBatch<'_, $t>| m.solve_batch(&mut b).unwrap_or(usize::MAX);
+        let checked =
+            |b: FourBarBatch<'_, $t>| -> Result<usize, mechanism::BatchError> { Ok(solve(b)) };
+        let mut run = |p: usize| -> usize {
+            let b = buf.view();
+            match p {
+                0 => solve(b),
+                1 => halves(b, 512, &solve),
+                2 => per_thread(b, threads, &solve),
+                _ => mechanism::par_solve(b, 0, &checked).unwrap_or(usize::MAX),
+            }
+        };
+        // Repetitions per timed sample: at least 2 ms of the serial batch.
+        let t0 = Instant::now();
+        black_box(run(0));
+        let once = t0.elapsed().max(Duration::from_nanos(1));
+        let reps = (Duration::from_millis(2).as_nanos() / once.as_nanos()).max(1) as u32;
+        let mut ns: Vec<Vec<f64>> = vec![Vec::new(); POLICIES.len()];
+        for _ in 0..$rounds {
+            for (p, v) in ns.iter_mut().enumerate() {
+                let t = Instant::now();
+                for _ in 0..reps {
+                    assert_eq!(black_box(run(p)), 0, "the four-bar assembles everywhere");
+                }
+                v.push(t.elapsed().as_nanos() as f64 / reps as f64 / n as f64);
+            }
+        }
+        ns.into_iter()
+            .map(|mut v| {
+                v.sort_by(f64::total_cmp);
+                (v[0], v[v.len() / 2])
+            })
+            .collect::<Vec<(f64, f64)>>()
+    }};
+}
+
+fn main() {
+    let rounds: usize = std::env::var("PAR_BATCH_ROUNDS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(51);
+    let sizes = [
+        1_000, 2_000, 4_000, 8_000, 16_000, 32_000, 64_000, 100_000, 300_000, 1_000_000,
+    ];
+    let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
+    println!(
+        "threads {}, load average {}",
+        rayon::current_num_threads(),
+        load.split_whitespace()
+            .take(3)
+            .collect::<Vec<_>>()
+            .join(" ")
+    );
+    println!("\nns per element, minimum / median over {rounds} rounds");
+    println!("\n| elements | scalar | {} |", POLICIES.join(" | "));
+    println!("|---:|---|{}", "---:|".repeat(POLICIES.len()));
+    for &n in &sizes {
+        let r64 = measure!(f64, n, rounds);
+        let r32 = measure!(f32, n, rounds);
+        for (t, r) in [("f64", r64), ("f32", r32)] {
+            let cells: Vec<String> = r
+                .iter()
+                .map(|(lo, med)| format!("{lo:.2} / {med:.2}"))
+                .collect();
+            println!("| {n} | {t} | {} |", cells.join(" | "));
+        }
+    }
+}

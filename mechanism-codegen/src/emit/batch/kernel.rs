@@ -1,0 +1,140 @@
+//! The vectorizable kernel of a batch: every statement the outputs need, in
+//! solve order, through the lane code of its kind (`points`, `drivers`,
+//! `groups`), on the state of `lane`.
+
+use super::lane::{Lane, Step, Writes};
+use super::{drivers, groups, points};
+use crate::model::{Kind, Model, Stmt};
+use crate::plan::Plan;
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// The vectorizable kernel and the call of it from `solve_batch`.
+pub(super) struct Kernel {
+    /// The `__lane_batch` method.
+    pub method: TokenStream,
+    /// `self.__lane_batch(...)` on the batch `b`.
+    pub call: TokenStream,
+}
+
+/// The vectorizable kernel (`__lane_batch`) and the code that calls it, when
+/// every statement the outputs need has a lane version (every kind of
+/// statement has one: ground points, guides, cranks, sliders, actuators, the
+/// five groups, points on links); `None` otherwise (the batch is then
+/// evaluated by the scalar path alone).
+///
+/// The kernel takes every slice as its own argument (so the compiler knows
+/// they do not overlap: no run-time alias checks that would stop the
+/// vectorizer), evaluates every element branch-free with
+/// `mechanism::__private::lane`, writes its outputs and a status of 0 (ok) or 255 (to be
+/// evaluated again by the scalar path, which writes zeros and the real
+/// status). The checks of `mechanism::__private::lane` are stricter than the scalar
+/// ones, so an element the kernel accepts is one the scalar path accepts.
+/// Values that do not depend on the element (a guide's direction given by a
+/// run-time parameter) are computed once, before the loop, by the scalar
+/// functions the scalar path uses.
+pub(super) fn kernel(
+    model: &Model,
+    plan: &Plan,
+    all_in: &[&Ident],
+    outputs: &[(Ident, TokenStream)],
+    levels: usize,
+) -> Option<Kernel> {
+    let mut lane = Lane::new(levels);
+    // Only the statements the outputs need, as in the scalar path (a failing
+    // statement nobody asked for must not send elements to the scalar path).
+    for &i in &plan.solve {
+        statement(&mut lane, &model.stmts[i])?;
+    }
+    let Writes { slices, code } = lane.writes(outputs, levels)?;
+    let Lane { pre, body, .. } = lane;
+    let ins = all_in;
+    let real = quote!(<T as ::mechanism::Real>);
+    let method = quote! {
+        /// The vectorizable part of [`Self::solve_batch`] (see `mechanism::__private::lane`):
+        /// every element branch-free; status 0, or 255 where the scalar path
+        /// must evaluate the element again.
+        #[doc(hidden)]
+        #[inline]
+        #[allow(non_snake_case, unused_variables, dead_code, clippy::too_many_arguments)]
+        fn __lane_batch(&self, #(#ins: &[T],)* #(#slices: &mut [T],)* status: &mut [::core::primitive::u8]) {
+            let mut n = status.len();
+            #(n = ::core::cmp::min(n, #ins.len());)*
+            #(n = ::core::cmp::min(n, #slices.len());)*
+            #(let #ins = &#ins[..n];)*
+            #(let #slices = &mut #slices[..n];)*
+            let status = &mut status[..n];
+            let zero = #real::lit(0.0);
+            #pre
+            for k in 0..n {
+                let mut ok = true;
+                let mut chk = zero;
+                #body
+                #code
+                ok &= #real::finite(chk);
+                status[k] = if ok { 0 } else { ::core::primitive::u8::MAX };
+            }
+        }
+    };
+    let call = quote! {
+        self.__lane_batch(#(b.#ins,)* #(&mut *b.#slices,)* &mut *b.status);
+    };
+    Some(Kernel { method, call })
+}
+
+/// Adds the lane code of one statement, `None` when it has no lane
+/// version here (an argument the kernel does not know).
+pub(super) fn statement(lane: &mut Lane, stmt: &Stmt) -> Option<()> {
+    let mut s = Step::new(stmt);
+    match &stmt.kind {
+        Kind::Ground { x, y } => points::ground(&mut s, x, y),
+        Kind::Guide {
+            origin,
+            angle,
+            carrier,
+        } => points::guide(lane, &mut s, origin, angle, carrier.as_ref())?,
+        Kind::Point { link, from, local } => points::point(lane, &mut s, link, from, local)?,
+        Kind::Crank {
+            pivot,
+            radius,
+            input,
+            ..
+        } => drivers::crank(lane, &mut s, pivot, radius, input)?,
+        Kind::Slider {
+            guide,
+            input,
+            offset,
+        } => drivers::slider(lane, &mut s, guide, input, offset)?,
+        Kind::Actuator {
+            a,
+            l,
+            b,
+            input,
+            mode,
+        } => drivers::actuator(lane, &mut s, a, l, b, input, mode)?,
+        Kind::Rrr { a, l1, b, l2, mode } => groups::rrr(lane, &mut s, a, l1, b, l2, mode)?,
+        Kind::Rrp {
+            a,
+            l,
+            guide,
+            mode,
+            offset,
+        } => groups::rrp(lane, &mut s, a, l, guide, mode, offset)?,
+        Kind::Rpr { a, b, mode, offset } => groups::rpr(lane, &mut s, a, b, mode, offset)?,
+        Kind::Prp {
+            g1,
+            g2,
+            offset1,
+            offset2,
+        } => groups::prp(lane, &mut s, g1, g2, offset1, offset2)?,
+        Kind::Rpp {
+            a,
+            guide,
+            slot,
+            offset,
+        } => groups::rpp(lane, &mut s, a, guide, slot, offset)?,
+    }
+    lane.commit(s);
+    Some(())
+}

@@ -1,0 +1,469 @@
+//! The lane machinery of the batch kernel (`__lane_batch`): what the
+//! statements solved so far have made known (points, links, guides, slides,
+//! as locals of the kernel's loop body), one [`Step`] per statement that the
+//! per-kind functions ([`super::points`], [`super::drivers`],
+//! [`super::groups`]) fill, and the kernel around them.
+//!
+//! Every local of the loop body is named after the statement that makes it:
+//! `p_A_x` / `v_A_x` / `a_A_x` a point's position, velocity and acceleration
+//! components, `g_A` the group solution (a `mechanism::__private::lane` struct),
+//! `w_link3` / `al_link3` a link's angular velocity and acceleration,
+//! `s0_B` / `sd0_B` / `sdd0_B` a slide and its rates, `ln_line` a guide's
+//! `mechanism::__private::lane::Line`. Values that do not depend on the element (a unit
+//! vector at a run-time angle, `u_NAME`) are computed once before the loop.
+
+use crate::model::{Kind, Mode, Stmt};
+use crate::value::{lit, Value};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use std::collections::{BTreeMap, BTreeSet};
+use syn::Ident;
+
+/// The x and y locals of one planar vector of the loop body.
+#[derive(Clone)]
+pub(super) struct Pair {
+    pub x: Ident,
+    pub y: Ident,
+}
+
+/// Per-statement names of the lane code: `PREFIX_NAME_x` and `PREFIX_NAME_y`
+/// (`p`, `v`, `a` for a point's position, velocity and acceleration, `o` for
+/// a link point's offset from its reference point).
+pub(super) fn pv(prefix: &str, name: &Ident) -> Pair {
+    Pair {
+        x: format_ident!("{}_{}_x", prefix, name),
+        y: format_ident!("{}_{}_y", prefix, name),
+    }
+}
+
+/// A point's locals: position (`px`, `py`, in the definition's length unit),
+/// velocity (`vx`, `vy`, length per second) and acceleration (`ax`, `ay`,
+/// length per second squared). The velocity and acceleration locals exist
+/// only when the kernel goes that far.
+#[derive(Clone)]
+pub(super) struct PointLocals {
+    pub px: Ident,
+    pub py: Ident,
+    pub vx: Ident,
+    pub vy: Ident,
+    pub ax: Ident,
+    pub ay: Ident,
+}
+
+impl PointLocals {
+    /// The locals of the point `name` (`p_NAME_x` ... `a_NAME_y`).
+    pub fn of(name: &Ident) -> PointLocals {
+        let (p, v, a) = (pv("p", name), pv("v", name), pv("a", name));
+        PointLocals {
+            px: p.x,
+            py: p.y,
+            vx: v.x,
+            vy: v.y,
+            ax: a.x,
+            ay: a.y,
+        }
+    }
+}
+
+/// A planar vector as two expressions (literals, locals or field reads).
+#[derive(Clone)]
+pub(super) struct Vector {
+    pub x: TokenStream,
+    pub y: TokenStream,
+}
+
+/// A link in the lane code: unit axis, angle expression (radians, wrapped
+/// to `(-pi, pi]`), angular velocity (rad/s) and acceleration (rad/s^2)
+/// (expressions: a link that turns with a guide's body uses that body's, a
+/// link that never turns `zero`).
+pub(super) struct LaneLink {
+    pub axis: Vector,
+    pub angle: TokenStream,
+    pub omega: TokenStream,
+    pub alpha: TokenStream,
+}
+
+impl LaneLink {
+    /// A link along the vector `direction`, divided by `length` when given
+    /// (a unit vector otherwise): its axis, its angle (`lane::angle` of the
+    /// vector: a positive factor does not change it), its rates.
+    pub fn along(
+        direction: Vector,
+        length: Option<&TokenStream>,
+        omega: TokenStream,
+        alpha: TokenStream,
+    ) -> LaneLink {
+        let Vector { x, y } = direction;
+        let axis = match length {
+            Some(l) => Vector {
+                x: quote!((#x / #l)),
+                y: quote!((#y / #l)),
+            },
+            None => Vector {
+                x: x.clone(),
+                y: y.clone(),
+            },
+        };
+        LaneLink {
+            axis,
+            angle: quote!(::mechanism::__private::lane::angle(#y, #x)),
+            omega,
+            alpha,
+        }
+    }
+
+    /// The link's angle, angular velocity or angular acceleration for level
+    /// 0, 1 or 2.
+    fn at(&self, level: usize) -> &TokenStream {
+        match level {
+            0 => &self.angle,
+            1 => &self.omega,
+            _ => &self.alpha,
+        }
+    }
+}
+
+/// A guide in the lane code: the `mechanism::__private::lane::Line` local, the body's
+/// motion as `Option<&LineVelocity>` / `Option<&LineAcceleration>`
+/// expressions (`None` for a fixed guide, so its terms fold away), and the
+/// body's angular velocity and acceleration (for the blocks sliding on it).
+pub(super) struct LaneGuide {
+    pub line: Ident,
+    pub gv: TokenStream,
+    pub ga: TokenStream,
+    pub omega: TokenStream,
+    pub alpha: TokenStream,
+}
+
+/// A link's own rate locals, made by the statement that creates the link:
+/// `w_LINK` (rad/s) and `al_LINK` (rad/s^2).
+pub(super) struct Rates {
+    pub omega: Ident,
+    pub alpha: Ident,
+}
+
+/// The locals of one slide slot of a statement: displacement `sK_NAME`
+/// (length), its rate `sdK_NAME` and its second rate `sddK_NAME`.
+pub(super) struct SlideLocals {
+    pub s: Ident,
+    pub sd: Ident,
+    pub sdd: Ident,
+}
+
+/// A slide's displacement and rates as expressions, by level.
+struct Slide([TokenStream; 3]);
+
+/// What the statements solved so far have made known, and the kernel's code
+/// so far: `pre` (before the loop) and `body` (per element).
+pub(super) struct Lane {
+    /// The kernel computes velocities.
+    pub vel: bool,
+    /// The kernel computes accelerations.
+    pub acc: bool,
+    pub(super) pre: TokenStream,
+    pub(super) body: TokenStream,
+    points: BTreeSet<String>,
+    links: BTreeMap<String, LaneLink>,
+    guides: BTreeMap<String, LaneGuide>,
+    slides: BTreeMap<String, Slide>,
+}
+
+impl Lane {
+    /// An empty kernel computing `levels` levels (1 position, 2 velocity, 3
+    /// acceleration).
+    pub(super) fn new(levels: usize) -> Lane {
+        Lane {
+            vel: levels > 1,
+            acc: levels > 2,
+            pre: TokenStream::new(),
+            body: TokenStream::new(),
+            points: BTreeSet::new(),
+            links: BTreeMap::new(),
+            guides: BTreeMap::new(),
+            slides: BTreeMap::new(),
+        }
+    }
+
+    /// Point `p`'s locals, `None` while no statement solved so far defines
+    /// it.
+    pub fn point(&self, p: &Ident) -> Option<PointLocals> {
+        self.points
+            .contains(&p.to_string())
+            .then(|| PointLocals::of(p))
+    }
+
+    /// Link `l` as solved so far.
+    pub fn link(&self, l: &Ident) -> Option<&LaneLink> {
+        self.links.get(&l.to_string())
+    }
+
+    /// Guide `g` as solved so far.
+    pub fn guide(&self, g: &Ident) -> Option<&LaneGuide> {
+        self.guides.get(&g.to_string())
+    }
+
+    /// Appends a statement's code and makes what it defines known.
+    ///
+    /// Every value the scalar path checks is checked here too (finite),
+    /// outputs or not, so that an element the kernel accepts is one the
+    /// scalar path accepts: summed into `chk` (one add each, as a balanced
+    /// tree), the sum is finite unless one of them is not (or, harmlessly,
+    /// the sum overflows: the element then goes to the scalar path).
+    pub(super) fn commit(&mut self, step: Step) {
+        let Step {
+            name,
+            own,
+            pre,
+            body,
+            defines_point,
+            mut checked,
+            links,
+            slides,
+            guide,
+            ..
+        } = step;
+        self.pre.extend(pre);
+        self.body.extend(body);
+        if defines_point {
+            let PointLocals {
+                px,
+                py,
+                vx,
+                vy,
+                ax,
+                ay,
+            } = own;
+            checked.extend([quote!(#px), quote!(#py)]);
+            if self.vel {
+                checked.extend([quote!(#vx), quote!(#vy)]);
+            }
+            if self.acc {
+                checked.extend([quote!(#ax), quote!(#ay)]);
+            }
+            self.points.insert(name.to_string());
+        }
+        if let Some(sum) = tree_sum(&checked) {
+            self.body.extend(quote!(chk += #sum;));
+        }
+        if let Some(g) = guide {
+            self.guides.insert(name.to_string(), g);
+        }
+        self.links.extend(links);
+        self.slides.extend(slides);
+    }
+
+    /// The writes of the outputs into their slices, per level: `None` when
+    /// an output is not known to the kernel.
+    pub(super) fn writes(&self, outputs: &[(Ident, TokenStream)], levels: usize) -> Option<Writes> {
+        let mut w = Writes {
+            slices: Vec::new(),
+            code: TokenStream::new(),
+        };
+        let prefixes = ["pos", "vel", "acc"];
+        let lanes = ["p", "v", "a"];
+        for li in 0..levels {
+            for (o, ty) in outputs {
+                if ty.to_string().contains("Point2") {
+                    if !self.points.contains(&o.to_string()) {
+                        return None;
+                    }
+                    let Pair { x, y } = pv(lanes[li], o);
+                    w.push(format_ident!("{}_{}_x", prefixes[li], o), quote!(#x));
+                    w.push(format_ident!("{}_{}_y", prefixes[li], o), quote!(#y));
+                } else {
+                    let key = o.to_string();
+                    let v = match (self.links.get(&key), self.slides.get(&key)) {
+                        (Some(l), _) => l.at(li).clone(),
+                        (None, Some(Slide(s))) => s[li].clone(),
+                        (None, None) => return None,
+                    };
+                    w.push(format_ident!("{}_{}", prefixes[li], o), v);
+                }
+            }
+        }
+        Some(w)
+    }
+}
+
+/// The output slices the kernel writes (its `&mut [T]` arguments, in
+/// order) and the code writing element `k` of each.
+pub(super) struct Writes {
+    pub(super) slices: Vec<Ident>,
+    pub(super) code: TokenStream,
+}
+
+impl Writes {
+    /// `slice[k] = value;` (angles are finite where their arguments are,
+    /// which the kernel checks).
+    fn push(&mut self, slice: Ident, value: TokenStream) {
+        self.code.extend(quote! {
+            #slice[k] = #value;
+        });
+        self.slices.push(slice);
+    }
+}
+
+/// One statement's lane code while the per-kind function writes it: its
+/// code, the values to check, and what it will make known (see
+/// [`Lane::commit`]).
+pub(super) struct Step<'s> {
+    stmt: &'s Stmt,
+    /// The statement's name.
+    pub name: &'s Ident,
+    /// The locals of the point it defines (if it defines one).
+    pub own: PointLocals,
+    /// The local holding its `mechanism::__private::lane` group solution (`g_NAME`).
+    pub g: Ident,
+    pre: TokenStream,
+    body: TokenStream,
+    defines_point: bool,
+    checked: Vec<TokenStream>,
+    links: BTreeMap<String, LaneLink>,
+    slides: BTreeMap<String, Slide>,
+    guide: Option<LaneGuide>,
+}
+
+impl<'s> Step<'s> {
+    pub(super) fn new(stmt: &'s Stmt) -> Step<'s> {
+        Step {
+            stmt,
+            name: &stmt.name,
+            own: PointLocals::of(&stmt.name),
+            g: format_ident!("g_{}", stmt.name),
+            pre: TokenStream::new(),
+            body: TokenStream::new(),
+            defines_point: true,
+            checked: Vec::new(),
+            links: BTreeMap::new(),
+            slides: BTreeMap::new(),
+            guide: None,
+        }
+    }
+
+    /// Appends per-element code.
+    pub fn emit(&mut self, code: TokenStream) {
+        self.body.extend(code);
+    }
+
+    /// Values the kernel checks for finiteness (see [`Lane::commit`]).
+    pub fn check(&mut self, values: impl IntoIterator<Item = TokenStream>) {
+        self.checked.extend(values);
+    }
+
+    /// The statement defines no point (a guide, an RPR's slide).
+    pub fn defines_no_point(&mut self) {
+        self.defines_point = false;
+    }
+
+    /// How many links the statement creates.
+    pub fn link_count(&self) -> usize {
+        self.stmt.links.len()
+    }
+
+    /// The rate locals of the statement's `k`th link, `None` when it has
+    /// fewer links.
+    pub fn rates(&self, k: usize) -> Option<Rates> {
+        let l = self.stmt.links.get(k)?;
+        Some(Rates {
+            omega: format_ident!("w_{}", l),
+            alpha: format_ident!("al_{}", l),
+        })
+    }
+
+    /// The locals of slide slot `k`.
+    pub fn slide_locals(&self, k: usize) -> SlideLocals {
+        SlideLocals {
+            s: format_ident!("s{}_{}", k, self.name),
+            sd: format_ident!("sd{}_{}", k, self.name),
+            sdd: format_ident!("sdd{}_{}", k, self.name),
+        }
+    }
+
+    /// Makes the statement's `k`th link known as `link` (`None` when it has
+    /// fewer links).
+    pub fn defines_link(&mut self, k: usize, link: LaneLink) -> Option<()> {
+        let name = self.stmt.links.get(k)?.to_string();
+        self.links.insert(name, link);
+        Some(())
+    }
+
+    /// Makes slide slot `slot` known, under the name the definition gave it
+    /// (an RPR's slide without one under the statement's name; other
+    /// unnamed slides are no output and stay unknown).
+    pub fn defines_slide(&mut self, slot: usize, l: &SlideLocals) {
+        let slide = match (&self.stmt.kind, self.stmt.slides.get(slot)) {
+            (_, Some(Some(s))) => Some(s.to_string()),
+            (Kind::Rpr { .. }, _) => Some(self.name.to_string()),
+            _ => None,
+        };
+        if let Some(name) = slide {
+            let SlideLocals { s, sd, sdd } = l;
+            self.slides
+                .insert(name, Slide([quote!(#s), quote!(#sd), quote!(#sdd)]));
+        }
+    }
+
+    /// Makes the statement's guide known.
+    pub fn defines_guide(&mut self, guide: LaneGuide) {
+        self.guide = Some(guide);
+    }
+
+    /// A unit vector at `angle` (radians): literals when the angle is
+    /// literal, else the local `u_NAME` computed once before the loop with
+    /// the scalar `geometry::unit`, as the scalar path does.
+    pub fn unit(&mut self, angle: &Value) -> Vector {
+        unit(angle, format_ident!("u_{}", self.name), &mut self.pre)
+    }
+
+    /// Appends code run once before the loop.
+    pub fn before_loop(&mut self, code: TokenStream) {
+        self.pre.extend(code);
+    }
+}
+
+/// A unit vector at `angle` as two expressions: literals when the angle is
+/// literal, else a local computed once before the loop (named `id`) with the
+/// scalar `geometry::unit`, as the scalar path does.
+fn unit(angle: &Value, id: Ident, pre: &mut TokenStream) -> Vector {
+    match angle.fold() {
+        Some(a) => {
+            let (s, c) = a.sin_cos();
+            Vector {
+                x: lit(c),
+                y: lit(s),
+            }
+        }
+        None => {
+            let a = angle.emit();
+            pre.extend(quote!(let #id = ::mechanism::geometry::unit(#a);));
+            Vector {
+                x: quote!(#id.x),
+                y: quote!(#id.y),
+            }
+        }
+    }
+}
+
+/// The sum of `terms` as a balanced tree of additions (`(a + b) + (c + d)`):
+/// the same check as adding them one by one, with a dependency chain of
+/// `log2(n)` additions instead of `n`, which a long loop body waits on.
+pub(super) fn tree_sum(terms: &[TokenStream]) -> Option<TokenStream> {
+    match terms {
+        [] => None,
+        [t] => Some(t.clone()),
+        _ => {
+            let (lo, hi) = terms.split_at(terms.len() / 2);
+            let (a, b) = (tree_sum(lo)?, tree_sum(hi)?);
+            Some(quote!((#a + #b)))
+        }
+    }
+}
+
+/// The assembly mode as the sign literal the `mechanism::__private::lane` group
+/// functions take: `1.0` for `plus`, `-1.0` for `minus`.
+pub(super) fn sign(mode: &Mode) -> TokenStream {
+    lit(match mode {
+        Mode::Plus => 1.0,
+        Mode::Minus => -1.0,
+    })
+}

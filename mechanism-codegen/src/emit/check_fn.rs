@@ -1,0 +1,103 @@
+//! The generated `check()`: the expansion-time sweep of the position analysis
+//! over the input ranges (`crate::check`), run at run time through the
+//! generated `position()`, so that it holds for any parameters.
+
+use crate::check::joints_at_infinity;
+use crate::model::{Kind, Model};
+use crate::plan::{checked, Plan};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use syn::Ident;
+
+/// The scaled determinant of a checked group, from the generated position
+/// struct `pos` (code).
+pub(crate) fn det_code(model: &Model, stmt_index: usize) -> TokenStream {
+    let stmt = &model.stmts[stmt_index];
+    let g = format_ident!("grp_{}", stmt.name);
+    match &stmt.kind {
+        Kind::Rrr { .. } | Kind::Actuator { .. } => {
+            quote!(::mechanism::__private::det_rrr(&pos.#g))
+        }
+        Kind::Rrp { guide, .. } => quote!(::mechanism::__private::det_rrp(&pos.#g, &pos.#guide)),
+        Kind::Rpr { a, b, .. } => {
+            quote!(::mechanism::__private::det_rpr(&pos.#g, &pos.#a, &pos.#b))
+        }
+        Kind::Prp { g1, g2, .. } => quote!(::mechanism::__private::det_prp(&pos.#g1, &pos.#g2)),
+        Kind::Rpp { guide, .. } => quote!(::mechanism::__private::det_rpp(&pos.#g, &pos.#guide)),
+        _ => quote!(1.0),
+    }
+}
+
+/// The generated `check()` method (empty when an input has no range).
+pub fn emit_check(model: &Model, plan: &Plan, summary: &str) -> TokenStream {
+    let inputs = &model.inputs;
+    let checked = checked(model, plan);
+    if inputs.is_empty()
+        || inputs.len() > 2
+        || inputs.iter().any(|i| i.range.is_none())
+        || (inputs.len() == 2 && inputs.iter().any(|i| !i.declared))
+    {
+        return TokenStream::new();
+    }
+    let name = &model.name;
+    let input_ty = format_ident!("{}Input", name);
+    let g = checked.groups.len();
+    let d = inputs.len();
+    let group_names: Vec<String> = checked
+        .groups
+        .iter()
+        .map(|&i| model.stmts[i].name.to_string())
+        .collect();
+    let indices: Vec<usize> = (0..g).collect();
+    let dets: Vec<TokenStream> = checked.groups.iter().map(|&i| det_code(model, i)).collect();
+    let input_names: Vec<&Ident> = inputs.iter().map(|i| &i.name).collect();
+    let input_strs: Vec<String> = input_names.iter().map(|i| i.to_string()).collect();
+    let ks: Vec<usize> = (0..d).collect();
+    let ranges: Vec<TokenStream> = inputs
+        .iter()
+        .map(|i| {
+            let r = i.range.expect("checked above");
+            let (lo, hi, p) = (r.lo, r.hi, r.periodic);
+            quote!(::mechanism::sweep::Range { lo: #lo, hi: #hi, periodic: #p })
+        })
+        .collect();
+    // A PRP's or an RPP's joint at infinity is a failure, as at expansion
+    // time; the call only where the mechanism has one.
+    let at_infinity = joints_at_infinity(model, &checked);
+    let mark_infinity = if at_infinity.contains(&true) {
+        quote!(.with_joints_at_infinity([#(#at_infinity),*]))
+    } else {
+        TokenStream::new()
+    };
+    let sweep_call = if d == 1 {
+        quote!(::mechanism::sweep::sweep_1d(&ranges[0], ::mechanism::sweep::SAMPLES_1D, &tol, eval, |e| report.record(&e));)
+    } else {
+        quote!(let _ = tol; ::mechanism::sweep::sweep_2d(&ranges, ::mechanism::sweep::SAMPLES_2D, eval, |e| report.record(&e));)
+    };
+    let doc = format!(
+        "Sweeps the input range with these parameters, through [`{name}::position`]: per group (in solve order: {}), where it cannot be assembled and where its rate system is singular. The sweep is the one the macro runs at expansion time (`mechanism::sweep`), in the scalar `T` (edges bisected to `max(1e-10, eps)` of the range, singular below `sqrt(eps)`; an edge lies where `position()` in `T` stops assembling, which can be the group's rounding band beyond the exact limit: in `f32` a few 1e-6 rad at an RRR's limit); about {} position solves. No heap.\n\n{summary}",
+        group_names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", "),
+        if d == 1 { "4000" } else { "15000" }
+    );
+    quote! {
+        #[doc = #doc]
+        #[allow(clippy::all)]
+        pub fn check(&self) -> ::mechanism::sweep::Report<#g, #d> {
+            let ranges = [#(#ranges),*];
+            let mut report = ::mechanism::sweep::Report::new([#(#input_strs),*], ranges, [#(#group_names),*])#mark_infinity;
+            let tol = ::mechanism::sweep::Tolerances::for_eps(<T as ::mechanism::Real>::as_f64(<T as ::mechanism::Real>::eps()));
+            let eval = |q: &[::core::primitive::f64; #d]| -> ::mechanism::sweep::Outcome<#g> {
+                let input = #input_ty { #(#input_names: <T as ::mechanism::Real>::lit(q[#ks]),)* };
+                match self.position(&input) {
+                    ::core::result::Result::Ok(pos) => ::core::result::Result::Ok([#(#dets),*]),
+                    ::core::result::Result::Err(e) => ::core::result::Result::Err((
+                        match e.group { #(#group_names => #indices,)* _ => 0 },
+                        e.fault.to_f64(),
+                    )),
+                }
+            };
+            #sweep_call
+            report
+        }
+    }
+}

@@ -1,0 +1,188 @@
+//! The known loads of the force analysis: inertia forces and couples and
+//! weights of the links with mass, external forces and couples, each added
+//! to its link's load (about the link's reference point) with its power for
+//! the balance. Masses and moments of inertia not known at expansion are
+//! checked at run time.
+
+use super::ForceEmitter;
+use crate::emit::tag;
+use crate::model::{ForceSpec, ForceSpecValue, Kind, MassSpec, TorqueSpec};
+use crate::value::Value;
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+
+impl ForceEmitter<'_> {
+    /// Known loads: inertia and weight of every link with mass, external
+    /// forces and couples.
+    pub(super) fn known_loads(&mut self) {
+        let k = &self.model.kinetics;
+        if let Some((_, gx, gy)) = &k.gravity {
+            let (gx, gy) = (gx.emit(), gy.emit());
+            self.code
+                .extend(quote!(let gravity = ::mechanism::Vector2::new(#gx, #gy);));
+        }
+        for m in &k.masses {
+            self.mass(m);
+        }
+        for (n, f) in k.forces.iter().enumerate() {
+            self.external_force(n, f);
+        }
+        for (n, t) in k.torques.iter().enumerate() {
+            self.torque(n, t);
+        }
+    }
+
+    /// The inertia force, weight and inertia couple of a link with mass, and
+    /// their powers.
+    fn mass(&mut self, m: &MassSpec) {
+        let gravity = self.model.kinetics.gravity.is_some();
+        let link = m.link.to_string();
+        let at = &m.at;
+        let mass = self.checked(&m.mass, &link, Quantity::Mass);
+        let inertia_force = format_ident!("pw_inertia_force_{}", link);
+        let weight = format_ident!("pw_weight_{}", link);
+        let v_g = self.velocity(at);
+        let mut force_terms = Vec::new();
+        if v_g.is_some() {
+            let a = format_ident!("acc_{}", at);
+            self.code
+                .extend(quote!(let #inertia_force = acc.#a * (-#mass);));
+            force_terms.push(quote!(#inertia_force));
+        }
+        if gravity {
+            self.code.extend(quote!(let #weight = gravity * #mass;));
+            force_terms.push(quote!(#weight));
+        }
+        let couple = match (&m.inertia, self.rates_of(&m.link)) {
+            (Some(j), Some((w, alpha))) if j.fold() != Some(0.0) => {
+                let j = self.checked(j, &link, Quantity::Inertia);
+                let c = format_ident!("pw_inertia_couple_{}", link);
+                self.code.extend(quote!(let #c = -(#j * #alpha);));
+                self.power.push(quote!(#c * #w));
+                Some(quote!(#c))
+            }
+            _ => None,
+        };
+        if let Some(v) = &v_g {
+            self.power
+                .push(quote!(::mechanism::geometry::dot(&#inertia_force, &#v)));
+            if gravity {
+                self.power
+                    .push(quote!(::mechanism::geometry::dot(&#weight, &#v)));
+            }
+        }
+        if !force_terms.is_empty() {
+            let total = force_terms
+                .iter()
+                .skip(1)
+                .fold(force_terms[0].clone(), |acc, t| quote!(#acc + #t));
+            self.force_on(&link, total, at);
+        }
+        if let Some(c) = couple {
+            self.add(&link, quote!(::mechanism::force::Wrench::couple(#c)));
+        }
+    }
+
+    /// External force number `n` and its power.
+    fn external_force(&mut self, n: usize, f: &ForceSpec) {
+        let link = match &f.on {
+            Some(l) => l.to_string(),
+            None => self.plan.links_with_point(&f.at.to_string())[0].clone(),
+        };
+        let local = format_ident!("pw_force_{}", n);
+        let value = match &f.value {
+            ForceSpecValue::Components(x, y) => {
+                let (x, y) = (x.emit(), y.emit());
+                quote!(::mechanism::Vector2::new(#x, #y))
+            }
+            ForceSpecValue::Along(guide, v) => {
+                let v = v.emit();
+                quote!(pos.#guide.dir * #v)
+            }
+        };
+        self.code.extend(quote!(let #local = #value;));
+        if let Some(v) = self.velocity(&f.at) {
+            self.power
+                .push(quote!(::mechanism::geometry::dot(&#local, &#v)));
+        }
+        self.force_on(&link, quote!(#local), &f.at);
+    }
+
+    /// External couple number `n` and its power.
+    fn torque(&mut self, n: usize, t: &TorqueSpec) {
+        let local = format_ident!("pw_torque_{}", n);
+        let value = t.value.emit();
+        self.code.extend(quote!(let #local = #value;));
+        if let Some((w, _)) = self.rates_of(&t.on) {
+            self.power.push(quote!(#local * #w));
+        }
+        self.add(
+            &t.on.to_string(),
+            quote!(::mechanism::force::Wrench::couple(#local)),
+        );
+    }
+
+    /// A mass or moment of inertia of `link` as the force analysis uses it. A
+    /// literal one was checked at expansion (`model`); one that depends on
+    /// `params` or `loads` is checked here, at run time, into a local: a mass
+    /// must be finite and positive, a moment of inertia finite and not
+    /// negative, else a typed error naming the group that creates the link
+    /// (a negative mass would give finite, consistent and wrong reactions).
+    fn checked(&mut self, value: &Value, link: &str, quantity: Quantity) -> TokenStream {
+        if value.fold().is_some() {
+            return value.emit();
+        }
+        let Some(stmt) = self
+            .model
+            .stmts
+            .iter()
+            .find(|s| s.links.iter().any(|l| l == link))
+        else {
+            return value.emit();
+        };
+        let v = value.emit();
+        let primitive = primitive(&stmt.kind);
+        let t = tag(stmt);
+        let (local, check, what) = match quantity {
+            Quantity::Mass => (
+                format_ident!("pw_m_{}", link),
+                quote!(positive),
+                format!("mass of `{link}`"),
+            ),
+            Quantity::Inertia => (
+                format_ident!("pw_j_{}", link),
+                quote!(non_negative),
+                format!("moment of inertia of `{link}`"),
+            ),
+        };
+        self.code.extend(quote!(
+            let #local = ::mechanism::geometry::#check(#v, #primitive, #what) #t;
+        ));
+        quote!(#local)
+    }
+}
+
+/// What [`ForceEmitter::checked`] checks.
+#[derive(Clone, Copy)]
+enum Quantity {
+    /// A link's mass: finite and positive.
+    Mass,
+    /// A link's moment of inertia about its centre of mass: finite, `>= 0`.
+    Inertia,
+}
+
+/// The core's tag of the primitive a statement calls (for run-time errors).
+fn primitive(kind: &Kind) -> TokenStream {
+    let name = match kind {
+        Kind::Crank { .. } => quote!(Crank),
+        Kind::Slider { .. } => quote!(Slider),
+        Kind::Actuator { .. } => quote!(Actuator),
+        Kind::Rrr { .. } => quote!(Rrr),
+        Kind::Rrp { .. } => quote!(Rrp),
+        Kind::Rpr { .. } => quote!(Rpr),
+        Kind::Prp { .. } => quote!(Prp),
+        Kind::Rpp { .. } => quote!(Rpp),
+        Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } => quote!(LinkPoint),
+    };
+    quote!(::mechanism::Primitive::#name)
+}

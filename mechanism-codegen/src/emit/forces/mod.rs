@@ -1,0 +1,550 @@
+//! Stage 5b, emit the force analysis: the known load of every link (inertia,
+//! weight, external forces and couples), then the groups and drivers in the
+//! reverse of the solve order, each through its fixed-size system in
+//! `mechanism::force`, passing its outer reactions (negated) to the bodies it
+//! is attached to; then the driving efforts and the power balance.
+//!
+//! Only the terms a definition has are generated: no gravity statement, no
+//! weight terms; a link without mass, no inertia terms (its load starts with
+//! the first reaction passed to it); no moment of inertia or a link that does
+//! not turn, no inertia couple; a fixed centre of mass, no `m a` term.
+
+mod groups;
+mod loads;
+
+use super::describe::{fields_impl, FieldEntry};
+use super::names::TypeNames;
+use crate::model::Model;
+use crate::plan::Plan;
+use crate::value::lit;
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use std::collections::BTreeSet;
+use syn::Ident;
+
+/// The generated force analysis: items (structs) and methods.
+pub struct ForcesCode {
+    /// `NameForces` and, with a `loads` block, `NameLoads`.
+    pub items: TokenStream,
+    /// `forces(...)`.
+    pub methods: TokenStream,
+    /// The extra parameter of `forces` and `solve` (`loads: &NameLoads<T>`),
+    /// empty without a `loads` block.
+    pub loads_param: TokenStream,
+    /// The matching argument (`loads`), empty without a `loads` block.
+    pub loads_arg: TokenStream,
+}
+
+/// A reaction field of the generated forces struct.
+struct Reaction {
+    name: Ident,
+    ty: TokenStream,
+    value: TokenStream,
+    doc: String,
+    held: Held,
+}
+
+/// What a reaction field holds, as `mechanism::structure::Fields` reads it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Held {
+    /// A revolute joint's force (`Vector2`).
+    Force,
+    /// A prismatic pair's `PrismaticReaction`: read as `NAME.force` (the
+    /// normal force as a vector) and `NAME.moment` (its couple).
+    Prismatic,
+    /// A driver's torque (a moment).
+    Torque,
+    /// A slider's or an actuator's force along its line (a scalar).
+    Push,
+}
+
+struct ForceEmitter<'a> {
+    model: &'a Model,
+    plan: &'a Plan,
+    moving: &'a BTreeSet<String>,
+    /// Links whose load local exists (the others carry no load yet).
+    loaded: BTreeSet<String>,
+    code: TokenStream,
+    /// Power terms (expressions) for the balance.
+    power: Vec<TokenStream>,
+    /// The forces struct's reaction and effort fields, in the order found.
+    reactions: Vec<Reaction>,
+    /// The groups' force-system conditioning (relative pivots).
+    conditions: Vec<TokenStream>,
+}
+
+impl ForceEmitter<'_> {
+    /// The reference point a link's load is accumulated about: its first point.
+    fn reference(&self, link: &str) -> Ident {
+        format_ident!("{}", self.plan.links[link].points[0])
+    }
+
+    /// Adds a wrench (given as code about the link's reference point) to a link's load.
+    fn add(&mut self, link: &str, wrench: TokenStream) {
+        let local = format_ident!("load_{}", link);
+        if self.loaded.insert(link.to_string()) {
+            self.code.extend(quote!(let #local = #wrench;));
+        } else {
+            self.code.extend(quote!(let #local = #local + #wrench;));
+        }
+    }
+
+    /// A force `force` (code) acting on `link` at point `at`, as a wrench about
+    /// the link's reference point.
+    fn force_on(&mut self, link: &str, force: TokenStream, at: &Ident) {
+        let r = self.reference(link);
+        let wrench = if *at == r {
+            quote!(::mechanism::force::Wrench::new(#force, <T as ::mechanism::Real>::lit(0.0)))
+        } else {
+            quote!(::mechanism::force::Wrench::force_at(&(#force), &pos.#at, &pos.#r))
+        };
+        self.add(link, wrench);
+    }
+
+    /// A prismatic reaction `rx` (about point `about`) negated onto `body`.
+    fn prismatic_on(&mut self, body: Option<String>, rx: TokenStream, about: &Ident) {
+        if let Some(body) = body {
+            let r = self.reference(&body);
+            let wrench = if *about == r {
+                quote!(-(#rx).wrench())
+            } else {
+                quote!(-(#rx).wrench_about(&pos.#about, &pos.#r))
+            };
+            self.add(&body, wrench);
+        }
+    }
+
+    /// An outer revolute joint at `point` whose reaction on the group is
+    /// `rx.field`: passes the reaction, negated, to the body that owns the
+    /// point (nothing for the ground) and returns that body.
+    fn pass_revolute(&mut self, point: &Ident, rx: &Ident, field: &str) -> Option<String> {
+        let body = self.plan.body_of_point(&point.to_string());
+        if let Some(b) = &body {
+            let field = format_ident!("{}", field);
+            self.force_on(b, quote!(-#rx.#field), point);
+        }
+        body
+    }
+
+    /// The load of `link` as a wrench about `point`.
+    fn load_about(&self, link: &Ident, point: &Ident) -> TokenStream {
+        let l = link.to_string();
+        if !self.loaded.contains(&l) {
+            return quote!(::mechanism::force::Wrench::zero());
+        }
+        let local = format_ident!("load_{}", l);
+        let r = self.reference(&l);
+        if *point == r {
+            quote!(#local)
+        } else {
+            quote!(#local.moved(&pos.#r, &pos.#point))
+        }
+    }
+
+    /// Velocity of a point (code), `None` when it never moves.
+    fn velocity(&self, point: &Ident) -> Option<TokenStream> {
+        self.moving.contains(&point.to_string()).then(|| {
+            let v = format_ident!("vel_{}", point);
+            quote!(vel.#v)
+        })
+    }
+
+    /// Angular velocity and acceleration of a link (code), `None` when it
+    /// does not turn.
+    fn rates_of(&self, link: &Ident) -> Option<(TokenStream, TokenStream)> {
+        self.plan.turning_link(&link.to_string()).map(|l| {
+            let (w, a) = (format_ident!("omega_{}", l), format_ident!("alpha_{}", l));
+            (quote!(vel.#w), quote!(acc.#a))
+        })
+    }
+
+    /// The name of the body on the far side of a joint, for field names.
+    fn body_name(body: &Option<String>) -> String {
+        body.clone().unwrap_or_else(|| "ground".into())
+    }
+}
+
+/// Emits the force analysis of a valid, planned model whose definition asks
+/// for it. `moving` holds the points that move.
+pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode {
+    let mut em = ForceEmitter {
+        model,
+        plan,
+        moving,
+        loaded: BTreeSet::new(),
+        code: TokenStream::new(),
+        power: Vec::new(),
+        reactions: Vec::new(),
+        conditions: Vec::new(),
+    };
+    em.known_loads();
+    for &i in plan.solve.iter().rev() {
+        em.group(&model.stmts[i]);
+    }
+    unique_names(&mut em.reactions);
+    let names = TypeNames::of(model);
+    let loads = loads_struct(model, &names);
+    let mut items = forces_struct(model, &names, &em.reactions, loads.item);
+    items.extend(forces_fields(&names, &em.reactions));
+    let methods = forces_method(&names, &em, &loads.param);
+    ForcesCode {
+        items,
+        methods,
+        loads_param: loads.param,
+        loads_arg: loads.arg,
+    }
+}
+
+/// Field names must be unique: a second joint between the same two bodies
+/// gets a number appended (`r_ground_crank_2`).
+fn unique_names(reactions: &mut [Reaction]) {
+    let mut seen = BTreeSet::new();
+    for r in reactions {
+        let mut candidate = r.name.to_string();
+        let mut k = 2;
+        while !seen.insert(candidate.clone()) {
+            candidate = format!("{}_{k}", r.name);
+            k += 1;
+        }
+        r.name = format_ident!("{}", candidate);
+    }
+}
+
+/// The forces' conditioning indicator: the velocity's first, then each
+/// group's relative pivot. A group's force system is the transpose of its
+/// rate system (virtual work), so it is singular at the same poses, and the
+/// scaled determinants see that in any frame. The force solves' relative
+/// pivots are row-equilibrated and can miss it: a PRP with its guides along
+/// the x axis has a row (the x balance) whose entries all vanish together,
+/// and the scaling lifts it back to 1.
+fn condition_code(conditions: &[TokenStream]) -> TokenStream {
+    conditions.iter().fold(
+        quote!(vel.condition),
+        |acc, c| quote!(::mechanism::geometry::min(#acc, #c)),
+    )
+}
+
+/// The power-balance residual from the power terms (0 without any).
+fn power_code(power_terms: &[TokenStream]) -> TokenStream {
+    let terms: Vec<Ident> = (0..power_terms.len())
+        .map(|k| format_ident!("pw_{}", k))
+        .collect();
+    if terms.is_empty() {
+        return lit(0.0);
+    }
+    let sum = terms.iter().skip(1).fold(
+        {
+            let t = &terms[0];
+            quote!(#t)
+        },
+        |acc, t| quote!(#acc + #t),
+    );
+    // The largest |term| by comparisons (`RealField::max` would call
+    // libm's `fmaxf`, about 20 instructions a call on a Cortex-M4F); a
+    // NaN term is skipped, as `max` skips it, and shows in the sum.
+    let residual = quote! {{
+        let pw_scale = [#(::mechanism::geometry::abs(#terms)),*]
+            .into_iter()
+            .fold(<T as ::mechanism::Real>::lit(0.0), |m, a| if a > m { a } else { m });
+        let pw_sum = #sum;
+        if !(pw_scale.finite() && pw_sum.finite()) {
+            ::core::option::Option::None
+        } else if pw_scale > <T as ::mechanism::Real>::lit(0.0) {
+            ::core::option::Option::Some(::mechanism::geometry::abs(pw_sum) / pw_scale)
+        } else {
+            ::core::option::Option::Some(<T as ::mechanism::Real>::lit(0.0))
+        }
+    }};
+    // Reactions, loads and rates are finite here (every group checks
+    // them), so only a product that overflows `T` (an `f32` force of
+    // 1e38 N at 10 m/s) makes a term infinite: then no balance can be
+    // shown, and 1 is reported rather than a NaN (a rescaled second
+    // evaluation of every term would double this code for that case).
+    quote! {{
+        #(let #terms = #power_terms;)*
+        match #residual {
+            ::core::option::Option::Some(r) => r,
+            ::core::option::Option::None => <T as ::mechanism::Real>::lit(1.0),
+        }
+    }}
+}
+
+/// The `NameLoads` struct of a definition with a `loads` block, and the
+/// parameter and argument that pass it; all empty without one.
+struct LoadsStruct {
+    item: TokenStream,
+    param: TokenStream,
+    arg: TokenStream,
+}
+
+fn loads_struct(model: &Model, names: &TypeNames) -> LoadsStruct {
+    let loads = &model.kinetics.loads;
+    if loads.is_empty() {
+        return LoadsStruct {
+            item: quote!(),
+            param: quote!(),
+            arg: quote!(),
+        };
+    }
+    let (name, vis, loads_ty) = (&names.name, &model.vis, &names.loads);
+    let fields: Vec<&Ident> = loads.iter().map(|(n, _)| n).collect();
+    let defaults: Vec<TokenStream> = loads.iter().map(|(_, v)| lit(*v)).collect();
+    let doc = format!("Load values of [`{name}`] supplied per evaluation (declared in `loads {{ }}`); `Default` gives the definition's values.");
+    LoadsStruct {
+        item: quote! {
+            #[doc = #doc]
+            #[derive(Clone, Copy, Debug, PartialEq)]
+            #[allow(non_snake_case)]
+            #vis struct #loads_ty<T = ::core::primitive::f64> {
+                #(#[doc = "Load value (force, couple or factor, as the definition uses it)."] pub #fields: T,)*
+            }
+            impl<T: ::mechanism::Real> ::core::default::Default for #loads_ty<T> {
+                #[inline]
+                fn default() -> Self {
+                    #loads_ty { #(#fields: #defaults,)* }
+                }
+            }
+        },
+        param: quote!(, loads: &#loads_ty<T>),
+        arg: quote!(, loads),
+    }
+}
+
+/// The `NameForces` struct (reactions, efforts, condition, power residual),
+/// followed by `loads_item`.
+fn forces_struct(
+    model: &Model,
+    names: &TypeNames,
+    reactions: &[Reaction],
+    loads_item: TokenStream,
+) -> TokenStream {
+    let (name, vis, forces_ty) = (&names.name, &model.vis, &names.forces);
+    let field_names: Vec<&Ident> = reactions.iter().map(|r| &r.name).collect();
+    let field_types: Vec<&TokenStream> = reactions.iter().map(|r| &r.ty).collect();
+    let field_docs: Vec<&String> = reactions.iter().map(|r| &r.doc).collect();
+    let forces_doc = format!("Joint reactions and driving efforts of [`{name}`] (force units: mass x length / s^2 in the definition's units; N with kg, m, s). Each reaction is the force of one body on another in the global frame, as its field says.");
+    quote! {
+        #[doc = #forces_doc]
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        #[allow(non_snake_case)]
+        #vis struct #forces_ty<T: ::mechanism::Real = ::core::primitive::f64> {
+            #(#[doc = #field_docs] pub #field_names: #field_types,)*
+            /// Conditioning indicator: the smaller of the velocity's
+            /// `condition` (the groups' scaled determinants, singular at the
+            /// same poses as their force systems) and the smallest relative
+            /// pivot over the groups' force systems; 1 for a well-conditioned
+            /// pose, tending to 0 towards a singular one (toggle, dead centre,
+            /// parallel guides).
+            pub condition: T,
+            /// Power balance residual: |driver power + power of the external
+            /// loads, weights, inertia forces and couples| divided by the largest
+            /// of those powers (0 when all vanish). A few eps when consistent.
+            pub power_residual: T,
+        }
+        #loads_item
+    }
+}
+
+/// The forces struct's `Fields` impl (`mechanism::structure`): every
+/// reaction and effort by name with its quantity, a prismatic pair's as
+/// `NAME.force` and `NAME.moment`, then `condition` and `power_residual`.
+fn forces_fields(names: &TypeNames, reactions: &[Reaction]) -> TokenStream {
+    let mut entries = Vec::new();
+    for r in reactions {
+        let (n, text) = (&r.name, r.name.to_string());
+        match r.held {
+            Held::Force => entries.push(FieldEntry::new(text, "Force", "Vector", quote!(#n))),
+            Held::Prismatic => {
+                let (force, moment) = (quote!(#n.force), quote!(#n.moment));
+                entries.push(FieldEntry::new(
+                    format!("{text}.force"),
+                    "Force",
+                    "Vector",
+                    force,
+                ));
+                let name = format!("{text}.moment");
+                entries.push(FieldEntry::new(name, "Moment", "Scalar", moment));
+            }
+            Held::Torque => entries.push(FieldEntry::new(text, "Moment", "Scalar", quote!(#n))),
+            Held::Push => entries.push(FieldEntry::new(text, "Force", "Scalar", quote!(#n))),
+        }
+    }
+    for extra in ["condition", "power_residual"] {
+        let f = format_ident!("{}", extra);
+        entries.push(FieldEntry::new(extra.into(), "Ratio", "Scalar", quote!(#f)));
+    }
+    fields_impl(&names.forces, &entries)
+}
+
+/// The `forces` method: the emitter's code, then the struct's value.
+fn forces_method(
+    names: &TypeNames,
+    em: &ForceEmitter<'_>,
+    loads_param: &TokenStream,
+) -> TokenStream {
+    let (position_ty, velocity_ty, acceleration_ty, forces_ty) = (
+        &names.position,
+        &names.velocity,
+        &names.acceleration,
+        &names.forces,
+    );
+    let code = &em.code;
+    let condition = condition_code(&em.conditions);
+    let power = power_code(&em.power);
+    let field_names: Vec<&Ident> = em.reactions.iter().map(|r| &r.name).collect();
+    let field_values: Vec<&TokenStream> = em.reactions.iter().map(|r| &r.value).collect();
+    quote! {
+        /// Force analysis at a solved pose: joint reactions, driving efforts,
+        /// the conditioning indicator and the power-balance residual.
+        /// Groups are solved in the reverse of the solve order.
+        ///
+        /// Errors name the group whose force system is singular or whose
+        /// loads are not finite.
+        #[inline(always)]
+        #[allow(non_snake_case, unused_variables, clippy::too_many_arguments)]
+        pub fn forces(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, acc: &#acceleration_ty<T> #loads_param) -> ::core::result::Result<#forces_ty<T>, ::mechanism::Error<T>> {
+            #code
+            let condition = #condition;
+            let power_residual = #power;
+            ::core::result::Result::Ok(#forces_ty { #(#field_names: #field_values,)* condition, power_residual })
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{condition_code, power_code, unique_names, ForcesCode, Held, Reaction};
+    use crate::emit::test_support::{flat, four_bar, planned};
+    use proc_macro2::TokenStream;
+    use quote::{format_ident, quote};
+    use std::str::FromStr;
+
+    /// The messages of the `compile_error!`s in the expansion of `src`.
+    fn errors(src: &str) -> Vec<String> {
+        let out = crate::expand(TokenStream::from_str(src).unwrap()).to_string();
+        out.split("compile_error !")
+            .skip(1)
+            .map(|rest| rest.split(';').next().unwrap_or("").to_string())
+            .collect()
+    }
+
+    /// A boom lifted by a cylinder, and an RRR group pinned at `PIN`.
+    fn arm(pin: &str) -> String {
+        format!(
+            "pub Arm {{
+                let A = ground(0.0, 0.0);
+                let B = ground(0.6, -0.3);
+                let O6 = ground(1.2, 0.2);
+                let C = actuator(A, 1.0, B, len, left) as (boom, cyl);
+                let M = point(cyl, from B, 0.3, 0 deg);
+                let N = point(boom, from A, 0.5, 0 deg);
+                let K = rrr({pin}, 0.8, O6, 0.7, right) as (link5, link6);
+                mass link6 {{ m = 10.0, at = K }};
+                range len = (0.9, 1.3);
+            }}"
+        )
+    }
+
+    #[test]
+    fn a_group_pinned_to_an_actuators_cylinder_is_an_error() {
+        let on_cylinder = errors(&arm("M"));
+        assert_eq!(on_cylinder.len(), 1, "{on_cylinder:?}");
+        assert!(
+            on_cylinder[0].contains("cylinder `cyl`")
+                && on_cylinder[0].contains("two-force member"),
+            "{on_cylinder:?}"
+        );
+        // Pinned to the boom instead: no error.
+        assert!(errors(&arm("N")).is_empty());
+        // Without a force analysis the cylinder's point is fine.
+        let kinematic = arm("M").replace("mass link6 { m = 10.0, at = K };", "");
+        assert!(errors(&kinematic).is_empty());
+    }
+
+    fn forces(scene: &str) -> ForcesCode {
+        let (model, plan) = planned(&four_bar(scene));
+        let moving = crate::emit::moving_points(&model, &plan);
+        super::emit(&model, &plan, &moving)
+    }
+
+    // Proves the weight terms come only with a gravity statement: a mass
+    // without gravity gives an inertia force and no `gravity` or weight local;
+    // with gravity both, and the weight's power in the balance.
+    #[test]
+    fn weight_terms_only_with_gravity() {
+        let without = flat(&forces("mass link3 { m = 2.0, at = P };").methods);
+        assert!(
+            without.contains(
+                "letpw_inertia_force_link3=acc.acc_P*(-<Tas::mechanism::Real>::lit(2f64));"
+            ),
+            "{without}"
+        );
+        assert!(
+            !without.contains("gravity") && !without.contains("pw_weight"),
+            "{without}"
+        );
+        let with = flat(&forces("mass link3 { m = 2.0, at = P }; gravity (0.0, -9810.0);").methods);
+        assert!(
+            with.contains("letpw_weight_link3=gravity*<Tas::mechanism::Real>::lit(2f64);"),
+            "{with}"
+        );
+        assert!(with.contains("dot(&pw_weight_link3,&vel.vel_P)"), "{with}");
+    }
+
+    // Proves the `loads` block gives the `NameLoads` struct and the extra
+    // parameter of `forces` and `solve`, and its absence neither.
+    #[test]
+    fn loads_struct_and_parameter_only_with_a_loads_block() {
+        let plain = forces("mass link3 { m = 2.0, at = P };");
+        assert!(plain.loads_param.is_empty() && plain.loads_arg.is_empty());
+        assert!(!flat(&plain.items).contains("FourBarLoads"));
+        let loaded = forces(
+            "mass link3 { m = 2.0, at = P }; loads { brake = 0.5 } torque on link4 = brake;",
+        );
+        assert_eq!(flat(&loaded.loads_param), ",loads:&FourBarLoads<T>");
+        assert_eq!(flat(&loaded.loads_arg), ",loads");
+        assert!(flat(&loaded.items).contains("structFourBarLoads<T=::core::primitive::f64>{"));
+    }
+
+    // Proves reaction field names stay unique: a second and third joint
+    // between the same two bodies get `_2` and `_3`, other names are kept.
+    #[test]
+    fn repeated_reaction_names_are_numbered() {
+        let reaction = |name: &str| Reaction {
+            name: format_ident!("{}", name),
+            ty: quote!(T),
+            value: quote!(x),
+            doc: String::new(),
+            held: Held::Force,
+        };
+        let mut reactions = vec![
+            reaction("r_ground_link2"),
+            reaction("r_link2_link3"),
+            reaction("r_ground_link2"),
+            reaction("r_ground_link2"),
+        ];
+        unique_names(&mut reactions);
+        let names: Vec<String> = reactions.iter().map(|r| r.name.to_string()).collect();
+        assert_eq!(
+            names,
+            [
+                "r_ground_link2",
+                "r_link2_link3",
+                "r_ground_link2_2",
+                "r_ground_link2_3"
+            ]
+        );
+    }
+
+    // Proves the power residual is the literal 0 when no term has power (no
+    // expression to evaluate), and the conditioning starts from the velocity's.
+    #[test]
+    fn empty_power_balance_and_condition_chain() {
+        assert_eq!(flat(&power_code(&[])), "<Tas::mechanism::Real>::lit(0f64)");
+        assert_eq!(flat(&condition_code(&[])), "vel.condition");
+        assert_eq!(
+            flat(&condition_code(&[quote!(rx_B.min_pivot_ratio)])),
+            "::mechanism::geometry::min(vel.condition,rx_B.min_pivot_ratio)"
+        );
+    }
+}

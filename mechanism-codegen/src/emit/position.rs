@@ -1,0 +1,691 @@
+//! The position analysis: the code that solves each statement in solve order,
+//! the position struct (outputs, and the hidden values later code reads), and
+//! the `position` and `position_cos_sin` methods.
+
+use super::names::{
+    debug_impl, grp, local, marker, mode_tokens, output_docs, tag, unit_vector, Generated,
+    TypeNames,
+};
+use super::reads::{Analysis, Reads};
+use crate::model::{Kind, Local, Model, Origin, Stmt};
+use crate::plan::Plan;
+use crate::value::{lit, Value};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use std::collections::BTreeSet;
+use syn::Ident;
+
+/// A value of the position code the position struct may keep: its field
+/// name, the local that holds it, and its type.
+#[derive(Clone)]
+pub(super) struct Stored {
+    field: Ident,
+    local: Ident,
+    ty: TokenStream,
+}
+
+impl Stored {
+    fn new(field: &Ident, local: &Ident, ty: TokenStream) -> Self {
+        Stored {
+            field: field.clone(),
+            local: local.clone(),
+            ty,
+        }
+    }
+}
+
+/// The core type of a statement's solved position state (`grp_NAME`).
+fn group_position_type(kind: &Kind) -> TokenStream {
+    match kind {
+        Kind::Crank { .. } => quote!(::mechanism::driver::crank::CrankPosition<T>),
+        Kind::Slider { .. } => quote!(::mechanism::driver::slider::SliderPosition<T>),
+        Kind::Actuator { .. } => quote!(::mechanism::driver::actuator::ActuatorPosition<T>),
+        Kind::Rrr { .. } => quote!(::mechanism::dyad::rrr::RrrPosition<T>),
+        Kind::Rrp { .. } => quote!(::mechanism::dyad::rrp::RrpPosition<T>),
+        Kind::Rpr { .. } => quote!(::mechanism::dyad::rpr::RprPosition<T>),
+        Kind::Prp { .. } => quote!(::mechanism::dyad::prp::PrpPosition<T>),
+        Kind::Rpp { .. } => quote!(::mechanism::dyad::rpp::RppPosition<T>),
+        Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } => quote!(()),
+    }
+}
+
+/// The position code of one definition, before the struct's fields are chosen.
+pub(super) struct PositionCode {
+    /// Every statement's position code, in solve order.
+    pub code: TokenStream,
+    /// The values the position struct may keep (those a later reader reads).
+    pub stored: Vec<Stored>,
+    /// The output locals: link angles and slides.
+    pub out_code: TokenStream,
+    /// The struct's output fields (name, type): points, links, slides.
+    pub outputs: Vec<(Ident, TokenStream)>,
+}
+
+/// Emits the position code of every statement (and, for `velocity` and
+/// `acceleration`, answers which link a direction comes from).
+pub(super) struct Emitter<'a> {
+    pub model: &'a Model,
+    pub plan: &'a Plan,
+    /// Links whose unit axis is needed in position (points on them, carried guides).
+    axes: BTreeSet<String>,
+    /// Emitting `position_cos_sin`: cranks marked `as cos_sin` read
+    /// `input_cs.NAME.cos` and `.sin`.
+    cos_sin: bool,
+}
+
+impl<'a> Emitter<'a> {
+    /// The emitter of `position` (`cos_sin` false) or `position_cos_sin`.
+    pub fn new(model: &'a Model, plan: &'a Plan, cos_sin: bool) -> Self {
+        // Which link axes are needed in position.
+        let mut axes = BTreeSet::new();
+        for stmt in plan.solve.iter().map(|&i| &model.stmts[i]) {
+            match &stmt.kind {
+                Kind::Point { link, .. } => {
+                    axes.insert(link.to_string());
+                }
+                Kind::Guide {
+                    carrier: Some(link),
+                    ..
+                } => {
+                    axes.insert(link.to_string());
+                }
+                _ => {}
+            }
+        }
+        Emitter {
+            model,
+            plan,
+            axes,
+            cos_sin,
+        }
+    }
+
+    /// The position code of the whole definition.
+    pub fn code(&self) -> PositionCode {
+        let mut code = TokenStream::new();
+        let mut stored = Vec::new();
+        for &i in &self.plan.solve {
+            let (c, fields) = self.position(&self.model.stmts[i]);
+            code.extend(c);
+            stored.extend(fields);
+        }
+        let out = &self.plan.outputs;
+        let mut outputs: Vec<(Ident, TokenStream)> = Vec::new();
+        for p in &out.points {
+            outputs.push((p.clone(), quote!(::mechanism::Point2<T>)));
+        }
+        for link in &out.links {
+            outputs.push((link.clone(), quote!(T)));
+        }
+        for slide in out.slides.iter().map(|s| &s.name) {
+            outputs.push((slide.clone(), quote!(T)));
+        }
+        PositionCode {
+            code,
+            stored,
+            out_code: self.outputs_code(false),
+            outputs,
+        }
+    }
+
+    /// Unit axis and raw direction of link `index` of `stmt`, in position
+    /// scope (guides by their locals, [`local`]).
+    fn link_direction(&self, stmt: &Stmt, index: usize) -> (TokenStream, TokenStream) {
+        let g = grp(stmt);
+        match (&stmt.kind, index) {
+            (Kind::Crank { .. }, _) | (Kind::Rpr { .. }, _) => (quote!(#g.axis), quote!(#g.axis)),
+            (Kind::Slider { guide, .. }, _)
+            | (Kind::Rrp { guide, .. }, 1)
+            | (Kind::Rpp { guide, .. }, 1) => {
+                let guide = local(guide);
+                (quote!(#guide.dir), quote!(#guide.dir))
+            }
+            (Kind::Actuator { l, .. }, 0)
+            | (Kind::Rrp { l, .. }, 0)
+            | (Kind::Rrr { l1: l, .. }, 0) => {
+                let l = l.emit();
+                (quote!(#g.r1 / #l), quote!(#g.r1))
+            }
+            (Kind::Rrr { l2, .. }, _) => {
+                let l2 = l2.emit();
+                (quote!(#g.r2 / #l2), quote!(#g.r2))
+            }
+            (Kind::Actuator { input, .. }, _) => (quote!(#g.r2 / input.#input), quote!(#g.r2)),
+            (Kind::Prp { g1: guide, .. }, 0) | (Kind::Prp { g2: guide, .. }, _) => {
+                let guide = local(guide);
+                (quote!(#guide.dir), quote!(#guide.dir))
+            }
+            (Kind::Rpp { .. }, _) => (quote!(#g.slot), quote!(#g.slot)),
+            _ => (
+                quote!(::mechanism::Vector2::x()),
+                quote!(::mechanism::Vector2::x()),
+            ),
+        }
+    }
+
+    /// Position statements for one statement; returns the code and the values
+    /// the position struct may keep (those a later reader reads).
+    fn position(&self, stmt: &Stmt) -> (TokenStream, Vec<Stored>) {
+        let name = &local(&stmt.name);
+        let own_ty = match stmt.kind {
+            Kind::Guide { .. } => quote!(::mechanism::guide::Line<T>),
+            _ => quote!(::mechanism::Point2<T>),
+        };
+        let own = Stored::new(&stmt.name, name, own_ty);
+        let g = grp(stmt);
+        let group = Stored::new(&g, &g, group_position_type(&stmt.kind));
+        let t = tag(stmt);
+        let (code, mut fields) = match &stmt.kind {
+            Kind::Ground { x, y } => {
+                let (x, y) = (x.emit(), y.emit());
+                (
+                    quote!(let #name = ::mechanism::Point2::new(#x, #y);),
+                    vec![own],
+                )
+            }
+            Kind::Guide {
+                origin,
+                angle,
+                carrier,
+            } => {
+                let line = guide_line(origin, angle, carrier.as_ref());
+                (quote!(let #name = #line;), vec![own])
+            }
+            Kind::Point {
+                link,
+                from,
+                local: offset,
+            } => {
+                let axis = format_ident!("axis_{}", link);
+                let from_l = local(from);
+                let offset = point_offset(offset);
+                let code = quote! {
+                    let #name = ::mechanism::link::point_position(&#from_l, &#axis, &#offset) #t;
+                };
+                (code, vec![own])
+            }
+            Kind::Rpr { a, b, mode, offset } => {
+                let (m, o) = (mode_tokens(*mode), offset.emit());
+                let (a_l, b_l) = (local(a), local(b));
+                let code = quote! {
+                    let #g = ::mechanism::dyad::rpr::position(&#a_l, &#b_l, #o, #m) #t;
+                };
+                (code, vec![group])
+            }
+            _ => {
+                let (call, joint) = self.group_call(stmt);
+                let code = quote! {
+                    let #g = #call #t;
+                    let #name = #g.#joint;
+                };
+                (code, vec![group, own])
+            }
+        };
+        // Unit axes of the links this statement creates, where needed.
+        let mut axes = TokenStream::new();
+        for (j, link) in stmt.links.iter().enumerate() {
+            if self.axes.contains(&link.to_string()) {
+                let axis = format_ident!("axis_{}", link);
+                let (unit, _) = self.link_direction(stmt, j);
+                axes.extend(quote!(let #axis = #unit;));
+                fields.push(Stored::new(&axis, &axis, quote!(::mechanism::Vector2<T>)));
+            }
+        }
+        (quote!(#code #axes), fields)
+    }
+
+    /// The core call that solves a driver or a group whose statement names a
+    /// point (all but RPR), and the field of its result that is that point.
+    fn group_call(&self, stmt: &Stmt) -> (TokenStream, Ident) {
+        let (call, joint) = match &stmt.kind {
+            Kind::Crank {
+                pivot,
+                radius,
+                input,
+                cos_sin,
+            } => {
+                let (r, pivot_l) = (radius.emit(), local(pivot));
+                let call = if *cos_sin && self.cos_sin {
+                    quote!(::mechanism::driver::crank::position_cos_sin(&#pivot_l, #r, input_cs.#input.cos, input_cs.#input.sin))
+                } else {
+                    quote!(::mechanism::driver::crank::position(&#pivot_l, #r, input.#input))
+                };
+                (call, "tip")
+            }
+            Kind::Slider {
+                guide,
+                input,
+                offset,
+            } => {
+                let (o, guide_l) = (offset.emit(), local(guide));
+                let call =
+                    quote!(::mechanism::driver::slider::position(&#guide_l, #o, input.#input));
+                (call, "p")
+            }
+            Kind::Actuator {
+                a,
+                l,
+                b,
+                input,
+                mode,
+            } => {
+                let (l, m) = (l.emit(), mode_tokens(*mode));
+                let (a_l, b_l) = (local(a), local(b));
+                let call = quote!(::mechanism::driver::actuator::position(&#a_l, #l, &#b_l, input.#input, #m));
+                (call, "c")
+            }
+            Kind::Rrr { a, l1, b, l2, mode } => {
+                let (l1, l2, m) = (l1.emit(), l2.emit(), mode_tokens(*mode));
+                let (a_l, b_l) = (local(a), local(b));
+                let call = quote!(::mechanism::dyad::rrr::position(&#a_l, #l1, &#b_l, #l2, #m));
+                (call, "c")
+            }
+            Kind::Rrp {
+                a,
+                l,
+                guide,
+                mode,
+                offset,
+            } => {
+                let (l, m, o) = (l.emit(), mode_tokens(*mode), offset.emit());
+                let (a_l, guide_l) = (local(a), local(guide));
+                let call = quote!(::mechanism::dyad::rrp::position(&#a_l, #l, &#guide_l, #o, #m));
+                (call, "c")
+            }
+            Kind::Prp {
+                g1,
+                g2,
+                offset1,
+                offset2,
+            } => {
+                let (o1, o2) = (offset1.emit(), offset2.emit());
+                let (g1_l, g2_l) = (local(g1), local(g2));
+                let call = quote!(::mechanism::dyad::prp::position(&#g1_l, #o1, &#g2_l, #o2));
+                (call, "c")
+            }
+            Kind::Rpp {
+                a,
+                guide,
+                slot,
+                offset,
+            } => {
+                let (u, o) = (unit_vector(slot), offset.emit());
+                let (a_l, guide_l) = (local(a), local(guide));
+                let call = quote!(::mechanism::dyad::rpp::position(&#a_l, &#guide_l, #o, &#u));
+                (call, "q")
+            }
+            Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } | Kind::Rpr { .. } => {
+                unreachable!("`position` emits {} itself", stmt.name)
+            }
+        };
+        (call, format_ident!("{}", joint))
+    }
+
+    /// Output locals: link angles and slides. `cos_sin`: the code for
+    /// `position_cos_sin`, where a marked crank's angle is its axis' angle.
+    fn outputs_code(&self, cos_sin: bool) -> TokenStream {
+        let (model, plan, out) = (self.model, self.plan, &self.plan.outputs);
+        let mut code = TokenStream::new();
+        for link in &out.links {
+            let info = &plan.links[&link.to_string()];
+            let (_, dir) = self.link_direction(&model.stmts[info.stmt], info.index);
+            // A crank's angle is its input: reduced to (-pi, pi], no atan2.
+            let value = match &model.stmts[info.stmt].kind {
+                Kind::Crank {
+                    input,
+                    cos_sin: marked,
+                    ..
+                } if !(cos_sin && *marked) => {
+                    quote!(::mechanism::geometry::wrap_angle(input.#input))
+                }
+                _ => quote!(::mechanism::geometry::angle(&#dir)),
+            };
+            let l = local(link);
+            code.extend(quote!(let #l = #value;));
+        }
+        for crate::plan::Slide {
+            name: slide,
+            stmt: i,
+            slot,
+        } in &out.slides
+        {
+            let g = grp(&model.stmts[*i]);
+            let field = match (&model.stmts[*i].kind, slot) {
+                (Kind::Prp { .. }, 0) | (Kind::Rpp { .. }, 0) => quote!(s1),
+                (Kind::Prp { .. }, _) | (Kind::Rpp { .. }, _) => quote!(s2),
+                _ => quote!(s),
+            };
+            let l = local(slide);
+            code.extend(quote!(let #l = #g.#field;));
+        }
+        code
+    }
+}
+
+/// A guide's line: its origin and its direction (carried guides turn with
+/// their link's axis).
+fn guide_line(origin: &Origin, angle: &Value, carrier: Option<&Ident>) -> TokenStream {
+    let origin = match origin {
+        Origin::Point(p) => {
+            let p = local(p);
+            quote!(#p)
+        }
+        Origin::Coords(x, y) => {
+            let (x, y) = (x.emit(), y.emit());
+            quote!(::mechanism::Point2::new(#x, #y))
+        }
+    };
+    let dir = match carrier {
+        None => unit_vector(angle),
+        Some(link) => {
+            let axis = format_ident!("axis_{}", link);
+            if angle.fold() == Some(0.0) {
+                quote!(#axis)
+            } else {
+                let u = unit_vector(angle);
+                quote!(::mechanism::link::local_offset(&#axis, &#u))
+            }
+        }
+    };
+    quote!(::mechanism::guide::Line { origin: #origin, dir: #dir })
+}
+
+/// A point's offset in its link's frame, folded when literal.
+fn point_offset(offset: &Local) -> TokenStream {
+    match offset {
+        Local::Cartesian(x, y) => {
+            let (x, y) = (x.emit(), y.emit());
+            quote!(::mechanism::Vector2::new(#x, #y))
+        }
+        Local::Polar(d, a) => match (d.fold(), a.fold()) {
+            (Some(d), Some(a)) => {
+                let (s, c) = a.sin_cos();
+                let (x, y) = (lit(d * c), lit(d * s));
+                quote!(::mechanism::Vector2::new(#x, #y))
+            }
+            _ => {
+                let (d, u) = (d.emit(), unit_vector(a));
+                quote!((#u * #d))
+            }
+        },
+    }
+}
+
+/// The position struct, built from the outputs and the stored values later
+/// code reads.
+struct PositionStruct<'a> {
+    /// Stored values that are read and are not outputs.
+    hidden: Vec<&'a Stored>,
+    /// The inputs are kept (`pos.input`): a later analysis reads them.
+    keep_input: bool,
+}
+
+impl<'a> PositionStruct<'a> {
+    fn new(code: &'a PositionCode, reads: &Reads) -> Self {
+        let out_names: BTreeSet<String> = code.outputs.iter().map(|(n, _)| n.to_string()).collect();
+        let hidden = code
+            .stored
+            .iter()
+            .filter(|f| {
+                !out_names.contains(&f.field.to_string())
+                    && reads.reads(Analysis::Position, &f.field)
+            })
+            .collect();
+        PositionStruct {
+            hidden,
+            keep_input: reads.reads(Analysis::Position, &format_ident!("input")),
+        }
+    }
+
+    /// `(field, init)` of the kept inputs, empty when they are not kept.
+    fn input(&self, input_ty: &Ident) -> (TokenStream, TokenStream) {
+        if self.keep_input {
+            (
+                quote!(#[doc(hidden)] pub input: #input_ty<T>,),
+                quote!(input,),
+            )
+        } else {
+            (TokenStream::new(), TokenStream::new())
+        }
+    }
+}
+
+/// The position struct and the `position` method; with cranks marked
+/// `as cos_sin`, also the `CosSin` input struct and `position_cos_sin`.
+/// `reads`: what every later reader reads of the struct.
+pub(super) fn items(
+    em: &Emitter<'_>,
+    code: &PositionCode,
+    reads: &Reads,
+    inputs: &[Ident],
+) -> Generated {
+    let model = em.model;
+    let names = TypeNames::of(model);
+    let (name, vis, position_ty, input_ty) =
+        (&names.name, &model.vis, &names.position, &names.input);
+    let layout = PositionStruct::new(code, reads);
+    let (input_field, input_init) = layout.input(input_ty);
+    let (out_names, out_types): (Vec<Ident>, Vec<TokenStream>) =
+        code.outputs.iter().cloned().unzip();
+    let hidden: Vec<&Ident> = layout.hidden.iter().map(|f| &f.field).collect();
+    let hidden_locals: Vec<&Ident> = layout.hidden.iter().map(|f| &f.local).collect();
+    let hidden_types: Vec<&TokenStream> = layout.hidden.iter().map(|f| &f.ty).collect();
+    let (pos_marker, pos_marker_init) =
+        marker(out_names.is_empty() && hidden.is_empty() && !layout.keep_input);
+    let pos_docs = output_docs(&em.plan.outputs, 0);
+    let pos_doc = format!("Position of [`{name}`]: points in the definition's length unit, link angles in rad in (-pi, pi] from +x, counter-clockwise; slide displacements in length units.");
+    let mut out = Generated::default();
+    out.items.extend(quote! {
+        #[doc = #pos_doc]
+        #[derive(Clone, Copy, PartialEq)]
+        #[allow(non_snake_case)]
+        #vis struct #position_ty<T: ::mechanism::Real = ::core::primitive::f64> {
+            #(#[doc = #pos_docs] pub #out_names: #out_types,)*
+            #(#[doc(hidden)] pub #hidden: #hidden_types,)*
+            #input_field
+            #pos_marker
+        }
+    });
+    out.items.extend(debug_impl(position_ty, &out_names, &[]));
+    // Field names and the position code's locals that hold them.
+    let out_locals: Vec<Ident> = out_names.iter().map(local).collect();
+    let init: Vec<TokenStream> = out_names
+        .iter()
+        .chain(hidden.iter().copied())
+        .zip(out_locals.iter().chain(hidden_locals.iter().copied()))
+        .map(|(field, value)| {
+            if field == value {
+                quote!(#field)
+            } else {
+                quote!(#field: #value)
+            }
+        })
+        .collect();
+    let value = quote!(#position_ty { #(#init,)* #input_init #pos_marker_init });
+    let (pos_code, pos_out_code) = (&code.code, &code.out_code);
+    out.methods.extend(quote! {
+        /// Solves the position analysis for the driver inputs (rad or length units).
+        ///
+        /// Errors name the group that cannot be assembled or is singular.
+        #[inline(always)]
+        #[allow(non_snake_case, unused_variables)]
+        pub fn position(&self, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error<T>> {
+            let input = *input;
+            #pos_code
+            #pos_out_code
+            ::core::result::Result::Ok(#value)
+        }
+    });
+    out.push(cos_sin_items(em, &names, inputs, layout.keep_input, &value));
+    out
+}
+
+/// The inputs of cranks marked `as cos_sin`.
+fn marked_cranks(model: &Model) -> Vec<&Ident> {
+    model
+        .stmts
+        .iter()
+        .filter_map(|s| match &s.kind {
+            Kind::Crank {
+                input,
+                cos_sin: true,
+                ..
+            } => Some(input),
+            _ => None,
+        })
+        .collect()
+}
+
+/// `NameCosSin` and `position_cos_sin`, when a crank is marked `as cos_sin`
+/// (nothing otherwise). `value`: the position struct's value at the end.
+fn cos_sin_items(
+    em: &Emitter<'_>,
+    names: &TypeNames,
+    inputs: &[Ident],
+    keep_input: bool,
+    value: &TokenStream,
+) -> Generated {
+    let (model, plan) = (em.model, em.plan);
+    let marked = marked_cranks(model);
+    let mut out = Generated::default();
+    if marked.is_empty() {
+        return out;
+    }
+    let em_cs = Emitter::new(model, plan, true);
+    let mut cs_code = TokenStream::new();
+    for &i in &plan.solve {
+        cs_code.extend(em_cs.position(&model.stmts[i]).0);
+    }
+    let cs_out = em.outputs_code(true);
+    let (name, vis, cs_ty, input_ty, position_ty) = (
+        &names.name,
+        &model.vis,
+        &names.cos_sin,
+        &names.input,
+        &names.position,
+    );
+    let field_ty: Vec<TokenStream> = inputs
+        .iter()
+        .map(|i| {
+            if marked.contains(&i) {
+                quote!(::mechanism::driver::crank::CosSin<T>)
+            } else {
+                quote!(T)
+            }
+        })
+        .collect();
+    let copied: Vec<TokenStream> = inputs
+        .iter()
+        .map(|i| {
+            if marked.contains(&i) {
+                quote!(#i: <T as ::mechanism::Real>::lit(0.0))
+            } else {
+                quote!(#i: input_cs.#i)
+            }
+        })
+        .collect();
+    let cs_input = if keep_input {
+        quote!(let input = #input_ty { #(#copied,)* };)
+    } else {
+        TokenStream::new()
+    };
+    let cs_doc = format!("Driver inputs of [`{name}`] for `position_cos_sin`: the cranks written `INPUT as cos_sin` take their angle as `(cos, sin)` (need not be unit: it is normalized), the other inputs as in [`{input_ty}`].");
+    out.items.extend(quote! {
+        #[doc = #cs_doc]
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        #[allow(non_snake_case)]
+        #vis struct #cs_ty<T = ::core::primitive::f64> {
+            #(#[doc = "Driver input."] pub #inputs: #field_ty,)*
+        }
+    });
+    out.methods.extend(quote! {
+        /// Solves the position analysis with the marked cranks' angles
+        /// given as `(cos, sin)` (no sine or cosine is evaluated for
+        /// them; their link angle, if an output, is one `atan2`). Where
+        /// the position records the inputs (for a slider driver's rates),
+        /// the marked cranks' entries are 0: nothing reads them.
+        #[inline(always)]
+        #[allow(non_snake_case, unused_variables)]
+        pub fn position_cos_sin(&self, input: &#cs_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error<T>> {
+            let input_cs = *input;
+            #cs_input
+            #cs_code
+            #cs_out
+            ::core::result::Result::Ok(#value)
+        }
+    });
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::emit::test_support::{flat, four_bar, planned};
+    use proc_macro2::TokenStream;
+    use std::str::FromStr;
+
+    /// The statement named `name`.
+    fn stmt<'m>(model: &'m Model, name: &str) -> &'m Stmt {
+        model.stmts.iter().find(|s| s.name == name).unwrap()
+    }
+
+    // Proves a crank marked `as cos_sin` reads `input_cs.NAME.cos/.sin` only in
+    // `position_cos_sin`, and its angle in `position` as before.
+    #[test]
+    fn a_marked_crank_reads_cos_sin_only_in_position_cos_sin() {
+        let src = four_bar("").replace("theta2) as link2", "theta2 as cos_sin) as link2");
+        let (model, plan) = planned(&src);
+        let crank = stmt(&model, "A");
+        let plain = flat(&Emitter::new(&model, &plan, false).position(crank).0);
+        let cs = flat(&Emitter::new(&model, &plan, true).position(crank).0);
+        assert!(
+            plain.contains("crank::position(&pos_O2,self.crank,input.theta2)"),
+            "{plain}"
+        );
+        assert!(
+            cs.contains(
+                "position_cos_sin(&pos_O2,self.crank,input_cs.theta2.cos,input_cs.theta2.sin)"
+            ),
+            "{cs}"
+        );
+    }
+
+    // Proves a link's unit axis is computed only when something in position
+    // needs it: a point on the coupler asks for `axis_link3`, and nothing asks
+    // for the rocker's.
+    #[test]
+    fn link_axes_only_where_a_point_or_guide_needs_them() {
+        let (model, plan) = planned(&four_bar(""));
+        let code = flat(&Emitter::new(&model, &plan, false).code().code);
+        assert!(
+            code.contains("letaxis_link3=grp_B.r1/self.coupler;"),
+            "{code}"
+        );
+        assert!(!code.contains("axis_link4"), "{code}");
+        let no_point = four_bar("").replace("let P = point(link3, from A, 120.0, 30 deg);", "");
+        let (model, plan) = planned(&no_point);
+        let code = flat(&Emitter::new(&model, &plan, false).code().code);
+        assert!(!code.contains("axis_"), "{code}");
+    }
+
+    // Proves the position struct keeps, besides the outputs, exactly the
+    // stored values some reader reads: with no reader it has no hidden field;
+    // a read of `pos.grp_B` keeps the RRR's state with its core type.
+    #[test]
+    fn the_struct_keeps_only_the_values_read() {
+        let (model, plan) = planned(&four_bar("analysis position; outputs { B }"));
+        let em = Emitter::new(&model, &plan, false);
+        let code = em.code();
+        let inputs = crate::emit::solution::input_names(&model);
+        let none = flat(&items(&em, &code, &Reads::default(), &inputs).items);
+        assert!(!none.contains("doc(hidden)"), "{none}");
+        let mut reads = Reads::default();
+        reads.scan(&TokenStream::from_str("pos.grp_B.c").unwrap());
+        let kept = flat(&items(&em, &code, &reads, &inputs).items);
+        assert!(
+            kept.contains("#[doc(hidden)]pubgrp_B:::mechanism::dyad::rrr::RrrPosition<T>,"),
+            "{kept}"
+        );
+        assert!(!kept.contains("grp_A"), "{kept}");
+    }
+}

@@ -1,0 +1,273 @@
+//! One `let` statement's kind and arguments lowered to a [`Kind`]: the kind
+//! checked against the vocabulary and its arity, then one function per kind
+//! reading the arguments by role ([`Args`]).
+
+use super::args::{Args, NumberScope};
+use super::{Kind, Local, Origin};
+use crate::diag::{did_you_mean, Diagnostics};
+use crate::parse::vocabulary::{arity, unsupported_driver, usage, KINDS};
+use crate::parse::{self, Arg};
+use crate::value::convert;
+use crate::value::{Scope, Value};
+use syn::spanned::Spanned;
+use syn::Expr;
+
+/// The error for a statement written with fewer arguments than its kind
+/// takes, before any argument is read: read in order, the arguments would
+/// fill the wrong roles (`rrr(A, 3.5, O4, left)` would read `left` as the
+/// second length), and the message would be about a name instead of the
+/// count.
+fn too_few_arguments(stmt: &parse::Let, kind: &str) -> Option<String> {
+    let (least, most) = arity(kind, &stmt.args)?;
+    let given = stmt.args.len();
+    if given >= least {
+        return None;
+    }
+    let takes = if kind == "point" {
+        "it takes 4 (3 in the `(x, y)` form)".to_string()
+    } else if least == most {
+        format!("it takes {least}")
+    } else {
+        format!("it takes at least {least}")
+    };
+    Some(format!(
+        "missing argument(s) for `{kind}`: {given} given, {takes}; usage: `{}`",
+        usage(kind)
+    ))
+}
+
+/// Lowers the kind and arguments of the `let` statement `stmt`; `None` when
+/// they are rejected (reported).
+pub(super) fn lower_kind(
+    stmt: &parse::Let,
+    scope: &NumberScope<'_>,
+    errors: &mut Diagnostics,
+) -> Option<Kind> {
+    let kind = stmt.kind.to_string();
+    if !KINDS.contains(&kind.as_str()) {
+        let hint = match unsupported_driver(&kind) {
+            Some(h) => format!("unsupported driver `{kind}`: {h}"),
+            None => format!(
+                "unknown statement kind `{kind}`; expected one of {}{}",
+                KINDS.join(", "),
+                did_you_mean(&kind, KINDS.iter().copied())
+            ),
+        };
+        errors.push(stmt.kind.span(), hint);
+        return None;
+    }
+    if let Some(message) = too_few_arguments(stmt, &kind) {
+        errors.push(stmt.args_span, message);
+        return None;
+    }
+    let mut a = Args {
+        args: stmt.args.iter(),
+        span: stmt.args_span,
+        usage: usage(&kind),
+        kind: kind.clone(),
+        scope,
+        errors,
+        failed: false,
+    };
+    let k = match kind.as_str() {
+        "ground" => ground(&mut a)?,
+        "guide" => guide(&mut a, stmt)?,
+        "crank" => crank(&mut a)?,
+        "slider" => slider(&mut a)?,
+        "actuator" => actuator(&mut a)?,
+        "rrr" => rrr(&mut a)?,
+        "rrp" => rrp(&mut a)?,
+        "rpr" => rpr(&mut a)?,
+        "prp" => prp(&mut a)?,
+        "rpp" => rpp(&mut a)?,
+        "point" => point(&mut a, stmt)?,
+        _ => return None,
+    };
+    a.finish();
+    if a.failed {
+        None
+    } else {
+        Some(k)
+    }
+}
+
+/// `ground(x, y)`.
+fn ground(a: &mut Args) -> Option<Kind> {
+    Some(Kind::Ground {
+        x: a.number("x coordinate", false)?,
+        y: a.number("y coordinate", false)?,
+    })
+}
+
+/// `guide(ORIGIN, angle)` (fixed) or `guide(POINT, LINK, angle?)` (carried);
+/// the origin a point or `(x, y)`.
+fn guide(a: &mut Args, stmt: &parse::Let) -> Option<Kind> {
+    let scope = a.scope;
+    let origin = match a.next("origin")? {
+        Arg::Value(Expr::Tuple(t), None) if t.elems.len() == 2 => {
+            let x = convert(&t.elems[0], scope)
+                .map_err(|e| a.errors.error(e))
+                .ok()?;
+            let y = convert(&t.elems[1], scope)
+                .map_err(|e| a.errors.error(e))
+                .ok()?;
+            Origin::Coords(x, y)
+        }
+        Arg::Value(Expr::Path(p), None) if p.path.get_ident().is_some() => {
+            Origin::Point(p.path.get_ident()?.clone())
+        }
+        other => {
+            let span = match other {
+                Arg::From(i) => i.span(),
+                Arg::Value(e, _) => e.span(),
+            };
+            a.fail(
+                span,
+                "expected the guide's origin: a point name or `(x, y)`".into(),
+            );
+            return None;
+        }
+    };
+    // Second argument: a link (carried guide) or an angle (fixed guide).
+    let carrier = match stmt.args.get(1) {
+        Some(Arg::Value(Expr::Path(p), None))
+            if p.path.get_ident().is_some()
+                && scope.constant(p.path.get_ident()?).is_none()
+                && !scope.is_param(p.path.get_ident()?) =>
+        {
+            a.name("carrying link")
+        }
+        _ => None,
+    };
+    let angle = if carrier.is_some() && a.args.len() == 0 {
+        Value::lit(0.0, stmt.args_span)
+    } else {
+        a.number("direction angle", true)?
+    };
+    Some(Kind::Guide {
+        origin,
+        angle,
+        carrier,
+    })
+}
+
+/// `crank(PIVOT, radius, INPUT)` or `crank(PIVOT, radius, INPUT as cos_sin)`.
+fn crank(a: &mut Args) -> Option<Kind> {
+    let pivot = a.name("pivot point")?;
+    let radius = a.length("crank radius")?;
+    let (input, cos_sin) = a.crank_input()?;
+    Some(Kind::Crank {
+        pivot,
+        radius,
+        input,
+        cos_sin,
+    })
+}
+
+/// `slider(GUIDE, INPUT, offset?)`.
+fn slider(a: &mut Args) -> Option<Kind> {
+    Some(Kind::Slider {
+        guide: a.name("guide")?,
+        input: a.name("input name")?,
+        offset: a.optional_number("offset"),
+    })
+}
+
+/// `actuator(A, radius, B, INPUT, mode)`.
+fn actuator(a: &mut Args) -> Option<Kind> {
+    Some(Kind::Actuator {
+        a: a.name("pivot-side point A")?,
+        l: a.length("radius |C - A|")?,
+        b: a.name("cylinder base point B")?,
+        input: a.name("input name")?,
+        mode: a.mode("actuator")?,
+    })
+}
+
+/// `rrr(A, l1, B, l2, mode)`.
+fn rrr(a: &mut Args) -> Option<Kind> {
+    Some(Kind::Rrr {
+        a: a.name("first known joint")?,
+        l1: a.length("first link length")?,
+        b: a.name("second known joint")?,
+        l2: a.length("second link length")?,
+        mode: a.mode("rrr")?,
+    })
+}
+
+/// `rrp(A, l, GUIDE, mode, offset?)`.
+fn rrp(a: &mut Args) -> Option<Kind> {
+    Some(Kind::Rrp {
+        a: a.name("known joint")?,
+        l: a.length("link length")?,
+        guide: a.name("guide")?,
+        mode: a.mode("rrp")?,
+        offset: a.optional_number("offset"),
+    })
+}
+
+/// `rpr(A, B, mode, offset?)`.
+fn rpr(a: &mut Args) -> Option<Kind> {
+    Some(Kind::Rpr {
+        a: a.name("block pin")?,
+        b: a.name("rocker pivot")?,
+        mode: a.mode("rpr")?,
+        offset: a.optional_number("offset"),
+    })
+}
+
+/// `prp(GUIDE1, GUIDE2, offset1?, offset2?)`.
+fn prp(a: &mut Args) -> Option<Kind> {
+    let g1 = a.name("first guide")?;
+    let g2 = a.name("second guide")?;
+    let offset1 = a.optional_number("first offset");
+    let offset2 = a.optional_number("second offset");
+    Some(Kind::Prp {
+        g1,
+        g2,
+        offset1,
+        offset2,
+    })
+}
+
+/// `rpp(A, GUIDE, slot angle, offset?)`.
+fn rpp(a: &mut Args) -> Option<Kind> {
+    Some(Kind::Rpp {
+        a: a.name("block pin")?,
+        guide: a.name("guide")?,
+        slot: a.number("slot angle", true)?,
+        offset: a.optional_number("offset"),
+    })
+}
+
+/// `point(LINK, from A, distance, angle)` or `point(LINK, from A, (x, y))`.
+fn point(a: &mut Args, stmt: &parse::Let) -> Option<Kind> {
+    let scope = a.scope;
+    let link = a.name("link")?;
+    let from = a.from()?;
+    let local = match stmt.args.get(2) {
+        Some(Arg::Value(Expr::Tuple(t), None)) if t.elems.len() == 2 => {
+            a.args.next();
+            let x = convert(&t.elems[0], scope)
+                .map_err(|e| a.errors.error(e))
+                .ok()?;
+            let y = convert(&t.elems[1], scope)
+                .map_err(|e| a.errors.error(e))
+                .ok()?;
+            Local::Cartesian(x, y)
+        }
+        Some(Arg::Value(Expr::Tuple(t), _)) => {
+            a.fail(
+                t.span(),
+                format!(
+                    "a point's local coordinates are `(x, y)`, two numbers, not {}; usage: `{}`",
+                    t.elems.len(),
+                    a.usage
+                ),
+            );
+            return None;
+        }
+        _ => Local::Polar(a.number("distance", false)?, a.number("angle", true)?),
+    };
+    Some(Kind::Point { link, from, local })
+}

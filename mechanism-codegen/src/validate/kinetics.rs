@@ -1,0 +1,337 @@
+//! The rules of the force analysis, after planning (they need the points of
+//! every link): it is asked for where there are loads, nothing is joined to
+//! an actuator's cylinder, masses sit on links at points of those links,
+//! forces act at points of one link (or name it), the guides and links loads
+//! name exist, and load values have names of their own.
+
+use super::names::{another, defined_where, link_hints, named_links, symbols};
+use crate::diag::{did_you_mean, Diagnostics};
+use crate::model::{ForceSpec, ForceSpecValue, Kind, Level, MassSpec, Model};
+use crate::plan::{references, Plan};
+use std::collections::BTreeMap;
+use syn::Ident;
+
+/// Rule (with a force analysis): no group or driver is joined to an
+/// actuator's cylinder (at a point of it or on a guide it carries). The force
+/// analysis treats the cylinder as a massless two-force member (its force
+/// along its axis is the drive) and solves no equations for it, so a
+/// reaction passed to it would be lost and every effort behind it wrong; the
+/// kinematics are fine, so this is an error of the force analysis only.
+pub(super) fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
+    let cylinders: Vec<String> = model
+        .stmts
+        .iter()
+        .filter(|s| matches!(s.kind, Kind::Actuator { .. }))
+        .filter_map(|s| s.links.get(1).map(Ident::to_string))
+        .collect();
+    for stmt in &model.stmts {
+        if matches!(
+            stmt.kind,
+            Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. }
+        ) {
+            continue;
+        }
+        for r in references(stmt) {
+            let name = r.to_string();
+            let (body, what) = match (plan.body_of_point(&name), plan.body_of_guide(&name)) {
+                (Some(b), _) => (b, "a point of"),
+                (None, Some(b)) => (b, "a guide carried by"),
+                (None, None) => continue,
+            };
+            if cylinders.contains(&body) {
+                errors.push(
+                    r.span(),
+                    format!(
+                        "`{name}` is {what} the actuator's cylinder `{body}`, which the force analysis takes as a massless two-force member (it carries only its axial force): `{}` cannot be joined to it there; join it to the link the actuator drives or to the ground, or leave out the force analysis (no `mass`, `force`, `torque`)",
+                        stmt.name
+                    ),
+                );
+            }
+        }
+    }
+}
+
+/// Rule: `analysis forces` has something to carry (a mass, force or torque),
+/// and an `analysis` below the force analysis is not written beside the
+/// statements that ask for it.
+pub(super) fn level_matches_loads(model: &Model, errors: &mut Diagnostics) {
+    let k = &model.kinetics;
+    let loaded = !k.masses.is_empty() || !k.forces.is_empty() || !k.torques.is_empty();
+    if model.level == Level::Forces && !loaded && !k.declared {
+        if let Some(span) = model.level_span {
+            errors.push(span, "`analysis forces` needs something to carry: add `mass LINK { m = .., at = POINT }`, `force at POINT = (fx, fy);` or `torque on LINK = t;`");
+        }
+    }
+    if k.declared && model.level < Level::Forces {
+        if let Some(span) = model.level_span {
+            errors.push(span, "this `analysis` leaves out the force analysis that the `mass`, `force` and `torque` statements ask for; write `analysis forces;` or remove the line");
+        }
+    }
+}
+
+/// Rule: `gravity` comes with at least one mass, through which it acts.
+pub(super) fn gravity_has_masses(model: &Model, errors: &mut Diagnostics) {
+    let k = &model.kinetics;
+    if k.gravity.is_some() && k.masses.is_empty() {
+        if let Some((span, _, _)) = &k.gravity {
+            errors.push(*span, "`gravity` acts through masses, and no link has one: add `mass LINK { m = .., at = POINT }`");
+        }
+    }
+}
+
+/// Rule: a mass sits on a link that can carry loads, one `mass` per link,
+/// at a point of that link.
+pub(super) fn masses_on_their_links(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
+    let mut with_mass: BTreeMap<String, Ident> = BTreeMap::new();
+    for m in &model.kinetics.masses {
+        mass_on_its_link(model, plan, m, &mut with_mass, errors);
+    }
+}
+
+/// [`masses_on_their_links`] for the mass `m`; `with_mass`: the links with a
+/// mass so far.
+fn mass_on_its_link(
+    model: &Model,
+    plan: &Plan,
+    m: &MassSpec,
+    with_mass: &mut BTreeMap<String, Ident>,
+    errors: &mut Diagnostics,
+) {
+    if !loadable_link(model, plan, &m.link, "a mass", errors) {
+        return;
+    }
+    let link = m.link.to_string();
+    if with_mass.contains_key(&link) {
+        errors.push(
+            m.link.span(),
+            format!("`{link}` already has a mass (its first `mass` statement comes earlier); give each link one `mass` statement: merge the two"),
+        );
+        return;
+    }
+    with_mass.insert(link.clone(), m.link.clone());
+    let points = &plan.links[&link].points;
+    let at = m.at.to_string();
+    if !plan.owner.contains_key(&at) {
+        let message = unknown_point(
+            model,
+            plan,
+            &at,
+            points,
+            "the centre of mass is a point of the link",
+        );
+        if let Some(message) = message {
+            errors.push(m.at.span(), message);
+        }
+        return;
+    }
+    if !points.contains(&at) {
+        errors.push(
+            m.at.span(),
+            format!(
+                "the centre of mass must be a point of `{link}`, and `{at}` is not; its points are {}; or define one: `let G = point({link}, from {}, distance, angle);`",
+                points.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(", "),
+                points.first().map(String::as_str).unwrap_or("A"),
+            ),
+        );
+    }
+}
+
+/// Rule: a force acts at a point of one link that can carry loads (the link
+/// named after `on`, or the only one the point is on), and a force `along` a
+/// guide names a guide.
+pub(super) fn forces_at_points_of_links(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
+    for f in &model.kinetics.forces {
+        // A force at no known point gets that error alone.
+        if force_at_a_point_of_its_link(model, plan, f, errors) {
+            force_along_a_guide(model, plan, f, errors);
+        }
+    }
+}
+
+/// [`forces_at_points_of_links`]: the point and link of the force `f`;
+/// `false` when its point is not found.
+fn force_at_a_point_of_its_link(
+    model: &Model,
+    plan: &Plan,
+    f: &ForceSpec,
+    errors: &mut Diagnostics,
+) -> bool {
+    let at = f.at.to_string();
+    if !plan.owner.contains_key(&at) {
+        let on =
+            f.on.as_ref()
+                .and_then(|l| plan.links.get(&l.to_string()))
+                .map_or(&[][..], |info| &info.points[..]);
+        if let Some(message) = unknown_point(model, plan, &at, on, "a force acts at a point") {
+            errors.push(f.at.span(), message);
+        }
+        return false;
+    }
+    match &f.on {
+        Some(link) => {
+            if loadable_link(model, plan, link, "a force", errors) {
+                let l = link.to_string();
+                if !plan.links[&l].points.contains(&at) {
+                    errors.push(
+                        f.at.span(),
+                        format!(
+                            "`{at}` is not a point of `{l}`; its points are {}",
+                            plan.links[&l]
+                                .points
+                                .iter()
+                                .map(|p| format!("`{p}`"))
+                                .collect::<Vec<_>>()
+                                .join(", ")
+                        ),
+                    );
+                }
+            }
+        }
+        None => {
+            let links = plan.links_with_point(&at);
+            match links.len() {
+                0 => errors.push(
+                    f.at.span(),
+                    format!("`{at}` is on no moving link (a force on the ground needs no analysis); apply the force at a point of a link"),
+                ),
+                1 => {
+                    if is_cylinder(model, &links[0]) {
+                        errors.push(f.at.span(), format!("`{at}` is on an actuator's cylinder only, a massless two-force member here"));
+                    }
+                }
+                _ => errors.push(
+                    f.at.span(),
+                    format!(
+                        "`{at}` joins {}: say which link the force acts on, e.g. `force at {at} on {} = (fx, fy);`",
+                        links.iter().map(|l| format!("`{l}`")).collect::<Vec<_>>().join(" and "),
+                        links[0]
+                    ),
+                ),
+            }
+        }
+    }
+    true
+}
+
+/// [`forces_at_points_of_links`]: the guide of a force `along` one.
+fn force_along_a_guide(model: &Model, plan: &Plan, f: &ForceSpec, errors: &mut Diagnostics) {
+    if let ForceSpecValue::Along(guide, _) = &f.value {
+        let g = guide.to_string();
+        if !plan.guides.contains_key(&g) {
+            let what = match symbols(model).get(&g) {
+                Some((cat, _)) => format!("`{g}` is {}, not a guide", cat.article()),
+                None => format!("cannot find guide `{g}`"),
+            };
+            errors.push(
+                guide.span(),
+                format!(
+                    "{what}; `along` takes a guide, whose direction the force follows{}",
+                    did_you_mean(&g, plan.guides.keys().map(String::as_str))
+                ),
+            );
+        }
+    }
+}
+
+/// Rule: a torque acts on a link that can carry loads.
+pub(super) fn torques_on_links(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
+    for t in &model.kinetics.torques {
+        loadable_link(model, plan, &t.on, "a torque", errors);
+    }
+}
+
+/// Rule: a load value's name is not a parameter's, a constant's or a
+/// statement's.
+pub(super) fn load_names_unique(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
+    for (load, _) in &model.kinetics.loads {
+        let name = load.to_string();
+        if model.params.iter().any(|(p, _)| p == load)
+            || model.consts.contains_key(&name)
+            || plan.defined.contains_key(&name)
+        {
+            let whence = defined_where(model, load)
+                .map(|w| format!(" {w}"))
+                .unwrap_or_default();
+            errors.push(
+                load.span(),
+                format!("`{name}` is already defined{whence}; a load value needs a name of its own: rename it, e.g. `{}`, here and where it is used", another(&name)),
+            );
+        }
+    }
+}
+
+/// `true` for the cylinder of an actuator (a massless two-force member).
+fn is_cylinder(model: &Model, link: &str) -> bool {
+    model.stmts.iter().any(|s| {
+        matches!(s.kind, Kind::Actuator { .. }) && s.links.get(1).is_some_and(|l| l == link)
+    })
+}
+
+/// Checks that `link` names a link that can carry loads; pushes an error otherwise.
+fn loadable_link(
+    model: &Model,
+    plan: &Plan,
+    link: &Ident,
+    what: &str,
+    errors: &mut Diagnostics,
+) -> bool {
+    let name = link.to_string();
+    if !plan.links.contains_key(&name) {
+        let named = named_links(model);
+        let hint = did_you_mean(&name, named.iter().map(String::as_str));
+        if name == "ground" || name == "frame" {
+            errors.push(
+                link.span(),
+                format!("`{name}` is the frame, which is fixed: {what} on it moves nothing; put it on a moving link (the names after `as`){hint}"),
+            );
+            return false;
+        }
+        let (kind, hint) = if plan.defined.contains_key(&name) || plan.guides.contains_key(&name) {
+            (format!("`{name}` is not a link"), hint)
+        } else {
+            (
+                format!("cannot find link `{name}`"),
+                link_hints(model, hint),
+            )
+        };
+        errors.push(
+            link.span(),
+            format!("{kind}; {what} belongs to a link (the names after `as`){hint}"),
+        );
+        return false;
+    }
+    if is_cylinder(model, &name) {
+        errors.push(
+            link.span(),
+            format!("`{name}` is an actuator's cylinder, a massless two-force member here; put the load on the link it drives"),
+        );
+        return false;
+    }
+    true
+}
+
+/// The error for a load's point `at` that is no point: what it is instead,
+/// or that nothing has that name, with the nearest point's name (among
+/// `first`, the points of the link named, when one is near; else among every
+/// point). `what` says what the point is for ("a force acts at a point").
+/// `None` when `at` is defined by a statement whose arguments were rejected
+/// (that error is reported; this one would follow from it).
+fn unknown_point(
+    model: &Model,
+    plan: &Plan,
+    at: &str,
+    first: &[String],
+    what: &str,
+) -> Option<String> {
+    if model.failed.iter().any(|f| f.name == at) {
+        return None;
+    }
+    let mut hint = did_you_mean(at, first.iter().map(String::as_str));
+    if hint.is_empty() {
+        hint = did_you_mean(at, plan.owner.keys().map(String::as_str));
+    }
+    Some(match symbols(model).get(at) {
+        Some((cat, _)) => format!("`{at}` is {}, not a point; {what}{hint}", cat.article()),
+        None => format!("cannot find point `{at}`{hint}"),
+    })
+}

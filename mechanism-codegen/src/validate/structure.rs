@@ -1,0 +1,202 @@
+//! The rules on the mechanism as a whole: a driver, the declared mobility,
+//! the outputs, an RPP's slot, and what `#[self_test]` needs.
+
+use super::names::{is_named_link, link_hints, symbols, Category};
+use crate::diag::{did_you_mean, Diagnostics};
+use crate::model::{Input, Kind, Model};
+use proc_macro2::Span;
+
+/// Rule: at least one driver, unless a statement's kind was already rejected
+/// (it may have been meant as the driver: no cascade).
+pub(super) fn has_driver(model: &Model, errors: &mut Diagnostics) {
+    if model.unknown_kinds
+        || !model.failed.is_empty()
+        || model.stmts.iter().any(|s| s.kind.is_driver())
+    {
+        return;
+    }
+    errors.push(
+        model.name.span(),
+        format!(
+            "`{}` has no driver, so nothing moves; add one, e.g. `let A = crank(O, radius, theta) as link2;`, a `slider(...)` or an `actuator(...)`",
+            model.name
+        ),
+    );
+}
+
+/// Rule: a declared `dof N` matches Gruebler's count of the links and joints the
+/// statements create (each driver adds one degree of freedom, each class II
+/// group none), i.e. the number of inputs.
+pub(super) fn dof_matches(model: &Model, errors: &mut Diagnostics) {
+    let Some(declared) = &model.dof else { return };
+    if !model.failed.is_empty() {
+        return; // a rejected statement would make the count meaningless
+    }
+    let Ok(n) = declared.base10_parse::<i64>() else {
+        errors.push(declared.span(), "`dof` takes a whole number");
+        return;
+    };
+    let (mut links, mut joints) = (1i64, 0i64);
+    let mut inputs = Vec::new();
+    for stmt in &model.stmts {
+        match stmt.kind {
+            Kind::Crank { .. } | Kind::Slider { .. } => {
+                links += 1;
+                joints += 1;
+            }
+            // Cylinder = barrel + rod: three bodies, four lower pairs.
+            Kind::Actuator { .. } => {
+                links += 3;
+                joints += 4;
+            }
+            Kind::Rrr { .. }
+            | Kind::Rrp { .. }
+            | Kind::Rpr { .. }
+            | Kind::Prp { .. }
+            | Kind::Rpp { .. } => {
+                links += 2;
+                joints += 3;
+            }
+            _ => {}
+        }
+        if let Some(i) = stmt.kind.input() {
+            inputs.push(i.to_string());
+        }
+    }
+    let mobility = 3 * (links - 1) - 2 * joints;
+    if mobility != n {
+        errors.push(
+            declared.span(),
+            format!(
+                "the mechanism has {mobility} degree(s) of freedom (Gruebler: 3*({links}-1) - 2*{joints} = {mobility}) for {} input(s) [{}], but `dof {n}` is declared; add or remove a driver, or correct `dof`",
+                inputs.len(),
+                inputs.join(", ")
+            ),
+        );
+    }
+}
+
+/// Rule: every requested output is a point, a named link or a slide.
+pub(super) fn outputs_exist(model: &Model, errors: &mut Diagnostics) {
+    let Some(outputs) = &model.outputs else {
+        return;
+    };
+    let table = symbols(model);
+    let mut listed: Vec<String> = Vec::new();
+    for o in outputs {
+        let name = o.to_string();
+        if listed.contains(&name) {
+            errors.push(
+                o.span(),
+                format!("`{name}` is listed twice in `outputs`; remove this one"),
+            );
+            continue;
+        }
+        listed.push(name.clone());
+        match table.get(&name) {
+            Some((Category::Point | Category::Link | Category::Slide, _)) => {}
+            Some((cat, _)) => errors.push(
+                o.span(),
+                format!(
+                    "this definition cannot give `{name}` as an output: it is {}; outputs are points, links (their angles and rates) and slide displacements",
+                    cat.article()
+                ),
+            ),
+            None => {
+                let candidates = table
+                    .iter()
+                    .filter(|(n, (c, _))| match c {
+                        Category::Point | Category::Slide => true,
+                        Category::Link => is_named_link(model, n),
+                        _ => false,
+                    })
+                    .map(|(n, _)| n.as_str());
+                errors.push(
+                    o.span(),
+                    format!(
+                        "this definition cannot give `{name}`: no point, link or slide has that name{}",
+                        link_hints(model, did_you_mean(&name, candidates))
+                    ),
+                );
+            }
+        }
+    }
+}
+
+/// Rule: an RPP's slot crosses its guide. The slotted link translates along
+/// the guide without turning relative to it (a carried guide turns the slot
+/// with it), so the slot keeps its angle to the guide at every pose: a slot
+/// parallel to the guide is parallel at every input, and the joint is at
+/// infinity everywhere. Known at compile time for a slot angle that folds to
+/// a number; "parallel" is the test the run-time solve applies
+/// (`mechanism_core::dyad::rpp`: `|sin(slot)| <= 16 eps`, in f64 here).
+pub(super) fn rpp_slot_crosses_guide(model: &Model, errors: &mut Diagnostics) {
+    for stmt in &model.stmts {
+        let Kind::Rpp { guide, slot, .. } = &stmt.kind else {
+            continue;
+        };
+        let Some(angle) = slot.fold() else {
+            continue;
+        };
+        if angle.sin().abs() <= 16.0 * f64::EPSILON {
+            // Rounded to 1e-9 deg, so that `180 deg` (rounded once to
+            // radians and back) shows as 180.
+            let deg = (angle.to_degrees() * 1e9).round() / 1e9;
+            errors.push(
+                slot.span,
+                format!(
+                    "the slot of `{}` is at {deg} deg to guide `{guide}`, parallel to it; the slotted link slides along `{guide}` without turning, so the slot stays parallel at every pose and the block's pin is at infinity for every input: give the slot an angle across the guide (e.g. `90 deg`, a slot perpendicular to it)",
+                    stmt.name
+                ),
+            );
+        }
+    }
+}
+
+/// `#[self_test]` sweeps the input range: every input needs one, and there
+/// are at most two inputs.
+pub(super) fn self_test_sweepable(model: &Model, errors: &mut Diagnostics) {
+    if let Some(span) = model.self_test {
+        errors.extend(self_test_requirements(&model.inputs, span));
+    }
+}
+
+/// The error when `#[self_test]` cannot run (an input without a range).
+fn self_test_requirements(inputs: &[Input], span: Span) -> Option<syn::Error> {
+    // A declared range that was rejected is reported already.
+    let missing: Vec<String> = inputs
+        .iter()
+        .filter(|i| i.range.is_none() && !i.declared)
+        .map(|i| format!("`{}`", i.name))
+        .collect();
+    if !missing.is_empty() {
+        return Some(syn::Error::new(
+            span,
+            format!(
+                "`#[self_test]` tests the mechanism over its input range, and {} has none: declare it, e.g. `range {} = (0.0, 0.1);` (sliders and actuators have no default range)",
+                missing.join(", "),
+                inputs.iter().find(|i| i.range.is_none() && !i.declared).map(|i| i.name.to_string()).unwrap_or_default()
+            ),
+        ));
+    }
+    if inputs.len() > 2 {
+        return Some(syn::Error::new(
+            span,
+            "`#[self_test]` sweeps one or two inputs; this mechanism has more",
+        ));
+    }
+    // Two inputs are swept (and `check()` generated) over a declared box
+    // only: a crank's default full turn does not count (`check::emit_check`).
+    if inputs.len() == 2 {
+        if let Some(i) = inputs.iter().find(|i| !i.declared) {
+            return Some(syn::Error::new(
+                span,
+                format!(
+                    "`#[self_test]` sweeps the box of a two-input mechanism's declared ranges, and `{0}` has none (a crank's default full turn is used only when it is the only input): declare it, e.g. `range {0} = (0 deg, 360 deg);`",
+                    i.name
+                ),
+            ));
+        }
+    }
+    None
+}

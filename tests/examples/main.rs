@@ -1,0 +1,29 @@
+//! The example mechanisms of `examples/common/scenes.rs` (four-bar, six-bar,
+//! shaper, slider-crank, five-bar and their loaded variants), checked without
+//! trusting any number the code prints:
+//!
+//! - [`kinematics`]: loop closure, velocities and accelerations against
+//!   finite differences, f32 against f64, the source documents' values;
+//! - [`forces`]: the force analysis against the documents' tables, closed
+//!   forms, the power balance and every link's equilibrium;
+//! - [`plots`]: the examples' SVG pictures read back with an XML parser;
+//! - [`firmware_table`]: the host's values the firmware compares with
+//!   (`tests/firmware/src/expected.rs`) equal what the host computes now;
+//! - [`cli_options`]: the examples' command line (options, `--help`, typos).
+
+/// The examples' command line, at the crate root where its macros expect it.
+#[path = "../../examples/common/cli.rs"]
+mod cli;
+#[path = "../../examples/common/mod.rs"]
+mod common;
+/// The scenes as `crate::scenes`, where `tests/firmware/src/rows.rs` expects them.
+use common::scenes;
+
+#[path = "../../mechanism-plot/tests/check/mod.rs"]
+mod check;
+
+mod cli_options;
+mod firmware_table;
+mod forces;
+mod kinematics;
+mod plots;
