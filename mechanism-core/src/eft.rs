@@ -67,16 +67,6 @@ pub(crate) fn split<T: Real>(a: T) -> (T, T) {
     (hi, a - hi)
 }
 
-/// `pi/2 = P1 + P2 + P3` for [`reduce`] (the parts the `f64` reductions of
-/// [`crate::lane::sin_cos`] and [`crate::sincos64`] use): `P1` and `P2`
-/// have 33 significant bits, so `k P1` and `k P2` are exact for `|k| <
-/// 2^20`; `P3` is the rest, rounded.
-pub(crate) const P1: f64 = 1.570_796_326_734_125_6; // 0x1.921fb544p+0, 33 bits
-/// The second part of `pi/2` (see [`P1`]).
-pub(crate) const P2: f64 = 6.077_100_506_303_966e-11; // 0x1.0b4611a6p-34, 33 bits
-/// The rest of `pi/2` after [`P1`] and [`P2`], rounded.
-pub(crate) const P3: f64 = 2.022_266_248_795_950_6e-21; // the rest, rounded
-
 /// `x - k (p1 + p2 + p3)` as an unevaluated sum `r + rt` (`|rt|` at most
 /// about `ulp(r) / 2`: the two-sum's error plus `k p3`), for `k` an integer
 /// with `k p1` and `k p2` exact (`p1`, `p2` with at most `53 - b`

@@ -10,7 +10,7 @@
 //! the API, and nalgebra's arithmetic on `Vector2<T>` needs `RealField`-like
 //! bounds anyway. Why not bare `RealField`: `FromPrimitive::from_f64` returns an
 //! `Option` (a panic path if unwrapped) and `abs` is ambiguous between two
-//! supertraits; [`Real::lit`] and [`abs`] avoid both.
+//! supertraits; [`Real::lit`] and [`crate::geometry::abs`] avoid both.
 //! Implemented for `f32` and `f64` only.
 
 use nalgebra::RealField;
@@ -22,18 +22,6 @@ use nalgebra::RealField;
 #[inline(always)]
 pub(crate) fn single<T: Real>() -> bool {
     T::eps() > T::lit(1e-10)
-}
-
-/// Absolute value by a comparison (no libm call; `RealField::abs` and
-/// `ComplexField::abs` are ambiguous on `T: Real`). NaN stays NaN. Also
-/// [`crate::geometry::abs`].
-#[inline(always)]
-pub fn abs<T: Real>(x: T) -> T {
-    if x < T::zero() {
-        -x
-    } else {
-        x
-    }
 }
 
 /// A floating-point scalar: `f32` or `f64`. `LowerExp` (`{:e}`) so that an

@@ -54,6 +54,7 @@ fn kind<T: Real>(e: &Error<T>) -> &'static str {
         Fault::NonFinite { .. } => "NonFinite",
         Fault::NonPositive { .. } => "NonPositive",
         Fault::Negative { .. } => "Negative",
+        _ => "another fault",
     }
 }
 
