@@ -62,7 +62,7 @@ pub fn length<T: Real>(v: &Vector2<T>) -> T {
 
 /// Angle of `v` from +x, counter-clockwise, in radians in `(-pi, pi]`.
 ///
-/// `v.y + 0` turns a negative zero into `+0` (IEEE 754: `-0 + 0 = +0` when
+/// Through [`Real::angle_kernel`]: `v.y + 0` turns a negative zero into `+0` (IEEE 754: `-0 + 0 = +0` when
 /// rounding to nearest), so a vector along `-x` gives `pi` whatever the sign
 /// of its zero `y`: `atan2(-0, -1)` is `-pi`, outside the range.
 ///
@@ -72,13 +72,7 @@ pub fn length<T: Real>(v: &Vector2<T>) -> T {
 /// direction as `pi`, so `-pi` is returned as `pi`.
 #[inline(always)]
 pub fn angle<T: Real>(v: &Vector2<T>) -> T {
-    let a = (v.y + T::zero()).atan2_kernel(v.x);
-    let pi = T::pi();
-    if a <= -pi {
-        pi
-    } else {
-        a
-    }
+    v.y.angle_kernel(v.x)
 }
 
 /// Largest `|angle|` (rad) at which an input angle still means one: `2^24`

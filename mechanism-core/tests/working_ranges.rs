@@ -407,23 +407,30 @@ mod rrr_group {
         Ok(err / (T::eps().as_f64() * 1.3 / 0.75))
     }
 
-    /// Position: every normal length (the cold path's first powers) up to
-    /// where `cross(r1, r2)`, a field of the result (L^2), overflows: f32
-    /// lengths 1.2e-38 (2^-126) to about 1.8e19 (2^64), f64 2.2e-308 to
-    /// 1.3e154. Inside within 4 of the unit above; beyond the top
-    /// `NonFinite`.
+    /// Position: the group's scale `l1 + l2` within `2^-42 .. 2^42` in f32
+    /// (2.3e-13 .. 4.4e12), `2^-340 .. 2^340` in f64, where its third powers
+    /// are normal numbers (`dyad::rrr`'s documented range; `l1 + l2` is
+    /// `2.2 2^j` here). Inside, within 4 of the unit above, at both ends and
+    /// between; beyond either end `NonFinite`, or `Singular` where `|B - A|^2` itself
+    /// leaves the normal range (never a silent answer).
     #[test]
     fn position_range() {
-        for j in [-126, -125, -100, -64, 0, 60, 62] {
+        for j in [-42, -36, -20, 0, 20, 36, 40] {
             let w = position_at::<f32>(j).unwrap_or_else(|e| panic!("f32 2^{j}: {e:?}"));
             assert!(w <= 4.0, "f32 2^{j}: {w}");
         }
-        for j in [-1022, -1000, -600, 0, 500, 508] {
+        for j in [-341, -300, 0, 300, 338] {
             let w = position_at::<f64>(j).unwrap_or_else(|e| panic!("f64 2^{j}: {e:?}"));
             assert!(w <= 4.0, "f64 2^{j}: {w}");
         }
-        assert_eq!(kind(&position_at::<f32>(66).unwrap_err()), "NonFinite");
-        assert_eq!(kind(&position_at::<f64>(514).unwrap_err()), "NonFinite");
+        for j in [-126, -64, -45, 42, 60] {
+            let k = kind(&position_at::<f32>(j).unwrap_err());
+            assert!(["NonFinite", "Singular"].contains(&k), "f32 2^{j}: {k}");
+        }
+        for j in [-1000, -343, 341, 500] {
+            let k = kind(&position_at::<f64>(j).unwrap_err());
+            assert!(["NonFinite", "Singular"].contains(&k), "f64 2^{j}: {k}");
+        }
     }
 
     /// Below the normal range (subnormal lengths) nothing is promised but
@@ -451,13 +458,11 @@ mod rrr_group {
         }
     }
 
-    /// Rates: the determinant `cross(r1, r2)` (L^2) must be a normal
-    /// number: f32 lengths about 1.1e-19 (2^-63) .. 1.8e19, f64 1.5e-154 ..
-    /// 1.3e154. Inside, `omega1`, `omega2` at scale `2^j` (rates of the
-    /// joints times `2^j`, so the angular rates are scale-free) equal the
-    /// unit-scale double-double rates within `8 eps / kappa^2`; below,
-    /// `Singular` (a subnormal determinant, before: rates from its few
-    /// bits, or an infinite reciprocal).
+    /// Rates, over the position's range of scale (where the determinant
+    /// `cross(r1, r2)`, L^2, is a normal number too): `omega1`, `omega2` at
+    /// scale `2^j` (rates of the joints times `2^j`, so the angular rates
+    /// are scale-free) equal the unit-scale double-double rates within `8
+    /// eps / kappa^2`, at both ends; beyond, the position's error.
     fn rates_at<T: Real>(j: i32) -> Result<f64, Error<T>> {
         let (a, l1, b, l2) = rrr_case::<T>(j);
         let pos = rrr::position(&a, l1, &b, l2, Mode::Plus)?;
@@ -478,22 +483,17 @@ mod rrr_group {
 
     #[test]
     fn rates_range() {
-        for j in [-62, -40, 0, 40, 62] {
+        for j in [-42, -20, 0, 20, 40] {
             let w = rates_at::<f32>(j).unwrap_or_else(|e| panic!("f32 2^{j}: {e:?}"));
             assert!(w <= 8.0, "f32 2^{j}: {w}");
         }
-        for j in [-510, -300, 0, 300, 508] {
+        for j in [-341, -200, 0, 200, 338] {
             let w = rates_at::<f64>(j).unwrap_or_else(|e| panic!("f64 2^{j}: {e:?}"));
             assert!(w <= 8.0, "f64 2^{j}: {w}");
         }
-        for j in [-66, -70, -100] {
-            assert_eq!(
-                kind(&rates_at::<f32>(j).unwrap_err()),
-                "Singular",
-                "f32 2^{j}"
-            );
+        for j in [-66, -45, 42] {
+            assert!(rates_at::<f32>(j).is_err(), "f32 2^{j}");
         }
-        assert_eq!(kind(&rates_at::<f64>(-540).unwrap_err()), "Singular");
     }
 
     /// Assembly: inside the rounding band `4 eps (l1 + l2)` beyond either
@@ -539,7 +539,7 @@ mod actuator_driver {
     /// the top, `NonFinite` attributed to the actuator.
     #[test]
     fn position_range() {
-        for j in [-126, 0, 62] {
+        for j in [-42, 0, 40] {
             let (a, l, b, len) = rrr_case::<f32>(j);
             let got = actuator::position(&a, l, &b, len, Mode::Minus).unwrap();
             let unit = {
@@ -553,7 +553,7 @@ mod actuator_driver {
                 "2^{j}"
             );
         }
-        let (a, l, b, len) = rrr_case::<f32>(66);
+        let (a, l, b, len) = rrr_case::<f32>(42);
         let e = actuator::position(&a, l, &b, len, Mode::Minus).unwrap_err();
         assert_eq!(
             (e.primitive, kind(&e)),

@@ -42,25 +42,16 @@ pub fn position<T: Real>(
     length: T,
     theta: T,
 ) -> Result<CrankPosition<T>, Error<T>> {
-    if abs(theta) >= angle_limit::<T>() {
-        return Err(angle_beyond(theta));
-    }
     // In the scalar's own precision (f32 stays f32: see `crate::trig`). A
-    // non-finite angle gives NaN here, caught by `place`'s one test.
+    // non-finite angle (NaN fails the comparison too) or one beyond the
+    // limit fails `place`'s one test.
     let (sin, cos) = theta.sin_cos_kernel();
-    place(pivot, length, Vector2::new(cos, sin), theta.finite())
-}
-
-/// The error for an angle at or beyond the limit (an infinite one too).
-#[cold]
-#[inline(never)]
-fn angle_beyond<T: Real>(theta: T) -> Error<T> {
-    let what = if theta.finite() {
-        "crank angle (beyond 2^24 rad in f32, 2^53 in f64: spacing of 2 rad or more)"
-    } else {
-        "crank angle"
-    };
-    Error::new(P, Fault::NonFinite { what })
+    place(
+        pivot,
+        length,
+        Vector2::new(cos, sin),
+        abs(theta) < angle_limit::<T>(),
+    )
 }
 
 /// A crank angle given by its cosine and sine (as an encoder or a resolver
@@ -122,24 +113,25 @@ fn scaled_pair<T: Real>(v: Vector2<T>) -> (Vector2<T>, T) {
     }
 }
 
-/// The crank at unit `axis`: two comparisons on the ordinary path (a
-/// positive length, a finite tip); a non-finite angle, length or pivot makes
-/// the tip non-finite and is told apart on the cold path.
-/// `angle_finite` is evaluated lazily by the optimizer (only the error path
-/// reads it).
+/// The crank at unit `axis`: three comparisons on the ordinary path (the
+/// angle below its limit, a positive length, a finite tip); a non-finite
+/// angle, length or pivot makes the tip non-finite and is told apart on the
+/// cold path. `angle_ok`: the angle is finite and below
+/// [`angle_limit`](crate::geometry::angle_limit) (`true` for a `(cos, sin)`
+/// pair).
 #[inline(always)]
 fn place<T: Real>(
     pivot: &Point2<T>,
     length: T,
     axis: Vector2<T>,
-    angle_finite: bool,
+    angle_ok: bool,
 ) -> Result<CrankPosition<T>, Error<T>> {
     let r = axis * length;
     let tip = pivot + r;
-    if length > T::zero() && all_finite([tip.x, tip.y]) {
+    if angle_ok && length > T::zero() && all_finite([tip.x, tip.y]) {
         Ok(CrankPosition { tip, r, axis })
     } else {
-        Err(bad_placement(length, angle_finite))
+        Err(bad_placement(length, angle_ok))
     }
 }
 
@@ -147,17 +139,17 @@ fn place<T: Real>(
 /// the length, then the tip (a non-finite pivot or an overflow).
 #[cold]
 #[inline(never)]
-fn bad_placement<T: Real>(length: T, angle_finite: bool) -> Error<T> {
+fn bad_placement<T: Real>(length: T, angle_ok: bool) -> Error<T> {
     // One construction of each fault kind (the cold code stays small).
     let length_ok = length.finite() && length > T::zero();
-    let what = if !angle_finite {
-        "crank angle"
+    let what = if !angle_ok {
+        "crank angle (not finite, or beyond 2^24 rad in f32, 2^53 in f64)"
     } else if length_ok {
         "crank tip"
     } else {
         "crank length"
     };
-    let fault = if angle_finite && length.finite() && !length_ok {
+    let fault = if angle_ok && length.finite() && !length_ok {
         Fault::NonPositive {
             what,
             value: length,
