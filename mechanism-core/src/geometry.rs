@@ -500,8 +500,14 @@ mod tests {
             angle(&Vector2::new(-1.0f64, -1e-300)),
             core::f64::consts::PI
         );
-        assert_eq!(crate::__private::lane::angle(-1e-10f32, -1.0), core::f32::consts::PI);
-        assert_eq!(crate::__private::lane::angle(-1e-300f64, -1.0), core::f64::consts::PI);
+        assert_eq!(
+            crate::__private::lane::angle(-1e-10f32, -1.0),
+            core::f32::consts::PI
+        );
+        assert_eq!(
+            crate::__private::lane::angle(-1e-300f64, -1.0),
+            core::f64::consts::PI
+        );
         for k in 1..200 {
             let y = -(k as f64) * 1e-9;
             let a = angle(&Vector2::new(-1.0f32, y as f32));

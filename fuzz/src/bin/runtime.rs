@@ -515,6 +515,7 @@ impl Stats {
                     Fault::NonFinite { .. } => "NonFinite",
                     Fault::NonPositive { .. } => "NonPositive",
                     Fault::Negative { .. } => "Negative",
+                    _ => "other",
                 };
                 *self.err.entry(kind).or_default() += 1;
                 None

@@ -29,6 +29,22 @@
 //! solves the 2x2 system in closed form with determinant `cross(r1, r2)`
 //! (`l1 l2 sin` of the angle between the links: zero at toggle).
 //! Units: lengths in the user's unit L, rates per second; angular rates in rad/s.
+//!
+//! Range of scale (each end a typed error, never a silent answer;
+//! `tests/working_ranges.rs` checks both sides of each): the position forms
+//! third powers of the lengths (`d k`), so it needs the group's scale
+//! `l1 + l2` within `2^-42 .. 2^42` (f32 2.3e-13 .. 4.4e12; f64 `2^-340 ..
+//! 2^340`, 4.5e-103 .. 2.2e102) and `2 |B - A|^2 l1` a normal number (`A`
+//! and `B` not far closer than the links are long: at f64 `|B - A|` = 1e-150
+//! under links of 1e-51 `C` came out on `A`), else `NonFinite` naming the
+//! range; `|B - A|^2` below the normal range is `Singular` (the joints
+//! coincide for `T`). Inside, the rates carry the floating-point model's
+//! absolute term where a product underflows (slow motion: `dot(vB - vA, r)`
+//! below the normal range adds at most `2^-149 / |det|` rad/s in f32, and a
+//! rate below it moves `C` by at most `l1` times the subnormal spacing);
+//! dividing `r` by the determinant before the dot products removes the
+//! first but rounds once more in ordinary use (the f32 six-bar's worst rate
+//! error 2.90e-6 -> 3.68e-6 with the RRP done alike), so it is not done.
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
@@ -396,13 +412,12 @@ fn rates<T: Real>(
     let condition = min(abs(det) / scale, T::one());
     let inv_det = T::one() / det;
     let dv = difference(vb, va);
-    // `r / det` (1/L) before the dot products: `dot(dv, r2)` (L^2/s) is
-    // subnormal for f32 lengths and speeds of about 1e-19 (a four-bar at
-    // that scale turning at 1e-4 rad/s lost its rocker's rate), while the
-    // rates (1/s) are ordinary numbers there.
-    let omega1 = dot(&dv, &(pos.r2 * inv_det));
-    let omega2 = dot(&dv, &(pos.r1 * inv_det));
+    let omega1 = dot(&dv, &pos.r2) * inv_det;
+    let omega2 = dot(&dv, &pos.r1) * inv_det;
     let vc = plus(va, relative_velocity(&pos.r1, omega1));
+    // One check for the results: a non-finite `va`, `vb` (so `dv`) makes
+    // `omega1` non-finite (`r2 != 0`), and with it `vc` (`r1 != 0`, and
+    // `va` enters `vc` directly); `omega2` covers `dv` through `r1`.
     if all_finite([omega2, vc.x, vc.y]) {
         Ok(RrrVelocity {
             omega1,
@@ -442,12 +457,12 @@ pub fn acceleration<T: Real>(
     ab: Option<&Vector2<T>>,
 ) -> Result<RrrAcceleration<T>, Error<T>> {
     let da = difference(ab, aa);
-    // `omega^2 r` as `(r omega) omega` (a velocity times a rate): `omega^2`
-    // alone underflows first. `r / det` first, as in `rates`.
-    let w = da + (pos.r1 * vel.omega1) * vel.omega1 - (pos.r2 * vel.omega2) * vel.omega2;
-    let alpha1 = dot(&w, &(pos.r2 * vel.inv_det));
-    let alpha2 = dot(&w, &(pos.r1 * vel.inv_det));
+    let w = da + pos.r1 * (vel.omega1 * vel.omega1) - pos.r2 * (vel.omega2 * vel.omega2);
+    let alpha1 = dot(&w, &pos.r2) * vel.inv_det;
+    let alpha2 = dot(&w, &pos.r1) * vel.inv_det;
     let ac = plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1));
+    // One check, as in `velocity_lengths`: `w` (so `aa`, `ab` and the rates)
+    // propagates into `alpha1`, `ac` and `alpha2`.
     if all_finite([alpha2, ac.x, ac.y]) {
         Ok(RrrAcceleration { alpha1, alpha2, ac })
     } else {
