@@ -155,6 +155,19 @@ struct Check<'a> {
     /// rad/s in f32 gives velocities known only to that spacing, and a rate
     /// that underflows to zero moves a result by less than this.
     floor: f64,
+    /// The floating-point model's absolute term of a rate (rad/s) below the
+    /// normal range, as a velocity or acceleration: the subnormal spacing
+    /// (2^-149 in f32, 2^-1074 in f64) times the length scale `S`. A rate
+    /// that underflows moves a joint by at most that much (the documented
+    /// error of `link::relative_acceleration`, `dyad::rrr`, `dyad::rrp`): it
+    /// matters only where the speeds are below about `1e-38 S` per second
+    /// in f32 (`1e-308 S` in f64), where it is the model's, not a silent
+    /// answer.
+    under: f64,
+    /// The subnormal spacing of the scalar in units of `s2`: no coordinate
+    /// is known better than that (subnormal lengths, such as an f32 crank
+    /// of 1e-45, leave a residual of a fraction of it).
+    grain: f64,
 }
 
 /// `2^floor(log2 x)` for a finite `x > 0` (1 otherwise).
@@ -203,11 +216,18 @@ impl Check<'_> {
         } else {
             f64::MIN_POSITIVE
         };
+        let spacing = if T::eps().as_f64() > 1e-10 {
+            2f64.powi(-149)
+        } else {
+            f64::from_bits(1)
+        };
         Check {
             eps: T::eps().as_f64(),
             s2,
             fails,
             floor: tiny,
+            under: spacing * s2,
+            grain: spacing / s2,
         }
     }
 
@@ -235,7 +255,18 @@ impl Check<'_> {
 
     /// `|x| <= K eps scale` (+ the underflow floor), all in units of `s2`.
     fn small(&mut self, what: &str, residual: f64, scale: f64) {
-        let tol = K * self.eps * scale + K * self.floor;
+        self.small_plus(what, residual, scale, 0.0);
+    }
+
+    /// [`Check::small`] for a rate or an acceleration: with the absolute
+    /// term of a rate below the normal range ([`Check::under`]).
+    fn small_rate(&mut self, what: &str, residual: f64, scale: f64) {
+        self.small_plus(what, residual, scale, K * self.under);
+    }
+
+    /// `|x| <= K eps scale + K floor + extra`, all in units of `s2`.
+    fn small_plus(&mut self, what: &str, residual: f64, scale: f64, extra: f64) {
+        let tol = K * self.eps * scale + K * self.floor + K * self.grain + extra;
         if !(tol.is_finite() && residual.is_finite()) {
             // The check's own products overflowed (inputs near the largest
             // finite number; the values themselves were checked finite).
@@ -280,7 +311,7 @@ impl Check<'_> {
     /// d/dt |x - y|^2 = 0: `(vx - vy) . (x - y) = 0`, against `vmax S`.
     fn dist_rate(&mut self, what: &str, x: P, y: P, vx: P, vy: P, vmax: f64) {
         let r = dot(sub(vx, vy), sub(self.sc(x), self.sc(y)));
-        self.small(what, r, vmax);
+        self.small_rate(what, r, vmax);
     }
 
     /// d2/dt2 |x - y|^2 = 0: `(ax - ay) . (x - y) + |vx - vy|^2 = 0`, in
@@ -301,12 +332,12 @@ impl Check<'_> {
     ) {
         let dv = sub(vx, vy);
         let r = dot(sub(ax, ay), sub(self.sc(x), self.sc(y))) + dot(self.sc(dv), dv);
-        self.small(what, r, amax + vmax * (vmax / self.s2));
+        self.small_rate(what, r, amax + vmax * (vmax / self.s2));
     }
 
     /// A point moving on a fixed line: `cross(dir, v) = 0`.
     fn along(&mut self, what: &str, dir: P, rate: P, max: f64) {
-        self.small(what, cross(dir, rate), max);
+        self.small_rate(what, cross(dir, rate), max);
     }
 
     /// The crank's tip at `r` from the pivot in the direction of its link

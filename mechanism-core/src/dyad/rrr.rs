@@ -38,13 +38,11 @@
 //! and `B` not far closer than the links are long: at f64 `|B - A|` = 1e-150
 //! under links of 1e-51 `C` came out on `A`), else `NonFinite` naming the
 //! range; `|B - A|^2` below the normal range is `Singular` (the joints
-//! coincide for `T`). Inside, the rates carry the floating-point model's
-//! absolute term where a product underflows (slow motion: `dot(vB - vA, r)`
-//! below the normal range adds at most `2^-149 / |det|` rad/s in f32, and a
-//! rate below it moves `C` by at most `l1` times the subnormal spacing);
-//! dividing `r` by the determinant before the dot products removes the
-//! first but rounds once more in ordinary use (the f32 six-bar's worst rate
-//! error 2.90e-6 -> 3.68e-6 with the RRP done alike), so it is not done.
+//! coincide for `T`). Inside, the rates divide `r1`, `r2` by the
+//! determinant before the dot products (no subnormal `L^2/s` product for
+//! small, slow groups), and a rate below the normal range moves `C` by at
+//! most `l1` times the subnormal spacing, the floating-point model's
+//! absolute term (f32 `2^-149 l1`, 6e-33 L/s at the top of the range).
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
@@ -412,8 +410,12 @@ fn rates<T: Real>(
     let condition = min(abs(det) / scale, T::one());
     let inv_det = T::one() / det;
     let dv = difference(vb, va);
-    let omega1 = dot(&dv, &pos.r2) * inv_det;
-    let omega2 = dot(&dv, &pos.r1) * inv_det;
+    // `r / det` (1/L) before the dot products: `dot(dv, r2)` (L^2/s) is
+    // subnormal for small, slow groups (f32 links of 1e-12 turning at 3e-15
+    // rad/s; f64 links of 1e-97 at 1e-119 rad/s), while the rates (1/s)
+    // are ordinary numbers there.
+    let omega1 = dot(&dv, &(pos.r2 * inv_det));
+    let omega2 = dot(&dv, &(pos.r1 * inv_det));
     let vc = plus(va, relative_velocity(&pos.r1, omega1));
     // One check for the results: a non-finite `va`, `vb` (so `dv`) makes
     // `omega1` non-finite (`r2 != 0`), and with it `vc` (`r1 != 0`, and
@@ -458,8 +460,9 @@ pub fn acceleration<T: Real>(
 ) -> Result<RrrAcceleration<T>, Error<T>> {
     let da = difference(ab, aa);
     let w = da + pos.r1 * (vel.omega1 * vel.omega1) - pos.r2 * (vel.omega2 * vel.omega2);
-    let alpha1 = dot(&w, &pos.r2) * vel.inv_det;
-    let alpha2 = dot(&w, &pos.r1) * vel.inv_det;
+    // `r / det` first, as in `rates`.
+    let alpha1 = dot(&w, &(pos.r2 * vel.inv_det));
+    let alpha2 = dot(&w, &(pos.r1 * vel.inv_det));
     let ac = plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1));
     // One check, as in `velocity_lengths`: `w` (so `aa`, `ab` and the rates)
     // propagates into `alpha1`, `ac` and `alpha2`.
