@@ -87,7 +87,8 @@ impl<'a> GroupKind<'a> for Point<'a> {
             }
         };
         let value = match (base, relative) {
-            (Some(b), Some(r)) => quote!(#b + #r),
+            // Checked again: the sum of two finite vectors can overflow.
+            (Some(b), Some(r)) => quote!(::mechanism::link::point_sum(&#b, #r) #t),
             (Some(b), None) => b,
             (None, Some(r)) => r,
             (None, None) => quote!(::mechanism::Vector2::zeros()),
