@@ -873,6 +873,11 @@ fn any_mechanism_sample_writes_its_files() {
     assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"));
     let csv = std::fs::read_to_string(dir.join("jansen.csv")).unwrap();
     assert_eq!(csv.lines().count(), 74, "a header and 73 poses");
+    let foot = std::fs::read_to_string(dir.join("foot.svg")).unwrap();
+    assert!(
+        foot.contains("\"F.x\"") && foot.contains("\"F.y\""),
+        "the foot's chart"
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -886,5 +891,7 @@ fn any_sample() -> Result<(), Box<dyn std::error::Error>> {
     mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", "cm", &poses, &["F"])?
         .write_animation(4.0, "jansen.svg")?;
     std::fs::write("jansen.csv", mechanism_plot::any::csv("theta", "rad", &poses))?;
+    let cm = mechanism_plot::any::Units { length: "cm", force: "N" };
+    mechanism_plot::any::chart("Jansen leg", ("θ", "rad"), cm, &poses, &["F"])?.write("foot.svg")?;
     Ok(())
 }

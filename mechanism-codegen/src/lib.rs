@@ -3,10 +3,11 @@
 //! ones before it):
 //!
 //! [`parse`] (tokens to syntax) -> [`model`] (typed statements, inputs and
-//! their ranges) -> [`validate`] (one rule per function) -> [`plan`] (solve
-//! order, owners, what each analysis needs) -> [`check`] (the mechanism
-//! assembled over its input range at expansion time) -> [`emit`] (the
-//! generated items, one file per family).
+//! their ranges) -> `kinds` (what each statement kind means, one module per
+//! kind, read by every later stage) -> [`validate`] (one rule per function)
+//! -> [`plan`] (solve order, owners, what each analysis needs) -> [`check`]
+//! (the mechanism assembled over its input range at expansion time) ->
+//! [`emit`] (the generated items, one file per family).
 //!
 //! Errors from every stage go to one [`diag::Diagnostics`] and are reported
 //! together, sorted by position, each on the user's token; on error, stub
@@ -16,6 +17,7 @@
 pub mod check;
 pub mod diag;
 pub mod emit;
+pub(crate) mod kinds;
 pub mod model;
 pub mod parse;
 pub mod plan;

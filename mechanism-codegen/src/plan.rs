@@ -3,20 +3,12 @@
 //! turns (its own angular velocity, a guide's, or none), which guides move.
 
 use crate::diag::Diagnostics;
-use crate::model::{ForceSpecValue, Kind, Model, Origin, Stmt};
+use crate::kinds::{self, LinkShape};
+use crate::model::{ForceSpecValue, Model, Stmt};
 use std::collections::{BTreeMap, BTreeSet};
 use syn::Ident;
 
-/// How a link turns.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Turn {
-    /// It never turns (a block on a fixed guide).
-    None,
-    /// It has its own angular velocity, found by the statement that creates it.
-    Own,
-    /// It turns with another link (a block on a carried guide).
-    With(String),
-}
+pub use crate::kinds::Turn;
 
 /// What the plan knows of a link.
 #[derive(Clone, Debug)]
@@ -71,75 +63,19 @@ pub struct Plan {
 /// group's joint to its first link (the link that reaches the point from
 /// the group's first known joint), the reference point of an RPP to its
 /// second link (the yoke), a link point to its link. `None` for statements
-/// that define no point (guides, RPR slides).
+/// that define no point (guides, RPR slides). Each kind says which
+/// (`kinds::GroupKind::point_owner`).
 pub fn point_owner(stmt: &Stmt) -> Option<Option<String>> {
-    let link = |k: usize| Some(Some(stmt.links[k].to_string()));
-    match &stmt.kind {
-        Kind::Ground { .. } => Some(None),
-        Kind::Guide { .. } | Kind::Rpr { .. } => None,
-        Kind::Crank { .. }
-        | Kind::Slider { .. }
-        | Kind::Actuator { .. }
-        | Kind::Rrr { .. }
-        | Kind::Rrp { .. }
-        | Kind::Prp { .. } => link(0),
-        Kind::Rpp { .. } => link(1),
-        Kind::Point { link, .. } => Some(Some(link.to_string())),
-    }
+    kinds::of(stmt).point_owner()
 }
 
 /// Names a statement refers to (points, guides, links), with their tokens.
 pub fn references(stmt: &Stmt) -> Vec<&Ident> {
-    match &stmt.kind {
-        Kind::Ground { .. } => vec![],
-        Kind::Guide {
-            origin, carrier, ..
-        } => {
-            let mut r = vec![];
-            if let Origin::Point(p) = origin {
-                r.push(p);
-            }
-            r.extend(carrier.iter());
-            r
-        }
-        Kind::Crank { pivot, .. } => vec![pivot],
-        Kind::Slider { guide, .. } => vec![guide],
-        Kind::Actuator { a, b, .. } | Kind::Rrr { a, b, .. } | Kind::Rpr { a, b, .. } => vec![a, b],
-        Kind::Rrp { a, guide, .. } | Kind::Rpp { a, guide, .. } => vec![a, guide],
-        Kind::Prp { g1, g2, .. } => vec![g1, g2],
-        Kind::Point { link, from, .. } => vec![link, from],
-    }
-}
-
-/// The points on each link a statement creates, its first point being the
-/// link's origin, and how each link turns.
-fn link_shapes(stmt: &Stmt) -> Vec<(Vec<String>, Turn, Option<String>)> {
-    let n = stmt.name.to_string();
-    let s = |i: &Ident| i.to_string();
-    match &stmt.kind {
-        Kind::Crank { pivot, .. } => vec![(vec![s(pivot), n], Turn::Own, None)],
-        Kind::Slider { guide, .. } => vec![(vec![n], Turn::None, Some(s(guide)))],
-        Kind::Actuator { a, b, .. } | Kind::Rrr { a, b, .. } => vec![
-            (vec![s(a), n.clone()], Turn::Own, None),
-            (vec![s(b), n], Turn::Own, None),
-        ],
-        Kind::Rrp { a, guide, .. } => vec![
-            (vec![s(a), n.clone()], Turn::Own, None),
-            (vec![n], Turn::None, Some(s(guide))),
-        ],
-        Kind::Rpr { a, b, .. } => {
-            vec![(vec![s(a)], Turn::Own, None), (vec![s(b)], Turn::Own, None)]
-        }
-        Kind::Prp { g1, g2, .. } => vec![
-            (vec![n.clone()], Turn::None, Some(s(g1))),
-            (vec![n], Turn::None, Some(s(g2))),
-        ],
-        Kind::Rpp { a, guide, .. } => vec![
-            (vec![s(a)], Turn::None, Some(s(guide))),
-            (vec![n], Turn::None, Some(s(guide))),
-        ],
-        _ => vec![],
-    }
+    kinds::of(stmt)
+        .references()
+        .into_iter()
+        .map(|(r, _)| r)
+        .collect()
 }
 
 /// Builds the plan. Errors: dependency cycles (with the cycle spelled out).
@@ -155,21 +91,27 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
             defined.insert(l.to_string(), i);
             let _ = j;
         }
-        if let Kind::Ground { .. } = stmt.kind {
+        let kind = kinds::of(stmt);
+        if kind.point_owner() == Some(None) {
             ground.push(stmt.name.to_string());
         }
-        if let Kind::Guide { carrier, .. } = &stmt.kind {
+        if let Some(carrier) = kind.guide_carrier() {
             guides.insert(
                 stmt.name.to_string(),
                 GuideInfo {
-                    carrier: carrier.as_ref().map(Ident::to_string),
+                    carrier: carrier.map(Ident::to_string),
                 },
             );
         }
     }
     // Link shapes need guide carriers resolved: Turn::None + guide -> With(carrier).
     for (i, stmt) in model.stmts.iter().enumerate() {
-        for (j, (points, turn, guide)) in link_shapes(stmt).into_iter().enumerate() {
+        for (j, shape) in kinds::of(stmt).link_shapes().into_iter().enumerate() {
+            let LinkShape {
+                points,
+                turn,
+                guide,
+            } = shape;
             let turn = match guide
                 .as_ref()
                 .and_then(|g| guides.get(g))
@@ -198,7 +140,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
         }
     }
     for stmt in &model.stmts {
-        if let Kind::Point { link, .. } = &stmt.kind {
+        if let Some(link) = kinds::of(stmt).on_link() {
             if let Some(info) = links.get_mut(&link.to_string()) {
                 info.points.push(stmt.name.to_string());
             }
@@ -322,6 +264,22 @@ impl Plan {
     }
 }
 
+impl kinds::Placed for Plan {
+    fn link_points(&self, link: &Ident) -> Option<&[String]> {
+        self.links
+            .get(&link.to_string())
+            .map(|l| l.points.as_slice())
+    }
+
+    fn is_defined(&self, name: &str) -> bool {
+        self.defined.contains_key(name)
+    }
+
+    fn is_ground_point(&self, point: &str) -> bool {
+        self.is_ground(point)
+    }
+}
+
 /// A slide displacement the user named: its name, the statement that
 /// solves it and which of the statement's slides it is (0 or 1; an RPR's
 /// slide is its defined name, slot 0).
@@ -358,22 +316,15 @@ fn outputs(model: &Model, plan: &Plan) -> Outputs {
     };
     for &i in &plan.order {
         let stmt = &model.stmts[i];
-        match stmt.kind {
-            Kind::Guide { .. } => {}
-            Kind::Rpr { .. } => {
-                if wanted(&stmt.name) {
-                    out.slides.push(Slide {
-                        name: stmt.name.clone(),
-                        stmt: i,
-                        slot: 0,
-                    });
-                }
-            }
-            _ => {
-                if wanted(&stmt.name) {
-                    out.points.push(stmt.name.clone());
-                }
-            }
+        let kind = kinds::of(stmt);
+        if kind.names_slide() && wanted(&stmt.name) {
+            out.slides.push(Slide {
+                name: stmt.name.clone(),
+                stmt: i,
+                slot: 0,
+            });
+        } else if kind.point_kind().is_some() && wanted(&stmt.name) {
+            out.points.push(stmt.name.clone());
         }
         for (link, named) in stmt.links.iter().zip(&stmt.links_named) {
             if *named && wanted(link) {

@@ -62,25 +62,81 @@ pub fn length<T: Real>(v: &Vector2<T>) -> T {
 
 /// Angle of `v` from +x, counter-clockwise, in radians in `(-pi, pi]`.
 ///
-/// `v.y + 0` turns a negative zero into `+0` (IEEE 754: `-0 + 0 = +0` when
+/// Through [`Real::angle_kernel`]: `v.y + 0` turns a negative zero into `+0` (IEEE 754: `-0 + 0 = +0` when
 /// rounding to nearest), so a vector along `-x` gives `pi` whatever the sign
 /// of its zero `y`: `atan2(-0, -1)` is `-pi`, outside the range.
+///
+/// A vector just below `-x` (`y` a tiny negative number, `x < 0`) has an
+/// exact angle above `-pi` by less than half an ulp of `pi`; it rounds to
+/// `-pi` of `T` (an f32 shaper's rod gave `-3.1415927`): that is the same
+/// direction as `pi`, so `-pi` is returned as `pi`.
 #[inline(always)]
 pub fn angle<T: Real>(v: &Vector2<T>) -> T {
-    (v.y + T::zero()).atan2_kernel(v.x)
+    v.y.angle_kernel(v.x)
 }
 
-/// `angle` (rad) reduced to `(-pi, pi]`: `angle - 2 pi k` with `k` the nearest
-/// integer to `angle / 2 pi`. Exact for `|angle| <= pi`; otherwise the error is
-/// the rounding of `2 pi k` (about `|angle| eps`). A crank's link angle is its
-/// input reduced this way, with no `atan2`.
+/// Largest `|angle|` (rad) at which an input angle still means one: `2^24`
+/// (1.7e7) for `f32`, `2^53` (9.0e15) for `f64`, where the spacing of the
+/// type's numbers reaches 2 rad (one ulp of the input turns a crank by a
+/// third of a turn). [`crate::driver::crank::position`] reports a larger
+/// angle as an error; [`wrap_angle`] is accurate to `|angle| eps` below it.
+#[inline(always)]
+pub fn angle_limit<T: Real>() -> T {
+    if crate::scalar::single::<T>() {
+        T::lit(16_777_216.0)
+    } else {
+        T::lit(9_007_199_254_740_992.0)
+    }
+}
+
+/// `angle` (rad) reduced to `(-pi, pi]`, for every finite `angle`: a
+/// crank's link angle is its input reduced this way.
+///
+/// - `|angle| <= pi`: unchanged (exact).
+/// - `pi < |angle| < angle_limit` (f32 1.7e7, f64 9.0e15): `angle - 2 pi
+///   k` with `k` the nearest integer to `angle / 2 pi`, moved into the
+///   range if rounding left it just outside; the error is the rounding of
+///   `2 pi k`, about `|angle| eps` (f64 at 1e5: 2e-11 rad; f32 at 1e3:
+///   1e-4 rad), below 1.5 rad at the limit, so one move suffices.
+/// - beyond ([`angle_limit`], where the input's own spacing is 2 rad or
+///   more: the crank reports such an angle as an error) the reduction is
+///   repeated until the result is in the range: in the range, but not the
+///   angle of `(cos angle, sin angle)` (the one-step reduction of f32
+///   2.2e8 gave -9.7, outside the range).
+///
+/// NaN or an infinity gives NaN.
 #[inline]
 pub fn wrap_angle<T: Real>(angle: T) -> T {
     let pi = T::pi();
     if angle <= pi && angle > -pi {
         return angle;
     }
-    let two_pi = T::two_pi();
+    let reduced = reduce_turns(angle);
+    if reduced > pi || reduced <= -pi {
+        // Only beyond the limit (NaN compares false and is returned).
+        return wrap_far(reduced);
+    }
+    reduced
+}
+
+/// [`wrap_angle`] beyond [`angle_limit`] (cold path): the reduction
+/// repeated while the result is outside the range (each pass divides the
+/// magnitude by about `1 / eps`; an infinity gives NaN at once).
+#[cold]
+#[inline(never)]
+fn wrap_far<T: Real>(mut reduced: T) -> T {
+    let pi = T::pi();
+    while reduced.finite() && (reduced > pi || reduced <= -pi) {
+        reduced = reduce_turns(reduced);
+    }
+    reduced
+}
+
+/// `angle - 2 pi round(angle / 2 pi)`, moved by `2 pi` when rounding left
+/// it just outside `(-pi, pi]`.
+#[inline]
+fn reduce_turns<T: Real>(angle: T) -> T {
+    let (pi, two_pi) = (T::pi(), T::two_pi());
     let reduced = angle - two_pi * (angle / two_pi).round();
     if reduced <= -pi {
         reduced + two_pi
@@ -226,8 +282,8 @@ pub fn non_negative<T: Real>(
 pub const SINGULAR_RELATIVE: f64 = 16.0;
 
 /// Checks a determinant against its scale; `Err(Singular)` when
-/// `|det| <= SINGULAR_RELATIVE * eps * scale`, `scale <= 0`, or either is not
-/// finite.
+/// `|det| <= SINGULAR_RELATIVE * eps * scale`, `|det|` is below the normal
+/// range of `T` (subnormal or zero), `scale <= 0`, or either is not finite.
 #[inline(always)]
 pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, Error<T>> {
     let threshold = T::lit(SINGULAR_RELATIVE) * T::eps() * scale;
@@ -236,7 +292,14 @@ pub fn check_det<T: Real>(det: T, scale: T, primitive: Primitive) -> Result<T, E
     // infinite condition.
     // `abs(det) > threshold` is false for a NaN `det` or a NaN or infinite
     // `scale`; an infinite `det` with a finite scale is left to `all_finite`.
-    if abs(det) > threshold && scale > T::zero() && all_finite([det]) {
+    // A subnormal `det` (a second power of f32 lengths below about 1e-19)
+    // has lost bits and its reciprocal may overflow: `Singular` too, as a
+    // number the rates cannot be resolved from.
+    if abs(det) > threshold
+        && abs(det) >= normal_range::<T>().0
+        && scale > T::zero()
+        && all_finite([det])
+    {
         Ok(det)
     } else {
         Err(Error::new(primitive, Fault::Singular { det, scale }))
@@ -418,8 +481,40 @@ mod tests {
             );
         }
         // Elsewhere the sign of a zero component is kept: -0 along +x stays
-        // 0 (its sign aside), and a negative y still gives a negative angle.
+        // 0 (its sign aside), and a negative y gives a negative angle where
+        // that angle is above `-pi` of the type.
         assert_eq!(angle(&Vector2::new(1.0f64, -0.0)), 0.0);
-        assert!(angle(&Vector2::new(-1.0f64, -1e-300)) < 0.0);
+        assert!(angle(&Vector2::new(-1.0f64, -1e-10)) < 0.0);
+        assert!(angle(&Vector2::new(-1.0f32, -1e-3)) < 0.0);
+    }
+
+    /// A vector just below `-x`, whose exact angle `-pi + |y|` rounds to
+    /// `-pi` of the type, is at `pi` (the same direction, inside `(-pi,
+    /// pi]`): f32 `(-1, -1e-10)` gave `-3.1415927` through an f32 shaper's
+    /// rod (found by the run-time fuzzer), f64 `(-1, -1e-300)` gave
+    /// `-3.141592653589793`.
+    #[test]
+    fn angle_just_below_minus_x_is_pi() {
+        assert_eq!(angle(&Vector2::new(-1.0f32, -1e-10)), core::f32::consts::PI);
+        assert_eq!(
+            angle(&Vector2::new(-1.0f64, -1e-300)),
+            core::f64::consts::PI
+        );
+        assert_eq!(
+            crate::__private::lane::angle(-1e-10f32, -1.0),
+            core::f32::consts::PI
+        );
+        assert_eq!(
+            crate::__private::lane::angle(-1e-300f64, -1.0),
+            core::f64::consts::PI
+        );
+        for k in 1..200 {
+            let y = -(k as f64) * 1e-9;
+            let a = angle(&Vector2::new(-1.0f32, y as f32));
+            assert!(
+                a > -core::f32::consts::PI && a <= core::f32::consts::PI,
+                "{y}: {a}"
+            );
+        }
     }
 }

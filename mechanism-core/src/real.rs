@@ -50,6 +50,15 @@ impl Real for f64 {
             <f64 as nalgebra::RealField>::atan2(self, x)
         }
     }
+    #[inline(always)]
+    fn angle_kernel(self, x: Self) -> Self {
+        let a = (self + 0.0).atan2_kernel(x);
+        if a <= -core::f64::consts::PI {
+            core::f64::consts::PI
+        } else {
+            a
+        }
+    }
 }
 
 impl Real for f32 {
@@ -104,5 +113,9 @@ impl Real for f32 {
         // instructions against 81 on a Cortex-M4F, 6.5 ns against 10 ns
         // (glibc) on the x86-64 development machine.
         crate::trig::atan2_f32(self, x)
+    }
+    #[inline(always)]
+    fn angle_kernel(self, x: Self) -> Self {
+        crate::trig::angle_f32(self, x)
     }
 }

@@ -60,6 +60,14 @@ pub trait Real: RealField + Copy + core::fmt::LowerExp {
     /// (within 1.9 ulp; 1.5 to 2 times glibc's speed on x86-64) except on
     /// 32-bit ARM (libm there: the kernel's tables are 8.8 kB).
     fn atan2_kernel(self, x: Self) -> Self;
+    /// The angle (rad, in `(-pi, pi]`) of the vector `(x, self)` from +x,
+    /// counter-clockwise: [`Real::atan2_kernel`] with a negative zero `self`
+    /// made `+0` (a vector along -x gives `pi`, not `-pi`) and a result that
+    /// rounded to `-pi` (`self` a tiny negative number, `x < 0`: the exact
+    /// angle is above `-pi` by less than half an ulp) returned as `pi`, the
+    /// same direction. `f32` through [`crate::trig::angle_f32`] (out of line:
+    /// one copy of the fold on a Cortex-M).
+    fn angle_kernel(self, x: Self) -> Self;
 }
 
 /// Absolute value.

@@ -431,6 +431,23 @@ const A19: f32 = f32::from_bits(0xBAEB_ED18); // -0.00179997366
 /// is in `docs/embedded.md` (section 3) and the tests check 2 ulp.
 #[inline(never)]
 pub fn atan2_f32(y: f32, x: f32) -> f32 {
+    atan2_or_angle(y, x, false)
+}
+
+/// The angle (rad, in `(-pi, pi]`) of `(x, y)` from +x: [`atan2_f32`] of
+/// `y + 0` (a negative zero made `+0`), with a result of magnitude `pi`
+/// returned as `+pi` (a tiny negative `y` and `x < 0`, whose exact angle
+/// is above `-pi` by less than half an ulp, rounds to `-pi`: the same
+/// direction). [`crate::Real::angle_kernel`] for `f32`; one body with
+/// [`atan2_f32`], of which an image holds the one it calls.
+#[inline(never)]
+pub fn angle_f32(y: f32, x: f32) -> f32 {
+    atan2_or_angle(y + 0.0, x, true)
+}
+
+/// [`atan2_f32`] (`angle == false`) or [`angle_f32`]'s fold of `-pi`.
+#[inline(always)]
+fn atan2_or_angle(y: f32, x: f32, angle: bool) -> f32 {
     let (ax, ay) = (x.abs(), y.abs());
     let swap = ay > ax;
     let (mn, mx) = if swap { (ax, ay) } else { (ay, ax) };
@@ -458,7 +475,11 @@ pub fn atan2_f32(y: f32, x: f32) -> f32 {
         (true, false) => (PIO2_HI - t) + (PIO2_LO - c),
         (true, true) => (PIO2_LO + (t + c)) + PIO2_HI,
     };
-    r.copysign(y)
+    if angle && r >= core::f32::consts::PI {
+        r
+    } else {
+        r.copysign(y)
+    }
 }
 
 #[cfg(test)]

@@ -1,11 +1,14 @@
-//! Pictures and tables of any mechanism `mechanism!` generates, from its
-//! description of itself (`mechanism::structure`): no drawing code per
+//! Pictures, charts and tables of any mechanism `mechanism!` generates, from
+//! its description of itself (`mechanism::structure`): no drawing code per
 //! mechanism.
 //!
 //! The caller solves the poses (one `position()` per input value, `None` where
 //! it fails) and hands them over with the input; everything else comes from
-//! the structure: which points are ground pivots, which link joins which
-//! points, which blocks slide on which guides.
+//! the structure and the result structs' fields: which points are ground
+//! pivots, which link joins which points, which blocks slide on which guides,
+//! what each output measures and in which unit. [`sketch`] draws and animates,
+//! [`chart`], [`kinematics_chart`] and [`force_chart`] plot outputs against
+//! the input (failed poses as gaps), [`csv`] tabulates.
 //!
 //! ```ignore
 //! let poses: Vec<(f64, Option<FourBarPosition>)> = thetas
@@ -17,8 +20,10 @@
 //! std::fs::write("fourbar.csv", mechanism_plot::any::csv("theta2", "rad", &poses))?;
 //! ```
 
-use crate::{Frame, PlotError, Sketch, Xy};
-use mechanism_core::structure::{Describe, Fields, Guide, LinkKind, PointKind, Structure, Value};
+use crate::{Figure, Frame, Plot, PlotError, Sketch, Xy};
+use mechanism_core::structure::{
+    Describe, Field, Fields, Guide, LinkKind, PointKind, Quantity, Structure, Value,
+};
 use std::fmt::Write;
 
 /// One solved pose: the input value and the position (`None`: the mechanism
@@ -67,6 +72,14 @@ fn block_angle<P: Fields<f64>>(s: &Structure, link: usize, pos: &P) -> f64 {
     }
 }
 
+/// Where a guide carried by a link starts at one pose: the named point it
+/// passes through, else its carrier's first point (`None` for a fixed guide).
+fn carried_guide_origin<P: Fields<f64>>(s: &Structure, guide: Option<&str>, pos: &P) -> Option<Xy> {
+    let g = s.guide(guide?)?;
+    let carrier = s.link(g.carrier?)?;
+    point_of(pos, g.through.or(carrier.points.first().copied())?)
+}
+
 /// One pose as a frame: links (bars and plates through their points), blocks
 /// on their guides, revolute joints, and the traced points.
 fn frame<P: Fields<f64>>(s: &Structure, caption: &str, pos: &P, traced: &[&str]) -> Frame {
@@ -76,6 +89,12 @@ fn frame<P: Fields<f64>>(s: &Structure, caption: &str, pos: &P, traced: &[&str])
         match l.kind {
             LinkKind::Block => {
                 if let Some(p) = pts.first() {
+                    if let Some(o) = carried_guide_origin(s, l.guide, pos) {
+                        // The carried guide, from its origin on the carrier to a
+                        // quarter of that distance beyond the block.
+                        let far = [p[0] + 0.25 * (p[0] - o[0]), p[1] + 0.25 * (p[1] - o[1])];
+                        f = f.guide(o, far);
+                    }
                     f = f.slider(l.name, *p, block_angle(s, k, pos));
                 }
             }
@@ -87,8 +106,15 @@ fn frame<P: Fields<f64>>(s: &Structure, caption: &str, pos: &P, traced: &[&str])
         let Some(xy) = point_of(pos, p.name) else {
             continue;
         };
+        // A point fixed on one link where another is pinned is a joint too.
+        let links = s
+            .links
+            .iter()
+            .filter(|l| l.points.contains(&p.name))
+            .count();
         match p.kind {
             PointKind::Joint => f = f.joint(p.name, xy),
+            PointKind::OnLink if links >= 2 => f = f.joint(p.name, xy),
             PointKind::OnLink if traced.contains(&p.name) => f = f.point(p.name, xy),
             _ => {}
         }
@@ -107,9 +133,24 @@ pub fn sketch<M: Describe, P: Fields<f64>>(
     poses: &[Pose<P>],
     traced: &[&str],
 ) -> Result<Sketch, PlotError> {
+    let input = M::STRUCTURE.inputs.first().map_or("input", |i| i.name);
+    sketch_with::<M, P>(title, unit, poses, traced, |q| {
+        format!("{input} = {}", short(q))
+    })
+}
+
+/// [`sketch`] with each frame's caption made by `caption` from the pose's
+/// input value (for several inputs, or an input in other units than the
+/// structure's).
+pub fn sketch_with<M: Describe, P: Fields<f64>>(
+    title: &str,
+    unit: &str,
+    poses: &[Pose<P>],
+    traced: &[&str],
+    caption: impl Fn(f64) -> String,
+) -> Result<Sketch, PlotError> {
     let s = M::STRUCTURE;
     let mut sketch = Sketch::new(title, unit);
-    let input = s.inputs.first().map_or("input", |i| i.name);
     let solved: Vec<(f64, &P)> = poses
         .iter()
         .filter_map(|(q, p)| p.as_ref().map(|p| (*q, p)))
@@ -144,13 +185,27 @@ pub fn sketch<M: Describe, P: Fields<f64>>(
         }
     }
     for (q, p) in &solved {
-        sketch.frame(frame(&s, &format!("{input} = {q:.4}"), *p, traced));
+        sketch.frame(frame(&s, &caption(*q), *p, traced));
     }
     Ok(sketch)
 }
 
+/// A number with at most four decimals, trailing zeros dropped (`60`, `1.0472`).
+fn short(v: f64) -> String {
+    let s = format!("{v:.4}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".to_string()
+    } else {
+        s.to_string()
+    }
+}
+
 /// The segment a guide is drawn as: the blocks' travel along `angle`, with a
 /// margin of a fifth of it (at least one unit of the block positions' scale).
+/// `None` when the points do not lie on one line along `angle` (1e-9 of their
+/// scale): a block that does not travel along its guide gets no ground line
+/// drawn where the guide is not.
 fn travel(points: &[Xy], angle: f64) -> Option<(Xy, Xy)> {
     let first = *points.first()?;
     let (c, s) = (angle.cos(), angle.sin());
@@ -158,6 +213,10 @@ fn travel(points: &[Xy], angle: f64) -> Option<(Xy, Xy)> {
     let lo = points.iter().map(t).fold(f64::INFINITY, f64::min);
     let hi = points.iter().map(t).fold(f64::NEG_INFINITY, f64::max);
     let scale = first[0].abs().max(first[1].abs()).max(hi - lo);
+    let off = |p: &Xy| ((p[1] - first[1]) * c - (p[0] - first[0]) * s).abs();
+    if points.iter().map(off).fold(0.0, f64::max) > 1e-9 * scale {
+        return None;
+    }
     let margin = (0.2 * (hi - lo)).max(0.05 * scale);
     let at = |u: f64| [first[0] + u * c, first[1] + u * s];
     Some((at(lo - margin), at(hi + margin)))
@@ -209,4 +268,294 @@ pub fn csv<P: Fields<f64>>(input: &str, input_unit: &str, poses: &[Pose<P>]) -> 
         out.push('\n');
     }
     out
+}
+
+/// What the definition's units are called, for chart labels: `length` stands
+/// for `L` (the unit the dimensions were written in, `"mm"`), `force` for `F`
+/// (`"N"` with kg, m and s).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Units<'a> {
+    /// The length unit.
+    pub length: &'a str,
+    /// The force unit.
+    pub force: &'a str,
+}
+
+/// The display unit of a quantity: `L` and `F` replaced by `units`, angles in
+/// degrees (`deg`; rates stay in rad/s and rad/s²).
+fn display_unit(q: Quantity, units: Units) -> String {
+    if q == Quantity::Angle {
+        return "deg".to_string();
+    }
+    let mut out = String::new();
+    for c in q.unit().chars() {
+        match c {
+            'L' => out.push_str(units.length),
+            'F' => out.push_str(units.force),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// A panel's title and its y axis' quantity, for fields of quantity `q`.
+fn quantity_words(q: Quantity) -> (&'static str, &'static str) {
+    match q {
+        Quantity::Length => ("Positions", "position"),
+        Quantity::Angle => ("Angles", "angle"),
+        Quantity::Velocity => ("Velocities", "velocity"),
+        Quantity::AngularVelocity => ("Angular velocities", "angular velocity"),
+        Quantity::Acceleration => ("Accelerations", "acceleration"),
+        Quantity::AngularAcceleration => ("Angular accelerations", "angular acceleration"),
+        Quantity::Force => ("Forces", "force"),
+        Quantity::Moment => ("Moments", "moment"),
+        Quantity::Ratio => ("Ratios", "ratio"),
+    }
+}
+
+/// The columns one field makes over the rows: one for a scalar, `.x` and
+/// `.y` for a point or a vector; `None` where the row failed or the value is
+/// not finite. Angles in degrees, unwrapped: each value moved by whole turns
+/// to within half a turn of the previous value (across gaps too), the whole
+/// series by whole turns so that it starts in [0, 360).
+fn columns<P: Fields<f64>>(
+    f: &Field,
+    rows: &[Pose<P>],
+    magnitude: bool,
+) -> Vec<(String, Vec<Option<f64>>)> {
+    let finite = |v: f64| v.is_finite().then_some(v);
+    if magnitude && f.planar {
+        let norm = |pos: &Option<P>| match pos.as_ref()?.get(f.name)? {
+            Value::Point(p) => finite(p.coords.norm()),
+            Value::Vector(v) => finite(v.norm()),
+            Value::Scalar(x) => finite(x.abs()),
+        };
+        let ys = rows.iter().map(|(_, p)| norm(p)).collect();
+        return vec![(format!("|{}|", f.name), ys)];
+    }
+    let read = |pos: &Option<P>, k: usize| -> Option<f64> {
+        match pos.as_ref()?.get(f.name)? {
+            Value::Point(p) => finite([p.x, p.y][k]),
+            Value::Vector(v) => finite([v.x, v.y][k]),
+            Value::Scalar(x) => finite(x),
+        }
+    };
+    let parts: &[(usize, &str)] = if f.planar {
+        &[(0, ".x"), (1, ".y")]
+    } else {
+        &[(0, "")]
+    };
+    parts
+        .iter()
+        .map(|&(k, suffix)| {
+            let mut ys: Vec<Option<f64>> = rows.iter().map(|(_, p)| read(p, k)).collect();
+            if f.quantity == Quantity::Angle {
+                unwrap_degrees(&mut ys);
+            }
+            (format!("{}{suffix}", f.name), ys)
+        })
+        .collect()
+}
+
+/// Radians to continuous degrees (see [`columns`]).
+fn unwrap_degrees(ys: &mut [Option<f64>]) {
+    let mut prev: Option<f64> = None;
+    for y in ys.iter_mut().flatten() {
+        let d = y.to_degrees();
+        *y = match prev {
+            Some(p) => d + 360.0 * ((p - d) / 360.0).round(),
+            None => d,
+        };
+        prev = Some(*y);
+    }
+    if let Some(first) = ys.iter().flatten().next() {
+        let shift = 360.0 * (first / 360.0).floor();
+        for y in ys.iter_mut().flatten() {
+            *y -= shift;
+        }
+    }
+}
+
+/// One panel titled `title` with every column of `fields` (all of one
+/// quantity) against the rows' input.
+fn panel<P: Fields<f64>>(
+    title: &str,
+    input: (&str, &str),
+    units: Units,
+    rows: &[Pose<P>],
+    fields: &[&Field],
+    magnitude: bool,
+) -> Plot {
+    let xs: Vec<f64> = rows.iter().map(|(x, _)| *x).collect();
+    let q = fields.first().map_or(Quantity::Ratio, |f| f.quantity);
+    let mut plot = Plot::new(title)
+        .x_axis(input.0, input.1)
+        .y_axis(quantity_words(q).1, &display_unit(q, units));
+    for f in fields {
+        for (name, ys) in columns(f, rows, magnitude) {
+            plot = plot.gapped(&name, &xs, &ys);
+        }
+    }
+    plot
+}
+
+/// The fields of `P` named in `names`, in that order (every field but the
+/// pure ratios when `names` is empty).
+fn chosen<P: Fields<f64>>(names: &[&str]) -> Result<Vec<&'static Field>, PlotError> {
+    if names.is_empty() {
+        return Ok(P::FIELDS
+            .iter()
+            .filter(|f| f.quantity != Quantity::Ratio)
+            .collect());
+    }
+    names
+        .iter()
+        .map(|n| {
+            P::FIELDS
+                .iter()
+                .find(|f| f.name == *n)
+                .ok_or_else(|| PlotError::NoField {
+                    name: n.to_string(),
+                    known: P::FIELDS.iter().map(|f| f.name).collect(),
+                })
+        })
+        .collect()
+}
+
+/// Panels of the outputs `fields` of `P` (a position, velocity, acceleration
+/// or forces struct; every field but ratios when `fields` is empty) against
+/// the input: one panel per quantity, in the order the quantities first
+/// appear, one series per scalar and two (`.x`, `.y`) per point or vector.
+/// `input` is the x axis' label and unit as the rows hold it (`("crank angle
+/// θ2", "deg")`); lengths and forces are labelled with `units`, angles are
+/// shown in degrees (continuous), rates in rad/s. A row whose result is
+/// `None` (the mechanism cannot be assembled there) is a gap in every series,
+/// not a line across it. An unknown field name is [`PlotError::NoField`].
+pub fn panels<P: Fields<f64>>(
+    input: (&str, &str),
+    units: Units,
+    rows: &[Pose<P>],
+    fields: &[&str],
+) -> Result<Vec<Plot>, PlotError> {
+    let fields = chosen::<P>(fields)?;
+    let mut groups: Vec<(Quantity, Vec<&Field>)> = Vec::new();
+    for f in fields {
+        match groups.iter_mut().find(|(q, _)| *q == f.quantity) {
+            Some((_, g)) => g.push(f),
+            None => groups.push((f.quantity, vec![f])),
+        }
+    }
+    Ok(groups
+        .iter()
+        .map(|(q, g)| panel(quantity_words(*q).0, input, units, rows, g, false))
+        .collect())
+}
+
+/// A figure titled `title` of [`panels`]: the chart of any outputs against
+/// the input in one call.
+///
+/// ```ignore
+/// let rows: Vec<(f64, Option<FourBarPosition<f64>>)> = degrees
+///     .iter()
+///     .map(|&d| (d, fb.position(&FourBarInput { theta2: d.to_radians() }).ok()))
+///     .collect();
+/// let units = Units { length: "mm", force: "N" };
+/// chart("Four-bar", ("θ2", "deg"), units, &rows, &["link3", "B"])?.write("angles.svg")?;
+/// ```
+pub fn chart<P: Fields<f64>>(
+    title: &str,
+    input: (&str, &str),
+    units: Units,
+    rows: &[Pose<P>],
+    fields: &[&str],
+) -> Result<Figure, PlotError> {
+    Ok(panels(input, units, rows, fields)?
+        .into_iter()
+        .fold(Figure::new(title), Figure::panel))
+}
+
+/// A figure titled `title` of the forces against the input, from the forces
+/// struct's fields alone: the driving efforts (`drive_*`: a torque for a
+/// crank, a force for a slider or a cylinder), then the magnitude of every
+/// joint reaction (`|r_ground_link2|`, the bearing load; a prismatic pair's
+/// force too), then the prismatic pairs' couples, one panel per quantity in
+/// each group; the power balance residual is left out. Signs follow the
+/// forces struct (moments counter-clockwise positive). Failed rows are gaps.
+pub fn force_chart<F: Fields<f64>>(
+    title: &str,
+    input: (&str, &str),
+    units: Units,
+    rows: &[Pose<F>],
+) -> Result<Figure, PlotError> {
+    let drive = |f: &&Field| f.name.starts_with("drive_");
+    let mut fig = Figure::new(title);
+    let groups: [(&str, Vec<&Field>); 3] = [
+        ("Driving effort", F::FIELDS.iter().filter(drive).collect()),
+        (
+            "Joint reactions",
+            F::FIELDS
+                .iter()
+                .filter(|f| !drive(f) && f.quantity == Quantity::Force)
+                .collect(),
+        ),
+        (
+            "Couples of the prismatic pairs",
+            F::FIELDS
+                .iter()
+                .filter(|f| !drive(f) && f.quantity == Quantity::Moment)
+                .collect(),
+        ),
+    ];
+    for (title, fields) in &groups {
+        for q in [Quantity::Moment, Quantity::Force] {
+            let these: Vec<&Field> = fields.iter().copied().filter(|f| f.quantity == q).collect();
+            if !these.is_empty() {
+                fig = fig.panel(panel(title, input, units, rows, &these, true));
+            }
+        }
+    }
+    Ok(fig)
+}
+
+/// Splits rows of `(position, velocity, acceleration)` into one row list per
+/// result struct.
+type Split<P, V, A> = (Vec<Pose<P>>, Vec<Pose<V>>, Vec<Pose<A>>);
+
+fn split<P: Clone, V: Clone, A: Clone>(rows: &[Pose<(P, V, A)>]) -> Split<P, V, A> {
+    let mut out: Split<P, V, A> = (Vec::new(), Vec::new(), Vec::new());
+    for (x, r) in rows {
+        out.0.push((*x, r.as_ref().map(|r| r.0.clone())));
+        out.1.push((*x, r.as_ref().map(|r| r.1.clone())));
+        out.2.push((*x, r.as_ref().map(|r| r.2.clone())));
+    }
+    out
+}
+
+/// A figure titled `title` of the outputs `fields` at the three levels: their
+/// positions, then their velocities, then their accelerations against the
+/// input, the panels of [`panels`] for each (`fields` names the outputs, the
+/// same names in the three structs; all of them when empty). The rows hold
+/// the three results of one input (`None` where it fails: a gap).
+pub fn kinematics_chart<P, V, A>(
+    title: &str,
+    input: (&str, &str),
+    units: Units,
+    rows: &[Pose<(P, V, A)>],
+    fields: &[&str],
+) -> Result<Figure, PlotError>
+where
+    P: Fields<f64> + Clone,
+    V: Fields<f64> + Clone,
+    A: Fields<f64> + Clone,
+{
+    let (p, v, a) = split(rows);
+    let all = [
+        panels(input, units, &p, fields)?,
+        panels(input, units, &v, fields)?,
+        panels(input, units, &a, fields)?,
+    ];
+    Ok(all
+        .into_iter()
+        .flatten()
+        .fold(Figure::new(title), Figure::panel))
 }

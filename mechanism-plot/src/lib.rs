@@ -32,6 +32,7 @@
 #![forbid(unsafe_code)]
 
 pub mod any;
+mod labels;
 mod plot;
 mod sketch;
 mod svg;
@@ -93,6 +94,13 @@ pub enum PlotError {
     },
     /// A sketch has no geometry at all (nothing to scale the drawing to).
     NothingToDraw,
+    /// A chart asks for a field the result struct does not have.
+    NoField {
+        /// The name asked for.
+        name: String,
+        /// The struct's field names.
+        known: Vec<&'static str>,
+    },
     /// Writing the file failed.
     Io(std::io::Error),
 }
@@ -115,6 +123,9 @@ impl fmt::Display for PlotError {
                 write!(f, "sketch has {frames} frames, frame {index} requested")
             }
             PlotError::NothingToDraw => write!(f, "sketch has no geometry to draw"),
+            PlotError::NoField { name, known } => {
+                write!(f, "no field `{name}`; the fields are {}", known.join(", "))
+            }
             PlotError::Io(e) => write!(f, "cannot write the SVG file: {e}"),
         }
     }

@@ -23,6 +23,9 @@ struct Series {
     name: String,
     xs: Vec<f64>,
     ys: Vec<f64>,
+    /// Indices into `xs`/`ys` where a new run starts after a gap (`0` never listed):
+    /// the line breaks there instead of joining across the gap.
+    breaks: Vec<usize>,
 }
 
 /// One panel: several series of y against a common x, with labelled axes and a legend.
@@ -87,7 +90,42 @@ impl Plot {
             name: name.to_string(),
             xs: xs.to_vec(),
             ys: ys.to_vec(),
+            breaks: Vec::new(),
         });
+        self
+    }
+
+    /// Adds a series with gaps: `ys[k]` is `None` where there is no value (a pose that
+    /// cannot be assembled); the line stops before a gap and starts again after it,
+    /// never joining across it. `xs` and `ys` have the same length; at least one value.
+    pub fn gapped(mut self, name: &str, xs: &[f64], ys: &[Option<f64>]) -> Self {
+        let mut series = Series {
+            name: name.to_string(),
+            xs: Vec::new(),
+            ys: Vec::new(),
+            breaks: Vec::new(),
+        };
+        if xs.len() != ys.len() {
+            // Kept mismatched so that `layout` reports the lengths.
+            series.xs = xs.to_vec();
+            series.ys = ys.iter().map(|y| y.unwrap_or(0.0)).collect();
+        } else {
+            let mut after_gap = false;
+            for (&x, y) in xs.iter().zip(ys) {
+                match y {
+                    Some(y) => {
+                        if after_gap && !series.xs.is_empty() {
+                            series.breaks.push(series.xs.len());
+                        }
+                        after_gap = false;
+                        series.xs.push(x);
+                        series.ys.push(*y);
+                    }
+                    None => after_gap = true,
+                }
+            }
+        }
+        self.series.push(series);
         self
     }
 
@@ -98,6 +136,7 @@ impl Plot {
             name: name.to_string(),
             xs,
             ys,
+            breaks: Vec::new(),
         });
         self
     }
@@ -320,11 +359,19 @@ impl Plot {
                     .zip(&s.ys)
                     .map(|(&a, &b)| [area.px(a), area.py(b)])
                     .collect();
+            let mut d = String::new();
+            let mut start = 0;
+            for end in s.breaks.iter().copied().chain([pts.len()]) {
+                if !d.is_empty() {
+                    d.push(' ');
+                }
+                d.push_str(&svg::path_data(&pts[start..end]));
+                start = end;
+            }
             let _ = writeln!(
                 out,
-                r#"<path data-series="{}" stroke="{color}"{dash} d="{}"/>"#,
+                r#"<path data-series="{}" stroke="{color}"{dash} d="{d}"/>"#,
                 svg::esc(&s.name),
-                svg::path_data(&pts)
             );
             if markers {
                 let _ = writeln!(out, r#"<g fill="{color}" stroke="none">"#);
@@ -621,7 +668,25 @@ impl Figure {
         let right = layouts.iter().map(|l| l.right).fold(0.0, f64::max);
         let width = self.panels.iter().map(|p| p.width).fold(0.0, f64::max);
         let head = if self.title.is_empty() { 0.0 } else { 34.0 };
-        let height = head + self.panels.iter().map(|p| p.height).sum::<f64>();
+        // A panel grows to hold its legend (20 px a row from 12 px below the
+        // plot area's top) when it has more series than its height shows.
+        let panels: Vec<Plot> = self
+            .panels
+            .iter()
+            .map(|p| {
+                let mut p = p.clone();
+                let top = if p.title.is_empty() {
+                    TOP_PLAIN
+                } else {
+                    TOP_TITLE
+                };
+                p.height = p
+                    .height
+                    .max(top + 12.0 + 20.0 * p.series.len() as f64 + BOTTOM);
+                p
+            })
+            .collect();
+        let height = head + panels.iter().map(|p| p.height).sum::<f64>();
         let mut out = String::new();
         svg::open_svg(&mut out, width, height);
         if !self.title.is_empty() {
@@ -636,7 +701,7 @@ impl Figure {
             );
         }
         let mut y0 = head;
-        for (k, (p, lay)) in self.panels.iter().zip(&layouts).enumerate() {
+        for (k, (p, lay)) in panels.iter().zip(&layouts).enumerate() {
             // Every panel spans the figure's width.
             let mut p = p.clone();
             p.width = width;

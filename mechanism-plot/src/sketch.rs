@@ -7,7 +7,8 @@
 //! link keeps its length on screen. Symbols (joints, sliders, supports, hatching) have a
 //! fixed size in pixels, so they read the same at any scale.
 
-use crate::svg::{self, num, text, PALETTE};
+use crate::labels::{self, Obstacles, Placed};
+use crate::svg::{self, num, text, text_width, PALETTE};
 use crate::{write_file, PlotError, Xy};
 use std::fmt::Write;
 use std::path::Path;
@@ -141,6 +142,9 @@ pub struct Sketch {
 
 /// World-to-pixel mapping: uniform scale, y flipped.
 struct View {
+    /// The px column of `xmin`: the margin, plus half the extra width when the
+    /// title is wider than the drawing (the drawing stays centred).
+    left: f64,
     xmin: f64,
     ymax: f64,
     scale: f64,
@@ -151,7 +155,7 @@ struct View {
 impl View {
     fn px(&self, p: Xy) -> [f64; 2] {
         [
-            MARGIN + (p[0] - self.xmin) * self.scale,
+            self.left + (p[0] - self.xmin) * self.scale,
             HEAD + MARGIN + (self.ymax - p[1]) * self.scale,
         ]
     }
@@ -211,9 +215,10 @@ impl Sketch {
             frames: self.frames.len(),
         })?;
         let view = self.view()?;
+        let pivots = self.pivot_labels(&view, frame);
         let mut out = self.open(&view);
-        self.render_frame(&mut out, &view, frame, None);
-        self.close(&mut out, &view);
+        self.render_frame(&mut out, &view, frame, None, &pivots);
+        self.close(&mut out, &view, &pivots);
         Ok(out)
     }
 
@@ -233,12 +238,14 @@ impl Sketch {
             4.0
         };
         let view = self.view()?;
+        // The ground pivots' labels stay put: placed against the first pose.
+        let pivots = self.pivot_labels(&view, &self.frames[0]);
         let mut out = self.open(&view);
         let n = self.frames.len();
         for (k, f) in self.frames.iter().enumerate() {
-            self.render_frame(&mut out, &view, f, Some((k, n, seconds)));
+            self.render_frame(&mut out, &view, f, Some((k, n, seconds)), &pivots);
         }
-        self.close(&mut out, &view);
+        self.close(&mut out, &view, &pivots);
         Ok(out)
     }
 
@@ -324,11 +331,16 @@ impl Sketch {
             ymax += extent / 2.0;
         }
         let scale = (MAX_W / (xmax - xmin)).min(MAX_H / (ymax - ymin));
+        let drawing = 2.0 * MARGIN + (xmax - xmin) * scale;
+        // The bold title (about 10 % wider than regular text) with 14 px each side.
+        let title = 28.0 + 1.1 * text_width(&self.title, 15.0);
+        let width = drawing.max(title);
         Ok(View {
+            left: MARGIN + (width - drawing) / 2.0,
             xmin,
             ymax,
             scale,
-            width: 2.0 * MARGIN + (xmax - xmin) * scale,
+            width,
             height: HEAD + FOOT + 2.0 * MARGIN + (ymax - ymin) * scale,
         })
     }
@@ -450,12 +462,63 @@ impl Sketch {
         out
     }
 
-    /// Ground pivots' joints and labels (over the links), scale bar, end of document.
-    fn close(&self, out: &mut String, view: &View) {
-        for (name, p) in &self.pivots {
+    /// What labels should not cover in pose `f` (px): joints, points and blocks
+    /// as discs, links and guides as thick segments, ground supports as boxes,
+    /// the canvas between the title band and the foot band.
+    fn obstacles(&self, view: &View, f: &Frame) -> Obstacles {
+        let mut o = Obstacles {
+            canvas: [2.0, HEAD, view.width - 2.0, view.height - FOOT],
+            ..Default::default()
+        };
+        for (_, p) in &self.pivots {
             let [x, y] = view.px(*p);
-            joint(out, x, y, "ground-joint");
-            label(out, x, y, name);
+            o.discs.push(([x, y], 7.5));
+            o.boxes.push([x - 18.0, y, x + 18.0, y + 27.0]);
+        }
+        for (a, b) in &self.ground_guides {
+            o.segments.push((view.px(*a), view.px(*b), 6.0));
+        }
+        for s in &f.shapes {
+            match s {
+                Shape::Link { points, .. } => {
+                    let px: Vec<[f64; 2]> = points.iter().map(|p| view.px(*p)).collect();
+                    let closed = if px.len() >= 3 {
+                        px.len()
+                    } else {
+                        px.len().saturating_sub(1)
+                    };
+                    for k in 0..closed {
+                        o.segments.push((px[k], px[(k + 1) % px.len()], 5.5));
+                    }
+                }
+                Shape::Joint { p, .. } => o.discs.push((view.px(*p), 7.5)),
+                Shape::Point { p, .. } => o.discs.push((view.px(*p), 6.5)),
+                // Half the block's diagonal: it may turn any way.
+                Shape::Slider { p, .. } => o.discs.push((view.px(*p), 20.5)),
+                Shape::Guide { a, b } => o.segments.push((view.px(*a), view.px(*b), 2.5)),
+            }
+        }
+        o
+    }
+
+    /// The ground pivots' labels, placed against pose `f`.
+    fn pivot_labels(&self, view: &View, f: &Frame) -> Vec<Placed> {
+        let mut o = self.obstacles(view, f);
+        self.pivots
+            .iter()
+            .map(|(name, p)| {
+                let [x, y] = view.px(*p);
+                o.place(name, x, y)
+            })
+            .collect()
+    }
+
+    /// Ground pivots' joints and labels (over the links), scale bar, end of document.
+    fn close(&self, out: &mut String, view: &View, labels: &[Placed]) {
+        for ((name, p), at) in self.pivots.iter().zip(labels) {
+            let [x, y] = view.px(*p);
+            joint(out, x, y, "ground-joint", name);
+            label(out, at, name);
         }
         // Scale bar: the largest 1-2-5 length up to a quarter of the drawing's width.
         let world_w = (view.width - 2.0 * MARGIN) / view.scale;
@@ -507,6 +570,7 @@ impl Sketch {
         view: &View,
         f: &Frame,
         anim: Option<(usize, usize, f64)>,
+        pivots: &[Placed],
     ) {
         match anim {
             Some((k, n, seconds)) => {
@@ -599,9 +663,9 @@ impl Sketch {
         }
         for s in &f.shapes {
             match s {
-                Shape::Joint { p, .. } => {
+                Shape::Joint { p, name } => {
                     let [x, y] = view.px(*p);
-                    joint(out, x, y, "joint");
+                    joint(out, x, y, "joint", name);
                 }
                 Shape::Point { p, .. } => {
                     let [x, y] = view.px(*p);
@@ -616,10 +680,14 @@ impl Sketch {
                 _ => {}
             }
         }
+        let mut obstacles = self.obstacles(view, f);
+        obstacles.boxes.extend(pivots.iter().map(|p| p.rect));
         for s in &f.shapes {
             if let Shape::Joint { name, p } | Shape::Point { name, p } = s {
-                let [x, y] = view.px(*p);
-                label(out, x, y, name);
+                if !name.is_empty() {
+                    let [x, y] = view.px(*p);
+                    label(out, &obstacles.place(name, x, y), name);
+                }
             }
         }
         // In the foot band, right: clear of the title and of the scale bar (left).
@@ -643,27 +711,29 @@ fn key(k: usize, n: usize) -> String {
     format!("{:.6}", k as f64 / n as f64)
 }
 
-/// A revolute joint: a white disc with a dark ring.
-fn joint(out: &mut String, x: f64, y: f64, class: &str) {
+/// A revolute joint: a white disc with a dark ring, its name in `data-name`.
+fn joint(out: &mut String, x: f64, y: f64, class: &str, name: &str) {
     let _ = writeln!(
         out,
-        r##"<circle class="{class}" cx="{}" cy="{}" r="5.5" fill="white" stroke="#222" stroke-width="2"/>"##,
+        r##"<circle class="{class}" data-name="{}" cx="{}" cy="{}" r="5.5" fill="white" stroke="#222" stroke-width="2"/>"##,
+        svg::esc(name),
         num(x),
         num(y)
     );
 }
 
-/// A joint's name up and right of it, on a white halo so that it reads over links.
-fn label(out: &mut String, x: f64, y: f64, name: &str) {
+/// A joint's name where [`Obstacles::place`] put it, on a white halo so that it
+/// reads over links.
+fn label(out: &mut String, at: &Placed, name: &str) {
     if name.is_empty() {
         return;
     }
     text(
         out,
-        x + 9.0,
-        y - 9.0,
-        13.0,
-        "start",
+        at.x,
+        at.y,
+        labels::SIZE,
+        at.anchor,
         r##" class="label" fill="#111" stroke="white" stroke-width="3" paint-order="stroke" stroke-linejoin="round""##,
         name,
     );

@@ -4,6 +4,9 @@
 mod check;
 
 use check::*;
+use mechanism_core::structure::{Field, Fields, Quantity, Value};
+use mechanism_core::Point2;
+use mechanism_plot::any::{self, Units};
 use mechanism_plot::{Figure, Frame, Plot, PlotError, Sketch};
 
 fn sine() -> (Vec<f64>, Vec<f64>) {
@@ -281,4 +284,119 @@ fn the_animation_shows_exactly_one_pose_at_a_time() {
     for f in &frames {
         assert_eq!(with_class(*f, "joint").len(), 1);
     }
+}
+
+/// A result struct read by name, as the macro's are: an angle and a point.
+struct Out {
+    a: f64,
+    p: Point2<f64>,
+}
+
+impl Fields<f64> for Out {
+    const FIELDS: &'static [Field] = &[
+        Field {
+            name: "a",
+            quantity: Quantity::Angle,
+            planar: false,
+        },
+        Field {
+            name: "P",
+            quantity: Quantity::Length,
+            planar: true,
+        },
+    ];
+
+    fn get(&self, name: &str) -> Option<Value<f64>> {
+        match name {
+            "a" => Some(Value::Scalar(self.a)),
+            "P" => Some(Value::Point(self.p)),
+            _ => None,
+        }
+    }
+}
+
+/// A generic chart of outputs named by the caller: one panel per quantity with
+/// units filled in (`L` -> mm, angles in deg), a row that failed breaks every
+/// series into two runs (two `M` commands, no vertex for the five failed rows,
+/// no segment across them), an angle that wraps at +-180 deg is drawn
+/// continuous (its vertices rise monotonically on screen), and an unknown field
+/// name is a typed error.
+#[test]
+fn a_generic_chart_has_gaps_where_rows_fail() {
+    let rows: Vec<(f64, Option<Out>)> = (0..=40)
+        .map(|k| {
+            let x = 9.0 * k as f64;
+            let t = (2.0 * x).to_radians();
+            let out = Out {
+                a: t.sin().atan2(t.cos()),
+                p: Point2::new(x.to_radians().cos(), 2.0),
+            };
+            (x, (!(10..15).contains(&k)).then_some(out))
+        })
+        .collect();
+    let units = Units {
+        length: "mm",
+        force: "N",
+    };
+    let svg = any::chart("t", ("x", "deg"), units, &rows, &["a", "P"])
+        .unwrap()
+        .to_svg()
+        .unwrap();
+    let (doc, vb) = parse(&svg);
+    assert_inside(&doc, vb);
+    let ps = panels(&doc);
+    assert_eq!(ps.len(), 2);
+    assert_eq!(ps[0].series, ["a"]);
+    assert_eq!(ps[1].series, ["P.x", "P.y"]);
+    let labels: Vec<&str> = with_class(doc.root_element(), "y-label")
+        .iter()
+        .map(|t| t.text().unwrap())
+        .collect();
+    assert_eq!(labels, ["angle (deg)", "position (mm)"]);
+    for path in elements(doc.root_element(), "path")
+        .iter()
+        .filter(|p| p.attribute("data-series").is_some())
+    {
+        let d = path.attribute("d").unwrap();
+        assert_eq!(d.matches('M').count(), 2, "two runs: {d}");
+        assert_eq!(path_points(d).len(), 36, "41 rows, 5 failed");
+    }
+    for w in ps[0].paths[0].windows(2) {
+        assert!(w[1][1] < w[0][1], "the angle rises continuously: {w:?}");
+    }
+    assert!(matches!(
+        any::chart("t", ("x", "deg"), units, &rows, &["nope"]),
+        Err(PlotError::NoField { ref name, .. }) if name == "nope"
+    ));
+}
+
+/// A panel with more series than its height shows grows to hold its legend:
+/// with 30 series (600 px of legend rows in a 340 px panel) every legend entry
+/// lies inside the panel's part of the canvas, above the next panel.
+#[test]
+fn a_long_legend_stays_inside_its_panel() {
+    let (xs, ys) = sine();
+    let mut many = Plot::new("many").x_axis("x", "");
+    for k in 0..30 {
+        let shifted: Vec<f64> = ys.iter().map(|y| y + k as f64).collect();
+        many = many.series(&format!("s{k}"), &xs, &shifted);
+    }
+    let svg = Figure::new("fig")
+        .panel(many)
+        .panel(Plot::new("below").series("a", &xs, &ys))
+        .to_svg()
+        .unwrap();
+    let (doc, vb) = parse(&svg);
+    assert_inside(&doc, vb);
+    let ps = panels(&doc);
+    let legend = with_class(doc.root_element(), "legend");
+    let last = elements(legend[0], "text")
+        .iter()
+        .map(|t| num(t, "y"))
+        .fold(f64::MIN, f64::max);
+    assert!(
+        last < ps[1].area[1] - 30.0,
+        "the last legend row ({last} px) above the next panel's plot area ({} px)",
+        ps[1].area[1]
+    );
 }

@@ -7,6 +7,7 @@
 //! - [`forces`]: the force analysis against the documents' tables, closed
 //!   forms, the power balance and every link's equilibrium;
 //! - [`plots`]: the examples' SVG pictures read back with an XML parser;
+//! - [`png`]: the examples' pictures rendered to pixels and looked at;
 //! - [`firmware_table`]: the host's values the firmware compares with
 //!   (`tests/firmware/src/expected.rs`) equal what the host computes now;
 //! - [`cli_options`]: the examples' command line (options, `--help`, typos).
@@ -21,9 +22,12 @@ use common::scenes;
 
 #[path = "../../mechanism-plot/tests/check/mod.rs"]
 mod check;
+#[path = "../../mechanism-plot/tests/check/png.rs"]
+mod render;
 
 mod cli_options;
 mod firmware_table;
 mod forces;
 mod kinematics;
 mod plots;
+mod png;

@@ -35,17 +35,20 @@ const SCENES: [Expect; 6] = [
         sliders: 0,
         frames: 90,
     },
-    // A, E ground; B, C, D, F moving; block 5 on the crank line.
+    // A, E ground; K, B, F, D, C moving (B and D are points of one link where
+    // another is pinned); block 5 on the crank line; angles and the slide af at
+    // three levels; 31 poses there and 29 back.
     Expect {
         name: "sixbar",
         make: common::plots::sixbar,
-        panels: 4,
-        moving_joints: 4,
+        panels: 6,
+        moving_joints: 5,
         ground_joints: 2,
         sliders: 1,
-        frames: 0,
+        frames: 60,
     },
-    // A, C ground; B, D, E moving; the block on the rocker and the ram.
+    // A, C ground; B, D, E moving; the block on the rocker and the ram; E and two
+    // angles at three levels.
     Expect {
         name: "shaper",
         make: common::plots::shaper,
@@ -65,21 +68,22 @@ const SCENES: [Expect; 6] = [
         sliders: 1,
         frames: 90,
     },
-    // A ground; B moving; block 2 in the slot (the forces figure comes first).
+    // A ground; B, Q moving; block 2 and the yoke link 3 (the forces figure
+    // comes first: driving torque, reactions, couples of the prismatic pairs).
     Expect {
         name: "sine_mechanism",
         make: common::plots::sine_mechanism,
-        panels: 2,
-        moving_joints: 1,
+        panels: 3,
+        moving_joints: 2,
         ground_joints: 1,
-        sliders: 1,
+        sliders: 2,
         frames: 90,
     },
-    // O1, O2 ground; A, C, P moving.
+    // O1, O2 ground; A, C, P moving; P at three levels.
     Expect {
         name: "five_bar",
         make: common::plots::five_bar,
-        panels: 2,
+        panels: 3,
         moving_joints: 3,
         ground_joints: 2,
         sliders: 0,
@@ -246,36 +250,46 @@ fn every_example_picture_is_sound() {
     }
 }
 
+/// The traced joint B of the four-bar lies on its drawn path in every frame of
+/// the animation (the path and the frames come from the same poses).
 #[test]
-fn the_coupler_point_rides_its_path() {
-    let dir = out_dir("coupler");
+fn the_traced_point_rides_its_path() {
+    let dir = out_dir("traced");
     let files = common::plots::fourbar(&dir).unwrap();
     let text = std::fs::read_to_string(&files[2]).unwrap();
     let (doc, _) = parse(&text);
     let root = doc.root_element();
     let path = with_class(root, "path")
         .into_iter()
-        .find(|p| p.attribute("data-name") == Some("P"))
-        .expect("the path of P");
+        .find(|p| p.attribute("data-name") == Some("B"))
+        .expect("the path of B");
     let verts = path_points(path.attribute("d").unwrap());
-    // Frames are every other pose of the path's grid: P of frame k is vertex 2k, both
-    // rounded from the same exact point (<= 2 * ROUND apart per coordinate).
-    for (k, f) in with_class(root, "frame").iter().enumerate() {
-        let p = &with_class(*f, "point")[0];
-        let v = verts[2 * k];
+    let frames = with_class(root, "frame");
+    assert_eq!(verts.len(), frames.len(), "one path vertex per frame");
+    // B of frame k is vertex k, both rounded from the same exact point (<= 2 *
+    // ROUND apart per coordinate).
+    for (k, f) in frames.iter().enumerate() {
+        let b = with_class(*f, "joint")
+            .into_iter()
+            .find(|j| j.attribute("data-name") == Some("B"))
+            .expect("joint B");
+        let v = verts[k];
         assert!(
-            (num(p, "cx") - v[0]).abs() <= 2.0 * ROUND
-                && (num(p, "cy") - v[1]).abs() <= 2.0 * ROUND,
-            "frame {k}: P at ({}, {}), path vertex {v:?}",
-            num(p, "cx"),
-            num(p, "cy")
+            (num(&b, "cx") - v[0]).abs() <= 2.0 * ROUND
+                && (num(&b, "cy") - v[1]).abs() <= 2.0 * ROUND,
+            "frame {k}: B at ({}, {}), path vertex {v:?}",
+            num(&b, "cx"),
+            num(&b, "cy")
         );
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// The shaper's force figure (written after the shaper's own three pictures):
-/// well-formed, inside its view, two panels (torque; four reaction series).
+/// well-formed, inside its view, three panels: the driving torque; the
+/// magnitudes of the 7 reactions of its definition (revolutes at A, B, C, D, E
+/// and the prismatic pairs block-rocker and guide-ram); the 2 prismatic
+/// couples.
 #[test]
 fn the_shaper_force_figure_is_sound() {
     let dir = out_dir("shaper_forces");
@@ -285,9 +299,10 @@ fn the_shaper_force_figure_is_sound() {
     let (doc, vb) = parse(&text);
     assert_inside(&doc, vb);
     let ps = panels(&doc);
-    assert_eq!(ps.len(), 2);
+    assert_eq!(ps.len(), 3);
     assert_eq!(ps[0].series.len(), 1);
-    assert_eq!(ps[1].series.len(), 4);
+    assert_eq!(ps[1].series.len(), 7);
+    assert_eq!(ps[2].series.len(), 2);
     for p in &ps {
         for path in &p.paths {
             assert!(path.len() >= 100, "a curve over the turn");

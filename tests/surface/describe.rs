@@ -7,6 +7,9 @@
 use mechanism::mechanism;
 use mechanism::structure::{Describe, Fields, LinkKind, PointKind, Quantity, Value};
 
+#[path = "../../mechanism-plot/tests/check/png.rs"]
+mod render;
+
 mechanism! {
     /// Crank-rocker four-bar (mm) with a coupler point.
     pub FourBar {
@@ -139,10 +142,12 @@ mechanism! {
     }
 }
 
-/// A mechanism defined only here gets its drawing, animation, foot path and
-/// table from the generic calls: the drawing has one frame per pose, every
-/// link of the structure is drawn, the path of F spans the foot's stride,
-/// and the CSV has a header with units and one row per pose.
+/// A mechanism defined only here gets its drawing, animation, foot path, a
+/// chart of its foot and table from the generic calls: the drawing has one
+/// frame per pose, every link of the structure is drawn, the path of F spans
+/// the foot's stride, the chart has F's two coordinates in cm, both pictures
+/// render to pixels with their labels inside, and the CSV has a header with
+/// units and one row per pose.
 #[test]
 fn jansen_leg_pictures_and_table_from_its_description_alone() {
     let leg = JansenLeg::<f64>::default();
@@ -187,6 +192,25 @@ fn jansen_leg_pictures_and_table_from_its_description_alone() {
         .map(|(_, p)| p.as_ref().unwrap().F.x)
         .fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
     assert!(xmax - xmin > 30.0, "stride {}", xmax - xmin);
+    // A chart of one output, the foot F, from its name alone: one panel of
+    // positions in cm with F.x and F.y over the turn.
+    let units = mechanism_plot::any::Units {
+        length: "cm",
+        force: "N",
+    };
+    let chart = mechanism_plot::any::chart("Jansen leg: foot", ("θ", "rad"), units, &poses, &["F"])
+        .unwrap()
+        .to_svg()
+        .unwrap();
+    assert!(chart.contains("position (cm)"), "the unit of F");
+    for series in ["\"F.x\"", "\"F.y\""] {
+        assert_eq!(chart.matches(series).count(), 1, "{series} drawn once");
+    }
+    // Looked at: rendered to pixels, not blank, labels inside the canvas.
+    let drawing_png = render::look(&drawing, "Jansen drawing", 0.01);
+    let chart_png = render::look(&chart, "Jansen chart", 0.01);
+    render::save_for_docs(&drawing_png, "jansen-drawing.png");
+    render::save_for_docs(&chart_png, "jansen-foot.png");
     let table = mechanism_plot::any::csv("theta", "rad", &poses);
     let mut lines = table.lines();
     let header = lines.next().unwrap();
@@ -273,4 +297,65 @@ fn forces_read_by_name_with_quantities() {
         f.get("power_residual"),
         Some(Value::Scalar(f.power_residual))
     );
+}
+
+/// Where a real mechanism cannot be assembled, the generic pictures show a
+/// gap, not a line across it: the four-bar with a 200 mm crank cannot close
+/// while A is more than coupler + rocker = 431.8 mm from O4 (crank angles
+/// round 180 deg), so over a turn its chart of link3 has two runs with no
+/// vertex for the failed rows, the drawn path of P two pieces, the drawing
+/// one frame per pose that closes, and the CSV an empty row per failure.
+#[test]
+fn poses_that_fail_are_gaps_in_every_picture() {
+    let fb = FourBar::<f64> {
+        crank: 200.0,
+        ..Default::default()
+    };
+    let rows: Vec<(f64, Option<FourBarPosition<f64>>)> = (0..=72)
+        .map(|k| {
+            let deg = 5.0 * k as f64;
+            let input = FourBarInput {
+                theta2: deg.to_radians(),
+            };
+            (deg, fb.position(&input).ok())
+        })
+        .collect();
+    // Independently: A = 200 (cos t, sin t), O4 = (304.8, 0).
+    let closes = |deg: f64| {
+        let t = deg.to_radians();
+        (200.0 * t.cos() - 304.8).hypot(200.0 * t.sin()) <= 254.0 + 177.8
+    };
+    for (deg, p) in &rows {
+        assert_eq!(p.is_some(), closes(*deg), "{deg} deg");
+    }
+    let solved = rows.iter().filter(|(_, p)| p.is_some()).count();
+    assert!(solved > 20 && solved < 60, "{solved} of 73 close");
+    let units = mechanism_plot::any::Units {
+        length: "mm",
+        force: "N",
+    };
+    let chart = mechanism_plot::any::chart("gaps", ("θ2", "deg"), units, &rows, &["link3"])
+        .unwrap()
+        .to_svg()
+        .unwrap();
+    let doc = roxmltree::Document::parse(&chart).unwrap();
+    let d = doc
+        .descendants()
+        .find(|n| n.attribute("data-series") == Some("link3"))
+        .and_then(|n| n.attribute("d"))
+        .unwrap();
+    assert_eq!(d.matches('M').count(), 2, "two runs: {d}");
+    assert_eq!(
+        d.matches('L').count(),
+        solved - 2,
+        "one vertex per solved row"
+    );
+    let sketch =
+        mechanism_plot::any::sketch::<FourBar<f64>, _>("gaps", "mm", &rows, &["P"]).unwrap();
+    assert_eq!(sketch.frame_count(), solved);
+    let drawing = sketch.drawing(0).unwrap();
+    assert_eq!(drawing.matches(r#"class="path" data-name="P""#).count(), 2);
+    let csv = mechanism_plot::any::csv("theta2", "deg", &rows);
+    let empty = csv.lines().filter(|l| l.ends_with(",,,,")).count();
+    assert_eq!(empty, 73 - solved);
 }

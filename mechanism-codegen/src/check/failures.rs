@@ -6,7 +6,8 @@
 use super::explain::{explain, grashof, suggest};
 use super::{Found, Sweep};
 use crate::diag::{show_interval, show_num, show_value, Diagnostics};
-use crate::model::{group_kind, Input, Kind};
+use crate::kinds;
+use crate::model::{group_kind, Input};
 use mechanism_core::sweep::{self, Range};
 use mechanism_core::Fault;
 use proc_macro2::Span;
@@ -77,18 +78,13 @@ fn one_input(s: &Sweep<'_>, stmt_index: usize, list: &[&Found]) -> (Span, String
     // Guides parallel at every pose checked (a PRP whose guides turn
     // together, or keep their directions): said directly, not as a failure
     // at one input.
-    let parallel_everywhere = best.is_none()
-        && matches!(stmt.kind, Kind::Prp { .. })
-        && matches!(s.ev.solve(&[mid]), Err((_, Fault::Singular { .. })));
-    if let (true, Kind::Prp { g1, g2, .. }) = (parallel_everywhere, &stmt.kind) {
-        return (
-            span,
-            format!(
-                "group `{}` (PRP) cannot assemble: guides `{g1}` and `{g2}` are parallel at every pose checked ({name} in {}), so the joint is at infinity for every input\n  = help: make the guides cross: change the angle of one of them",
-                stmt.name,
-                show_interval(r.lo, r.hi, input.angle)
-            ),
-        );
+    let singular_everywhere =
+        best.is_none() && matches!(s.ev.solve(&[mid]), Err((_, Fault::Singular { .. })));
+    if singular_everywhere {
+        let over = format!("{name} in {}", show_interval(r.lo, r.hi, input.angle));
+        if let Some(text) = kinds::of(stmt).singular_everywhere(&over) {
+            return (span, text);
+        }
     }
     let grashof = if !input.declared {
         grashof(model, s.plan, stmt_index)

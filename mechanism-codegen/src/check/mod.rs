@@ -31,7 +31,8 @@ pub mod modes;
 mod singular;
 
 use crate::diag::{show_interval, Diagnostics};
-use crate::model::{Input, Kind, Model};
+use crate::kinds;
+use crate::model::{Input, Model};
 use crate::plan::{checked, Checked, Plan};
 use eval::{position_values, Evaluator, MAX_GROUPS};
 use mechanism_core::sweep::{self, Event, Range, Tolerances};
@@ -89,7 +90,7 @@ pub fn joints_at_infinity(model: &Model, checked: &Checked) -> Vec<bool> {
     checked
         .groups
         .iter()
-        .map(|&i| matches!(model.stmts[i].kind, Kind::Prp { .. } | Kind::Rpp { .. }))
+        .map(|&i| kinds::of(&model.stmts[i]).joint_at_infinity())
         .collect()
 }
 

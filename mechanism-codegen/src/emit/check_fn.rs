@@ -3,7 +3,8 @@
 //! generated `position()`, so that it holds for any parameters.
 
 use crate::check::joints_at_infinity;
-use crate::model::{Kind, Model};
+use crate::kinds;
+use crate::model::Model;
 use crate::plan::{checked, Plan};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -12,20 +13,7 @@ use syn::Ident;
 /// The scaled determinant of a checked group, from the generated position
 /// struct `pos` (code).
 pub(crate) fn det_code(model: &Model, stmt_index: usize) -> TokenStream {
-    let stmt = &model.stmts[stmt_index];
-    let g = format_ident!("grp_{}", stmt.name);
-    match &stmt.kind {
-        Kind::Rrr { .. } | Kind::Actuator { .. } => {
-            quote!(::mechanism::__private::det_rrr(&pos.#g))
-        }
-        Kind::Rrp { guide, .. } => quote!(::mechanism::__private::det_rrp(&pos.#g, &pos.#guide)),
-        Kind::Rpr { a, b, .. } => {
-            quote!(::mechanism::__private::det_rpr(&pos.#g, &pos.#a, &pos.#b))
-        }
-        Kind::Prp { g1, g2, .. } => quote!(::mechanism::__private::det_prp(&pos.#g1, &pos.#g2)),
-        Kind::Rpp { guide, .. } => quote!(::mechanism::__private::det_rpp(&pos.#g, &pos.#guide)),
-        _ => quote!(1.0),
-    }
+    kinds::of(&model.stmts[stmt_index]).det_code()
 }
 
 /// The generated `check()` method (empty when an input has no range).

@@ -4,7 +4,8 @@
 //! that draws or tabulates any mechanism. Unused, it costs nothing: a constant
 //! and trait methods nobody calls.
 
-use crate::model::{Kind, Level, Model, Origin};
+use crate::kinds::{self, GuideLine};
+use crate::model::{Level, Model};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -52,12 +53,10 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
     let mut points = Vec::new();
     for &i in &plan.order {
         let stmt = &model.stmts[i];
-        let kind = match stmt.kind {
-            Kind::Guide { .. } | Kind::Rpr { .. } => continue,
-            Kind::Ground { .. } => quote!(Ground),
-            Kind::Point { .. } => quote!(OnLink),
-            _ => quote!(Joint),
+        let Some(kind) = kinds::of(stmt).point_kind() else {
+            continue;
         };
+        let kind = format_ident!("{}", kind);
         let n = stmt.name.to_string();
         points.push(quote!(#point { name: #n, kind: #point_kind::#kind }));
     }
@@ -71,11 +70,9 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
             };
             // A link on a guide is a block (the plan knows which guide); so
             // is an RPR's first link, sliding along its second.
-            let kind = match (&stmt.kind, j, &info.guide) {
-                (_, _, Some(_)) | (Kind::Rpr { .. }, 0, None) => quote!(Block),
-                (Kind::Crank { .. }, _, None) => quote!(Crank),
-                (Kind::Actuator { .. }, 1, None) => quote!(Cylinder),
-                _ => quote!(Bar),
+            let kind = match &info.guide {
+                Some(_) => format_ident!("Block"),
+                None => format_ident!("{}", kinds::of(stmt).link_kind(j)),
             };
             let guide = info.guide.clone();
             let n = l.to_string();
@@ -91,18 +88,15 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
     let mut guides = Vec::new();
     for &i in &plan.order {
         let stmt = &model.stmts[i];
-        if let Kind::Guide {
-            origin,
-            angle,
+        if let Some(GuideLine {
             carrier,
-        } = &stmt.kind
+            through,
+            angle,
+        }) = kinds::of(stmt).as_guide()
         {
             let n = stmt.name.to_string();
-            let carrier = option_str(carrier.as_ref().map(|c| c.to_string()));
-            let through = option_str(match origin {
-                Origin::Point(p) => Some(p.to_string()),
-                Origin::Coords(..) => None,
-            });
+            let carrier = option_str(carrier.map(|c| c.to_string()));
+            let through = option_str(through.map(|p| p.to_string()));
             let angle = match angle.fold().filter(|a| a.is_finite()) {
                 Some(a) => {
                     let a = proc_macro2::Literal::f64_suffixed(a);
@@ -117,9 +111,10 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
     }
     let (input, quantity) = (path("Input"), path("Quantity"));
     let inputs = model.stmts.iter().filter_map(|s| {
-        let q = match s.kind {
-            Kind::Crank { .. } => quote!(Angle),
-            _ => quote!(Length),
+        let q = if kinds::of(s).input_is_angle() {
+            quote!(Angle)
+        } else {
+            quote!(Length)
         };
         let driver = s.name.to_string();
         s.kind.input().map(|i| {

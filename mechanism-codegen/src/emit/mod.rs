@@ -23,7 +23,8 @@ mod solution;
 pub mod stub;
 
 use crate::check::Findings;
-use crate::model::{Kind, Level, Model};
+use crate::kinds;
+use crate::model::{Level, Model};
 use crate::plan::Plan;
 pub(crate) use names::{allow_literal_lints, tag};
 use names::{Generated, TypeNames};
@@ -32,6 +33,7 @@ use quote::quote;
 use rates::Rate;
 use reads::Reads;
 use std::collections::BTreeSet;
+use syn::Ident;
 
 /// Expands a valid, planned and checked model: the mechanism's items, its
 /// `check()`, the expansion-time check's warnings and, with `#[self_test]`,
@@ -66,18 +68,10 @@ fn moving_points(model: &Model, plan: &Plan) -> BTreeSet<String> {
     let mut moving: BTreeSet<String> = BTreeSet::new();
     for &i in &plan.solve {
         let stmt = &model.stmts[i];
-        match &stmt.kind {
-            Kind::Ground { .. } | Kind::Guide { .. } | Kind::Rpr { .. } => {}
-            Kind::Point { link, from, .. } => {
-                if plan.turning_link(&link.to_string()).is_some()
-                    || moving.contains(&from.to_string())
-                {
-                    moving.insert(stmt.name.to_string());
-                }
-            }
-            _ => {
-                moving.insert(stmt.name.to_string());
-            }
+        let link_turns = |l: &Ident| plan.turning_link(&l.to_string()).is_some();
+        let moves = |p: &Ident| moving.contains(&p.to_string());
+        if kinds::of(stmt).point_moves(&link_turns, &moves) {
+            moving.insert(stmt.name.to_string());
         }
     }
     moving

@@ -1,9 +1,9 @@
 //! Names and small token helpers shared by the emitters: the generated types'
 //! names, the locals of the position code, the error tag of a statement.
 
-use crate::model::{Mode, Model, Stmt};
+use crate::model::Model;
 use crate::plan::Outputs;
-use crate::value::{lit, Value};
+use crate::value::lit;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use std::collections::BTreeSet;
@@ -65,59 +65,7 @@ pub(crate) fn allow_literal_lints() -> TokenStream {
     quote!(#[allow(clippy::approx_constant, clippy::excessive_precision, clippy::unreadable_literal)])
 }
 
-/// `::mechanism::Mode::Plus` or `Minus`.
-pub(super) fn mode_tokens(mode: Mode) -> TokenStream {
-    match mode {
-        Mode::Plus => quote!(::mechanism::Mode::Plus),
-        Mode::Minus => quote!(::mechanism::Mode::Minus),
-    }
-}
-
-/// The assembly mode argument of a statement's core call: its literal
-/// `mode` (`::mechanism::Mode::Plus`), or `self.PARAM` when the definition
-/// makes it a run-time parameter (`params { circuit = left }`).
-pub(super) fn mode_arg(stmt: &Stmt, mode: Mode) -> TokenStream {
-    match &stmt.mode_param {
-        Some(param) => quote!(self.#param),
-        None => mode_tokens(mode),
-    }
-}
-
-/// A unit vector at a given angle: folded at expansion time when literal.
-pub(super) fn unit_vector(angle: &Value) -> TokenStream {
-    match angle.fold() {
-        Some(a) => {
-            let (s, c) = a.sin_cos();
-            let (c, s) = (lit(c), lit(s));
-            quote!(::mechanism::Vector2::new(#c, #s))
-        }
-        None => {
-            let a = angle.emit();
-            quote!(::mechanism::geometry::unit(#a))
-        }
-    }
-}
-
-/// The local variable of the position code that holds the user's name
-/// `name` (a point, a guide, a link angle or a slide): `pos_NAME`. A bare
-/// `let NAME = ..` would be a pattern, not a binding, wherever a constant,
-/// static or unit struct of that name is in scope (`const G: f64 = 9.81;`
-/// beside a point `G`), and would not compile. The velocity and acceleration
-/// code already use `vel_NAME` and `acc_NAME`.
-pub(super) fn local(name: &Ident) -> Ident {
-    format_ident!("pos_{}", name)
-}
-
-/// `grp_NAME`: the solved position state of a statement's group or driver.
-pub(super) fn grp(stmt: &Stmt) -> Ident {
-    format_ident!("grp_{}", stmt.name)
-}
-
-/// `.map_err(|e| e.in_group(NAME))?`: tags a core error with the statement's name.
-pub(crate) fn tag(stmt: &Stmt) -> TokenStream {
-    let name = stmt.name.to_string();
-    quote!(.map_err(|e| e.in_group(#name))?)
-}
+pub(crate) use crate::kinds::tokens::{grp, local, tag};
 
 /// The motion of a known point as an optional argument of a core call:
 /// `Some(&SCOPE PREFIX_POINT)` when it moves, `None` when it is still.
@@ -205,35 +153,9 @@ pub fn debug_impl(ty: &Ident, outputs: &[Ident], extra: &[&str]) -> TokenStream 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::value::ValueKind;
-    use proc_macro2::Span;
 
     fn flat(code: &TokenStream) -> String {
         code.to_string().split_whitespace().collect()
-    }
-
-    // Proves a literal angle's unit vector is folded at expansion into two
-    // literals (sin 90 deg exactly 1) while a parameter angle calls
-    // `geometry::unit` at run time.
-    #[test]
-    fn unit_vector_folds_literal_angles_only() {
-        let right = Value::lit(std::f64::consts::FRAC_PI_2, Span::call_site());
-        let folded = flat(&unit_vector(&right));
-        assert!(folded.starts_with("::mechanism::Vector2::new("), "{folded}");
-        assert!(
-            folded.ends_with(",<Tas::mechanism::Real>::lit(1f64))"),
-            "{folded}"
-        );
-        assert!(!folded.contains("unit("), "{folded}");
-        let param = Value {
-            kind: ValueKind::Param(format_ident!("phi")),
-            span: Span::call_site(),
-            tokens: quote!(phi),
-        };
-        assert_eq!(
-            flat(&unit_vector(&param)),
-            "::mechanism::geometry::unit(self.phi)"
-        );
     }
 
     // Proves the marker is added only to a struct with no field of type `T`,

@@ -2,13 +2,11 @@
 //! the position struct (outputs, and the hidden values later code reads), and
 //! the `position` and `position_cos_sin` methods.
 
-use super::names::{
-    debug_impl, grp, local, marker, mode_arg, output_docs, tag, unit_vector, Generated, TypeNames,
-};
+use super::names::{debug_impl, grp, local, marker, output_docs, tag, Generated, TypeNames};
 use super::reads::{Analysis, Reads};
-use crate::model::{Kind, Local, Model, Origin, Stmt};
+use crate::kinds::{self, tokens::axis, Solve};
+use crate::model::{Model, Stmt};
 use crate::plan::Plan;
-use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use std::collections::BTreeSet;
@@ -30,21 +28,6 @@ impl Stored {
             local: local.clone(),
             ty,
         }
-    }
-}
-
-/// The core type of a statement's solved position state (`grp_NAME`).
-fn group_position_type(kind: &Kind) -> TokenStream {
-    match kind {
-        Kind::Crank { .. } => quote!(::mechanism::driver::crank::CrankPosition<T>),
-        Kind::Slider { .. } => quote!(::mechanism::driver::slider::SliderPosition<T>),
-        Kind::Actuator { .. } => quote!(::mechanism::driver::actuator::ActuatorPosition<T>),
-        Kind::Rrr { .. } => quote!(::mechanism::dyad::rrr::RrrPosition<T>),
-        Kind::Rrp { .. } => quote!(::mechanism::dyad::rrp::RrpPosition<T>),
-        Kind::Rpr { .. } => quote!(::mechanism::dyad::rpr::RprPosition<T>),
-        Kind::Prp { .. } => quote!(::mechanism::dyad::prp::PrpPosition<T>),
-        Kind::Rpp { .. } => quote!(::mechanism::dyad::rpp::RppPosition<T>),
-        Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } => quote!(()),
     }
 }
 
@@ -78,17 +61,8 @@ impl<'a> Emitter<'a> {
         // Which link axes are needed in position.
         let mut axes = BTreeSet::new();
         for stmt in plan.solve.iter().map(|&i| &model.stmts[i]) {
-            match &stmt.kind {
-                Kind::Point { link, .. } => {
-                    axes.insert(link.to_string());
-                }
-                Kind::Guide {
-                    carrier: Some(link),
-                    ..
-                } => {
-                    axes.insert(link.to_string());
-                }
-                _ => {}
+            if let Some(link) = kinds::of(stmt).reads_axis() {
+                axes.insert(link.to_string());
             }
         }
         Emitter {
@@ -127,197 +101,49 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// Unit axis and raw direction of link `index` of `stmt`, in position
-    /// scope (guides by their locals, [`local`]).
-    fn link_direction(&self, stmt: &Stmt, index: usize) -> (TokenStream, TokenStream) {
-        let g = grp(stmt);
-        match (&stmt.kind, index) {
-            (Kind::Crank { .. }, _) | (Kind::Rpr { .. }, _) => (quote!(#g.axis), quote!(#g.axis)),
-            (Kind::Slider { guide, .. }, _)
-            | (Kind::Rrp { guide, .. }, 1)
-            | (Kind::Rpp { guide, .. }, 1) => {
-                let guide = local(guide);
-                (quote!(#guide.dir), quote!(#guide.dir))
-            }
-            (Kind::Actuator { l, .. }, 0)
-            | (Kind::Rrp { l, .. }, 0)
-            | (Kind::Rrr { l1: l, .. }, 0) => {
-                let l = l.emit();
-                (quote!(#g.r1 / #l), quote!(#g.r1))
-            }
-            (Kind::Rrr { l2, .. }, _) => {
-                let l2 = l2.emit();
-                (quote!(#g.r2 / #l2), quote!(#g.r2))
-            }
-            (Kind::Actuator { input, .. }, _) => (quote!(#g.r2 / input.#input), quote!(#g.r2)),
-            (Kind::Prp { g1: guide, .. }, 0) | (Kind::Prp { g2: guide, .. }, _) => {
-                let guide = local(guide);
-                (quote!(#guide.dir), quote!(#guide.dir))
-            }
-            (Kind::Rpp { .. }, _) => (quote!(#g.slot), quote!(#g.slot)),
-            _ => (
-                quote!(::mechanism::Vector2::x()),
-                quote!(::mechanism::Vector2::x()),
-            ),
-        }
-    }
-
     /// Position statements for one statement; returns the code and the values
     /// the position struct may keep (those a later reader reads).
     fn position(&self, stmt: &Stmt) -> (TokenStream, Vec<Stored>) {
-        let name = &local(&stmt.name);
-        let own_ty = match stmt.kind {
-            Kind::Guide { .. } => quote!(::mechanism::guide::Line<T>),
-            _ => quote!(::mechanism::Point2<T>),
-        };
-        let own = Stored::new(&stmt.name, name, own_ty);
-        let g = grp(stmt);
-        let group = Stored::new(&g, &g, group_position_type(&stmt.kind));
-        let t = tag(stmt);
-        let (code, mut fields) = match &stmt.kind {
-            Kind::Ground { x, y } => {
-                let (x, y) = (x.emit(), y.emit());
+        let (name, g, t) = (&local(&stmt.name), grp(stmt), tag(stmt));
+        let kind = kinds::of(stmt);
+        let (code, mut fields) = match kind.position(self.cos_sin) {
+            Solve::Own { expr, ty } => (
+                quote!(let #name = #expr;),
+                vec![Stored::new(&stmt.name, name, ty)],
+            ),
+            Solve::Group { call, joint: None } => (
+                quote!(let #g = #call #t;),
+                vec![Stored::new(&g, &g, kind.position_type())],
+            ),
+            Solve::Group {
+                call,
+                joint: Some(joint),
+            } => {
+                let joint = format_ident!("{}", joint);
+                let own_ty = quote!(::mechanism::Point2<T>);
                 (
-                    quote!(let #name = ::mechanism::Point2::new(#x, #y);),
-                    vec![own],
+                    quote! {
+                        let #g = #call #t;
+                        let #name = #g.#joint;
+                    },
+                    vec![
+                        Stored::new(&g, &g, kind.position_type()),
+                        Stored::new(&stmt.name, name, own_ty),
+                    ],
                 )
-            }
-            Kind::Guide {
-                origin,
-                angle,
-                carrier,
-            } => {
-                let line = guide_line(origin, angle, carrier.as_ref());
-                (quote!(let #name = #line;), vec![own])
-            }
-            Kind::Point {
-                link,
-                from,
-                local: offset,
-            } => {
-                let axis = format_ident!("axis_{}", link);
-                let from_l = local(from);
-                let offset = point_offset(offset);
-                let code = quote! {
-                    let #name = ::mechanism::link::point_position(&#from_l, &#axis, &#offset) #t;
-                };
-                (code, vec![own])
-            }
-            Kind::Rpr { a, b, mode, offset } => {
-                let (m, o) = (mode_arg(stmt, *mode), offset.emit());
-                let (a_l, b_l) = (local(a), local(b));
-                let code = quote! {
-                    let #g = ::mechanism::dyad::rpr::position(&#a_l, &#b_l, #o, #m) #t;
-                };
-                (code, vec![group])
-            }
-            _ => {
-                let (call, joint) = self.group_call(stmt);
-                let code = quote! {
-                    let #g = #call #t;
-                    let #name = #g.#joint;
-                };
-                (code, vec![group, own])
             }
         };
         // Unit axes of the links this statement creates, where needed.
         let mut axes = TokenStream::new();
         for (j, link) in stmt.links.iter().enumerate() {
             if self.axes.contains(&link.to_string()) {
-                let axis = format_ident!("axis_{}", link);
-                let (unit, _) = self.link_direction(stmt, j);
+                let axis = axis(link);
+                let (unit, _) = kind.link_direction(j);
                 axes.extend(quote!(let #axis = #unit;));
                 fields.push(Stored::new(&axis, &axis, quote!(::mechanism::Vector2<T>)));
             }
         }
         (quote!(#code #axes), fields)
-    }
-
-    /// The core call that solves a driver or a group whose statement names a
-    /// point (all but RPR), and the field of its result that is that point.
-    fn group_call(&self, stmt: &Stmt) -> (TokenStream, Ident) {
-        let (call, joint) = match &stmt.kind {
-            Kind::Crank {
-                pivot,
-                radius,
-                input,
-                cos_sin,
-            } => {
-                let (r, pivot_l) = (radius.emit(), local(pivot));
-                let call = if *cos_sin && self.cos_sin {
-                    quote!(::mechanism::driver::crank::position_cos_sin(&#pivot_l, #r, input_cs.#input.cos, input_cs.#input.sin))
-                } else {
-                    quote!(::mechanism::driver::crank::position(&#pivot_l, #r, input.#input))
-                };
-                (call, "tip")
-            }
-            Kind::Slider {
-                guide,
-                input,
-                offset,
-            } => {
-                let (o, guide_l) = (offset.emit(), local(guide));
-                let call =
-                    quote!(::mechanism::driver::slider::position(&#guide_l, #o, input.#input));
-                (call, "p")
-            }
-            Kind::Actuator {
-                a,
-                l,
-                b,
-                input,
-                mode,
-            } => {
-                let (l, m) = (l.emit(), mode_arg(stmt, *mode));
-                let (a_l, b_l) = (local(a), local(b));
-                let call = quote!(::mechanism::driver::actuator::position(&#a_l, #l, &#b_l, input.#input, #m));
-                (call, "c")
-            }
-            Kind::Rrr { a, l1, b, l2, mode } => {
-                let (l1, l2, m) = (l1.emit(), l2.emit(), mode_arg(stmt, *mode));
-                let (a_l, b_l) = (local(a), local(b));
-                let call = quote!(::mechanism::dyad::rrr::position(&#a_l, #l1, &#b_l, #l2, #m));
-                (call, "c")
-            }
-            Kind::Rrp {
-                a,
-                l,
-                guide,
-                mode,
-                offset,
-            } => {
-                let (l, m, o) = (l.emit(), mode_arg(stmt, *mode), offset.emit());
-                let (a_l, guide_l) = (local(a), local(guide));
-                let call = quote!(::mechanism::dyad::rrp::position(&#a_l, #l, &#guide_l, #o, #m));
-                (call, "c")
-            }
-            Kind::Prp {
-                g1,
-                g2,
-                offset1,
-                offset2,
-            } => {
-                let (o1, o2) = (offset1.emit(), offset2.emit());
-                let (g1_l, g2_l) = (local(g1), local(g2));
-                let call = quote!(::mechanism::dyad::prp::position(&#g1_l, #o1, &#g2_l, #o2));
-                (call, "c")
-            }
-            Kind::Rpp {
-                a,
-                guide,
-                slot,
-                offset,
-            } => {
-                let (u, o) = (unit_vector(slot), offset.emit());
-                let (a_l, guide_l) = (local(a), local(guide));
-                let call = quote!(::mechanism::dyad::rpp::position(&#a_l, &#guide_l, #o, &#u));
-                (call, "q")
-            }
-            Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } | Kind::Rpr { .. } => {
-                unreachable!("`position` emits {} itself", stmt.name)
-            }
-        };
-        (call, format_ident!("{}", joint))
     }
 
     /// Output locals: link angles and slides. `cos_sin`: the code for
@@ -327,18 +153,12 @@ impl<'a> Emitter<'a> {
         let mut code = TokenStream::new();
         for link in &out.links {
             let info = &plan.links[&link.to_string()];
-            let (_, dir) = self.link_direction(&model.stmts[info.stmt], info.index);
+            let kind = kinds::of(&model.stmts[info.stmt]);
+            let (_, dir) = kind.link_direction(info.index);
             // A crank's angle is its input: reduced to (-pi, pi], no atan2.
-            let value = match &model.stmts[info.stmt].kind {
-                Kind::Crank {
-                    input,
-                    cos_sin: marked,
-                    ..
-                } if !(cos_sin && *marked) => {
-                    quote!(::mechanism::geometry::wrap_angle(input.#input))
-                }
-                _ => quote!(::mechanism::geometry::angle(&#dir)),
-            };
+            let value = kind
+                .link_angle(cos_sin)
+                .unwrap_or_else(|| quote!(::mechanism::geometry::angle(&#dir)));
             let l = local(link);
             code.extend(quote!(let #l = #value;));
         }
@@ -349,64 +169,11 @@ impl<'a> Emitter<'a> {
         } in &out.slides
         {
             let g = grp(&model.stmts[*i]);
-            let field = match (&model.stmts[*i].kind, slot) {
-                (Kind::Prp { .. }, 0) | (Kind::Rpp { .. }, 0) => quote!(s1),
-                (Kind::Prp { .. }, _) | (Kind::Rpp { .. }, _) => quote!(s2),
-                _ => quote!(s),
-            };
+            let field = kinds::of(&model.stmts[*i]).slide_field(*slot);
             let l = local(slide);
             code.extend(quote!(let #l = #g.#field;));
         }
         code
-    }
-}
-
-/// A guide's line: its origin and its direction (carried guides turn with
-/// their link's axis).
-fn guide_line(origin: &Origin, angle: &Value, carrier: Option<&Ident>) -> TokenStream {
-    let origin = match origin {
-        Origin::Point(p) => {
-            let p = local(p);
-            quote!(#p)
-        }
-        Origin::Coords(x, y) => {
-            let (x, y) = (x.emit(), y.emit());
-            quote!(::mechanism::Point2::new(#x, #y))
-        }
-    };
-    let dir = match carrier {
-        None => unit_vector(angle),
-        Some(link) => {
-            let axis = format_ident!("axis_{}", link);
-            if angle.fold() == Some(0.0) {
-                quote!(#axis)
-            } else {
-                let u = unit_vector(angle);
-                quote!(::mechanism::link::local_offset(&#axis, &#u))
-            }
-        }
-    };
-    quote!(::mechanism::guide::Line { origin: #origin, dir: #dir })
-}
-
-/// A point's offset in its link's frame, folded when literal.
-fn point_offset(offset: &Local) -> TokenStream {
-    match offset {
-        Local::Cartesian(x, y) => {
-            let (x, y) = (x.emit(), y.emit());
-            quote!(::mechanism::Vector2::new(#x, #y))
-        }
-        Local::Polar(d, a) => match (d.fold(), a.fold()) {
-            (Some(d), Some(a)) => {
-                let (s, c) = a.sin_cos();
-                let (x, y) = (lit(d * c), lit(d * s));
-                quote!(::mechanism::Vector2::new(#x, #y))
-            }
-            _ => {
-                let (d, u) = (d.emit(), unit_vector(a));
-                quote!((#u * #d))
-            }
-        },
     }
 }
 
@@ -524,14 +291,7 @@ fn marked_cranks(model: &Model) -> Vec<&Ident> {
     model
         .stmts
         .iter()
-        .filter_map(|s| match &s.kind {
-            Kind::Crank {
-                input,
-                cos_sin: true,
-                ..
-            } => Some(input),
-            _ => None,
-        })
+        .filter_map(|s| kinds::of(s).cos_sin_input())
         .collect()
 }
 

@@ -2,11 +2,11 @@
 //! solve order (one function per statement family), the velocity and
 //! acceleration structs and their methods.
 
-use super::names::{
-    debug_impl, lit_zero, marker, opt_point, output_docs, tag, Generated, TypeNames,
-};
+use super::names::{debug_impl, lit_zero, marker, opt_point, output_docs, Generated, TypeNames};
 use super::reads::{Analysis, Reads};
-use crate::model::{Kind, Model, Origin, Stmt};
+use crate::kinds;
+use crate::kinds::rates::{vec_ty, RateCx};
+use crate::model::Model;
 use crate::plan::{Outputs, Plan};
 use crate::value::lit;
 use proc_macro2::TokenStream;
@@ -47,7 +47,6 @@ pub(super) struct RatesCode {
 /// The state of one rate emitter: the code so far, the values it may store
 /// and the slides' rates by (statement, slot).
 struct RateEmitter<'a> {
-    model: &'a Model,
     plan: &'a Plan,
     moving: &'a BTreeSet<String>,
     accel: bool,
@@ -55,44 +54,28 @@ struct RateEmitter<'a> {
     pfx: &'static str,
     /// `omega` or `alpha`: prefix of link rates.
     wpfx: &'static str,
+    /// The statement being emitted (its slides' rates are keyed by it).
+    current: usize,
     code: TokenStream,
     fields: Vec<Field>,
     slide_values: Vec<(usize, usize, TokenStream)>,
-}
-
-fn vec_ty() -> TokenStream {
-    quote!(::mechanism::Vector2<T>)
 }
 
 fn none() -> TokenStream {
     quote!(::core::option::Option::None)
 }
 
-impl RateEmitter<'_> {
-    /// Motion of a known point at this level.
+impl RateCx for RateEmitter<'_> {
+    fn accel(&self) -> bool {
+        self.accel
+    }
+
+    fn moves(&self, p: &Ident) -> bool {
+        self.moving.contains(&p.to_string())
+    }
+
     fn point_arg(&self, p: &Ident) -> TokenStream {
         opt_point(p, self.moving, self.pfx, &quote!())
-    }
-
-    /// Angular rate of a link at this level (None: it does not turn).
-    fn link_rate(&self, link: &Ident) -> Option<Ident> {
-        self.plan
-            .turning_link(&link.to_string())
-            .map(|l| format_ident!("{}_{}", self.wpfx, l))
-    }
-
-    fn link_omega_in_accel(&self, link: &Ident) -> Option<TokenStream> {
-        self.plan.turning_link(&link.to_string()).map(|l| {
-            let w = format_ident!("omega_{}", l);
-            quote!(vel.#w)
-        })
-    }
-
-    fn carried(&self, g: &Ident) -> bool {
-        self.plan
-            .guides
-            .get(&g.to_string())
-            .is_some_and(|i| i.carrier.is_some())
     }
 
     /// Guide velocity argument (in the velocity fn: local; in acceleration: from `vel`).
@@ -116,292 +99,38 @@ impl RateEmitter<'_> {
         quote!(::core::option::Option::Some(&#n))
     }
 
-    /// `let LOCAL = VALUE;`, and LOCAL may be stored with type `ty`.
-    fn named(&mut self, local: Ident, value: TokenStream, ty: TokenStream) {
-        self.code.extend(quote!(let #local = #value;));
-        self.fields.push(Field { name: local, ty });
+    fn link_rate(&self, link: &Ident) -> Option<Ident> {
+        self.plan
+            .turning_link(&link.to_string())
+            .map(|l| format_ident!("{}_{}", self.wpfx, l))
     }
 
-    /// The rate of link `k` of `stmt` (`omega_LINK` or `alpha_LINK`).
-    fn own(&self, stmt: &Stmt, k: usize) -> Ident {
-        format_ident!("{}_{}", self.wpfx, stmt.links[k])
-    }
-
-    /// The motion of point `stmt` (`vel_NAME` or `acc_NAME`).
-    fn motion(&self, stmt: &Stmt) -> Ident {
-        format_ident!("{}_{}", self.pfx, stmt.name)
-    }
-
-    fn statement(&mut self, i: usize) {
-        let stmt = &self.model.stmts[i];
-        match &stmt.kind {
-            Kind::Ground { .. } | Kind::Guide { carrier: None, .. } => {}
-            Kind::Guide {
-                origin,
-                carrier: Some(link),
-                ..
-            } => self.carried_guide(stmt, origin, link),
-            Kind::Crank { pivot, input, .. } => self.crank(stmt, pivot, input),
-            Kind::Slider { guide, input, .. } => self.slider(stmt, guide, input),
-            Kind::Point { link, from, .. } => self.point(stmt, link, from),
-            _ => self.group(i, stmt),
-        }
-    }
-
-    /// A guide carried by a link: the motion of its line.
-    fn carried_guide(&mut self, stmt: &Stmt, origin: &Origin, link: &Ident) {
-        let gpfx = if self.accel { "gacc" } else { "gvel" };
-        let n = format_ident!("{}_{}", gpfx, stmt.name);
-        let origin_motion = match origin {
-            Origin::Point(p) if self.moving.contains(&p.to_string()) => {
-                let v = format_ident!("{}_{}", self.pfx, p);
-                quote!(#v)
-            }
-            _ => quote!(::mechanism::Vector2::zeros()),
-        };
-        let w = self
-            .link_rate(link)
-            .map(|w| quote!(#w))
-            .unwrap_or_else(lit_zero);
-        let (body, ty) = if self.accel {
-            (
-                quote!(::mechanism::guide::LineAcceleration { a_origin: #origin_motion, alpha: #w }),
-                quote!(::mechanism::guide::LineAcceleration<T>),
-            )
-        } else {
-            (
-                quote!(::mechanism::guide::LineVelocity { v_origin: #origin_motion, omega: #w }),
-                quote!(::mechanism::guide::LineVelocity<T>),
-            )
-        };
-        self.code.extend(quote!(let #n = #body;));
-        self.fields.push(Field { name: n, ty });
-    }
-
-    fn crank(&mut self, stmt: &Stmt, pivot: &Ident, input: &Ident) {
-        let (g, pv, t) = (
-            format_ident!("grp_{}", stmt.name),
-            self.motion(stmt),
-            tag(stmt),
-        );
-        let w = self.own(stmt, 0);
-        let m = self.point_arg(pivot);
-        self.code.extend(if self.accel {
-            quote! {
-                let #pv = ::mechanism::driver::crank::acceleration(&pos.#g, #m, rates.#input, accels.#input) #t;
-                let #w = accels.#input;
-            }
-        } else {
-            quote! {
-                let #pv = ::mechanism::driver::crank::velocity(&pos.#g, #m, rates.#input) #t;
-                let #w = rates.#input;
-            }
-        });
-        self.fields.push(Field {
-            name: pv,
-            ty: vec_ty(),
-        });
-        self.fields.push(Field {
-            name: w,
-            ty: quote!(T),
-        });
-    }
-
-    fn slider(&mut self, stmt: &Stmt, guide: &Ident, input: &Ident) {
-        let (g, pv, t) = (
-            format_ident!("grp_{}", stmt.name),
-            self.motion(stmt),
-            tag(stmt),
-        );
-        let gvel = self.guide_vel(guide);
-        self.code.extend(if self.accel {
-            let gacc = self.guide_acc(guide);
-            quote! {
-                let #pv = ::mechanism::driver::slider::acceleration(&pos.#g, &pos.#guide, pos.input.#input, rates.#input, accels.#input, #gvel, #gacc) #t;
-            }
-        } else {
-            quote! {
-                let #pv = ::mechanism::driver::slider::velocity(&pos.#g, &pos.#guide, pos.input.#input, rates.#input, #gvel) #t;
-            }
-        });
-        self.fields.push(Field {
-            name: pv,
-            ty: vec_ty(),
-        });
-    }
-
-    /// A point on a link: its base point's motion plus its motion about it.
-    fn point(&mut self, stmt: &Stmt, link: &Ident, from: &Ident) {
-        let name = &stmt.name;
-        if !self.moving.contains(&name.to_string()) {
-            return;
-        }
-        let (pv, t) = (self.motion(stmt), tag(stmt));
-        let base = if self.moving.contains(&from.to_string()) {
-            let b = format_ident!("{}_{}", self.pfx, from);
-            Some(quote!(#b))
-        } else {
-            None
-        };
-        let relative = match (self.link_rate(link), self.accel) {
-            (None, _) => None,
-            (Some(w), false) => {
-                Some(quote!(::mechanism::link::point_velocity(&(pos.#name - pos.#from), #w) #t))
-            }
-            (Some(alpha), true) => {
-                let w = self.link_omega_in_accel(link).unwrap_or_else(lit_zero);
-                Some(
-                    quote!(::mechanism::link::point_acceleration(&(pos.#name - pos.#from), #w, #alpha) #t),
-                )
-            }
-        };
-        let value = match (base, relative) {
-            (Some(b), Some(r)) => quote!(#b + #r),
-            (Some(b), None) => b,
-            (None, Some(r)) => r,
-            (None, None) => quote!(::mechanism::Vector2::zeros()),
-        };
-        self.code.extend(quote!(let #pv = #value;));
-        self.fields.push(Field {
-            name: pv,
-            ty: vec_ty(),
-        });
-    }
-
-    /// The five groups and the actuator share one shape: a call that returns
-    /// a struct, then named pieces of it.
-    fn group(&mut self, i: usize, stmt: &Stmt) {
-        let Some(call) = self.group_call(stmt) else {
-            return;
-        };
-        let gr = format_ident!(
-            "{}_{}",
-            if self.accel { "grp_a" } else { "grp_v" },
-            stmt.name
-        );
-        let t = tag(stmt);
-        self.code.extend(quote!(let #gr = #call #t;));
-        self.fields.push(Field {
-            name: gr.clone(),
-            ty: group_type(&stmt.kind, self.accel),
-        });
-        self.group_pieces(i, stmt, &gr);
-    }
-
-    /// The core call of a group's (or the actuator's) rates.
-    fn group_call(&self, stmt: &Stmt) -> Option<TokenStream> {
-        let g = format_ident!("grp_{}", stmt.name);
-        let gv = format_ident!("grp_v_{}", stmt.name);
-        Some(match (&stmt.kind, self.accel) {
-            (Kind::Actuator { a, b, input, .. }, false) => {
-                let (ma, mb) = (self.point_arg(a), self.point_arg(b));
-                quote!(::mechanism::driver::actuator::velocity(&pos.#g, #ma, #mb, rates.#input))
-            }
-            (Kind::Actuator { a, b, input, .. }, true) => {
-                let (ma, mb) = (self.point_arg(a), self.point_arg(b));
-                quote!(::mechanism::driver::actuator::acceleration(&pos.#g, &vel.#gv, #ma, #mb, rates.#input, accels.#input))
-            }
-            (Kind::Rrr { a, b, l1, l2, .. }, false) => {
-                // The link lengths are the determinant's scale: no square root.
-                let (ma, mb, l1, l2) = (self.point_arg(a), self.point_arg(b), l1.emit(), l2.emit());
-                quote!(::mechanism::dyad::rrr::velocity_lengths(&pos.#g, #l1, #l2, #ma, #mb))
-            }
-            (Kind::Rrr { a, b, .. }, true) => {
-                let (ma, mb) = (self.point_arg(a), self.point_arg(b));
-                quote!(::mechanism::dyad::rrr::acceleration(&pos.#g, &vel.#gv, #ma, #mb))
-            }
-            (Kind::Rrp { a, guide, .. }, false) => {
-                let (ma, gvel) = (self.point_arg(a), self.guide_vel(guide));
-                quote!(::mechanism::dyad::rrp::velocity(&pos.#g, &pos.#guide, #ma, #gvel))
-            }
-            (Kind::Rrp { a, guide, .. }, true) => {
-                let (ma, gvel, gacc) = (
-                    self.point_arg(a),
-                    self.guide_vel(guide),
-                    self.guide_acc(guide),
-                );
-                quote!(::mechanism::dyad::rrp::acceleration(&pos.#g, &pos.#guide, &vel.#gv, #ma, #gvel, #gacc))
-            }
-            (Kind::Rpr { a, b, .. }, false) => {
-                let (ma, mb) = (self.point_arg(a), self.point_arg(b));
-                quote!(::mechanism::dyad::rpr::velocity(&pos.#g, &pos.#a, &pos.#b, #ma, #mb))
-            }
-            (Kind::Rpr { a, b, .. }, true) => {
-                let (ma, mb) = (self.point_arg(a), self.point_arg(b));
-                quote!(::mechanism::dyad::rpr::acceleration(&pos.#g, &pos.#a, &pos.#b, &vel.#gv, #ma, #mb))
-            }
-            (Kind::Prp { g1, g2, .. }, false) => {
-                let (v1, v2) = (self.guide_vel(g1), self.guide_vel(g2));
-                quote!(::mechanism::dyad::prp::velocity(&pos.#g, &pos.#g1, &pos.#g2, #v1, #v2))
-            }
-            (Kind::Prp { g1, g2, .. }, true) => {
-                let (v1, v2) = (self.guide_vel(g1), self.guide_vel(g2));
-                let (a1, a2) = (self.guide_acc(g1), self.guide_acc(g2));
-                quote!(::mechanism::dyad::prp::acceleration(&pos.#g, &pos.#g1, &pos.#g2, &vel.#gv, #v1, #a1, #v2, #a2))
-            }
-            (Kind::Rpp { a, guide, .. }, false) => {
-                let (ma, gvel) = (self.point_arg(a), self.guide_vel(guide));
-                quote!(::mechanism::dyad::rpp::velocity(&pos.#g, &pos.#a, &pos.#guide, #ma, #gvel))
-            }
-            (Kind::Rpp { a, guide, .. }, true) => {
-                let (ma, gvel, gacc) = (
-                    self.point_arg(a),
-                    self.guide_vel(guide),
-                    self.guide_acc(guide),
-                );
-                quote!(::mechanism::dyad::rpp::acceleration(&pos.#g, &pos.#a, &pos.#guide, &vel.#gv, #ma, #gvel, #gacc))
-            }
-            _ => return None,
+    fn link_omega_in_accel(&self, link: &Ident) -> Option<TokenStream> {
+        self.plan.turning_link(&link.to_string()).map(|l| {
+            let w = format_ident!("omega_{}", l);
+            quote!(vel.#w)
         })
     }
 
-    /// The named pieces of a group's rates `gr`: its point's motion, its
-    /// links' rates, its slides' rates.
-    fn group_pieces(&mut self, i: usize, stmt: &Stmt, gr: &Ident) {
-        let pv = self.motion(stmt);
-        let (r1, r2) = if self.accel {
-            (quote!(alpha1), quote!(alpha2))
-        } else {
-            (quote!(omega1), quote!(omega2))
-        };
-        let (pt, sd, sd1, sd2) = if self.accel {
-            (quote!(ac), quote!(s_ddot), quote!(s1_ddot), quote!(s2_ddot))
-        } else {
-            (quote!(vc), quote!(s_dot), quote!(s1_dot), quote!(s2_dot))
-        };
-        match &stmt.kind {
-            Kind::Actuator { .. } | Kind::Rrr { .. } => {
-                self.named(pv, quote!(#gr.#pt), vec_ty());
-                self.named(self.own(stmt, 0), quote!(#gr.#r1), quote!(T));
-                self.named(self.own(stmt, 1), quote!(#gr.#r2), quote!(T));
-            }
-            Kind::Rrp { .. } => {
-                self.named(pv, quote!(#gr.#pt), vec_ty());
-                self.named(self.own(stmt, 0), quote!(#gr.#r1), quote!(T));
-                self.slide_values.push((i, 0, quote!(#gr.#sd)));
-            }
-            Kind::Rpr { .. } => {
-                let r = if self.accel {
-                    quote!(alpha)
-                } else {
-                    quote!(omega)
-                };
-                self.named(self.own(stmt, 0), quote!(#gr.#r), quote!(T));
-                self.named(self.own(stmt, 1), quote!(#gr.#r), quote!(T));
-                self.slide_values.push((i, 0, quote!(#gr.#sd)));
-            }
-            Kind::Prp { .. } => {
-                self.named(pv, quote!(#gr.#pt), vec_ty());
-                self.slide_values.push((i, 0, quote!(#gr.#sd1)));
-                self.slide_values.push((i, 1, quote!(#gr.#sd2)));
-            }
-            _ => {
-                let q = if self.accel { quote!(aq) } else { quote!(vq) };
-                self.named(pv, quote!(#gr.#q), vec_ty());
-                self.slide_values.push((i, 0, quote!(#gr.#sd1)));
-                self.slide_values.push((i, 1, quote!(#gr.#sd2)));
-            }
-        }
+    fn code(&mut self, code: TokenStream) {
+        self.code.extend(code);
+    }
+
+    fn field(&mut self, name: Ident, ty: TokenStream) {
+        self.fields.push(Field { name, ty });
+    }
+
+    fn slide(&mut self, slot: usize, value: TokenStream) {
+        self.slide_values.push((self.current, slot, value));
+    }
+}
+
+impl RateEmitter<'_> {
+    fn carried(&self, g: &Ident) -> bool {
+        self.plan
+            .guides
+            .get(&g.to_string())
+            .is_some_and(|i| i.carrier.is_some())
     }
 
     /// The output fields' values: points, links, slides.
@@ -453,37 +182,24 @@ impl RateEmitter<'_> {
     }
 }
 
-/// The core type of a group's (or the actuator's) rates.
-fn group_type(kind: &Kind, accel: bool) -> TokenStream {
-    let (module, ty) = match kind {
-        Kind::Actuator { .. } => (quote!(driver::actuator), "Actuator"),
-        Kind::Rrr { .. } => (quote!(dyad::rrr), "Rrr"),
-        Kind::Rrp { .. } => (quote!(dyad::rrp), "Rrp"),
-        Kind::Rpr { .. } => (quote!(dyad::rpr), "Rpr"),
-        Kind::Prp { .. } => (quote!(dyad::prp), "Prp"),
-        _ => (quote!(dyad::rpp), "Rpp"),
-    };
-    let ty = format_ident!("{}{}", ty, if accel { "Acceleration" } else { "Velocity" });
-    quote!(::mechanism::#module::#ty<T>)
-}
-
 /// Velocity or acceleration statements of a planned model; `moving` holds
 /// the points that move.
 pub(super) fn code(model: &Model, plan: &Plan, moving: &BTreeSet<String>, rate: Rate) -> RatesCode {
     let accel = rate == Rate::Acceleration;
     let mut em = RateEmitter {
-        model,
         plan,
         moving,
         accel,
         pfx: if accel { "acc" } else { "vel" },
         wpfx: if accel { "alpha" } else { "omega" },
+        current: 0,
         code: TokenStream::new(),
         fields: Vec::new(),
         slide_values: Vec::new(),
     };
     for &i in &plan.solve {
-        em.statement(i);
+        em.current = i;
+        kinds::of(&model.stmts[i]).rates(&mut em);
     }
     let outputs = em.outputs(&plan.outputs);
     // Hidden fields that are also outputs are kept once (as outputs).
@@ -542,17 +258,7 @@ fn condition(model: &Model, plan: &Plan) -> TokenStream {
         .solve
         .iter()
         .map(|&i| &model.stmts[i])
-        .filter(|s| {
-            matches!(
-                s.kind,
-                Kind::Actuator { .. }
-                    | Kind::Rrr { .. }
-                    | Kind::Rrp { .. }
-                    | Kind::Rpr { .. }
-                    | Kind::Prp { .. }
-                    | Kind::Rpp { .. }
-            )
-        })
+        .filter(|s| kinds::of(s).rate_system())
         .map(|s| format_ident!("grp_v_{}", s.name))
         .collect();
     match conditions.split_first() {

@@ -3,8 +3,10 @@
 //! accelerations, the solution struct and `solve`.
 
 use super::forces::ForcesCode;
-use super::names::{allow_literal_lints, marker, mode_tokens, Generated, TypeNames};
-use crate::model::{Kind, Level, Mode, Model, Stmt};
+use super::names::{allow_literal_lints, marker, Generated, TypeNames};
+use crate::kinds;
+use crate::kinds::tokens::mode_tokens;
+use crate::model::{Level, Model, Stmt};
 use crate::plan::Plan;
 use crate::value::lit;
 use proc_macro2::TokenStream;
@@ -159,52 +161,7 @@ pub(super) fn solve_items(model: &Model, forces: Option<&ForcesCode>) -> Generat
 
 /// One line of the structure listing in the generated type's doc comment.
 fn describe(stmt: &Stmt) -> String {
-    let links = stmt
-        .links
-        .iter()
-        .map(Ident::to_string)
-        .collect::<Vec<_>>()
-        .join(", ");
-    let mode = |m: &Mode| {
-        let literal = match m {
-            Mode::Plus => "mode plus (m = +1)",
-            Mode::Minus => "mode minus (m = -1)",
-        };
-        match &stmt.mode_param {
-            Some(p) => format!("{literal} by default, at run time the parameter `{p}`"),
-            None => literal.to_string(),
-        }
-    };
-    let n = &stmt.name;
-    match &stmt.kind {
-        Kind::Ground { .. } => format!("ground point `{n}`"),
-        Kind::Guide { carrier: None, .. } => format!("fixed guide `{n}`"),
-        Kind::Guide { carrier: Some(l), .. } => format!("guide `{n}` carried by `{l}`"),
-        Kind::Crank { pivot, input, .. } => {
-            format!("driver: crank `{links}` about `{pivot}`, input `{input}`, tip `{n}`")
-        }
-        Kind::Slider { guide, input, .. } => {
-            format!("driver: slider `{links}` on `{guide}`, input `{input}`, pin `{n}`")
-        }
-        Kind::Actuator { a, b, input, mode: m, .. } => format!(
-            "driver: linear actuator `{links}` from `{b}`, link pivoted at `{a}`, input `{input}`, joint `{n}`, {}",
-            mode(m)
-        ),
-        Kind::Rrr { a, b, mode: m, .. } => {
-            format!("RRR group `{links}`: `{a}`, `{b}` -> `{n}`, {}", mode(m))
-        }
-        Kind::Rrp { a, guide, mode: m, .. } => {
-            format!("RRP group `{links}`: `{a}` and guide `{guide}` -> `{n}`, {}", mode(m))
-        }
-        Kind::Rpr { a, b, mode: m, .. } => {
-            format!("RPR group `{links}`: block at `{a}` on link pivoted at `{b}`, slide `{n}`, {}", mode(m))
-        }
-        Kind::Prp { g1, g2, .. } => format!("PRP group `{links}`: guides `{g1}`, `{g2}` -> `{n}`"),
-        Kind::Rpp { a, guide, .. } => {
-            format!("RPP group `{links}`: block at `{a}`, link on guide `{guide}`, reference point `{n}`")
-        }
-        Kind::Point { link, from, .. } => format!("point `{n}` on `{link}` (from `{from}`)"),
-    }
+    kinds::of(stmt).describe()
 }
 
 #[cfg(test)]

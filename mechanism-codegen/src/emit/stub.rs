@@ -2,7 +2,8 @@
 //! the `compile_error!`s, and stubs with the real names and fields so the
 //! user's own code reports no follow-on errors.
 
-use crate::model::{Kind, Level, Model};
+use crate::kinds::{self, forces::FieldsOnly};
+use crate::model::{Level, Model};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use std::collections::BTreeSet;
@@ -44,7 +45,7 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
     let points: Vec<&Ident> = model
         .stmts
         .iter()
-        .filter(|s| !matches!(s.kind, Kind::Guide { .. } | Kind::Rpr { .. }))
+        .filter(|s| kinds::of(s).point_kind().is_some())
         .map(|s| &s.name)
         .chain(
             model
@@ -59,7 +60,7 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         .stmts
         .iter()
         .flat_map(|s| {
-            let rpr = matches!(s.kind, Kind::Rpr { .. }).then_some(&s.name);
+            let rpr = kinds::of(s).names_slide().then_some(&s.name);
             s.links
                 .iter()
                 .zip(&s.links_named)
@@ -75,8 +76,9 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         .filter(|i| unique(i))
         .collect();
     // With a force analysis the stub keeps its shape too: `NameLoads` with
-    // `Default`, `solve` taking the loads, a `forces` field in the solution
-    // (the reactions' own fields come from a valid model only).
+    // `Default`, `solve` taking the loads, a `forces` field in the solution,
+    // and the reactions and efforts of every statement that lowered (named
+    // by the same per-kind code as the real forces struct).
     let (forces_stub, stub_loads_param, stub_forces_field) = if model.kinetics.declared
         || model.level == Level::Forces
     {
@@ -97,10 +99,14 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
                 quote!(, loads: &#loads_ty<T>),
             )
         };
+        let mut reactions = FieldsOnly::of(model);
+        super::forces::unique_names(&mut reactions);
+        let fields = reactions.iter().map(|r| &r.name);
+        let types = reactions.iter().map(|r| &r.ty);
         let stub = quote! {
             #loads_item
-            #[allow(dead_code)]
-            #vis struct #forces_ty<T: ::mechanism::Real = ::core::primitive::f64> { pub condition: T, pub power_residual: T }
+            #[allow(non_snake_case, dead_code)]
+            #vis struct #forces_ty<T: ::mechanism::Real = ::core::primitive::f64> { #(pub #fields: #types,)* pub condition: T, pub power_residual: T }
             #[allow(dead_code, unused_variables)]
             impl<T: ::mechanism::Real> #name<T> {
                 pub fn forces(&self, pos: &#position_ty<T>, vel: &#velocity_ty<T>, acc: &#acceleration_ty<T> #loads_param) -> ::core::result::Result<#forces_ty<T>, ::mechanism::Error<T>> { ::core::unimplemented!() }
@@ -162,5 +168,94 @@ fn describe_stub(model: &Model) -> TokenStream {
             };
         }
         #(#fields)*
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::emit::test_support::{four_bar, planned};
+    use proc_macro2::TokenStream;
+    use std::str::FromStr;
+
+    /// The fields (`name:type`, sorted) of the struct `ty` in `code`, doc
+    /// attributes left out.
+    fn fields(code: &TokenStream, ty: &str) -> Vec<String> {
+        let flat: String = code.to_string().split_whitespace().collect();
+        let start = flat
+            .find(&format!("struct{ty}<"))
+            .unwrap_or_else(|| panic!("no struct {ty}"));
+        let open = start + flat[start..].find('{').expect("a body") + 1;
+        let close = open + flat[open..].find('}').expect("a closed body");
+        let mut body = flat[open..close].to_string();
+        while let Some(a) = body.find("#[doc=") {
+            let b = a + body[a..].find("\"]").expect("a closed doc") + 2;
+            body.replace_range(a..b, "");
+        }
+        let mut fields: Vec<String> = body
+            .split(',')
+            .filter(|f| !f.is_empty())
+            .map(|f| f.trim_start_matches("pub").to_string())
+            .collect();
+        fields.sort();
+        fields
+    }
+
+    /// The forces struct of the valid definition `src` as expanded, and as
+    /// the stub emitted on error builds it from the same statements.
+    fn real_and_stub(src: &str, ty: &str) -> (Vec<String>, Vec<String>) {
+        let real = crate::expand(TokenStream::from_str(src).expect("tokens"));
+        assert!(!real.to_string().contains("compile_error"), "{ty}: {real}");
+        let (model, _) = planned(src);
+        (fields(&real, ty), fields(&super::emit(&model, vec![]), ty))
+    }
+
+    // Proves the stub's forces struct carries exactly the real one's
+    // reaction and effort fields, names and types, for every kind with
+    // reactions (crank, RRR; slider, RRP; RPR; RPP, PRP; actuator): user
+    // code that reads a reaction compiles against either.
+    #[test]
+    fn stub_forces_fields_are_the_real_ones() {
+        let four_bar = four_bar("mass link3 { m = 2.0, at = P };");
+        let shaper = "pub Shaper {
+            params { ab = 0.125, yc = -0.275, cd = 0.6, de = 0.15 }
+            let A = ground(0.0, 0.0);
+            let C = ground(0.0, yc);
+            let ram = guide((0.0, 0.3), 180 deg);
+            let B = crank(A, ab, theta) as link1;
+            let s3 = rpr(B, C, plus) as (block, link3);
+            let D = point(link3, from C, cd, 0 deg);
+            let E = rrp(D, de, ram, plus) as (link4, tool) slide x;
+            mass link3 { m = 20.0, at = D };
+        }";
+        let slots = "pub Slots {
+            let O = ground(0.0, 0.0);
+            let line = guide((0.0, 0.0), 0 deg);
+            let S = slider(line, s) as block;
+            let gv = guide((3.0, 0.0), 90 deg);
+            let Q = rpp(S, gv, 90 deg) as (pin, yoke) slide (q1, q2);
+            let gy = guide(Q, yoke, 45 deg);
+            let gh = guide((0.0, 1.0), 0 deg);
+            let F = prp(gy, gh) as (pa, pb) slide (u, v);
+            mass pb { m = 1.0, at = F };
+            range s = (0.0, 0.5);
+        }";
+        let boom = "pub Boom {
+            let A = ground(0.0, 0.0);
+            let B = ground(0.8, -0.2);
+            let C = actuator(A, 1.2, B, len, left) as (boom, cylinder);
+            let tip = point(boom, from A, 2.5, 10 deg);
+            mass boom { m = 120.0, at = tip };
+            range len = (0.9, 1.6);
+        }";
+        for (src, ty) in [
+            (four_bar.as_str(), "FourBarForces"),
+            (shaper, "ShaperForces"),
+            (slots, "SlotsForces"),
+            (boom, "BoomForces"),
+        ] {
+            let (real, stub) = real_and_stub(src, ty);
+            assert!(real.len() > 2, "{ty}: {real:?}");
+            assert_eq!(real, stub, "{ty}");
+        }
     }
 }

@@ -6,7 +6,8 @@
 
 use super::names::{another, defined_where, link_hints, named_links, symbols};
 use crate::diag::{did_you_mean, Diagnostics};
-use crate::model::{ForceSpec, ForceSpecValue, Kind, Level, MassSpec, Model};
+use crate::kinds;
+use crate::model::{ForceSpec, ForceSpecValue, Level, MassSpec, Model};
 use crate::plan::{references, Plan};
 use std::collections::BTreeMap;
 use syn::Ident;
@@ -21,14 +22,10 @@ pub(super) fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Dia
     let cylinders: Vec<String> = model
         .stmts
         .iter()
-        .filter(|s| matches!(s.kind, Kind::Actuator { .. }))
-        .filter_map(|s| s.links.get(1).map(Ident::to_string))
+        .filter_map(|s| kinds::of(s).cylinder().map(Ident::to_string))
         .collect();
     for stmt in &model.stmts {
-        if matches!(
-            stmt.kind,
-            Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. }
-        ) {
+        if stmt.kind.link_count() == 0 {
             continue;
         }
         for r in references(stmt) {
@@ -262,9 +259,10 @@ pub(super) fn load_names_unique(model: &Model, plan: &Plan, errors: &mut Diagnos
 
 /// `true` for the cylinder of an actuator (a massless two-force member).
 fn is_cylinder(model: &Model, link: &str) -> bool {
-    model.stmts.iter().any(|s| {
-        matches!(s.kind, Kind::Actuator { .. }) && s.links.get(1).is_some_and(|l| l == link)
-    })
+    model
+        .stmts
+        .iter()
+        .any(|s| kinds::of(s).cylinder().is_some_and(|l| l == link))
 }
 
 /// Checks that `link` names a link that can carry loads; pushes an error otherwise.

@@ -37,8 +37,9 @@ pub fn model(model: &Model, errors: &mut Diagnostics) {
     structure::dof_matches(model, errors);
     // Every requested output is a point, a named link or a slide.
     structure::outputs_exist(model, errors);
-    // An RPP's slot crosses its guide.
-    structure::rpp_slot_crosses_guide(model, errors);
+    // Each kind's own rules on its arguments (an RPP's slot crosses its
+    // guide).
+    structure::kind_rules(model, errors);
     // `#[self_test]` has a range to sweep for every input, and at most two.
     structure::self_test_sweepable(model, errors);
 }

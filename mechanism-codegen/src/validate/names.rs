@@ -4,8 +4,8 @@
 //! found, which the other rules share.
 
 use crate::diag::{did_you_mean, Diagnostics};
-use crate::model::{Kind, Model, Origin};
-use crate::plan::references;
+use crate::kinds::{self, Role};
+use crate::model::Model;
 use std::collections::BTreeMap;
 use syn::Ident;
 
@@ -87,10 +87,13 @@ fn every_symbol(model: &Model) -> Vec<(String, Category, Ident)> {
         table.insert(name.clone(), (Category::Const, ident.clone()));
     }
     for stmt in &model.stmts {
-        let cat = match stmt.kind {
-            Kind::Guide { .. } => Category::Guide,
-            Kind::Rpr { .. } => Category::Slide,
-            _ => Category::Point,
+        let kind = kinds::of(stmt);
+        let cat = if kind.guide_carrier().is_some() {
+            Category::Guide
+        } else if kind.names_slide() {
+            Category::Slide
+        } else {
+            Category::Point
         };
         table.insert(stmt.name.to_string(), (cat, stmt.name.clone()));
         for link in &stmt.links {
@@ -353,30 +356,18 @@ pub(super) fn references_resolve(model: &Model, errors: &mut Diagnostics) {
     let table = symbols(model);
     let every = every_symbol(model);
     for stmt in &model.stmts {
-        let expected: Vec<(&Ident, Category)> = match &stmt.kind {
-            Kind::Guide {
-                origin, carrier, ..
-            } => {
-                let mut v = Vec::new();
-                if let Origin::Point(p) = origin {
-                    v.push((p, Category::Point));
-                }
-                if let Some(c) = carrier {
-                    v.push((c, Category::Link));
-                }
-                v
-            }
-            Kind::Slider { guide, .. } => vec![(guide, Category::Guide)],
-            Kind::Rrp { a, guide, .. } | Kind::Rpp { a, guide, .. } => {
-                vec![(a, Category::Point), (guide, Category::Guide)]
-            }
-            Kind::Prp { g1, g2, .. } => vec![(g1, Category::Guide), (g2, Category::Guide)],
-            Kind::Point { link, from, .. } => vec![(link, Category::Link), (from, Category::Point)],
-            _ => references(stmt)
-                .into_iter()
-                .map(|r| (r, Category::Point))
-                .collect(),
-        };
+        let expected: Vec<(&Ident, Category)> = kinds::of(stmt)
+            .references()
+            .into_iter()
+            .map(|(r, role)| {
+                let want = match role {
+                    Role::Point => Category::Point,
+                    Role::Guide => Category::Guide,
+                    Role::Link => Category::Link,
+                };
+                (r, want)
+            })
+            .collect();
         for (r, want) in expected {
             let name = r.to_string();
             let own_link = stmt.links.iter().any(|l| *l == name);

@@ -3,7 +3,8 @@
 
 use super::names::{is_named_link, link_hints, symbols, Category};
 use crate::diag::{did_you_mean, Diagnostics};
-use crate::model::{Input, Kind, Model};
+use crate::kinds;
+use crate::model::{Input, Model};
 use proc_macro2::Span;
 
 /// Rule: at least one driver, unless a statement's kind was already rejected
@@ -39,26 +40,9 @@ pub(super) fn dof_matches(model: &Model, errors: &mut Diagnostics) {
     let (mut links, mut joints) = (1i64, 0i64);
     let mut inputs = Vec::new();
     for stmt in &model.stmts {
-        match stmt.kind {
-            Kind::Crank { .. } | Kind::Slider { .. } => {
-                links += 1;
-                joints += 1;
-            }
-            // Cylinder = barrel + rod: three bodies, four lower pairs.
-            Kind::Actuator { .. } => {
-                links += 3;
-                joints += 4;
-            }
-            Kind::Rrr { .. }
-            | Kind::Rrp { .. }
-            | Kind::Rpr { .. }
-            | Kind::Prp { .. }
-            | Kind::Rpp { .. } => {
-                links += 2;
-                joints += 3;
-            }
-            _ => {}
-        }
+        let (bodies, pairs) = kinds::of(stmt).bodies_and_pairs();
+        links += bodies;
+        joints += pairs;
         if let Some(i) = stmt.kind.input() {
             inputs.push(i.to_string());
         }
@@ -123,33 +107,11 @@ pub(super) fn outputs_exist(model: &Model, errors: &mut Diagnostics) {
     }
 }
 
-/// Rule: an RPP's slot crosses its guide. The slotted link translates along
-/// the guide without turning relative to it (a carried guide turns the slot
-/// with it), so the slot keeps its angle to the guide at every pose: a slot
-/// parallel to the guide is parallel at every input, and the joint is at
-/// infinity everywhere. Known at compile time for a slot angle that folds to
-/// a number; "parallel" is the test the run-time solve applies
-/// (`mechanism_core::dyad::rpp`: `|sin(slot)| <= 16 eps`, in f64 here).
-pub(super) fn rpp_slot_crosses_guide(model: &Model, errors: &mut Diagnostics) {
+/// Rule: each kind's own rules on its arguments (an RPP's slot crosses its
+/// guide), as its `kinds` module states them.
+pub(super) fn kind_rules(model: &Model, errors: &mut Diagnostics) {
     for stmt in &model.stmts {
-        let Kind::Rpp { guide, slot, .. } = &stmt.kind else {
-            continue;
-        };
-        let Some(angle) = slot.fold() else {
-            continue;
-        };
-        if angle.sin().abs() <= 16.0 * f64::EPSILON {
-            // Rounded to 1e-9 deg, so that `180 deg` (rounded once to
-            // radians and back) shows as 180.
-            let deg = (angle.to_degrees() * 1e9).round() / 1e9;
-            errors.push(
-                slot.span,
-                format!(
-                    "the slot of `{}` is at {deg} deg to guide `{guide}`, parallel to it; the slotted link slides along `{guide}` without turning, so the slot stays parallel at every pose and the block's pin is at infinity for every input: give the slot an angle across the guide (e.g. `90 deg`, a slot perpendicular to it)",
-                    stmt.name
-                ),
-            );
-        }
+        kinds::of(stmt).check(errors);
     }
 }
 

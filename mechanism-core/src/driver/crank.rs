@@ -7,7 +7,9 @@
 //! skips the trigonometry.
 
 use crate::error::{Error, Fault, Primitive};
-use crate::geometry::{all_finite, finite_vec, plus, positive};
+use crate::geometry::{
+    abs, all_finite, angle_limit, dot, finite_vec, max, plain_square, plus, positive,
+};
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -26,10 +28,14 @@ pub struct CrankPosition<T: Real> {
     pub axis: Vector2<T>,
 }
 
-/// Places the crank at `theta` (rad).
+/// Places the crank at `theta` (rad), `|theta|` below
+/// [`angle_limit`](crate::geometry::angle_limit) (f32 1.7e7, f64 9.0e15:
+/// beyond, the spacing of the type's numbers is 2 rad or more, so the input
+/// no longer says where the crank is, and its link angle could not be
+/// reported consistently).
 ///
 /// Errors: `NonPositive` for `length <= 0`; `NonFinite` for a non-finite angle
-/// or pivot.
+/// or pivot, or an angle beyond the limit.
 #[inline(always)]
 pub fn position<T: Real>(
     pivot: &Point2<T>,
@@ -37,9 +43,15 @@ pub fn position<T: Real>(
     theta: T,
 ) -> Result<CrankPosition<T>, Error<T>> {
     // In the scalar's own precision (f32 stays f32: see `crate::trig`). A
-    // non-finite angle gives NaN here, caught by `place`'s one test.
+    // non-finite angle (NaN fails the comparison too) or one beyond the
+    // limit fails `place`'s one test.
     let (sin, cos) = theta.sin_cos_kernel();
-    place(pivot, length, Vector2::new(cos, sin), theta.finite())
+    place(
+        pivot,
+        length,
+        Vector2::new(cos, sin),
+        abs(theta) < angle_limit::<T>(),
+    )
 }
 
 /// A crank angle given by its cosine and sine (as an encoder or a resolver
@@ -56,7 +68,11 @@ pub struct CosSin<T> {
 }
 
 /// Places the crank from `(cos theta, sin theta)`, which need not be exactly
-/// unit: it is normalized (an encoder's pair rarely is).
+/// unit: it is normalized (an encoder's pair rarely is). Any positive
+/// multiple of the pair gives the same crank, to rounding, for every finite
+/// pair that is not zero, subnormal ones included (the pair is scaled by a
+/// power of two before it is squared where its square would leave the normal
+/// range).
 ///
 /// Errors: `NonFinite`; `NonPositive` for `length <= 0` or a zero pair.
 #[inline(always)]
@@ -67,28 +83,55 @@ pub fn position_cos_sin<T: Real>(
     sin: T,
 ) -> Result<CrankPosition<T>, Error<T>> {
     let v = finite_vec(Vector2::new(cos, sin), P, "crank (cos, sin)")?;
-    let norm = positive(crate::geometry::length(&v), P, "crank |(cos, sin)|")?;
+    // `|v|^2` plainly where it is a normal number with room below (the
+    // usual encoder pair, of size about 1); a pair far from unit size (f64
+    // components below about 1e-138 or above 1e154, f32 1e-12 .. 1e19)
+    // would give a subnormal, zero or infinite square: scaled first.
+    let q = dot(&v, &v);
+    let (v, norm) = if plain_square(q) {
+        (v, q.sqrt_kernel())
+    } else {
+        scaled_pair(v)
+    };
+    let norm = positive(norm, P, "crank |(cos, sin)|")?;
     place(pivot, length, v / norm, true)
 }
 
-/// The crank at unit `axis`: two comparisons on the ordinary path (a
-/// positive length, a finite tip); a non-finite angle, length or pivot makes
-/// the tip non-finite and is told apart on the cold path.
-/// `angle_finite` is evaluated lazily by the optimizer (only the error path
-/// reads it).
+/// `(v / m, |v / m|)` with `m` the larger component's magnitude: the pair
+/// brought to a size between 1 and `sqrt 2` (each division within half an
+/// ulp), so its square neither underflows nor overflows; `(v, 0)` for a
+/// zero pair (cold path of [`position_cos_sin`]).
+#[cold]
+#[inline(never)]
+fn scaled_pair<T: Real>(v: Vector2<T>) -> (Vector2<T>, T) {
+    let m = max(abs(v.x), abs(v.y));
+    if m > T::zero() {
+        let u = v / m;
+        (u, dot(&u, &u).sqrt_kernel())
+    } else {
+        (v, T::zero())
+    }
+}
+
+/// The crank at unit `axis`: three comparisons on the ordinary path (the
+/// angle below its limit, a positive length, a finite tip); a non-finite
+/// angle, length or pivot makes the tip non-finite and is told apart on the
+/// cold path. `angle_ok`: the angle is finite and below
+/// [`angle_limit`](crate::geometry::angle_limit) (`true` for a `(cos, sin)`
+/// pair).
 #[inline(always)]
 fn place<T: Real>(
     pivot: &Point2<T>,
     length: T,
     axis: Vector2<T>,
-    angle_finite: bool,
+    angle_ok: bool,
 ) -> Result<CrankPosition<T>, Error<T>> {
     let r = axis * length;
     let tip = pivot + r;
-    if length > T::zero() && all_finite([tip.x, tip.y]) {
+    if angle_ok && length > T::zero() && all_finite([tip.x, tip.y]) {
         Ok(CrankPosition { tip, r, axis })
     } else {
-        Err(bad_placement(length, angle_finite))
+        Err(bad_placement(length, angle_ok))
     }
 }
 
@@ -96,17 +139,17 @@ fn place<T: Real>(
 /// the length, then the tip (a non-finite pivot or an overflow).
 #[cold]
 #[inline(never)]
-fn bad_placement<T: Real>(length: T, angle_finite: bool) -> Error<T> {
+fn bad_placement<T: Real>(length: T, angle_ok: bool) -> Error<T> {
     // One construction of each fault kind (the cold code stays small).
     let length_ok = length.finite() && length > T::zero();
-    let what = if !angle_finite {
-        "crank angle"
+    let what = if !angle_ok {
+        "crank angle (not finite, or beyond 2^24 rad in f32, 2^53 in f64)"
     } else if length_ok {
         "crank tip"
     } else {
         "crank length"
     };
-    let fault = if angle_finite && length.finite() && !length_ok {
+    let fault = if angle_ok && length.finite() && !length_ok {
         Fault::NonPositive {
             what,
             value: length,

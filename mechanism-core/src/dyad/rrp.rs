@@ -65,7 +65,6 @@ use crate::geometry::{
     perp, plus, positive, root_of_product,
 };
 use crate::guide::{Line, LineAcceleration, LineVelocity};
-use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -230,13 +229,15 @@ pub fn velocity<T: Real>(
     // product: `dot(w, r1)` is a second power of the lengths (L^2/s), which
     // leaves the normal range where the lengths do (f32 below about 1e-19).
     let inv = T::one() / det;
-    let omega1 = finite(cross(&g.dir, &w) * inv, P, "RRP angular velocity")?;
-    let s_dot = finite(-dot(&w, &(pos.r1 * inv)), P, "RRP sliding speed")?;
-    let vc = finite_vec(
-        plus(va, relative_velocity(&pos.r1, omega1)),
-        P,
-        "RRP velocity of C",
-    )?;
+    let q = pos.r1 * inv;
+    let n = cross(&g.dir, &w);
+    let omega1 = finite(n * inv, P, "RRP angular velocity")?;
+    let s_dot = finite(-dot(&w, &q), P, "RRP sliding speed")?;
+    // `omega1 perp(r1)` as `perp(r1 / det) n` (dimensionless times L/s):
+    // `omega1` (1/s) underflows where the speeds are far below the lengths
+    // (f64: a 7e-260 crank's tip at 5e-258 L/s on a 4e68 rod gave `vc =
+    // va`, off its guide).
+    let vc = finite_vec(plus(va, perp(&q) * n), P, "RRP velocity of C")?;
     Ok(RrpVelocity {
         omega1,
         s_dot,
@@ -263,20 +264,22 @@ pub fn acceleration<T: Real>(
 ) -> Result<RrpAcceleration<T>, Error<T>> {
     let (det, _) = determinant(pos, g)?;
     let am = transport_acceleration(g, &pos.c, gv, ga, &(g.dir * vel.s_dot));
+    // `omega1^2 r1` as `(r1 omega1) omega1`: `omega1^2` alone underflows
+    // first.
+    let c1 = (pos.r1 * vel.omega1) * vel.omega1;
     let w = finite_vec(
-        difference(am.as_ref(), aa) + pos.r1 * (vel.omega1 * vel.omega1),
+        difference(am.as_ref(), aa) + c1,
         P,
         "RRP joint acceleration",
     )?;
-    // As in `velocity`: `r1 / det` first, no second power of the lengths.
+    // As in `velocity`: `r1 / det` first, no second power of the lengths,
+    // and `alpha1 perp(r1)` from it.
     let inv = T::one() / det;
-    let alpha1 = finite(cross(&g.dir, &w) * inv, P, "RRP angular acceleration")?;
-    let s_ddot = finite(-dot(&w, &(pos.r1 * inv)), P, "RRP sliding acceleration")?;
-    let ac = finite_vec(
-        plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1)),
-        P,
-        "RRP acceleration of C",
-    )?;
+    let q = pos.r1 * inv;
+    let n = cross(&g.dir, &w);
+    let alpha1 = finite(n * inv, P, "RRP angular acceleration")?;
+    let s_ddot = finite(-dot(&w, &q), P, "RRP sliding acceleration")?;
+    let ac = finite_vec(plus(aa, perp(&q) * n - c1), P, "RRP acceleration of C")?;
     Ok(RrpAcceleration { alpha1, s_ddot, ac })
 }
 

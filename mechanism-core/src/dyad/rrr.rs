@@ -29,10 +29,24 @@
 //! solves the 2x2 system in closed form with determinant `cross(r1, r2)`
 //! (`l1 l2 sin` of the angle between the links: zero at toggle).
 //! Units: lengths in the user's unit L, rates per second; angular rates in rad/s.
+//!
+//! Range of scale (each end a typed error, never a silent answer;
+//! `tests/working_ranges.rs` checks both sides of each): the position forms
+//! third powers of the lengths (`d k`), so it needs the group's scale
+//! `l1 + l2` within `2^-42 .. 2^42` (f32 2.3e-13 .. 4.4e12; f64 `2^-340 ..
+//! 2^340`, 4.5e-103 .. 2.2e102) and `2 |B - A|^2 l1` a normal number (`A`
+//! and `B` not far closer than the links are long: at f64 `|B - A|` = 1e-150
+//! under links of 1e-51 `C` came out on `A`), else `NonFinite` naming the
+//! range; `|B - A|^2` below the normal range is `Singular` (the joints
+//! coincide for `T`). Inside, the rates divide `r1`, `r2` by the
+//! determinant before the dot products (no subnormal `L^2/s` product for
+//! small, slow groups), and a rate below the normal range moves `C` by at
+//! most `l1` times the subnormal spacing, the floating-point model's
+//! absolute term (f32 `2^-149 l1`, 6e-33 L/s at the top of the range).
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, all_finite, check_det, cross, difference, dot, length, min, normal_range, perp, plus,
+    abs, all_finite, check_det, cross, difference, dot, length, max, min, normal_range, perp, plus,
 };
 use crate::link::{relative_acceleration, relative_velocity};
 use crate::mode::Mode;
@@ -132,8 +146,11 @@ pub fn position<T: Real>(
     let sum = l1 + l2;
     let diff = l1 - l2;
     // The ordinary case in three comparisons (NaN fails each); anything else
-    // is sorted out on the cold path, in the order of the doc comment.
-    if !(l1 > T::zero() && l2 > T::zero() && dsq > T::zero()) {
+    // is sorted out on the cold path, in the order of the doc comment. A
+    // `|B - A|^2` below the normal range (`A` and `B` within f32 1.1e-19,
+    // f64 1.5e-154 of each other) has lost bits: `Singular` as `A = B`.
+    let (lo, hi) = normal_range::<T>();
+    if !(l1 > T::zero() && l2 > T::zero() && dsq >= lo) {
         return Err(position_error(d, l1, l2, Check::Degenerate));
     }
     // Heron's factors; a negative one means the triangle does not close.
@@ -156,9 +173,8 @@ pub fn position<T: Real>(
     // or infinite; there the two factors' roots are taken apart (cold path,
     // one square root more). Zero at the edge takes that path too and gives 0.
     let prod = outer * inner;
-    let (lo, hi) = normal_range::<T>();
-    let root = if prod >= lo && prod <= hi {
-        prod.sqrt_kernel()
+    let (root, along) = if prod >= lo && prod <= hi {
+        (prod.sqrt_kernel(), diff * sum + dsq)
     } else {
         // Where the product is normal the lengths are too (f32: 1.4e-10 ..
         // 2.4e11, since `prod <= 16 L^4` and the rounding band keeps a
@@ -166,13 +182,12 @@ pub fn position<T: Real>(
         // below. Here they may not be: `d * along` (L^3) is subnormal for
         // f32 lengths below about 2.3e-13 (at 1e-14 `C` came out 3 % off,
         // at 1e-18 on `A`, with no error) or overflows above 7e12: there the
-        // root is NaN ([`split_root`]), so `C` fails its finiteness test, a
+        // root is NaN ([`cold_root`]), so `C` fails its finiteness test, a
         // typed `NonFinite` that names the range. (An error, not a rescaled
         // solve: that doubled the group's code on the Cortex-M4F.)
-        split_root(outer, inner, sum)
+        cold_root(outer, inner, diff, sum, dsq, l1)
     };
     let height = mode.sign::<T>() * root;
-    let along = diff * sum + dsq;
     // The reciprocal runs beside the square root (one rounding more than two
     // divisions, off the critical path).
     let inv_2dsq = T::one() / (T::lit(2.0) * dsq);
@@ -198,15 +213,19 @@ pub fn position<T: Real>(
     })
 }
 
-/// `true` when the group's scale `l1 + l2` (L; `|B - A|` is at most that
-/// where it assembles) lies where [`position`]'s third powers are normal
-/// numbers: `2^-42 .. 2^42` (2.3e-13 .. 4.4e12) in f32, `2^-340 .. 2^340`
+/// `true` when [`position`]'s third powers keep their precision: the
+/// group's scale `l1 + l2` (L; `|B - A|` is at most that where it assembles)
+/// within `2^-42 .. 2^42` (2.3e-13 .. 4.4e12) in f32, `2^-340 .. 2^340`
 /// (4.5e-103 .. 2.2e102) in f64, powers of two whose cubes are at least the
 /// smallest normal number (below it a product is rounded to the subnormal
 /// spacing, more than `eps` of the cube) and with `2 (l1 + l2)^3`, a bound
-/// on `d * along`, at most the largest. NaN is `false`.
+/// on `d * along`, at most the largest; and `2 |B - A|^2 l1`, the length of
+/// `d * along + perp(d) * height` (`2 |B - A|^2 r1`), a normal number, so
+/// the subnormal spacing of its components is below `eps` of it (`A` and
+/// `B` far closer than the links: at f64 `|B - A|` = 1e-150 and links of
+/// 1e-51 `C` came out on `A`; `dsq_l1` is `|B - A|^2 l1`). NaN is `false`.
 #[inline(always)]
-fn in_range<T: Real>(sum: T) -> bool {
+fn third_power_normal<T: Real>(sum: T, dsq_l1: T) -> bool {
     let single = crate::scalar::single::<T>();
     let lo = T::lit(if single {
         2.273_736_754_432_320_6e-13
@@ -218,22 +237,38 @@ fn in_range<T: Real>(sum: T) -> bool {
     } else {
         2.239_744_742_177_804_2e102
     });
-    sum >= lo && sum <= hi
+    sum >= lo && sum <= hi && T::lit(2.0) * dsq_l1 >= normal_range::<T>().0
+}
+
+/// Heron's root and `along` (`2 |B - A|` times the foot of `C` on `AB`,
+/// L^3) where the root's product is outside the normal range (cold path of
+/// [`position`]): the root as `sqrt(outer) sqrt(inner)`, NaN unless
+/// [`third_power_normal`] (which [`position`]'s finiteness test turns into a
+/// typed error); the foot clamped to `[-l1, l1]`. Inside the rounding band
+/// of the inner edge (`inner` clamped to 0) with `|B - A|` far below it
+/// (`l1` and `l2` equal to rounding, `A` and `B` almost on each other) the
+/// foot `along / 2 |B - A|` is not bounded by `l1`: `l1 = 1`, `l2 = 1 -
+/// eps`, `|B - A| = 1e-20` put `C` at 2.2e4 from `A`; clamped, `C` is on
+/// the line at `l1` from `A`, the inner edge's assembly.
+#[cold]
+#[inline(never)]
+fn cold_root<T: Real>(outer: T, inner: T, diff: T, sum: T, dsq: T, l1: T) -> (T, T) {
+    let along = diff * sum + dsq;
+    let root = if third_power_normal(sum, dsq * l1) {
+        split_root(outer, inner)
+    } else {
+        T::lit(f64::NAN)
+    };
+    let bound = T::lit(2.0) * dsq.sqrt_kernel() * l1;
+    (root, max(min(along, bound), -bound))
 }
 
 /// `sqrt(a) sqrt(b)` for a product `a b` outside the normal range (cold
-/// path of [`position`] and [`velocity`]); both factors are `>= 0`. In
-/// [`position`] (`sum = l1 + l2` given) NaN where the lengths are outside
-/// [`in_range`], which [`position`]'s finiteness test turns into an error
-/// ([`velocity`] passes 1: its squares have their own guard).
+/// paths of [`position`] and [`velocity`]); both factors are `>= 0`.
 #[cold]
 #[inline(never)]
-fn split_root<T: Real>(a: T, b: T, sum: T) -> T {
-    if in_range(sum) {
-        a.sqrt_kernel() * b.sqrt_kernel()
-    } else {
-        T::lit(f64::NAN)
-    }
+fn split_root<T: Real>(a: T, b: T) -> T {
+    a.sqrt_kernel() * b.sqrt_kernel()
 }
 
 /// Which check of [`position`] failed (the cold path's only knowledge of
@@ -284,10 +319,10 @@ fn position_error<T: Real>(d: Vector2<T>, l1: T, l2: T, failed: Check) -> Error<
                     (Kind::Reach, "", -inner, diff)
                 }
             }
-            // An overflow, or lengths outside [`in_range`] (the root NaN).
+            // An overflow, or lengths outside [`third_power_normal`] (the root NaN).
             Check::JointFinite => (
                 Kind::NonFinite,
-                "RRR joint C (lengths beyond the range of the scalar type? see `in_range`)",
+                "RRR joint C (outside the range of scale of `dyad::rrr`: lengths, or |B - A| far below the links)",
                 sum,
                 sum,
             ),
@@ -338,7 +373,7 @@ pub fn velocity<T: Real>(
     let scale = if prod >= lo && prod <= hi {
         prod.sqrt_kernel()
     } else {
-        split_root(q1, q2, T::one())
+        split_root(q1, q2)
     };
     rates(pos, scale, va, vb)
 }
@@ -375,8 +410,12 @@ fn rates<T: Real>(
     let condition = min(abs(det) / scale, T::one());
     let inv_det = T::one() / det;
     let dv = difference(vb, va);
-    let omega1 = dot(&dv, &pos.r2) * inv_det;
-    let omega2 = dot(&dv, &pos.r1) * inv_det;
+    // `r / det` (1/L) before the dot products: `dot(dv, r2)` (L^2/s) is
+    // subnormal for small, slow groups (f32 links of 1e-12 turning at 3e-15
+    // rad/s; f64 links of 1e-97 at 1e-119 rad/s), while the rates (1/s)
+    // are ordinary numbers there.
+    let omega1 = dot(&dv, &(pos.r2 * inv_det));
+    let omega2 = dot(&dv, &(pos.r1 * inv_det));
     let vc = plus(va, relative_velocity(&pos.r1, omega1));
     // One check for the results: a non-finite `va`, `vb` (so `dv`) makes
     // `omega1` non-finite (`r2 != 0`), and with it `vc` (`r1 != 0`, and
@@ -421,8 +460,9 @@ pub fn acceleration<T: Real>(
 ) -> Result<RrrAcceleration<T>, Error<T>> {
     let da = difference(ab, aa);
     let w = da + pos.r1 * (vel.omega1 * vel.omega1) - pos.r2 * (vel.omega2 * vel.omega2);
-    let alpha1 = dot(&w, &pos.r2) * vel.inv_det;
-    let alpha2 = dot(&w, &pos.r1) * vel.inv_det;
+    // `r / det` first, as in `rates`.
+    let alpha1 = dot(&w, &(pos.r2 * vel.inv_det));
+    let alpha2 = dot(&w, &(pos.r1 * vel.inv_det));
     let ac = plus(aa, relative_acceleration(&pos.r1, vel.omega1, alpha1));
     // One check, as in `velocity_lengths`: `w` (so `aa`, `ab` and the rates)
     // propagates into `alpha1`, `ac` and `alpha2`.
@@ -616,7 +656,7 @@ mod tests {
     }
 
     /// f32 lengths 1e-30 .. 1e30 at every decade: accurate from 1e-12 to
-    /// 1e12 ([`in_range`]: `l1 + l2 = 2.2 s` within 2.3e-13 .. 4.4e12), a
+    /// 1e12 ([`third_power_normal`]: `l1 + l2 = 2.2 s` within 2.3e-13 .. 4.4e12), a
     /// typed error beyond. Before
     /// the check, lengths below about 4.6e-11 lost bits in `d * along` with
     /// no error (at 1e-18 `C` came out on `A`, at 1e-14 3 % off).
@@ -627,7 +667,7 @@ mod tests {
     }
 
     /// f64 lengths 1e-150 .. 1e150 every 5 decades: accurate from 1e-100 to
-    /// 1e100 ([`in_range`]: 4.5e-103 .. 2.2e102), the typed error beyond
+    /// 1e100 ([`third_power_normal`]: 4.5e-103 .. 2.2e102), the typed error beyond
     /// (before, 1e-150 was off by 4e15 of this unit, with no error).
     #[test]
     fn f64_rrr_matches_reference_or_is_out_of_range() {

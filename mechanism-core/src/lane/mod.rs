@@ -244,9 +244,12 @@ pub fn atan2<T: Real>(y: T, x: T) -> T {
 /// Angle of `(x, y)` from +x (rad, in `(-pi, pi]`), as
 /// [`crate::geometry::angle`]: [`atan2`] with a negative zero `y` made `+0`,
 /// so a vector along `-x` gives `pi`.
+/// A result that rounded to `-pi` (a tiny negative `y`) is returned as `pi`.
 #[inline(always)]
 pub fn angle<T: Real>(y: T, x: T) -> T {
-    atan2(y + T::zero(), x)
+    let a = atan2(y + T::zero(), x);
+    let pi = T::pi();
+    select(a <= -pi, pi, a)
 }
 
 /// `angle` (rad) reduced to `(-pi, pi]` like [`crate::geometry::wrap_angle`]

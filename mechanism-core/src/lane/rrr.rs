@@ -43,7 +43,10 @@ pub fn rrr<T: Real>(ax: T, ay: T, l1: T, bx: T, by: T, l2: T, sign: T) -> Rrr<T>
     // root, one reciprocal; see `dyad::rrr`), with its failures as flags.
     let (dx, dy) = (bx - ax, by - ay);
     let dsq = dx * dx + dy * dy;
-    let spread = dsq > T::zero();
+    let (lo, hi) = normal_range::<T>();
+    // `|B - A|^2` a normal number (a subnormal one has lost bits; with a
+    // normal `prod` below, the third powers are then normal too).
+    let spread = dsq >= lo;
     let sum = l1 + l2;
     let diff = l1 - l2;
     let outer = sum * sum - dsq;
@@ -55,10 +58,9 @@ pub fn rrr<T: Real>(ax: T, ay: T, l1: T, bx: T, by: T, l2: T, sign: T) -> Rrr<T>
     let clamp = |x: T| select(x < T::zero(), T::zero(), x);
     // The product is a fourth power of the lengths: outside the normal range
     // (f32 lengths below about 1e-10 or above about 4e9) it loses bits or
-    // overflows, and the element goes to the scalar path, which takes the
-    // two roots apart there (`dyad::rrr::position`).
+    // overflows, and the element goes to the scalar path, which solves in
+    // first powers of the lengths there (`dyad::rrr::position`).
     let prod = clamp(outer) * clamp(inner);
-    let (lo, hi) = normal_range::<T>();
     let ok = spread
         & (l1 > T::zero())
         & (l2 > T::zero())

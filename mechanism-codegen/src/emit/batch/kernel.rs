@@ -1,10 +1,10 @@
 //! The vectorizable kernel of a batch: every statement the outputs need, in
-//! solve order, through the lane code of its kind (`points`, `drivers`,
-//! `groups`), on the state of `lane`.
+//! solve order, through the lane code of its kind (`kinds::*::lane`), on the
+//! state of `kinds::lane`.
 
-use super::lane::{Lane, Step, Writes};
-use super::{drivers, groups, points};
-use crate::model::{Kind, Model, Stmt};
+use crate::kinds;
+use crate::kinds::lane::{Lane, Step, Writes};
+use crate::model::{Model, Stmt};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
 use quote::quote;
@@ -83,58 +83,11 @@ pub(super) fn kernel(
     Some(Kernel { method, call })
 }
 
-/// Adds the lane code of one statement, `None` when it has no lane
-/// version here (an argument the kernel does not know).
+/// Adds the lane code of one statement (its kind's), `None` when it has no
+/// lane version here (an argument the kernel does not know).
 pub(super) fn statement(lane: &mut Lane, stmt: &Stmt) -> Option<()> {
     let mut s = Step::new(stmt);
-    match &stmt.kind {
-        Kind::Ground { x, y } => points::ground(&mut s, x, y),
-        Kind::Guide {
-            origin,
-            angle,
-            carrier,
-        } => points::guide(lane, &mut s, origin, angle, carrier.as_ref())?,
-        Kind::Point { link, from, local } => points::point(lane, &mut s, link, from, local)?,
-        Kind::Crank {
-            pivot,
-            radius,
-            input,
-            ..
-        } => drivers::crank(lane, &mut s, pivot, radius, input)?,
-        Kind::Slider {
-            guide,
-            input,
-            offset,
-        } => drivers::slider(lane, &mut s, guide, input, offset)?,
-        Kind::Actuator {
-            a,
-            l,
-            b,
-            input,
-            mode,
-        } => drivers::actuator(lane, &mut s, a, l, b, input, mode)?,
-        Kind::Rrr { a, l1, b, l2, mode } => groups::rrr(lane, &mut s, a, l1, b, l2, mode)?,
-        Kind::Rrp {
-            a,
-            l,
-            guide,
-            mode,
-            offset,
-        } => groups::rrp(lane, &mut s, a, l, guide, mode, offset)?,
-        Kind::Rpr { a, b, mode, offset } => groups::rpr(lane, &mut s, a, b, mode, offset)?,
-        Kind::Prp {
-            g1,
-            g2,
-            offset1,
-            offset2,
-        } => groups::prp(lane, &mut s, g1, g2, offset1, offset2)?,
-        Kind::Rpp {
-            a,
-            guide,
-            slot,
-            offset,
-        } => groups::rpp(lane, &mut s, a, guide, slot, offset)?,
-    }
+    kinds::of(stmt).lane(lane, &mut s)?;
     lane.commit(s);
     Some(())
 }

@@ -25,21 +25,16 @@
 //! apart from the checks inside the primitives.
 //!
 //! `solve_batch` first runs the vectorizable kernel `__lane_batch` when the
-//! definition has one (`lane`: the kernel and the state the statements
-//! share; one function per statement kind in `points` (ground, guide,
-//! point on a link), `drivers` (crank, slider, actuator) and `groups`
-//! (RRR, RRP, RPR, PRP, RPP)), then the scalar path for the elements the
-//! kernel did not accept.
+//! definition has one (`kernel`; the state the statements share is
+//! `kinds::lane`, each kind's lane code is its `GroupKind::lane`), then the
+//! scalar path for the elements the kernel did not accept.
 
-mod drivers;
-mod groups;
 mod kernel;
-mod lane;
-mod points;
 #[cfg(test)]
 mod tests;
 
-use crate::model::{Kind, Level, Model};
+use crate::kinds;
+use crate::model::{Level, Model};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -515,9 +510,8 @@ fn solve_batch(
 /// the element's input, its rates the input's rates). Writing them for every
 /// element would be memory traffic only.
 fn given(model: &Model, output: &Ident) -> bool {
-    model.stmts.iter().any(|s| match &s.kind {
-        Kind::Ground { .. } => s.name == *output,
-        Kind::Crank { .. } => s.links.first() == Some(output),
-        _ => false,
-    })
+    model
+        .stmts
+        .iter()
+        .any(|s| kinds::of(s).given_by_caller(output))
 }

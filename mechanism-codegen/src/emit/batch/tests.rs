@@ -23,8 +23,8 @@ fn scalar_named_like_a_point_coordinate() {
 }
 
 use super::kernel::{kernel, statement};
-use super::lane::{tree_sum, Lane};
 use crate::diag::Diagnostics;
+use crate::kinds::lane::{tree_sum, Lane};
 use crate::model::Model;
 use crate::plan::Plan;
 use proc_macro2::TokenStream;

@@ -6,7 +6,8 @@
 
 use super::ForceEmitter;
 use crate::emit::tag;
-use crate::model::{ForceSpec, ForceSpecValue, Kind, MassSpec, TorqueSpec};
+use crate::kinds::{self, forces::ForceCx};
+use crate::model::{ForceSpec, ForceSpecValue, MassSpec, Stmt, TorqueSpec};
 use crate::value::Value;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -141,7 +142,7 @@ impl ForceEmitter<'_> {
             return value.emit();
         };
         let v = value.emit();
-        let primitive = primitive(&stmt.kind);
+        let primitive = primitive(stmt);
         let t = tag(stmt);
         let (local, check, what) = match quantity {
             Quantity::Mass => (
@@ -172,17 +173,7 @@ enum Quantity {
 }
 
 /// The core's tag of the primitive a statement calls (for run-time errors).
-fn primitive(kind: &Kind) -> TokenStream {
-    let name = match kind {
-        Kind::Crank { .. } => quote!(Crank),
-        Kind::Slider { .. } => quote!(Slider),
-        Kind::Actuator { .. } => quote!(Actuator),
-        Kind::Rrr { .. } => quote!(Rrr),
-        Kind::Rrp { .. } => quote!(Rrp),
-        Kind::Rpr { .. } => quote!(Rpr),
-        Kind::Prp { .. } => quote!(Prp),
-        Kind::Rpp { .. } => quote!(Rpp),
-        Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } => quote!(LinkPoint),
-    };
+fn primitive(stmt: &Stmt) -> TokenStream {
+    let name = format_ident!("{}", kinds::of(stmt).primitive());
     quote!(::mechanism::Primitive::#name)
 }

@@ -14,6 +14,7 @@ mod loads;
 
 use super::describe::{fields_impl, FieldEntry};
 use super::names::TypeNames;
+use crate::kinds::{self, forces::ForceCx};
 use crate::model::Model;
 use crate::plan::Plan;
 use crate::value::lit;
@@ -51,28 +52,7 @@ pub enum ForceField {
     Push,
 }
 
-/// A reaction field of the generated forces struct.
-struct Reaction {
-    name: Ident,
-    ty: TokenStream,
-    value: TokenStream,
-    doc: String,
-    held: Held,
-}
-
-/// What a reaction field holds, as `mechanism::structure::Fields` reads it.
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum Held {
-    /// A revolute joint's force (`Vector2`).
-    Force,
-    /// A prismatic pair's `PrismaticReaction`: read as `NAME.force` (the
-    /// normal force as a vector) and `NAME.moment` (its couple).
-    Prismatic,
-    /// A driver's torque (a moment).
-    Torque,
-    /// A slider's or an actuator's force along its line (a scalar).
-    Push,
-}
+pub(crate) use crate::kinds::forces::{Held, Reaction};
 
 struct ForceEmitter<'a> {
     model: &'a Model,
@@ -89,57 +69,18 @@ struct ForceEmitter<'a> {
     conditions: Vec<TokenStream>,
 }
 
-impl ForceEmitter<'_> {
+impl ForceCx for ForceEmitter<'_> {
+    fn body_of_point(&self, point: &Ident) -> Option<String> {
+        self.plan.body_of_point(&point.to_string())
+    }
+
+    fn body_of_guide(&self, guide: &Ident) -> Option<String> {
+        self.plan.body_of_guide(&guide.to_string())
+    }
+
     /// The reference point a link's load is accumulated about: its first point.
     fn reference(&self, link: &str) -> Ident {
         format_ident!("{}", self.plan.links[link].points[0])
-    }
-
-    /// Adds a wrench (given as code about the link's reference point) to a link's load.
-    fn add(&mut self, link: &str, wrench: TokenStream) {
-        let local = format_ident!("load_{}", link);
-        if self.loaded.insert(link.to_string()) {
-            self.code.extend(quote!(let #local = #wrench;));
-        } else {
-            self.code.extend(quote!(let #local = #local + #wrench;));
-        }
-    }
-
-    /// A force `force` (code) acting on `link` at point `at`, as a wrench about
-    /// the link's reference point.
-    fn force_on(&mut self, link: &str, force: TokenStream, at: &Ident) {
-        let r = self.reference(link);
-        let wrench = if *at == r {
-            quote!(::mechanism::force::Wrench::new(#force, <T as ::mechanism::Real>::lit(0.0)))
-        } else {
-            quote!(::mechanism::force::Wrench::force_at(&(#force), &pos.#at, &pos.#r))
-        };
-        self.add(link, wrench);
-    }
-
-    /// A prismatic reaction `rx` (about point `about`) negated onto `body`.
-    fn prismatic_on(&mut self, body: Option<String>, rx: TokenStream, about: &Ident) {
-        if let Some(body) = body {
-            let r = self.reference(&body);
-            let wrench = if *about == r {
-                quote!(-(#rx).wrench())
-            } else {
-                quote!(-(#rx).wrench_about(&pos.#about, &pos.#r))
-            };
-            self.add(&body, wrench);
-        }
-    }
-
-    /// An outer revolute joint at `point` whose reaction on the group is
-    /// `rx.field`: passes the reaction, negated, to the body that owns the
-    /// point (nothing for the ground) and returns that body.
-    fn pass_revolute(&mut self, point: &Ident, rx: &Ident, field: &str) -> Option<String> {
-        let body = self.plan.body_of_point(&point.to_string());
-        if let Some(b) = &body {
-            let field = format_ident!("{}", field);
-            self.force_on(b, quote!(-#rx.#field), point);
-        }
-        body
     }
 
     /// The load of `link` as a wrench about `point`.
@@ -157,6 +98,34 @@ impl ForceEmitter<'_> {
         }
     }
 
+    /// Adds a wrench (given as code about the link's reference point) to a link's load.
+    fn add(&mut self, link: &str, wrench: TokenStream) {
+        let local = format_ident!("load_{}", link);
+        if self.loaded.insert(link.to_string()) {
+            self.code.extend(quote!(let #local = #wrench;));
+        } else {
+            self.code.extend(quote!(let #local = #local + #wrench;));
+        }
+    }
+
+    fn code(&mut self, code: TokenStream) {
+        self.code.extend(code);
+    }
+
+    fn reaction(&mut self, reaction: Reaction) {
+        self.reactions.push(reaction);
+    }
+
+    fn power(&mut self, term: TokenStream) {
+        self.power.push(term);
+    }
+
+    fn condition(&mut self, term: TokenStream) {
+        self.conditions.push(term);
+    }
+}
+
+impl ForceEmitter<'_> {
     /// Velocity of a point (code), `None` when it never moves.
     fn velocity(&self, point: &Ident) -> Option<TokenStream> {
         self.moving.contains(&point.to_string()).then(|| {
@@ -172,11 +141,6 @@ impl ForceEmitter<'_> {
             let (w, a) = (format_ident!("omega_{}", l), format_ident!("alpha_{}", l));
             (quote!(vel.#w), quote!(acc.#a))
         })
-    }
-
-    /// The name of the body on the far side of a joint, for field names.
-    fn body_name(body: &Option<String>) -> String {
-        body.clone().unwrap_or_else(|| "ground".into())
     }
 }
 
@@ -195,7 +159,7 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
     };
     em.known_loads();
     for &i in plan.solve.iter().rev() {
-        em.group(&model.stmts[i]);
+        kinds::of(&model.stmts[i]).forces(&mut em);
     }
     unique_names(&mut em.reactions);
     let names = TypeNames::of(model);
@@ -227,7 +191,7 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
 
 /// Field names must be unique: a second joint between the same two bodies
 /// gets a number appended (`r_ground_crank_2`).
-fn unique_names(reactions: &mut [Reaction]) {
+pub(crate) fn unique_names(reactions: &mut [Reaction]) {
     let mut seen = BTreeSet::new();
     for r in reactions {
         let mut candidate = r.name.to_string();

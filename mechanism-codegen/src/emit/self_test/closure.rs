@@ -3,11 +3,13 @@
 //! position code) as a residual recomputed from the solved points.
 
 use super::Context;
-use crate::model::{Kind, Local, Mode, Model, Origin, Stmt};
+use crate::kinds;
+use crate::kinds::closure::{Residual, Residuals};
+use crate::model::{Model, Stmt};
 use crate::plan::Plan;
 use crate::value::{Value, ValueKind};
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::Ident;
 
 /// A value with run-time parameters at their defaults (`None` for a load).
@@ -29,342 +31,16 @@ fn with_defaults(model: &Model, v: &Value) -> Option<f64> {
     })
 }
 
-/// Code of a definition value as an `f64` (`T` is the mechanism's scalar).
-fn f(v: &Value) -> TokenStream {
-    let e = v.emit();
-    quote!(<T as ::mechanism::Real>::as_f64(#e))
-}
-
-/// The sign of an assembly mode: +1 for `Plus`, -1 for `Minus`.
-fn sign(m: Mode) -> f64 {
-    match m {
-        Mode::Plus => 1.0,
-        Mode::Minus => -1.0,
-    }
-}
-
-/// The unit axis of link `k` of `stmt`, from the solved points (code, `V`).
-fn axis(stmt: &Stmt, k: usize) -> TokenStream {
-    let n = &stmt.name;
-    let g = format_ident!("grp_{}", stmt.name);
-    match (&stmt.kind, k) {
-        (Kind::Crank { pivot, .. }, _) => quote!(unit_of(sub(pt(&pos.#n), pt(&pos.#pivot)))),
-        (Kind::Slider { guide, .. }, _)
-        | (Kind::Rrp { guide, .. }, 1)
-        | (Kind::Rpp { guide, .. }, 1) => quote!(unit_of(vc(&pos.#guide.dir))),
-        (Kind::Actuator { a, .. }, 0) | (Kind::Rrr { a, .. }, 0) | (Kind::Rrp { a, .. }, 0) => {
-            quote!(unit_of(sub(pt(&pos.#n), pt(&pos.#a))))
-        }
-        (Kind::Actuator { b, .. }, _) | (Kind::Rrr { b, .. }, _) => {
-            quote!(unit_of(sub(pt(&pos.#n), pt(&pos.#b))))
-        }
-        (Kind::Rpr { .. }, _) => quote!(unit_of(vc(&pos.#g.axis))),
-        (Kind::Prp { g1, .. }, 0) => quote!(unit_of(vc(&pos.#g1.dir))),
-        (Kind::Prp { g2, .. }, _) => quote!(unit_of(vc(&pos.#g2.dir))),
-        (Kind::Rpp { guide, slot, .. }, _) => {
-            let s = f(slot);
-            quote!(turn(unit_of(vc(&pos.#guide.dir)), #s))
-        }
-        _ => quote!([1.0, 0.0]),
-    }
-}
-
-/// What a residual's rounding scales with (its tolerance is 64 eps times
-/// this): a length residual with the mechanism's size; a guide direction
-/// (the difference of two unit vectors, dimensionless) computed from an
-/// angle with 1; one turned from a link's axis, recomputed from two solved
-/// points, with the size over the shortest link (the axis's rounding).
-#[derive(Clone, Copy)]
-enum Scale {
-    Length,
-    Direction,
-    CarriedDirection,
-}
-
-impl Scale {
-    /// The scale as code of the generated `loop_closure` (`size`, the
-    /// mechanism's size at the pose, and `L_MIN` in scope).
-    fn emit(self) -> TokenStream {
-        match self {
-            Scale::Length => quote!(size),
-            Scale::Direction => quote!(1.0),
-            Scale::CarriedDirection => quote!(size / L_MIN),
-        }
-    }
-}
-
-/// One constraint of one statement.
-struct Residual {
-    /// `"<statement>: <constraint>"`, for the failure message.
-    label: String,
-    /// Code of an `f64` residual, zero when the constraint holds (lengths in
-    /// the definition's unit; reads `pos`).
-    code: TokenStream,
-    /// What its rounding scales with.
-    scale: Scale,
-}
-
-/// Residuals of one statement, labelled with its name.
-struct Residuals<'a> {
-    /// The statement's (point's) name.
-    n: &'a Ident,
-    /// Its constraints, in the generated order.
-    list: Vec<Residual>,
-}
-
-impl<'a> Residuals<'a> {
-    /// No residuals yet for statement `n`.
-    fn new(n: &'a Ident) -> Self {
-        Residuals {
-            n,
-            list: Vec::new(),
-        }
-    }
-
-    /// Adds the constraint `what` with residual `code` and its scale.
-    fn push_scaled(&mut self, what: &str, code: TokenStream, scale: Scale) {
-        let label = format!("{}: {what}", self.n);
-        self.list.push(Residual { label, code, scale });
-    }
-
-    /// Adds a length constraint (its rounding scales with the size).
-    fn push(&mut self, what: &str, code: TokenStream) {
-        self.push_scaled(what, code, Scale::Length);
-    }
-}
-
-/// The unit axis of `link` from the solved points (code).
-fn link_axis(model: &Model, plan: &Plan, link: &Ident) -> TokenStream {
-    let info = &plan.links[&link.to_string()];
-    axis(&model.stmts[info.stmt], info.index)
-}
-
-/// A guide: its direction (fixed, or turned from its carrier link's axis)
-/// and, when carried through a point, its origin at that point.
-fn guide(r: &mut Residuals, axis: Option<TokenStream>, angle: &Value, origin: &Origin) {
-    let n = r.n;
-    let a = f(angle);
-    let Some(ax) = axis else {
-        r.push_scaled(
-            "fixed guide direction",
-            quote!(norm(sub(vc(&pos.#n.dir), turn([1.0, 0.0], #a)))),
-            Scale::Direction,
-        );
-        return;
-    };
-    if let Origin::Point(p) = origin {
-        r.push(
-            "carried guide origin",
-            quote!(norm(sub(pt(&pos.#n.origin), pt(&pos.#p)))),
-        );
-    }
-    r.push_scaled(
-        "carried guide direction",
-        quote!(norm(sub(vc(&pos.#n.dir), turn(#ax, #a)))),
-        Scale::CarriedDirection,
-    );
-}
-
-/// A crank: the tip at its radius from the pivot.
-fn crank(r: &mut Residuals, pivot: &Ident, radius: &Value) {
-    let (n, l) = (r.n, f(radius));
-    r.push(
-        "|tip - pivot| = radius",
-        quote!(norm(sub(pt(&pos.#n), pt(&pos.#pivot))) - #l),
-    );
-}
-
-/// A slider: the pin on the guide's offset line, at the input displacement.
-fn slider(r: &mut Residuals, guide: &Ident, input: &Ident, offset: &Value) {
-    let (n, o) = (r.n, f(offset));
-    r.push(
-        "pin on the offset line",
-        quote!(cross(vc(&pos.#guide.dir), sub(pt(&pos.#n), pt(&pos.#guide.origin))) - #o),
-    );
-    r.push(
-        "pin at the input displacement",
-        quote!(dot(vc(&pos.#guide.dir), sub(pt(&pos.#n), pt(&pos.#guide.origin))) - <T as ::mechanism::Real>::as_f64(pos.input.#input)),
-    );
-}
-
-/// The assembly branch of a dyad on the two points `a`, `b`: `n` on the
-/// side of `a -> b` that `mode` names.
-fn dyad_branch(r: &mut Residuals, a: &Ident, b: &Ident, mode: Mode) {
-    let (n, m) = (r.n, sign(mode));
-    r.push(
-        "assembly branch",
-        quote!(wrong_side(#m * cross(sub(pt(&pos.#b), pt(&pos.#a)), sub(pt(&pos.#n), pt(&pos.#a))) / norm(sub(pt(&pos.#b), pt(&pos.#a))))),
-    );
-}
-
-/// A linear actuator: `C` at `l` from `A`, at the input length from `B`, on
-/// its branch.
-fn actuator(r: &mut Residuals, a: &Ident, l: &Value, b: &Ident, input: &Ident, mode: Mode) {
-    let (n, l) = (r.n, f(l));
-    r.push(
-        "|C - A| = l",
-        quote!(norm(sub(pt(&pos.#n), pt(&pos.#a))) - #l),
-    );
-    r.push(
-        "|C - B| = input length",
-        quote!(norm(sub(pt(&pos.#n), pt(&pos.#b))) - <T as ::mechanism::Real>::as_f64(pos.input.#input)),
-    );
-    dyad_branch(r, a, b, mode);
-}
-
-/// An RRR dyad: `C` at `l1` from `A` and `l2` from `B`, on its branch.
-fn rrr(r: &mut Residuals, a: &Ident, l1: &Value, b: &Ident, l2: &Value, mode: Mode) {
-    let (n, l1, l2) = (r.n, f(l1), f(l2));
-    r.push(
-        "|C - A| = l1",
-        quote!(norm(sub(pt(&pos.#n), pt(&pos.#a))) - #l1),
-    );
-    r.push(
-        "|C - B| = l2",
-        quote!(norm(sub(pt(&pos.#n), pt(&pos.#b))) - #l2),
-    );
-    dyad_branch(r, a, b, mode);
-}
-
-/// An RRP dyad: `C` at `l` from `A`, on the guide's offset line, on its
-/// branch (along the guide from `A`).
-fn rrp(r: &mut Residuals, a: &Ident, l: &Value, guide: &Ident, mode: Mode, offset: &Value) {
-    let (n, l, m, o) = (r.n, f(l), sign(mode), f(offset));
-    r.push(
-        "|C - A| = l",
-        quote!(norm(sub(pt(&pos.#n), pt(&pos.#a))) - #l),
-    );
-    r.push(
-        "C on the offset line",
-        quote!(cross(vc(&pos.#guide.dir), sub(pt(&pos.#n), pt(&pos.#guide.origin))) - #o),
-    );
-    r.push(
-        "assembly branch",
-        quote!(wrong_side(#m * dot(sub(pt(&pos.#n), pt(&pos.#a)), vc(&pos.#guide.dir)))),
-    );
-}
-
-/// An RPR dyad: its slide line at its offset from `B`, the slide along it,
-/// a unit axis, and the branch (the sign of the slide).
-fn rpr(r: &mut Residuals, a: &Ident, b: &Ident, mode: Mode, offset: &Value) {
-    let g = format_ident!("grp_{}", r.n);
-    let (m, o) = (sign(mode), f(offset));
-    r.push(
-        "slide line at its offset from B",
-        quote!(cross(vc(&pos.#g.axis), sub(pt(&pos.#a), pt(&pos.#b))) - #o),
-    );
-    r.push(
-        "slide = dot(A - B, u)",
-        quote!(dot(vc(&pos.#g.axis), sub(pt(&pos.#a), pt(&pos.#b))) - <T as ::mechanism::Real>::as_f64(pos.#g.s)),
-    );
-    r.push(
-        "unit axis (times |A - B|)",
-        quote!((norm(vc(&pos.#g.axis)) - 1.0) * norm(sub(pt(&pos.#a), pt(&pos.#b)))),
-    );
-    r.push(
-        "assembly branch",
-        quote!(wrong_side(#m * <T as ::mechanism::Real>::as_f64(pos.#g.s))),
-    );
-}
-
-/// A PRP dyad: `C` on both guides' offset lines.
-fn prp(r: &mut Residuals, g1: &Ident, g2: &Ident, offset1: &Value, offset2: &Value) {
-    let (n, o1, o2) = (r.n, f(offset1), f(offset2));
-    r.push(
-        "C on offset line 1",
-        quote!(cross(vc(&pos.#g1.dir), sub(pt(&pos.#n), pt(&pos.#g1.origin))) - #o1),
-    );
-    r.push(
-        "C on offset line 2",
-        quote!(cross(vc(&pos.#g2.dir), sub(pt(&pos.#n), pt(&pos.#g2.origin))) - #o2),
-    );
-}
-
-/// An RPP dyad: `Q` on the guide's offset line, `A` in the slot through `Q`.
-fn rpp(r: &mut Residuals, a: &Ident, guide: &Ident, slot: &Value, offset: &Value) {
-    let (n, o, s) = (r.n, f(offset), f(slot));
-    r.push(
-        "Q on the offset line",
-        quote!(cross(vc(&pos.#guide.dir), sub(pt(&pos.#n), pt(&pos.#guide.origin))) - #o),
-    );
-    r.push(
-        "A in the slot through Q",
-        quote!(cross(turn(unit_of(vc(&pos.#guide.dir)), #s), sub(pt(&pos.#a), pt(&pos.#n)))),
-    );
-}
-
-/// A point on a link: `from` plus the link's axes times the local offset.
-fn point(r: &mut Residuals, axis: TokenStream, from: &Ident, local: &Local) {
-    let n = r.n;
-    let (x, y) = match local {
-        Local::Cartesian(x, y) => (f(x), f(y)),
-        Local::Polar(d, a) => {
-            let (d, a) = (f(d), f(a));
-            (quote!(#d * (#a).cos()), quote!(#d * (#a).sin()))
-        }
-    };
-    r.push(
-        "P = from + the link's axes times the local offset",
-        quote!({
-            let u = #axis;
-            let (x, y) = (#x, #y);
-            norm(sub(sub(pt(&pos.#n), pt(&pos.#from)), [u[0] * x - u[1] * y, u[1] * x + u[0] * y]))
-        }),
-    );
-}
-
 /// Residuals of one statement's constraints (lengths in the definition's
-/// unit); a carried guide's direction comes after its origin.
+/// unit), as its kind writes them; a link's axis comes from the kind that
+/// creates the link.
 fn residuals(model: &Model, plan: &Plan, stmt: &Stmt) -> Vec<Residual> {
     let mut r = Residuals::new(&stmt.name);
-    match &stmt.kind {
-        Kind::Ground { .. } => {}
-        Kind::Guide {
-            carrier,
-            angle,
-            origin,
-        } => {
-            let axis = carrier.as_ref().map(|l| link_axis(model, plan, l));
-            guide(&mut r, axis, angle, origin);
-        }
-        Kind::Crank { pivot, radius, .. } => crank(&mut r, pivot, radius),
-        Kind::Slider {
-            guide,
-            input,
-            offset,
-        } => slider(&mut r, guide, input, offset),
-        Kind::Actuator {
-            a,
-            l,
-            b,
-            input,
-            mode,
-        } => actuator(&mut r, a, l, b, input, *mode),
-        Kind::Rrr { a, l1, b, l2, mode } => rrr(&mut r, a, l1, b, l2, *mode),
-        Kind::Rrp {
-            a,
-            l,
-            guide,
-            mode,
-            offset,
-        } => rrp(&mut r, a, l, guide, *mode, offset),
-        Kind::Rpr { a, b, mode, offset } => rpr(&mut r, a, b, *mode, offset),
-        Kind::Prp {
-            g1,
-            g2,
-            offset1,
-            offset2,
-        } => prp(&mut r, g1, g2, offset1, offset2),
-        Kind::Rpp {
-            a,
-            guide,
-            slot,
-            offset,
-        } => rpp(&mut r, a, guide, slot, offset),
-        Kind::Point { link, from, local } => {
-            point(&mut r, link_axis(model, plan, link), from, local)
-        }
-    }
+    let link_axis = |link: &Ident| {
+        let info = &plan.links[&link.to_string()];
+        kinds::of(&model.stmts[info.stmt]).closure_axis(info.index)
+    };
+    kinds::of(stmt).residuals(&mut r, &link_axis);
     r.list
 }
 
@@ -409,15 +85,8 @@ pub(super) fn shortest_link(cx: &Context) -> f64 {
     let model = cx.model;
     let mut lengths: Vec<f64> = Vec::new();
     for &i in &cx.checked.order {
-        match &model.stmts[i].kind {
-            Kind::Crank { radius: l, .. } | Kind::Rrp { l, .. } | Kind::Actuator { l, .. } => {
-                lengths.extend(with_defaults(model, l))
-            }
-            Kind::Rrr { l1, l2, .. } => {
-                lengths.extend(with_defaults(model, l1));
-                lengths.extend(with_defaults(model, l2));
-            }
-            _ => {}
+        for l in kinds::of(&model.stmts[i]).link_lengths() {
+            lengths.extend(with_defaults(model, l));
         }
     }
     let l_min = lengths

@@ -23,7 +23,8 @@ mod rates;
 mod support;
 
 use crate::check::Findings;
-use crate::model::{Kind, Level, Model};
+use crate::kinds;
+use crate::model::{Level, Model};
 use crate::plan::{checked, Checked, Plan};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -71,7 +72,7 @@ impl<'a> Context<'a> {
             .order
             .iter()
             .map(|&i| &model.stmts[i])
-            .filter(|s| !matches!(s.kind, Kind::Guide { .. } | Kind::Rpr { .. }))
+            .filter(|s| kinds::of(s).point_kind().is_some())
             .map(|s| &s.name)
             .collect()
     }

@@ -1,8 +1,8 @@
 //! The lane machinery of the batch kernel (`__lane_batch`): what the
 //! statements solved so far have made known (points, links, guides, slides,
-//! as locals of the kernel's loop body), one [`Step`] per statement that the
-//! per-kind functions ([`super::points`], [`super::drivers`],
-//! [`super::groups`]) fill, and the kernel around them.
+//! as locals of the kernel's loop body), one [`Step`] per statement that each
+//! kind's `GroupKind::lane` fills (shapes shared by several kinds are in
+//! `lane_shapes`), and the kernel around them (`emit::batch`).
 //!
 //! Every local of the loop body is named after the statement that makes it:
 //! `p_A_x` / `v_A_x` / `a_A_x` a point's position, velocity and acceleration
@@ -13,7 +13,7 @@
 //! vector at a run-time angle, `u_NAME`; the sign of a run-time assembly
 //! mode, `m_NAME`) are computed once before the loop.
 
-use crate::model::{Kind, Mode, Stmt};
+use crate::model::{Mode, Stmt};
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -22,7 +22,7 @@ use syn::Ident;
 
 /// The x and y locals of one planar vector of the loop body.
 #[derive(Clone)]
-pub(super) struct Pair {
+pub(crate) struct Pair {
     pub x: Ident,
     pub y: Ident,
 }
@@ -30,7 +30,7 @@ pub(super) struct Pair {
 /// Per-statement names of the lane code: `PREFIX_NAME_x` and `PREFIX_NAME_y`
 /// (`p`, `v`, `a` for a point's position, velocity and acceleration, `o` for
 /// a link point's offset from its reference point).
-pub(super) fn pv(prefix: &str, name: &Ident) -> Pair {
+pub(crate) fn pv(prefix: &str, name: &Ident) -> Pair {
     Pair {
         x: format_ident!("{}_{}_x", prefix, name),
         y: format_ident!("{}_{}_y", prefix, name),
@@ -42,7 +42,7 @@ pub(super) fn pv(prefix: &str, name: &Ident) -> Pair {
 /// length per second squared). The velocity and acceleration locals exist
 /// only when the kernel goes that far.
 #[derive(Clone)]
-pub(super) struct PointLocals {
+pub(crate) struct PointLocals {
     pub px: Ident,
     pub py: Ident,
     pub vx: Ident,
@@ -68,7 +68,7 @@ impl PointLocals {
 
 /// A planar vector as two expressions (literals, locals or field reads).
 #[derive(Clone)]
-pub(super) struct Vector {
+pub(crate) struct Vector {
     pub x: TokenStream,
     pub y: TokenStream,
 }
@@ -77,7 +77,7 @@ pub(super) struct Vector {
 /// to `(-pi, pi]`), angular velocity (rad/s) and acceleration (rad/s^2)
 /// (expressions: a link that turns with a guide's body uses that body's, a
 /// link that never turns `zero`).
-pub(super) struct LaneLink {
+pub(crate) struct LaneLink {
     pub axis: Vector,
     pub angle: TokenStream,
     pub omega: TokenStream,
@@ -128,7 +128,7 @@ impl LaneLink {
 /// motion as `Option<&LineVelocity>` / `Option<&LineAcceleration>`
 /// expressions (`None` for a fixed guide, so its terms fold away), and the
 /// body's angular velocity and acceleration (for the blocks sliding on it).
-pub(super) struct LaneGuide {
+pub(crate) struct LaneGuide {
     pub line: Ident,
     pub gv: TokenStream,
     pub ga: TokenStream,
@@ -138,14 +138,14 @@ pub(super) struct LaneGuide {
 
 /// A link's own rate locals, made by the statement that creates the link:
 /// `w_LINK` (rad/s) and `al_LINK` (rad/s^2).
-pub(super) struct Rates {
+pub(crate) struct Rates {
     pub omega: Ident,
     pub alpha: Ident,
 }
 
 /// The locals of one slide slot of a statement: displacement `sK_NAME`
 /// (length), its rate `sdK_NAME` and its second rate `sddK_NAME`.
-pub(super) struct SlideLocals {
+pub(crate) struct SlideLocals {
     pub s: Ident,
     pub sd: Ident,
     pub sdd: Ident,
@@ -156,13 +156,13 @@ struct Slide([TokenStream; 3]);
 
 /// What the statements solved so far have made known, and the kernel's code
 /// so far: `pre` (before the loop) and `body` (per element).
-pub(super) struct Lane {
+pub(crate) struct Lane {
     /// The kernel computes velocities.
     pub vel: bool,
     /// The kernel computes accelerations.
     pub acc: bool,
-    pub(super) pre: TokenStream,
-    pub(super) body: TokenStream,
+    pub(crate) pre: TokenStream,
+    pub(crate) body: TokenStream,
     points: BTreeSet<String>,
     links: BTreeMap<String, LaneLink>,
     guides: BTreeMap<String, LaneGuide>,
@@ -172,7 +172,7 @@ pub(super) struct Lane {
 impl Lane {
     /// An empty kernel computing `levels` levels (1 position, 2 velocity, 3
     /// acceleration).
-    pub(super) fn new(levels: usize) -> Lane {
+    pub(crate) fn new(levels: usize) -> Lane {
         Lane {
             vel: levels > 1,
             acc: levels > 2,
@@ -210,7 +210,7 @@ impl Lane {
     /// scalar path accepts: summed into `chk` (one add each, as a balanced
     /// tree), the sum is finite unless one of them is not (or, harmlessly,
     /// the sum overflows: the element then goes to the scalar path).
-    pub(super) fn commit(&mut self, step: Step) {
+    pub(crate) fn commit(&mut self, step: Step) {
         let Step {
             name,
             own,
@@ -255,7 +255,7 @@ impl Lane {
 
     /// The writes of the outputs into their slices, per level: `None` when
     /// an output is not known to the kernel.
-    pub(super) fn writes(&self, outputs: &[(Ident, TokenStream)], levels: usize) -> Option<Writes> {
+    pub(crate) fn writes(&self, outputs: &[(Ident, TokenStream)], levels: usize) -> Option<Writes> {
         let mut w = Writes {
             slices: Vec::new(),
             code: TokenStream::new(),
@@ -288,9 +288,9 @@ impl Lane {
 
 /// The output slices the kernel writes (its `&mut [T]` arguments, in
 /// order) and the code writing element `k` of each.
-pub(super) struct Writes {
-    pub(super) slices: Vec<Ident>,
-    pub(super) code: TokenStream,
+pub(crate) struct Writes {
+    pub(crate) slices: Vec<Ident>,
+    pub(crate) code: TokenStream,
 }
 
 impl Writes {
@@ -307,7 +307,7 @@ impl Writes {
 /// One statement's lane code while the per-kind function writes it: its
 /// code, the values to check, and what it will make known (see
 /// [`Lane::commit`]).
-pub(super) struct Step<'s> {
+pub(crate) struct Step<'s> {
     stmt: &'s Stmt,
     /// The statement's name.
     pub name: &'s Ident,
@@ -328,7 +328,7 @@ impl<'s> Step<'s> {
     /// The sign of the statement's assembly mode `mode` (see [`sign`]), or
     /// of its run-time mode parameter: the local `m_NAME`, set once before
     /// the loop from `self.PARAM`.
-    pub(super) fn sign(&mut self, mode: &Mode) -> TokenStream {
+    pub(crate) fn sign(&mut self, mode: &Mode) -> TokenStream {
         match &self.stmt.mode_param {
             Some(param) => {
                 let local = format_ident!("m_{}", self.name);
@@ -340,7 +340,7 @@ impl<'s> Step<'s> {
         }
     }
 
-    pub(super) fn new(stmt: &'s Stmt) -> Step<'s> {
+    pub(crate) fn new(stmt: &'s Stmt) -> Step<'s> {
         Step {
             stmt,
             name: &stmt.name,
@@ -407,9 +407,9 @@ impl<'s> Step<'s> {
     /// (an RPR's slide without one under the statement's name; other
     /// unnamed slides are no output and stay unknown).
     pub fn defines_slide(&mut self, slot: usize, l: &SlideLocals) {
-        let slide = match (&self.stmt.kind, self.stmt.slides.get(slot)) {
-            (_, Some(Some(s))) => Some(s.to_string()),
-            (Kind::Rpr { .. }, _) => Some(self.name.to_string()),
+        let slide = match self.stmt.slides.get(slot) {
+            Some(Some(s)) => Some(s.to_string()),
+            _ if super::of(self.stmt).names_slide() => Some(self.name.to_string()),
             _ => None,
         };
         if let Some(name) = slide {
@@ -463,7 +463,7 @@ fn unit(angle: &Value, id: Ident, pre: &mut TokenStream) -> Vector {
 /// The sum of `terms` as a balanced tree of additions (`(a + b) + (c + d)`):
 /// the same check as adding them one by one, with a dependency chain of
 /// `log2(n)` additions instead of `n`, which a long loop body waits on.
-pub(super) fn tree_sum(terms: &[TokenStream]) -> Option<TokenStream> {
+pub(crate) fn tree_sum(terms: &[TokenStream]) -> Option<TokenStream> {
     match terms {
         [] => None,
         [t] => Some(t.clone()),
@@ -477,7 +477,7 @@ pub(super) fn tree_sum(terms: &[TokenStream]) -> Option<TokenStream> {
 
 /// The assembly mode as the sign literal the `mechanism::__private::lane` group
 /// functions take: `1.0` for `plus`, `-1.0` for `minus`.
-pub(super) fn sign(mode: &Mode) -> TokenStream {
+pub(crate) fn sign(mode: &Mode) -> TokenStream {
     lit(match mode {
         Mode::Plus => 1.0,
         Mode::Minus => -1.0,

@@ -1,0 +1,232 @@
+//! `actuator(A, l, B, INPUT, mode) as (ARM, CYLINDER)`: a linear actuator of
+//! input length (length units) from `B` to the joint, an arm of length `l`
+//! from `A` to it.
+
+use super::closure::{axis_between, f, Residuals};
+use super::forces::{drive, revolute, rx, ForceCx, Held};
+use super::lane::{Lane, Step};
+use super::lane_shapes::{dyad, SecondSide};
+use super::rates::{states, two_links, RateCx};
+use super::tokens::{arm, grp, local, mode_arg};
+use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::diag::show_num;
+use crate::kinds::pose::{mode, num};
+use crate::model::{Mode, Stmt};
+use crate::value::Value;
+use mechanism_core::{driver, sweep, Fault};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use syn::Ident;
+
+/// An `actuator` statement.
+pub(super) struct Actuator<'a> {
+    pub stmt: &'a Stmt,
+    pub a: &'a Ident,
+    pub l: &'a Value,
+    pub b: &'a Ident,
+    pub input: &'a Ident,
+    pub mode: Mode,
+}
+
+impl<'a> GroupKind<'a> for Actuator<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.a, Role::Point), (self.b, Role::Point)]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        let n = &self.stmt.name;
+        vec![
+            LinkShape::new(&[self.a, n], Turn::Own, None),
+            LinkShape::new(&[self.b, n], Turn::Own, None),
+        ]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.l.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let len = input(self.input);
+        let (pa, pb) = (pose.point(self.a), pose.point(self.b));
+        let p = driver::actuator::position(&pa, num(self.l), &pb, len, mode(self.mode))?;
+        pose.found(self.stmt, Some(p.c), &[p.r1 / num(self.l), p.r2 / len]);
+        Ok(Some(sweep::det_rrr(&p)))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::driver::actuator::ActuatorPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (l, m, input) = (self.l.emit(), mode_arg(self.stmt, self.mode), self.input);
+        let (a, b) = (local(self.a), local(self.b));
+        Solve::Group {
+            call: quote!(::mechanism::driver::actuator::position(&#a, #l, &#b, input.#input, #m)),
+            joint: Some("c"),
+        }
+    }
+
+    fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
+        let input = self.input;
+        match index {
+            0 => arm(self.stmt, "r1", self.l.emit()),
+            _ => arm(self.stmt, "r2", quote!(input.#input)),
+        }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let ((g, gv), input) = (states(self.stmt), self.input);
+        let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
+        let call = if cx.accel() {
+            quote!(::mechanism::driver::actuator::acceleration(&pos.#g, &vel.#gv, #ma, #mb, rates.#input, accels.#input))
+        } else {
+            quote!(::mechanism::driver::actuator::velocity(&pos.#g, #ma, #mb, rates.#input))
+        };
+        let gr = cx.group(self.stmt, call, quote!(driver::actuator), "Actuator");
+        two_links(cx, self.stmt, &gr);
+    }
+
+    fn rate_system(&self) -> bool {
+        true
+    }
+
+    /// `C` at `l` from `A`, at the input length from `B`, on its branch.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let input = self.input;
+        r.at_length("|C - A| = l", self.a, f(self.l));
+        r.at_length(
+            "|C - B| = input length",
+            self.b,
+            quote!(<T as ::mechanism::Real>::as_f64(pos.input.#input)),
+        );
+        r.dyad_branch(self.a, self.b, self.mode);
+    }
+
+    fn closure_axis(&self, index: usize) -> TokenStream {
+        let from = if index == 0 { self.a } else { self.b };
+        axis_between(from, &self.stmt.name)
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        vec![self.l]
+    }
+
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let (a, b) = (self.a, self.b);
+        let Fault::CannotAssemble { miss, reach } = fault else {
+            return None;
+        };
+        Some(format!(
+            "at {at}, `{a}` and `{b}` are {} outside the distances the link and the cylinder can span (bound {})",
+            show_num(*miss),
+            show_num(*reach)
+        ))
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        let l = &self.stmt.links;
+        Some(format!(
+            "the cylinder `{}` is aligned with link `{}` (dead centre)",
+            l[1], l[0]
+        ))
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Actuator"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let g = grp(self.stmt);
+        quote!(::mechanism::__private::det_rrr(&pos.#g))
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, a, b, input) = (
+            &self.stmt.name,
+            links_text(self.stmt),
+            self.a,
+            self.b,
+            self.input,
+        );
+        format!(
+            "driver: linear actuator `{links}` from `{b}`, link pivoted at `{a}`, input `{input}`, joint `{n}`, {}",
+            mode_text(self.stmt, self.mode)
+        )
+    }
+
+    fn link_kind(&self, index: usize) -> &'static str {
+        if index == 1 {
+            "Cylinder"
+        } else {
+            "Bar"
+        }
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, a, b, input) = (self.stmt, self.a, self.b, self.input);
+        let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
+        let load = cx.load_about(&links[0], a);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::actuator::reactions(&pos.#a, &pos.#b, &pos.#name, &#load)),
+        );
+        let body_a = cx.pass_revolute(a, &rx, "a");
+        if let Some(body) = cx.body_of_point(b) {
+            let axis = format_ident!("rx_axis_{}", name);
+            cx.code(quote!(let #axis = (pos.#name - pos.#b) / ::mechanism::geometry::length(&(pos.#name - pos.#b));));
+            cx.force_on(&body, quote!(#axis * (-#rx.axial)), b);
+        }
+        cx.reaction(revolute(&rx, &body_a, &links[0], a, "a"));
+        cx.power(quote!(#rx.axial * vel.rates.#input));
+        cx.condition(quote!(#rx.min_pivot_ratio));
+        let doc = format!("Axial force of the actuator `{}` (input `{input}`; force units, positive when it pushes its ends apart).", links[1]);
+        cx.reaction(drive(&rx, input, "axial", Held::Push, doc));
+    }
+
+    /// Cylinder = barrel + rod: three bodies, four lower pairs.
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (3, 4)
+    }
+
+    fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {
+        Some((
+            self.a,
+            self.b,
+            "points (the link's pivot and the cylinder's base)",
+        ))
+    }
+
+    fn cylinder(&self) -> Option<&'a Ident> {
+        self.stmt.links.get(1)
+    }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.a, self.l, self.b, self.input, &self.mode)
+    }
+}
+
+/// A linear actuator between `a` and `b`: an RRR dyad (`lane::rrr`) whose
+/// second side is the input length `in_INPUT[k]` (length unit), its rates
+/// from `lane::actuator_rates` / `lane::actuator_accels` with the input's
+/// rates. See [`groups::rrr`].
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    a: &Ident,
+    l: &Value,
+    b: &Ident,
+    input: &Ident,
+    mode: &Mode,
+) -> Option<()> {
+    dyad(lane, s, a, l, b, SecondSide::Input(input), mode)
+}

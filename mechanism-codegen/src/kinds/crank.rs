@@ -1,0 +1,263 @@
+//! `crank(PIVOT, r, INPUT) as LINK`: a link turning about a pivot by the
+//! input angle (rad, counter-clockwise from +x).
+
+use super::closure::{axis_between, f, Residuals};
+use super::forces::{drive, revolute, rx, ForceCx, Held};
+use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
+use super::rates::{vec_ty, RateCx};
+use super::tokens::{grp, local, tag, unit_field};
+use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
+use crate::diag::Diagnostics;
+use crate::kinds::pose::num;
+use crate::model::Stmt;
+use crate::value::Value;
+use mechanism_core::driver;
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use syn::Ident;
+
+/// A `crank` statement. `cos_sin`: its input is marked `as cos_sin`.
+pub(super) struct Crank<'a> {
+    pub stmt: &'a Stmt,
+    pub pivot: &'a Ident,
+    pub radius: &'a Value,
+    pub input: &'a Ident,
+    pub cos_sin: bool,
+}
+
+impl<'a> GroupKind<'a> for Crank<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.pivot, Role::Point)]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        vec![LinkShape::new(
+            &[self.pivot, &self.stmt.name],
+            Turn::Own,
+            None,
+        )]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.radius.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let pivot = pose.point(self.pivot);
+        let c = driver::crank::position(&pivot, num(self.radius), input(self.input))?;
+        pose.found(self.stmt, Some(c.tip), &[c.axis]);
+        Ok(None)
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::driver::crank::CrankPosition<T>)
+    }
+
+    fn position(&self, cos_sin: bool) -> Solve {
+        let (r, pivot, input) = (self.radius.emit(), local(self.pivot), self.input);
+        let call = if self.cos_sin && cos_sin {
+            quote!(::mechanism::driver::crank::position_cos_sin(&#pivot, #r, input_cs.#input.cos, input_cs.#input.sin))
+        } else {
+            quote!(::mechanism::driver::crank::position(&#pivot, #r, input.#input))
+        };
+        Solve::Group {
+            call,
+            joint: Some("tip"),
+        }
+    }
+
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        unit_field(self.stmt, "axis")
+    }
+
+    /// Its input, reduced to (-pi, pi] (no atan2), except in
+    /// `position_cos_sin` for a crank marked `as cos_sin`.
+    fn link_angle(&self, cos_sin: bool) -> Option<TokenStream> {
+        let input = self.input;
+        (!(cos_sin && self.cos_sin))
+            .then(|| quote!(::mechanism::geometry::wrap_angle(input.#input)))
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let (stmt, pivot, input) = (self.stmt, self.pivot, self.input);
+        let (g, pv, t) = (grp(stmt), cx.motion(stmt), tag(stmt));
+        let w = cx.own(stmt, 0);
+        let m = cx.point_arg(pivot);
+        cx.code(if cx.accel() {
+            quote! {
+                let #pv = ::mechanism::driver::crank::acceleration(&pos.#g, #m, rates.#input, accels.#input) #t;
+                let #w = accels.#input;
+            }
+        } else {
+            quote! {
+                let #pv = ::mechanism::driver::crank::velocity(&pos.#g, #m, rates.#input) #t;
+                let #w = rates.#input;
+            }
+        });
+        cx.field(pv, vec_ty());
+        cx.field(w, quote!(T));
+    }
+
+    /// The tip at its radius from the pivot.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        r.at_length("|tip - pivot| = radius", self.pivot, f(self.radius));
+    }
+
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        axis_between(self.pivot, &self.stmt.name)
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        vec![self.radius]
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Crank"
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, pivot, input) = (
+            &self.stmt.name,
+            links_text(self.stmt),
+            self.pivot,
+            self.input,
+        );
+        format!("driver: crank `{links}` about `{pivot}`, input `{input}`, tip `{n}`")
+    }
+
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Crank"
+    }
+
+    fn input_is_angle(&self) -> bool {
+        true
+    }
+
+    /// The crank's link: its angle is the input, its rates the input's.
+    fn given_by_caller(&self, output: &Ident) -> bool {
+        self.stmt.links.first() == Some(output)
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, pivot, input) = (self.stmt, self.pivot, self.input);
+        let (rx, link) = (rx(stmt), &stmt.links[0]);
+        let load = cx.load_about(link, pivot);
+        cx.solve(stmt, quote!(::mechanism::force::crank::reactions(&#load)));
+        let body = cx.body_of_point(pivot);
+        if let Some(b) = &body {
+            let r = cx.reference(b);
+            let w = quote!(::mechanism::force::Wrench::force_at(&(-#rx.pivot), &pos.#pivot, &pos.#r).with_couple(-#rx.torque));
+            cx.add(b, w);
+        }
+        cx.reaction(revolute(&rx, &body, link, pivot, "pivot"));
+        cx.power(quote!(#rx.torque * vel.rates.#input));
+        let doc = format!("Driving torque on `{link}` (input `{input}`; force x length units, counter-clockwise positive): the balancing moment.");
+        cx.reaction(drive(&rx, input, "torque", Held::Torque, doc));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (1, 1)
+    }
+
+    fn cos_sin_input(&self) -> Option<&'a Ident> {
+        self.cos_sin.then_some(self.input)
+    }
+
+    /// It turns about a ground point.
+    fn check_placed(&self, plan: &dyn Placed, errors: &mut Diagnostics) {
+        let pivot = self.pivot;
+        let p = pivot.to_string();
+        if plan.is_defined(&p) && !plan.is_ground_point(&p) {
+            errors.push(
+                pivot.span(),
+                format!("a crank turns about a ground point, and `{p}` moves; define the pivot with `ground(x, y)`"),
+            );
+        }
+    }
+
+    fn crank_arm(&self) -> Option<(&'a Ident, &'a Value)> {
+        Some((self.pivot, self.radius))
+    }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.pivot, self.radius, self.input)
+    }
+}
+
+/// A crank about `pivot` of length `radius` (length unit) at the input
+/// angle `in_INPUT[k]` (radians, counter-clockwise from +x):
+/// `lane::crank`, then the tip's velocity and acceleration with
+/// `lane::rel_vel` / `lane::rel_acc` from the input's rates (rad/s,
+/// rad/s^2), which become the link's `w_LINK` / `al_LINK`. The link's angle
+/// is the input wrapped (`lane::wrap_angle`). `None` when the pivot is not
+/// known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    pivot: &Ident,
+    radius: &Value,
+    input: &Ident,
+) -> Option<()> {
+    let p = lane.point(pivot)?;
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let g = s.g.clone();
+    let (ppx, ppy) = (&p.px, &p.py);
+    let r = radius.emit();
+    let th = format_ident!("in_{}", input);
+    let rates = s.rates(0)?;
+    let (omega, alpha) = (&rates.omega, &rates.alpha);
+    s.emit(quote! {
+        let #g = ::mechanism::__private::lane::crank(#ppx, #ppy, #r, #th[k]);
+        ok &= #g.ok;
+        let #px = #g.x; let #py = #g.y;
+    });
+    if lane.vel {
+        let rate = format_ident!("rate_{}", input);
+        let (pvx, pvy) = (&p.vx, &p.vy);
+        s.emit(quote! {
+            let #omega = #rate[k];
+            let (tx, ty) = ::mechanism::__private::lane::rel_vel(#g.rx, #g.ry, #omega);
+            let #vx = #pvx + tx; let #vy = #pvy + ty;
+        });
+        s.check([quote!(#omega)]);
+    }
+    if lane.acc {
+        let accel = format_ident!("accel_{}", input);
+        let (pax, pay) = (&p.ax, &p.ay);
+        s.emit(quote! {
+            let #alpha = #accel[k];
+            let (tx, ty) = ::mechanism::__private::lane::rel_acc(#g.rx, #g.ry, #omega, #alpha);
+            let #ax = #pax + tx; let #ay = #pay + ty;
+        });
+        s.check([quote!(#alpha)]);
+    }
+    s.defines_link(
+        0,
+        LaneLink {
+            axis: Vector {
+                x: quote!(#g.ux),
+                y: quote!(#g.uy),
+            },
+            angle: quote!(::mechanism::__private::lane::wrap_angle(#th[k])),
+            omega: quote!(#omega),
+            alpha: quote!(#alpha),
+        },
+    )
+}

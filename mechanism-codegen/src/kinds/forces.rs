@@ -1,0 +1,254 @@
+//! What the kinds' force code needs from the force emitter ([`ForceCx`]),
+//! and the reaction fields they add to the forces struct ([`Reaction`]).
+//! The same per-kind code runs against the emitter (code and fields) and
+//! against [`FieldsOnly`] (the fields alone, for the stubs emitted on error).
+
+use crate::model::{Model, Stmt};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use std::collections::BTreeMap;
+use syn::Ident;
+
+/// A reaction field of the generated forces struct.
+pub struct Reaction {
+    /// Field name (`r_FROM_TO`, `drive_INPUT`).
+    pub name: Ident,
+    /// Field type.
+    pub ty: TokenStream,
+    /// Its value in the `forces` code.
+    pub value: TokenStream,
+    /// Its doc comment.
+    pub doc: String,
+    /// What it holds.
+    pub held: Held,
+}
+
+/// What a reaction field holds, as `mechanism::structure::Fields` reads it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Held {
+    /// A revolute joint's force (`Vector2`).
+    Force,
+    /// A prismatic pair's `PrismaticReaction`: read as `NAME.force` (the
+    /// normal force as a vector) and `NAME.moment` (its couple).
+    Prismatic,
+    /// A driver's torque (a moment).
+    Torque,
+    /// A slider's or an actuator's force along its line (a scalar).
+    Push,
+}
+
+/// The force emitter as the kinds see it: the bodies around a group, the
+/// loads of its links, and where its code, fields, power terms and
+/// conditioning go.
+pub trait ForceCx {
+    /// The body owning a point (`None`: the ground or unknown).
+    fn body_of_point(&self, point: &Ident) -> Option<String>;
+    /// The body carrying a guide (`None`: the ground).
+    fn body_of_guide(&self, guide: &Ident) -> Option<String>;
+    /// The reference point a link's load is accumulated about.
+    fn reference(&self, link: &str) -> Ident;
+    /// The load of `link` as a wrench about `point` (code).
+    fn load_about(&self, link: &Ident, point: &Ident) -> TokenStream;
+    /// Adds a wrench (code about the link's reference point) to a link's load.
+    fn add(&mut self, link: &str, wrench: TokenStream);
+    /// Appends code to the `forces` method.
+    fn code(&mut self, code: TokenStream);
+    /// Adds a field to the forces struct.
+    fn reaction(&mut self, reaction: Reaction);
+    /// Adds a driver's power term to the balance.
+    fn power(&mut self, term: TokenStream);
+    /// Adds a group's conditioning (its relative pivot) to `condition`.
+    fn condition(&mut self, term: TokenStream);
+
+    /// A force `force` (code) acting on `link` at point `at`, as a wrench
+    /// about the link's reference point.
+    fn force_on(&mut self, link: &str, force: TokenStream, at: &Ident) {
+        let r = self.reference(link);
+        let wrench = if *at == r {
+            quote!(::mechanism::force::Wrench::new(#force, <T as ::mechanism::Real>::lit(0.0)))
+        } else {
+            quote!(::mechanism::force::Wrench::force_at(&(#force), &pos.#at, &pos.#r))
+        };
+        self.add(link, wrench);
+    }
+
+    /// A prismatic reaction `rx` (about point `about`) negated onto `body`.
+    fn prismatic_on(&mut self, body: Option<String>, rx: TokenStream, about: &Ident) {
+        if let Some(body) = body {
+            let r = self.reference(&body);
+            let wrench = if *about == r {
+                quote!(-(#rx).wrench())
+            } else {
+                quote!(-(#rx).wrench_about(&pos.#about, &pos.#r))
+            };
+            self.add(&body, wrench);
+        }
+    }
+
+    /// An outer revolute joint at `point` whose reaction on the group is
+    /// `rx.field`: passes the reaction, negated, to the body that owns the
+    /// point (nothing for the ground) and returns that body.
+    fn pass_revolute(&mut self, point: &Ident, rx: &Ident, field: &str) -> Option<String> {
+        let body = self.body_of_point(point);
+        if let Some(b) = &body {
+            let field = format_ident!("{}", field);
+            self.force_on(b, quote!(-#rx.#field), point);
+        }
+        body
+    }
+
+    /// `let rx_NAME = CALL.map_err(..)?;`
+    fn solve(&mut self, stmt: &Stmt, call: TokenStream) {
+        let (rx, t) = (rx(stmt), super::tokens::tag(stmt));
+        self.code(quote!(let #rx = #call #t;));
+    }
+
+    /// The loads of the two links of a group about `point`.
+    fn loads_about(&self, stmt: &Stmt, point: &Ident) -> (TokenStream, TokenStream) {
+        (
+            self.load_about(&stmt.links[0], point),
+            self.load_about(&stmt.links[1], point),
+        )
+    }
+}
+
+/// `rx_NAME`: the local holding a statement's reactions.
+pub fn rx(stmt: &Stmt) -> Ident {
+    format_ident!("rx_{}", stmt.name)
+}
+
+/// The name of the body on the far side of a joint, for field names.
+pub fn body_name(body: &Option<String>) -> String {
+    body.clone().unwrap_or_else(|| "ground".into())
+}
+
+/// The reaction of a revolute joint: the force of `from` (a body, or the
+/// ground) on `to` at `at`, field `field` of `rx`.
+pub fn revolute(
+    rx: &Ident,
+    from: &Option<String>,
+    to: &Ident,
+    at: &Ident,
+    field: &str,
+) -> Reaction {
+    let from = body_name(from);
+    let field = format_ident!("{}", field);
+    Reaction {
+        name: format_ident!("r_{}_{}", from, to),
+        ty: quote!(::mechanism::Vector2<T>),
+        value: quote!(#rx.#field),
+        doc: format!("Force of `{from}` on `{to}` at `{at}` (force units, global frame)."),
+        held: Held::Force,
+    }
+}
+
+/// The reaction of a prismatic pair of `from` on `to`, its couple taken
+/// about `about`, field `field` of `rx`.
+pub fn prismatic(
+    rx: &Ident,
+    from: &Option<String>,
+    to: &Ident,
+    about: &Ident,
+    field: &str,
+) -> Reaction {
+    let from = body_name(from);
+    let field = format_ident!("{}", field);
+    Reaction {
+        name: format_ident!("r_{}_{}", from, to),
+        ty: quote!(::mechanism::force::PrismaticReaction<T>),
+        value: quote!(#rx.#field),
+        doc: format!(
+            "Reaction of the prismatic pair of `{from}` on `{to}`: normal force (signed, along the left normal of the sliding direction) and couple about `{about}` (counter-clockwise positive)."
+        ),
+        held: Held::Prismatic,
+    }
+}
+
+/// The driving effort of `input`, field `field` of `rx` (a torque or a push
+/// along the driver's line, as `held` says), documented by `doc`.
+pub fn drive(rx: &Ident, input: &Ident, field: &str, held: Held, doc: String) -> Reaction {
+    let field = format_ident!("{}", field);
+    Reaction {
+        name: format_ident!("drive_{}", input),
+        ty: quote!(T),
+        value: quote!(#rx.#field),
+        doc,
+        held,
+    }
+}
+
+/// The joint between the two links of a group, at `at`.
+pub fn inner(
+    rx: &Ident,
+    links: &[Ident],
+    at: &Ident,
+    field: &str,
+    prismatic_pair: bool,
+) -> Reaction {
+    let from = Some(links[0].to_string());
+    if prismatic_pair {
+        prismatic(rx, &from, &links[1], at, field)
+    } else {
+        revolute(rx, &from, &links[1], at, field)
+    }
+}
+
+/// A [`ForceCx`] that keeps the fields only, the bodies found from the
+/// statements alone (no plan): the forces struct of a definition with
+/// errors, so the user's code that reads a reaction reports no follow-on
+/// error.
+pub struct FieldsOnly {
+    owner: BTreeMap<String, Option<String>>,
+    carrier: BTreeMap<String, Option<String>>,
+    /// The fields found, in the order found.
+    pub reactions: Vec<Reaction>,
+}
+
+impl FieldsOnly {
+    /// The reaction fields of the statements of `model`, taken in the
+    /// reverse of the order written (the force analysis takes the groups in
+    /// the reverse of the solve order).
+    pub fn of(model: &Model) -> Vec<Reaction> {
+        let mut cx = FieldsOnly {
+            owner: BTreeMap::new(),
+            carrier: BTreeMap::new(),
+            reactions: Vec::new(),
+        };
+        for stmt in &model.stmts {
+            let kind = super::of(stmt);
+            if let Some(body) = kind.point_owner() {
+                cx.owner.insert(stmt.name.to_string(), body);
+            }
+            if let Some(carrier) = kind.guide_carrier() {
+                let carrier = carrier.map(ToString::to_string);
+                cx.carrier.insert(stmt.name.to_string(), carrier);
+            }
+        }
+        for stmt in model.stmts.iter().rev() {
+            super::of(stmt).forces(&mut cx);
+        }
+        cx.reactions
+    }
+}
+
+impl ForceCx for FieldsOnly {
+    fn body_of_point(&self, point: &Ident) -> Option<String> {
+        self.owner.get(&point.to_string()).cloned().flatten()
+    }
+    fn body_of_guide(&self, guide: &Ident) -> Option<String> {
+        self.carrier.get(&guide.to_string()).cloned().flatten()
+    }
+    fn reference(&self, link: &str) -> Ident {
+        format_ident!("{}", link)
+    }
+    fn load_about(&self, _link: &Ident, _point: &Ident) -> TokenStream {
+        TokenStream::new()
+    }
+    fn add(&mut self, _link: &str, _wrench: TokenStream) {}
+    fn code(&mut self, _code: TokenStream) {}
+    fn reaction(&mut self, reaction: Reaction) {
+        self.reactions.push(reaction);
+    }
+    fn power(&mut self, _term: TokenStream) {}
+    fn condition(&mut self, _term: TokenStream) {}
+}

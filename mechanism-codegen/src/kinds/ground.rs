@@ -1,0 +1,105 @@
+//! `ground(x, y)`: a fixed point.
+
+use super::lane::{Lane, PointLocals, Step};
+use super::{GroupKind, Pose, Role, Solve};
+use crate::kinds::pose::num;
+use crate::model::Stmt;
+use crate::value::Value;
+use mechanism_core::Point2;
+use quote::quote;
+use syn::Ident;
+
+/// A `ground` statement.
+pub(super) struct Ground<'a> {
+    pub stmt: &'a Stmt,
+    pub x: &'a Value,
+    pub y: &'a Value,
+}
+
+impl<'a> GroupKind<'a> for Ground<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(None)
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.x.clone(), self.y.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let p = Point2::new(num(self.x), num(self.y));
+        pose.found(self.stmt, Some(p), &[]);
+        Ok(None)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (x, y) = (self.x.emit(), self.y.emit());
+        Solve::Own {
+            expr: quote!(::mechanism::Point2::new(#x, #y)),
+            ty: quote!(::mechanism::Point2<T>),
+        }
+    }
+
+    fn describe(&self) -> String {
+        format!("ground point `{}`", self.stmt.name)
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Ground")
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        false
+    }
+
+    fn given_by_caller(&self, output: &Ident) -> bool {
+        self.stmt.name == *output
+    }
+
+    fn literal_ground(&self) -> Option<(f64, f64)> {
+        Some((self.x.fold()?, self.y.fold()?))
+    }
+
+    fn ground_at(&self) -> Option<(f64, f64)> {
+        Some((num(self.x), num(self.y)))
+    }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, _lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(s, self.x, self.y);
+        Some(())
+    }
+}
+
+/// A ground point at `(x, y)` (length unit): its position locals are the
+/// coordinates, its velocity and acceleration locals `zero` (later code
+/// reads them like any point's; the compiler folds them). No core call,
+/// nothing to check beyond the coordinates (see `Lane::commit`).
+fn lane_steps(s: &mut Step, x: &Value, y: &Value) {
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let (x, y) = (x.emit(), y.emit());
+    s.emit(quote! {
+        let #px = #x; let #py = #y;
+        let #vx = zero; let #vy = zero;
+        let #ax = zero; let #ay = zero;
+    });
+}

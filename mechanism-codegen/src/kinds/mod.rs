@@ -1,0 +1,604 @@
+//! Stage 2b, kinds: everything the macro knows about one statement kind, one
+//! module per kind behind the [`GroupKind`] trait: the names it refers to,
+//! the links it creates and how they turn, which body owns its point, the
+//! values its position uses, its position in `f64` at expansion time (the
+//! evaluator of `check`) and the core call it emits for `position()` (the
+//! emitter), both calling the same `mechanism-core` primitive with the same
+//! arguments.
+//!
+//! [`of`] is the one place where a [`Kind`] is dispatched to its module.
+//! This stage reads `model` and `value` only; `validate`, `plan`, `check`
+//! and `emit` read it.
+
+mod actuator;
+pub mod closure;
+mod crank;
+pub mod forces;
+mod ground;
+mod guide;
+pub mod lane;
+mod lane_shapes;
+mod point;
+pub mod pose;
+mod prp;
+pub mod rates;
+mod rpp;
+mod rpr;
+mod rrp;
+mod rrr;
+mod slider;
+pub(crate) mod tokens;
+
+use crate::diag::Diagnostics;
+use crate::model::{Kind, Stmt};
+use crate::value::Value;
+pub use pose::Pose;
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// How a link turns.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Turn {
+    /// It never turns (a block on a fixed guide).
+    None,
+    /// It has its own angular velocity, found by the statement that creates it.
+    Own,
+    /// It turns with another link (a block on a carried guide).
+    With(String),
+}
+
+/// What the rules that need the plan ask of it (implemented by `plan::Plan`).
+pub trait Placed {
+    /// The points on `link`, `None` for an unknown link.
+    fn link_points(&self, link: &Ident) -> Option<&[String]>;
+    /// `true` when a statement defines `name`.
+    fn is_defined(&self, name: &str) -> bool;
+    /// `true` when `point` never moves.
+    fn is_ground_point(&self, point: &str) -> bool;
+}
+
+/// A guide's line as written.
+pub struct GuideLine<'a> {
+    /// The link carrying it (`None`: fixed).
+    pub carrier: Option<&'a Ident>,
+    /// The point it passes through (`None`: literal or parametric coordinates).
+    pub through: Option<&'a Ident>,
+    /// Its angle (rad, counter-clockwise from +x, or from the carrier's axis).
+    pub angle: &'a Value,
+}
+
+/// What a name a statement refers to must be.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Role {
+    /// A point.
+    Point,
+    /// A guide.
+    Guide,
+    /// A link.
+    Link,
+}
+
+/// A link a statement creates: the points fixed on it (the first is the
+/// link's origin), how it turns (before guide carriers are resolved), and
+/// the guide it slides on (a block), if any.
+pub struct LinkShape {
+    /// Points fixed on the link, its origin first.
+    pub points: Vec<String>,
+    /// How it turns, a block on a guide as `Turn::None`.
+    pub turn: Turn,
+    /// The guide it slides on.
+    pub guide: Option<String>,
+}
+
+impl LinkShape {
+    /// A link through `points` that turns as `turn` and slides on `guide`.
+    fn new(points: &[&Ident], turn: Turn, guide: Option<&Ident>) -> Self {
+        LinkShape {
+            points: points.iter().map(ToString::to_string).collect(),
+            turn,
+            guide: guide.map(ToString::to_string),
+        }
+    }
+}
+
+/// How a statement's position is emitted.
+pub enum Solve {
+    /// `let pos_NAME = EXPR;`, a value of type `ty` (a point or a line).
+    Own {
+        /// The expression (tagged, if it can fail).
+        expr: TokenStream,
+        /// Its type.
+        ty: TokenStream,
+    },
+    /// `let grp_NAME = CALL TAG;`, then `let pos_NAME = grp_NAME.JOINT;`
+    /// when the statement names a point.
+    Group {
+        /// The core call, untagged.
+        call: TokenStream,
+        /// The field of its result that is the statement's point.
+        joint: Option<&'static str>,
+    },
+}
+
+/// What the macro knows about one statement kind. Implemented once per
+/// kind, on a view of one statement of that kind ([`of`]).
+pub trait GroupKind<'a> {
+    /// Names the statement refers to, with their tokens and what each must
+    /// name.
+    fn references(&self) -> Vec<(&'a Ident, Role)>;
+
+    /// The links the statement creates, in the order of `Stmt::links`.
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        Vec::new()
+    }
+
+    /// The body the statement's point belongs to when another group is
+    /// pinned there (`Some(None)`: the ground); `None` for statements that
+    /// define no point (guides, RPR slides). See `plan::point_owner`.
+    fn point_owner(&self) -> Option<Option<String>>;
+
+    /// Every value its position uses, in the order the evaluator reads them.
+    fn position_values(&self) -> Vec<Value>;
+
+    /// Its position in `f64` at expansion time: what it finds goes into
+    /// `pose`; returns its scaled determinant (`None` for statements without
+    /// a rate system). `input` reads a driver's input value.
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>>;
+
+    /// The core type of its solved position state (`grp_NAME`), `()` for none.
+    fn position_type(&self) -> TokenStream {
+        quote!(())
+    }
+
+    /// Its position code; `cos_sin`: emitting `position_cos_sin`.
+    fn position(&self, cos_sin: bool) -> Solve;
+
+    /// Unit axis and raw direction of its link `index`, in position scope.
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        (
+            quote!(::mechanism::Vector2::x()),
+            quote!(::mechanism::Vector2::x()),
+        )
+    }
+
+    /// The field of its position state holding its slide `slot`.
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    /// The angle output of its link, when not the angle of the link's
+    /// direction (a crank's is its input). `cos_sin`: in `position_cos_sin`.
+    fn link_angle(&self, _cos_sin: bool) -> Option<TokenStream> {
+        None
+    }
+
+    /// Its velocity code (`cx.accel()` false) or acceleration code.
+    fn rates(&self, _cx: &mut dyn rates::RateCx) {}
+
+    /// `true` for the groups with a rate system (the dyads and the
+    /// actuator): their velocity's `condition` joins the mechanism's.
+    fn rate_system(&self) -> bool {
+        false
+    }
+
+    /// Its loop-closure residuals for `#[self_test]`; `link_axis` gives a
+    /// link's unit axis from the solved points (code).
+    fn residuals(
+        &self,
+        _r: &mut closure::Residuals<'_>,
+        _link_axis: &dyn Fn(&Ident) -> TokenStream,
+    ) {
+    }
+
+    /// The unit axis of its link `index` from the solved points (code of
+    /// the self-test module).
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        quote!([1.0, 0.0])
+    }
+
+    /// Its link lengths (for the shortest link of the self-test tolerances).
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        Vec::new()
+    }
+
+    /// What a fault of its position means, in the user's words and numbers
+    /// (`at`: where, as the user reads it); `None`: the fault's own text.
+    fn explain_fault(&self, _fault: &mechanism_core::Fault, _at: &str) -> Option<String> {
+        None
+    }
+
+    /// Why its rate system is singular, in the user's words; `None`: a
+    /// generic text.
+    fn singular_meaning(&self) -> Option<String> {
+        None
+    }
+
+    /// Its lane code in the batch kernel (`None`: it has none, or an
+    /// argument the kernel does not know; the batch then takes the scalar
+    /// path).
+    fn lane(&self, lane: &mut lane::Lane, s: &mut lane::Step<'_>) -> Option<()>;
+
+    /// The core's tag of the primitive it calls (`mechanism::Primitive`),
+    /// for run-time errors.
+    fn primitive(&self) -> &'static str {
+        "LinkPoint"
+    }
+
+    /// Its scaled determinant (the same as its `eval`'s) from the generated
+    /// position struct `pos` (code of `check()`); 1 without a rate system.
+    fn det_code(&self) -> TokenStream {
+        quote!(1.0)
+    }
+
+    /// Its line in the structure listing of the generated type's doc comment.
+    fn describe(&self) -> String;
+
+    /// The kind of point it defines (`mechanism::structure::PointKind`),
+    /// `None` when it defines none (a guide, an RPR's slide).
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Joint")
+    }
+
+    /// Whether the point it defines moves, given which links turn and
+    /// which points move before it.
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        true
+    }
+
+    /// The kind of its link `index` (`mechanism::structure::LinkKind`) when
+    /// it does not slide on a guide.
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Bar"
+    }
+
+    /// `true` when its input is an angle (rad), `false` a length.
+    fn input_is_angle(&self) -> bool {
+        false
+    }
+
+    /// `true` for an output the batch leaves out because the caller has it
+    /// already (a ground point, a crank's link).
+    fn given_by_caller(&self, _output: &Ident) -> bool {
+        false
+    }
+
+    /// `true` when its slide without a name of its own is an output under
+    /// the statement's name (an RPR's).
+    fn names_slide(&self) -> bool {
+        false
+    }
+
+    /// The bodies it adds and the lower pairs it closes, for the mobility
+    /// count (Gruebler: `3 (n - 1) - 2 j`).
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (0, 0)
+    }
+
+    /// For a group on two known places: the two and what they are, for the
+    /// rule that they differ (`validate`).
+    fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {
+        None
+    }
+
+    /// The link that is a massless two-force member carrying no load (an
+    /// actuator's cylinder).
+    fn cylinder(&self) -> Option<&'a Ident> {
+        None
+    }
+
+    /// For a crank marked `as cos_sin`: its input.
+    fn cos_sin_input(&self) -> Option<&'a Ident> {
+        None
+    }
+
+    /// `true` for a group whose joint can be at infinity (its position
+    /// itself fails at a singular pose: the PRP, the RPP).
+    fn joint_at_infinity(&self) -> bool {
+        false
+    }
+
+    /// Why it cannot assemble when it is singular at every pose checked
+    /// (`over`: the inputs checked, as the user reads them), `None` when
+    /// that says nothing more than a failure at one input.
+    fn singular_everywhere(&self, _over: &str) -> Option<String> {
+        None
+    }
+
+    /// A hint on why it does not assemble over a crank's full turn, when
+    /// there is one in numbers (an RRR driven by a crank onto a ground
+    /// point: the four-bar's Grashof condition). `find` gives the statement
+    /// that defines a name.
+    fn full_turn_hint(&self, _find: &dyn Fn(&Ident) -> Option<&'a Stmt>) -> Option<String> {
+        None
+    }
+
+    /// For a crank: its pivot and radius.
+    fn crank_arm(&self) -> Option<(&'a Ident, &'a Value)> {
+        None
+    }
+
+    /// For a ground point: its coordinates (NaN where they do not fold).
+    fn ground_at(&self) -> Option<(f64, f64)> {
+        None
+    }
+
+    /// For a ground point with literal coordinates: where it is.
+    fn literal_ground(&self) -> Option<(f64, f64)> {
+        None
+    }
+
+    /// Its own rules on its arguments as written (`validate::model`).
+    fn check(&self, _errors: &mut Diagnostics) {}
+
+    /// Its own rules that need the plan (`validate::planned`): where its
+    /// points lie.
+    fn check_placed(&self, _plan: &dyn Placed, _errors: &mut Diagnostics) {}
+
+    /// Its part of the force analysis (drivers and groups): its reactions
+    /// from the loads of its links, passed (negated) to the bodies it is
+    /// attached to, its fields in the forces struct, its conditioning and
+    /// its driving power.
+    fn forces(&self, _cx: &mut dyn forces::ForceCx) {}
+
+    /// For a guide: its line as written. `None` for other kinds.
+    fn as_guide(&self) -> Option<GuideLine<'a>> {
+        None
+    }
+
+    /// For a guide: its carrier (`None`: fixed). `None` for other kinds.
+    fn guide_carrier(&self) -> Option<Option<&'a Ident>> {
+        self.as_guide().map(|g| g.carrier)
+    }
+
+    /// For a point on a link: the link.
+    fn on_link(&self) -> Option<&'a Ident> {
+        None
+    }
+
+    /// The link whose unit axis its position reads (a link point's link, a
+    /// carried guide's carrier).
+    fn reads_axis(&self) -> Option<&'a Ident> {
+        None
+    }
+}
+
+/// The links of a statement, `a, b`, for listings.
+fn links_text(stmt: &Stmt) -> String {
+    let links: Vec<String> = stmt.links.iter().map(ToString::to_string).collect();
+    links.join(", ")
+}
+
+/// How the structure listing writes an assembly mode.
+fn mode_text(stmt: &Stmt, m: crate::model::Mode) -> String {
+    let literal = match m {
+        crate::model::Mode::Plus => "mode plus (m = +1)",
+        crate::model::Mode::Minus => "mode minus (m = -1)",
+    };
+    match &stmt.mode_param {
+        Some(p) => format!("{literal} by default, at run time the parameter `{p}`"),
+        None => literal.to_string(),
+    }
+}
+
+/// The statement `stmt` as its kind: the one dispatch from [`Kind`] to the
+/// kinds' modules.
+pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
+    match &stmt.kind {
+        Kind::Ground { x, y } => Box::new(ground::Ground { stmt, x, y }),
+        Kind::Guide {
+            origin,
+            angle,
+            carrier,
+        } => Box::new(guide::Guide {
+            stmt,
+            origin,
+            angle,
+            carrier: carrier.as_ref(),
+        }),
+        Kind::Crank {
+            pivot,
+            radius,
+            input,
+            cos_sin,
+        } => Box::new(crank::Crank {
+            stmt,
+            pivot,
+            radius,
+            input,
+            cos_sin: *cos_sin,
+        }),
+        Kind::Slider {
+            guide,
+            input,
+            offset,
+        } => Box::new(slider::Slider {
+            stmt,
+            guide,
+            input,
+            offset,
+        }),
+        Kind::Actuator {
+            a,
+            l,
+            b,
+            input,
+            mode,
+        } => Box::new(actuator::Actuator {
+            stmt,
+            a,
+            l,
+            b,
+            input,
+            mode: *mode,
+        }),
+        Kind::Rrr { a, l1, b, l2, mode } => Box::new(rrr::Rrr {
+            stmt,
+            a,
+            l1,
+            b,
+            l2,
+            mode: *mode,
+        }),
+        Kind::Rrp {
+            a,
+            l,
+            guide,
+            mode,
+            offset,
+        } => Box::new(rrp::Rrp {
+            stmt,
+            a,
+            l,
+            guide,
+            mode: *mode,
+            offset,
+        }),
+        Kind::Rpr { a, b, mode, offset } => Box::new(rpr::Rpr {
+            stmt,
+            a,
+            b,
+            mode: *mode,
+            offset,
+        }),
+        Kind::Prp {
+            g1,
+            g2,
+            offset1,
+            offset2,
+        } => Box::new(prp::Prp {
+            stmt,
+            g1,
+            g2,
+            offset1,
+            offset2,
+        }),
+        Kind::Rpp {
+            a,
+            guide,
+            slot,
+            offset,
+        } => Box::new(rpp::Rpp {
+            stmt,
+            a,
+            guide,
+            slot,
+            offset,
+        }),
+        Kind::Point { link, from, local } => Box::new(point::Point {
+            stmt,
+            link,
+            from,
+            local,
+        }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diag::Diagnostics;
+    use crate::model::Model;
+
+    /// The definition `src` lowered (it must have no errors).
+    fn lowered(src: &str) -> Model {
+        let def = syn::parse_str::<crate::parse::Definition>(src).expect("parses");
+        let mut diag = Diagnostics::new();
+        let model = crate::model::lower(def, &mut diag);
+        let errors: Vec<String> = diag.finish().iter().map(ToString::to_string).collect();
+        assert!(errors.is_empty(), "{errors:?}");
+        model
+    }
+
+    /// One statement of every kind.
+    const EVERY_KIND: &str = "pub M {
+        let O = ground(0.0, 0.0);
+        let O4 = ground(3.0, 0.0);
+        let A = crank(O, 1.0, theta) as link2;
+        let B = rrr(A, 3.0, O4, 2.5, left) as (link3, link4);
+        let P = point(link3, from A, 1.0, 30 deg);
+        let line = guide((0.0, -1.0), 0 deg);
+        let S = slider(line, s) as block;
+        let E = rrp(P, 2.0, line, plus) as (rod, slide);
+        let z = rpr(B, O, plus) as (pin, arm);
+        let gv = guide((5.0, 0.0), 90 deg);
+        let Q = rpp(S, gv, 90 deg) as (qpin, yoke);
+        let gy = guide(Q, yoke, 45 deg);
+        let F = prp(gy, line) as (pa, pb);
+        let C = actuator(O, 1.2, O4, len, left) as (boom, cylinder);
+    }";
+
+    #[test]
+    fn every_kind_describes_the_links_the_model_gives_it() {
+        // Proves each kind's link shapes match the links the lowering gave
+        // its statement (one shape per link, in order), and each shape's
+        // points are the statement's references or its own point.
+        let model = lowered(EVERY_KIND);
+        assert_eq!(model.stmts.len(), 14);
+        for stmt in &model.stmts {
+            let kind = of(stmt);
+            let shapes = kind.link_shapes();
+            assert_eq!(shapes.len(), stmt.links.len(), "{}", stmt.name);
+            assert_eq!(shapes.len(), stmt.kind.link_count(), "{}", stmt.name);
+            let refs: Vec<String> = kind
+                .references()
+                .iter()
+                .map(|(r, _)| r.to_string())
+                .collect();
+            for shape in &shapes {
+                for p in &shape.points {
+                    assert!(
+                        refs.contains(p) || stmt.name == p.as_str(),
+                        "{}: {p}",
+                        stmt.name
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn evaluator_steps_close_the_four_bar() {
+        // Proves the kinds' f64 steps solve a four-bar at theta = 0.7: the
+        // crank tip at (cos, sin) of the input, the RRR joint at l1 = 3 from
+        // `A` and l2 = 2.5 from `O4` (1e-12: a few roundings of numbers of
+        // size 3), on the left of `A -> O4`, and its determinant in (0, 1].
+        let model = lowered(
+            "pub M {
+                let O = ground(0.0, 0.0);
+                let O4 = ground(3.0, 0.0);
+                let A = crank(O, 1.0, theta) as link2;
+                let B = rrr(A, 3.0, O4, 2.5, left) as (link3, link4);
+            }",
+        );
+        let theta = 0.7;
+        let input = |_: &Ident| theta;
+        let mut pose = Pose::default();
+        let mut dets = Vec::new();
+        for stmt in &model.stmts {
+            dets.push(of(stmt).eval(&mut pose, &input).expect("assembles"));
+        }
+        let id = |n: &str| syn::Ident::new(n, proc_macro2::Span::call_site());
+        let (a, b, o4) = (
+            pose.point(&id("A")),
+            pose.point(&id("B")),
+            pose.point(&id("O4")),
+        );
+        assert!((a.x - theta.cos()).abs() <= 1e-15 && (a.y - theta.sin()).abs() <= 1e-15);
+        assert!(((b - a).norm() - 3.0).abs() <= 1e-12);
+        assert!(((b - o4).norm() - 2.5).abs() <= 1e-12);
+        let (r, s) = (o4 - a, b - a);
+        assert!(r.x * s.y - r.y * s.x > 0.0, "B is not left of A -> O4");
+        assert_eq!(&dets[..3], &[None, None, None]);
+        let det = dets[3].expect("the RRR has a rate system");
+        assert!(det > 0.0 && det <= 1.0, "{det}");
+    }
+}

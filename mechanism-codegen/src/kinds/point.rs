@@ -1,0 +1,239 @@
+//! `point(LINK, from P, d, angle)` and `point(LINK, from P, (x, y))`: a point
+//! fixed on a link, given in the link's frame.
+
+use super::closure::{f, Residuals};
+use super::lane::{Lane, PointLocals, Step, Vector};
+use super::lane_shapes::local_vector;
+use super::rates::{vec_ty, RateCx};
+use super::tokens::{axis, local, tag, unit_vector};
+use super::{GroupKind, Placed, Pose, Role, Solve};
+use crate::diag::Diagnostics;
+use crate::kinds::pose::num;
+use crate::model::{Local, Stmt};
+use crate::value::{lit, Value};
+use mechanism_core::{geometry, link, Vector2};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use syn::Ident;
+
+/// A `point` statement.
+pub(super) struct Point<'a> {
+    pub stmt: &'a Stmt,
+    pub link: &'a Ident,
+    pub from: &'a Ident,
+    pub local: &'a Local,
+}
+
+impl<'a> GroupKind<'a> for Point<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.link, Role::Link), (self.from, Role::Point)]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.link.to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        match self.local {
+            Local::Polar(a, b) | Local::Cartesian(a, b) => vec![a.clone(), b.clone()],
+        }
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let offset = match self.local {
+            Local::Cartesian(x, y) => Vector2::new(num(x), num(y)),
+            Local::Polar(d, a) => geometry::unit(num(a)) * num(d),
+        };
+        let p = link::point_position(&pose.point(self.from), &pose.axis(self.link), &offset)?;
+        pose.found(self.stmt, Some(p), &[]);
+        Ok(None)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (axis, from, t) = (axis(self.link), local(self.from), tag(self.stmt));
+        let offset = offset(self.local);
+        Solve::Own {
+            expr: quote!(::mechanism::link::point_position(&#from, &#axis, &#offset) #t),
+            ty: quote!(::mechanism::Point2<T>),
+        }
+    }
+
+    /// Its base point's motion plus its motion about it.
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let (stmt, link, from) = (self.stmt, self.link, self.from);
+        let name = &stmt.name;
+        if !cx.moves(name) {
+            return;
+        }
+        let (pv, t) = (cx.motion(stmt), tag(stmt));
+        let base = cx.moves(from).then(|| {
+            let b = format_ident!("{}_{}", cx.pfx(), from);
+            quote!(#b)
+        });
+        let relative = match (cx.link_rate(link), cx.accel()) {
+            (None, _) => None,
+            (Some(w), false) => {
+                Some(quote!(::mechanism::link::point_velocity(&(pos.#name - pos.#from), #w) #t))
+            }
+            (Some(alpha), true) => {
+                let w = cx.link_omega_in_accel(link).unwrap_or_else(|| lit(0.0));
+                Some(
+                    quote!(::mechanism::link::point_acceleration(&(pos.#name - pos.#from), #w, #alpha) #t),
+                )
+            }
+        };
+        let value = match (base, relative) {
+            // Checked again: the sum of two finite vectors can overflow.
+            (Some(b), Some(r)) => quote!(::mechanism::link::point_sum(&#b, #r) #t),
+            (Some(b), None) => b,
+            (None, Some(r)) => r,
+            (None, None) => quote!(::mechanism::Vector2::zeros()),
+        };
+        cx.code(quote!(let #pv = #value;));
+        cx.field(pv, vec_ty());
+    }
+
+    /// `from` plus the link's axes times the local offset.
+    fn residuals(&self, r: &mut Residuals<'_>, link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let (n, from, axis) = (r.n, self.from, link_axis(self.link));
+        let (x, y) = match self.local {
+            Local::Cartesian(x, y) => (f(x), f(y)),
+            Local::Polar(d, a) => {
+                let (d, a) = (f(d), f(a));
+                (quote!(#d * (#a).cos()), quote!(#d * (#a).sin()))
+            }
+        };
+        r.push(
+            "P = from + the link's axes times the local offset",
+            quote!({
+                let u = #axis;
+                let (x, y) = (#x, #y);
+                norm(sub(sub(pt(&pos.#n), pt(&pos.#from)), [u[0] * x - u[1] * y, u[1] * x + u[0] * y]))
+            }),
+        );
+    }
+
+    fn reads_axis(&self) -> Option<&'a Ident> {
+        Some(self.link)
+    }
+
+    fn on_link(&self) -> Option<&'a Ident> {
+        Some(self.link)
+    }
+
+    fn describe(&self) -> String {
+        let (n, link, from) = (&self.stmt.name, self.link, self.from);
+        format!("point `{n}` on `{link}` (from `{from}`)")
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("OnLink")
+    }
+
+    /// It moves when its link turns or its base point moves.
+    fn point_moves(
+        &self,
+        link_turns: &dyn Fn(&Ident) -> bool,
+        moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        link_turns(self.link) || moves(self.from)
+    }
+
+    /// It is measured from a point of its link.
+    fn check_placed(&self, plan: &dyn Placed, errors: &mut Diagnostics) {
+        let (link, from) = (self.link, self.from);
+        if let Some(points) = plan.link_points(link) {
+            let f = from.to_string();
+            if !points.contains(&f) && plan.is_defined(&f) {
+                errors.push(
+                    from.span(),
+                    format!(
+                        "`{f}` is not a point of `{link}`; measure from one of its points: {}",
+                        points
+                            .iter()
+                            .filter(|p| self.stmt.name != p.as_str())
+                            .map(|p| format!("`{p}`"))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    ),
+                );
+            }
+        }
+    }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.link, self.from, self.local)
+    }
+}
+
+/// A point's offset in its link's frame, folded when literal.
+fn offset(offset: &Local) -> TokenStream {
+    match offset {
+        Local::Cartesian(x, y) => {
+            let (x, y) = (x.emit(), y.emit());
+            quote!(::mechanism::Vector2::new(#x, #y))
+        }
+        Local::Polar(d, a) => match (d.fold(), a.fold()) {
+            (Some(d), Some(a)) => {
+                let (s, c) = a.sin_cos();
+                let (x, y) = (lit(d * c), lit(d * s));
+                quote!(::mechanism::Vector2::new(#x, #y))
+            }
+            _ => {
+                let (d, u) = (d.emit(), unit_vector(a));
+                quote!((#u * #d))
+            }
+        },
+    }
+}
+
+/// A point fixed on `link` at `local` coordinates from the point `from`
+/// (length unit; polar angles in radians from the link's axis): the offset
+/// `o_NAME` is the local vector turned by the link's axis, the velocity and
+/// acceleration add `lane::rel_vel` / `lane::rel_acc` of that offset with
+/// the link's rates. `None` when the link or `from` is not known yet.
+fn lane_steps(lane: &Lane, s: &mut Step, link: &Ident, from: &Ident, local: &Local) -> Option<()> {
+    let l = lane.link(link)?;
+    let f = lane.point(from)?;
+    let Vector { x: lx, y: ly } = local_vector(s, local);
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let Vector { x: ux, y: uy } = &l.axis;
+    let (fpx, fpy) = (&f.px, &f.py);
+    let o = super::lane::pv("o", s.name);
+    let (ox, oy) = (&o.x, &o.y);
+    s.emit(quote! {
+        let (lx, ly) = (#lx, #ly);
+        let #ox = #ux * lx - #uy * ly;
+        let #oy = #uy * lx + #ux * ly;
+        let #px = #fpx + #ox; let #py = #fpy + #oy;
+    });
+    let (omega, alpha) = (&l.omega, &l.alpha);
+    if lane.vel {
+        let (fvx, fvy) = (&f.vx, &f.vy);
+        s.emit(quote! {
+            let (tx, ty) = ::mechanism::__private::lane::rel_vel(#ox, #oy, #omega);
+            let #vx = #fvx + tx; let #vy = #fvy + ty;
+        });
+    }
+    if lane.acc {
+        let (fax, fay) = (&f.ax, &f.ay);
+        s.emit(quote! {
+            let (tx, ty) = ::mechanism::__private::lane::rel_acc(#ox, #oy, #omega, #alpha);
+            let #ax = #fax + tx; let #ay = #fay + ty;
+        });
+    }
+    Some(())
+}

@@ -1,0 +1,71 @@
+//! The pose the expansion-time evaluator builds statement by statement: what
+//! each kind's `eval` reads and records, in `f64`.
+
+use crate::model::{Mode, Stmt};
+use crate::value::Value;
+use mechanism_core::guide::Line;
+use mechanism_core::{Point2, Vector2};
+use std::collections::BTreeMap;
+use syn::Ident;
+
+/// What the statements solved so far have found: points, guides and the
+/// unit axes of links, by name. A name not (yet) known reads as NaN, which
+/// the primitives reject with a typed error.
+#[derive(Default)]
+pub struct Pose {
+    points: BTreeMap<String, Point2<f64>>,
+    guides: BTreeMap<String, Line<f64>>,
+    axes: BTreeMap<String, Vector2<f64>>,
+}
+
+impl Pose {
+    /// The point `n` (NaN when unknown).
+    pub fn point(&self, n: &Ident) -> Point2<f64> {
+        let nan = Point2::new(f64::NAN, f64::NAN);
+        self.points.get(&n.to_string()).copied().unwrap_or(nan)
+    }
+
+    /// The guide line `n` (NaN when unknown).
+    pub fn line(&self, n: &Ident) -> Line<f64> {
+        let nan = Line {
+            origin: Point2::new(f64::NAN, f64::NAN),
+            dir: Vector2::new(f64::NAN, f64::NAN),
+        };
+        self.guides.get(&n.to_string()).copied().unwrap_or(nan)
+    }
+
+    /// The unit axis of link `n` (NaN when unknown).
+    pub fn axis(&self, n: &Ident) -> Vector2<f64> {
+        let nan = Vector2::new(f64::NAN, f64::NAN);
+        self.axes.get(&n.to_string()).copied().unwrap_or(nan)
+    }
+
+    /// Records a statement's point and its links' axes.
+    pub fn found(&mut self, stmt: &Stmt, point: Option<Point2<f64>>, axes: &[Vector2<f64>]) {
+        if let Some(p) = point {
+            self.points.insert(stmt.name.to_string(), p);
+        }
+        for (link, axis) in stmt.links.iter().zip(axes) {
+            self.axes.insert(link.to_string(), *axis);
+        }
+    }
+
+    /// Records a guide statement's line.
+    pub fn found_line(&mut self, stmt: &Stmt, line: Line<f64>) {
+        self.guides.insert(stmt.name.to_string(), line);
+    }
+}
+
+/// A dimension's folded value (NaN for one that does not fold: the check
+/// runs only when every value the position analysis uses folds).
+pub fn num(v: &Value) -> f64 {
+    v.fold().unwrap_or(f64::NAN)
+}
+
+/// The core's assembly mode of a written one.
+pub fn mode(m: Mode) -> mechanism_core::Mode {
+    match m {
+        Mode::Plus => mechanism_core::Mode::Plus,
+        Mode::Minus => mechanism_core::Mode::Minus,
+    }
+}

@@ -1,0 +1,245 @@
+//! `prp(GUIDE1, GUIDE2) as (BLOCK1, BLOCK2)`: the PRP dyad, two blocks on two
+//! guides pinned together at the defined point.
+
+use super::closure::{guide_axis, Residuals};
+use super::forces::{inner, prismatic, rx, ForceCx};
+use super::lane::{Lane, LaneLink, PointLocals, Step};
+use super::lane_shapes::line_axis;
+use super::rates::{states, vec_ty, Pieces, RateCx};
+use super::tokens::{along, local};
+use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::kinds::pose::num;
+use crate::model::Stmt;
+use crate::value::Value;
+use mechanism_core::{dyad, sweep, Fault};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// A `prp` statement.
+pub(super) struct Prp<'a> {
+    pub stmt: &'a Stmt,
+    pub g1: &'a Ident,
+    pub g2: &'a Ident,
+    pub offset1: &'a Value,
+    pub offset2: &'a Value,
+}
+
+impl<'a> GroupKind<'a> for Prp<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.g1, Role::Guide), (self.g2, Role::Guide)]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        let n = &self.stmt.name;
+        vec![
+            LinkShape::new(&[n], Turn::None, Some(self.g1)),
+            LinkShape::new(&[n], Turn::None, Some(self.g2)),
+        ]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.offset1.clone(), self.offset2.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (l1, l2) = (pose.line(self.g1), pose.line(self.g2));
+        let p = dyad::prp::position(&l1, num(self.offset1), &l2, num(self.offset2))?;
+        pose.found(self.stmt, Some(p.c), &[l1.dir, l2.dir]);
+        Ok(Some(sweep::det_prp(&l1, &l2)))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::dyad::prp::PrpPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (o1, o2) = (self.offset1.emit(), self.offset2.emit());
+        let (g1, g2) = (local(self.g1), local(self.g2));
+        Solve::Group {
+            call: quote!(::mechanism::dyad::prp::position(&#g1, #o1, &#g2, #o2)),
+            joint: Some("c"),
+        }
+    }
+
+    fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
+        match index {
+            0 => along(self.g1),
+            _ => along(self.g2),
+        }
+    }
+
+    fn slide_field(&self, slot: usize) -> TokenStream {
+        match slot {
+            0 => quote!(s1),
+            _ => quote!(s2),
+        }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let ((g, gv), g1, g2) = (states(self.stmt), self.g1, self.g2);
+        let (v1, v2) = (cx.guide_vel(g1), cx.guide_vel(g2));
+        let call = if cx.accel() {
+            let (a1, a2) = (cx.guide_acc(g1), cx.guide_acc(g2));
+            quote!(::mechanism::dyad::prp::acceleration(&pos.#g, &pos.#g1, &pos.#g2, &vel.#gv, #v1, #a1, #v2, #a2))
+        } else {
+            quote!(::mechanism::dyad::prp::velocity(&pos.#g, &pos.#g1, &pos.#g2, #v1, #v2))
+        };
+        let gr = cx.group(self.stmt, call, quote!(dyad::prp), "Prp");
+        let Pieces { point, s1, s2, .. } = Pieces::of(cx.accel());
+        cx.named(cx.motion(self.stmt), quote!(#gr.#point), vec_ty());
+        cx.slide(0, quote!(#gr.#s1));
+        cx.slide(1, quote!(#gr.#s2));
+    }
+
+    fn rate_system(&self) -> bool {
+        true
+    }
+
+    /// `C` on both guides' offset lines.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        r.on_offset_line("C on offset line 1", self.g1, self.offset1);
+        r.on_offset_line("C on offset line 2", self.g2, self.offset2);
+    }
+
+    fn closure_axis(&self, index: usize) -> TokenStream {
+        guide_axis(if index == 0 { self.g1 } else { self.g2 })
+    }
+
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let (g1, g2) = (self.g1, self.g2);
+        matches!(fault, Fault::Singular { .. }).then(|| {
+            format!("at {at}, guides `{g1}` and `{g2}` are parallel: the joint is at infinity")
+        })
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        let (g1, g2) = (self.g1, self.g2);
+        Some(format!("guides `{g1}` and `{g2}` are parallel"))
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Prp"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let (g1, g2) = (self.g1, self.g2);
+        quote!(::mechanism::__private::det_prp(&pos.#g1, &pos.#g2))
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, g1, g2) = (&self.stmt.name, links_text(self.stmt), self.g1, self.g2);
+        format!("PRP group `{links}`: guides `{g1}`, `{g2}` -> `{n}`")
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, g1, g2) = (self.stmt, self.g1, self.g2);
+        let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
+        let (l1, l2) = cx.loads_about(stmt, name);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::prp::reactions(&pos.#name, &pos.#g1.dir, &pos.#g2.dir, &#l1, &#l2)),
+        );
+        let c1 = cx.body_of_guide(g1);
+        let c2 = cx.body_of_guide(g2);
+        cx.prismatic_on(c1.clone(), quote!(#rx.guide1), name);
+        cx.prismatic_on(c2.clone(), quote!(#rx.guide2), name);
+        cx.reaction(prismatic(&rx, &c1, &links[0], name, "guide1"));
+        cx.reaction(prismatic(&rx, &c2, &links[1], name, "guide2"));
+        cx.reaction(inner(&rx, links, name, "c", false));
+        cx.condition(quote!(#rx.min_pivot_ratio));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (2, 3)
+    }
+
+    fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {
+        Some((self.g1, self.g2, "guides"))
+    }
+
+    fn joint_at_infinity(&self) -> bool {
+        true
+    }
+
+    /// Guides parallel at every pose checked (guides that turn together,
+    /// or keep their directions): said directly.
+    fn singular_everywhere(&self, over: &str) -> Option<String> {
+        let (g1, g2) = (self.g1, self.g2);
+        Some(format!(
+            "group `{}` (PRP) cannot assemble: guides `{g1}` and `{g2}` are parallel at every pose checked ({over}), so the joint is at infinity for every input\n  = help: make the guides cross: change the angle of one of them",
+            self.stmt.name
+        ))
+    }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.g1, self.g2, self.offset1, self.offset2)
+    }
+}
+
+/// A PRP group: the joint of two blocks, on `g1` at `offset1` and on `g2`
+/// at `offset2` (length unit) (`lane::prp`), its two slides (`s0_NAME`,
+/// `s1_NAME`) and their rates (`lane::prp_rates` / `lane::prp_accels`).
+/// Each block turns with its guide's body. `None` when a guide is not
+/// known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    g1: &Ident,
+    g2: &Ident,
+    offset1: &Value,
+    offset2: &Value,
+) -> Option<()> {
+    let (d1, d2) = (lane.guide(g1)?, lane.guide(g2)?);
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let g = s.g.clone();
+    let (l1, gv1, ga1) = (&d1.line, &d1.gv, &d1.ga);
+    let (l2, gv2, ga2) = (&d2.line, &d2.gv, &d2.ga);
+    let (o1, o2) = (offset1.emit(), offset2.emit());
+    let (slide1, slide2) = (s.slide_locals(0), s.slide_locals(1));
+    let (s1, sd1, sdd1) = (&slide1.s, &slide1.sd, &slide1.sdd);
+    let (s2, sd2, sdd2) = (&slide2.s, &slide2.sd, &slide2.sdd);
+    s.emit(quote! {
+        let #g = ::mechanism::__private::lane::prp(&#l1, #o1, &#l2, #o2);
+        ok &= #g.ok;
+        let #px = #g.x; let #py = #g.y;
+        let #s1 = #g.s1; let #s2 = #g.s2;
+    });
+    s.check([quote!(#s1), quote!(#s2)]);
+    if lane.vel {
+        s.emit(quote! {
+            let (#sd1, #sd2, #vx, #vy) = ::mechanism::__private::lane::prp_rates(&#g, &#l1, &#l2, #gv1, #gv2);
+        });
+        s.check([quote!(#sd1), quote!(#sd2)]);
+    }
+    if lane.acc {
+        s.emit(quote! {
+            let (#sdd1, #sdd2, #ax, #ay) = ::mechanism::__private::lane::prp_accels(&#g, &#l1, &#l2, #sd1, #sd2, #gv1, #ga1, #gv2, #ga2);
+        });
+        s.check([quote!(#sdd1), quote!(#sdd2)]);
+    }
+    s.defines_slide(0, &slide1);
+    s.defines_slide(1, &slide2);
+    for (k, d) in [d1, d2].into_iter().enumerate() {
+        let block = LaneLink::along(line_axis(&d.line), None, d.omega.clone(), d.alpha.clone());
+        s.defines_link(k, block)?;
+    }
+    Some(())
+}

@@ -1,0 +1,277 @@
+//! `rpp(A, GUIDE, slot angle) as (YOKE, BLOCK)`: the RPP dyad, a yoke pinned
+//! at `A` whose slot (at the given angle to the guide) carries a block that
+//! slides on the guide; the defined point is the yoke's reference point.
+
+use super::closure::{f, guide_axis, Residuals};
+use super::forces::{inner, prismatic, revolute, rx, ForceCx};
+use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
+use super::lane_shapes::{along_line, line_axis};
+use super::rates::{states, vec_ty, Pieces, RateCx};
+use super::tokens::{along, grp, local, unit_field, unit_vector};
+use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::diag::Diagnostics;
+use crate::kinds::pose::num;
+use crate::model::Stmt;
+use crate::value::Value;
+use mechanism_core::{dyad, geometry, sweep, Fault};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// An `rpp` statement.
+pub(super) struct Rpp<'a> {
+    pub stmt: &'a Stmt,
+    pub a: &'a Ident,
+    pub guide: &'a Ident,
+    pub slot: &'a Value,
+    pub offset: &'a Value,
+}
+
+impl<'a> GroupKind<'a> for Rpp<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.a, Role::Point), (self.guide, Role::Guide)]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        vec![
+            LinkShape::new(&[self.a], Turn::None, Some(self.guide)),
+            LinkShape::new(&[&self.stmt.name], Turn::None, Some(self.guide)),
+        ]
+    }
+
+    /// The reference point belongs to the yoke, the second link.
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[1].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.slot.clone(), self.offset.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (pa, gl) = (pose.point(self.a), pose.line(self.guide));
+        let u = geometry::unit(num(self.slot));
+        let p = dyad::rpp::position(&pa, &gl, num(self.offset), &u)?;
+        pose.found(self.stmt, Some(p.q), &[p.slot, gl.dir]);
+        Ok(Some(sweep::det_rpp(&p, &gl)))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::dyad::rpp::RppPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (u, o) = (unit_vector(self.slot), self.offset.emit());
+        let (a, guide) = (local(self.a), local(self.guide));
+        Solve::Group {
+            call: quote!(::mechanism::dyad::rpp::position(&#a, &#guide, #o, &#u)),
+            joint: Some("q"),
+        }
+    }
+
+    fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
+        match index {
+            1 => along(self.guide),
+            _ => unit_field(self.stmt, "slot"),
+        }
+    }
+
+    fn slide_field(&self, slot: usize) -> TokenStream {
+        match slot {
+            0 => quote!(s1),
+            _ => quote!(s2),
+        }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let ((g, gv), a, guide) = (states(self.stmt), self.a, self.guide);
+        let (ma, gvel) = (cx.point_arg(a), cx.guide_vel(guide));
+        let call = if cx.accel() {
+            let gacc = cx.guide_acc(guide);
+            quote!(::mechanism::dyad::rpp::acceleration(&pos.#g, &pos.#a, &pos.#guide, &vel.#gv, #ma, #gvel, #gacc))
+        } else {
+            quote!(::mechanism::dyad::rpp::velocity(&pos.#g, &pos.#a, &pos.#guide, #ma, #gvel))
+        };
+        let gr = cx.group(self.stmt, call, quote!(dyad::rpp), "Rpp");
+        // The reference point's motion is `vq`/`aq`.
+        let q = if cx.accel() { quote!(aq) } else { quote!(vq) };
+        let Pieces { s1, s2, .. } = Pieces::of(cx.accel());
+        cx.named(cx.motion(self.stmt), quote!(#gr.#q), vec_ty());
+        cx.slide(0, quote!(#gr.#s1));
+        cx.slide(1, quote!(#gr.#s2));
+    }
+
+    fn rate_system(&self) -> bool {
+        true
+    }
+
+    /// `Q` on the guide's offset line, `A` in the slot through `Q`.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let (n, a, guide, s) = (r.n, self.a, self.guide, f(self.slot));
+        r.on_offset_line("Q on the offset line", guide, self.offset);
+        r.push(
+            "A in the slot through Q",
+            quote!(cross(turn(unit_of(vc(&pos.#guide.dir)), #s), sub(pt(&pos.#a), pt(&pos.#n)))),
+        );
+    }
+
+    fn closure_axis(&self, index: usize) -> TokenStream {
+        match index {
+            1 => guide_axis(self.guide),
+            _ => {
+                let (guide, s) = (self.guide, f(self.slot));
+                quote!(turn(unit_of(vc(&pos.#guide.dir)), #s))
+            }
+        }
+    }
+
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let guide = self.guide;
+        matches!(fault, Fault::Singular { .. }).then(|| {
+            format!("at {at}, the slot is parallel to guide `{guide}`: the joint is at infinity")
+        })
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        let guide = self.guide;
+        Some(format!("the slot is parallel to guide `{guide}`"))
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Rpp"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let (g, guide) = (grp(self.stmt), self.guide);
+        quote!(::mechanism::__private::det_rpp(&pos.#g, &pos.#guide))
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, a, guide) = (&self.stmt.name, links_text(self.stmt), self.a, self.guide);
+        format!(
+            "RPP group `{links}`: block at `{a}`, link on guide `{guide}`, reference point `{n}`"
+        )
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, a, guide) = (self.stmt, self.a, self.guide);
+        let (rx, links, g) = (rx(stmt), &stmt.links, grp(stmt));
+        let (l1, l2) = cx.loads_about(stmt, a);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::rpp::reactions(&pos.#a, &pos.#g.slot, &pos.#guide.dir, &#l1, &#l2)),
+        );
+        let ba = cx.pass_revolute(a, &rx, "a");
+        let bg = cx.body_of_guide(guide);
+        cx.prismatic_on(bg.clone(), quote!(#rx.guide), a);
+        cx.reaction(revolute(&rx, &ba, &links[0], a, "a"));
+        cx.reaction(inner(&rx, links, a, "slot", true));
+        cx.reaction(prismatic(&rx, &bg, &links[1], a, "guide"));
+        cx.condition(quote!(#rx.min_pivot_ratio));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (2, 3)
+    }
+
+    fn joint_at_infinity(&self) -> bool {
+        true
+    }
+
+    /// The slot crosses the guide. The slotted link translates along the
+    /// guide without turning relative to it (a carried guide turns the slot
+    /// with it), so the slot keeps its angle to the guide at every pose: a
+    /// slot parallel to the guide is parallel at every input, and the joint
+    /// is at infinity everywhere. Known at compile time for a slot angle that
+    /// folds to a number; "parallel" is the test the run-time solve applies
+    /// (`mechanism_core::dyad::rpp`: `|sin(slot)| <= 16 eps`, in f64 here).
+    fn check(&self, errors: &mut Diagnostics) {
+        let (guide, slot) = (self.guide, self.slot);
+        let Some(angle) = slot.fold() else {
+            return;
+        };
+        if angle.sin().abs() <= 16.0 * f64::EPSILON {
+            // Rounded to 1e-9 deg, so that `180 deg` (rounded once to
+            // radians and back) shows as 180.
+            let deg = (angle.to_degrees() * 1e9).round() / 1e9;
+            errors.push(
+                slot.span,
+                format!(
+                    "the slot of `{}` is at {deg} deg to guide `{guide}`, parallel to it; the slotted link slides along `{guide}` without turning, so the slot stays parallel at every pose and the block's pin is at infinity for every input: give the slot an angle across the guide (e.g. `90 deg`, a slot perpendicular to it)",
+                    self.stmt.name
+                ),
+            );
+        }
+    }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.a, self.guide, self.slot, self.offset)
+    }
+}
+
+/// An RPP group: a block sliding on `guide` (at `offset`, length unit)
+/// carrying a slot at `slot` (radians from the guide) through which the
+/// point `a` slides (`lane::rpp`), its two slides (`s0_NAME` along the
+/// guide, `s1_NAME` along the slot) and their rates (`lane::rpp_rates` /
+/// `lane::rpp_accels`). Both links turn with the guide's body: link 1 (the
+/// block) along the slot `w`, link 2 (the yoke) along the guide, as in the
+/// scalar path. `None` when `a` or the guide is not known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    a: &Ident,
+    guide: &Ident,
+    slot: &Value,
+    offset: &Value,
+) -> Option<()> {
+    let pa = lane.point(a)?;
+    let gd = lane.guide(guide)?;
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let g = s.g.clone();
+    let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
+    let Vector { x: lx, y: ly } = s.unit(slot);
+    let o = offset.emit();
+    let (slide1, slide2) = (s.slide_locals(0), s.slide_locals(1));
+    let (s1, sd1, sdd1) = (&slide1.s, &slide1.sd, &slide1.sdd);
+    let (s2, sd2, sdd2) = (&slide2.s, &slide2.sd, &slide2.sdd);
+    let (apx, apy) = (&pa.px, &pa.py);
+    s.emit(quote! {
+        let #g = ::mechanism::__private::lane::rpp(#apx, #apy, &#line, #o, #lx, #ly);
+        ok &= #g.ok;
+        let #px = #g.x; let #py = #g.y;
+        let #s1 = #g.s1; let #s2 = #g.s2;
+    });
+    s.check([quote!(#s1), quote!(#s2)]);
+    if lane.vel {
+        let (avx, avy) = (&pa.vx, &pa.vy);
+        s.emit(quote! {
+            let (#sd1, #sd2, #vx, #vy) = ::mechanism::__private::lane::rpp_rates(&#g, &#line, #apx, #apy, #avx, #avy, #gv);
+        });
+        s.check([quote!(#sd1), quote!(#sd2)]);
+    }
+    if lane.acc {
+        let (aax, aay) = (&pa.ax, &pa.ay);
+        s.emit(quote! {
+            let (#sdd1, #sdd2, #ax, #ay) = ::mechanism::__private::lane::rpp_accels(&#g, &#line, #apx, #apy, #aax, #aay, #sd1, #sd2, #gv, #ga);
+        });
+        s.check([quote!(#sdd1), quote!(#sdd2)]);
+    }
+    s.defines_slide(0, &slide1);
+    s.defines_slide(1, &slide2);
+    let turning = |v: Vector| LaneLink::along(v, None, gd.omega.clone(), gd.alpha.clone());
+    s.defines_link(0, turning(along_line(&g, "w")))?;
+    s.defines_link(1, turning(line_axis(line)))
+}

@@ -1,0 +1,254 @@
+//! `rrp(A, l, GUIDE, mode) as (LINK, BLOCK)`: the RRP dyad, a link of length
+//! `l` from `A` pinned at the defined point to a block on a guide.
+
+use super::closure::{axis_between, f, guide_axis, mode_sign, Residuals};
+use super::forces::{inner, prismatic, revolute, rx, ForceCx};
+use super::lane::{Lane, LaneLink, PointLocals, Step};
+use super::lane_shapes::{along_line, line_axis};
+use super::rates::{states, vec_ty, Pieces, RateCx};
+use super::tokens::{along, arm, grp, local, mode_arg};
+use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::diag::show_num;
+use crate::kinds::pose::{mode, num};
+use crate::model::{Mode, Stmt};
+use crate::value::Value;
+use mechanism_core::{dyad, sweep, Fault};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// An `rrp` statement.
+pub(super) struct Rrp<'a> {
+    pub stmt: &'a Stmt,
+    pub a: &'a Ident,
+    pub l: &'a Value,
+    pub guide: &'a Ident,
+    pub mode: Mode,
+    pub offset: &'a Value,
+}
+
+impl<'a> GroupKind<'a> for Rrp<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.a, Role::Point), (self.guide, Role::Guide)]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        let n = &self.stmt.name;
+        vec![
+            LinkShape::new(&[self.a, n], Turn::Own, None),
+            LinkShape::new(&[n], Turn::None, Some(self.guide)),
+        ]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.l.clone(), self.offset.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (pa, gl, l) = (pose.point(self.a), pose.line(self.guide), num(self.l));
+        let p = dyad::rrp::position(&pa, l, &gl, num(self.offset), mode(self.mode))?;
+        pose.found(self.stmt, Some(p.c), &[p.r1 / l, gl.dir]);
+        Ok(Some(sweep::det_rrp(&p, &gl)))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::dyad::rrp::RrpPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (l, m, o) = (
+            self.l.emit(),
+            mode_arg(self.stmt, self.mode),
+            self.offset.emit(),
+        );
+        let (a, guide) = (local(self.a), local(self.guide));
+        Solve::Group {
+            call: quote!(::mechanism::dyad::rrp::position(&#a, #l, &#guide, #o, #m)),
+            joint: Some("c"),
+        }
+    }
+
+    fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
+        match index {
+            0 => arm(self.stmt, "r1", self.l.emit()),
+            _ => along(self.guide),
+        }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let ((g, gv), guide) = (states(self.stmt), self.guide);
+        let (ma, gvel) = (cx.point_arg(self.a), cx.guide_vel(guide));
+        let call = if cx.accel() {
+            let gacc = cx.guide_acc(guide);
+            quote!(::mechanism::dyad::rrp::acceleration(&pos.#g, &pos.#guide, &vel.#gv, #ma, #gvel, #gacc))
+        } else {
+            quote!(::mechanism::dyad::rrp::velocity(&pos.#g, &pos.#guide, #ma, #gvel))
+        };
+        let gr = cx.group(self.stmt, call, quote!(dyad::rrp), "Rrp");
+        let Pieces { point, r1, s, .. } = Pieces::of(cx.accel());
+        cx.named(cx.motion(self.stmt), quote!(#gr.#point), vec_ty());
+        cx.named(cx.own(self.stmt, 0), quote!(#gr.#r1), quote!(T));
+        cx.slide(0, quote!(#gr.#s));
+    }
+
+    fn rate_system(&self) -> bool {
+        true
+    }
+
+    /// `C` at `l` from `A`, on the guide's offset line, on its branch
+    /// (along the guide from `A`).
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let (n, a, guide, m) = (r.n, self.a, self.guide, mode_sign(self.mode));
+        r.at_length("|C - A| = l", a, f(self.l));
+        r.on_offset_line("C on the offset line", guide, self.offset);
+        r.push(
+            "assembly branch",
+            quote!(wrong_side(#m * dot(sub(pt(&pos.#n), pt(&pos.#a)), vc(&pos.#guide.dir)))),
+        );
+    }
+
+    fn closure_axis(&self, index: usize) -> TokenStream {
+        match index {
+            0 => axis_between(self.a, &self.stmt.name),
+            _ => guide_axis(self.guide),
+        }
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        vec![self.l]
+    }
+
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let (a, guide) = (self.a, self.guide);
+        let Fault::CannotAssemble { miss, reach } = fault else {
+            return None;
+        };
+        Some(format!(
+            "at {at}, `{a}` is {} from the line of guide `{guide}`, {} more than the link's length {} reaches",
+            show_num(reach + miss),
+            show_num(*miss),
+            show_num(*reach)
+        ))
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        let (l, guide) = (&self.stmt.links, self.guide);
+        Some(format!(
+            "link `{}` is perpendicular to guide `{guide}` (the block cannot be pushed along it)",
+            l[0]
+        ))
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Rrp"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let (g, guide) = (grp(self.stmt), self.guide);
+        quote!(::mechanism::__private::det_rrp(&pos.#g, &pos.#guide))
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, a, guide) = (&self.stmt.name, links_text(self.stmt), self.a, self.guide);
+        format!(
+            "RRP group `{links}`: `{a}` and guide `{guide}` -> `{n}`, {}",
+            mode_text(self.stmt, self.mode)
+        )
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, a, guide) = (self.stmt, self.a, self.guide);
+        let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
+        let (l1, l2) = cx.loads_about(stmt, name);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::rrp::reactions(&pos.#a, &pos.#name, &pos.#guide.dir, &#l1, &#l2)),
+        );
+        let ba = cx.pass_revolute(a, &rx, "a");
+        let bg = cx.body_of_guide(guide);
+        cx.prismatic_on(bg.clone(), quote!(#rx.guide), name);
+        cx.reaction(revolute(&rx, &ba, &links[0], a, "a"));
+        cx.reaction(inner(&rx, links, name, "c", false));
+        cx.reaction(prismatic(&rx, &bg, &links[1], name, "guide"));
+        cx.condition(quote!(#rx.min_pivot_ratio));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (2, 3)
+    }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.a, self.l, self.guide, &self.mode, self.offset)
+    }
+}
+
+/// An RRP group: the joint at distance `l` (length unit) from `a` and at
+/// `offset` across `guide`, on the side `mode` (`lane::rrp`), its slide
+/// along the guide (`s0_NAME`), rates with `lane::rrp_rates` /
+/// `lane::rrp_accels`. Link 1 lies along `r1`, link 2 (the block) turns
+/// with the guide. `None` when `a` or the guide is not known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    a: &Ident,
+    l: &Value,
+    guide: &Ident,
+    mode: &Mode,
+    offset: &Value,
+) -> Option<()> {
+    let pa = lane.point(a)?;
+    let gd = lane.guide(guide)?;
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let g = s.g.clone();
+    let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
+    let (l, o, sign) = (l.emit(), offset.emit(), s.sign(mode));
+    let r1 = s.rates(0)?;
+    let (w1, al1) = (&r1.omega, &r1.alpha);
+    let slide = s.slide_locals(0);
+    let (sl, sd, sdd) = (&slide.s, &slide.sd, &slide.sdd);
+    let (apx, apy) = (&pa.px, &pa.py);
+    s.emit(quote! {
+        let #g = ::mechanism::__private::lane::rrp(#apx, #apy, #l, &#line, #o, #sign);
+        ok &= #g.ok;
+        let #px = #g.x; let #py = #g.y;
+        let #sl = #g.s;
+    });
+    s.check([quote!(#sl)]);
+    if lane.vel {
+        let (avx, avy) = (&pa.vx, &pa.vy);
+        s.emit(quote! {
+            ok &= #g.ok_rate;
+            let (#w1, #sd, #vx, #vy) = ::mechanism::__private::lane::rrp_rates(&#g, &#line, #avx, #avy, #gv);
+        });
+        s.check([quote!(#w1), quote!(#sd)]);
+    }
+    if lane.acc {
+        let (aax, aay) = (&pa.ax, &pa.ay);
+        s.emit(quote! {
+            let (#al1, #sdd, #ax, #ay) = ::mechanism::__private::lane::rrp_accels(&#g, &#line, #aax, #aay, #w1, #sd, #gv, #ga);
+        });
+        s.check([quote!(#al1), quote!(#sdd)]);
+    }
+    s.defines_slide(0, &slide);
+    let (w1, al1) = (quote!(#w1), quote!(#al1));
+    s.defines_link(0, LaneLink::along(along_line(&g, "r1"), Some(&l), w1, al1))?;
+    let block = LaneLink::along(line_axis(line), None, gd.omega.clone(), gd.alpha.clone());
+    s.defines_link(1, block)
+}

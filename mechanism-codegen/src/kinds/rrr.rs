@@ -1,0 +1,284 @@
+//! `rrr(A, l1, B, l2, mode) as (LINK1, LINK2)`: the RRR dyad, two links of
+//! lengths `l1` from `A` and `l2` from `B` pinned at the defined point.
+
+use super::closure::{axis_between, f, Residuals};
+use super::forces::{inner, revolute, rx, ForceCx};
+use super::lane::{Lane, Step};
+use super::lane_shapes::{dyad, SecondSide};
+use super::rates::{states, two_links, RateCx};
+use super::tokens::{arm, grp, local, mode_arg};
+use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::diag::show_num;
+use crate::kinds::pose::{mode, num};
+use crate::model::{Mode, Stmt};
+use crate::value::Value;
+use mechanism_core::{dyad, sweep, Fault};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// An `rrr` statement.
+pub(super) struct Rrr<'a> {
+    pub stmt: &'a Stmt,
+    pub a: &'a Ident,
+    pub l1: &'a Value,
+    pub b: &'a Ident,
+    pub l2: &'a Value,
+    pub mode: Mode,
+}
+
+impl<'a> GroupKind<'a> for Rrr<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.a, Role::Point), (self.b, Role::Point)]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        let n = &self.stmt.name;
+        vec![
+            LinkShape::new(&[self.a, n], Turn::Own, None),
+            LinkShape::new(&[self.b, n], Turn::Own, None),
+        ]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.l1.clone(), self.l2.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        _input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (pa, pb) = (pose.point(self.a), pose.point(self.b));
+        let (l1, l2) = (num(self.l1), num(self.l2));
+        let p = dyad::rrr::position(&pa, l1, &pb, l2, mode(self.mode))?;
+        pose.found(self.stmt, Some(p.c), &[p.r1 / l1, p.r2 / l2]);
+        Ok(Some(sweep::det_rrr(&p)))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::dyad::rrr::RrrPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (l1, l2, m) = (
+            self.l1.emit(),
+            self.l2.emit(),
+            mode_arg(self.stmt, self.mode),
+        );
+        let (a, b) = (local(self.a), local(self.b));
+        Solve::Group {
+            call: quote!(::mechanism::dyad::rrr::position(&#a, #l1, &#b, #l2, #m)),
+            joint: Some("c"),
+        }
+    }
+
+    fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
+        match index {
+            0 => arm(self.stmt, "r1", self.l1.emit()),
+            _ => arm(self.stmt, "r2", self.l2.emit()),
+        }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let (g, gv) = states(self.stmt);
+        let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
+        let call = if cx.accel() {
+            quote!(::mechanism::dyad::rrr::acceleration(&pos.#g, &vel.#gv, #ma, #mb))
+        } else {
+            // The link lengths are the determinant's scale: no square root.
+            let (l1, l2) = (self.l1.emit(), self.l2.emit());
+            quote!(::mechanism::dyad::rrr::velocity_lengths(&pos.#g, #l1, #l2, #ma, #mb))
+        };
+        let gr = cx.group(self.stmt, call, quote!(dyad::rrr), "Rrr");
+        two_links(cx, self.stmt, &gr);
+    }
+
+    fn rate_system(&self) -> bool {
+        true
+    }
+
+    /// `C` at `l1` from `A` and `l2` from `B`, on its branch.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        r.at_length("|C - A| = l1", self.a, f(self.l1));
+        r.at_length("|C - B| = l2", self.b, f(self.l2));
+        r.dyad_branch(self.a, self.b, self.mode);
+    }
+
+    fn closure_axis(&self, index: usize) -> TokenStream {
+        let from = if index == 0 { self.a } else { self.b };
+        axis_between(from, &self.stmt.name)
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        vec![self.l1, self.l2]
+    }
+
+    /// Too far apart (beyond `l1 + l2`) or too close (within `|l1 - l2|`).
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let (a, b) = (self.a, self.b);
+        let Fault::CannotAssemble { miss, reach } = fault else {
+            return None;
+        };
+        let (l1, l2) = (num(self.l1), num(self.l2));
+        Some(
+            if (reach - (l1 + l2)).abs() <= 1e-9 * reach.abs().max(1.0) {
+                format!(
+                "at {at}, `{a}` and `{b}` are {} apart, {} more than the links reach ({} + {} = {})",
+                show_num(reach + miss),
+                show_num(*miss),
+                show_num(l1),
+                show_num(l2),
+                show_num(*reach)
+            )
+            } else {
+                format!(
+                "at {at}, `{a}` and `{b}` are {} apart, {} less than the links' difference (|{} - {}| = {})",
+                show_num(reach - miss),
+                show_num(*miss),
+                show_num(l1),
+                show_num(l2),
+                show_num(*reach)
+            )
+            },
+        )
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        let l = &self.stmt.links;
+        Some(format!(
+            "links `{}` and `{}` are aligned (toggle)",
+            l[0], l[1]
+        ))
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Rrr"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let g = grp(self.stmt);
+        quote!(::mechanism::__private::det_rrr(&pos.#g))
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, a, b) = (&self.stmt.name, links_text(self.stmt), self.a, self.b);
+        format!(
+            "RRR group `{links}`: `{a}`, `{b}` -> `{n}`, {}",
+            mode_text(self.stmt, self.mode)
+        )
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, a, b) = (self.stmt, self.a, self.b);
+        let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
+        let (l1, l2) = cx.loads_about(stmt, name);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::rrr::reactions(&pos.#a, &pos.#b, &pos.#name, &#l1, &#l2)),
+        );
+        let ba = cx.pass_revolute(a, &rx, "a");
+        let bb = cx.pass_revolute(b, &rx, "b");
+        cx.reaction(revolute(&rx, &ba, &links[0], a, "a"));
+        cx.reaction(revolute(&rx, &bb, &links[1], b, "b"));
+        cx.reaction(inner(&rx, links, name, "c", false));
+        cx.condition(quote!(#rx.min_pivot_ratio));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (2, 3)
+    }
+
+    fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {
+        Some((self.a, self.b, "known joints"))
+    }
+
+    /// Driven by a crank onto a ground point, it closes a four-bar: its
+    /// Grashof condition, in numbers.
+    fn full_turn_hint(&self, find: &dyn Fn(&Ident) -> Option<&'a Stmt>) -> Option<String> {
+        let arm = |n: &Ident| find(n).and_then(|s| super::of(s).crank_arm().map(|arm| (s, arm)));
+        let ground = |n: &Ident| find(n).and_then(|s| super::of(s).ground_at());
+        let ((crank, (pivot, radius)), other) = match (arm(self.a), arm(self.b)) {
+            (Some(c), _) => (c, self.b),
+            (_, Some(c)) => (c, self.a),
+            _ => return None,
+        };
+        let (o, g) = (ground(pivot)?, ground(other)?);
+        let four_bar = FourBar {
+            names: [pivot, &crank.name, &self.stmt.name, other],
+            crank: num(radius),
+            coupler: num(self.l1),
+            rocker: num(self.l2),
+            ground: (o.0 - g.0).hypot(o.1 - g.1),
+        };
+        four_bar.grashof()
+    }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.a, self.l1, self.b, self.l2, &self.mode)
+    }
+}
+
+/// An RRR group: the joint at distance `l1` from `a` and `l2` from `b`
+/// (length unit), on the side `mode` (`lane::rrr`), its rates with
+/// `lane::rrr_rates` / `lane::rrr_accels`. See [`dyad`].
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    a: &Ident,
+    l1: &Value,
+    b: &Ident,
+    l2: &Value,
+    mode: &Mode,
+) -> Option<()> {
+    dyad(lane, s, a, l1, b, SecondSide::Length(l2), mode)
+}
+
+/// A four-bar closed by a crank and an RRR: its joints' names (pivot, crank
+/// tip, RRR joint, other ground point) and its link lengths.
+struct FourBar<'n> {
+    names: [&'n Ident; 4],
+    crank: f64,
+    coupler: f64,
+    rocker: f64,
+    ground: f64,
+}
+
+impl FourBar<'_> {
+    /// Why no full turn: not Grashof, or the crank not the shortest link;
+    /// `None` when the crank can turn fully.
+    fn grashof(&self) -> Option<String> {
+        let r = self.crank;
+        let mut links = [
+            (r, format!("crank {}", show_num(r))),
+            (self.coupler, show_num(self.coupler)),
+            (self.rocker, show_num(self.rocker)),
+            (self.ground, format!("ground {}", show_num(self.ground))),
+        ];
+        links.sort_by(|x, y| x.0.total_cmp(&y.0));
+        let (s, p, q, l) = (&links[0], &links[1], &links[2], &links[3]);
+        let text = format!(
+            "s + l = {} + {} = {}, p + q = {} + {} = {}",
+            s.1,
+            l.1,
+            show_num(s.0 + l.0),
+            p.1,
+            q.1,
+            show_num(p.0 + q.0)
+        );
+        let [pivot, tip, joint, other] = self.names;
+        Some(if s.0 + l.0 > p.0 + q.0 {
+            format!("the four-bar `{pivot}`-`{tip}`-`{joint}`-`{other}` is not Grashof ({text}): no link turns fully")
+        } else if s.0 < r {
+            format!("the four-bar `{pivot}`-`{tip}`-`{joint}`-`{other}` is Grashof ({text}), but the crank is not its shortest link: only the shortest link turns fully")
+        } else {
+            return None;
+        })
+    }
+}

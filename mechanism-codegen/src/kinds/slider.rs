@@ -1,0 +1,204 @@
+//! `slider(GUIDE, INPUT) as BLOCK`: a block driven along a guide by the
+//! input displacement (length units, along the guide's direction).
+
+use super::closure::{guide_axis, Residuals};
+use super::forces::{drive, prismatic, rx, ForceCx, Held};
+use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
+use super::rates::{vec_ty, RateCx};
+use super::tokens::{along, grp, local, tag};
+use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::kinds::pose::num;
+use crate::model::Stmt;
+use crate::value::Value;
+use mechanism_core::driver;
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use syn::Ident;
+
+/// A `slider` statement.
+pub(super) struct Slider<'a> {
+    pub stmt: &'a Stmt,
+    pub guide: &'a Ident,
+    pub input: &'a Ident,
+    pub offset: &'a Value,
+}
+
+impl<'a> GroupKind<'a> for Slider<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![(self.guide, Role::Guide)]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        vec![LinkShape::new(
+            &[&self.stmt.name],
+            Turn::None,
+            Some(self.guide),
+        )]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        vec![self.offset.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let g = pose.line(self.guide);
+        let s = driver::slider::position(&g, num(self.offset), input(self.input))?;
+        pose.found(self.stmt, Some(s.p), &[g.dir]);
+        Ok(None)
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::driver::slider::SliderPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (o, guide, input) = (self.offset.emit(), local(self.guide), self.input);
+        Solve::Group {
+            call: quote!(::mechanism::driver::slider::position(&#guide, #o, input.#input)),
+            joint: Some("p"),
+        }
+    }
+
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        along(self.guide)
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let (stmt, guide, input) = (self.stmt, self.guide, self.input);
+        let (g, pv, t) = (grp(stmt), cx.motion(stmt), tag(stmt));
+        let gvel = cx.guide_vel(guide);
+        cx.code(if cx.accel() {
+            let gacc = cx.guide_acc(guide);
+            quote! {
+                let #pv = ::mechanism::driver::slider::acceleration(&pos.#g, &pos.#guide, pos.input.#input, rates.#input, accels.#input, #gvel, #gacc) #t;
+            }
+        } else {
+            quote! {
+                let #pv = ::mechanism::driver::slider::velocity(&pos.#g, &pos.#guide, pos.input.#input, rates.#input, #gvel) #t;
+            }
+        });
+        cx.field(pv, vec_ty());
+    }
+
+    /// The pin on the guide's offset line, at the input displacement.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let (n, guide, input) = (r.n, self.guide, self.input);
+        r.on_offset_line("pin on the offset line", guide, self.offset);
+        r.push(
+            "pin at the input displacement",
+            quote!(dot(vc(&pos.#guide.dir), sub(pt(&pos.#n), pt(&pos.#guide.origin))) - <T as ::mechanism::Real>::as_f64(pos.input.#input)),
+        );
+    }
+
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        guide_axis(self.guide)
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Slider"
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, guide, input) = (
+            &self.stmt.name,
+            links_text(self.stmt),
+            self.guide,
+            self.input,
+        );
+        format!("driver: slider `{links}` on `{guide}`, input `{input}`, pin `{n}`")
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, guide, input) = (self.stmt, self.guide, self.input);
+        let (rx, link, name) = (rx(stmt), &stmt.links[0], &stmt.name);
+        let load = cx.load_about(link, name);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::slider::reactions(&pos.#guide.dir, &#load)),
+        );
+        let body = cx.body_of_guide(guide);
+        if let Some(b) = &body {
+            let r = cx.reference(b);
+            let w = quote!(::mechanism::force::Wrench::force_at(&(-(#rx.guide.force + pos.#guide.dir * #rx.drive)), &pos.#name, &pos.#r).with_couple(-#rx.guide.moment));
+            cx.add(b, w);
+        }
+        cx.reaction(prismatic(&rx, &body, link, name, "guide"));
+        cx.power(quote!(#rx.drive * vel.rates.#input));
+        let doc = format!("Driving force on `{link}` along its guide (input `{input}`; force units, positive along the guide's direction).");
+        cx.reaction(drive(&rx, input, "drive", Held::Push, doc));
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (1, 1)
+    }
+
+    /// Its lane code in the batch kernel (`None`: an argument the kernel
+    /// does not know; the batch then takes the scalar path).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        lane_steps(lane, s, self.guide, self.input, self.offset)
+    }
+}
+
+/// A slider on `guide` at the input displacement `in_INPUT[k]` (length
+/// unit, along the guide's direction) plus `offset` across it:
+/// `lane::slider`, `lane::slider_velocity` and `lane::slider_acceleration`
+/// (the guide's motion folds away for a fixed guide). The block's link
+/// turns with the guide's body. `None` when the guide is not known yet.
+fn lane_steps(
+    lane: &Lane,
+    s: &mut Step,
+    guide: &Ident,
+    input: &Ident,
+    offset: &Value,
+) -> Option<()> {
+    let gd = lane.guide(guide)?;
+    let PointLocals {
+        px,
+        py,
+        vx,
+        vy,
+        ax,
+        ay,
+    } = s.own.clone();
+    let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
+    let o = offset.emit();
+    let input_s = format_ident!("in_{}", input);
+    s.emit(quote! {
+        let (#px, #py) = ::mechanism::__private::lane::slider(&#line, #o, #input_s[k]);
+    });
+    s.check([quote!(#input_s[k])]);
+    let rate = format_ident!("rate_{}", input);
+    if lane.vel {
+        s.emit(quote! {
+            let (#vx, #vy) = ::mechanism::__private::lane::slider_velocity(&#line, #px, #py, #rate[k], #gv);
+        });
+        s.check([quote!(#rate[k])]);
+    }
+    if lane.acc {
+        let accel = format_ident!("accel_{}", input);
+        s.emit(quote! {
+            let (#ax, #ay) = ::mechanism::__private::lane::slider_acceleration(&#line, #px, #py, #rate[k], #accel[k], #gv, #ga);
+        });
+        s.check([quote!(#accel[k])]);
+    }
+    s.defines_link(
+        0,
+        LaneLink::along(
+            Vector {
+                x: quote!(#line.dx),
+                y: quote!(#line.dy),
+            },
+            None,
+            gd.omega.clone(),
+            gd.alpha.clone(),
+        ),
+    )
+}
