@@ -166,10 +166,9 @@ struct Check<'a> {
     under: f64,
     /// The subnormal spacing of the scalar in units of `s2`: no coordinate
     /// is known better than that (subnormal lengths, such as an f32 crank
-    /// of 1e-45, leave a residual of a fraction of it). Amplified like the
-    /// rounding errors, by the check's `scale`: f64 lengths at the smallest
-    /// normal number on a slot 0.28 deg off the guide (1 / sin = 201) left
-    /// 167 spacings in "A in the slot".
+    /// of 1e-45, leave a residual of a fraction of it), times the check's
+    /// `scale` like the rounding term (a solve's condition adds to it where
+    /// a check knows it: "A in the slot").
     grain: f64,
 }
 
@@ -1040,10 +1039,15 @@ fn slides<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
         qq.0 + q.s_slot.as_f64() * wdir.0,
         qq.1 + q.s_slot.as_f64() * wdir.1,
     );
-    // `Q` is at `s_yoke` along the guide: its coordinates' roundings (eps
-    // and, for tiny lengths, the subnormal spacing) are of that size.
+    // `Q` is at `s_yoke` along the guide: its coordinates' roundings are of
+    // that size. A rounding at the subnormal spacing in the 2x2 solve's
+    // cross products (tiny lengths) is divided by its determinant `sin
+    // beta`: f64 lengths at the smallest normal number on a slot 0.28 deg
+    // off the guide (1 / sin = 201) left 167 spacings.
     let big = 1.0 + (q.s_slot.as_f64().abs() + q.s_yoke.as_f64().abs()) / c.s2;
-    c.small("A in the slot", norm(sub(c.sc(a), c.sc(want))), big);
+    let cond = 1.0 / beta.sin().abs().max(f64::MIN_POSITIVE);
+    let extra = K * c.grain * cond;
+    c.small_plus("A in the slot", norm(sub(c.sc(a), c.sc(want))), big, extra);
     let along = dot(up, c.sc(qq)) - q.s_yoke.as_f64() / c.s2;
     c.small("s_yoke", along, yoke_scale);
     // PRP: C on both offset lines; far away where the lines are nearly
