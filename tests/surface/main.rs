@@ -10,6 +10,7 @@
 //! - [`sweep`]: the assembly-range checks (`check()`, the run-time errors at
 //!   the limits, the ranges the expansion-time check suggests);
 //! - [`forces`]: the force analysis on loaded definitions the zoo does not have;
+//! - [`functions`]: functions in dimensions (`sqrt`, `hypot`, ...);
 //! - [`describe`]: a mechanism's description of itself (`mechanism::structure`)
 //!   and the pictures and tables drawn from it alone;
 //! - [`self_test_scales`]: `#[self_test]` passing at scales from 1e-9 to 1e9.
@@ -27,6 +28,7 @@ mod surface_defs;
 mod describe;
 mod dsl;
 mod forces;
+mod functions;
 mod self_test_scales;
 mod statement_kinds;
 mod sweep;

@@ -7,28 +7,14 @@ use crate::kinds;
 use crate::kinds::closure::{Residual, Residuals};
 use crate::model::{Model, Stmt};
 use crate::plan::Plan;
-use crate::value::{Value, ValueKind};
+use crate::value::Value;
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
 /// A value with run-time parameters at their defaults (`None` for a load).
 fn with_defaults(model: &Model, v: &Value) -> Option<f64> {
-    Some(match &v.kind {
-        ValueKind::Lit(x) => *x,
-        ValueKind::Param(p) => model.params.iter().find(|(n, _)| n == p)?.1,
-        ValueKind::Load(_) => return None,
-        ValueKind::Neg(a) => -with_defaults(model, a)?,
-        ValueKind::Bin(a, op, b) => {
-            let (a, b) = (with_defaults(model, a)?, with_defaults(model, b)?);
-            match op {
-                '+' => a + b,
-                '-' => a - b,
-                '*' => a * b,
-                _ => a / b,
-            }
-        }
-    })
+    v.eval_with(&|p| model.params.iter().find(|(n, _)| n == p).map(|(_, x)| *x))
 }
 
 /// Residuals of one statement's constraints (lengths in the definition's

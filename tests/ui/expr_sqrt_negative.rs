@@ -1,4 +1,4 @@
-// Error: a function call in a dimension.
+// Error: the square root of a negative number in a dimension (folded at expansion time).
 use mechanism::mechanism;
 
 mechanism! {
@@ -8,7 +8,7 @@ mechanism! {
         let O2 = ground(0.0, 0.0);
         let O4 = ground(ground, 0.0);
         let A = crank(O2, crank, theta2) as link2;
-        let B = rrr(A, sqrt(coupler), O4, rocker, left) as (link3, link4);
+        let B = rrr(A, coupler + sqrt(1.0 - 4.0), O4, rocker, left) as (link3, link4);
     }
 }
 
