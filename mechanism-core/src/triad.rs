@@ -198,6 +198,48 @@ impl<T: Real> Near<T> {
     }
 }
 
+/// The pose an assembly tracked ahead of time has at input `q`: linear
+/// interpolation in a table of rows `[q, ax, ay, bx, by, px, py]` (input in
+/// its unit, joints in L) whose inputs increase evenly; the generated
+/// `position()` of a definition with a triad selects the assembly nearest
+/// this pose.
+///
+/// Errors: `NonFinite` for a non-finite `q`; `NotNear` with `nearest`
+/// infinite for a `q` outside the table's inputs (the tracked assembly is
+/// not known there: it vanished, or the range ends) or a table of fewer
+/// than two rows.
+pub fn near_from_table<T: Real>(table: &[[f64; 7]], q: T) -> Result<Near<T>, Error<T>> {
+    let x = q.as_f64();
+    if !x.is_finite() {
+        return Err(Error::new(PRIM, Fault::NonFinite { what: "triad input" }));
+    }
+    let outside = Error::new(
+        PRIM,
+        Fault::NotNear {
+            nearest: T::lit(f64::INFINITY),
+            next: T::zero(),
+        },
+    );
+    let (Some(first), Some(last)) = (table.first(), table.last()) else {
+        return Err(outside);
+    };
+    let (lo, hi) = (first[0], last[0]);
+    if table.len() < 2 || !(x >= lo && x <= hi) || hi <= lo {
+        return Err(outside);
+    }
+    let cells = (table.len() - 1) as f64;
+    let at = (x - lo) / (hi - lo) * cells;
+    let i = if at >= cells { table.len() - 2 } else { at as usize };
+    let w = at - i as f64;
+    let (r0, r1) = (&table[i], &table[i + 1]);
+    let v = |k: usize| T::lit(r0[k] + (r1[k] - r0[k]) * w);
+    Ok(Near {
+        a: Point2::new(v(1), v(2)),
+        b: Point2::new(v(3), v(4)),
+        p: Point2::new(v(5), v(6)),
+    })
+}
+
 /// Every real assembly at one input, in no particular order, without heap.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Assemblies<T: Real> {

@@ -28,6 +28,7 @@ mod rrp;
 mod rrr;
 mod slider;
 pub(crate) mod tokens;
+pub mod triad;
 
 use crate::diag::Diagnostics;
 use crate::model::{Kind, Stmt};
@@ -495,6 +496,7 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             from,
             local,
         }),
+        Kind::Triad(t) => Box::new(triad::TriadKind { stmt, t }),
     }
 }
 

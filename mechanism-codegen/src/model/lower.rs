@@ -5,11 +5,11 @@
 
 use super::args::{literal_scope_for, NumberScope};
 use super::kinds::lower_kind;
-use super::{inputs, Allowed, Failed, Kinetics, Level, Model, Stmt};
+use super::{inputs, Allowed, Failed, Kind, Kinetics, Level, Local, Model, Stmt};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::vocabulary::{input_position, links_created, KINDS};
 use crate::parse::{self, Arg, Assign, Definition, Item, RangeDecl};
-use crate::value::convert;
+use crate::value::{convert, Value};
 use proc_macro2::Span;
 use std::collections::BTreeMap;
 use syn::{Expr, Ident, LitInt};
@@ -362,6 +362,7 @@ impl<'a> Body<'a> {
             );
         }
         let slides = (0..want_slides).map(|i| l.slides.get(i).cloned()).collect();
+        let joints = triad_joints(&l, &kind, &links);
         self.stmts.push(Stmt {
             name: l.name,
             kind_token: l.kind,
@@ -370,6 +371,7 @@ impl<'a> Body<'a> {
             links_named,
             slides,
         });
+        self.stmts.extend(joints);
     }
 
     /// `range INPUT = (lo, hi);`: kept for [`inputs::inputs`], which reads
@@ -378,6 +380,35 @@ impl<'a> Body<'a> {
     fn range(&mut self, r: RangeDecl) {
         self.checks.ranges.push(r);
     }
+}
+
+/// A triad's joints `B` and `P` as points on its ternary link (its fourth
+/// link) measured from `A`: `B` at `(ab, 0)`, `P` where the statement puts
+/// it. Empty for every other kind.
+fn triad_joints(l: &parse::Let, kind: &Kind, links: &[Ident]) -> Vec<Stmt> {
+    let (Kind::Triad(t), Some(ternary)) = (kind, links.get(3)) else {
+        return Vec::new();
+    };
+    let zero = Value::lit(0.0, t.ab.span);
+    let p_local = match &t.p_local {
+        Local::Polar(d, a) => Local::Polar(d.clone(), a.clone()),
+        Local::Cartesian(x, y) => Local::Cartesian(x.clone(), y.clone()),
+    };
+    [(&t.b, Local::Cartesian(t.ab.clone(), zero)), (&t.p, p_local)]
+        .into_iter()
+        .map(|(name, local)| Stmt {
+            name: name.clone(),
+            kind_token: l.kind.clone(),
+            kind: Kind::Point {
+                link: ternary.clone(),
+                from: l.name.clone(),
+                local,
+            },
+            links: Vec::new(),
+            links_named: Vec::new(),
+            slides: Vec::new(),
+        })
+        .collect()
 }
 
 /// A `let` statement whose arguments were rejected: the names it meant to

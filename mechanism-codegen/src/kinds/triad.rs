@@ -1,0 +1,440 @@
+//! `let (A, B, P) = triad(K1, l1, K2, l2, K3, l3, ab, d, angle, INPUT =
+//! value, (ax, ay), (bx, by), (px, py)) as (LEG1, LEG2, LEG3, TERNARY)`: the
+//! class III group of the Stephenson III six-bar (`mechanism::triad`). A
+//! ternary link with joints `A`, `B`, `P` (`|AB| = ab`, `P` at distance `d`
+//! from `A`, `angle` counter-clockwise from `A -> B`, or at `(x, y)` in that
+//! frame) on three legs from the known points `K1`, `K2`, `K3`.
+//!
+//! The statement is the group's joint `A`; its joints `B` and `P` are
+//! lowered as points on the ternary link (`model::lower`), so their rates
+//! and the rest of the pipeline are the link point's.
+//!
+//! **Which assembly.** A triad has up to six. The statement gives an
+//! approximate pose of `A`, `B`, `P` at one input value. With one input
+//! and a declared (or default) range, and every dimension known at
+//! expansion time, the check tracks that assembly over the range
+//! ([`track`], the core's `position_near` in small steps) and stores the
+//! tracked pose at [`ROWS`] evenly spaced inputs; the generated
+//! `position()` runs the full search and takes the assembly nearest the
+//! pose interpolated from that table (`triad::near_from_table`), a typed
+//! `NotNear` when none is clearly nearest or the input lies outside the
+//! tracked interval. Otherwise (parameters, several inputs) the stated pose
+//! itself is the hint at every input.
+
+use super::closure::{f, Residuals};
+use super::forces::{revolute, rx, ForceCx};
+use super::lane::{Lane, Step};
+use super::rates::{states, vec_ty, RateCx};
+use super::tokens::{arm, grp, local, tag, unit_field};
+use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::diag::show_num;
+use crate::kinds::pose::num;
+use crate::model::{Local, Stmt, Tracked, Triad as Args};
+use crate::value::Value;
+use mechanism_core::triad::{self, Near, TriadPosition};
+use mechanism_core::{geometry, Fault, Point2, Vector2};
+use proc_macro2::TokenStream;
+use quote::quote;
+use syn::Ident;
+
+/// Rows of the tracked-pose table the generated `position()` reads.
+pub const ROWS: usize = 49;
+
+/// Tracking steps between two rows of the table.
+const SUB: usize = 16;
+
+/// A `triad` statement (the joint `A`).
+pub(super) struct TriadKind<'a> {
+    pub stmt: &'a Stmt,
+    pub t: &'a Args,
+}
+
+/// `P`'s offset in the ternary's frame (L), folded.
+fn p_local(t: &Args) -> Vector2<f64> {
+    match &t.p_local {
+        Local::Cartesian(x, y) => Vector2::new(num(x), num(y)),
+        Local::Polar(d, a) => geometry::unit(num(a)) * num(d),
+    }
+}
+
+/// The core's dimensions, folded.
+fn dims(t: &Args) -> triad::Triad<f64> {
+    triad::Triad {
+        l1: num(&t.l[0]),
+        l2: num(&t.l[1]),
+        l3: num(&t.l[2]),
+        ab: num(&t.ab),
+        p_local: p_local(t),
+    }
+}
+
+/// The stated pose, folded.
+fn stated(t: &Args) -> Near<f64> {
+    let p = |k: usize| Point2::new(num(&t.near[k].0), num(&t.near[k].1));
+    Near::new(p(0), p(1), p(2))
+}
+
+/// The core's dimensions (code, in the mechanism's scalar `T`).
+fn dims_code(t: &Args) -> TokenStream {
+    let [l1, l2, l3] = [t.l[0].emit(), t.l[1].emit(), t.l[2].emit()];
+    let ab = t.ab.emit();
+    let p = match &t.p_local {
+        Local::Cartesian(x, y) => {
+            let (x, y) = (x.emit(), y.emit());
+            quote!(::mechanism::Vector2::new(#x, #y))
+        }
+        Local::Polar(d, a) => {
+            let (d, u) = (d.emit(), super::tokens::unit_vector(a));
+            quote!(#u * #d)
+        }
+    };
+    quote!(::mechanism::triad::Triad { l1: #l1, l2: #l2, l3: #l3, ab: #ab, p_local: #p })
+}
+
+/// Tracks the stated assembly of `t` over `[lo, hi]` (the input's unit):
+/// solved at the stated input from the stated pose, then followed up and
+/// down in steps of `(hi - lo) / ((ROWS - 1) SUB)` by `triad::position_near`.
+/// `ks` gives the three known points at an input. `Err` when the stated
+/// input is outside the range or the stated pose selects no assembly.
+pub fn track(
+    t: &Args,
+    lo: f64,
+    hi: f64,
+    ks: &dyn Fn(f64) -> Option<[Point2<f64>; 3]>,
+) -> Result<Tracked, mechanism_core::Error<f64>> {
+    let q0 = num(&t.at.1);
+    let steps = (ROWS - 1) * SUB;
+    let h = (hi - lo) / steps as f64;
+    let not_near = mechanism_core::Error::new(
+        mechanism_core::Primitive::Triad,
+        Fault::NotNear {
+            nearest: f64::INFINITY,
+            next: 0.0,
+        },
+    );
+    if !(q0 >= lo && q0 <= hi) || h.is_nan() || h <= 0.0 {
+        return Err(not_near);
+    }
+    // The grid's ends are the range's, exactly.
+    let grid = |i: usize| {
+        if i == steps {
+            hi
+        } else {
+            lo + h * i as f64
+        }
+    };
+    let dims = dims(t);
+    let k0 = ks(q0).ok_or(not_near)?;
+    let start = triad::position(&dims, &k0, &stated(t))?;
+    // The grid index at or below the stated input.
+    let i0 = (((q0 - lo) / h).floor() as usize).min(steps);
+    let mut poses: Vec<Option<TriadPosition<f64>>> = vec![None; steps + 1];
+    let mut ends = Vec::new();
+    for dir in [-1i64, 1] {
+        let mut prev = start;
+        let mut prev_q = q0;
+        let mut i = if dir < 0 { i0 as i64 } else { i0 as i64 + 1 };
+        while i >= 0 && i <= steps as i64 {
+            let q = grid(i as usize);
+            let next = ks(q).and_then(|k| triad::position_near(&dims, &k, &prev).ok());
+            match next {
+                Some(pos) => {
+                    poses[i as usize] = Some(pos);
+                    prev = pos;
+                    prev_q = q;
+                }
+                None => {
+                    ends.push((prev_q.min(q), prev_q.max(q)));
+                    break;
+                }
+            }
+            i += dir;
+        }
+    }
+    let rows = (0..ROWS)
+        .filter_map(|r| {
+            let pos = poses[r * SUB]?;
+            let q = grid(r * SUB);
+            Some([q, pos.a.x, pos.a.y, pos.b.x, pos.b.y, pos.p.x, pos.p.y])
+        })
+        .collect();
+    Ok(Tracked {
+        rows,
+        ends,
+        angle: false,
+    })
+}
+
+impl TriadKind<'_> {
+    /// The hint the position uses at `q`: the table's pose, or the stated
+    /// one when there is no table.
+    fn hint(&self, q: f64) -> Result<Near<f64>, mechanism_core::Error<f64>> {
+        let rows = self.t.table.borrow();
+        if rows.rows.is_empty() {
+            Ok(stated(self.t))
+        } else {
+            triad::near_from_table(&rows.rows, q)
+        }
+    }
+
+    /// The hint's code: the table as `const` data, or the stated pose.
+    fn hint_code(&self) -> TokenStream {
+        let rows = self.t.table.borrow();
+        if rows.rows.is_empty() {
+            let p = |k: usize| {
+                let (x, y) = (self.t.near[k].0.emit(), self.t.near[k].1.emit());
+                quote!(::mechanism::Point2::new(#x, #y))
+            };
+            let (a, b, p) = (p(0), p(1), p(2));
+            return quote!(::mechanism::triad::Near::new(#a, #b, #p));
+        }
+        let n = rows.rows.len();
+        let body = rows.rows.iter().map(|r| {
+            let v = r.iter().map(|x| proc_macro2::Literal::f64_suffixed(*x));
+            quote!([#(#v),*])
+        });
+        let (input, t) = (&self.t.at.0, tag(self.stmt));
+        quote!({
+            const TRACKED: [[f64; 7]; #n] = [#(#body),*];
+            ::mechanism::triad::near_from_table(&TRACKED, input.#input) #t
+        })
+    }
+}
+
+impl<'a> GroupKind<'a> for TriadKind<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        self.t.k.iter().map(|k| (k, Role::Point)).collect()
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        let (n, t) = (&self.stmt.name, self.t);
+        vec![
+            LinkShape::new(&[&t.k[0], n], Turn::Own, None),
+            LinkShape::new(&[&t.k[1], &t.b], Turn::Own, None),
+            LinkShape::new(&[&t.k[2], &t.p], Turn::Own, None),
+            LinkShape::new(&[n], Turn::Own, None),
+        ]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[3].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        let t = self.t;
+        let mut v: Vec<Value> = t.l.to_vec();
+        v.push(t.ab.clone());
+        match &t.p_local {
+            Local::Polar(a, b) | Local::Cartesian(a, b) => v.extend([a.clone(), b.clone()]),
+        }
+        v.push(t.at.1.clone());
+        for (x, y) in &t.near {
+            v.extend([x.clone(), y.clone()]);
+        }
+        v
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let k = self.t.k.each_ref().map(|k| pose.point(k));
+        let near = self.hint(input(&self.t.at.0))?;
+        let dims = dims(self.t);
+        let p = triad::position(&dims, &k, &near)?;
+        let axes = [p.r1 / dims.l1, p.r2 / dims.l2, p.r3 / dims.l3, p.axis];
+        pose.found(self.stmt, Some(p.a), &axes);
+        Ok(Some(p.jacobian))
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::triad::TriadPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let dims = dims_code(self.t);
+        let k = self.t.k.each_ref().map(local);
+        let [k1, k2, k3] = &k;
+        let hint = self.hint_code();
+        Solve::Group {
+            call: quote!({
+                let near = #hint;
+                ::mechanism::triad::position(&#dims, &[#k1, #k2, #k3], &near)
+            }),
+            joint: Some("a"),
+        }
+    }
+
+    fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
+        match index {
+            0..=2 => {
+                let field = ["r1", "r2", "r3"][index];
+                arm(self.stmt, field, self.t.l[index].emit())
+            }
+            _ => unit_field(self.stmt, "axis"),
+        }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let (g, gv) = states(self.stmt);
+        let dims = dims_code(self.t);
+        let [m1, m2, m3] = self.t.k.each_ref().map(|k| cx.point_arg(k));
+        let call = if cx.accel() {
+            quote!(::mechanism::triad::acceleration(&#dims, &pos.#g, &vel.#gv, #m1, #m2, #m3))
+        } else {
+            quote!(::mechanism::triad::velocity(&#dims, &pos.#g, #m1, #m2, #m3))
+        };
+        let gr = cx.group(self.stmt, call, quote!(triad), "Triad");
+        let (pt, rates) = if cx.accel() {
+            (quote!(aa), [quote!(alpha1), quote!(alpha2), quote!(alpha3), quote!(alpha)])
+        } else {
+            (quote!(va), [quote!(omega1), quote!(omega2), quote!(omega3), quote!(omega)])
+        };
+        cx.named(cx.motion(self.stmt), quote!(#gr.#pt), vec_ty());
+        for (i, r) in rates.iter().enumerate() {
+            cx.named(cx.own(self.stmt, i), quote!(#gr.#r), quote!(T));
+        }
+    }
+
+    fn rate_system(&self) -> bool {
+        true
+    }
+
+    /// The three legs' lengths (`B` and `P` on the ternary are the link
+    /// points' residuals).
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        let t = self.t;
+        r.at_length("|A - K1| = l1", &t.k[0], f(&t.l[0]));
+        for (j, k, l, what) in [
+            (&t.b, &t.k[1], &t.l[1], "|B - K2| = l2"),
+            (&t.p, &t.k[2], &t.l[2], "|P - K3| = l3"),
+        ] {
+            let l = f(l);
+            r.push(what, quote!(norm(sub(pt(&pos.#j), pt(&pos.#k))) - #l));
+        }
+    }
+
+    fn closure_axis(&self, index: usize) -> TokenStream {
+        let t = self.t;
+        let (from, to) = match index {
+            0 => (&t.k[0], &self.stmt.name),
+            1 => (&t.k[1], &t.b),
+            2 => (&t.k[2], &t.p),
+            _ => (&self.stmt.name, &t.b),
+        };
+        super::closure::axis_between(from, to)
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        let t = self.t;
+        vec![&t.l[0], &t.l[1], &t.l[2], &t.ab]
+    }
+
+    fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
+        let input = &self.t.at.0;
+        let tracked = self.t.table.borrow();
+        let show = |x: f64| {
+            if tracked.angle {
+                format!("{} deg", show_num(x.to_degrees()))
+            } else {
+                show_num(x)
+            }
+        };
+        let ends: Vec<String> = tracked
+            .ends
+            .iter()
+            .map(|(a, b)| format!("between `{input}` = {} and {}", show(*a), show(*b)))
+            .collect();
+        let from = "the assembly given by the triad's approximate pose";
+        Some(match fault {
+            Fault::NotNear { nearest, .. } if nearest.is_infinite() && !ends.is_empty() => format!(
+                "at {at}, {from} no longer exists: followed from the input it is given at, it meets another assembly (a branch point) or vanishes {}; narrow the range to where it exists",
+                ends.join(" and ")
+            ),
+            Fault::NotNear { nearest, .. } if nearest.is_infinite() => format!(
+                "at {at}, the input lies outside where {from} was followed"
+            ),
+            Fault::NotNear { nearest, next } => format!(
+                "at {at}, no assembly of the triad is clearly {from} followed there (nearest {}, next {}); check the approximate pose (A, B, P) and the input it is given at",
+                show_num(*nearest),
+                show_num(*next)
+            ),
+            Fault::CannotAssemble { .. } => format!(
+                "at {at}, the triad's legs cannot reach a common pose of the ternary link (no assembly)"
+            ),
+            _ => return None,
+        })
+    }
+
+    fn singular_meaning(&self) -> Option<String> {
+        Some("the triad is at a branch point (two of its assemblies meet)".into())
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Triad"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        let g = grp(self.stmt);
+        quote!(<T as ::mechanism::Real>::as_f64(pos.#g.jacobian))
+    }
+
+    fn describe(&self) -> String {
+        let (n, t) = (&self.stmt.name, self.t);
+        format!(
+            "triad `{}`: `{}`, `{}`, `{}` -> `{n}`, `{}`, `{}`, the assembly near the pose given at `{}`",
+            links_text(self.stmt),
+            t.k[0],
+            t.k[1],
+            t.k[2],
+            t.b,
+            t.p,
+            t.at.0
+        )
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        forces(self, cx);
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (4, 6)
+    }
+
+    fn lane(&self, _lane: &mut Lane, _s: &mut Step<'_>) -> Option<()> {
+        None
+    }
+}
+
+/// The triad's reactions: the 12x12 system of `triad::reactions` from the
+/// loads on its four links, passed (negated) to the bodies carrying `K1`,
+/// `K2`, `K3`.
+fn forces(kind: &TriadKind<'_>, cx: &mut dyn ForceCx) {
+    let (stmt, t) = (kind.stmt, kind.t);
+    let (rx, links, a) = (rx(stmt), &stmt.links, &stmt.name);
+    let l = [
+        cx.load_about(&links[0], a),
+        cx.load_about(&links[1], &t.b),
+        cx.load_about(&links[2], &t.p),
+        cx.load_about(&links[3], a),
+    ];
+    let [l1, l2, l3, l4] = &l;
+    let g = grp(stmt);
+    cx.solve(
+        stmt,
+        quote!(::mechanism::triad::reactions(&pos.#g, &::mechanism::triad::TriadLoads {
+            leg1: #l1, leg2: #l2, leg3: #l3, ternary: #l4
+        })),
+    );
+    for (i, field) in ["k1", "k2", "k3"].into_iter().enumerate() {
+        let body = cx.pass_revolute(&t.k[i], &rx, field);
+        cx.reaction(revolute(&rx, &body, &links[i], &t.k[i], field));
+    }
+    let joints = [a, &t.b, &t.p];
+    for (i, field) in ["a", "b", "p"].into_iter().enumerate() {
+        let from = Some(links[i].to_string());
+        cx.reaction(revolute(&rx, &from, &links[3], joints[i], field));
+    }
+    cx.condition(quote!(#rx.min_pivot_ratio));
+}
