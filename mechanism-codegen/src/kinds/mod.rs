@@ -159,6 +159,13 @@ pub trait GroupKind<'a> {
     /// Its position code; `cos_sin`: emitting `position_cos_sin`.
     fn position(&self, cos_sin: bool) -> Solve;
 
+    /// Its position code in the tracking form (`position_near`), which
+    /// stays on the assembly of the previous position `pos`; `None`: the
+    /// same as `position` (kinds with a single assembly per mode).
+    fn position_tracking(&self) -> Option<Solve> {
+        None
+    }
+
     /// Unit axis and raw direction of its link `index`, in position scope.
     fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
         (

@@ -266,6 +266,17 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         }
     }
 
+    fn position_tracking(&self) -> Option<Solve> {
+        let dims = dims_code(self.t);
+        let k = self.t.k.each_ref().map(local);
+        let [k1, k2, k3] = &k;
+        let g = grp(self.stmt);
+        Some(Solve::Group {
+            call: quote!(::mechanism::triad::position_near(&#dims, &[#k1, #k2, #k3], &pos.#g)),
+            joint: Some("a"),
+        })
+    }
+
     fn link_direction(&self, index: usize) -> (TokenStream, TokenStream) {
         match index {
             0..=2 => {
