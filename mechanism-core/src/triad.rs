@@ -200,9 +200,8 @@ impl<T: Real> Near<T> {
 
 /// The pose an assembly tracked ahead of time has at input `q`: linear
 /// interpolation in a table of rows `[q, ax, ay, bx, by, px, py]` (input in
-/// its unit, joints in L) whose inputs increase evenly; the generated
-/// `position()` of a definition with a triad selects the assembly nearest
-/// this pose.
+/// its unit, joints in L) whose inputs increase; the generated `position()`
+/// of a definition with a triad selects the assembly nearest this pose.
 ///
 /// Errors: `NonFinite` for a non-finite `q`; `NotNear` with `nearest`
 /// infinite for a `q` outside the table's inputs (the tracked assembly is
@@ -223,15 +222,17 @@ pub fn near_from_table<T: Real>(table: &[[f64; 7]], q: T) -> Result<Near<T>, Err
     let (Some(first), Some(last)) = (table.first(), table.last()) else {
         return Err(outside);
     };
-    let (lo, hi) = (first[0], last[0]);
-    if table.len() < 2 || !(x >= lo && x <= hi) || hi <= lo {
+    if table.len() < 2 || !(x >= first[0] && x <= last[0]) {
         return Err(outside);
     }
-    let cells = (table.len() - 1) as f64;
-    let at = (x - lo) / (hi - lo) * cells;
-    let i = if at >= cells { table.len() - 2 } else { at as usize };
-    let w = at - i as f64;
+    // The last row at or below x (the first row is), short of the last row.
+    let i = table
+        .partition_point(|r| r[0] <= x)
+        .clamp(1, table.len() - 1)
+        - 1;
     let (r0, r1) = (&table[i], &table[i + 1]);
+    let span = r1[0] - r0[0];
+    let w = if span > 0.0 { (x - r0[0]) / span } else { 0.0 };
     let v = |k: usize| T::lit(r0[k] + (r1[k] - r0[k]) * w);
     Ok(Near {
         a: Point2::new(v(1), v(2)),

@@ -149,7 +149,7 @@ pub fn track_triads(
                 let message = if q >= range.lo && q <= range.hi {
                     format!(
                         "the approximate pose of `{}`, `{}`, `{}` given at `{} = {}` selects no assembly of the triad there ({}); give the joints' positions at that input to within a fraction of the legs' lengths",
-                        stmt.name, t.b, t.p, t.at.0, shown(q), e.fault
+                        stmt.name, t.b, t.p, t.at.0, shown(q), why(&e.fault)
                     )
                 } else {
                     format!(
@@ -165,4 +165,18 @@ pub fn track_triads(
         }
     }
     ok
+}
+
+/// Why a triad's stated pose selects no assembly, in numbers.
+fn why(fault: &mechanism_core::Fault) -> String {
+    use crate::diag::show_num;
+    match fault {
+        mechanism_core::Fault::NotNear { nearest, next } => format!(
+            "the nearest assembly is {} from it, more than {} (half the shortest link) or not half as far as the next",
+            show_num(*nearest),
+            show_num(*next)
+        ),
+        mechanism_core::Fault::CannotAssemble { .. } => "it has no assembly at that input".into(),
+        other => other.to_string(),
+    }
 }

@@ -37,7 +37,8 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
-/// Rows of the tracked-pose table the generated `position()` reads.
+/// Evenly spaced rows of the tracked-pose table the generated
+/// `position()` reads (plus the last input found towards each end).
 pub const ROWS: usize = 49;
 
 /// Tracking steps between two rows of the table.
@@ -151,11 +152,16 @@ pub fn track(
             i += dir;
         }
     }
-    let rows = (0..ROWS)
-        .filter_map(|r| {
-            let pos = poses[r * SUB]?;
-            let q = grid(r * SUB);
-            Some([q, pos.a.x, pos.a.y, pos.b.x, pos.b.y, pos.p.x, pos.p.y])
+    // The rows: every SUB-th step the assembly was found at, and the last
+    // step found towards each end.
+    let found: Vec<usize> = (0..=steps).filter(|&i| poses[i].is_some()).collect();
+    let (first, last) = (found.first().copied(), found.last().copied());
+    let rows = found
+        .iter()
+        .filter(|&&i| i % SUB == 0 || Some(i) == first || Some(i) == last)
+        .filter_map(|&i| {
+            let pos = poses[i]?;
+            Some([grid(i), pos.a.x, pos.a.y, pos.b.x, pos.b.y, pos.p.x, pos.p.y])
         })
         .collect();
     Ok(Tracked {
@@ -448,4 +454,68 @@ fn forces(kind: &TriadKind<'_>, cx: &mut dyn ForceCx) {
         cx.reaction(revolute(&rx, &from, &links[3], joints[i], field));
     }
     cx.condition(quote!(#rx.min_pivot_ratio));
+}
+
+/// For a dependency cycle of three `rrr` statements each pinned to one
+/// known point outside the cycle (a class III group written as three
+/// dyads): what it is and the `triad` statement to write instead, with the
+/// names and lengths the statements give. `None` for any other cycle.
+pub fn cycle_hint(cycle: &[&Stmt]) -> Option<String> {
+    let [j1, j2, j3] = cycle else {
+        return None;
+    };
+    let names: Vec<String> = cycle.iter().map(|s| s.name.to_string()).collect();
+    let legs: Vec<(String, String)> = cycle
+        .iter()
+        .map(|s| {
+            let crate::model::Kind::Rrr { a, l1, b, l2, .. } = &s.kind else {
+                return None;
+            };
+            let inside = |n: &Ident| names.contains(&n.to_string());
+            let shown = |v: &Value| match v.fold() {
+                Some(x) => show_num(x),
+                None => v.tokens.to_string(),
+            };
+            match (inside(a), inside(b)) {
+                (false, true) => Some((a.to_string(), shown(l1))),
+                (true, false) => Some((b.to_string(), shown(l2))),
+                _ => None,
+            }
+        })
+        .collect::<Option<_>>()?;
+    let (a, b, p) = (&j1.name, &j2.name, &j3.name);
+    let known: Vec<String> = legs.iter().map(|(k, _)| format!("`{k}`")).collect();
+    let args: Vec<String> = legs.iter().map(|(k, l)| format!("{k}, {l}")).collect();
+    Some(format!(
+        "`{a}`, `{b}`, `{p}` are the joints of a ternary link on three legs from {}: a class III group (a triad), which no order of `rrr` statements can solve. Write the three as one statement: `let ({a}, {b}, {p}) = triad({}, |{a}{b}|, |{a}{p}|, angle of {p} from {a} -> {b}, INPUT = value, ({a}x, {a}y), ({b}x, {b}y), ({p}x, {p}y)) as (LEG1, LEG2, LEG3, TERNARY);` with the ternary link's shape and the joints' approximate positions at one input value (`docs/dsl.md`, \"triad\")",
+        known.join(", "),
+        args.join(", ")
+    ))
+}
+
+/// The rule that a triad's approximate pose is given at a value of one of
+/// the definition's inputs (`INPUT = value` names a driver's input).
+pub fn pose_input(model: &crate::model::Model, errors: &mut crate::diag::Diagnostics) {
+    let inputs: Vec<String> = model.inputs.iter().map(|i| i.name.to_string()).collect();
+    for stmt in &model.stmts {
+        let crate::model::Kind::Triad(t) = &stmt.kind else {
+            continue;
+        };
+        let name = t.at.0.to_string();
+        if inputs.contains(&name) {
+            continue;
+        }
+        errors.push(
+            t.at.0.span(),
+            format!(
+                "`{name}` is not an input: the triad's pose is given at a value of a driver's input ({}){}",
+                inputs
+                    .iter()
+                    .map(|i| format!("`{i}`"))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                crate::diag::did_you_mean(&name, inputs.iter().map(String::as_str))
+            ),
+        );
+    }
 }

@@ -537,6 +537,12 @@ fn link_count_message(l: &parse::Let, want: usize) -> String {
             "`{kind}` creates one link ({what}): name it alone, `as {}`, and remove {extra}",
             names[0]
         )
+    } else if want > 2 {
+        format!(
+            "`{kind}` creates {want} links ({what}), and {} names are given: name the {want}, `as ({})`",
+            given.len(),
+            names.join(", ")
+        )
     } else if given.len() > want {
         format!(
             "`{kind}` creates two links ({what}), and {} names are given: name the two, `as ({})`",
