@@ -1264,4 +1264,33 @@ mod tests {
             "{e:?}"
         );
     }
+
+    #[test]
+    fn near_from_table_interpolates_and_refuses_outside() {
+        // Proves the tracked-pose table is read by linear interpolation
+        // between the two rows around the input, with uneven spacing (a
+        // pose linear in the input is reproduced to rounding), that the
+        // ends are included, and that an input outside the rows, a NaN, or
+        // a one-row table is a typed error, not an extrapolation.
+        let row = |q: f64| [q, 1.0 + q, 2.0 - q, 3.0 * q, 4.0, -q, 0.5 * q];
+        let table = [row(-1.0), row(-0.25), row(0.5), row(2.0)];
+        for q in [-1.0, -0.6, -0.25, 0.1, 0.5, 1.7, 2.0] {
+            let n = near_from_table(&table, q).unwrap();
+            let want = row(q);
+            let got = [n.a.x, n.a.y, n.b.x, n.b.y, n.p.x, n.p.y];
+            for (g, w) in got.iter().zip(&want[1..]) {
+                assert!((g - w).abs() <= 4.0 * f64::EPSILON * (1.0 + w.abs()), "{q}: {g} vs {w}");
+            }
+        }
+        for q in [-1.000_000_1, 2.000_000_1, f64::NAN] {
+            let e = near_from_table(&table, q).unwrap_err();
+            assert!(
+                matches!(e.fault, Fault::NotNear { nearest, .. } if nearest.is_infinite())
+                    || matches!(e.fault, Fault::NonFinite { .. }),
+                "{q}: {e:?}"
+            );
+        }
+        assert!(near_from_table(&table[..1], -1.0).is_err());
+        assert!(near_from_table::<f64>(&[], 0.0).is_err());
+    }
 }

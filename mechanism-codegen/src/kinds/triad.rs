@@ -519,3 +519,114 @@ pub fn pose_input(model: &crate::model::Model, errors: &mut crate::diag::Diagnos
         );
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diag::Diagnostics;
+    use crate::model::{Kind, Model};
+
+    /// The definition `src` lowered (it must have no errors).
+    fn lowered(src: &str) -> Model {
+        let def = syn::parse_str::<crate::parse::Definition>(src).expect("parses");
+        let mut diag = Diagnostics::new();
+        let model = crate::model::lower(def, &mut diag);
+        let errors: Vec<String> = diag.finish().iter().map(ToString::to_string).collect();
+        assert!(errors.is_empty(), "{errors:?}");
+        model
+    }
+
+    const STEPHENSON: &str = "pub S {
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(0.30, 0.0);
+        let O6 = ground(0.05, 0.42);
+        let C = crank(O6, 0.24, phi) as link6;
+        let (A, B, P) = triad(O2, 0.08, O4, 0.20, C, 0.28, 0.26, 0.15, 40 deg,
+                              phi = -49.48 deg, (-0.061, -0.052), (0.137, 0.116), (-0.036, 0.096))
+            as (crank2, rocker, link5, coupler);
+    }";
+
+    #[test]
+    fn a_triad_is_lowered_as_its_joint_a_and_two_points_on_the_ternary() {
+        // Proves `let (A, B, P) = triad(..)` becomes the group statement `A`
+        // with four links and `B`, `P` as points of the ternary link from
+        // `A`: `B` at (ab, 0), `P` at the polar place given (in rad).
+        let model = lowered(STEPHENSON);
+        let names: Vec<String> = model.stmts.iter().map(|s| s.name.to_string()).collect();
+        assert_eq!(names, ["O2", "O4", "O6", "C", "A", "B", "P"]);
+        let a = &model.stmts[4];
+        assert!(matches!(a.kind, Kind::Triad(_)));
+        assert_eq!(a.links.len(), 4);
+        for (stmt, want) in [(&model.stmts[5], (0.26, 0.0)), (&model.stmts[6], (0.15, 40f64.to_radians()))] {
+            let Kind::Point { link, from, local } = &stmt.kind else {
+                panic!("{} is not a link point", stmt.name);
+            };
+            assert_eq!((link.to_string(), from.to_string()), ("coupler".into(), "A".into()));
+            let (x, y) = match local {
+                Local::Cartesian(x, y) | Local::Polar(x, y) => (num(x), num(y)),
+            };
+            assert!((x - want.0).abs() < 1e-15 && (y - want.1).abs() < 1e-15, "{x} {y}");
+        }
+    }
+
+    #[test]
+    fn tracking_over_a_range_wider_than_the_swing_finds_its_ends() {
+        // Proves the expansion-time tracking of the stated assembly over
+        // -60..0 deg stops at link 6's swing, whose ends (-50.4365077489 and
+        // -2.6333554164 deg, from the double-double reference's fold points
+        // in mechanism-core/tests/triad.rs) each lie inside a reported
+        // interval one step (60/768 deg) wide; the table's inputs increase
+        // and stay inside the swing, and every row closes the three legs.
+        let model = lowered(STEPHENSON);
+        let Kind::Triad(t) = &model.stmts[4].kind else {
+            unreachable!()
+        };
+        let ks = |q: f64| {
+            let c = Point2::new(0.05 + 0.24 * q.cos(), 0.42 + 0.24 * q.sin());
+            Some([Point2::new(0.0, 0.0), Point2::new(0.30, 0.0), c])
+        };
+        let (lo, hi) = ((-60f64).to_radians(), 0.0);
+        let tracked = track(t, lo, hi, &ks).expect("the stated pose selects an assembly");
+        let step = (hi - lo) / ((ROWS - 1) * SUB) as f64;
+        let mut ends = tracked.ends.clone();
+        ends.sort_by(|a, b| a.0.total_cmp(&b.0));
+        assert_eq!(ends.len(), 2, "{ends:?}");
+        for ((a, b), want) in ends.iter().zip([-50.4365077489f64, -2.6333554164]) {
+            let want = want.to_radians();
+            assert!(*a < want && want < *b, "{want} not in [{a}, {b}]");
+            assert!((b - a - step).abs() < 1e-12, "{a} {b}");
+        }
+        let rows = &tracked.rows;
+        assert!(rows.windows(2).all(|w| w[0][0] < w[1][0]));
+        assert!(rows[0][0] > ends[0].0 && rows[rows.len() - 1][0] < ends[1].1);
+        for r in rows {
+            let [_, _, k3] = ks(r[0]).unwrap();
+            let leg = |x: f64, y: f64, k: Point2<f64>| ((x - k.x).hypot(y - k.y));
+            assert!((leg(r[1], r[2], Point2::new(0.0, 0.0)) - 0.08).abs() < 1e-14);
+            assert!((leg(r[3], r[4], Point2::new(0.30, 0.0)) - 0.20).abs() < 1e-14);
+            assert!((leg(r[5], r[6], k3) - 0.28).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn only_a_cycle_of_three_pinned_rrr_is_called_a_triad() {
+        // Proves the cycle hint names the class III group, with the legs'
+        // known points and lengths, for three RRR statements each pinned to
+        // one point outside the cycle, and says nothing for a cycle of two.
+        let model = lowered(
+            "pub S {
+                let O2 = ground(0.0, 0.0);
+                let O4 = ground(0.30, 0.0);
+                let C = ground(0.2, 0.4);
+                let A = rrr(O2, 0.08, B, 0.26, left);
+                let B = rrr(O4, 0.20, P, 0.15, right);
+                let P = rrr(C, 0.28, A, 0.15, left);
+            }",
+        );
+        let cycle: Vec<&Stmt> = model.stmts[3..].iter().collect();
+        let hint = cycle_hint(&cycle).expect("a triad");
+        assert!(hint.contains("class III"), "{hint}");
+        assert!(hint.contains("triad(O2, 0.08, O4, 0.2, C, 0.28,"), "{hint}");
+        assert!(cycle_hint(&cycle[..2]).is_none());
+    }
+}
