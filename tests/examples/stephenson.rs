@@ -155,3 +155,33 @@ fn forces_pass_the_power_balance() {
         assert!(f.drive_phi.abs() > 1e-3, "{}", f.drive_phi);
     }
 }
+
+#[test]
+fn batch_solves_each_triad_element_like_the_scalar_path() {
+    // Proves the batch form (a scalar per-element path: the triad has no
+    // lane kernel) gives, bit for bit, what `position`, `velocity` and
+    // `acceleration` give at 32 inputs inside the swing, and marks an input
+    // beyond the swing's end as failed rather than writing another
+    // assembly.
+    let m = Stephenson::<f64>::default();
+    let (lo, hi) = st::swing(&m);
+    let n = 33;
+    let mut c = Stephenson::<f64>::batch(n);
+    for k in 0..n {
+        c.in_phi[k] = if k == n - 1 { hi + 0.01 } else { lo + (hi - lo) * (k as f64 + 0.5) / (n - 1) as f64 };
+        c.rate_phi[k] = st::PHI_DOT;
+        c.accel_phi[k] = st::PHI_DDOT;
+    }
+    assert_eq!(m.solve_columns(&mut c), Ok(1));
+    for k in 0..n - 1 {
+        let input = StephensonInput { phi: c.in_phi[k] };
+        let p = m.position(&input).unwrap();
+        let v = m.velocity(&p, &StephensonInput { phi: st::PHI_DOT }).unwrap();
+        let a = m.acceleration(&p, &v, &StephensonInput { phi: st::PHI_DDOT }).unwrap();
+        assert_eq!(c.status[k], 0);
+        assert_eq!((c.pos_P_x[k], c.pos_P_y[k]), (p.P.x, p.P.y));
+        assert_eq!((c.vel_coupler[k], c.acc_rocker[k]), (v.coupler, a.rocker));
+    }
+    assert_ne!(c.status[n - 1], 0);
+    assert_eq!(c.pos_A_x[n - 1], 0.0);
+}
