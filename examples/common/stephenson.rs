@@ -40,7 +40,7 @@ mechanism! {
         gravity (0.0, -9.81);
         force at P on coupler = (0.0, fp);
         range phi = (-50.43 deg, -2.64 deg);
-        outputs { A, B, P, C, crank2, coupler, rocker, link5, link6 }
+        outputs { O2, O4, O6, A, B, P, C, crank2, coupler, rocker, link5, link6 }
     }
 }
 
