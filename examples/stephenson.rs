@@ -86,7 +86,13 @@ fn main() {
     }
     if !csv {
         outln!();
-        outln!("{}", common::header(&["phi_deg", "torque", "O2_x", "O2_y", "O4_x", "O4_y", "C_x", "C_y"], 10));
+        outln!(
+            "{}",
+            common::header(
+                &["phi_deg", "torque", "O2_x", "O2_y", "O4_x", "O4_y", "C_x", "C_y"],
+                10
+            )
+        );
         for (phi, fr) in &force_rows {
             let mut v = vec![*phi];
             v.extend_from_slice(&fr[..7]);

@@ -62,7 +62,9 @@ pub fn follow(
     from_phi: f64,
     phi: f64,
 ) -> Result<StephensonPosition<f64>, mechanism::Error> {
-    let steps = ((phi - from_phi).abs() / 0.25f64.to_radians()).ceil().max(1.0) as usize;
+    let steps = ((phi - from_phi).abs() / 0.25f64.to_radians())
+        .ceil()
+        .max(1.0) as usize;
     let mut pos = *from;
     for k in 1..=steps {
         let q = from_phi + (phi - from_phi) * k as f64 / steps as f64;

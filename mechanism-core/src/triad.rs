@@ -210,7 +210,12 @@ impl<T: Real> Near<T> {
 pub fn near_from_table<T: Real>(table: &[[f64; 7]], q: T) -> Result<Near<T>, Error<T>> {
     let x = q.as_f64();
     if !x.is_finite() {
-        return Err(Error::new(PRIM, Fault::NonFinite { what: "triad input" }));
+        return Err(Error::new(
+            PRIM,
+            Fault::NonFinite {
+                what: "triad input",
+            },
+        ));
     }
     let outside = Error::new(
         PRIM,
@@ -1279,7 +1284,10 @@ mod tests {
             let want = row(q);
             let got = [n.a.x, n.a.y, n.b.x, n.b.y, n.p.x, n.p.y];
             for (g, w) in got.iter().zip(&want[1..]) {
-                assert!((g - w).abs() <= 4.0 * f64::EPSILON * (1.0 + w.abs()), "{q}: {g} vs {w}");
+                assert!(
+                    (g - w).abs() <= 4.0 * f64::EPSILON * (1.0 + w.abs()),
+                    "{q}: {g} vs {w}"
+                );
             }
         }
         for q in [-1.000_000_1, 2.000_000_1, f64::NAN] {

@@ -25,10 +25,7 @@ fn reference(phi: f64) -> (TriadRef, [[Dd; 2]; 3]) {
     // C's velocity and acceleration: phi' = 1.5, phi'' = -0.5.
     let (w, al) = (Dd::from(st::PHI_DOT), Dd::from(st::PHI_DDOT));
     let vc = [-(r * w * s), r * w * c];
-    let ac = [
-        -(r * al * s) - r * w * w * c,
-        r * al * c - r * w * w * s,
-    ];
+    let ac = [-(r * al * s) - r * w * w * c, r * al * c - r * w * w * s];
     (t, [[Dd::ZERO; 2], vc, ac])
 }
 
@@ -80,7 +77,11 @@ fn every_column_matches_the_double_double_reference() {
     let m = Stephenson::<f64>::default();
     let (lo, hi) = st::swing(&m);
     for (end, want) in [(lo, -50.4365077489), (hi, -2.6333554164)] {
-        assert!((end.to_degrees() - want).abs() < 1e-9, "{}", end.to_degrees());
+        assert!(
+            (end.to_degrees() - want).abs() < 1e-9,
+            "{}",
+            end.to_degrees()
+        );
     }
     let rows = st::rows(&m, (lo, hi), 64);
     let got: Vec<[f64; 16]> = rows.iter().map(st::Row::columns).collect();
@@ -92,8 +93,16 @@ fn every_column_matches_the_double_double_reference() {
             .zip(&want)
             .map(|(g, w)| (g[c] - w[c]).abs())
             .fold(0.0, f64::max);
-        println!("{:>18}: worst {:.1e} of {scale:.3e}", st::COLUMNS[c], worst / scale);
-        assert!(worst <= 1e-13 * scale, "{}: {worst:e} of {scale:e}", st::COLUMNS[c]);
+        println!(
+            "{:>18}: worst {:.1e} of {scale:.3e}",
+            st::COLUMNS[c],
+            worst / scale
+        );
+        assert!(
+            worst <= 1e-13 * scale,
+            "{}: {worst:e} of {scale:e}",
+            st::COLUMNS[c]
+        );
     }
 }
 
@@ -124,13 +133,19 @@ fn tracking_stays_on_its_assembly_and_reports_the_swing_ends() {
             assert!(miss <= 1e-13, "at {} deg: {miss:e}", q.to_degrees());
             let fresh = m.position(&StephensonInput { phi: q });
             if let Ok(f) = fresh {
-                assert!((f.A - pos.A).amax() <= 1e-13, "position() at {}", q.to_degrees());
+                assert!(
+                    (f.A - pos.A).amax() <= 1e-13,
+                    "position() at {}",
+                    q.to_degrees()
+                );
             }
         }
         let past = end + dir * 1e-6;
         let last = st::follow(&m, &pos, q, end - dir * 1e-9).unwrap();
         match m.position_near(&last, &StephensonInput { phi: past }) {
-            Err(Error { group: "A", fault, .. }) => assert!(
+            Err(Error {
+                group: "A", fault, ..
+            }) => assert!(
                 matches!(fault, Fault::NotNear { .. } | Fault::CannotAssemble { .. }),
                 "{fault:?}"
             ),
@@ -151,7 +166,11 @@ fn forces_pass_the_power_balance() {
     let loads = StephensonLoads { fp: -20.0 };
     for row in st::rows(&m, swing, 64) {
         let f = m.forces(&row.p, &row.v, &row.a, &loads).unwrap();
-        assert!(f.power_residual.abs() <= 8.0 * f64::EPSILON, "{}", f.power_residual);
+        assert!(
+            f.power_residual.abs() <= 8.0 * f64::EPSILON,
+            "{}",
+            f.power_residual
+        );
         assert!(f.drive_phi.abs() > 1e-3, "{}", f.drive_phi);
     }
 }
@@ -168,7 +187,11 @@ fn batch_solves_each_triad_element_like_the_scalar_path() {
     let n = 33;
     let mut c = Stephenson::<f64>::batch(n);
     for k in 0..n {
-        c.in_phi[k] = if k == n - 1 { hi + 0.01 } else { lo + (hi - lo) * (k as f64 + 0.5) / (n - 1) as f64 };
+        c.in_phi[k] = if k == n - 1 {
+            hi + 0.01
+        } else {
+            lo + (hi - lo) * (k as f64 + 0.5) / (n - 1) as f64
+        };
         c.rate_phi[k] = st::PHI_DOT;
         c.accel_phi[k] = st::PHI_DDOT;
     }
@@ -176,8 +199,12 @@ fn batch_solves_each_triad_element_like_the_scalar_path() {
     for k in 0..n - 1 {
         let input = StephensonInput { phi: c.in_phi[k] };
         let p = m.position(&input).unwrap();
-        let v = m.velocity(&p, &StephensonInput { phi: st::PHI_DOT }).unwrap();
-        let a = m.acceleration(&p, &v, &StephensonInput { phi: st::PHI_DDOT }).unwrap();
+        let v = m
+            .velocity(&p, &StephensonInput { phi: st::PHI_DOT })
+            .unwrap();
+        let a = m
+            .acceleration(&p, &v, &StephensonInput { phi: st::PHI_DDOT })
+            .unwrap();
         assert_eq!(c.status[k], 0);
         assert_eq!((c.pos_P_x[k], c.pos_P_y[k]), (p.P.x, p.P.y));
         assert_eq!((c.vel_coupler[k], c.acc_rocker[k]), (v.coupler, a.rocker));

@@ -161,7 +161,15 @@ pub fn track(
         .filter(|&&i| i % SUB == 0 || Some(i) == first || Some(i) == last)
         .filter_map(|&i| {
             let pos = poses[i]?;
-            Some([grid(i), pos.a.x, pos.a.y, pos.b.x, pos.b.y, pos.p.x, pos.p.y])
+            Some([
+                grid(i),
+                pos.a.x,
+                pos.a.y,
+                pos.b.x,
+                pos.b.y,
+                pos.p.x,
+                pos.p.y,
+            ])
         })
         .collect();
     Ok(Tracked {
@@ -304,9 +312,25 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         };
         let gr = cx.group(self.stmt, call, quote!(triad), "Triad");
         let (pt, rates) = if cx.accel() {
-            (quote!(aa), [quote!(alpha1), quote!(alpha2), quote!(alpha3), quote!(alpha)])
+            (
+                quote!(aa),
+                [
+                    quote!(alpha1),
+                    quote!(alpha2),
+                    quote!(alpha3),
+                    quote!(alpha),
+                ],
+            )
         } else {
-            (quote!(va), [quote!(omega1), quote!(omega2), quote!(omega3), quote!(omega)])
+            (
+                quote!(va),
+                [
+                    quote!(omega1),
+                    quote!(omega2),
+                    quote!(omega3),
+                    quote!(omega),
+                ],
+            )
         };
         cx.named(cx.motion(self.stmt), quote!(#gr.#pt), vec_ty());
         for (i, r) in rates.iter().enumerate() {
@@ -557,15 +581,24 @@ mod tests {
         let a = &model.stmts[4];
         assert!(matches!(a.kind, Kind::Triad(_)));
         assert_eq!(a.links.len(), 4);
-        for (stmt, want) in [(&model.stmts[5], (0.26, 0.0)), (&model.stmts[6], (0.15, 40f64.to_radians()))] {
+        for (stmt, want) in [
+            (&model.stmts[5], (0.26, 0.0)),
+            (&model.stmts[6], (0.15, 40f64.to_radians())),
+        ] {
             let Kind::Point { link, from, local } = &stmt.kind else {
                 panic!("{} is not a link point", stmt.name);
             };
-            assert_eq!((link.to_string(), from.to_string()), ("coupler".into(), "A".into()));
+            assert_eq!(
+                (link.to_string(), from.to_string()),
+                ("coupler".into(), "A".into())
+            );
             let (x, y) = match local {
                 Local::Cartesian(x, y) | Local::Polar(x, y) => (num(x), num(y)),
             };
-            assert!((x - want.0).abs() < 1e-15 && (y - want.1).abs() < 1e-15, "{x} {y}");
+            assert!(
+                (x - want.0).abs() < 1e-15 && (y - want.1).abs() < 1e-15,
+                "{x} {y}"
+            );
         }
     }
 
@@ -601,7 +634,7 @@ mod tests {
         assert!(rows[0][0] > ends[0].0 && rows[rows.len() - 1][0] < ends[1].1);
         for r in rows {
             let [_, _, k3] = ks(r[0]).unwrap();
-            let leg = |x: f64, y: f64, k: Point2<f64>| ((x - k.x).hypot(y - k.y));
+            let leg = |x: f64, y: f64, k: Point2<f64>| (x - k.x).hypot(y - k.y);
             assert!((leg(r[1], r[2], Point2::new(0.0, 0.0)) - 0.08).abs() < 1e-14);
             assert!((leg(r[3], r[4], Point2::new(0.30, 0.0)) - 0.20).abs() < 1e-14);
             assert!((leg(r[5], r[6], k3) - 0.28).abs() < 1e-14);

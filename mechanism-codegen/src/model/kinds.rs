@@ -343,7 +343,9 @@ fn input_at(a: &mut Args) -> Option<(Ident, Value)> {
         Some(u) => {
             a.fail(
                 u.span(),
-                format!("unknown unit `{u}`; write `deg` or `rad` for an angle, nothing for a length"),
+                format!(
+                    "unknown unit `{u}`; write `deg` or `rad` for an angle, nothing for a length"
+                ),
             );
             return None;
         }

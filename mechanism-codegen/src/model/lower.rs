@@ -394,21 +394,24 @@ fn triad_joints(l: &parse::Let, kind: &Kind, links: &[Ident]) -> Vec<Stmt> {
         Local::Polar(d, a) => Local::Polar(d.clone(), a.clone()),
         Local::Cartesian(x, y) => Local::Cartesian(x.clone(), y.clone()),
     };
-    [(&t.b, Local::Cartesian(t.ab.clone(), zero)), (&t.p, p_local)]
-        .into_iter()
-        .map(|(name, local)| Stmt {
-            name: name.clone(),
-            kind_token: l.kind.clone(),
-            kind: Kind::Point {
-                link: ternary.clone(),
-                from: l.name.clone(),
-                local,
-            },
-            links: Vec::new(),
-            links_named: Vec::new(),
-            slides: Vec::new(),
-        })
-        .collect()
+    [
+        (&t.b, Local::Cartesian(t.ab.clone(), zero)),
+        (&t.p, p_local),
+    ]
+    .into_iter()
+    .map(|(name, local)| Stmt {
+        name: name.clone(),
+        kind_token: l.kind.clone(),
+        kind: Kind::Point {
+            link: ternary.clone(),
+            from: l.name.clone(),
+            local,
+        },
+        links: Vec::new(),
+        links_named: Vec::new(),
+        slides: Vec::new(),
+    })
+    .collect()
 }
 
 /// A `let` statement whose arguments were rejected: the names it meant to

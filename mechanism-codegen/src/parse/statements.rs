@@ -89,11 +89,11 @@ fn parse_let(input: ParseStream, start: Cursor) -> syn::Result<Item> {
         first.clone()
     } else {
         input.parse().map_err(|e| {
-        syn::Error::new(
+            syn::Error::new(
             e.span(),
             "expected the name this statement defines (a letter first): `let NAME = KIND(args);`",
         )
-    })?
+        })?
     };
     let joints = joints.into_iter().skip(1).collect();
     input.parse::<Token![=]>().map_err(|e| {

@@ -83,7 +83,9 @@ pub fn links_created(kind: &str) -> &'static str {
         "rpr" => "the block pinned at A, and the link pivoted at B",
         "prp" => "the block on the first guide, and the block on the second",
         "rpp" => "the block pinned at A, and the slotted link sliding on the guide",
-        "triad" => "leg 1 from K1 to A, leg 2 from K2 to B, leg 3 from K3 to P, and the ternary link A-B-P",
+        "triad" => {
+            "leg 1 from K1 to A, leg 2 from K2 to B, leg 3 from K3 to P, and the ternary link A-B-P"
+        }
         _ => "",
     }
 }
