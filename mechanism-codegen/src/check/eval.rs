@@ -146,7 +146,14 @@ pub fn track_triads(
                         crate::diag::show_num(x)
                     }
                 };
-                let message = if q >= range.lo && q <= range.hi {
+                let inside = q >= range.lo && q <= range.hi;
+                // On the pose's first coordinate, or on the input's value.
+                let span = if inside {
+                    t.near[0].0.span
+                } else {
+                    t.at.1.span
+                };
+                let message = if inside {
                     format!(
                         "the approximate pose of `{}`, `{}`, `{}` given at `{} = {}` selects no assembly of the triad there ({}); give the joints' positions at that input to within a fraction of the legs' lengths",
                         stmt.name, t.b, t.p, t.at.0, shown(q), why(&e.fault)
@@ -160,7 +167,7 @@ pub fn track_triads(
                         shown(range.hi)
                     )
                 };
-                errors.error(syn::Error::new_spanned(&t.at.1.tokens, message));
+                errors.push(span, message);
             }
         }
     }

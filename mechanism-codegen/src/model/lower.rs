@@ -525,7 +525,13 @@ fn link_count_message(l: &parse::Let, want: usize) -> String {
     let given: Vec<String> = l.links.iter().map(Ident::to_string).collect();
     let mut names: Vec<String> = given.iter().take(want).cloned().collect();
     while names.len() < want {
-        let next = next_name(names.last().map_or("link", String::as_str));
+        // A triad's links by role (a number after the last given name may
+        // be a link of the crank that drives it).
+        let next = match (l.kind == "triad", names.len()) {
+            (true, 3) => "ternary".to_string(),
+            (true, k) => format!("leg{}", k + 1),
+            _ => next_name(names.last().map_or("link", String::as_str)),
+        };
         names.push(next);
     }
     let kind = &l.kind;
