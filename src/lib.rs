@@ -75,7 +75,10 @@
 //! - `rayon`: `par_solve`, a generated batch split over rayon's thread pool
 //!   (needs `std`).
 //! - `serde`: `Serialize` for the core's results, errors and check reports
-//!   (and `Deserialize` where the type owns its data), `no_std` compatible.
+//!   (and `Deserialize` where the type owns its data), `no_std` compatible;
+//!   a definition written with `#[derive(serde::Serialize,
+//!   serde::Deserialize)]` gets them for its generated types too (the
+//!   mechanism's page, "Attributes").
 //!
 //! Without features the crate is `#![no_std]` and allocates nothing.
 #![no_std]
@@ -111,6 +114,10 @@ pub use batch::{par_solve, PAR_MIN_PIECE};
 pub use batch::{BatchError, BatchSplit};
 
 pub mod example;
+
+#[doc(hidden)]
+#[path = "interop.rs"]
+pub mod __interop;
 
 #[cfg(feature = "alloc")]
 extern crate alloc;

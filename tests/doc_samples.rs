@@ -233,6 +233,61 @@ mod dsl_intro {
     }
 }
 
+/// docs/dsl.md, `Display` of a solution (the sample verbatim).
+mod dsl_display {
+    use mechanism::mechanism;
+
+    mechanism! {
+        pub Crank {
+            outputs { A, link2 }
+            let O = ground(0.0, 0.0);
+            let A = crank(O, 1.0, th) as link2;
+            mass link2 { m = 2.0, at = A };
+            gravity (0.0, -10.0);
+        }
+    }
+
+    #[rustfmt::skip] // verbatim from docs/dsl.md
+    #[test]
+    fn display_sample() {
+        let i = |th| CrankInput { th };
+        let s = Crank::<f64>::default().solve(&i(60f64.to_radians()), &i(1.0), &i(0.0)).unwrap();
+        assert_eq!(format!("{s:.3}"), "\
+position: A = (0.500, 0.866) L, link2 = 1.047 rad
+velocity: A = (-0.866, 0.500) L/s, link2 = 1.000 rad/s, condition = 1.000
+acceleration: A = (-0.500, -0.866) L/s^2, link2 = 0.000 rad/s^2
+forces: r_ground_link2 = (-1.000, 18.268) F, drive_th = 10.000 F L, condition = 1.000, power_residual = 0.000");
+    }
+}
+
+/// docs/assembly-modes.md, the mode at run time (the sample verbatim).
+mod assembly_modes_runtime {
+    use mechanism::mechanism;
+
+    mechanism! {
+        pub FourBar {
+            params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8, circuit = left }
+            let O2 = ground(0.0, 0.0);
+            let O4 = ground(ground, 0.0);
+            let A = crank(O2, crank, theta2) as link2;
+            let B = rrr(A, coupler, O4, rocker, circuit) as (link3, link4);
+        }
+    }
+
+    #[rustfmt::skip] // verbatim from docs/assembly-modes.md
+    #[test]
+    fn runtime_mode_sample() -> Result<(), mechanism::Error> {
+        let mut fb = FourBar::<f64>::default();          // fb.circuit == Mode::Plus (`left`)
+        let left = fb.position(&FourBarInput { theta2: 0.5 })?;
+        fb.circuit = mechanism::Mode::Minus;             // the other circuit, same dimensions
+        let right = fb.position(&FourBarInput { theta2: 0.5 })?;
+        assert_eq!(FourBar::<f64>::default().circuit, mechanism::Mode::Plus);
+        // This crank-rocker's two circuits lie on either side of the ground line.
+        assert!(left.B.y > 0.0 && right.B.y < 0.0);
+        Ok(())
+    }
+}
+
 /// docs/dsl.md, the force analysis sample.
 mod dsl_press {
     use mechanism::mechanism;

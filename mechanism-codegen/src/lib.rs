@@ -33,7 +33,7 @@ pub fn expand(input: TokenStream) -> TokenStream {
         Err(e) => return e.to_compile_error(),
     };
     let mut diag = diag::Diagnostics::new();
-    let model = model::lower(definition, &mut diag);
+    let mut model = model::lower(definition, &mut diag);
     validate::model(&model, &mut diag);
     let plan = plan::plan(&model, &mut diag);
     if let Some(plan) = &plan {
@@ -44,6 +44,7 @@ pub fn expand(input: TokenStream) -> TokenStream {
         _ => return emit::stub::emit(&model, diag.finish()),
     };
     let findings = check::expansion_check(&model, &plan, &mut diag);
+    check::modes::other_modes(&mut model, &plan, &mut diag);
     if !diag.is_empty() {
         return emit::stub::emit(&model, diag.finish());
     }

@@ -27,6 +27,7 @@
 mod eval;
 mod explain;
 mod failures;
+pub mod modes;
 mod singular;
 
 use crate::diag::{show_interval, Diagnostics};

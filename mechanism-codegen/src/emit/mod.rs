@@ -11,7 +11,9 @@
 pub mod batch;
 pub mod check_fn;
 pub mod describe;
+mod display;
 pub mod forces;
+mod interop;
 mod names;
 mod position;
 mod rates;
@@ -120,6 +122,10 @@ fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
         out.push(rates::acceleration_items(model, plan, accel, &reads));
         out.push(solution::solve_items(model, forces.as_ref()));
     }
+    // `Display` of the result structs, and what the definition's derives ask for.
+    let force_fields = forces.as_ref().map(|f| f.fields.as_slice());
+    out.items.extend(display::emit(model, plan, force_fields));
+    out.items.extend(interop::emit(model, plan, force_fields));
     // Batch API (structure of arrays, issue 5): see `batch`.
     out.items
         .extend(batch::emit(model, plan, &inputs, &position.outputs));

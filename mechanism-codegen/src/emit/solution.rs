@@ -5,6 +5,7 @@
 use super::forces::ForcesCode;
 use super::names::{allow_literal_lints, marker, Generated, TypeNames};
 use crate::kinds;
+use crate::kinds::tokens::mode_tokens;
 use crate::model::{Level, Model, Stmt};
 use crate::plan::Plan;
 use crate::value::lit;
@@ -50,8 +51,13 @@ pub(super) fn own_items(model: &Model, plan: &Plan, inputs: &[Ident]) -> Generat
     let param_defaults: Vec<TokenStream> = model.params.iter().map(|(_, v)| lit(*v)).collect();
     // With `params` the struct can be written out in full
     // (`FourBar { ground: 0.3, crank: 0.1, .. }`, no hidden field).
-    let (params_marker, params_marker_init) = marker(param_names.is_empty());
+    let (params_marker, params_marker_init) =
+        marker(param_names.is_empty() && model.modes.is_empty());
+    let mode_names: Vec<&Ident> = model.modes.iter().map(|(n, _)| n).collect();
+    let mode_defaults: Vec<TokenStream> =
+        model.modes.iter().map(|(_, m)| mode_tokens(*m)).collect();
     let structure = structure_doc(model, plan);
+    let derives = super::interop::passed_on(model);
     let input_doc = format!("Inputs of [`{name}`], one per driver: angles in rad, lengths in the definition's unit. The same struct carries their rates and accelerations.");
     let allow_lints = allow_literal_lints();
     let items = quote! {
@@ -59,8 +65,10 @@ pub(super) fn own_items(model: &Model, plan: &Plan, inputs: &[Ident]) -> Generat
         #[doc = ""]
         #[doc = #structure]
         #[derive(Clone, Copy, Debug, PartialEq)]
+        #derives
         #vis struct #name<T = ::core::primitive::f64> {
             #(#[doc = "Run-time parameter (default from the definition)."] pub #param_names: T,)*
+            #(#[doc = "Run-time assembly mode of the groups that name it (default from the definition; see `docs/assembly-modes.md`)."] pub #mode_names: ::mechanism::Mode,)*
             #params_marker
         }
 
@@ -68,12 +76,13 @@ pub(super) fn own_items(model: &Model, plan: &Plan, inputs: &[Ident]) -> Generat
         impl<T: ::mechanism::Real> ::core::default::Default for #name<T> {
             #[inline]
             fn default() -> Self {
-                #name { #(#param_names: #param_defaults,)* #params_marker_init }
+                #name { #(#param_names: #param_defaults,)* #(#mode_names: #mode_defaults,)* #params_marker_init }
             }
         }
 
         #[doc = #input_doc]
         #[derive(Clone, Copy, Debug, PartialEq)]
+        #derives
         #[allow(non_snake_case)]
         #vis struct #input_ty<T = ::core::primitive::f64> {
             #(#[doc = "Driver input (or its rate / acceleration)."] pub #inputs: T,)*

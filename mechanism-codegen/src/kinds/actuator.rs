@@ -7,7 +7,7 @@ use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
 use super::rates::{states, two_links, RateCx};
-use super::tokens::{arm, grp, local, mode_tokens};
+use super::tokens::{arm, grp, local, mode_arg};
 use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
@@ -66,7 +66,7 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
     }
 
     fn position(&self, _cos_sin: bool) -> Solve {
-        let (l, m, input) = (self.l.emit(), mode_tokens(self.mode), self.input);
+        let (l, m, input) = (self.l.emit(), mode_arg(self.stmt, self.mode), self.input);
         let (a, b) = (local(self.a), local(self.b));
         Solve::Group {
             call: quote!(::mechanism::driver::actuator::position(&#a, #l, &#b, input.#input, #m)),
@@ -158,7 +158,7 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         );
         format!(
             "driver: linear actuator `{links}` from `{b}`, link pivoted at `{a}`, input `{input}`, joint `{n}`, {}",
-            mode_text(self.mode)
+            mode_text(self.stmt, self.mode)
         )
     }
 

@@ -10,7 +10,8 @@
 //! `w_link3` / `al_link3` a link's angular velocity and acceleration,
 //! `s0_B` / `sd0_B` / `sdd0_B` a slide and its rates, `ln_line` a guide's
 //! `mechanism::__private::lane::Line`. Values that do not depend on the element (a unit
-//! vector at a run-time angle, `u_NAME`) are computed once before the loop.
+//! vector at a run-time angle, `u_NAME`; the sign of a run-time assembly
+//! mode, `m_NAME`) are computed once before the loop.
 
 use crate::model::{Mode, Stmt};
 use crate::value::{lit, Value};
@@ -324,6 +325,21 @@ pub(crate) struct Step<'s> {
 }
 
 impl<'s> Step<'s> {
+    /// The sign of the statement's assembly mode `mode` (see [`sign`]), or
+    /// of its run-time mode parameter: the local `m_NAME`, set once before
+    /// the loop from `self.PARAM`.
+    pub(crate) fn sign(&mut self, mode: &Mode) -> TokenStream {
+        match &self.stmt.mode_param {
+            Some(param) => {
+                let local = format_ident!("m_{}", self.name);
+                self.pre
+                    .extend(quote!(let #local: T = ::mechanism::Mode::sign::<T>(self.#param);));
+                quote!(#local)
+            }
+            None => sign(mode),
+        }
+    }
+
     pub(crate) fn new(stmt: &'s Stmt) -> Step<'s> {
         Step {
             stmt,

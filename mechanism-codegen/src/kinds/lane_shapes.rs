@@ -2,7 +2,7 @@
 //! and the actuator), unit vectors along guides, carried guide lines and
 //! points' offsets in their link's frame.
 
-use super::lane::{sign, Lane, LaneGuide, LaneLink, PointLocals, Step, Vector};
+use super::lane::{Lane, LaneGuide, LaneLink, PointLocals, Step, Vector};
 use crate::model::{Local, Mode};
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
@@ -55,7 +55,7 @@ pub(crate) fn dyad(
             quote!(#s_in[k])
         }
     };
-    let sign = sign(mode);
+    let sign = s.sign(mode);
     let (r1, r2) = (s.rates(0)?, s.rates(1)?);
     let (w1, al1, w2, al2) = (&r1.omega, &r1.alpha, &r2.omega, &r2.alpha);
     let (apx, apy, bpx, bpy) = (&pa.px, &pa.py, &pb.px, &pb.py);

@@ -386,10 +386,14 @@ fn links_text(stmt: &Stmt) -> String {
 }
 
 /// How the structure listing writes an assembly mode.
-fn mode_text(m: crate::model::Mode) -> &'static str {
-    match m {
+fn mode_text(stmt: &Stmt, m: crate::model::Mode) -> String {
+    let literal = match m {
         crate::model::Mode::Plus => "mode plus (m = +1)",
         crate::model::Mode::Minus => "mode minus (m = -1)",
+    };
+    match &stmt.mode_param {
+        Some(p) => format!("{literal} by default, at run time the parameter `{p}`"),
+        None => literal.to_string(),
     }
 }
 

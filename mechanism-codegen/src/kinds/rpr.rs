@@ -3,10 +3,10 @@
 
 use super::closure::{f, mode_sign, Residuals};
 use super::forces::{inner, revolute, rx, ForceCx};
-use super::lane::{sign, Lane, LaneLink, Step};
+use super::lane::{Lane, LaneLink, Step};
 use super::lane_shapes::along_line;
 use super::rates::{states, Pieces, RateCx};
-use super::tokens::{grp, local, mode_tokens, unit_field};
+use super::tokens::{grp, local, mode_arg, unit_field};
 use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
@@ -62,7 +62,7 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
     }
 
     fn position(&self, _cos_sin: bool) -> Solve {
-        let (m, o) = (mode_tokens(self.mode), self.offset.emit());
+        let (m, o) = (mode_arg(self.stmt, self.mode), self.offset.emit());
         let (a, b) = (local(self.a), local(self.b));
         Solve::Group {
             call: quote!(::mechanism::dyad::rpr::position(&#a, &#b, #o, #m)),
@@ -160,7 +160,7 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
         let (n, links, a, b) = (&self.stmt.name, links_text(self.stmt), self.a, self.b);
         format!(
             "RPR group `{links}`: block at `{a}` on link pivoted at `{b}`, slide `{n}`, {}",
-            mode_text(self.mode)
+            mode_text(self.stmt, self.mode)
         )
     }
 
@@ -242,7 +242,7 @@ fn lane_steps(
     let (pa, pb) = (lane.point(a)?, lane.point(b)?);
     s.defines_no_point();
     let g = s.g.clone();
-    let (o, sign) = (offset.emit(), sign(mode));
+    let (o, sign) = (offset.emit(), s.sign(mode));
     let r = s.rates(0)?;
     let (w, al) = (&r.omega, &r.alpha);
     let slide = s.slide_locals(0);

@@ -3,10 +3,10 @@
 
 use super::closure::{axis_between, f, guide_axis, mode_sign, Residuals};
 use super::forces::{inner, prismatic, revolute, rx, ForceCx};
-use super::lane::{sign, Lane, LaneLink, PointLocals, Step};
+use super::lane::{Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::{along_line, line_axis};
 use super::rates::{states, vec_ty, Pieces, RateCx};
-use super::tokens::{along, arm, grp, local, mode_tokens};
+use super::tokens::{along, arm, grp, local, mode_arg};
 use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
@@ -64,7 +64,11 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
     }
 
     fn position(&self, _cos_sin: bool) -> Solve {
-        let (l, m, o) = (self.l.emit(), mode_tokens(self.mode), self.offset.emit());
+        let (l, m, o) = (
+            self.l.emit(),
+            mode_arg(self.stmt, self.mode),
+            self.offset.emit(),
+        );
         let (a, guide) = (local(self.a), local(self.guide));
         Solve::Group {
             call: quote!(::mechanism::dyad::rrp::position(&#a, #l, &#guide, #o, #m)),
@@ -156,7 +160,7 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
         let (n, links, a, guide) = (&self.stmt.name, links_text(self.stmt), self.a, self.guide);
         format!(
             "RRP group `{links}`: `{a}` and guide `{guide}` -> `{n}`, {}",
-            mode_text(self.mode)
+            mode_text(self.stmt, self.mode)
         )
     }
 
@@ -214,7 +218,7 @@ fn lane_steps(
     } = s.own.clone();
     let g = s.g.clone();
     let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
-    let (l, o, sign) = (l.emit(), offset.emit(), sign(mode));
+    let (l, o, sign) = (l.emit(), offset.emit(), s.sign(mode));
     let r1 = s.rates(0)?;
     let (w1, al1) = (&r1.omega, &r1.alpha);
     let slide = s.slide_locals(0);

@@ -6,7 +6,7 @@ use super::forces::{inner, revolute, rx, ForceCx};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
 use super::rates::{states, two_links, RateCx};
-use super::tokens::{arm, grp, local, mode_tokens};
+use super::tokens::{arm, grp, local, mode_arg};
 use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
@@ -65,7 +65,11 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
     }
 
     fn position(&self, _cos_sin: bool) -> Solve {
-        let (l1, l2, m) = (self.l1.emit(), self.l2.emit(), mode_tokens(self.mode));
+        let (l1, l2, m) = (
+            self.l1.emit(),
+            self.l2.emit(),
+            mode_arg(self.stmt, self.mode),
+        );
         let (a, b) = (local(self.a), local(self.b));
         Solve::Group {
             call: quote!(::mechanism::dyad::rrr::position(&#a, #l1, &#b, #l2, #m)),
@@ -165,7 +169,7 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
         let (n, links, a, b) = (&self.stmt.name, links_text(self.stmt), self.a, self.b);
         format!(
             "RRR group `{links}`: `{a}`, `{b}` -> `{n}`, {}",
-            mode_text(self.mode)
+            mode_text(self.stmt, self.mode)
         )
     }
 

@@ -16,6 +16,16 @@ pub(crate) fn mode_tokens(mode: Mode) -> TokenStream {
     }
 }
 
+/// The assembly mode argument of a statement's core call: its literal
+/// `mode` (`::mechanism::Mode::Plus`), or `self.PARAM` when the definition
+/// makes it a run-time parameter (`params { circuit = left }`).
+pub(crate) fn mode_arg(stmt: &Stmt, mode: Mode) -> TokenStream {
+    match &stmt.mode_param {
+        Some(param) => quote!(self.#param),
+        None => mode_tokens(mode),
+    }
+}
+
 /// A unit vector at a given angle: folded at expansion time when literal.
 pub(crate) fn unit_vector(angle: &Value) -> TokenStream {
     match angle.fold() {

@@ -13,6 +13,9 @@ use syn::{Expr, Ident};
 
 use super::Mode;
 
+/// What [`NumberScope::names`] calls a run-time mode parameter.
+pub(super) const MODE_PARAM: &str = "an assembly mode parameter";
+
 /// The names a number may use where it is read, and the other names (for
 /// the message on a name that is no number).
 pub(super) struct NumberScope<'a> {
@@ -243,16 +246,30 @@ impl<'a> Args<'a> {
         };
         match name.to_string().as_str() {
             s if !accepted.contains(&s) => {
+                // Run-time mode parameters are candidates too (`params { circuit = left }`).
+                let modes = self
+                    .scope
+                    .names
+                    .iter()
+                    .filter(|(_, what)| *what == MODE_PARAM);
+                let candidates = accepted
+                    .iter()
+                    .copied()
+                    .chain(modes.map(|(n, _)| n.as_str()));
+                let hint = if self.scope.is_param(&name) {
+                    format!("; `{s}` is a number parameter: a run-time mode is a parameter whose default is a mode word, `params {{ {s} = left }}`")
+                } else {
+                    did_you_mean(s, candidates)
+                };
                 self.fail(
                     name.span(),
                     format!(
-                        "unknown assembly mode `{s}` for `{group}`; write {}{}",
+                        "unknown assembly mode `{s}` for `{group}`; write {}, or the name of a run-time mode parameter{hint}",
                         accepted
                             .iter()
                             .map(|m| format!("`{m}`"))
                             .collect::<Vec<_>>()
                             .join(" or "),
-                        did_you_mean(s, accepted.iter().copied())
                     ),
                 );
                 None

@@ -3,9 +3,9 @@
 //! statements in the order written ([`Body`]), then the inputs with their
 //! ranges and the allowances.
 
-use super::args::{literal_scope_for, NumberScope};
+use super::args::{literal_scope_for, NumberScope, MODE_PARAM};
 use super::kinds::lower_kind;
-use super::{inputs, Allowed, Failed, Kind, Kinetics, Level, Local, Model, Stmt};
+use super::{inputs, modes, Allowed, Failed, Kind, Kinetics, Level, Local, Mode, Model, Stmt};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::vocabulary::{input_position, links_created, KINDS};
 use crate::parse::{self, Arg, Assign, Definition, Item, RangeDecl};
@@ -25,6 +25,7 @@ pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
         params,
         consts,
         loads,
+        modes,
     } = numbers(&def.items, &names, errors);
     let scope = NumberScope {
         consts: &consts,
@@ -38,6 +39,7 @@ pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
         ..scope
     };
     let mut body = Body::new(&scope, &load_scope, loads.clone());
+    body.modes = modes.clone();
     for item in def.items {
         body.item(item, errors);
     }
@@ -62,9 +64,11 @@ pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
     }
     let mut model = Model {
         docs: def.docs,
+        derives: def.derives,
         vis: def.vis,
         name: def.name,
         params,
+        modes,
         consts,
         stmts,
         level,
@@ -88,6 +92,10 @@ pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
 fn defined_names(items: &[Item]) -> Vec<(String, &'static str)> {
     let mut names: Vec<(String, &'static str)> = Vec::new();
     for item in items {
+        if let Item::Params(list) = item {
+            let modes = list.iter().filter(|p| modes::mode_word(&p.value).is_some());
+            names.extend(modes.map(|p| (p.name.to_string(), MODE_PARAM)));
+        }
         if let Item::Let(l) = item {
             let kind = l.kind.to_string();
             let what = match kind.as_str() {
@@ -128,6 +136,8 @@ struct Numbers {
     consts: BTreeMap<String, (Ident, f64)>,
     /// Load values with their defaults.
     loads: Vec<(Ident, f64)>,
+    /// Run-time assembly modes with their defaults.
+    modes: Vec<(Ident, Mode)>,
 }
 
 /// Constants and parameter (and load) defaults, first (they may appear
@@ -138,6 +148,7 @@ fn numbers(items: &[Item], names: &[(String, &'static str)], errors: &mut Diagno
     let mut params: Vec<(Ident, f64)> = Vec::new();
     let mut consts: BTreeMap<String, (Ident, f64)> = BTreeMap::new();
     let mut loads: Vec<(Ident, f64)> = Vec::new();
+    let mut modes: Vec<(Ident, Mode)> = Vec::new();
     for item in items {
         match item {
             Item::Const(c) => {
@@ -147,6 +158,10 @@ fn numbers(items: &[Item], names: &[(String, &'static str)], errors: &mut Diagno
             Item::Params(list) | Item::Loads(list) => {
                 let is_loads = matches!(item, Item::Loads(_));
                 for p in list {
+                    if let (false, Some(mode)) = (is_loads, modes::mode_word(&p.value)) {
+                        modes.push((p.name.clone(), mode));
+                        continue;
+                    }
                     let x = default_value(p, &consts, names, errors);
                     if is_loads {
                         loads.push((p.name.clone(), x));
@@ -162,6 +177,7 @@ fn numbers(items: &[Item], names: &[(String, &'static str)], errors: &mut Diagno
         params,
         consts,
         loads,
+        modes,
     }
 }
 
@@ -248,6 +264,8 @@ pub(super) struct Body<'a> {
     failed: Vec<Failed>,
     pub(super) kinetics: Kinetics,
     checks: inputs::Declared,
+    /// The run-time assembly modes (`params { circuit = left }`).
+    modes: Vec<(Ident, Mode)>,
 }
 
 impl<'a> Body<'a> {
@@ -273,6 +291,7 @@ impl<'a> Body<'a> {
                 ..Kinetics::default()
             },
             checks: inputs::Declared::default(),
+            modes: Vec::new(),
         }
     }
 
@@ -344,7 +363,8 @@ impl<'a> Body<'a> {
 
     /// `let NAME = KIND(args) as (links) slide (names);`: a statement, or,
     /// when its arguments are rejected, the names it meant to define.
-    fn let_statement(&mut self, l: parse::Let, errors: &mut Diagnostics) {
+    fn let_statement(&mut self, mut l: parse::Let, errors: &mut Diagnostics) {
+        let mode_param = modes::take_mode_param(&mut l, &self.modes);
         let Some(kind) = lower_kind(&l, self.scope, errors) else {
             self.failed.push(failed(l));
             return;
@@ -370,6 +390,7 @@ impl<'a> Body<'a> {
             links,
             links_named,
             slides,
+            mode_param,
         });
         self.stmts.extend(joints);
     }
@@ -410,6 +431,7 @@ fn triad_joints(l: &parse::Let, kind: &Kind, links: &[Ident]) -> Vec<Stmt> {
         links: Vec::new(),
         links_named: Vec::new(),
         slides: Vec::new(),
+        mode_param: None,
     })
     .collect()
 }

@@ -12,6 +12,7 @@ mod inputs;
 mod kinds;
 mod kinetics;
 mod lower;
+pub mod modes;
 
 pub use inputs::{Allowed, Input, RangeSpans};
 pub use lower::lower;
@@ -47,12 +48,17 @@ pub enum Mode {
 pub struct Model {
     /// Doc comments of the definition.
     pub docs: Vec<Attribute>,
+    /// The derives written on the definition (`emit::interop`).
+    pub derives: Vec<crate::parse::Derive>,
     /// Visibility of the generated items.
     pub vis: Visibility,
     /// Type name.
     pub name: Ident,
     /// Run-time parameters with their (folded) default values.
     pub params: Vec<(Ident, f64)>,
+    /// Run-time assembly modes (`params { circuit = left }`): fields of
+    /// type `mechanism::Mode` with their defaults, after `params`.
+    pub modes: Vec<(Ident, Mode)>,
     /// Compile-time constants (folded).
     pub consts: BTreeMap<String, (Ident, f64)>,
     /// `let` statements, in the order written.
@@ -171,6 +177,10 @@ pub struct Stmt {
     pub links_named: Vec<bool>,
     /// Names of slide displacements (user-given) by slot.
     pub slides: Vec<Option<Ident>>,
+    /// The run-time mode parameter this group's assembly mode reads
+    /// (`rrr(A, l1, B, l2, circuit)`), `None` for a literal mode. The
+    /// kind's `mode` then holds the parameter's default.
+    pub mode_param: Option<Ident>,
 }
 
 /// Origin of a guide.

@@ -4,7 +4,8 @@
 //! Grammar (see `docs/dsl.md` for the reference with examples):
 //!
 //! ```text
-//! definition := outer-doc* vis? IDENT '{' item* '}'
+//! definition := (outer-doc | '#[self_test]' | derive)* vis? IDENT '{' item* '}'
+//! derive     := '#[derive(' PATH,* ')]' | '#[cfg_attr(' META ',' derive,* ')]'
 //! item       := 'params' '{' (IDENT '=' expr),* '}'
 //!             | 'const' IDENT '=' expr ';'
 //!             | 'analysis' IDENT ';'
@@ -24,10 +25,12 @@
 //! names      := IDENT | '(' IDENT,* ')'
 //! ```
 
+pub mod attrs;
 mod lexical;
 mod statements;
 pub mod vocabulary;
 
+pub use attrs::{Derive, DeriveKind};
 use lexical::Lexical;
 pub use lexical::MAX_PATH;
 
@@ -42,6 +45,9 @@ pub struct Definition {
     pub docs: Vec<Attribute>,
     /// `#[self_test]`: the attribute's span, when given.
     pub self_test: Option<Span>,
+    /// `#[derive(..)]`s (also inside `#[cfg_attr(..)]`), passed on to the
+    /// generated types.
+    pub derives: Vec<Derive>,
     /// Visibility of the generated items.
     pub vis: Visibility,
     /// Name of the mechanism type.
@@ -442,35 +448,11 @@ impl Parse for Definition {
     fn parse(input: ParseStream) -> syn::Result<Self> {
         let all: proc_macro2::TokenStream = input.fork().parse()?;
         Lexical::default().walk(all, 0, input.span())?;
-        let mut docs = input.call(Attribute::parse_outer)?;
-        let self_test = docs
-            .iter()
-            .find(|a| a.path().is_ident("self_test"))
-            .map(syn::spanned::Spanned::span);
-        if let Some(second) = docs
-            .iter()
-            .filter(|a| a.path().is_ident("self_test"))
-            .nth(1)
-        {
-            return Err(syn::Error::new_spanned(
-                second,
-                "`#[self_test]` may appear once; remove this one",
-            ));
-        }
-        docs.retain(|a| !a.path().is_ident("self_test"));
-        if let Some(other) = docs.iter().find(|a| !a.path().is_ident("doc")) {
-            let path = other.path();
-            let word = quote::ToTokens::to_token_stream(path)
-                .to_string()
-                .replace(' ', "");
-            return Err(syn::Error::new_spanned(
-                other,
-                format!(
-                    "unknown attribute `#[{word}]`; a definition takes doc comments (`///`) and `#[self_test]`{}",
-                    crate::diag::did_you_mean(&word, ["self_test"])
-                ),
-            ));
-        }
+        let attrs::Attrs {
+            docs,
+            self_test,
+            derives,
+        } = attrs::sort(input.call(Attribute::parse_outer)?)?;
         let vis = input.parse()?;
         let name: Ident = input.parse().map_err(|e| {
             syn::Error::new(
@@ -507,6 +489,7 @@ impl Parse for Definition {
         Ok(Definition {
             docs,
             self_test,
+            derives,
             vis,
             name,
             items,

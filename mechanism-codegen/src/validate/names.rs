@@ -75,7 +75,12 @@ pub fn symbols(model: &Model) -> BTreeMap<String, (Category, Ident)> {
 /// appearing twice (parameters, constants, then the statements in order).
 fn every_symbol(model: &Model) -> Vec<(String, Category, Ident)> {
     let mut table = All(Vec::new());
-    for (name, _) in &model.params {
+    for (name, _) in model
+        .params
+        .iter()
+        .map(|(n, _)| (n, ()))
+        .chain(model.modes.iter().map(|(n, _)| (n, ())))
+    {
         table.insert(name.to_string(), (Category::Param, name.clone()));
     }
     for (name, (ident, _)) in &model.consts {
@@ -159,6 +164,12 @@ fn definitions(model: &Model) -> Vec<(Ident, Place)> {
         out.push((
             name.clone(),
             Place::Outside("as a parameter (in `params { .. }`)".to_string()),
+        ));
+    }
+    for (name, _) in &model.modes {
+        out.push((
+            name.clone(),
+            Place::Outside("as a run-time mode parameter (in `params { .. }`)".to_string()),
         ));
     }
     for (ident, _) in model.consts.values() {

@@ -34,6 +34,22 @@ pub struct ForcesCode {
     pub loads_param: TokenStream,
     /// The matching argument (`loads`), empty without a `loads` block.
     pub loads_arg: TokenStream,
+    /// The forces struct's reaction and effort fields, in order, with what
+    /// each holds (for `Display` and serde, `emit::display`, `emit::interop`).
+    pub fields: Vec<(Ident, ForceField)>,
+}
+
+/// What a field of the forces struct holds, as `Display` shows it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ForceField {
+    /// A revolute joint's force (`Vector2`, force units).
+    Force,
+    /// A prismatic pair's `PrismaticReaction` (normal force and couple).
+    Prismatic,
+    /// A driving torque (force x length).
+    Torque,
+    /// A driving force along a line (force units).
+    Push,
 }
 
 pub(crate) use crate::kinds::forces::{Held, Reaction};
@@ -151,11 +167,25 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
     let mut items = forces_struct(model, &names, &em.reactions, loads.item);
     items.extend(forces_fields(&names, &em.reactions));
     let methods = forces_method(&names, &em, &loads.param);
+    let fields = em
+        .reactions
+        .iter()
+        .map(|r| {
+            let held = match r.held {
+                Held::Force => ForceField::Force,
+                Held::Prismatic => ForceField::Prismatic,
+                Held::Torque => ForceField::Torque,
+                Held::Push => ForceField::Push,
+            };
+            (r.name.clone(), held)
+        })
+        .collect();
     ForcesCode {
         items,
         methods,
         loads_param: loads.param,
         loads_arg: loads.arg,
+        fields,
     }
 }
 

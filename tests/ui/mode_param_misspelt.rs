@@ -1,0 +1,14 @@
+// Error: a misspelt run-time mode parameter in a group's mode place.
+use mechanism::mechanism;
+
+mechanism! {
+    pub FourBar {
+        params { circuit = left }
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(304.8, 0.0);
+        let A = crank(O2, 101.6, theta2) as link2;
+        let B = rrr(A, 254.0, O4, 177.8, circiut) as (link3, link4);
+    }
+}
+
+fn main() {}
