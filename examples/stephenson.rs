@@ -54,7 +54,17 @@ fn main() {
             hi.to_degrees()
         );
         outln!("angles deg, rates rad/s, rad/s^2; torque N m (ccw +); reactions N (ground on crank2 at O2, ground on rocker at O4, link6 on link5 at C)");
-        outln!("{}", common::header(&st::COLUMNS, 10));
+        outln!("angles: th2 crank2, th3 coupler, th4 rocker; w rates, al accelerations (same links); the CSV names every column");
+        outln!(
+            "{}",
+            common::header(
+                &[
+                    "phi", "ax", "ay", "bx", "by", "px", "py", "th2", "th3", "th4", "w2", "w3",
+                    "w4", "al2", "al3", "al4"
+                ],
+                10
+            )
+        );
     }
     let loads = StephensonLoads { fp: LOAD };
     let mut worst = 0.0f64;

@@ -642,6 +642,26 @@ mod tests {
     }
 
     #[test]
+    fn a_rejected_triad_still_defines_its_three_joints() {
+        // Proves a triad whose arguments are rejected (a leg of length 0)
+        // keeps `A`, `B` and `P` defined for the stubs, so the user's code
+        // that reads them reports no follow-on error, and that the error is
+        // the length's alone.
+        let src = STEPHENSON.replace("O2, 0.08,", "O2, 0.0,");
+        let def = syn::parse_str::<crate::parse::Definition>(&src).expect("parses");
+        let mut diag = Diagnostics::new();
+        let model = crate::model::lower(def, &mut diag);
+        let errors: Vec<String> = diag.finish().iter().map(ToString::to_string).collect();
+        assert_eq!(errors.len(), 1, "{errors:?}");
+        assert!(
+            errors[0].contains("first leg's length must be positive"),
+            "{errors:?}"
+        );
+        let failed: Vec<String> = model.failed.iter().map(|f| f.name.to_string()).collect();
+        assert_eq!(failed, ["A", "B", "P"]);
+    }
+
+    #[test]
     fn only_a_cycle_of_three_pinned_rrr_is_called_a_triad() {
         // Proves the cycle hint names the class III group, with the legs'
         // known points and lengths, for three RRR statements each pinned to

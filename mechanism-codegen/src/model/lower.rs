@@ -104,6 +104,7 @@ fn defined_names(items: &[Item]) -> Vec<(String, &'static str)> {
                 _ => "a point",
             };
             names.push((l.name.to_string(), what));
+            names.extend(l.joints.iter().map(|n| (n.to_string(), "a point")));
             names.extend(l.links.iter().map(|n| (n.to_string(), "a link")));
             names.extend(
                 l.slides
@@ -366,7 +367,17 @@ impl<'a> Body<'a> {
     fn let_statement(&mut self, mut l: parse::Let, errors: &mut Diagnostics) {
         let mode_param = modes::take_mode_param(&mut l, &self.modes);
         let Some(kind) = lower_kind(&l, self.scope, errors) else {
+            // A triad's other joints stay defined as well.
+            let joints = l.joints.iter().map(|j| Failed {
+                name: j.clone(),
+                kind: l.kind.clone(),
+                links: Vec::new(),
+                slides: Vec::new(),
+                input: None,
+            });
+            let joints: Vec<Failed> = joints.collect();
             self.failed.push(failed(l));
+            self.failed.extend(joints);
             return;
         };
         let (links, links_named) = links(&l, kind.link_count(), errors);
