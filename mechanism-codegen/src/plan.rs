@@ -4,7 +4,7 @@
 
 use crate::diag::Diagnostics;
 use crate::kinds::{self, LinkShape};
-use crate::model::{ForceSpecValue, Model, Stmt};
+use crate::model::{ForceSpecValue, Model, Stmt, StmtId};
 use std::collections::{BTreeMap, BTreeSet};
 use syn::Ident;
 
@@ -13,8 +13,8 @@ pub use crate::kinds::Turn;
 /// What the plan knows of a link.
 #[derive(Clone, Debug)]
 pub struct LinkInfo {
-    /// Statement index that creates it.
-    pub stmt: usize,
+    /// The statement that creates it.
+    pub stmt: StmtId,
     /// Position among the statement's links.
     pub index: usize,
     /// Points fixed on it.
@@ -36,10 +36,10 @@ pub struct GuideInfo {
 
 /// The plan.
 pub struct Plan {
-    /// Statement indices in solve order.
-    pub order: Vec<usize>,
-    /// Statement index by defined name.
-    pub defined: BTreeMap<String, usize>,
+    /// The statements in solve order.
+    pub order: Vec<StmtId>,
+    /// The statement defining each name.
+    pub defined: BTreeMap<String, StmtId>,
     /// Links by name.
     pub links: BTreeMap<String, LinkInfo>,
     /// Guides by name.
@@ -55,7 +55,7 @@ pub struct Plan {
     /// The statements the outputs and the force analysis need, in solve
     /// order: what `position()` solves (a coupler point nobody asked for is
     /// left out).
-    pub solve: Vec<usize>,
+    pub solve: Vec<StmtId>,
 }
 
 /// The body a statement's point belongs to when another group is pinned there:
@@ -85,11 +85,10 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
     let mut links = BTreeMap::new();
     let mut guides = BTreeMap::new();
     let mut ground = Vec::new();
-    for (i, stmt) in model.stmts.iter().enumerate() {
-        defined.insert(stmt.name.to_string(), i);
-        for (j, l) in stmt.links.iter().enumerate() {
-            defined.insert(l.to_string(), i);
-            let _ = j;
+    for (id, stmt) in StmtId::all(&model.stmts).zip(&model.stmts) {
+        defined.insert(stmt.name.to_string(), id);
+        for l in &stmt.links {
+            defined.insert(l.to_string(), id);
         }
         let kind = kinds::of(stmt);
         if kind.point_owner() == Some(None) {
@@ -105,7 +104,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
         }
     }
     // Link shapes need guide carriers resolved: Turn::None + guide -> With(carrier).
-    for (i, stmt) in model.stmts.iter().enumerate() {
+    for (id, stmt) in StmtId::all(&model.stmts).zip(&model.stmts) {
         for (j, shape) in kinds::of(stmt).link_shapes().into_iter().enumerate() {
             let LinkShape {
                 points,
@@ -123,7 +122,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
             links.insert(
                 stmt.links[j].to_string(),
                 LinkInfo {
-                    stmt: i,
+                    stmt: id,
                     index: j,
                     points,
                     turn,
@@ -146,7 +145,8 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
             }
         }
     }
-    // Topological sort (Kahn), stable in the written order.
+    // Topological sort (Kahn), stable in the written order, on the
+    // statements' places (`StmtId::0`).
     let n = model.stmts.len();
     let deps: Vec<Vec<usize>> = model
         .stmts
@@ -154,7 +154,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
         .map(|s| {
             references(s)
                 .into_iter()
-                .filter_map(|r| defined.get(&r.to_string()).copied())
+                .filter_map(|r| defined.get(&r.to_string()).map(|d: &StmtId| d.0))
                 .collect()
         })
         .collect();
@@ -165,7 +165,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
         match next {
             Some(i) if !deps[i].contains(&i) => {
                 done[i] = true;
-                order.push(i);
+                order.push(StmtId(i));
             }
             _ => {
                 // Everything left waits on something left: report the cycle,
@@ -292,7 +292,7 @@ pub struct Slide {
     /// The user's name (a field of the output structs).
     pub name: Ident,
     /// The statement (index into `Model::stmts`).
-    pub stmt: usize,
+    pub stmt: StmtId,
     /// Which of the statement's slides.
     pub slot: usize,
 }
@@ -352,8 +352,8 @@ fn outputs(model: &Model, plan: &Plan) -> Outputs {
 
 /// Statements the outputs need, directly or through the statements they use.
 /// The rest (a coupler point nobody asked for) is left out.
-fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usize> {
-    let mut stack: Vec<usize> = roots(model, plan);
+fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<StmtId> {
+    let mut stack: Vec<StmtId> = roots(model, plan);
     for p in &out.points {
         stack.extend(plan.defined.get(&p.to_string()));
     }
@@ -375,17 +375,13 @@ fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<usiz
 /// Statements the force analysis needs besides those of the outputs: every
 /// statement that creates a link (all reactions are outputs), the centres of
 /// mass, the points where forces act and the guides forces follow.
-fn roots(model: &Model, plan: &Plan) -> Vec<usize> {
+fn roots(model: &Model, plan: &Plan) -> Vec<StmtId> {
     if !model.has_forces() {
         return Vec::new();
     }
     let k = &model.kinetics;
-    let mut roots: Vec<usize> = model
-        .stmts
-        .iter()
-        .enumerate()
-        .filter(|(_, s)| !s.links.is_empty())
-        .map(|(i, _)| i)
+    let mut roots: Vec<StmtId> = StmtId::all(&model.stmts)
+        .filter(|&i| !model.stmts[i].links.is_empty())
         .collect();
     let named = k
         .masses
@@ -403,10 +399,10 @@ fn roots(model: &Model, plan: &Plan) -> Vec<usize> {
 /// The statements the generated `position()` solves (those the outputs
 /// need), in solve order, and among them the checked groups.
 pub struct Checked {
-    /// Statement indices in solve order.
-    pub order: Vec<usize>,
-    /// Statement indices of the checked groups (drivers, groups, link points).
-    pub groups: Vec<usize>,
+    /// The statements in solve order.
+    pub order: Vec<StmtId>,
+    /// The checked groups among them (drivers, groups, link points).
+    pub groups: Vec<StmtId>,
 }
 
 /// The statements `position()` solves and the checked groups among them.
@@ -438,7 +434,7 @@ mod tests {
     }
 
     /// The names of the statements `order` (indices) of `model`.
-    fn names(model: &Model, order: &[usize]) -> Vec<String> {
+    fn names(model: &Model, order: &[StmtId]) -> Vec<String> {
         order
             .iter()
             .map(|&i| model.stmts[i].name.to_string())

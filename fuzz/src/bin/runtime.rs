@@ -166,7 +166,9 @@ struct Check<'a> {
     under: f64,
     /// The subnormal spacing of the scalar in units of `s2`: no coordinate
     /// is known better than that (subnormal lengths, such as an f32 crank
-    /// of 1e-45, leave a residual of a fraction of it).
+    /// of 1e-45, leave a residual of a fraction of it), times the check's
+    /// `scale` like the rounding term (a solve's condition adds to it where
+    /// a check knows it: "A in the slot").
     grain: f64,
 }
 
@@ -266,7 +268,7 @@ impl Check<'_> {
 
     /// `|x| <= K eps scale + K floor + extra`, all in units of `s2`.
     fn small_plus(&mut self, what: &str, residual: f64, scale: f64, extra: f64) {
-        let tol = K * self.eps * scale + K * self.floor + K * self.grain + extra;
+        let tol = K * (self.eps + self.grain) * scale + K * self.floor + extra;
         if !(tol.is_finite() && residual.is_finite()) {
             // The check's own products overflowed (inputs near the largest
             // finite number; the values themselves were checked finite).
@@ -1037,8 +1039,15 @@ fn slides<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
         qq.0 + q.s_slot.as_f64() * wdir.0,
         qq.1 + q.s_slot.as_f64() * wdir.1,
     );
-    let big = 1.0 + q.s_slot.as_f64().abs() / c.s2;
-    c.small("A in the slot", norm(sub(c.sc(a), c.sc(want))), big);
+    // `Q` is at `s_yoke` along the guide: its coordinates' roundings are of
+    // that size. A rounding at the subnormal spacing in the 2x2 solve's
+    // cross products (tiny lengths) is divided by its determinant `sin
+    // beta`: f64 lengths at the smallest normal number on a slot 0.28 deg
+    // off the guide (1 / sin = 201) left 167 spacings.
+    let big = 1.0 + (q.s_slot.as_f64().abs() + q.s_yoke.as_f64().abs()) / c.s2;
+    let cond = 1.0 / beta.sin().abs().max(f64::MIN_POSITIVE);
+    let extra = K * c.grain * cond;
+    c.small_plus("A in the slot", norm(sub(c.sc(a), c.sc(want))), big, extra);
     let along = dot(up, c.sc(qq)) - q.s_yoke.as_f64() / c.s2;
     c.small("s_yoke", along, yoke_scale);
     // PRP: C on both offset lines; far away where the lines are nearly

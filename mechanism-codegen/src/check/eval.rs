@@ -3,7 +3,7 @@
 //! the same arguments, as the generated `position()`.
 
 use crate::kinds::{self, Pose};
-use crate::model::Model;
+use crate::model::{Model, StmtId};
 use crate::plan::Checked;
 use crate::value::Value;
 use mechanism_core::sweep::Outcome;
@@ -14,7 +14,7 @@ use syn::Ident;
 pub const MAX_GROUPS: usize = 64;
 
 /// Every value `position()` uses, for the statements in `order`.
-pub fn position_values(model: &Model, order: &[usize]) -> Vec<Value> {
+pub fn position_values(model: &Model, order: &[StmtId]) -> Vec<Value> {
     order
         .iter()
         .flat_map(|&i| kinds::of(&model.stmts[i]).position_values())
@@ -24,9 +24,9 @@ pub fn position_values(model: &Model, order: &[usize]) -> Vec<Value> {
 /// The position analysis of the checked statements in `f64`.
 pub struct Evaluator<'a> {
     model: &'a Model,
-    order: &'a [usize],
+    order: &'a [StmtId],
     /// Group index of each checked statement.
-    group: BTreeMap<usize, usize>,
+    group: BTreeMap<StmtId, usize>,
     /// Input index by name.
     input: BTreeMap<String, usize>,
 }

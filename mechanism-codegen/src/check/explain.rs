@@ -4,7 +4,7 @@
 
 use crate::diag::show_num;
 use crate::kinds::{self};
-use crate::model::{Input, Model};
+use crate::model::{Input, Model, StmtId};
 use crate::plan::Plan;
 use mechanism_core::Fault;
 use syn::Ident;
@@ -41,14 +41,14 @@ pub fn suggest(input: &Input, lo: f64, hi: f64) -> Option<String> {
 
 /// What the failing group's fault means, in the user's words (as its kind
 /// says, or the fault's own text).
-pub fn explain(model: &Model, stmt_index: usize, fault: &Fault, at: &str) -> String {
+pub fn explain(model: &Model, stmt_index: StmtId, fault: &Fault, at: &str) -> String {
     kinds::of(&model.stmts[stmt_index])
         .explain_fault(fault, at)
         .unwrap_or_else(|| format!("at {at}: {fault}"))
 }
 
 /// Why a group is singular, in the user's words.
-pub fn singular_meaning(model: &Model, stmt_index: usize) -> String {
+pub fn singular_meaning(model: &Model, stmt_index: StmtId) -> String {
     kinds::of(&model.stmts[stmt_index])
         .singular_meaning()
         .unwrap_or_else(|| "its rate system is singular".into())
@@ -56,7 +56,7 @@ pub fn singular_meaning(model: &Model, stmt_index: usize) -> String {
 
 /// For a crank driving an RRR group onto a ground point: the four-bar's
 /// Grashof condition, in numbers (the RRR's `GroupKind::full_turn_hint`).
-pub fn grashof(model: &Model, plan: &Plan, stmt_index: usize) -> Option<String> {
+pub fn grashof(model: &Model, plan: &Plan, stmt_index: StmtId) -> Option<String> {
     let find = |n: &Ident| plan.defined.get(&n.to_string()).map(|&i| &model.stmts[i]);
     kinds::of(&model.stmts[stmt_index]).full_turn_hint(&find)
 }

@@ -7,7 +7,7 @@ use super::explain::{explain, grashof, suggest};
 use super::{Found, Sweep};
 use crate::diag::{show_interval, show_num, show_value, Diagnostics};
 use crate::kinds;
-use crate::model::{group_kind, Input};
+use crate::model::{group_kind, Input, StmtId};
 use mechanism_core::sweep::{self, Range};
 use mechanism_core::Fault;
 use proc_macro2::Span;
@@ -39,7 +39,7 @@ pub(super) fn report(s: &Sweep<'_>, errors: &mut Diagnostics) -> bool {
 /// name, unless a declared range is to blame: the group assembles somewhere
 /// in it; then the end of the range it fails at, or the range's input when
 /// it fails inside) and its message.
-fn one_input(s: &Sweep<'_>, stmt_index: usize, list: &[&Found]) -> (Span, String) {
+fn one_input(s: &Sweep<'_>, stmt_index: StmtId, list: &[&Found]) -> (Span, String) {
     let model = s.model;
     let stmt = &model.stmts[stmt_index];
     let kind = group_kind(&stmt.kind).unwrap_or("group");
@@ -218,7 +218,7 @@ fn where_it_assembles(
 }
 
 /// The message of a group that fails at grid points of a two-input box.
-fn two_inputs(s: &Sweep<'_>, stmt_index: usize, list: &[&Found]) -> String {
+fn two_inputs(s: &Sweep<'_>, stmt_index: StmtId, list: &[&Found]) -> String {
     let model = s.model;
     let stmt = &model.stmts[stmt_index];
     let kind = group_kind(&stmt.kind).unwrap_or("group");

@@ -4,7 +4,7 @@
 
 use crate::check::joints_at_infinity;
 use crate::kinds;
-use crate::model::Model;
+use crate::model::{Model, StmtId};
 use crate::plan::{checked, Plan};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -12,7 +12,7 @@ use syn::Ident;
 
 /// The scaled determinant of a checked group, from the generated position
 /// struct `pos` (code).
-pub(crate) fn det_code(model: &Model, stmt_index: usize) -> TokenStream {
+pub(crate) fn det_code(model: &Model, stmt_index: StmtId) -> TokenStream {
     kinds::of(&model.stmts[stmt_index]).det_code()
 }
 

@@ -6,7 +6,7 @@ use super::names::{debug_impl, lit_zero, marker, opt_point, output_docs, Generat
 use super::reads::{Analysis, Reads};
 use crate::kinds;
 use crate::kinds::rates::{vec_ty, RateCx};
-use crate::model::Model;
+use crate::model::{Model, StmtId};
 use crate::plan::{Outputs, Plan};
 use crate::value::lit;
 use proc_macro2::TokenStream;
@@ -55,10 +55,10 @@ struct RateEmitter<'a> {
     /// `omega` or `alpha`: prefix of link rates.
     wpfx: &'static str,
     /// The statement being emitted (its slides' rates are keyed by it).
-    current: usize,
+    current: StmtId,
     code: TokenStream,
     fields: Vec<Field>,
-    slide_values: Vec<(usize, usize, TokenStream)>,
+    slide_values: Vec<(StmtId, usize, TokenStream)>,
 }
 
 fn none() -> TokenStream {
@@ -192,7 +192,7 @@ pub(super) fn code(model: &Model, plan: &Plan, moving: &BTreeSet<String>, rate: 
         accel,
         pfx: if accel { "acc" } else { "vel" },
         wpfx: if accel { "alpha" } else { "omega" },
-        current: 0,
+        current: StmtId(0),
         code: TokenStream::new(),
         fields: Vec::new(),
         slide_values: Vec::new(),

@@ -163,6 +163,33 @@ pub struct Failed {
     pub input: Option<Ident>,
 }
 
+/// A `let` statement of the definition, by its place in the order written
+/// (`Model::stmts[id]`). The plan's solve order, the owners of points and
+/// the findings of the expansion-time check name statements by it.
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Debug)]
+pub struct StmtId(pub usize);
+
+impl StmtId {
+    /// Every statement of `stmts`, in the order written.
+    pub fn all(stmts: &[Stmt]) -> impl Iterator<Item = StmtId> + '_ {
+        (0..stmts.len()).map(StmtId)
+    }
+}
+
+impl std::ops::Index<StmtId> for Vec<Stmt> {
+    type Output = Stmt;
+    fn index(&self, id: StmtId) -> &Stmt {
+        &self[id.0]
+    }
+}
+
+impl std::ops::Index<StmtId> for [Stmt] {
+    type Output = Stmt;
+    fn index(&self, id: StmtId) -> &Stmt {
+        &self[id.0]
+    }
+}
+
 /// One `let` statement.
 pub struct Stmt {
     /// The defined name.

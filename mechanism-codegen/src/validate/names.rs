@@ -5,7 +5,7 @@
 
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::kinds::{self, Role};
-use crate::model::Model;
+use crate::model::{Model, StmtId};
 use std::collections::BTreeMap;
 use syn::Ident;
 
@@ -149,10 +149,9 @@ enum Place {
     /// Outside the statements (a parameter or a constant, gathered from
     /// wherever they stand): the words.
     Outside(String),
-    /// By statement `.0` (an index into the model's statements, which are in
-    /// the order written), in the role `.1` ("as a link of"), written `.2`
+    /// By statement `.0`, in the role `.1` ("as a link of"), written `.2`
     /// (`let B = rrr(..)`).
-    Statement(usize, &'static str, String),
+    Statement(StmtId, &'static str, String),
 }
 
 /// Every definition of a name with its place, in the order [`unique_names`]
@@ -178,7 +177,7 @@ fn definitions(model: &Model) -> Vec<(Ident, Place)> {
             Place::Outside(format!("as a constant (`const {ident} = ..;`)")),
         ));
     }
-    for (i, stmt) in model.stmts.iter().enumerate() {
+    for (i, stmt) in StmtId::all(&model.stmts).zip(&model.stmts) {
         let written = format!("`let {} = {}(..)`", stmt.name, stmt.kind_token);
         let mut push = |ident: &Ident, role| {
             out.push((ident.clone(), Place::Statement(i, role, written.clone())));
