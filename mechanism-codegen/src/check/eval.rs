@@ -55,7 +55,7 @@ impl<'a> Evaluator<'a> {
 
     /// The pose of the statements solved before statement `stop` at inputs
     /// `q` (`None` when one of them fails).
-    pub fn pose_before(&self, q: &[f64], stop: usize) -> Option<Pose> {
+    pub fn pose_before(&self, q: &[f64], stop: StmtId) -> Option<Pose> {
         let mut pose = Pose::default();
         for &i in self.order {
             if i == stop {
