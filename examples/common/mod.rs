@@ -32,3 +32,4 @@ pub fn header(names: &[&str], width: usize) -> String {
         .collect::<Vec<_>>()
         .join(" ")
 }
+pub mod stephenson;

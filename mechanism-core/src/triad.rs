@@ -198,6 +198,54 @@ impl<T: Real> Near<T> {
     }
 }
 
+/// The pose an assembly tracked ahead of time has at input `q`: linear
+/// interpolation in a table of rows `[q, ax, ay, bx, by, px, py]` (input in
+/// its unit, joints in L) whose inputs increase; the generated `position()`
+/// of a definition with a triad selects the assembly nearest this pose.
+///
+/// Errors: `NonFinite` for a non-finite `q`; `NotNear` with `nearest`
+/// infinite for a `q` outside the table's inputs (the tracked assembly is
+/// not known there: it vanished, or the range ends) or a table of fewer
+/// than two rows.
+pub fn near_from_table<T: Real>(table: &[[f64; 7]], q: T) -> Result<Near<T>, Error<T>> {
+    let x = q.as_f64();
+    if !x.is_finite() {
+        return Err(Error::new(
+            PRIM,
+            Fault::NonFinite {
+                what: "triad input",
+            },
+        ));
+    }
+    let outside = Error::new(
+        PRIM,
+        Fault::NotNear {
+            nearest: T::lit(f64::INFINITY),
+            next: T::zero(),
+        },
+    );
+    let (Some(first), Some(last)) = (table.first(), table.last()) else {
+        return Err(outside);
+    };
+    if table.len() < 2 || !(x >= first[0] && x <= last[0]) {
+        return Err(outside);
+    }
+    // The last row at or below x (the first row is), short of the last row.
+    let i = table
+        .partition_point(|r| r[0] <= x)
+        .clamp(1, table.len() - 1)
+        - 1;
+    let (r0, r1) = (&table[i], &table[i + 1]);
+    let span = r1[0] - r0[0];
+    let w = if span > 0.0 { (x - r0[0]) / span } else { 0.0 };
+    let v = |k: usize| T::lit(r0[k] + (r1[k] - r0[k]) * w);
+    Ok(Near {
+        a: Point2::new(v(1), v(2)),
+        b: Point2::new(v(3), v(4)),
+        p: Point2::new(v(5), v(6)),
+    })
+}
+
 /// Every real assembly at one input, in no particular order, without heap.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Assemblies<T: Real> {
@@ -1220,5 +1268,37 @@ mod tests {
             matches!(e.fault, Fault::NotNear { next, .. } if next == 0.04),
             "{e:?}"
         );
+    }
+
+    #[test]
+    fn near_from_table_interpolates_and_refuses_outside() {
+        // Proves the tracked-pose table is read by linear interpolation
+        // between the two rows around the input, with uneven spacing (a
+        // pose linear in the input is reproduced to rounding), that the
+        // ends are included, and that an input outside the rows, a NaN, or
+        // a one-row table is a typed error, not an extrapolation.
+        let row = |q: f64| [q, 1.0 + q, 2.0 - q, 3.0 * q, 4.0, -q, 0.5 * q];
+        let table = [row(-1.0), row(-0.25), row(0.5), row(2.0)];
+        for q in [-1.0, -0.6, -0.25, 0.1, 0.5, 1.7, 2.0] {
+            let n = near_from_table(&table, q).unwrap();
+            let want = row(q);
+            let got = [n.a.x, n.a.y, n.b.x, n.b.y, n.p.x, n.p.y];
+            for (g, w) in got.iter().zip(&want[1..]) {
+                assert!(
+                    (g - w).abs() <= 4.0 * f64::EPSILON * (1.0 + w.abs()),
+                    "{q}: {g} vs {w}"
+                );
+            }
+        }
+        for q in [-1.000_000_1, 2.000_000_1, f64::NAN] {
+            let e = near_from_table(&table, q).unwrap_err();
+            assert!(
+                matches!(e.fault, Fault::NotNear { nearest, .. } if nearest.is_infinite())
+                    || matches!(e.fault, Fault::NonFinite { .. }),
+                "{q}: {e:?}"
+            );
+        }
+        assert!(near_from_table(&table[..1], -1.0).is_err());
+        assert!(near_from_table::<f64>(&[], 0.0).is_err());
     }
 }

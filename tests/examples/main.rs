@@ -31,3 +31,4 @@ mod forces;
 mod kinematics;
 mod plots;
 mod png;
+mod stephenson;

@@ -30,7 +30,7 @@ const fn example(name: &'static str, make: Make) -> Example {
     }
 }
 
-const EXAMPLES: [Example; 7] = [
+const EXAMPLES: [Example; 8] = [
     Example {
         docs: Some(("fourbar-kinematics.png", "fourbar-drawing.png")),
         ..example("fourbar", common::plots::fourbar)
@@ -45,6 +45,10 @@ const EXAMPLES: [Example; 7] = [
         chart: 3,
         docs: Some(("shaper-forces.png", "shaper-drawing.png")),
         ..example("shaper_forces", common::plots::shaper_forces)
+    },
+    Example {
+        docs: Some(("stephenson-kinematics.png", "stephenson.png")),
+        ..example("stephenson", common::stephenson::plots)
     },
 ];
 

@@ -229,6 +229,9 @@ pub fn expansion_check(model: &Model, plan: &Plan, errors: &mut Diagnostics) -> 
     };
     findings.ran = true;
     let ev = Evaluator::new(model, &checked);
+    if !eval::track_triads(model, &ev, &ranges, errors) {
+        return findings;
+    }
     let events = run(&ev, &joints_at_infinity(model, &checked), &ranges);
     findings.summary = format!(
         "Checked at expansion time over {} ({}): every group assembles.",

@@ -103,6 +103,9 @@ fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
     if let Some(f) = &forces {
         reads.scan(&f.methods);
     }
+    if let Some(code) = position::tracking_code(&em) {
+        reads.scan(&code);
+    }
 
     let mut out = solution::own_items(model, plan, &inputs);
     out.push(position::items(&em, &position, &reads, &inputs));

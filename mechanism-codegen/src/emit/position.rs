@@ -53,6 +53,9 @@ pub(super) struct Emitter<'a> {
     /// Emitting `position_cos_sin`: cranks marked `as cos_sin` read
     /// `input_cs.NAME.cos` and `.sin`.
     cos_sin: bool,
+    /// Emitting `position_near`: kinds with several assemblies follow the
+    /// previous position's (`GroupKind::position_tracking`).
+    tracking: bool,
 }
 
 impl<'a> Emitter<'a> {
@@ -70,6 +73,7 @@ impl<'a> Emitter<'a> {
             plan,
             axes,
             cos_sin,
+            tracking: false,
         }
     }
 
@@ -106,7 +110,11 @@ impl<'a> Emitter<'a> {
     fn position(&self, stmt: &Stmt) -> (TokenStream, Vec<Stored>) {
         let (name, g, t) = (&local(&stmt.name), grp(stmt), tag(stmt));
         let kind = kinds::of(stmt);
-        let (code, mut fields) = match kind.position(self.cos_sin) {
+        let solve = match self.tracking.then(|| kind.position_tracking()).flatten() {
+            Some(solve) => solve,
+            None => kind.position(self.cos_sin),
+        };
+        let (code, mut fields) = match solve {
             Solve::Own { expr, ty } => (
                 quote!(let #name = #expr;),
                 vec![Stored::new(&stmt.name, name, ty)],
@@ -283,7 +291,36 @@ pub(super) fn items(
         }
     });
     out.push(cos_sin_items(em, &names, inputs, layout.keep_input, &value));
+    if let Some(code) = tracking_code(em) {
+        let doc = "Solves the position analysis on the same assembly as `previous` (a triad's: Newton from its pose, falling back to the full search, `NotNear` when that assembly has met another one or vanished): the form for sweeps and real-time loops, where `position` picks the assembly from the pose tracked at expansion time.";
+        out.methods.extend(quote! {
+            #[doc = #doc]
+            #[inline(always)]
+            #[allow(non_snake_case, unused_variables)]
+            pub fn position_near(&self, previous: &#position_ty<T>, input: &#input_ty<T>) -> ::core::result::Result<#position_ty<T>, ::mechanism::Error<T>> {
+                let input = *input;
+                let pos = previous;
+                #code
+                #pos_out_code
+                ::core::result::Result::Ok(#value)
+            }
+        });
+    }
     out
+}
+
+/// The code of `position_near` (its reads of `pos` decide the position
+/// struct's hidden fields), `None` when no statement has several assemblies.
+pub(super) fn tracking_code(em: &Emitter<'_>) -> Option<TokenStream> {
+    let (model, plan) = (em.model, em.plan);
+    plan.solve
+        .iter()
+        .any(|&i| kinds::of(&model.stmts[i]).position_tracking().is_some())
+        .then(|| {
+            let mut tr = Emitter::new(model, plan, false);
+            tr.tracking = true;
+            tr.code().code
+        })
 }
 
 /// The inputs of cranks marked `as cos_sin`.

@@ -28,6 +28,7 @@ mod rrp;
 mod rrr;
 mod slider;
 pub(crate) mod tokens;
+pub mod triad;
 
 use crate::diag::Diagnostics;
 use crate::model::{Kind, Stmt};
@@ -157,6 +158,13 @@ pub trait GroupKind<'a> {
 
     /// Its position code; `cos_sin`: emitting `position_cos_sin`.
     fn position(&self, cos_sin: bool) -> Solve;
+
+    /// Its position code in the tracking form (`position_near`), which
+    /// stays on the assembly of the previous position `pos`; `None`: the
+    /// same as `position` (kinds with a single assembly per mode).
+    fn position_tracking(&self) -> Option<Solve> {
+        None
+    }
 
     /// Unit axis and raw direction of its link `index`, in position scope.
     fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
@@ -499,6 +507,7 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             from,
             local,
         }),
+        Kind::Triad(t) => Box::new(triad::TriadKind { stmt, t }),
     }
 }
 

@@ -3,14 +3,14 @@
 //! reading the arguments by role ([`Args`]).
 
 use super::args::{Args, NumberScope};
-use super::{Kind, Local, Origin};
+use super::{Kind, Local, Origin, Triad};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::vocabulary::{arity, unsupported_driver, usage, KINDS};
 use crate::parse::{self, Arg};
 use crate::value::convert;
 use crate::value::{Scope, Value};
 use syn::spanned::Spanned;
-use syn::Expr;
+use syn::{Expr, Ident};
 
 /// The error for a statement written with fewer arguments than its kind
 /// takes, before any argument is read: read in order, the arguments would
@@ -81,6 +81,7 @@ pub(super) fn lower_kind(
         "prp" => prp(&mut a)?,
         "rpp" => rpp(&mut a)?,
         "point" => point(&mut a, stmt)?,
+        "triad" => triad(&mut a, stmt)?,
         _ => return None,
     };
     a.finish();
@@ -270,4 +271,144 @@ fn point(a: &mut Args, stmt: &parse::Let) -> Option<Kind> {
         _ => Local::Polar(a.number("distance", false)?, a.number("angle", true)?),
     };
     Some(Kind::Point { link, from, local })
+}
+
+/// A pair `(x, y)` of numbers (L), in the role `role`.
+fn pair(a: &mut Args, role: &str) -> Option<(Value, Value)> {
+    let scope = a.scope;
+    match a.next(role)? {
+        Arg::Value(Expr::Tuple(t), None) if t.elems.len() == 2 => {
+            let x = convert(&t.elems[0], scope)
+                .map_err(|e| a.errors.error(e))
+                .ok()?;
+            let y = convert(&t.elems[1], scope)
+                .map_err(|e| a.errors.error(e))
+                .ok()?;
+            Some((x, y))
+        }
+        other => {
+            let span = match other {
+                Arg::Value(e, _) => e.span(),
+                Arg::From(i) => i.span(),
+            };
+            a.fail(
+                span,
+                format!(
+                    "expected {role} as `(x, y)`, two numbers; usage: `{}`",
+                    a.usage
+                ),
+            );
+            None
+        }
+    }
+}
+
+/// `INPUT = value`: the input at which a triad's pose hint holds (an angle
+/// in `deg` or `rad`, or a length).
+fn input_at(a: &mut Args) -> Option<(Ident, Value)> {
+    let scope = a.scope;
+    let role = "input at which the pose holds";
+    let arg = a.next(role)?;
+    let bad = |a: &mut Args, span: proc_macro2::Span| {
+        a.fail(
+            span,
+            format!(
+                "expected the {role}, `INPUT = value` (e.g. `phi = -49.48 deg`); usage: `{}`",
+                a.usage
+            ),
+        );
+    };
+    let Arg::Value(Expr::Assign(e), unit) = arg else {
+        let span = match arg {
+            Arg::Value(e, _) => e.span(),
+            Arg::From(i) => i.span(),
+        };
+        bad(a, span);
+        return None;
+    };
+    let name = match &*e.left {
+        Expr::Path(p) if p.path.get_ident().is_some() => p.path.get_ident()?.clone(),
+        other => {
+            bad(a, other.span());
+            return None;
+        }
+    };
+    let value = convert(&e.right, scope)
+        .map_err(|err| a.errors.error(err))
+        .ok()?;
+    let value = match unit {
+        None => value,
+        Some(u) if u == "deg" => value.degrees(),
+        Some(u) if u == "rad" => value,
+        Some(u) => {
+            a.fail(
+                u.span(),
+                format!(
+                    "unknown unit `{u}`; write `deg` or `rad` for an angle, nothing for a length"
+                ),
+            );
+            return None;
+        }
+    };
+    Some((name, value))
+}
+
+/// `let (A, B, P) = triad(K1, l1, K2, l2, K3, l3, ab, P's place, INPUT =
+/// value, (ax, ay), (bx, by), (px, py))`, P's place `distance, angle` or
+/// `(x, y)` in the ternary's frame.
+fn triad(a: &mut Args, stmt: &parse::Let) -> Option<Kind> {
+    let [b, p] = match &stmt.joints[..] {
+        [b, p] => [b.clone(), p.clone()],
+        _ => {
+            let name = &stmt.name;
+            a.fail(
+                name.span(),
+                format!(
+                    "a triad defines three joints: write `let ({name}, B, P) = triad(..)` with the names of the ternary link's other two joints"
+                ),
+            );
+            return None;
+        }
+    };
+    let k1 = a.name("first leg's known point")?;
+    let l1 = a.length("first leg's length")?;
+    let k2 = a.name("second leg's known point")?;
+    let l2 = a.length("second leg's length")?;
+    let k3 = a.name("third leg's known point")?;
+    let l3 = a.length("third leg's length")?;
+    let ab = a.length("ternary link's side |AB|")?;
+    let scope = a.scope;
+    let p_local = match stmt.args.get(7) {
+        Some(Arg::Value(Expr::Tuple(t), None)) if t.elems.len() == 2 => {
+            a.args.next();
+            let x = convert(&t.elems[0], scope)
+                .map_err(|e| a.errors.error(e))
+                .ok()?;
+            let y = convert(&t.elems[1], scope)
+                .map_err(|e| a.errors.error(e))
+                .ok()?;
+            Local::Cartesian(x, y)
+        }
+        _ => Local::Polar(
+            a.number("distance |AP|", false)?,
+            a.number("angle of P from A -> B", true)?,
+        ),
+    };
+    let at = input_at(a)?;
+    let near = [
+        pair(a, "the approximate position of A")?,
+        pair(a, "the approximate position of B")?,
+        pair(a, "the approximate position of P")?,
+    ];
+    Some(Kind::Triad(Box::new(Triad {
+        k: [k1, k2, k3],
+        l: [l1, l2, l3],
+        ab,
+        p_local,
+        b,
+        p,
+        at,
+        near,
+        table: Default::default(),
+    })))
 }

@@ -5,11 +5,11 @@
 
 use super::args::{literal_scope_for, NumberScope, MODE_PARAM};
 use super::kinds::lower_kind;
-use super::{inputs, modes, Allowed, Failed, Kinetics, Level, Mode, Model, Stmt};
+use super::{inputs, modes, Allowed, Failed, Kind, Kinetics, Level, Local, Mode, Model, Stmt};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::vocabulary::{input_position, links_created, KINDS};
 use crate::parse::{self, Arg, Assign, Definition, Item, RangeDecl};
-use crate::value::convert;
+use crate::value::{convert, Value};
 use proc_macro2::Span;
 use std::collections::BTreeMap;
 use syn::{Expr, Ident, LitInt};
@@ -104,6 +104,7 @@ fn defined_names(items: &[Item]) -> Vec<(String, &'static str)> {
                 _ => "a point",
             };
             names.push((l.name.to_string(), what));
+            names.extend(l.joints.iter().map(|n| (n.to_string(), "a point")));
             names.extend(l.links.iter().map(|n| (n.to_string(), "a link")));
             names.extend(
                 l.slides
@@ -366,7 +367,17 @@ impl<'a> Body<'a> {
     fn let_statement(&mut self, mut l: parse::Let, errors: &mut Diagnostics) {
         let mode_param = modes::take_mode_param(&mut l, &self.modes);
         let Some(kind) = lower_kind(&l, self.scope, errors) else {
+            // A triad's other joints stay defined as well.
+            let joints = l.joints.iter().map(|j| Failed {
+                name: j.clone(),
+                kind: l.kind.clone(),
+                links: Vec::new(),
+                slides: Vec::new(),
+                input: None,
+            });
+            let joints: Vec<Failed> = joints.collect();
             self.failed.push(failed(l));
+            self.failed.extend(joints);
             return;
         };
         let (links, links_named) = links(&l, kind.link_count(), errors);
@@ -382,6 +393,7 @@ impl<'a> Body<'a> {
             );
         }
         let slides = (0..want_slides).map(|i| l.slides.get(i).cloned()).collect();
+        let joints = triad_joints(&l, &kind, &links);
         self.stmts.push(Stmt {
             name: l.name,
             kind_token: l.kind,
@@ -391,6 +403,7 @@ impl<'a> Body<'a> {
             slides,
             mode_param,
         });
+        self.stmts.extend(joints);
     }
 
     /// `range INPUT = (lo, hi);`: kept for [`inputs::inputs`], which reads
@@ -399,6 +412,39 @@ impl<'a> Body<'a> {
     fn range(&mut self, r: RangeDecl) {
         self.checks.ranges.push(r);
     }
+}
+
+/// A triad's joints `B` and `P` as points on its ternary link (its fourth
+/// link) measured from `A`: `B` at `(ab, 0)`, `P` where the statement puts
+/// it. Empty for every other kind.
+fn triad_joints(l: &parse::Let, kind: &Kind, links: &[Ident]) -> Vec<Stmt> {
+    let (Kind::Triad(t), Some(ternary)) = (kind, links.get(3)) else {
+        return Vec::new();
+    };
+    let zero = Value::lit(0.0, t.ab.span);
+    let p_local = match &t.p_local {
+        Local::Polar(d, a) => Local::Polar(d.clone(), a.clone()),
+        Local::Cartesian(x, y) => Local::Cartesian(x.clone(), y.clone()),
+    };
+    [
+        (&t.b, Local::Cartesian(t.ab.clone(), zero)),
+        (&t.p, p_local),
+    ]
+    .into_iter()
+    .map(|(name, local)| Stmt {
+        name: name.clone(),
+        kind_token: l.kind.clone(),
+        kind: Kind::Point {
+            link: ternary.clone(),
+            from: l.name.clone(),
+            local,
+        },
+        links: Vec::new(),
+        links_named: Vec::new(),
+        slides: Vec::new(),
+        mode_param: None,
+    })
+    .collect()
 }
 
 /// A `let` statement whose arguments were rejected: the names it meant to
@@ -512,7 +558,13 @@ fn link_count_message(l: &parse::Let, want: usize) -> String {
     let given: Vec<String> = l.links.iter().map(Ident::to_string).collect();
     let mut names: Vec<String> = given.iter().take(want).cloned().collect();
     while names.len() < want {
-        let next = next_name(names.last().map_or("link", String::as_str));
+        // A triad's links by role (a number after the last given name may
+        // be a link of the crank that drives it).
+        let next = match (l.kind == "triad", names.len()) {
+            (true, 3) => "ternary".to_string(),
+            (true, k) => format!("leg{}", k + 1),
+            _ => next_name(names.last().map_or("link", String::as_str)),
+        };
         names.push(next);
     }
     let kind = &l.kind;
@@ -526,6 +578,12 @@ fn link_count_message(l: &parse::Let, want: usize) -> String {
         format!(
             "`{kind}` creates one link ({what}): name it alone, `as {}`, and remove {extra}",
             names[0]
+        )
+    } else if want > 2 {
+        format!(
+            "`{kind}` creates {want} links ({what}), and {} names are given: name the {want}, `as ({})`",
+            given.len(),
+            names.join(", ")
         )
     } else if given.len() > want {
         format!(

@@ -301,6 +301,44 @@ pub enum Kind {
         from: Ident,
         local: Local,
     },
+    /// The triad (class III group): the statement of its joint `A`; its
+    /// joints `B` and `P` are lowered as points on the ternary link.
+    Triad(Box<Triad>),
+}
+
+/// A `triad` statement's arguments (lengths in L, angles in rad).
+pub struct Triad {
+    /// The known points of the three legs.
+    pub k: [Ident; 3],
+    /// The legs' lengths `|A - K1|`, `|B - K2|`, `|P - K3|`.
+    pub l: [Value; 3],
+    /// The ternary link's side `|B - A|`.
+    pub ab: Value,
+    /// `P` in the ternary's frame (origin `A`, x along `A -> B`).
+    pub p_local: Local,
+    /// The joints `B` and `P` (defined by the same statement).
+    pub b: Ident,
+    /// See `b`.
+    pub p: Ident,
+    /// The input and its value at which the pose hint holds.
+    pub at: (Ident, Value),
+    /// The approximate `A`, `B`, `P` at `at` (L).
+    pub near: [(Value, Value); 3],
+    /// The assembly tracked over the input's range at expansion time
+    /// (filled by the check when every dimension folds; empty otherwise).
+    pub table: std::cell::RefCell<Tracked>,
+}
+
+/// What tracking a triad's stated assembly over its input's range found.
+#[derive(Clone, Debug, Default)]
+pub struct Tracked {
+    /// The pose at evenly spaced inputs: `[input, ax, ay, bx, by, px, py]`.
+    pub rows: Vec<[f64; 7]>,
+    /// Where the tracked assembly stops existing: the last input it was
+    /// found at and the first it was not, below and above the stated one.
+    pub ends: Vec<(f64, f64)>,
+    /// `true` when the input is an angle (rad; messages show deg).
+    pub angle: bool,
 }
 
 impl Kind {
@@ -309,6 +347,7 @@ impl Kind {
         match self {
             Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } => 0,
             Kind::Crank { .. } | Kind::Slider { .. } => 1,
+            Kind::Triad(_) => 4,
             _ => 2,
         }
     }
@@ -353,6 +392,7 @@ pub fn group_kind(kind: &Kind) -> Option<&'static str> {
         Kind::Prp { .. } => "PRP",
         Kind::Rpp { .. } => "RPP",
         Kind::Point { .. } => "link point",
+        Kind::Triad(_) => "triad",
         Kind::Ground { .. } | Kind::Guide { .. } => return None,
     })
 }

@@ -110,6 +110,9 @@ pub struct Assign {
 pub struct Let {
     /// The defined name (a point, a guide, or a slide variable).
     pub name: Ident,
+    /// The other joints a `let (A, B, P) = triad(..)` defines (`B`, `P`);
+    /// empty for every other statement.
+    pub joints: Vec<Ident>,
     /// The statement kind (`ground`, `crank`, `rrr`, ...).
     pub kind: Ident,
     /// Arguments in order.

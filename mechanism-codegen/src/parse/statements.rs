@@ -13,6 +13,7 @@ use super::{
 };
 use syn::buffer::Cursor;
 use syn::parse::{Parse, ParseStream};
+use syn::punctuated::Punctuated;
 use syn::{braced, parenthesized, Expr, ExprLit, Ident, Lit, Token};
 
 impl Parse for Item {
@@ -53,15 +54,48 @@ impl Parse for Item {
     }
 }
 
-/// `let NAME = KIND(args) as (links) slide (names);`, begun at `start`.
+/// `(A, B, P)`: the joints a `triad` defines, after `let`.
+fn joint_names(input: ParseStream) -> syn::Result<Vec<Ident>> {
+    let content;
+    let paren = parenthesized!(content in input);
+    let names = Punctuated::<Ident, Token![,]>::parse_terminated(&content).map_err(|e| {
+        syn::Error::new(
+            e.span(),
+            "expected the three joints a triad defines: `let (A, B, P) = triad(..)`",
+        )
+    })?;
+    if names.len() != 3 {
+        return Err(syn::Error::new(
+            paren.span.join(),
+            format!(
+                "a `let (..)` names the three joints of a triad, `(A, B, P)`, not {}: `let (A, B, P) = triad(..)`",
+                names.len()
+            ),
+        ));
+    }
+    Ok(names.into_iter().collect())
+}
+
+/// `let NAME = KIND(args) as (links) slide (names);` (or `let (A, B, P) =
+/// triad(..) as (..);`), begun at `start`.
 fn parse_let(input: ParseStream, start: Cursor) -> syn::Result<Item> {
     input.parse::<Token![let]>()?;
-    let name: Ident = input.parse().map_err(|e| {
-        syn::Error::new(
+    let joints = if input.peek(syn::token::Paren) {
+        joint_names(input)?
+    } else {
+        Vec::new()
+    };
+    let name: Ident = if let Some(first) = joints.first() {
+        first.clone()
+    } else {
+        input.parse().map_err(|e| {
+            syn::Error::new(
             e.span(),
             "expected the name this statement defines (a letter first): `let NAME = KIND(args);`",
         )
-    })?;
+        })?
+    };
+    let joints = joints.into_iter().skip(1).collect();
     input.parse::<Token![=]>().map_err(|e| {
         syn::Error::new(
             e.span(),
@@ -120,6 +154,7 @@ fn parse_let(input: ParseStream, start: Cursor) -> syn::Result<Item> {
     end(input, start, &what, Valued::Nothing)?;
     Ok(Item::Let(Let {
         name,
+        joints,
         kind,
         args,
         args_span: paren.span.join(),

@@ -8,6 +8,7 @@ use syn::Expr;
 /// Every statement kind the language knows, for suggestions.
 pub const KINDS: &[&str] = &[
     "ground", "guide", "crank", "slider", "actuator", "rrr", "rrp", "rpr", "prp", "rpp", "point",
+    "triad",
 ];
 
 /// How a statement kind is written (for messages); "" for an unknown kind.
@@ -24,6 +25,7 @@ pub fn usage(kind: &str) -> &'static str {
         "prp" => "prp(GUIDE1, GUIDE2[, offset1, offset2]) as (LINK1, LINK2) slide (S1, S2)",
         "rpp" => "rpp(A, GUIDE, slot_angle[, offset]) as (BLOCK, LINK) slide (S1, S2)",
         "point" => "point(LINK, from POINT, distance, angle) or point(LINK, from POINT, (x, y))",
+        "triad" => "let (A, B, P) = triad(K1, l1, K2, l2, K3, l3, ab, distance, angle, INPUT = value, (ax, ay), (bx, by), (px, py)) as (LEG1, LEG2, LEG3, TERNARY), P's place also `(x, y)`",
         _ => "",
     }
 }
@@ -47,6 +49,10 @@ pub fn arity(kind: &str, args: &[Arg]) -> Option<(usize, usize)> {
         "point" => match args.get(2) {
             Some(Arg::Value(Expr::Tuple(_), _)) => (3, 3),
             _ => (4, 4),
+        },
+        "triad" => match args.get(7) {
+            Some(Arg::Value(Expr::Tuple(_), _)) => (12, 12),
+            _ => (13, 13),
         },
         _ => return None,
     })
@@ -77,6 +83,9 @@ pub fn links_created(kind: &str) -> &'static str {
         "rpr" => "the block pinned at A, and the link pivoted at B",
         "prp" => "the block on the first guide, and the block on the second",
         "rpp" => "the block pinned at A, and the slotted link sliding on the guide",
+        "triad" => {
+            "leg 1 from K1 to A, leg 2 from K2 to B, leg 3 from K3 to P, and the ternary link A-B-P"
+        }
         _ => "",
     }
 }

@@ -40,6 +40,8 @@ pub fn model(model: &Model, errors: &mut Diagnostics) {
     // Each kind's own rules on its arguments (an RPP's slot crosses its
     // guide).
     structure::kind_rules(model, errors);
+    // A triad's pose is given at a value of one of the inputs.
+    crate::kinds::triad::pose_input(model, errors);
     // `#[self_test]` has a range to sweep for every input, and at most two.
     structure::self_test_sweepable(model, errors);
 }

@@ -1,0 +1,17 @@
+use mechanism::mechanism;
+
+mechanism! {
+    /// The pose is given at an input outside the declared range.
+    pub Stephenson {
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(0.30, 0.0);
+        let O6 = ground(0.05, 0.42);
+        let C = crank(O6, 0.24, phi) as link6;
+        let (A, B, P) = triad(O2, 0.08, O4, 0.20, C, 0.28, 0.26, 0.15, 40 deg,
+                              phi = 10 deg, (-0.061, -0.052), (0.137, 0.116), (-0.036, 0.096))
+            as (crank2, rocker, link5, coupler);
+        range phi = (-50 deg, -3 deg);
+    }
+}
+
+fn main() {}
