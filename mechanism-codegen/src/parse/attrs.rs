@@ -69,6 +69,29 @@ pub struct Attrs {
 /// What a definition accepts, for the messages.
 const ACCEPTED: &str = "a definition takes doc comments (`///`), `#[self_test]`, `#[derive(..)]` and `#[cfg_attr(PREDICATE, derive(..))]`";
 
+/// A doc attribute as `///` writes it: `#[doc = "text"]`. Anything else
+/// (`#[doc = - "text"]`, `#[doc(hidden)]`) would be copied onto the
+/// generated items and fail there; it is an error on its tokens here.
+fn doc_is_text(attr: &Attribute) -> syn::Result<()> {
+    match &attr.meta {
+        Meta::NameValue(nv)
+            if matches!(
+                &nv.value,
+                syn::Expr::Lit(syn::ExprLit {
+                    lit: syn::Lit::Str(_),
+                    ..
+                })
+            ) =>
+        {
+            Ok(())
+        }
+        _ => Err(syn::Error::new_spanned(
+            &attr.meta,
+            "a doc comment on a definition is text: write `/// text` (or `#[doc = \"text\"]`)",
+        )),
+    }
+}
+
 /// Sorts the outer attributes of a definition; the first bad one is an error
 /// on its tokens.
 pub fn sort(attrs: Vec<Attribute>) -> syn::Result<Attrs> {
@@ -80,6 +103,7 @@ pub fn sort(attrs: Vec<Attribute>) -> syn::Result<Attrs> {
     for attr in attrs {
         let path = attr.path();
         if path.is_ident("doc") {
+            doc_is_text(&attr)?;
             out.docs.push(attr);
         } else if path.is_ident("self_test") {
             if out.self_test.is_some() {
@@ -257,6 +281,20 @@ mod tests {
             .expect("attributes parse")
             .attrs;
         sort(attrs)
+    }
+
+    // Proves a doc attribute that is not text (found by the expand fuzzer:
+    // `#[doc = - "x"]` expanded, then failed to compile in the generated
+    // code) is an error on the attribute, and text passes.
+    #[test]
+    fn doc_attributes_are_text() {
+        assert!(sorted("#[doc = \"text\"]").is_ok());
+        for bad in ["#[doc = - \"x\"]", "#[doc(hidden)]", "#[doc = 1.0]"] {
+            let e = sorted(bad)
+                .err()
+                .unwrap_or_else(|| panic!("{bad} accepted"));
+            assert!(e.to_string().contains("doc comment"), "{bad}: {e}");
+        }
     }
 
     // Proves plain and gated derives are read with their kind and predicate,
