@@ -1,4 +1,4 @@
-//! The Stephenson III six-bar of issue 22 (m, kg, N): link 6 (O6-C) driven
+//! The Stephenson III six-bar (m, kg, N): link 6 (O6-C) driven
 //! by its angle `phi` at 1.5 rad/s and -0.5 rad/s^2 moves the triad
 //! (class III group) crank2 O2-A, rocker O4-B, link5 C-P on the ternary
 //! coupler A-B-P. The assembly is the one near the pose given at
@@ -10,7 +10,7 @@
 //! torque and joint reactions with masses, gravity and a 20 N load at P.
 //!
 //! Run: `cargo run --release --example stephenson` (table) or with
-//! `-- --csv` (the columns of issue 22 first, 17 significant digits, then
+//! `-- --csv` (the 16 kinematic columns first, 17 significant digits, then
 //! the forces). Pictures: `target/plots/stephenson/`.
 #[macro_use]
 #[path = "common/cli.rs"]

@@ -1,4 +1,4 @@
-//! The Stephenson III six-bar of issue 22 (m, kg): a triad (class III
+//! The Stephenson III six-bar (m, kg): a triad (class III
 //! group) driven by link 6's angle. Shared by `examples/stephenson.rs` and
 //! its tests (`tests/examples/stephenson.rs`).
 #![allow(dead_code)]
@@ -140,7 +140,7 @@ pub fn rows(m: &Stephenson<f64>, (lo, hi): (f64, f64), n: usize) -> Vec<Row> {
         .collect()
 }
 
-/// The CSV columns issue 22 asks for, in order.
+/// The CSV columns the example prints first, in order.
 pub const COLUMNS: [&str; 16] = [
     "phi_deg",
     "ax",

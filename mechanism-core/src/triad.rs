@@ -1212,7 +1212,7 @@ pub fn reactions<T: Real>(
 mod tests {
     use super::*;
 
-    /// The Stephenson III triad of issue 22 at link 6's angle `phi` (rad).
+    /// The Stephenson III triad of `examples/stephenson.rs` at link 6's angle `phi` (rad).
     fn stephenson(phi: f64) -> (Triad<f64>, [Point2<f64>; 3]) {
         let d = 40f64.to_radians();
         let triad = Triad {

@@ -1,5 +1,5 @@
 //! Regressions of silently wrong `Ok` answers at the edges of the core's
-//! ranges: the run-time findings of issue 26 (a tiny `(cos, sin)` pair, an
+//! ranges: the run-time findings of fuzzing (a tiny `(cos, sin)` pair, an
 //! RRR whose known joints are far closer than its links, a crank angle
 //! outside `(-pi, pi]` for huge inputs) and what the run-time fuzzer
 //! (`fuzz/src/bin/runtime.rs`) found after them. Each test failed before
@@ -22,7 +22,7 @@ fn dist<T: Real>(a: &Point2<T>, b: &Point2<T>) -> f64 {
     (a.x.as_f64() - b.x.as_f64()).hypot(a.y.as_f64() - b.y.as_f64())
 }
 
-/// Issue 26: `position_cos_sin` with a tiny pair put the tip at the wrong
+/// Fuzzed: `position_cos_sin` with a tiny pair put the tip at the wrong
 /// radius (the squared length was formed unscaled): f64 `(0.8775825618903728e-161,
 /// 0.479425538604203e-161)` gave `|A - O2| = 99.745` for a crank of 101.6,
 /// f32 `(4.33e-23, 2.17e-23)` gave 131.45. Now within 2 eps of 101.6, and
@@ -55,7 +55,7 @@ fn tiny_cos_sin_pair_keeps_the_crank_length() {
     check::<f32>(4e-44, 2e-44);
 }
 
-/// Issue 26: the five-bar `{ base: 1e-150, proximal: 1e-153, distal: 1e-51 }`
+/// Fuzzed: the five-bar `{ base: 1e-150, proximal: 1e-153, distal: 1e-51 }`
 /// at `q = (1.8, 0.8)` (f64), and `{ base: 8.852912e-30, proximal:
 /// 1.1069633e-18, distal: 6.565753e-13 }` at `q = (5.02377e-6, 0.8000002)`
 /// (f32): the RRR of the two distal links, whose known joints are far
@@ -133,7 +133,7 @@ fn rrr_in_the_band_keeps_c_at_l1() {
     assert!(matches!(far.unwrap_err().fault, Fault::Singular { .. }));
 }
 
-/// Issue 26: a crank's link angle (`wrap_angle` of the input) left `(-pi,
+/// Fuzzed: a crank's link angle (`wrap_angle` of the input) left `(-pi,
 /// pi]`: f32 2.2e8 gave -9.716814, 4e12 gave -262137.72, f64 1.3e17 gave
 /// -9.7168. Decided: an input at or beyond `angle_limit` (f32 2^24, f64
 /// 2^53, where the input's spacing is 2 rad or more) is a typed error of

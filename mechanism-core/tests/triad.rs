@@ -13,7 +13,7 @@
 //! - `forces_balance_power_and_match_newton_euler`: the 12x12 reactions pass
 //!   the power balance to a few eps and agree with a Newton-Euler solution
 //!   of the four bodies in double-double;
-//! - `stephenson_iii_swing`: the example of issue 22: the assembly nearest
+//! - `stephenson_iii_swing`: the example `examples/stephenson.rs`: the assembly nearest
 //!   the stated pose, tracked over link 6's whole swing (the same assembly
 //!   as the reference's continuation at every step), and the swing's ends
 //!   against the reference's fold points;
@@ -512,7 +512,7 @@ fn check_forces(
     (power, worst)
 }
 
-/// The Stephenson III six-bar of issue 22 (m): the triad of the coupler
+/// The Stephenson III six-bar of `examples/stephenson.rs` (m): the triad of the coupler
 /// `A-B-P` with legs O2-A (0.08), O4-B (0.20) and C-P (0.28), `C` on link 6
 /// (O6-C, 0.24) at the angle `phi` (rad).
 fn stephenson(phi: f64) -> Case {
