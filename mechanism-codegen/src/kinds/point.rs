@@ -74,23 +74,28 @@ impl<'a> GroupKind<'a> for Point<'a> {
             let b = format_ident!("{}_{}", cx.pfx(), from);
             quote!(#b)
         });
+        // The motion about `from`, as (unchecked, checked) calls.
+        let offset = quote!(&(pos.#name - pos.#from));
         let relative = match (cx.link_rate(link), cx.accel()) {
             (None, _) => None,
-            (Some(w), false) => {
-                Some(quote!(::mechanism::link::point_velocity(&(pos.#name - pos.#from), #w) #t))
-            }
+            (Some(w), false) => Some((
+                quote!(::mechanism::link::relative_velocity(#offset, #w)),
+                quote!(::mechanism::link::point_velocity(#offset, #w) #t),
+            )),
             (Some(alpha), true) => {
                 let w = cx.link_omega_in_accel(link).unwrap_or_else(|| lit(0.0));
-                Some(
-                    quote!(::mechanism::link::point_acceleration(&(pos.#name - pos.#from), #w, #alpha) #t),
-                )
+                Some((
+                    quote!(::mechanism::link::relative_acceleration(#offset, #w, #alpha)),
+                    quote!(::mechanism::link::point_acceleration(#offset, #w, #alpha) #t),
+                ))
             }
         };
         let value = match (base, relative) {
-            // Checked again: the sum of two finite vectors can overflow.
-            (Some(b), Some(r)) => quote!(::mechanism::link::point_sum(&#b, #r) #t),
+            // One check, of the sum: it overflows or is NaN whenever the
+            // motion about `from` is not finite (the base's is finite).
+            (Some(b), Some((r, _))) => quote!(::mechanism::link::point_sum(&#b, #r) #t),
             (Some(b), None) => b,
-            (None, Some(r)) => r,
+            (None, Some((_, checked))) => checked,
             (None, None) => quote!(::mechanism::Vector2::zeros()),
         };
         cx.code(quote!(let #pv = #value;));
