@@ -155,6 +155,33 @@ fn path_keywords_are_not_names() {
     }
 }
 
+// A raw identifier as a name (a link, a point, an input, a parameter): an
+// error on it with a plain name to use (a link `r#type` in a force analysis
+// made the macro panic building `r_r#type_link4`; expand fuzzer).
+#[test]
+fn raw_identifiers_are_not_names() {
+    let cases = [
+        "pub R { let O = ground(0.0, 0.0); let line = guide((0.0, -0.3), 0 deg);
+    let P = slider(line, s) as r#type; let A = crank(O, 0.1, theta) as link2;
+    let B = rrr(A, 0.4, P, 0.35, left) as (link3, link4);
+    mass link3 { m = 1.0, at = B }; torque on link4 = 0.5; }",
+        "pub R { let O = ground(0.0, 0.0); let O4 = ground(3.5, 0.0);
+    let r#loop = crank(O, 1.0, th) as link2;
+    let B = rrr(r#loop, 3.0, O4, 3.0, left) as (link3, link4); }",
+        "pub R { params { r#fn = 1.0 } let O = ground(0.0, 0.0); let O4 = ground(3.5, 0.0);
+    let A = crank(O, r#fn, r#in) as link2;
+    let B = rrr(A, 3.0, O4, 3.0, left) as (link3, link4); }",
+    ];
+    for src in cases {
+        let errors = expand(src);
+        assert!(!errors.is_empty(), "accepted: {src}");
+        for e in &errors {
+            assert!(e.0.contains("raw identifier"), "{e:?}");
+        }
+    }
+    one_error_at(cases[0], "r#type", &["raw identifier", "`type_`"]);
+}
+
 // Numbers with a type suffix or in another base: an error with the decimal
 // to write (they were accepted by value).
 #[test]

@@ -39,9 +39,19 @@ impl Lexical {
     /// `self`, `Self`, `super` and `crate` are the keywords that syn takes as
     /// a path where a name stands (`crank(O, r, self)`); none names anything
     /// in a definition, and the generated code could not use them as names.
+    ///
+    /// A raw identifier (`r#type`) is refused too: the generated code builds
+    /// names from the user's (`r_<link>_<link>`, `vel_<point>`), and
+    /// `r_r#type_link4` is no identifier (the macro panicked in `quote`;
+    /// expand fuzzer, seed 1795706637983566365).
     fn ident(&mut self, i: &Ident) {
         let word = i.to_string();
-        if ["self", "Self", "super", "crate"].contains(&word.as_str()) {
+        if let Some(plain) = word.strip_prefix("r#") {
+            self.push(syn::Error::new(
+                i.span(),
+                format!("`{word}`: raw identifiers are not supported: the generated code builds its names from yours (`r_<link>_<link>`, `vel_<point>`), and `r#` cannot stand inside a name; choose another name, e.g. `{plain}_`"),
+            ));
+        } else if ["self", "Self", "super", "crate"].contains(&word.as_str()) {
             self.push(syn::Error::new(
                 i.span(),
                 format!("`{word}` is a Rust keyword and cannot name anything in a definition; choose another name, e.g. `{}_`", word.to_lowercase()),

@@ -325,12 +325,9 @@ pub(super) fn defined_where(model: &Model, name: &Ident) -> Option<String> {
 /// Rule: names the generated code needs for itself are not available.
 pub(super) fn reserved_names(model: &Model, errors: &mut Diagnostics) {
     for (name, (_, ident)) in symbols(model) {
-        if let Some(bare) = name.strip_prefix("r#") {
-            errors.push(
-                ident.span(),
-                format!("raw identifiers are not supported: the generated code builds its names from yours (`pos_{bare}`, `vel_{bare}`), and `r#` cannot stand inside a name; choose a name that is not a Rust keyword, e.g. `{bare}_`"),
-            );
-        } else if name == "T" {
+        // Raw identifiers (`r#type`) never get here: `parse::lexical`
+        // refuses them on every token.
+        if name == "T" {
             errors.push(
                 ident.span(),
                 "`T` is the generated types' scalar parameter (`f32` or `f64`); choose another name",
