@@ -32,4 +32,5 @@ pub fn header(names: &[&str], width: usize) -> String {
         .collect::<Vec<_>>()
         .join(" ")
 }
+pub mod leg;
 pub mod stephenson;

@@ -282,6 +282,10 @@ impl kinds::Placed for Plan {
     fn is_ground_point(&self, point: &str) -> bool {
         self.is_ground(point)
     }
+
+    fn links_with_point(&self, point: &str) -> Vec<String> {
+        Plan::links_with_point(self, point)
+    }
 }
 
 /// A slide displacement the user named: its name, the statement that

@@ -961,7 +961,7 @@ fn cases() -> Vec<Case> {
             name: "crank without its radius",
             src: four_bar("    let D = crank(O4, phi) as link5;"),
             at: "crank^(O4, phi)",
-            says: &["missing argument(s) for `crank`: 2 given, it takes 3"],
+            says: &["missing argument(s) for `crank`: 2 given, it takes at least 3"],
         },
         Case {
             name: "point without its angle",

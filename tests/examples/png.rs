@@ -30,7 +30,7 @@ const fn example(name: &'static str, make: Make) -> Example {
     }
 }
 
-const EXAMPLES: [Example; 8] = [
+const EXAMPLES: [Example; 9] = [
     Example {
         docs: Some(("fourbar-kinematics.png", "fourbar-drawing.png")),
         ..example("fourbar", common::plots::fourbar)
@@ -49,6 +49,11 @@ const EXAMPLES: [Example; 8] = [
     Example {
         docs: Some(("stephenson-kinematics.png", "stephenson.png")),
         ..example("stephenson", common::stephenson::plots)
+    },
+    // Kinematics, forces, then the drawing.
+    Example {
+        drawing: 2,
+        ..example("two_r_leg", common::leg::plots)
     },
 ];
 

@@ -11,6 +11,8 @@
 //!   the limits, the ranges the expansion-time check suggests);
 //! - [`forces`]: the force analysis on loaded definitions the zoo does not have;
 //! - [`functions`]: functions in dimensions (`sqrt`, `hypot`, ...);
+//! - [`relative_drivers`]: a crank carried by a moving link and a slider on
+//!   a carried guide, against Newton-Euler worked by hand;
 //! - [`describe`]: a mechanism's description of itself (`mechanism::structure`)
 //!   and the pictures and tables drawn from it alone;
 //! - [`self_test_scales`]: `#[self_test]` passing at scales from 1e-9 to 1e9.
@@ -29,6 +31,7 @@ mod describe;
 mod dsl;
 mod forces;
 mod functions;
+mod relative_drivers;
 mod self_test_scales;
 mod statement_kinds;
 mod sweep;

@@ -1,11 +1,15 @@
-//! `crank(PIVOT, r, INPUT) as LINK`: a link turning about a pivot by the
-//! input angle (rad, counter-clockwise from +x).
+//! `crank(PIVOT, r, INPUT) as LINK`: a link turning about a ground pivot by
+//! the input angle (rad, counter-clockwise from +x); `crank(PIVOT, r, INPUT,
+//! CARRIER) as LINK`: a motor between two links (an elbow, a knee), turning
+//! about a point of the moving link `CARRIER` by the input angle measured
+//! from the carrier's axis (rad, counter-clockwise), its driving torque the
+//! relative one (acting on the link, reacting on the carrier).
 
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
-use super::tokens::{grp, local, tag, unit_field};
+use super::tokens::{axis, grp, local, tag, unit_field};
 use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
@@ -16,18 +20,23 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
 
-/// A `crank` statement. `cos_sin`: its input is marked `as cos_sin`.
+/// A `crank` statement. `cos_sin`: its input is marked `as cos_sin`;
+/// `carrier`: the moving link that carries its pivot and its motor (`None`:
+/// the ground).
 pub(super) struct Crank<'a> {
     pub stmt: &'a Stmt,
     pub pivot: &'a Ident,
     pub radius: &'a Value,
     pub input: &'a Ident,
     pub cos_sin: bool,
+    pub carrier: Option<&'a Ident>,
 }
 
 impl<'a> GroupKind<'a> for Crank<'a> {
     fn references(&self) -> Vec<(&'a Ident, Role)> {
-        vec![(self.pivot, Role::Point)]
+        let mut r = vec![(self.pivot, Role::Point)];
+        r.extend(self.carrier.map(|c| (c, Role::Link)));
+        r
     }
 
     fn link_shapes(&self) -> Vec<LinkShape> {
@@ -52,7 +61,11 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         input: &dyn Fn(&Ident) -> f64,
     ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let pivot = pose.point(self.pivot);
-        let c = driver::crank::position(&pivot, num(self.radius), input(self.input))?;
+        let (r, q) = (num(self.radius), input(self.input));
+        let c = match self.carrier {
+            None => driver::crank::position(&pivot, r, q)?,
+            Some(l) => driver::crank::position_on(&pivot, r, &pose.axis(l), q)?,
+        };
         pose.found(self.stmt, Some(c.tip), &[c.axis]);
         Ok(None)
     }
@@ -63,10 +76,21 @@ impl<'a> GroupKind<'a> for Crank<'a> {
 
     fn position(&self, cos_sin: bool) -> Solve {
         let (r, pivot, input) = (self.radius.emit(), local(self.pivot), self.input);
-        let call = if self.cos_sin && cos_sin {
-            quote!(::mechanism::driver::crank::position_cos_sin(&#pivot, #r, input_cs.#input.cos, input_cs.#input.sin))
-        } else {
-            quote!(::mechanism::driver::crank::position(&#pivot, #r, input.#input))
+        let call = match (self.cos_sin && cos_sin, self.carrier) {
+            (true, None) => {
+                quote!(::mechanism::driver::crank::position_cos_sin(&#pivot, #r, input_cs.#input.cos, input_cs.#input.sin))
+            }
+            (false, None) => {
+                quote!(::mechanism::driver::crank::position(&#pivot, #r, input.#input))
+            }
+            (true, Some(l)) => {
+                let ax = axis(l);
+                quote!(::mechanism::driver::crank::position_cos_sin_on(&#pivot, #r, &#ax, input_cs.#input.cos, input_cs.#input.sin))
+            }
+            (false, Some(l)) => {
+                let ax = axis(l);
+                quote!(::mechanism::driver::crank::position_on(&#pivot, #r, &#ax, input.#input))
+            }
         };
         Solve::Group {
             call,
@@ -79,10 +103,11 @@ impl<'a> GroupKind<'a> for Crank<'a> {
     }
 
     /// Its input, reduced to (-pi, pi] (no atan2), except in
-    /// `position_cos_sin` for a crank marked `as cos_sin`.
+    /// `position_cos_sin` for a crank marked `as cos_sin` and for a crank on
+    /// a moving link (its input is relative: its angle is its axis's).
     fn link_angle(&self, cos_sin: bool) -> Option<TokenStream> {
         let input = self.input;
-        (!(cos_sin && self.cos_sin))
+        (!(cos_sin && self.cos_sin) && self.carrier.is_none())
             .then(|| quote!(::mechanism::geometry::wrap_angle(input.#input)))
     }
 
@@ -91,16 +116,29 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         let (g, pv, t) = (grp(stmt), cx.motion(stmt), tag(stmt));
         let w = cx.own(stmt, 0);
         let m = cx.point_arg(pivot);
-        cx.code(if cx.accel() {
-            quote! {
+        let carrier = self.carrier.and_then(|l| cx.link_rate(l).map(|w| (l, w)));
+        cx.code(match (cx.accel(), carrier) {
+            (true, None) => quote! {
                 let #pv = ::mechanism::driver::crank::acceleration(&pos.#g, #m, rates.#input, accels.#input) #t;
                 let #w = accels.#input;
-            }
-        } else {
-            quote! {
+            },
+            (false, None) => quote! {
                 let #pv = ::mechanism::driver::crank::velocity(&pos.#g, #m, rates.#input) #t;
                 let #w = rates.#input;
+            },
+            // On a turning carrier the link's rates are the carrier's plus
+            // the input's (relative) ones.
+            (true, Some((l, alpha_c))) => {
+                let omega_c = cx.link_omega_in_accel(l);
+                quote! {
+                    let #w = #alpha_c + accels.#input;
+                    let #pv = ::mechanism::driver::crank::acceleration(&pos.#g, #m, #omega_c + rates.#input, #w) #t;
+                }
             }
+            (false, Some((_, omega_c))) => quote! {
+                let #w = #omega_c + rates.#input;
+                let #pv = ::mechanism::driver::crank::velocity(&pos.#g, #m, #w) #t;
+            },
         });
         cx.field(pv, vec_ty());
         cx.field(w, quote!(T));
@@ -130,7 +168,10 @@ impl<'a> GroupKind<'a> for Crank<'a> {
             self.pivot,
             self.input,
         );
-        format!("driver: crank `{links}` about `{pivot}`, input `{input}`, tip `{n}`")
+        match self.carrier {
+            None => format!("driver: crank `{links}` about `{pivot}`, input `{input}`, tip `{n}`"),
+            Some(c) => format!("driver: crank `{links}` about `{pivot}` on `{c}`, input `{input}` (angle from `{c}`'s axis), tip `{n}`"),
+        }
     }
 
     fn link_kind(&self, _index: usize) -> &'static str {
@@ -141,9 +182,10 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         true
     }
 
-    /// The crank's link: its angle is the input, its rates the input's.
+    /// The crank's link: its angle is the input, its rates the input's
+    /// (not on a moving carrier: the input is relative there).
     fn given_by_caller(&self, output: &Ident) -> bool {
-        self.stmt.links.first() == Some(output)
+        self.carrier.is_none() && self.stmt.links.first() == Some(output)
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {
@@ -151,7 +193,12 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         let (rx, link) = (rx(stmt), &stmt.links[0]);
         let load = cx.load_about(link, pivot);
         cx.solve(stmt, quote!(::mechanism::force::crank::reactions(&#load)));
-        let body = cx.body_of_point(pivot);
+        // The motor's reaction (force and torque) goes to the carrier, or to
+        // the body the pivot is on.
+        let body = match self.carrier {
+            Some(c) => Some(c.to_string()),
+            None => cx.body_of_point(pivot),
+        };
         if let Some(b) = &body {
             let r = cx.reference(b);
             let w = quote!(::mechanism::force::Wrench::force_at(&(-#rx.pivot), &pos.#pivot, &pos.#r).with_couple(-#rx.torque));
@@ -171,25 +218,54 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         self.cos_sin.then_some(self.input)
     }
 
-    /// It turns about a ground point.
+    /// It turns about a ground point, or about a point of its carrier.
     fn check_placed(&self, plan: &dyn Placed, errors: &mut Diagnostics) {
         let pivot = self.pivot;
         let p = pivot.to_string();
-        if plan.is_defined(&p) && !plan.is_ground_point(&p) {
-            errors.push(
-                pivot.span(),
-                format!("a crank turns about a ground point, and `{p}` moves; define the pivot with `ground(x, y)`"),
-            );
+        match self.carrier {
+            None if plan.is_defined(&p) && !plan.is_ground_point(&p) => {
+                let (r, input) = (self.radius.tokens.to_string(), self.input);
+                let own = &self.stmt.links;
+                let carriers = plan.links_with_point(&p);
+                let link = carriers
+                    .iter()
+                    .find(|l| !own.iter().any(|o| o == l.as_str()))
+                    .map(String::as_str)
+                    .unwrap_or("LINK");
+                errors.push(
+                    pivot.span(),
+                    format!("a crank without a carrier turns about a ground point, and `{p}` moves; for a motor on the moving link that carries `{p}` (an elbow, a knee), name that link: `crank({p}, {r}, {input}, {link})`, the input then being the angle from `{link}`'s axis; or fix the pivot with `ground(x, y)`"),
+                );
+            }
+            Some(link) => {
+                let l = link.to_string();
+                if let Some(points) = plan.link_points(link) {
+                    if plan.is_defined(&p) && !points.contains(&p) {
+                        errors.push(
+                            pivot.span(),
+                            format!("a crank carried by `{l}` turns about one of its points, and `{p}` is not on it; its points: {}", points.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(", ")),
+                        );
+                    }
+                }
+            }
+            None => {}
         }
     }
 
     fn crank_arm(&self) -> Option<(&'a Ident, &'a Value)> {
-        Some((self.pivot, self.radius))
+        self.carrier.is_none().then_some((self.pivot, self.radius))
+    }
+
+    fn reads_axis(&self) -> Option<&'a Ident> {
+        self.carrier
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        if self.carrier.is_some() {
+            return None;
+        }
         lane_steps(lane, s, self.pivot, self.radius, self.input)
     }
 }

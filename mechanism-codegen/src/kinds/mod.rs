@@ -57,6 +57,8 @@ pub trait Placed {
     fn is_defined(&self, name: &str) -> bool;
     /// `true` when `point` never moves.
     fn is_ground_point(&self, point: &str) -> bool;
+    /// The links that have `point` among their points.
+    fn links_with_point(&self, point: &str) -> Vec<String>;
 }
 
 /// A guide's line as written.
@@ -417,12 +419,14 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             radius,
             input,
             cos_sin,
+            carrier,
         } => Box::new(crank::Crank {
             stmt,
             pivot,
             radius,
             input,
             cos_sin: *cos_sin,
+            carrier: carrier.as_ref(),
         }),
         Kind::Slider {
             guide,

@@ -152,16 +152,36 @@ fn guide(a: &mut Args, stmt: &parse::Let) -> Option<Kind> {
     })
 }
 
-/// `crank(PIVOT, radius, INPUT)` or `crank(PIVOT, radius, INPUT as cos_sin)`.
+/// `crank(PIVOT, radius, INPUT)` or `crank(PIVOT, radius, INPUT as
+/// cos_sin)`, then optionally the carrying link: `crank(PIVOT, radius,
+/// INPUT, LINK)`.
 fn crank(a: &mut Args) -> Option<Kind> {
     let pivot = a.name("pivot point")?;
     let radius = a.length("crank radius")?;
     let (input, cos_sin) = a.crank_input()?;
+    let carrier = match a.args.clone().next() {
+        None => None,
+        Some(Arg::Value(Expr::Path(p), None)) if p.path.get_ident().is_some() => {
+            Some(a.name("carrying link")?)
+        }
+        Some(other) => {
+            let span = match other {
+                Arg::From(i) => i.span(),
+                Arg::Value(e, _) => e.span(),
+            };
+            a.fail(
+                span,
+                format!("a crank's fourth argument is the moving link that carries its pivot and its motor (`crank({}, r, {input}, thigh)`: the input is then the angle from `thigh`'s axis); a crank on the ground takes three", pivot),
+            );
+            return None;
+        }
+    };
     Some(Kind::Crank {
         pivot,
         radius,
         input,
         cos_sin,
+        carrier,
     })
 }
 

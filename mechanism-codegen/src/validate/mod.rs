@@ -176,7 +176,11 @@ mod tests {
         );
         assert_eq!(
             errors("let C = crank(B, 1.0, phi) as link5;"),
-            ["a crank turns about a ground point, and `B` moves; define the pivot with `ground(x, y)`"]
+            ["a crank without a carrier turns about a ground point, and `B` moves; for a motor on the moving link that carries `B` (an elbow, a knee), name that link: `crank(B, 1.0, phi, link3)`, the input then being the angle from `link3`'s axis; or fix the pivot with `ground(x, y)`"]
+        );
+        assert_eq!(
+            errors("let C = crank(B, 1.0, phi, link2) as link5;"),
+            ["a crank carried by `link2` turns about one of its points, and `B` is not on it; its points: `O2`, `A`"]
         );
         assert_eq!(
             errors("let Q = point(link4, from A, 1.0, 0 deg);"),

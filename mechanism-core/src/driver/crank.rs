@@ -97,6 +97,49 @@ pub fn position_cos_sin<T: Real>(
     place(pivot, length, v / norm, true)
 }
 
+/// A crank carried by a moving link (a motor or an encoder between two
+/// links: an elbow, a knee): its axis is the carrier's unit axis `carrier`
+/// turned by `theta` (rad, counter-clockwise, the relative angle; `0` lays
+/// the crank along the carrier's axis). The pivot is a point of the carrier.
+/// Same limits and errors as [`position`]; a carrier axis that is not
+/// finite makes the tip non-finite (`NonFinite`).
+#[inline(always)]
+pub fn position_on<T: Real>(
+    pivot: &Point2<T>,
+    length: T,
+    carrier: &Vector2<T>,
+    theta: T,
+) -> Result<CrankPosition<T>, Error<T>> {
+    let (sin, cos) = theta.sin_cos_kernel();
+    place(
+        pivot,
+        length,
+        turned(carrier, cos, sin),
+        abs(theta) < angle_limit::<T>(),
+    )
+}
+
+/// [`position_on`] with the relative angle given by its cosine and sine
+/// (normalized as in [`position_cos_sin`]). Errors as there.
+#[inline(always)]
+pub fn position_cos_sin_on<T: Real>(
+    pivot: &Point2<T>,
+    length: T,
+    carrier: &Vector2<T>,
+    cos: T,
+    sin: T,
+) -> Result<CrankPosition<T>, Error<T>> {
+    let own = position_cos_sin(&Point2::origin(), T::one(), cos, sin)?.axis;
+    place(pivot, length, turned(carrier, own.x, own.y), true)
+}
+
+/// `u` turned counter-clockwise by the angle whose cosine and sine are
+/// `(c, s)`: `(c ux - s uy, s ux + c uy)`.
+#[inline(always)]
+fn turned<T: Real>(u: &Vector2<T>, c: T, s: T) -> Vector2<T> {
+    Vector2::new(c * u.x - s * u.y, s * u.x + c * u.y)
+}
+
 /// `(v / m, |v / m|)` with `m` the larger component's magnitude: the pair
 /// brought to a size between 1 and `sqrt 2` (each division within half an
 /// ulp), so its square neither underflows nor overflows; `(v, 0)` for a
