@@ -309,3 +309,108 @@ fn a_relative_encoder_pair_gives_the_angle_form() {
         }
     }
 }
+
+mechanism! {
+    /// A five-bar with both motors on the left (m, kg, N): the shoulder
+    /// motor on the ground at O1, the elbow motor carried by the upper arm
+    /// at A, and an RRR closing the loop to the ground pivot O2. A load at C.
+    pub StackedFiveBar {
+        dof 2;
+        let O1 = ground(0.0, 0.0);
+        let O2 = ground(0.25, 0.0);
+        let A = crank(O1, 0.12, q1) as upper;
+        let B = crank(A, 0.10, q2, upper) as fore;
+        let C = rrr(B, 0.22, O2, 0.20, left) as (l3, l4);
+        let G1 = point(upper, from O1, 0.06, 0 deg);
+        let G2 = point(fore, from A, 0.05, 8 deg);
+        let G3 = point(l3, from B, 0.11, -5 deg);
+        let G4 = point(l4, from O2, 0.1, 0 deg);
+        mass upper { m = 0.8, at = G1, j = 0.002 };
+        mass fore { m = 0.5, at = G2, j = 0.0011 };
+        mass l3 { m = 0.6, at = G3, j = 0.0026 };
+        mass l4 { m = 0.55, at = G4, j = 0.0019 };
+        gravity (0.0, -9.81);
+        force at C on l3 = (14.0, -30.0);
+    }
+}
+
+/// Every body of the stacked five-bar in equilibrium (Newton-Euler with the
+/// generated reactions, each at the point its doc comment names) and the
+/// power balance; `drop_reaction`: the mistake of leaving the elbow motor's
+/// reaction off the upper arm.
+fn check_stacked(s: &StackedFiveBarSolution, w: (f64, f64), drop_reaction: bool) {
+    use crate::equilibrium::{inertial, power_balances, Body, G};
+    let (p, v, a, f) = (&s.position, &s.velocity, &s.acceleration, &s.forces);
+    let load = Vector2::new(14.0, -30.0);
+    let elbow = if drop_reaction { 0.0 } else { -f.drive_q2 };
+    Body::default()
+        .force(p.O1, f.r_ground_upper)
+        .force(p.A, -f.r_upper_fore)
+        .couple(f.drive_q1)
+        .couple(elbow)
+        .inertia(0.8, 0.002, p.G1, a.G1, a.upper, G)
+        .balances("upper arm");
+    Body::default()
+        .force(p.A, f.r_upper_fore)
+        .force(p.B, -f.r_fore_l3)
+        .couple(f.drive_q2)
+        .inertia(0.5, 0.0011, p.G2, a.G2, a.fore, G)
+        .balances("forearm");
+    Body::default()
+        .force(p.B, f.r_fore_l3)
+        .force(p.C, -f.r_l3_l4)
+        .force(p.C, load)
+        .inertia(0.6, 0.0026, p.G3, a.G3, a.l3, G)
+        .balances("l3");
+    Body::default()
+        .force(p.O2, f.r_ground_l4)
+        .force(p.C, f.r_l3_l4)
+        .inertia(0.55, 0.0019, p.G4, a.G4, a.l4, G)
+        .balances("l4");
+    power_balances(
+        &[
+            f.drive_q1 * w.0,
+            f.drive_q2 * w.1,
+            load.dot(&v.C),
+            inertial(0.8, 0.002, v.G1, a.G1, v.upper, a.upper, G),
+            inertial(0.5, 0.0011, v.G2, a.G2, v.fore, a.fore, G),
+            inertial(0.6, 0.0026, v.G3, a.G3, v.l3, a.l3, G),
+            inertial(0.55, 0.0019, v.G4, a.G4, v.l4, a.l4, G),
+        ],
+        "StackedFiveBar",
+    );
+}
+
+#[test]
+fn an_elbow_motor_inside_a_closed_loop_balances_every_body() {
+    // Proves: a crank carried by a crank link, inside a loop closed by an
+    // RRR, gives reactions and relative driving torques under which every
+    // body is in equilibrium and the power balances, over a grid of both
+    // motor angles (poses that cannot close give the RRR's typed error).
+    let m = StackedFiveBar::<f64>::default();
+    let (w, al) = ((3.0, -2.0), (12.0, 25.0));
+    let mut checked = 0;
+    for i in 0..30 {
+        for k in 0..30 {
+            let q = StackedFiveBarInput {
+                q1: (12.0 * i as f64).to_radians(),
+                q2: (12.0 * k as f64 - 180.0).to_radians(),
+            };
+            let rates = StackedFiveBarInput { q1: w.0, q2: w.1 };
+            let accels = StackedFiveBarInput { q1: al.0, q2: al.1 };
+            match m.solve(&q, &rates, &accels) {
+                Ok(s) if s.forces.condition > 0.05 => {
+                    check_stacked(&s, w, false);
+                    if checked == 0 {
+                        let mistake = std::panic::catch_unwind(|| check_stacked(&s, w, true));
+                        assert!(mistake.is_err(), "the checker missed a dropped reaction");
+                    }
+                    checked += 1;
+                }
+                Ok(_) => {}
+                Err(e) => assert_eq!(e.group, "C", "{e}"),
+            }
+        }
+    }
+    assert!(checked >= 200, "only {checked} poses checked");
+}
