@@ -104,86 +104,24 @@ impl<'a> Evaluator<'a> {
     }
 }
 
-/// Tracks each triad's stated assembly over its input's range (one input)
-/// and stores the tracked poses in the statement (`kinds::triad::track`),
-/// which the sweep and the generated `position()` then read. A stated input
-/// outside the range, or a stated pose that selects no assembly, is an
-/// error on the statement (`false` returned).
-pub fn track_triads(
+/// Lets every statement that follows its assembly over the input range at
+/// expansion time do so (a triad: `GroupKind::track`), in solve order, with
+/// the pose of the statements before it. Only with one input and its range.
+/// `false` when one reported an error (the rest of the check is then moot).
+pub fn track_assemblies(
     model: &Model,
     ev: &Evaluator<'_>,
     ranges: &[mechanism_core::sweep::Range],
     errors: &mut crate::diag::Diagnostics,
 ) -> bool {
+    let (Some(range), true) = (ranges.first(), ranges.len() == 1) else {
+        return true;
+    };
+    let angle = model.inputs.first().is_some_and(|i| i.angle);
     let mut ok = true;
     for &i in ev.order {
-        let stmt = &model.stmts[i];
-        let crate::model::Kind::Triad(t) = &stmt.kind else {
-            continue;
-        };
-        let (Some(range), true) = (ranges.first(), ranges.len() == 1) else {
-            continue;
-        };
-        let ks = |q: f64| {
-            let pose = ev.pose_before(&[q], i)?;
-            Some(t.k.each_ref().map(|k| pose.point(k)))
-        };
-        match kinds::triad::track(t, range.lo, range.hi, &ks) {
-            Ok(tracked) => {
-                *t.table.borrow_mut() = crate::model::Tracked {
-                    angle: model.inputs.first().is_some_and(|i| i.angle),
-                    ..tracked
-                }
-            }
-            Err(e) => {
-                ok = false;
-                let q = t.at.1.fold().unwrap_or(f64::NAN);
-                let angle = model.inputs.first().is_some_and(|i| i.angle);
-                let shown = |x: f64| {
-                    if angle {
-                        format!("{} deg", crate::diag::show_num(x.to_degrees()))
-                    } else {
-                        crate::diag::show_num(x)
-                    }
-                };
-                let inside = q >= range.lo && q <= range.hi;
-                // On the pose's first coordinate, or on the input's value.
-                let span = if inside {
-                    t.near[0].0.span
-                } else {
-                    t.at.1.span
-                };
-                let message = if inside {
-                    format!(
-                        "the approximate pose of `{}`, `{}`, `{}` given at `{} = {}` selects no assembly of the triad there ({}); give the joints' positions at that input to within a fraction of the legs' lengths",
-                        stmt.name, t.b, t.p, t.at.0, shown(q), why(&e.fault)
-                    )
-                } else {
-                    format!(
-                        "the pose is given at `{} = {}`, outside the range checked, {} .. {}: give it at an input inside the range, or widen the range",
-                        t.at.0,
-                        shown(q),
-                        shown(range.lo),
-                        shown(range.hi)
-                    )
-                };
-                errors.push(span, message);
-            }
-        }
+        let before = |q: f64| ev.pose_before(&[q], i);
+        ok &= kinds::of(&model.stmts[i]).track(&before, (range.lo, range.hi), angle, errors);
     }
     ok
-}
-
-/// Why a triad's stated pose selects no assembly, in numbers.
-fn why(fault: &mechanism_core::Fault) -> String {
-    use crate::diag::show_num;
-    match fault {
-        mechanism_core::Fault::NotNear { nearest, next } => format!(
-            "the nearest assembly is {} from it, more than {} (half the shortest link) or not half as far as the next",
-            show_num(*nearest),
-            show_num(*next)
-        ),
-        mechanism_core::Fault::CannotAssemble { .. } => "it has no assembly at that input".into(),
-        other => other.to_string(),
-    }
 }

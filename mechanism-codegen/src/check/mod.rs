@@ -229,7 +229,7 @@ pub fn expansion_check(model: &Model, plan: &Plan, errors: &mut Diagnostics) -> 
     };
     findings.ran = true;
     let ev = Evaluator::new(model, &checked);
-    if !eval::track_triads(model, &ev, &ranges, errors) {
+    if !eval::track_assemblies(model, &ev, &ranges, errors) {
         return findings;
     }
     let events = run(&ev, &joints_at_infinity(model, &checked), &ranges);

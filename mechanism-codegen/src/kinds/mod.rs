@@ -353,6 +353,22 @@ pub trait GroupKind<'a> {
     /// points lie.
     fn check_placed(&self, _plan: &dyn Placed, _errors: &mut Diagnostics) {}
 
+    /// For a statement whose assembly is followed at expansion time (the
+    /// triad): follows it over the single input's `range` (`(lo, hi)`, rad
+    /// when `angle`, else length units), `before(q)` giving the pose of the
+    /// statements solved before it at input `q`, and keeps what the emitted
+    /// code reads. `false` with an error reported when the stated assembly
+    /// cannot be followed. Others have nothing to follow.
+    fn track(
+        &self,
+        _before: &dyn Fn(f64) -> Option<Pose>,
+        _range: (f64, f64),
+        _angle: bool,
+        _errors: &mut Diagnostics,
+    ) -> bool {
+        true
+    }
+
     /// Its part of the force analysis (drivers and groups): its reactions
     /// from the loads of its links, passed (negated) to the bodies it is
     /// attached to, its fields in the forces struct, its conditioning and

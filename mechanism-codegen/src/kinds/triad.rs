@@ -27,7 +27,7 @@ use super::lane::{Lane, Step};
 use super::rates::{states, vec_ty, RateCx};
 use super::tokens::{arm, grp, local, tag, unit_field};
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
-use crate::diag::show_num;
+use crate::diag::{show_num, Diagnostics};
 use crate::kinds::pose::num;
 use crate::model::{Local, Stmt, Tracked, Triad as Args};
 use crate::value::Value;
@@ -412,6 +412,64 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         Some("the triad is at a branch point (two of its assemblies meet)".into())
     }
 
+    /// Follows the stated assembly over the input's range and stores the
+    /// tracked poses in the statement ([`track`]), which the sweep and the
+    /// generated `position()` then read. A stated input outside the range,
+    /// or a stated pose that selects no assembly, is an error on the
+    /// statement.
+    fn track(
+        &self,
+        before: &dyn Fn(f64) -> Option<Pose>,
+        (lo, hi): (f64, f64),
+        angle: bool,
+        errors: &mut Diagnostics,
+    ) -> bool {
+        let t = self.t;
+        let ks = |q: f64| {
+            let pose = before(q)?;
+            Some(t.k.each_ref().map(|k| pose.point(k)))
+        };
+        let e = match track(t, lo, hi, &ks) {
+            Ok(tracked) => {
+                *t.table.borrow_mut() = Tracked { angle, ..tracked };
+                return true;
+            }
+            Err(e) => e,
+        };
+        let q = t.at.1.fold().unwrap_or(f64::NAN);
+        let shown = |x: f64| {
+            if angle {
+                format!("{} deg", show_num(x.to_degrees()))
+            } else {
+                show_num(x)
+            }
+        };
+        let inside = q >= lo && q <= hi;
+        if inside {
+            // On the pose's first coordinate.
+            errors.push(
+                t.near[0].0.span,
+                format!(
+                    "the approximate pose of `{}`, `{}`, `{}` given at `{} = {}` selects no assembly of the triad there ({}); give the joints' positions at that input to within a fraction of the legs' lengths",
+                    self.stmt.name, t.b, t.p, t.at.0, shown(q), why(&e.fault)
+                ),
+            );
+        } else {
+            // On the input's value.
+            errors.push(
+                t.at.1.span,
+                format!(
+                    "the pose is given at `{} = {}`, outside the range checked, {} .. {}: give it at an input inside the range, or widen the range",
+                    t.at.0,
+                    shown(q),
+                    shown(lo),
+                    shown(hi)
+                ),
+            );
+        }
+        false
+    }
+
     fn primitive(&self) -> &'static str {
         "Triad"
     }
@@ -681,5 +739,18 @@ mod tests {
         assert!(hint.contains("class III"), "{hint}");
         assert!(hint.contains("triad(O2, 0.08, O4, 0.2, C, 0.28,"), "{hint}");
         assert!(cycle_hint(&cycle[..2]).is_none());
+    }
+}
+
+/// Why a triad's stated pose selects no assembly, in numbers.
+fn why(fault: &Fault) -> String {
+    match fault {
+        Fault::NotNear { nearest, next } => format!(
+            "the nearest assembly is {} from it, more than {} (half the shortest link) or not half as far as the next",
+            show_num(*nearest),
+            show_num(*next)
+        ),
+        Fault::CannotAssemble { .. } => "it has no assembly at that input".into(),
+        other => other.to_string(),
     }
 }
