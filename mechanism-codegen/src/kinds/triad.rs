@@ -602,6 +602,19 @@ pub fn pose_input(model: &crate::model::Model, errors: &mut crate::diag::Diagnos
     }
 }
 
+/// Why a triad's stated pose selects no assembly, in numbers.
+fn why(fault: &Fault) -> String {
+    match fault {
+        Fault::NotNear { nearest, next } => format!(
+            "the nearest assembly is {} from it, more than {} (half the shortest link) or not half as far as the next",
+            show_num(*nearest),
+            show_num(*next)
+        ),
+        Fault::CannotAssemble { .. } => "it has no assembly at that input".into(),
+        other => other.to_string(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -739,18 +752,5 @@ mod tests {
         assert!(hint.contains("class III"), "{hint}");
         assert!(hint.contains("triad(O2, 0.08, O4, 0.2, C, 0.28,"), "{hint}");
         assert!(cycle_hint(&cycle[..2]).is_none());
-    }
-}
-
-/// Why a triad's stated pose selects no assembly, in numbers.
-fn why(fault: &Fault) -> String {
-    match fault {
-        Fault::NotNear { nearest, next } => format!(
-            "the nearest assembly is {} from it, more than {} (half the shortest link) or not half as far as the next",
-            show_num(*nearest),
-            show_num(*next)
-        ),
-        Fault::CannotAssemble { .. } => "it has no assembly at that input".into(),
-        other => other.to_string(),
     }
 }
