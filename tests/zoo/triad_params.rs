@@ -8,13 +8,15 @@
 //!
 //! Tolerance. Every compared column is held to 1e-13 of its largest
 //! magnitude over the compared inputs (angles: 1e-13 rad), the figure the
-//! Stephenson example meets: the generated position is Newton-polished to
-//! a few eps of the lengths, and the 4x4 rate systems here keep their
-//! Jacobian's relative determinant above about 1e-2 (the sweeps stop well
-//! short of the swings' ends), so a rate carries at most a few hundred eps
-//! of its column's scale; 1e-13 is 450 eps. A wrong term shows at its own
-//! size (a dimension read wrongly moves the joints by 1e-3 of the scale or
-//! more).
+//! Stephenson example meets over its whole swing: the generated position is
+//! Newton-polished to a few eps of the lengths, and the sweeps here (link 6
+//! from -46 to -12 deg) stop short of the swings' ends (the example's: -50.4
+//! and -2.6 deg), where the rate systems' condition grows without bound, so
+//! a rate carries tens of eps of its column's scale
+//! (the worst measured here is 1.4e-14, 63 eps); 1e-13 is 450 eps. A wrong
+//! term shows at its own size: reading leg 3 at its default in the second
+//! parameter set moves A by 8e-2 of its scale, and dropping the second
+//! crank's angular acceleration moves the accelerations by 2e-3 of theirs.
 
 use mechanism::{mechanism, Error, Fault, Point2, Primitive, Vector2};
 use mechanism_reference::groups::{add, perp, scale, sub, V};
@@ -55,9 +57,11 @@ mechanism! {
     }
 }
 
-/// The stated input (deg; mid-swing, so that the parameter sets and the
-/// second input leave the stated assembly there) and the stated approximate
-/// joints A, B, P (m) at it.
+/// The stated input (deg) and the stated approximate joints A, B, P (m) at
+/// it, read to three digits off the example's table. Mid-swing: at the
+/// example's -49.48 deg, 0.96 deg from the swing's end, changed dimensions
+/// or a moved `K2` shift the end past the stated input, and `position()`
+/// rightly answers `NotNear` there.
 const PHI0_DEG: f64 = -30.0;
 const STATED: [[f64; 2]; 3] = [[-0.063, 0.050], [0.175, 0.156], [0.003, 0.185]];
 
@@ -76,8 +80,9 @@ fn sweep(step: f64) -> Vec<(f64, bool)> {
     out
 }
 
-/// Link 6 (O6 = (0.05, 0.42), 0.24 m) at `phi`, `phi'`, `phi''`: its tip's
-/// position, velocity and acceleration in double-double.
+/// The tip of a crank of length `r` (m) about `centre` at angle `x` (rad),
+/// turning at `w` (rad/s) and `al` (rad/s^2): its position, velocity and
+/// acceleration in double-double.
 fn tip(centre: [f64; 2], r: f64, x: f64, w: f64, al: f64) -> [V; 3] {
     let (s, c) = Dd::from(x).sin_cos();
     let arm = [Dd::from(r) * c, Dd::from(r) * s];
