@@ -135,8 +135,10 @@ fn stephenson(c: &mut Criterion) {
     };
     let mut grp = c.benchmark_group("stephenson (triad)");
     // One evaluation at -30 deg, warm starts from the previous grid input.
-    let k = (0..N).min_by(|&a, &b| (g[a] + 0.5236).abs().total_cmp(&(g[b] + 0.5236).abs()));
-    let k = k.unwrap_or(N / 2);
+    let mid = (-30f64).to_radians();
+    let k = (1..N)
+        .min_by(|&a, &b| (g[a] - mid).abs().total_cmp(&(g[b] - mid).abs()))
+        .unwrap_or(N / 2);
     let (q, prev_q) = (g[k], g[k - 1]);
     let prev = m
         .position(&StephensonInput { phi: prev_q })

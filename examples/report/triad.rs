@@ -184,57 +184,64 @@ struct Method<'a> {
     ns: Vec<f64>,
 }
 
-/// The generated methods (`position()`, `position_near`), the sweeps of
-/// position alone, and the baselines.
-fn methods<'a>(
+/// Link 6's rate and acceleration as inputs of the generated code.
+const RATES: (StephensonInput<f64>, StephensonInput<f64>) = (
+    StephensonInput { phi: PHI_DOT },
+    StephensonInput { phi: PHI_DDOT },
+);
+
+fn input(phi: f64) -> StephensonInput<f64> {
+    StephensonInput { phi }
+}
+
+/// The generated velocity and acceleration at `p`, flattened with it.
+fn gen_rates(m: &Stephenson<f64>, p: &StephensonPosition<f64>) -> Option<[f64; COLS]> {
+    let v = m.velocity(p, &RATES.0).ok()?;
+    let a = m.acceleration(p, &v, &RATES.1).ok()?;
+    Some(gen_row(p, &v, &a))
+}
+
+/// The outputs every generated sweep sums (the same consumer for both).
+fn gen_sum(m: &Stephenson<f64>, p: &StephensonPosition<f64>) -> f64 {
+    let Ok(v) = m.velocity(p, &RATES.0) else {
+        return 0.0;
+    };
+    let Ok(a) = m.acceleration(p, &v, &RATES.1) else {
+        return 0.0;
+    };
+    p.P.x + p.coupler + v.P.y + v.rocker + a.P.x + a.link5
+}
+
+/// The generated methods: `position()` at every input, and `position_near`
+/// from the previous input's pose (from `first` at the first input).
+fn generated<'a>(
     m: &'a Stephenson<f64>,
     g: &'a [f64],
-) -> (Vec<Method<'a>>, Vec<(String, Sweep<'a>)>) {
-    let (wi, ai) = (
-        StephensonInput { phi: PHI_DOT },
-        StephensonInput { phi: PHI_DDOT },
-    );
-    let input = |phi: f64| StephensonInput { phi };
-    let full = |x: f64| {
-        let p = m.position(&input(x)).ok()?;
-        let v = m.velocity(&p, &wi).ok()?;
-        let a = m.acceleration(&p, &v, &ai).ok()?;
-        Some(gen_row(&p, &v, &a))
-    };
-    let first = m
-        .position(&input(g[0]))
-        .expect("position() assembles at the first input");
+    first: StephensonPosition<f64>,
+) -> [Method<'a>; 2] {
     let mut prev = first;
     let near_rows = g
         .iter()
         .map(|&x| {
             let p = m.position_near(&prev, &input(x)).ok()?;
             prev = p;
-            let v = m.velocity(&p, &wi).ok()?;
-            let a = m.acceleration(&p, &v, &ai).ok()?;
-            Some(gen_row(&p, &v, &a))
+            gen_rates(m, &p)
         })
         .collect();
-    let sum = |p: &StephensonPosition<f64>,
-               v: &StephensonVelocity<f64>,
-               a: &StephensonAcceleration<f64>| {
-        p.P.x + p.coupler + v.P.y + v.rocker + a.P.x + a.link5
-    };
-    let mut out = vec![
+    [
         Method {
             name: "generated position() + velocity + acceleration",
             family: "generated, full search",
-            rows: g.iter().map(|&x| full(x)).collect(),
+            rows: g
+                .iter()
+                .map(|&x| gen_rates(m, &m.position(&input(x)).ok()?))
+                .collect(),
             iterations: Vec::new(),
             sweep: Box::new(move || {
                 let mut acc = 0.0;
                 for &x in g {
-                    let Ok(p) = m.position(&input(x)) else {
-                        continue;
-                    };
-                    let Ok(v) = m.velocity(&p, &wi) else { continue };
-                    if let Ok(a) = m.acceleration(&p, &v, &ai) {
-                        acc += sum(&p, &v, &a);
+                    if let Ok(p) = m.position(&input(x)) {
+                        acc += gen_sum(m, &p);
                     }
                 }
                 black_box(acc)
@@ -249,63 +256,67 @@ fn methods<'a>(
             sweep: Box::new(move || {
                 let (mut acc, mut prev) = (0.0, first);
                 for &x in g {
-                    let Ok(p) = m.position_near(&prev, &input(x)) else {
-                        continue;
-                    };
-                    prev = p;
-                    let Ok(v) = m.velocity(&p, &wi) else { continue };
-                    if let Ok(a) = m.acceleration(&p, &v, &ai) {
-                        acc += sum(&p, &v, &a);
+                    if let Ok(p) = m.position_near(&prev, &input(x)) {
+                        prev = p;
+                        acc += gen_sum(m, &p);
                     }
                 }
                 black_box(acc)
             }),
             ns: Vec::new(),
         },
-    ];
-    let guess0 = [first.crank2, first.rocker, first.link5, first.coupler];
-    type Newton = fn(f64, f64, f64, [f64; 4]) -> Option<StephensonOut<f64>>;
-    let baseline = |name, family, f: Newton| {
-        let mut guess = guess0;
-        let mut iterations = Vec::new();
-        let rows = g
-            .iter()
-            .map(|&x| {
-                let o = f(x, PHI_DOT, PHI_DDOT, guess)?;
-                guess = o.q;
-                iterations.push(o.iterations);
-                Some(base_row(&o))
-            })
-            .collect();
-        Method {
-            name,
-            family,
-            rows,
-            iterations,
-            sweep: Box::new(move || {
-                let (mut acc, mut guess) = (0.0, guess0);
-                for &x in g {
-                    if let Some(o) = f(x, PHI_DOT, PHI_DDOT, guess) {
-                        guess = o.q;
-                        acc += o.q[2] + o.q[3] + o.w[1] + o.w[2] + o.al[0] + o.al[3];
-                    }
+    ]
+}
+
+/// A Newton baseline of `benches/common/baselines.rs`.
+type Newton = fn(f64, f64, f64, [f64; 4]) -> Option<StephensonOut<f64>>;
+
+/// A Newton baseline over the inputs, each solve started from the previous
+/// one's angles (from `guess0` at the first input).
+fn baseline<'a>(
+    g: &'a [f64],
+    guess0: [f64; 4],
+    name: &'static str,
+    family: &'static str,
+    f: Newton,
+) -> Method<'a> {
+    let mut guess = guess0;
+    let mut iterations = Vec::new();
+    let rows = g
+        .iter()
+        .map(|&x| {
+            let o = f(x, PHI_DOT, PHI_DDOT, guess)?;
+            guess = o.q;
+            iterations.push(o.iterations);
+            Some(base_row(&o))
+        })
+        .collect();
+    Method {
+        name,
+        family,
+        rows,
+        iterations,
+        sweep: Box::new(move || {
+            let (mut acc, mut guess) = (0.0, guess0);
+            for &x in g {
+                if let Some(o) = f(x, PHI_DOT, PHI_DDOT, guess) {
+                    guess = o.q;
+                    acc += o.q[2] + o.q[3] + o.w[1] + o.w[2] + o.al[0] + o.al[3];
                 }
-                black_box(acc)
-            }),
-            ns: Vec::new(),
-        }
-    };
-    out.push(baseline(
-        "Newton, nalgebra SMatrix 4x4 LU (warm start)",
-        "Newton, SMatrix",
-        baselines::stephenson_newton_fixed::<f64>,
-    ));
-    out.push(baseline(
-        "Newton, heap DMatrix LU (warm start)",
-        "Newton, DMatrix",
-        baselines::stephenson_newton_heap::<f64>,
-    ));
-    let alone: Vec<(String, Sweep)> = vec![
+            }
+            black_box(acc)
+        }),
+        ns: Vec::new(),
+    }
+}
+
+/// The generated positions alone (timed only).
+fn alone<'a>(
+    m: &'a Stephenson<f64>,
+    g: &'a [f64],
+    first: StephensonPosition<f64>,
+) -> Vec<(String, Sweep<'a>)> {
+    vec![
         (
             "generated position() alone".into(),
             Box::new(move || {
@@ -331,8 +342,35 @@ fn methods<'a>(
                 black_box(acc)
             }),
         ),
-    ];
-    (out, alone)
+    ]
+}
+
+/// The generated methods (`position()`, `position_near`), the baselines,
+/// and the sweeps of the generated positions alone.
+fn methods<'a>(
+    m: &'a Stephenson<f64>,
+    g: &'a [f64],
+) -> (Vec<Method<'a>>, Vec<(String, Sweep<'a>)>) {
+    let first = m
+        .position(&input(g[0]))
+        .expect("position() assembles at the first input");
+    let guess0 = [first.crank2, first.rocker, first.link5, first.coupler];
+    let mut out: Vec<Method> = generated(m, g, first).into_iter().collect();
+    out.push(baseline(
+        g,
+        guess0,
+        "Newton, nalgebra SMatrix 4x4 LU (warm start)",
+        "Newton, SMatrix",
+        baselines::stephenson_newton_fixed::<f64>,
+    ));
+    out.push(baseline(
+        g,
+        guess0,
+        "Newton, heap DMatrix LU (warm start)",
+        "Newton, DMatrix",
+        baselines::stephenson_newton_heap::<f64>,
+    ));
+    (out, alone(m, g, first))
 }
 
 fn wrap(d: f64) -> f64 {
@@ -351,7 +389,7 @@ fn column_errors(
     refs: &[Option<[Dd; COLS]>],
     scale: &[f64; COLS],
 ) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
-    let mut e = vec![Vec::with_capacity(rows.len()); COLS];
+    let mut e: Vec<Vec<f64>> = (0..COLS).map(|_| Vec::with_capacity(rows.len())).collect();
     let mut local = e.clone();
     for (r, f) in rows.iter().zip(refs) {
         let (Some(r), Some(f)) = (r, f) else { continue };
@@ -396,30 +434,9 @@ fn sci(x: f64) -> String {
     }
 }
 
-/// The section (markdown); writes `stephenson.csv` and `stephenson.svg`.
-pub fn section(out_dir: &Path) -> String {
-    let m = Stephenson::<f64>::default();
-    let g = grid();
-    let refs = references(&g);
-    let (mut ms, alone) = methods(&m, &g);
-    let mut scale = [0.0f64; COLS];
-    for r in refs.iter().flatten() {
-        for k in 0..COLS {
-            scale[k] = scale[k].max(r[k].to_f64().abs());
-        }
-    }
-    let mut sweeps: Vec<(&Sweep, usize)> = ms.iter().map(|m| (&m.sweep, N)).collect();
-    sweeps.extend(alone.iter().map(|(_, s)| (s, N)));
-    let ns = timing::interleaved(&sweeps, crate::ROUNDS, crate::MIN_SAMPLE_NS);
-    let (ns_methods, ns_alone) = ns.split_at(ms.len());
-    for (m, t) in ms.iter_mut().zip(ns_methods) {
-        m.ns = t.clone();
-    }
-    let (errs, local): (Vec<_>, Vec<_>) = ms
-        .iter()
-        .map(|m| column_errors(&m.rows, &refs, &scale))
-        .unzip();
-    let ref_failed = refs.iter().filter(|r| r.is_none()).count();
+/// The section's heading and description; `ref_failed`: inputs where the
+/// reference failed.
+fn intro(ref_failed: usize) -> String {
     let mut md = String::new();
     let (lo, hi) = RANGE_DEG;
     let _ = writeln!(
@@ -444,6 +461,53 @@ pub fn section(out_dir: &Path) -> String {
         baselines::ST_TOL,
         baselines::ST_MAX_ITER
     );
+    md
+}
+
+/// The per-output table: max and median of the local relative errors.
+fn per_output(ms: &[Method], local: &[Vec<Vec<f64>>]) -> String {
+    let mut md = String::new();
+    let _ = write!(md, "| column |");
+    for m in ms {
+        let _ = write!(md, " {} max | median |", short(m.name));
+    }
+    let _ = writeln!(md);
+    let _ = writeln!(md, "|---|{}", "---:|---:|".repeat(ms.len()));
+    for k in 0..COLS {
+        let _ = write!(md, "| {} |", col_name(k));
+        for e in local {
+            let (mx, med) = max_med(&e[k]);
+            let _ = write!(md, " {} | {} |", sci(mx), sci(med));
+        }
+        let _ = writeln!(md);
+    }
+    md
+}
+
+/// The section (markdown); writes `stephenson.csv` and `stephenson.svg`.
+pub fn section(out_dir: &Path) -> String {
+    let m = Stephenson::<f64>::default();
+    let g = grid();
+    let refs = references(&g);
+    let (mut ms, alone) = methods(&m, &g);
+    let mut scale = [0.0f64; COLS];
+    for r in refs.iter().flatten() {
+        for k in 0..COLS {
+            scale[k] = scale[k].max(r[k].to_f64().abs());
+        }
+    }
+    let mut sweeps: Vec<(&Sweep, usize)> = ms.iter().map(|m| (&m.sweep, N)).collect();
+    sweeps.extend(alone.iter().map(|(_, s)| (s, N)));
+    let ns = timing::interleaved(&sweeps, crate::ROUNDS, crate::MIN_SAMPLE_NS);
+    let (ns_methods, ns_alone) = ns.split_at(ms.len());
+    for (m, t) in ms.iter_mut().zip(ns_methods) {
+        m.ns = t.clone();
+    }
+    let (errs, local): (Vec<_>, Vec<_>) = ms
+        .iter()
+        .map(|m| column_errors(&m.rows, &refs, &scale))
+        .unzip();
+    let mut md = intro(refs.iter().filter(|r| r.is_none()).count());
     let _ = writeln!(
         md,
         "| method | ns/eval median | min - max | x generated `position_near` | angle err max (rad) | position rel max | velocity rel max | acceleration rel max | worst column | Newton iterations mean (max) | failed |"
@@ -523,20 +587,7 @@ pub fn section(out_dir: &Path) -> String {
          angles) and order at the same input (angles: absolute, rad).\n",
         scale[0], scale[2], scale[4], scale[16], scale[26]
     );
-    let _ = write!(md, "| column |");
-    for m in &ms {
-        let _ = write!(md, " {} max | median |", short(m.name));
-    }
-    let _ = writeln!(md);
-    let _ = writeln!(md, "|---|{}", "---:|---:|".repeat(ms.len()));
-    for k in 0..COLS {
-        let _ = write!(md, "| {} |", col_name(k));
-        for e in &local {
-            let (mx, med) = max_med(&e[k]);
-            let _ = write!(md, " {} | {} |", sci(mx), sci(med));
-        }
-        let _ = writeln!(md);
-    }
+    md += &per_output(&ms, &local);
     let _ = writeln!(md, "\nPlot: `target/report/stephenson.svg`; per-column figures: `target/report/stephenson.csv`.\n");
     std::fs::write(out_dir.join("stephenson.csv"), csv).expect("write stephenson.csv");
     std::fs::write(
