@@ -49,8 +49,9 @@ fn grid() -> Vec<f64> {
         .collect()
 }
 
+/// A link angle column at order 0 (its errors are absolute, rad).
 fn is_angle(k: usize) -> bool {
-    k % 10 >= 6 && k < 10
+    (6..10).contains(&k)
 }
 
 /// The generated results flattened to the columns.
@@ -455,8 +456,10 @@ fn intro(ref_failed: usize) -> String {
          answer. The Newton baselines (`benches/common/baselines.rs`) solve the six-bar's whole \
          loop closure (four equations in the four unknown link angles) with nalgebra's LU, stop \
          after the first step below {:.0e} rad (at most {} iterations), then solve the velocity and \
-         acceleration systems with the converged Jacobian. Errors: angles absolute (rad), every \
-         other column relative to its largest |reference| value over the inputs.\n",
+         acceleration systems with the converged Jacobian; they return the link angles and their \
+         rates (the joints compared below follow from them outside the timed loop: a few \
+         products). Errors: angles absolute (rad), every other column relative to its largest \
+         |reference| value over the inputs.\n",
         crate::ROUNDS,
         baselines::ST_TOL,
         baselines::ST_MAX_ITER
