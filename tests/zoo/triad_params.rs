@@ -390,3 +390,56 @@ fn unassemblable_triads_are_typed_errors_naming_the_group() {
         .unwrap();
     assert_cannot_assemble(two.position_near(&near, &up));
 }
+
+#[test]
+fn bad_parameters_and_inputs_are_typed_errors() {
+    // Proves that a non-finite, zero or negative triad dimension set through
+    // `params` (a NaN leg, a negative leg, a zero |AB|, and `sqrt` of a
+    // negative parameter, which is NaN) is a typed error of the triad
+    // (group `A`) naming the dimension, from `position()` and from
+    // `position_near`, and that a non-finite input angle or rate is the
+    // driver's typed error (group `C`): never a pose holding NaN.
+    let phi0 = PHI0_DEG.to_radians();
+    let at = TriadParamsInput { phi: phi0 };
+    let good = TriadParams::<f64>::default().position(&at).unwrap();
+    let cases: [(fn(&mut TriadParams<f64>), &str); 4] = [
+        (|m| m.l1 = f64::NAN, "triad leg length l1"),
+        (|m| m.l3 = -0.28, "triad leg length l3"),
+        (|m| m.ab = 0.0, "triad side |AB|"),
+        (|m| m.l2sq = -0.04, "triad leg length l2"),
+    ];
+    for (set, what) in cases {
+        let mut m = TriadParams::<f64>::default();
+        set(&mut m);
+        for r in [m.position(&at), m.position_near(&good, &at)] {
+            match r {
+                Err(Error {
+                    group: "A",
+                    primitive: Primitive::Triad,
+                    fault: Fault::NonFinite { what: w } | Fault::NonPositive { what: w, .. },
+                }) => assert_eq!(w, what),
+                other => panic!("{what}: {other:?}"),
+            }
+        }
+    }
+    let m = TriadParams::<f64>::default();
+    let nan = TriadParamsInput { phi: f64::NAN };
+    let v = m.velocity(&good, &TriadParamsInput { phi: 1.5 }).unwrap();
+    let driver = |r: Result<(), Error>| {
+        assert!(
+            matches!(
+                r,
+                Err(Error {
+                    group: "C",
+                    primitive: Primitive::Crank,
+                    ..
+                })
+            ),
+            "{r:?}"
+        )
+    };
+    driver(m.position(&nan).map(|_| ()));
+    driver(m.position_near(&good, &nan).map(|_| ()));
+    driver(m.velocity(&good, &nan).map(|_| ()));
+    driver(m.acceleration(&good, &v, &nan).map(|_| ()));
+}
