@@ -22,6 +22,7 @@ use crate::stephenson::{
     StephensonVelocity, PHI_DDOT, PHI_DOT,
 };
 use crate::timing::{self, Sweep};
+use mechanism::Real;
 use mechanism_reference::groups::{add, perp, scale, sub, V};
 use mechanism_reference::triad::{self as rt, TriadRef};
 use mechanism_reference::Dd;
@@ -55,16 +56,17 @@ fn is_angle(k: usize) -> bool {
 }
 
 /// The generated results flattened to the columns.
-fn gen_row(
-    p: &StephensonPosition<f64>,
-    v: &StephensonVelocity<f64>,
-    a: &StephensonAcceleration<f64>,
+fn gen_row<T: Real>(
+    p: &StephensonPosition<T>,
+    v: &StephensonVelocity<T>,
+    a: &StephensonAcceleration<T>,
 ) -> [f64; COLS] {
     [
         p.A.x, p.A.y, p.B.x, p.B.y, p.P.x, p.P.y, p.crank2, p.rocker, p.link5, p.coupler, v.A.x,
         v.A.y, v.B.x, v.B.y, v.P.x, v.P.y, v.crank2, v.rocker, v.link5, v.coupler, a.A.x, a.A.y,
         a.B.x, a.B.y, a.P.x, a.P.y, a.crank2, a.rocker, a.link5, a.coupler,
     ]
+    .map(T::as_f64)
 }
 
 /// A baseline's angles, rates and accelerations flattened to the columns:
@@ -179,6 +181,9 @@ fn references(g: &[f64]) -> Vec<Option<[Dd; COLS]>> {
 struct Method<'a> {
     name: &'static str,
     family: &'static str,
+    /// Evaluated in `f32` at the inputs rounded to `f32` (compared with the
+    /// reference there).
+    f32: bool,
     rows: Vec<Option<[f64; COLS]>>,
     iterations: Vec<u32>,
     sweep: Sweep<'a>,
@@ -186,63 +191,83 @@ struct Method<'a> {
 }
 
 /// Link 6's rate and acceleration as inputs of the generated code.
-const RATES: (StephensonInput<f64>, StephensonInput<f64>) = (
-    StephensonInput { phi: PHI_DOT },
-    StephensonInput { phi: PHI_DDOT },
-);
+fn rates<T: Real>() -> (StephensonInput<T>, StephensonInput<T>) {
+    (
+        StephensonInput {
+            phi: T::lit(PHI_DOT),
+        },
+        StephensonInput {
+            phi: T::lit(PHI_DDOT),
+        },
+    )
+}
 
-fn input(phi: f64) -> StephensonInput<f64> {
-    StephensonInput { phi }
+fn input<T: Real>(phi: f64) -> StephensonInput<T> {
+    StephensonInput { phi: T::lit(phi) }
 }
 
 /// The generated velocity and acceleration at `p`, flattened with it.
-fn gen_rates(m: &Stephenson<f64>, p: &StephensonPosition<f64>) -> Option<[f64; COLS]> {
-    let v = m.velocity(p, &RATES.0).ok()?;
-    let a = m.acceleration(p, &v, &RATES.1).ok()?;
+fn gen_rates<T: Real>(m: &Stephenson<T>, p: &StephensonPosition<T>) -> Option<[f64; COLS]> {
+    let (w, al) = rates();
+    let v = m.velocity(p, &w).ok()?;
+    let a = m.acceleration(p, &v, &al).ok()?;
     Some(gen_row(p, &v, &a))
 }
 
-/// The outputs every generated sweep sums (the same consumer for both).
-fn gen_sum(m: &Stephenson<f64>, p: &StephensonPosition<f64>) -> f64 {
-    let Ok(v) = m.velocity(p, &RATES.0) else {
+/// The outputs every generated sweep sums (the same consumer for all).
+fn gen_sum<T: Real>(
+    m: &Stephenson<T>,
+    p: &StephensonPosition<T>,
+    w: &StephensonInput<T>,
+    al: &StephensonInput<T>,
+) -> f64 {
+    let Ok(v) = m.velocity(p, w) else {
         return 0.0;
     };
-    let Ok(a) = m.acceleration(p, &v, &RATES.1) else {
+    let Ok(a) = m.acceleration(p, &v, al) else {
         return 0.0;
     };
-    p.P.x + p.coupler + v.P.y + v.rocker + a.P.x + a.link5
+    (p.P.x + p.coupler + v.P.y + v.rocker + a.P.x + a.link5).as_f64()
 }
 
-/// The generated methods: `position()` at every input, and `position_near`
-/// from the previous input's pose (from `first` at the first input).
-fn generated<'a>(
-    m: &'a Stephenson<f64>,
+/// The generated methods in `T`: `position()` at every input, and
+/// `position_near` from the previous input's pose (from `first` at the
+/// first input); `names`: (name, family) of each; inputs rounded to `T`.
+fn generated<'a, T: Real>(
+    m: &'a Stephenson<T>,
     g: &'a [f64],
-    first: StephensonPosition<f64>,
+    first: StephensonPosition<T>,
+    names: [(&'static str, &'static str); 2],
 ) -> [Method<'a>; 2] {
+    let f32 = core::mem::size_of::<T>() == 4;
+    let inputs: Vec<StephensonInput<T>> = g.iter().map(|&x| input(x)).collect();
     let mut prev = first;
-    let near_rows = g
+    let near_rows = inputs
         .iter()
-        .map(|&x| {
-            let p = m.position_near(&prev, &input(x)).ok()?;
+        .map(|x| {
+            let p = m.position_near(&prev, x).ok()?;
             prev = p;
             gen_rates(m, &p)
         })
         .collect();
+    let full_rows = inputs
+        .iter()
+        .map(|x| gen_rates(m, &m.position(x).ok()?))
+        .collect();
+    let (xs, ys) = (inputs.clone(), inputs);
     [
         Method {
-            name: "generated position() + velocity + acceleration",
-            family: "generated, full search",
-            rows: g
-                .iter()
-                .map(|&x| gen_rates(m, &m.position(&input(x)).ok()?))
-                .collect(),
+            name: names[0].0,
+            family: names[0].1,
+            f32,
+            rows: full_rows,
             iterations: Vec::new(),
             sweep: Box::new(move || {
+                let (w, al) = rates::<T>();
                 let mut acc = 0.0;
-                for &x in g {
-                    if let Ok(p) = m.position(&input(x)) {
-                        acc += gen_sum(m, &p);
+                for x in &xs {
+                    if let Ok(p) = m.position(x) {
+                        acc += gen_sum(m, &p, &w, &al);
                     }
                 }
                 black_box(acc)
@@ -250,16 +275,18 @@ fn generated<'a>(
             ns: Vec::new(),
         },
         Method {
-            name: "generated position_near + velocity + acceleration",
-            family: "generated, warm start",
+            name: names[1].0,
+            family: names[1].1,
+            f32,
             rows: near_rows,
             iterations: Vec::new(),
             sweep: Box::new(move || {
+                let (w, al) = rates::<T>();
                 let (mut acc, mut prev) = (0.0, first);
-                for &x in g {
-                    if let Ok(p) = m.position_near(&prev, &input(x)) {
+                for x in &ys {
+                    if let Ok(p) = m.position_near(&prev, x) {
                         prev = p;
-                        acc += gen_sum(m, &p);
+                        acc += gen_sum(m, &p, &w, &al);
                     }
                 }
                 black_box(acc)
@@ -295,6 +322,7 @@ fn baseline<'a>(
     Method {
         name,
         family,
+        f32: false,
         rows,
         iterations,
         sweep: Box::new(move || {
@@ -346,17 +374,37 @@ fn alone<'a>(
     ]
 }
 
-/// The generated methods (`position()`, `position_near`), the baselines,
-/// and the sweeps of the generated positions alone.
+/// The generated methods (`position()`, `position_near`; f64, then f32),
+/// the baselines, and the sweeps of the generated f64 positions alone.
 fn methods<'a>(
     m: &'a Stephenson<f64>,
+    m32: &'a Stephenson<f32>,
     g: &'a [f64],
 ) -> (Vec<Method<'a>>, Vec<(String, Sweep<'a>)>) {
     let first = m
         .position(&input(g[0]))
         .expect("position() assembles at the first input");
+    let first32 = m32
+        .position(&input(g[0]))
+        .expect("the f32 position() assembles at the first input");
     let guess0 = [first.crank2, first.rocker, first.link5, first.coupler];
-    let mut out: Vec<Method> = generated(m, g, first).into_iter().collect();
+    let mut out: Vec<Method> = generated(
+        m,
+        g,
+        first,
+        [
+            (
+                "generated position() + velocity + acceleration",
+                "generated, full search",
+            ),
+            (
+                "generated position_near + velocity + acceleration",
+                "generated, warm start",
+            ),
+        ],
+    )
+    .into_iter()
+    .collect();
     out.push(baseline(
         g,
         guess0,
@@ -370,6 +418,21 @@ fn methods<'a>(
         "Newton, heap DMatrix LU (warm start)",
         "Newton, DMatrix",
         baselines::stephenson_newton_heap::<f64>,
+    ));
+    out.extend(generated(
+        m32,
+        g,
+        first32,
+        [
+            (
+                "generated f32 position() + velocity + acceleration",
+                "generated f32, full search",
+            ),
+            (
+                "generated f32 position_near + velocity + acceleration",
+                "generated f32, warm start",
+            ),
+        ],
     ));
     (out, alone(m, g, first))
 }
@@ -449,8 +512,11 @@ fn intro(ref_failed: usize) -> String {
          another, are -50.4365 and -2.6334 deg: the rates grow without bound there). Reference: \
          `mechanism_reference::triad` in double-double (its own Newton on the loop closure in the \
          four link angles, rates from its Jacobian), followed by its own continuation from the \
-         stated approximate pose at phi = -49.48 deg; it failed at {ref_failed} inputs. All four \
-         methods run on the same inputs in the same {} interleaved rounds; ns per evaluation \
+         stated approximate pose at phi = -49.48 deg, once at the inputs and once at the inputs \
+         rounded to f32 (for the f32 methods; the dimensions are the definition's decimals in \
+         f64 in both, so an f32 error includes the rounding of the dimensions); it failed at \
+         {ref_failed} inputs. All methods run on the same inputs in the same {} interleaved \
+         rounds; ns per evaluation \
          (position + velocity + acceleration), median and min-max. `position()` is the stateless \
          full search; `position_near` and both Newton baselines start from the previous input's \
          answer. The Newton baselines (`benches/common/baselines.rs`) solve the six-bar's whole \
@@ -489,10 +555,13 @@ fn per_output(ms: &[Method], local: &[Vec<Vec<f64>>]) -> String {
 
 /// The section (markdown); writes `stephenson.csv` and `stephenson.svg`.
 pub fn section(out_dir: &Path) -> String {
-    let m = Stephenson::<f64>::default();
+    let (m, m32) = (Stephenson::<f64>::default(), Stephenson::<f32>::default());
     let g = grid();
     let refs = references(&g);
-    let (mut ms, alone) = methods(&m, &g);
+    // The f32 methods' inputs and their reference.
+    let g32: Vec<f64> = g.iter().map(|&x| x as f32 as f64).collect();
+    let refs32 = references(&g32);
+    let (mut ms, alone) = methods(&m, &m32, &g);
     let mut scale = [0.0f64; COLS];
     for r in refs.iter().flatten() {
         for k in 0..COLS {
@@ -506,11 +575,12 @@ pub fn section(out_dir: &Path) -> String {
     for (m, t) in ms.iter_mut().zip(ns_methods) {
         m.ns = t.clone();
     }
-    let (errs, local): (Vec<_>, Vec<_>) = ms
+    let (errs, local): (Vec<Vec<Vec<f64>>>, Vec<_>) = ms
         .iter()
-        .map(|m| column_errors(&m.rows, &refs, &scale))
+        .map(|m| column_errors(&m.rows, if m.f32 { &refs32 } else { &refs }, &scale))
         .unzip();
-    let mut md = intro(refs.iter().filter(|r| r.is_none()).count());
+    let ref_failed = refs.iter().chain(&refs32).filter(|r| r.is_none()).count();
+    let mut md = intro(ref_failed);
     let _ = writeln!(
         md,
         "| method | ns/eval median | min - max | x generated `position_near` | angle err max (rad) | position rel max | velocity rel max | acceleration rel max | worst column | Newton iterations mean (max) | failed |"
@@ -610,6 +680,8 @@ fn short(name: &str) -> &str {
     match name {
         n if n.starts_with("generated position()") => "`position()`",
         n if n.starts_with("generated position_near") => "`position_near`",
+        n if n.starts_with("generated f32 position()") => "f32 `position()`",
+        n if n.starts_with("generated f32 position_near") => "f32 `position_near`",
         n if n.contains("SMatrix") => "Newton SMatrix",
         _ => "Newton DMatrix",
     }
