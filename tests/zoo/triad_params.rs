@@ -402,7 +402,9 @@ fn bad_parameters_and_inputs_are_typed_errors() {
     let phi0 = PHI0_DEG.to_radians();
     let at = TriadParamsInput { phi: phi0 };
     let good = TriadParams::<f64>::default().position(&at).unwrap();
-    let cases: [(fn(&mut TriadParams<f64>), &str); 4] = [
+    /// Sets one parameter badly; the dimension the error must name.
+    type Case = (fn(&mut TriadParams<f64>), &'static str);
+    let cases: [Case; 4] = [
         (|m| m.l1 = f64::NAN, "triad leg length l1"),
         (|m| m.l3 = -0.28, "triad leg length l3"),
         (|m| m.ab = 0.0, "triad side |AB|"),
