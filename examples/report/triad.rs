@@ -652,10 +652,10 @@ pub fn section(out_dir: &Path) -> String {
     }
     let _ = writeln!(
         md,
-        "\nThe columns' largest |reference| values (the scales above) are reached at the ends of the \
-         range, 0.0065 deg from the swing's ends, where the rates are largest and worst \
-         conditioned: A.x {:.3}, B.x {:.3}, P.x {:.3} m; d/dt crank2 {:.1} rad/s; d2/dt2 crank2 \
-         {:.2e} rad/s^2. Per output below: max and median over the {N} inputs of the error \
+        "\nScales above (the columns' largest |reference| values): A.x {:.3}, B.x {:.3}, P.x \
+         {:.3} m; d/dt crank2 {:.1} rad/s; d2/dt2 crank2 {:.2e} rad/s^2; the rates' and \
+         accelerations' are reached at the first or last input, 0.013 deg inside the swing's \
+         ends, where the velocity system is nearly singular. Per output below: max and median over the {N} inputs of the error \
          relative to the largest |reference| value of the same group (joint coordinates, or link \
          angles) and order at the same input (angles: absolute, rad).\n",
         scale[0], scale[2], scale[4], scale[16], scale[26]
