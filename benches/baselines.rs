@@ -2,11 +2,19 @@
 //! in one run: the hand-written closed form (f64, f32), Newton-Raphson with
 //! nalgebra `Matrix2` and with heap `DMatrix` LU (warm-started from the
 //! previous crank angle, tolerances 1e-3 .. 1e-14). `cargo bench --bench baselines`.
+//!
+//! The Stephenson III six-bar (a triad), group `stephenson`: the generated
+//! `position()` (full search) and `position_near` (warm start), each with
+//! `velocity` and `acceleration`, against Newton on the whole loop closure
+//! with nalgebra `SMatrix` and heap `DMatrix` LU, warm-started from the
+//! previous input (`cargo bench --bench baselines -- stephenson`).
 
 #[path = "common/baselines.rs"]
 mod baselines;
 #[path = "../examples/common/scenes.rs"]
 mod scenes;
+#[path = "../examples/common/stephenson.rs"]
+mod stephenson;
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use scenes::{FourBar, FourBarInput};
@@ -103,5 +111,127 @@ fn fourbar(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, fourbar);
+/// Link 6's angles of the report's Stephenson section (rad): the midpoints
+/// of `N` equal parts of the definition's range, -50.43 .. -2.64 deg.
+fn stephenson_grid() -> Vec<f64> {
+    let (lo, hi) = (-50.43, -2.64);
+    (0..N)
+        .map(|k| (lo + (hi - lo) * (k as f64 + 0.5) / N as f64).to_radians())
+        .collect()
+}
+
+fn stephenson(c: &mut Criterion) {
+    use stephenson::{Stephenson, StephensonInput, PHI_DDOT, PHI_DOT};
+    let m = Stephenson::<f64>::default();
+    let g = stephenson_grid();
+    let (wi, ai) = (
+        StephensonInput { phi: PHI_DOT },
+        StephensonInput { phi: PHI_DDOT },
+    );
+    let pva = |p: &stephenson::StephensonPosition<f64>| {
+        let v = m.velocity(p, &wi).ok()?;
+        let a = m.acceleration(p, &v, &ai).ok()?;
+        Some((v, a))
+    };
+    let mut grp = c.benchmark_group("stephenson (triad)");
+    // One evaluation at -30 deg, warm starts from the previous grid input.
+    let mid = (-30f64).to_radians();
+    let k = (1..N)
+        .min_by(|&a, &b| (g[a] - mid).abs().total_cmp(&(g[b] - mid).abs()))
+        .unwrap_or(N / 2);
+    let (q, prev_q) = (g[k], g[k - 1]);
+    let prev = m
+        .position(&StephensonInput { phi: prev_q })
+        .expect("assembles mid-swing");
+    let guess = [prev.crank2, prev.rocker, prev.link5, prev.coupler];
+    grp.throughput(Throughput::Elements(1));
+    grp.bench_function("one/generated position()", |b| {
+        b.iter(|| {
+            let p = m.position(&StephensonInput { phi: black_box(q) }).ok()?;
+            pva(&p)
+        })
+    });
+    grp.bench_function("one/generated position_near", |b| {
+        b.iter(|| {
+            let p = m
+                .position_near(&prev, &StephensonInput { phi: black_box(q) })
+                .ok()?;
+            pva(&p)
+        })
+    });
+    // The generated analyses alone (where the time of the two above goes).
+    let (p_q, v_q) = {
+        let p = m.position(&StephensonInput { phi: q }).expect("assembles");
+        (p, m.velocity(&p, &wi).expect("regular"))
+    };
+    grp.bench_function("one/generated position_near alone", |b| {
+        b.iter(|| m.position_near(&prev, &StephensonInput { phi: black_box(q) }))
+    });
+    grp.bench_function("one/generated velocity alone", |b| {
+        b.iter(|| m.velocity(black_box(&p_q), &wi))
+    });
+    grp.bench_function("one/generated acceleration alone", |b| {
+        b.iter(|| m.acceleration(black_box(&p_q), &v_q, &ai))
+    });
+    grp.bench_function("one/newton SMatrix", |b| {
+        b.iter(|| baselines::stephenson_newton_fixed(black_box(q), PHI_DOT, PHI_DDOT, guess))
+    });
+    grp.bench_function("one/newton DMatrix", |b| {
+        b.iter(|| baselines::stephenson_newton_heap(black_box(q), PHI_DOT, PHI_DDOT, guess))
+    });
+    // Sweeps over the 3600 inputs, warm starts from the previous input.
+    let first = m
+        .position(&StephensonInput { phi: g[0] })
+        .expect("assembles at the first input");
+    let guess0 = [first.crank2, first.rocker, first.link5, first.coupler];
+    grp.throughput(Throughput::Elements(N as u64));
+    grp.sample_size(10);
+    grp.bench_function("sweep3600/generated position()", |b| {
+        b.iter(|| {
+            for &x in &g {
+                if let Ok(p) = m.position(&StephensonInput { phi: black_box(x) }) {
+                    black_box(pva(&p));
+                }
+            }
+        })
+    });
+    grp.bench_function("sweep3600/generated position_near", |b| {
+        b.iter(|| {
+            let mut p = first;
+            for &x in &g {
+                if let Ok(n) = m.position_near(&p, &StephensonInput { phi: black_box(x) }) {
+                    p = n;
+                    black_box(pva(&p));
+                }
+            }
+        })
+    });
+    type Newton = fn(f64, f64, f64, [f64; 4]) -> Option<baselines::StephensonOut<f64>>;
+    let newtons: [(&str, Newton); 2] = [
+        (
+            "sweep3600/newton SMatrix",
+            baselines::stephenson_newton_fixed::<f64>,
+        ),
+        (
+            "sweep3600/newton DMatrix",
+            baselines::stephenson_newton_heap::<f64>,
+        ),
+    ];
+    for (name, f) in newtons {
+        grp.bench_function(name, |b| {
+            b.iter(|| {
+                let mut guess = guess0;
+                for &x in &g {
+                    if let Some(o) = f(black_box(x), PHI_DOT, PHI_DDOT, guess) {
+                        guess = o.q;
+                        black_box(o);
+                    }
+                }
+            })
+        });
+    }
+    grp.finish();
+}
+
+criterion_group!(benches, fourbar, stephenson);
 criterion_main!(benches);

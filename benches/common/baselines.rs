@@ -6,9 +6,14 @@
 //! Every baseline returns the same [`FourBarOut`]: link angles `t3`, `t4`
 //! (rad), angular velocities `w3`, `w4` (rad/s) and accelerations `al3`,
 //! `al4` (rad/s^2), for crank speed `w2` and acceleration `al2`.
+//!
+//! The Stephenson III six-bar of `examples/common/stephenson.rs` (a triad
+//! driven by link 6): Newton-Raphson on its whole loop closure in the four
+//! unknown link angles, with nalgebra's fixed-size and heap LU
+//! ([`stephenson_newton_fixed`], [`stephenson_newton_heap`]).
 #![allow(dead_code)]
 
-use nalgebra::{DMatrix, DVector, Matrix2, RealField, Vector2};
+use nalgebra::{DMatrix, DVector, Matrix2, RealField, SMatrix, SVector, Vector2};
 
 /// Dimensions (mm) of the four-bar of seed 002.
 pub const GROUND: f64 = 304.8;
@@ -191,4 +196,222 @@ pub fn newton_heap<T: F>(t2: T, w2: T, al2: T, guess: (T, T), tol: T) -> Option<
         }
     }
     None
+}
+
+// ---------------------------------------------------------------------------
+// The Stephenson III six-bar of `examples/common/stephenson.rs` (m): the
+// triad's loop closure solved as one system, as a run-time solver would.
+
+/// Ground pivot of crank2 (m).
+pub const ST_O2: (f64, f64) = (0.0, 0.0);
+/// Ground pivot of the rocker (m).
+pub const ST_O4: (f64, f64) = (0.30, 0.0);
+/// Ground pivot of link 6, the driven link (m).
+pub const ST_O6: (f64, f64) = (0.05, 0.42);
+/// Lengths (m): crank2 O2-A, rocker O4-B, link5 C-P, coupler A-B, link6 O6-C.
+pub const ST_L: [f64; 5] = [0.08, 0.20, 0.28, 0.26, 0.24];
+/// P on the coupler: 0.15 m from A, 40 deg counter-clockwise from A -> B.
+pub const ST_AP: (f64, f64) = (0.15, 40.0);
+
+/// Newton's stopping rule for the Stephenson baselines: the iteration stops
+/// after the first step whose largest component is below this (rad); with
+/// quadratic convergence the error left is then at the rounding level.
+pub const ST_TOL: f64 = 1e-12;
+/// Iteration limit of the Stephenson baselines (`None` beyond it).
+pub const ST_MAX_ITER: u32 = 50;
+
+/// Angles (rad), rates (rad/s) and accelerations (rad/s^2) of crank2,
+/// rocker, link5 and the coupler (in that order: the legs from `O2`, `O4`,
+/// `C`, then the ternary link's axis A -> B), and the Newton iterations
+/// the position took.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct StephensonOut<T> {
+    pub q: [T; 4],
+    pub w: [T; 4],
+    pub al: [T; 4],
+    pub iterations: u32,
+}
+
+/// The loop closure `F(q) = 0` of the six-bar at link 6's angle `phi`, as
+/// two vector equations (B reached from O2 through A and from O4; P reached
+/// from O2 through A and from O6 through C):
+///
+/// ```text
+/// O2 + l1 e(q0) + ab e(q3)          - l2 e(q1) - O4 = 0
+/// O2 + l1 e(q0) + u e(q3) + v perp(e(q3)) - l3 e(q2) - C(phi) = 0
+/// ```
+///
+/// Holds the residual (rows x, y of each equation), the Jacobian `dF/dq`
+/// (row-major) and the signed rotating arms `s_i r_i` of each equation (for
+/// the centripetal terms).
+struct StLoop<T> {
+    /// Residual (m).
+    f: [T; 4],
+    /// Jacobian (m/rad).
+    j: [[T; 4]; 4],
+    /// Signed arms per equation and unknown (`[equation][unknown]`, zero
+    /// where the unknown is absent).
+    arm: [[(T, T); 4]; 2],
+}
+
+#[inline(always)]
+fn st_loop<T: F>(c: (T, T), q: &[T; 4]) -> StLoop<T> {
+    let [l1, l2, l3, ab, _] = ST_L.map(T::c);
+    let d = ST_AP.1.to_radians();
+    let (u, v) = (T::c(ST_AP.0 * d.cos()), T::c(ST_AP.0 * d.sin()));
+    let e = |x: T| {
+        let (s, c) = x.sin_cos();
+        (c, s)
+    };
+    let (e1, e2, e3, e4) = (e(q[0]), e(q[1]), e(q[2]), e(q[3]));
+    let z = (T::zero(), T::zero());
+    let r1 = (l1 * e1.0, l1 * e1.1);
+    let r4b = (ab * e4.0, ab * e4.1);
+    let r4p = (u * e4.0 - v * e4.1, u * e4.1 + v * e4.0);
+    let r2 = (-l2 * e2.0, -l2 * e2.1);
+    let r3 = (-l3 * e3.0, -l3 * e3.1);
+    let (o2, o4) = (
+        (T::c(ST_O2.0), T::c(ST_O2.1)),
+        (T::c(ST_O4.0), T::c(ST_O4.1)),
+    );
+    let f = [
+        o2.0 + r1.0 + r4b.0 + r2.0 - o4.0,
+        o2.1 + r1.1 + r4b.1 + r2.1 - o4.1,
+        o2.0 + r1.0 + r4p.0 + r3.0 - c.0,
+        o2.1 + r1.1 + r4p.1 + r3.1 - c.1,
+    ];
+    // d/dx of a rotating arm r(x) is perp(r) = (-r.y, r.x).
+    let arm = [[r1, r2, z, r4b], [r1, z, r3, r4p]];
+    let mut j = [[T::zero(); 4]; 4];
+    for (k, row) in arm.iter().enumerate() {
+        for (i, r) in row.iter().enumerate() {
+            j[2 * k][i] = -r.1;
+            j[2 * k + 1][i] = r.0;
+        }
+    }
+    StLoop { f, j, arm }
+}
+
+/// Link 6's tip `C`, its velocity and its acceleration at `phi` (rad),
+/// `phi'` (rad/s), `phi''` (rad/s^2).
+#[inline(always)]
+fn st_c<T: F>(phi: T, w6: T, al6: T) -> [(T, T); 3] {
+    let l6 = T::c(ST_L[4]);
+    let (s, c) = phi.sin_cos();
+    let r = (l6 * c, l6 * s);
+    [
+        (T::c(ST_O6.0) + r.0, T::c(ST_O6.1) + r.1),
+        (-w6 * r.1, w6 * r.0),
+        (-al6 * r.1 - w6 * w6 * r.0, al6 * r.0 - w6 * w6 * r.1),
+    ]
+}
+
+/// The right-hand sides of the velocity and acceleration systems:
+/// `J w = (0, 0, vC)` and `J al = sum_i s_i w_i^2 r_i + (0, 0, aC)` (the
+/// loop closure differentiated once and twice).
+#[inline(always)]
+fn st_rhs<T: F>(l: &StLoop<T>, vc: (T, T), ac: (T, T), w: Option<&[T; 4]>) -> [T; 4] {
+    let Some(w) = w else {
+        return [T::zero(), T::zero(), vc.0, vc.1];
+    };
+    let mut out = [T::zero(), T::zero(), ac.0, ac.1];
+    for (k, row) in l.arm.iter().enumerate() {
+        for (i, r) in row.iter().enumerate() {
+            let w2 = w[i] * w[i];
+            out[2 * k] += w2 * r.0;
+            out[2 * k + 1] += w2 * r.1;
+        }
+    }
+    out
+}
+
+/// Newton-Raphson on the six-bar's loop closure in its four unknown angles,
+/// from `guess` (the previous step's angles, as a real-time loop has them),
+/// until a step is below [`ST_TOL`] (at most [`ST_MAX_ITER`] iterations),
+/// then the velocity and acceleration systems with the converged Jacobian;
+/// every linear solve by `solve` (`None`: singular). `phi` (rad), `w6`
+/// (rad/s), `al6` (rad/s^2) are link 6's angle and its derivatives.
+#[inline(always)]
+fn st_newton<T: F>(
+    solve: impl Fn(&[[T; 4]; 4], [T; 4]) -> Option<[T; 4]>,
+    phi: T,
+    w6: T,
+    al6: T,
+    guess: [T; 4],
+) -> Option<StephensonOut<T>> {
+    let [c, vc, ac] = st_c(phi, w6, al6);
+    let tol = T::c(ST_TOL);
+    let mut q = guess;
+    for it in 1..=ST_MAX_ITER {
+        let l = st_loop(c, &q);
+        let dx = solve(&l.j, l.f.map(|x| -x))?;
+        let mut big = T::zero();
+        for (qi, di) in q.iter_mut().zip(dx) {
+            *qi += di;
+            big = big.max(di.abs());
+        }
+        if !big.is_finite() {
+            return None;
+        }
+        if big < tol {
+            let l = st_loop(c, &q);
+            let w = solve(&l.j, st_rhs(&l, vc, ac, None))?;
+            let al = solve(&l.j, st_rhs(&l, vc, ac, Some(&w)))?;
+            return Some(StephensonOut {
+                q,
+                w,
+                al,
+                iterations: it,
+            });
+        }
+    }
+    None
+}
+
+/// [`st_newton`] with nalgebra's fixed-size `SMatrix<T, 4, 4>` LU (on the
+/// stack).
+#[inline(always)]
+pub fn stephenson_newton_fixed<T: F>(
+    phi: T,
+    w6: T,
+    al6: T,
+    guess: [T; 4],
+) -> Option<StephensonOut<T>> {
+    let solve = |j: &[[T; 4]; 4], b: [T; 4]| {
+        let m = SMatrix::<T, 4, 4>::from_fn(|r, c| j[r][c]);
+        let x = m.lu().solve(&SVector::<T, 4>::from(b))?;
+        Some([x[0], x[1], x[2], x[3]])
+    };
+    st_newton(solve, phi, w6, al6, guess)
+}
+
+/// [`st_newton`] with heap `DMatrix` / `DVector` and their LU (sized at run
+/// time, allocating at every solve), as a general multibody solver does it.
+#[inline(never)]
+pub fn stephenson_newton_heap<T: F>(
+    phi: T,
+    w6: T,
+    al6: T,
+    guess: [T; 4],
+) -> Option<StephensonOut<T>> {
+    let solve = |j: &[[T; 4]; 4], b: [T; 4]| {
+        let m = DMatrix::<T>::from_fn(4, 4, |r, c| j[r][c]);
+        let x = m.lu().solve(&DVector::from_column_slice(&b))?;
+        Some([x[0], x[1], x[2], x[3]])
+    };
+    st_newton(solve, phi, w6, al6, guess)
+}
+
+/// The joints `A`, `B`, `P` (m) for the angles `q` of [`StephensonOut`].
+pub fn stephenson_joints(q: &[f64; 4]) -> [(f64, f64); 3] {
+    let [l1, _, _, ab, _] = ST_L;
+    let d = ST_AP.1.to_radians();
+    let (u, v) = (ST_AP.0 * d.cos(), ST_AP.0 * d.sin());
+    let a = (ST_O2.0 + l1 * q[0].cos(), ST_O2.1 + l1 * q[0].sin());
+    let (c4, s4) = (q[3].cos(), q[3].sin());
+    [
+        a,
+        (a.0 + ab * c4, a.1 + ab * s4),
+        (a.0 + u * c4 - v * s4, a.1 + u * s4 + v * c4),
+    ]
 }

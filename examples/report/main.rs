@@ -24,8 +24,12 @@ mod reference;
 mod scenes;
 /// The stability section: error against distance to each singularity.
 mod stability;
+#[path = "../common/stephenson.rs"]
+mod stephenson;
 mod svg;
 mod timing;
+/// The triad section: the Stephenson III six-bar against Newton baselines.
+mod triad;
 #[path = "../../benches/common/variants.rs"]
 mod variants;
 
@@ -283,6 +287,11 @@ fn main() {
         outln!("{}", forces::section(&out_dir));
         return;
     }
+    if std::env::var_os("REPORT_TRIAD_ONLY").is_some() {
+        // The triad section alone (development): not written to summary.md.
+        outln!("{}", triad::section(&out_dir));
+        return;
+    }
     let mut md = String::new();
     let _ = writeln!(md, "# Error against run time\n");
     let _ = writeln!(md, "{}\n", machine());
@@ -434,6 +443,8 @@ fn main() {
         let _ = writeln!(md, "Plot: `target/report/{file}`.\n");
         target_lines.extend(methods::targets(&scene, &ms, floor));
     }
+    eprintln!("scene Stephenson (triad)");
+    md += &triad::section(&out_dir);
     let _ = writeln!(md, "## Targets (issue 5)\n");
     for l in &target_lines {
         let _ = writeln!(md, "- {l}");

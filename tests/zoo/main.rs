@@ -90,3 +90,4 @@ mod prismatic;
 mod quick_return;
 mod revolute;
 mod toggle_press;
+mod triad_params;
