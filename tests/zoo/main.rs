@@ -69,6 +69,15 @@
 //!   1e-6 and 1e6; the strokes' crank angles, time ratio and stroke against
 //!   their closed forms.
 //!
+//! Triads (`triad_params.rs`, against the double-double reference's own
+//! Newton, `mechanism_reference::triad`):
+//!
+//! - the Stephenson III triad with its legs, side and P's place from
+//!   `params` (one from `sqrt`), at three parameter sets; with K2 on a
+//!   second crank (two inputs) over a grid, rates and accelerations
+//!   included; the typed errors of a pose that cannot assemble and of bad
+//!   parameters.
+//!
 //! Tolerances. Equilibrium and power: each residual is a sum of a handful of
 //! products of generated values, every value within a few eps times the
 //! conditioning of its linear system (the poses below keep the relative
