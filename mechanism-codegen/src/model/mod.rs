@@ -8,6 +8,7 @@
 //! and loads) and `inputs` (input ranges and allowances).
 
 mod args;
+mod drawn;
 mod inputs;
 mod kinds;
 mod kinetics;
