@@ -16,12 +16,11 @@
 //! one through the drawn joints at the drawn input.
 
 use super::args::NumberScope;
-use crate::diag::{did_you_mean, show_num, Diagnostics};
+use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::{Arg, Assign, Item, Let};
 use crate::value::convert;
 use proc_macro2::{Span, TokenStream};
 use quote::{quote, quote_spanned};
-use std::collections::BTreeMap;
 use syn::{Expr, Ident};
 
 /// The name of the fixed link.
@@ -331,13 +330,15 @@ enum Step {
     /// A joint of the ground.
     Ground(usize),
     /// A driver: `link` turns about `pivot` by `input`; its axis points to
-    /// `tip`; `carrier`: the link carrying its motor (`None`: the ground).
+    /// `tip`; `carrier`: the link carrying its motor (`None`: the ground),
+    /// with its frame as placed and the line its input is measured from
+    /// (its first two joints as listed), each as (from, toward) joints.
     Crank {
         link: usize,
         pivot: usize,
         tip: usize,
         input: usize,
-        carrier: Option<usize>,
+        carrier: Option<(usize, (usize, usize), (usize, usize))>,
     },
     /// An RRR dyad: joint `c` at its drawn distances from `a` on link `la`
     /// and from `b` on link `lb`.
@@ -347,6 +348,15 @@ enum Step {
         b: usize,
         lb: usize,
         c: usize,
+    },
+    /// A triad: the ternary link `t` with joints `joints` (A, B, P), each on
+    /// the leg `legs[i]` from the placed joint `known[i]`, in the assembly
+    /// through the drawn joints at the drawn value of the one input.
+    Triad {
+        t: usize,
+        joints: [usize; 3],
+        legs: [usize; 3],
+        known: [usize; 3],
     },
     /// A joint fixed on `link`, measured from its joint `from` in the frame
     /// whose axis points to its joint `toward`.
@@ -408,6 +418,10 @@ fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Step>> {
                 return true;
             };
             let tip = next_joint(&link_joints[link], pivot);
+            let carrier = carrier.and_then(|c| {
+                let listed = (link_joints[c][0], link_joints[c][1]);
+                Some((c, placed.frame[c]?, listed))
+            });
             steps.push(Step::Crank {
                 link,
                 pivot,
@@ -432,6 +446,25 @@ fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Step>> {
             }
             steps.push(step);
             continue;
+        }
+        if d.inputs.len() == 1 {
+            if let Some(step) = find_triad(&link_joints, &placed, ground) {
+                if let Step::Triad {
+                    t,
+                    joints,
+                    legs,
+                    known,
+                } = step
+                {
+                    for i in 0..3 {
+                        placed.joint[joints[i]] = true;
+                        placed.frame[legs[i]] = Some((known[i], joints[i]));
+                    }
+                    placed.frame[t] = Some((joints[0], joints[1]));
+                }
+                steps.push(step);
+                continue;
+            }
         }
         break;
     }
@@ -519,6 +552,44 @@ fn find_dyad(link_joints: &[Vec<usize>], placed: &Placed, ground: usize) -> Opti
     None
 }
 
+/// A triad: an unplaced link with three unplaced joints, each on one other
+/// unplaced link, a binary leg whose other joint is placed, and no other
+/// joint on an unplaced link.
+fn find_triad(link_joints: &[Vec<usize>], placed: &Placed, ground: usize) -> Option<Step> {
+    let unplaced = |l: usize| l != ground && placed.frame[l].is_none();
+    for t in (0..link_joints.len()).filter(|&t| unplaced(t) && link_joints[t].len() >= 3) {
+        let mut found = Vec::new();
+        for &j in &link_joints[t] {
+            let others: Vec<usize> = (0..link_joints.len())
+                .filter(|&l| l != t && unplaced(l) && link_joints[l].contains(&j))
+                .collect();
+            match others.as_slice() {
+                [] => {}
+                [leg] if link_joints[*leg].len() == 2 && !placed.joint[j] => {
+                    let k = link_joints[*leg].iter().copied().find(|&x| x != j)?;
+                    if !placed.joint[k] {
+                        return None;
+                    }
+                    found.push((j, *leg, k));
+                }
+                _ => {
+                    found.clear();
+                    break;
+                }
+            }
+        }
+        if let [a, b, p] = found.as_slice() {
+            return Some(Step::Triad {
+                t,
+                joints: [a.0, b.0, p.0],
+                legs: [a.1, b.1, p.1],
+                known: [a.2, b.2, p.2],
+            });
+        }
+    }
+    None
+}
+
 /// The `let` statement of one step, its numbers as expressions of the
 /// joints' coordinates (folded by the lowering when literal), its spans on
 /// the user's names.
@@ -545,8 +616,14 @@ fn emit(d: &Drawing, step: &Step) -> Let {
                 value(distance(j(pivot), j(tip))),
                 value(quote!(#input)),
             ];
-            if let Some(c) = carrier {
+            if let Some((c, frame, listed)) = carrier {
                 args.push(name_arg(l(c)));
+                if frame != listed {
+                    args.push(value(turn(
+                        (j(frame.0), j(frame.1)),
+                        (j(listed.0), j(listed.1)),
+                    )));
+                }
             }
             (j(tip).name.clone(), "crank", args, vec![l(link).clone()])
         }
@@ -565,6 +642,14 @@ fn emit(d: &Drawing, step: &Step) -> Let {
                 ],
                 vec![l(la).clone(), l(lb).clone()],
             )
+        }
+        Step::Triad {
+            t,
+            joints,
+            legs,
+            known,
+        } => {
+            return triad_let(d, t, joints, legs, known);
         }
         Step::Point {
             link,
@@ -590,6 +675,75 @@ fn emit(d: &Drawing, step: &Step) -> Let {
         args_span: span,
         links,
         slides: Vec::new(),
+    }
+}
+
+/// The triad's `let (A, B, P) = triad(..) as (LEG1, LEG2, LEG3, T)`: the
+/// legs' lengths, the side `|AB|` and `P` in the frame `A -> B` from the
+/// drawing; the assembly: the drawn joints at the drawn value of the input.
+fn triad_let(d: &Drawing, t: usize, joints: [usize; 3], legs: [usize; 3], known: [usize; 3]) -> Let {
+    let j = |k: usize| &d.joints[k];
+    let value = |t: TokenStream| Arg::Value(syn::parse2(t).expect("a generated expression parses"), None);
+    let mut args = Vec::new();
+    for i in 0..3 {
+        args.push(name_arg(&j(known[i]).name));
+        args.push(value(distance(j(known[i]), j(joints[i]))));
+    }
+    let [a, b, p] = joints.map(j);
+    args.push(value(distance(a, b)));
+    let (x, y) = local(a, b, p);
+    args.push(value(quote!((#x, #y))));
+    let input = &d.inputs[0].name;
+    let at = input_value(d);
+    args.push(value(quote!(#input = #at)));
+    for k in joints {
+        let (x, y) = (&j(k).x, &j(k).y);
+        args.push(value(quote!((#x, #y))));
+    }
+    let span = a.name.span();
+    Let {
+        name: a.name.clone(),
+        joints: vec![b.name.clone(), p.name.clone()],
+        kind: Ident::new("triad", span),
+        args,
+        args_span: span,
+        links: legs
+            .iter()
+            .chain(std::iter::once(&t))
+            .map(|&l| d.links[l].name.clone())
+            .collect(),
+        slides: Vec::new(),
+    }
+}
+
+/// The drawn value (rad) of the one input: the angle of its link's line
+/// (pivot -> next joint listed) from +x, or from its carrier's first two
+/// joints.
+fn input_value(d: &Drawing) -> TokenStream {
+    let input = &d.inputs[0];
+    let link = d.links.iter().find(|l| l.name == input.link).expect("checked");
+    let joint = |n: &Ident| d.joints.iter().find(|j| &j.name == n).expect("checked");
+    let pivot_of = |carrier: &[Ident]| {
+        link.joints
+            .iter()
+            .position(|j| carrier.contains(j))
+            .unwrap_or(0)
+    };
+    let carrier_joints: Vec<Ident> = match &input.carrier {
+        Some(c) => d.links.iter().find(|x| &x.name == c).map(|c| c.joints.clone()).unwrap_or_default(),
+        None => d.links.iter().find(|x| x.name == GROUND).map(|g| g.joints.clone()).unwrap_or_default(),
+    };
+    let k = pivot_of(&carrier_joints);
+    let (p, t) = (joint(&link.joints[k]), joint(&link.joints[(k + 1) % link.joints.len()]));
+    match &input.carrier {
+        None => {
+            let (px, py, tx, ty) = (&p.x, &p.y, &t.x, &t.y);
+            quote!(atan2((#ty) - (#py), (#tx) - (#px)))
+        }
+        Some(_) => {
+            let (c0, c1) = (joint(&carrier_joints[0]), joint(&carrier_joints[1]));
+            turn((c0, c1), (p, t))
+        }
     }
 }
 
@@ -620,15 +774,19 @@ fn local(from: &Joint, toward: &Joint, j: &Joint) -> (TokenStream, TokenStream) 
     )
 }
 
+/// The angle (rad) from the direction `a.0 -> a.1` to `b.0 -> b.1`,
+/// counter-clockwise: `atan2(a x b, a . b)`.
+fn turn(a: (&Joint, &Joint), b: (&Joint, &Joint)) -> TokenStream {
+    let v = |(f, t): (&Joint, &Joint)| {
+        let (fx, fy, tx, ty) = (&f.x, &f.y, &t.x, &t.y);
+        (quote!(((#tx) - (#fx))), quote!(((#ty) - (#fy))))
+    };
+    let ((ax, ay), (bx, by)) = (v(a), v(b));
+    quote!(atan2(#ax * #by - #ay * #bx, #ax * #bx + #ay * #by))
+}
+
 /// The side of `c` from the line `a -> b`: positive on the left.
 fn side(a: (f64, f64), b: (f64, f64), c: (f64, f64)) -> f64 {
     (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0)
 }
 
-#[allow(dead_code)]
-fn shown(x: f64) -> String {
-    show_num(x)
-}
-
-#[allow(dead_code)]
-type Names = BTreeMap<String, usize>;
