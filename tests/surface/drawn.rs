@@ -45,14 +45,27 @@ fn a_drawn_four_bar_is_the_grouped_one() {
     // Proves: the drawn four-bar decomposes into the crank and RRR a user
     // would write, with the lengths and the assembly of the drawing: both
     // forms give the same joints over a full turn.
-    let (d, g) = (DrawnFourBar::<f64>::default(), GroupedFourBar::<f64>::default());
+    let (d, g) = (
+        DrawnFourBar::<f64>::default(),
+        GroupedFourBar::<f64>::default(),
+    );
     for k in 0..360 {
         let theta = (k as f64).to_radians();
         let pd = d.position(&DrawnFourBarInput { theta }).unwrap();
         let pg = g.position(&GroupedFourBarInput { theta }).unwrap();
-        assert!((pd.B - pg.B).norm() <= 4.0 * f64::EPSILON * 4.0, "{k}: {} {}", pd.B, pg.B);
+        assert!(
+            (pd.B - pg.B).norm() <= 4.0 * f64::EPSILON * 4.0,
+            "{k}: {} {}",
+            pd.B,
+            pg.B
+        );
         assert!((pd.A - pg.A).norm() <= 4.0 * f64::EPSILON, "{k}");
-        assert!((pd.P - pg.P).norm() <= 16.0 * f64::EPSILON, "{k}: {} {}", pd.P, pg.P);
+        assert!(
+            (pd.P - pg.P).norm() <= 16.0 * f64::EPSILON,
+            "{k}: {} {}",
+            pd.P,
+            pg.P
+        );
     }
     // At the drawn input the joints are where they are drawn.
     let at = d
@@ -60,8 +73,16 @@ fn a_drawn_four_bar_is_the_grouped_one() {
             theta: 60f64.to_radians(),
         })
         .unwrap();
-    assert!((at.B - mechanism::Point2::new(3.2, 2.1)).norm() < 1e-14, "{}", at.B);
-    assert!((at.P - mechanism::Point2::new(2.0, 2.9)).norm() < 1e-14, "{}", at.P);
+    assert!(
+        (at.B - mechanism::Point2::new(3.2, 2.1)).norm() < 1e-14,
+        "{}",
+        at.B
+    );
+    assert!(
+        (at.P - mechanism::Point2::new(2.0, 2.9)).norm() < 1e-14,
+        "{}",
+        at.P
+    );
 }
 
 mechanism! {

@@ -614,9 +614,13 @@ fn drawn_list(input: ParseStream, word: &str) -> syn::Result<Vec<Assign>> {
     let content;
     braced!(content in input);
     let list_name = format!("`{word} {{ .. }}`");
-    list(&content, &list_name, Assign::parse, starts_assign, |_, u| {
-        Some(format!("`{u}` has no place in `{word}`: `{example}`"))
-    })
+    list(
+        &content,
+        &list_name,
+        Assign::parse,
+        starts_assign,
+        |_, u| Some(format!("`{u}` has no place in `{word}`: `{example}`")),
+    )
 }
 
 /// `input NAME = angle(LINK);` or `input NAME = angle(LINK, FROM_LINK);`,
