@@ -134,3 +134,97 @@ fn a_drawn_stephenson_is_the_example_with_its_triad() {
         }
     }
 }
+
+mechanism! {
+    /// The 2R leg of `relative_drivers::Leg` drawn with its knee bent, the
+    /// hip and knee motors as inputs (the knee's angle from the thigh), its
+    /// masses and load written as for the grouped form.
+    pub DrawnLeg {
+        dof 2;
+        joints { H = (0.0, 0.0), K = (0.4, 0.0), F = (0.4, 0.35) }
+        links { ground = [H], thigh = [H, K], shank = [K, F] }
+        input q1 = angle(thigh);
+        input q2 = angle(shank, thigh);
+        let G1 = point(thigh, from H, 0.17, 4 deg);
+        let G2 = point(shank, from K, 0.15, -6 deg);
+        mass thigh { m = 7.0, at = G1, j = 0.11 };
+        mass shank { m = 3.2, at = G2, j = 0.045 };
+        gravity (0.0, -9.81);
+        force at F = (30.0, 250.0);
+    }
+}
+
+mechanism! {
+    /// The same leg with the thigh's joints listed knee first: the knee's
+    /// angle is then measured from the line K -> H, half a turn from H -> K.
+    pub DrawnLegReversed {
+        joints { H = (0.0, 0.0), K = (0.4, 0.0), F = (0.4, 0.35) }
+        links { ground = [H], thigh = [K, H], shank = [K, F] }
+        input q1 = angle(thigh);
+        input q2 = angle(shank, thigh);
+    }
+}
+
+#[test]
+fn a_drawn_leg_with_a_knee_motor_is_the_grouped_leg() {
+    // Proves: a relative input in the drawn form becomes a crank carried by
+    // the named link, measured from that link's first two joints as listed,
+    // and masses and loads written beside a drawing act as on the grouped
+    // form: same foot, rates and motor torques over a grid of both angles.
+    use crate::relative_drivers::{Leg, LegInput};
+    let (d, g) = (DrawnLeg::<f64>::default(), Leg::<f64>::default());
+    let r = DrawnLegReversed::<f64>::default();
+    for i in 0..24 {
+        for k in 0..24 {
+            let (q1, q2) = (
+                (15.0 * i as f64 - 170.0).to_radians(),
+                (15.0 * k as f64 - 175.0).to_radians(),
+            );
+            let (w, al) = ((2.5, -4.0), (-30.0, 45.0));
+            let sd = d
+                .solve(
+                    &DrawnLegInput { q1, q2 },
+                    &DrawnLegInput { q1: w.0, q2: w.1 },
+                    &DrawnLegInput { q1: al.0, q2: al.1 },
+                )
+                .unwrap();
+            let sg = g
+                .solve(
+                    &LegInput { q1, q2 },
+                    &LegInput { q1: w.0, q2: w.1 },
+                    &LegInput { q1: al.0, q2: al.1 },
+                )
+                .unwrap();
+            let tol = 8.0 * f64::EPSILON;
+            assert!((sd.position.F - sg.position.F).norm() <= tol, "{i} {k}");
+            assert!(
+                (sd.velocity.F - sg.velocity.F).norm() <= 8.0 * tol,
+                "{i} {k}"
+            );
+            let scale = sg.forces.drive_q1.abs().max(100.0);
+            assert!(
+                (sd.forces.drive_q1 - sg.forces.drive_q1).abs() <= tol * scale,
+                "{i} {k}"
+            );
+            assert!(
+                (sd.forces.drive_q2 - sg.forces.drive_q2).abs() <= tol * scale,
+                "{i} {k}"
+            );
+            // Listed knee first, the thigh's listed line is K -> H: q2 is
+            // measured from it, half a turn from H -> K; q1 is still the
+            // angle of the line from the thigh's ground joint H to K.
+            let pr = r
+                .position(&DrawnLegReversedInput {
+                    q1,
+                    q2: q2 - std::f64::consts::PI,
+                })
+                .unwrap();
+            assert!(
+                (pr.F - sg.position.F).norm() <= tol,
+                "reversed {i} {k}: {} {}",
+                pr.F,
+                sg.position.F
+            );
+        }
+    }
+}
