@@ -114,7 +114,6 @@ mechanism! {
 }
 
 #[path = "../../examples/common/stephenson.rs"]
-#[allow(dead_code)]
 mod stephenson;
 
 #[test]
