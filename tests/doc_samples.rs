@@ -233,6 +233,48 @@ mod dsl_intro {
     }
 }
 
+/// docs/dsl.md, the drawn four-bar (the sample verbatim).
+mod dsl_drawn {
+    use mechanism::mechanism;
+
+    mechanism! {
+        pub FourBar {
+            joints { O2 = (0.0, 0.0), O4 = (4.0, 0.0), A = (0.5, 0.9), B = (3.2, 2.1), P = (2.0, 2.9) }
+            links {
+                ground = [O2, O4],          // the fixed link
+                crank = [O2, A],
+                coupler = [A, B, P],        // a ternary link: P is a point of it
+                rocker = [O4, B],
+            }
+            input theta = angle(crank);     // the crank's angle from +x (about 61 deg as drawn)
+        }
+    }
+
+    #[test]
+    fn the_drawn_four_bar_is_where_it_is_drawn() {
+        // At the drawn crank angle every joint is where the sample draws it;
+        // a quarter turn later B is still at its drawn distances from A and
+        // O4 (the lengths are read from the drawing).
+        let m = FourBar::<f64>::default();
+        let theta = 0.9f64.atan2(0.5);
+        let p = m.position(&FourBarInput { theta }).unwrap();
+        assert!(
+            (p.B - mechanism::Point2::new(3.2, 2.1)).norm() < 1e-14,
+            "{}",
+            p.B
+        );
+        assert!(
+            (p.P - mechanism::Point2::new(2.0, 2.9)).norm() < 1e-14,
+            "{}",
+            p.P
+        );
+        let q = m.position(&FourBarInput { theta: theta + 1.5 }).unwrap();
+        let ab = (3.2f64 - 0.5).hypot(2.1 - 0.9);
+        assert!(((q.B - q.A).norm() - ab).abs() < 1e-14);
+        assert!(((q.B - q.O4).norm() - 0.8f64.hypot(2.1)).abs() < 1e-14);
+    }
+}
+
 /// docs/dsl.md, `Display` of a solution (the sample verbatim).
 mod dsl_display {
     use mechanism::mechanism;

@@ -28,6 +28,7 @@ mod equilibrium;
 mod surface_defs;
 
 mod describe;
+mod drawn;
 mod dsl;
 mod forces;
 mod functions;

@@ -9,13 +9,13 @@ use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
-use super::tokens::{axis, grp, local, tag, unit_field};
+use super::tokens::{axis, grp, local, tag, unit_field, unit_vector};
 use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
-use mechanism_core::driver;
+use mechanism_core::{driver, geometry, link};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
@@ -30,6 +30,23 @@ pub(super) struct Crank<'a> {
     pub input: &'a Ident,
     pub cos_sin: bool,
     pub carrier: Option<&'a Ident>,
+    /// With a carrier: the angle (rad) in the carrier's frame from which the
+    /// input is measured (0: its axis).
+    pub zero: &'a Value,
+}
+
+impl Crank<'_> {
+    /// The direction the input is measured from: the carrier's axis, turned
+    /// by the zero angle when there is one (folded when literal).
+    fn zero_axis(&self, carrier: &Ident) -> TokenStream {
+        let ax = axis(carrier);
+        if self.zero.fold() == Some(0.0) {
+            quote!(#ax)
+        } else {
+            let u = unit_vector(self.zero);
+            quote!(::mechanism::link::local_offset(&#ax, &#u))
+        }
+    }
 }
 
 impl<'a> GroupKind<'a> for Crank<'a> {
@@ -52,7 +69,7 @@ impl<'a> GroupKind<'a> for Crank<'a> {
     }
 
     fn position_values(&self) -> Vec<Value> {
-        vec![self.radius.clone()]
+        vec![self.radius.clone(), self.zero.clone()]
     }
 
     fn eval(
@@ -64,7 +81,11 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         let (r, q) = (num(self.radius), input(self.input));
         let c = match self.carrier {
             None => driver::crank::position(&pivot, r, q)?,
-            Some(l) => driver::crank::position_on(&pivot, r, &pose.axis(l), q)?,
+            Some(l) => {
+                let zero = geometry::unit(num(self.zero));
+                let axis = link::local_offset(&pose.axis(l), &zero);
+                driver::crank::position_on(&pivot, r, &axis, q)?
+            }
         };
         pose.found(self.stmt, Some(c.tip), &[c.axis]);
         Ok(None)
@@ -84,11 +105,11 @@ impl<'a> GroupKind<'a> for Crank<'a> {
                 quote!(::mechanism::driver::crank::position(&#pivot, #r, input.#input))
             }
             (true, Some(l)) => {
-                let ax = axis(l);
+                let ax = self.zero_axis(l);
                 quote!(::mechanism::driver::crank::position_cos_sin_on(&#pivot, #r, &#ax, input_cs.#input.cos, input_cs.#input.sin))
             }
             (false, Some(l)) => {
-                let ax = axis(l);
+                let ax = self.zero_axis(l);
                 quote!(::mechanism::driver::crank::position_on(&#pivot, #r, &#ax, input.#input))
             }
         };

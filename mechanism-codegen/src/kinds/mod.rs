@@ -436,6 +436,7 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             input,
             cos_sin,
             carrier,
+            zero,
         } => Box::new(crank::Crank {
             stmt,
             pivot,
@@ -443,6 +444,7 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             input,
             cos_sin: *cos_sin,
             carrier: carrier.as_ref(),
+            zero,
         }),
         Kind::Slider {
             guide,

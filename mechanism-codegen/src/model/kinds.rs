@@ -176,12 +176,19 @@ fn crank(a: &mut Args) -> Option<Kind> {
             return None;
         }
     };
+    // After the carrier, the angle in its frame where the input is zero.
+    let zero = if carrier.is_some() && a.args.len() > 0 {
+        a.number("zero angle in the carrier's frame", true)?
+    } else {
+        Value::lit(0.0, a.span)
+    };
     Some(Kind::Crank {
         pivot,
         radius,
         input,
         cos_sin,
         carrier,
+        zero,
     })
 }
 

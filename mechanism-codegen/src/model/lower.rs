@@ -5,7 +5,9 @@
 
 use super::args::{literal_scope_for, NumberScope, MODE_PARAM};
 use super::kinds::lower_kind;
-use super::{inputs, modes, Allowed, Failed, Kind, Kinetics, Level, Local, Mode, Model, Stmt};
+use super::{
+    drawn, inputs, modes, Allowed, Failed, Kind, Kinetics, Level, Local, Mode, Model, Stmt,
+};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::vocabulary::{input_position, links_created, KINDS};
 use crate::parse::{self, Arg, Assign, Definition, Item, RangeDecl};
@@ -38,9 +40,11 @@ pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
         allow_loads: true,
         ..scope
     };
+    let (items, drawing_failed) = drawn::expand(def.items, &scope, errors);
     let mut body = Body::new(&scope, &load_scope, loads.clone());
     body.modes = modes.clone();
-    for item in def.items {
+    body.failed = drawing_failed;
+    for item in items {
         body.item(item, errors);
     }
     let Body {
@@ -316,6 +320,8 @@ impl<'a> Body<'a> {
             Item::Allow(span, what, groups) => self.checks.allow.push((span, what, groups)),
             Item::Loads(_) => {}
             Item::Params(_) | Item::Const(_) => {}
+            // Replaced by group statements before the body is lowered.
+            Item::Joints(..) | Item::Links(..) | Item::Input(..) => {}
         }
     }
 

@@ -8,6 +8,7 @@
 //! and loads) and `inputs` (input ranges and allowances).
 
 mod args;
+mod drawn;
 mod inputs;
 mod kinds;
 mod kinetics;
@@ -239,13 +240,14 @@ pub enum Kind {
     /// Crank driver. `cos_sin`: the definition wrote `INPUT as cos_sin`, so a
     /// `position_cos_sin` entry point takes this input as `(cos, sin)`.
     /// `carrier`: the moving link that carries it (its input is then the
-    /// angle from that link's axis); `None` on the ground.
+    /// angle from that link's axis turned by `zero`); `None` on the ground.
     Crank {
         pivot: Ident,
         radius: Value,
         input: Ident,
         cos_sin: bool,
         carrier: Option<Ident>,
+        zero: Value,
     },
     /// Slider driver.
     Slider {
@@ -448,6 +450,7 @@ mod tests {
             input,
             cos_sin: false,
             carrier: None,
+            ..
         } = &model.stmts[2].kind
         else {
             panic!("A is no crank");

@@ -86,6 +86,16 @@ pub enum Item {
     /// `allow singular;` / `allow singular B, C;`: the `allow` keyword's
     /// span, what is allowed, and the groups (empty: all).
     Allow(Span, Ident, Vec<Ident>),
+    /// The drawn form: `joints { A = (x, y), .. }`, the joints where the
+    /// drawing (the reference pose) has them, with the keyword's span.
+    Joints(Span, Vec<Assign>),
+    /// The drawn form: `links { ground = [O2, O4], crank = [O2, A], .. }`,
+    /// each link the set of joints it has, with the keyword's span.
+    Links(Span, Vec<Assign>),
+    /// The drawn form: `input theta = angle(crank);` (a link's angle from
+    /// the ground) or `input knee = angle(shank, thigh);` (from another
+    /// link): the input's name and what it measures.
+    Input(Ident, Expr),
 }
 
 /// `range INPUT = (lo, hi);`
@@ -168,7 +178,7 @@ pub enum ForceValue {
 /// The words that begin a statement (besides `let` and `const`).
 const STATEMENTS: &[&str] = &[
     "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "range",
-    "allow",
+    "allow", "joints", "links", "input",
 ];
 
 /// Unit words a user may write after a value where none is taken (in a
@@ -673,7 +683,7 @@ mod tests {
         let (message, _, column) = error("pub M { forse at E = (1.0, 0.0); }");
         assert_eq!(
             message,
-            "unknown statement `forse`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range` or `allow`; did you mean `force`?"
+            "unknown statement `forse`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links` or `input`; did you mean `force`?"
         );
         assert_eq!(column, 8);
     }

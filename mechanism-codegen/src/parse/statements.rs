@@ -28,7 +28,7 @@ impl Parse for Item {
         let word: Ident = input.parse().map_err(|e| {
             syn::Error::new(
                 e.span(),
-                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range` or `allow`",
+                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links` or `input`",
             )
         })?;
         match word.to_string().as_str() {
@@ -43,10 +43,13 @@ impl Parse for Item {
             "torque" => parse_torque(input, start),
             "range" => parse_range(input, start),
             "allow" => parse_allow(input, start, &word),
+            "joints" => Ok(Item::Joints(word.span(), drawn_list(input, "joints")?)),
+            "links" => Ok(Item::Links(word.span(), drawn_list(input, "links")?)),
+            "input" => parse_input(input, start),
             other => Err(syn::Error::new(
                 word.span(),
                 format!(
-                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range` or `allow`{}",
+                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links` or `input`{}",
                     crate::diag::did_you_mean(other, STATEMENTS.iter().copied())
                 ),
             )),
@@ -593,6 +596,47 @@ fn assignments(input: ParseStream, word: &str, what: &str) -> syn::Result<Vec<As
             }
         },
     )
+}
+
+/// `{ NAME = value, .. }` of the drawn form's `joints` (`(x, y)` values) or
+/// `links` (`[J1, J2, ..]` values); the values are read in `model::drawn`.
+fn drawn_list(input: ParseStream, word: &str) -> syn::Result<Vec<Assign>> {
+    let example = if word == "joints" {
+        "joints { O2 = (0.0, 0.0), A = (0.0, 0.1) }"
+    } else {
+        "links { ground = [O2, O4], crank = [O2, A] }"
+    };
+    if !input.peek(syn::token::Brace) {
+        return Err(input.error(format!(
+            "expected `{{` after `{word}`: the entries go in braces, `{example}`"
+        )));
+    }
+    let content;
+    braced!(content in input);
+    let list_name = format!("`{word} {{ .. }}`");
+    list(
+        &content,
+        &list_name,
+        Assign::parse,
+        starts_assign,
+        |_, u| Some(format!("`{u}` has no place in `{word}`: `{example}`")),
+    )
+}
+
+/// `input NAME = angle(LINK);` or `input NAME = angle(LINK, FROM_LINK);`,
+/// after `input`.
+fn parse_input(input: ParseStream, start: Cursor) -> syn::Result<Item> {
+    let usage = "`input theta = angle(crank);` or `input knee = angle(shank, thigh);`";
+    let name: Ident = name_after(input, "input", "the input's name", usage)?;
+    equals(input, start, usage)?;
+    let value: Expr = input.parse()?;
+    end(
+        input,
+        start,
+        &format!("the `input {name} = ..` statement"),
+        Valued::Load("an input"),
+    )?;
+    Ok(Item::Input(name, value))
 }
 
 /// A name after `word` in the statement `usage`.

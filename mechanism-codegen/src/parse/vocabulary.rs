@@ -16,7 +16,7 @@ pub fn usage(kind: &str) -> &'static str {
     match kind {
         "ground" => "ground(x, y)",
         "guide" => "guide(POINT or (x, y), angle) or guide(POINT, LINK[, angle])",
-        "crank" => "crank(PIVOT, radius, INPUT[, CARRIER]) as LINK",
+        "crank" => "crank(PIVOT, radius, INPUT[, CARRIER[, zero_angle]]) as LINK",
         "slider" => "slider(GUIDE, INPUT[, offset]) as LINK",
         "actuator" => "actuator(A, radius, B, INPUT, left|right) as (LINK, CYLINDER)",
         "rrr" => "rrr(A, l1, B, l2, left|right) as (LINK1, LINK2)",
@@ -39,7 +39,7 @@ pub fn arity(kind: &str, args: &[Arg]) -> Option<(usize, usize)> {
     Some(match kind {
         "ground" => (2, 2),
         "guide" => (2, 3),
-        "crank" => (3, 4),
+        "crank" => (3, 5),
         "slider" => (2, 3),
         "actuator" | "rrr" => (5, 5),
         "rrp" => (4, 5),

@@ -1,0 +1,497 @@
+//! The drawing decomposed into groups, Assur's way: from the ground and the
+//! drivers, repeatedly a dyad (a joint on two links, each with a joint
+//! already placed); when none is left, a triad (a link whose three joints
+//! each hang on a binary leg from a placed joint); the other joints of
+//! every placed link are its points. Before it, the drawing's links, joints
+//! and inputs are checked, and Gruebler's count against the inputs. A
+//! drawing it cannot decompose is an error naming the links left.
+
+use super::{Drawing, InputId, JointId, LinkId, GROUND};
+use crate::diag::{did_you_mean, Diagnostics};
+
+/// A link's frame: the joint at its origin and the joint its axis points to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Frame {
+    pub origin: JointId,
+    pub toward: JointId,
+}
+
+/// The link that carries a driver's motor: the link, its frame as placed,
+/// and the line the input is measured from (its first two joints as listed).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Carrier {
+    pub link: LinkId,
+    pub frame: Frame,
+    pub listed: Frame,
+}
+
+/// One group statement, in solve order.
+pub(super) enum Step {
+    /// A joint of the ground.
+    Ground(JointId),
+    /// A driver: `link` turns by `input` about `frame.origin`, its axis
+    /// pointing to `frame.toward` (the joint it places); `carrier`: the link
+    /// carrying its motor (`None`: the ground).
+    Crank {
+        link: LinkId,
+        frame: Frame,
+        input: InputId,
+        carrier: Option<Carrier>,
+    },
+    /// An RRR dyad: joint `c` at its drawn distances from `a` on link `la`
+    /// and from `b` on link `lb`.
+    Rrr {
+        a: JointId,
+        la: LinkId,
+        b: JointId,
+        lb: LinkId,
+        c: JointId,
+    },
+    /// A triad: the ternary link `t` with joints `joints` (A, B, P), each on
+    /// the leg `legs[i]` from the placed joint `known[i]`.
+    Triad {
+        t: LinkId,
+        joints: [JointId; 3],
+        legs: [LinkId; 3],
+        known: [JointId; 3],
+    },
+    /// A joint fixed on `link`, in the link's frame.
+    Point {
+        link: LinkId,
+        frame: Frame,
+        joint: JointId,
+    },
+}
+
+/// What is placed so far: joints known, links placed with their frames.
+struct Placed {
+    joint: Vec<bool>,
+    frame: Vec<Option<Frame>>,
+}
+
+impl Placed {
+    fn joint(&self, j: JointId) -> bool {
+        self.joint[j.0]
+    }
+
+    fn frame(&self, l: LinkId) -> Option<Frame> {
+        self.frame[l.0]
+    }
+
+    fn place(&mut self, j: JointId) {
+        self.joint[j.0] = true;
+    }
+
+    fn set_frame(&mut self, l: LinkId, origin: JointId, toward: JointId) {
+        self.frame[l.0] = Some(Frame { origin, toward });
+    }
+}
+
+/// Where the decomposition got to: the steps found, what they placed, and
+/// the inputs it could not place.
+struct Outcome {
+    steps: Vec<Step>,
+    placed: Placed,
+    pending: Vec<InputId>,
+}
+
+/// Decomposes the drawing into group statements in solve order; `None`
+/// (with errors) when its structure is wrong (no ground, a joint on no
+/// link, an input on no link, more or fewer inputs than freedoms) or it
+/// cannot be decomposed (naming the links left, or the dyad drawn at a dead
+/// centre).
+pub(super) fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Step>> {
+    if !structure_holds(d, errors) || !freedoms_match(d, errors) {
+        return None;
+    }
+    let out = solve_order(d)?;
+    for step in &out.steps {
+        if let Step::Rrr { a, b, c, .. } = *step {
+            if !off_the_line(d, a, b, c, errors) {
+                return None;
+            }
+        }
+    }
+    let left = unplaced(d, &out.placed);
+    if left.is_empty() {
+        return Some(out.steps);
+    }
+    if let Some(&k) = out.pending.first() {
+        let input = d.input(k);
+        let on = match &input.carrier {
+            Some(c) => format!("`{c}`, the link named as its carrier,"),
+            None => "the ground".to_string(),
+        };
+        errors.push(
+            input.link.span(),
+            format!(
+                "the input `{}` turns `{}`, which has no joint with {on} once that is placed, so no motor can drive it there; links left unplaced: {}",
+                input.name,
+                input.link,
+                left.join(", ")
+            ),
+        );
+    } else {
+        errors.push(
+            d.span,
+            format!(
+                "the links {} form a loop that is not a dyad (a joint on two links, each with a joint already placed) and not a triad (a link with three joints, each on a binary leg from a placed joint): it cannot be decomposed into the supported groups; write it with group statements, or choose inputs on these links",
+                left.join(", ")
+            ),
+        );
+    }
+    None
+}
+
+/// A `ground` link, every joint on a link, every input on a moving link.
+/// `false` with errors otherwise.
+fn structure_holds(d: &Drawing, errors: &mut Diagnostics) -> bool {
+    let before = errors.len();
+    if d.ground().is_none() {
+        errors.push(
+            d.span,
+            "the drawing has no fixed link: name it `ground`, with its joints, `ground = [O2, O4]`",
+        );
+    }
+    for (k, j) in d.joints.iter().enumerate() {
+        if !d.links.iter().any(|l| l.joints.contains(&JointId(k))) {
+            errors.push(
+                j.name.span(),
+                format!(
+                    "joint `{}` is on no link; list it in the links it joins",
+                    j.name
+                ),
+            );
+        }
+    }
+    let link_names: Vec<String> = d.links.iter().map(|l| l.name.to_string()).collect();
+    for i in &d.inputs {
+        for l in std::iter::once(&i.link).chain(&i.carrier) {
+            if d.link_named(l).is_none() {
+                errors.push(
+                    l.span(),
+                    format!(
+                        "no link named `{l}`{}",
+                        did_you_mean(&l.to_string(), link_names.iter().map(String::as_str))
+                    ),
+                );
+            }
+        }
+        if i.link == GROUND {
+            errors.push(
+                i.link.span(),
+                "the ground does not turn; an input is the angle of a moving link",
+            );
+        }
+    }
+    errors.len() == before
+}
+
+/// Gruebler's count of the drawing's freedoms equals its inputs; else an
+/// error saying which way it misses: the links left free, or the links that
+/// join joints the rest already fixes.
+fn freedoms_match(d: &Drawing, errors: &mut Diagnostics) -> bool {
+    let moving = d.links.len() as i64 - 1;
+    let pairs: i64 = (0..d.joints.len())
+        .map(|k| {
+            let on = d.links.iter().filter(|l| l.joints.contains(&JointId(k)));
+            on.count() as i64 - 1
+        })
+        .sum();
+    let dof = 3 * moving - 2 * pairs;
+    let inputs = d.inputs.len() as i64;
+    if dof == inputs {
+        return true;
+    }
+    let count = format!(
+        "Gruebler: 3 x {moving} moving links - 2 x {pairs} pin pairs = {dof} degree(s) of freedom"
+    );
+    let message = if dof > inputs {
+        let free = solve_order(d)
+            .map(|out| unplaced(d, &out.placed))
+            .unwrap_or_default();
+        format!(
+            "the drawing is under-constrained: {count}, and {inputs} input(s) drive it, so {} motion(s) are free (links left free: {}); add {} `input` (a link's angle), or a link that closes a loop",
+            dof - inputs,
+            free.join(", "),
+            dof - inputs
+        )
+    } else {
+        let braced = braced_links(d);
+        let which = if braced.is_empty() {
+            String::new()
+        } else {
+            format!(
+                " ({} joins joints the rest already fixes)",
+                braced.join(", ")
+            )
+        };
+        format!(
+            "the drawing is over-constrained: {count}, and {inputs} input(s) are given{which}; remove {} input(s), or a link that makes a loop rigid",
+            inputs - dof
+        )
+    };
+    errors.push(d.span, message);
+    false
+}
+
+/// The links not placed, as a list for messages.
+fn unplaced(d: &Drawing, placed: &Placed) -> Vec<String> {
+    d.link_ids()
+        .filter(|&l| placed.frame(l).is_none())
+        .map(|l| format!("`{}`", d.link(l).name))
+        .collect()
+}
+
+/// The links a count of too many constraints points at: links not placed
+/// whose joints the rest all placed (each a rigid bar between fixed joints).
+fn braced_links(d: &Drawing) -> Vec<String> {
+    let Some(out) = solve_order(d) else {
+        return Vec::new();
+    };
+    d.link_ids()
+        .filter(|&l| {
+            out.placed.frame(l).is_none() && d.link(l).joints.iter().all(|&j| out.placed.joint(j))
+        })
+        .map(|l| format!("`{}`", d.link(l).name))
+        .collect()
+}
+
+/// The decomposition proper, without messages: from the ground, the
+/// drivers whose carrier is placed, the points of placed links, dyads, then
+/// triads (with one input), until nothing more can be placed.
+fn solve_order(d: &Drawing) -> Option<Outcome> {
+    let ground = d.ground()?;
+    let mut placed = Placed {
+        joint: vec![false; d.joints.len()],
+        frame: vec![None; d.links.len()],
+    };
+    let mut steps = Vec::new();
+    let fixed = &d.link(ground).joints;
+    for &j in fixed {
+        placed.place(j);
+        steps.push(Step::Ground(j));
+    }
+    placed.set_frame(ground, fixed[0], fixed[0]);
+    let mut pending: Vec<InputId> = d.input_ids().collect();
+    loop {
+        let before = pending.len();
+        pending.retain(|&k| !place_driver(d, k, ground, &mut placed, &mut steps));
+        let drove = pending.len() < before;
+        if place_points(d, &mut placed, &mut steps) || drove {
+            continue;
+        }
+        if let Some(step) = find_dyad(d, &placed, ground) {
+            if let Step::Rrr { a, la, b, lb, c } = step {
+                placed.place(c);
+                placed.set_frame(la, a, c);
+                placed.set_frame(lb, b, c);
+            }
+            steps.push(step);
+            continue;
+        }
+        let triad = (d.inputs.len() == 1)
+            .then(|| find_triad(d, &placed, ground))
+            .flatten();
+        let Some(step) = triad else {
+            break;
+        };
+        if let Step::Triad {
+            t,
+            joints,
+            legs,
+            known,
+        } = step
+        {
+            for i in 0..3 {
+                placed.place(joints[i]);
+                placed.set_frame(legs[i], known[i], joints[i]);
+            }
+            placed.set_frame(t, joints[0], joints[1]);
+        }
+        steps.push(step);
+    }
+    Some(Outcome {
+        steps,
+        placed,
+        pending,
+    })
+}
+
+/// Places input `k`'s crank when what carries it is placed and its link
+/// shares a placed joint with it (the pivot); its axis points to the link's
+/// next joint as listed. `true` when placed.
+fn place_driver(
+    d: &Drawing,
+    k: InputId,
+    ground: LinkId,
+    placed: &mut Placed,
+    steps: &mut Vec<Step>,
+) -> bool {
+    let input = d.input(k);
+    let Some(link) = d.link_named(&input.link) else {
+        return false;
+    };
+    let carrier = input.carrier.as_ref().and_then(|c| d.link_named(c));
+    let on = carrier.unwrap_or(ground);
+    if placed.frame(on).is_none() || placed.frame(link).is_some() {
+        return false;
+    }
+    let joints = &d.link(link).joints;
+    let shared = joints
+        .iter()
+        .copied()
+        .find(|&j| d.link(on).joints.contains(&j) && placed.joint(j));
+    let Some(pivot) = shared else {
+        return false;
+    };
+    let tip = next_joint(joints, pivot);
+    let carrier = carrier.and_then(|c| {
+        let listed = &d.link(c).joints;
+        Some(Carrier {
+            link: c,
+            frame: placed.frame(c)?,
+            listed: Frame {
+                origin: listed[0],
+                toward: listed[1],
+            },
+        })
+    });
+    let frame = Frame {
+        origin: pivot,
+        toward: tip,
+    };
+    steps.push(Step::Crank {
+        link,
+        frame,
+        input: k,
+        carrier,
+    });
+    placed.place(tip);
+    placed.set_frame(link, pivot, tip);
+    true
+}
+
+/// `true` when the drawing has the dyad's joint `c` clearly on one side of
+/// the line through its known joints `a`, `b` (the side that picks its
+/// assembly); else an error on `c` (a drawing at a dead centre, or with `c`
+/// on that line, does not say which).
+fn off_the_line(d: &Drawing, a: JointId, b: JointId, c: JointId, errors: &mut Diagnostics) -> bool {
+    let (pa, pb, pc) = (d.joint(a).at, d.joint(b).at, d.joint(c).at);
+    let scale = (pb.0 - pa.0).hypot(pb.1 - pa.1) * (pc.0 - pa.0).hypot(pc.1 - pa.1);
+    // 1e-9: a sine that small is a drawing on the line to its last digits.
+    if side(pa, pb, pc).abs() > 1e-9 * scale {
+        return true;
+    }
+    let (na, nb, nc) = (&d.joint(a).name, &d.joint(b).name, &d.joint(c).name);
+    errors.push(
+        nc.span(),
+        format!("the drawing has `{nc}` on the line through `{na}` and `{nb}`, which it is solved from (a dead centre), so it does not say on which side `{nc}` assembles: draw the mechanism at a pose where `{nc}` is off that line"),
+    );
+    false
+}
+
+/// The side of `c` from the line `a -> b` (twice the signed area of the
+/// triangle): positive on the left.
+pub(super) fn side(a: (f64, f64), b: (f64, f64), c: (f64, f64)) -> f64 {
+    (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0)
+}
+
+/// The joint after `j` in a link's list (wrapping): the one its axis points to.
+fn next_joint(list: &[JointId], j: JointId) -> JointId {
+    let k = list.iter().position(|&x| x == j).unwrap_or(0);
+    list[(k + 1) % list.len()]
+}
+
+/// Places, as points, the joints of placed links that are not yet placed.
+/// `true` when it placed one.
+fn place_points(d: &Drawing, placed: &mut Placed, steps: &mut Vec<Step>) -> bool {
+    let mut progress = false;
+    for link in d.link_ids() {
+        let Some(frame) = placed.frame(link) else {
+            continue;
+        };
+        for &joint in &d.link(link).joints {
+            if !placed.joint(joint) {
+                placed.place(joint);
+                steps.push(Step::Point { link, frame, joint });
+                progress = true;
+            }
+        }
+    }
+    progress
+}
+
+/// A dyad: an unplaced joint on exactly two unplaced links, each with a
+/// placed joint (two different ones).
+fn find_dyad(d: &Drawing, placed: &Placed, ground: LinkId) -> Option<Step> {
+    for c in (0..d.joints.len())
+        .map(JointId)
+        .filter(|&c| !placed.joint(c))
+    {
+        let on: Vec<LinkId> = d
+            .link_ids()
+            .filter(|&l| l != ground && placed.frame(l).is_none() && d.link(l).joints.contains(&c))
+            .collect();
+        let [la, lb] = on[..] else {
+            continue;
+        };
+        let known = |l: LinkId| d.link(l).joints.iter().copied().find(|&j| placed.joint(j));
+        if let (Some(a), Some(b)) = (known(la), known(lb)) {
+            if a != b {
+                return Some(Step::Rrr { a, la, b, lb, c });
+            }
+        }
+    }
+    None
+}
+
+/// A triad: an unplaced link with three unplaced joints, each on one other
+/// unplaced link, a binary leg whose other joint is placed, and no other
+/// joint on an unplaced link.
+fn find_triad(d: &Drawing, placed: &Placed, ground: LinkId) -> Option<Step> {
+    let free = |l: LinkId| l != ground && placed.frame(l).is_none();
+    for t in d
+        .link_ids()
+        .filter(|&t| free(t) && d.link(t).joints.len() >= 3)
+    {
+        if let Some([a, b, p]) = triad_legs(d, placed, t, &free) {
+            return Some(Step::Triad {
+                t,
+                joints: [a.0, b.0, p.0],
+                legs: [a.1, b.1, p.1],
+                known: [a.2, b.2, p.2],
+            });
+        }
+    }
+    None
+}
+
+/// The three legs of a triad on the ternary link `t`, each `(joint on t,
+/// leg, the leg's placed joint)`, or `None` when `t` is not such a link.
+fn triad_legs(
+    d: &Drawing,
+    placed: &Placed,
+    t: LinkId,
+    free: &dyn Fn(LinkId) -> bool,
+) -> Option<[(JointId, LinkId, JointId); 3]> {
+    let mut found = Vec::new();
+    for &j in &d.link(t).joints {
+        let others: Vec<LinkId> = d
+            .link_ids()
+            .filter(|&l| l != t && free(l) && d.link(l).joints.contains(&j))
+            .collect();
+        match others[..] {
+            [] => {}
+            [leg] if d.link(leg).joints.len() == 2 && !placed.joint(j) => {
+                let k = d.link(leg).joints.iter().copied().find(|&x| x != j)?;
+                if !placed.joint(k) {
+                    return None;
+                }
+                found.push((j, leg, k));
+            }
+            _ => return None,
+        }
+    }
+    found.try_into().ok()
+}

@@ -1,0 +1,216 @@
+//! Each decomposition step as the `let` statement a user would write: its
+//! lengths, offsets and angles as expressions of the joints' coordinates
+//! (the lowering folds them when literal, and computes them once per call
+//! from `params`), its assembly mode from the drawing, its spans on the
+//! user's names.
+
+use super::decompose::{side, Frame, Step};
+use super::{Drawing, Joint, JointId, LinkId};
+use crate::parse::{Arg, Let};
+use proc_macro2::TokenStream;
+use quote::{quote, quote_spanned};
+use syn::{Expr, Ident};
+
+/// The `let` statement of one step.
+pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
+    let j = |k: JointId| d.joint(k);
+    let l = |k: LinkId| &d.link(k).name;
+    let (defines, kind, args, links): (&Joint, &str, Vec<Arg>, Vec<Ident>) = match *step {
+        Step::Ground(k) => {
+            let (x, y) = (&j(k).x, &j(k).y);
+            (
+                j(k),
+                "ground",
+                vec![value(quote!(#x)), value(quote!(#y))],
+                vec![],
+            )
+        }
+        Step::Crank {
+            link,
+            frame,
+            input,
+            carrier,
+        } => {
+            let input = &d.input(input).name;
+            let (pivot, tip) = (j(frame.origin), j(frame.toward));
+            let mut args = vec![
+                name(pivot),
+                value(distance(pivot, tip)),
+                value(quote!(#input)),
+            ];
+            if let Some(c) = carrier {
+                args.push(name_arg(l(c.link)));
+                if c.frame != c.listed {
+                    args.push(value(turn(d, c.frame, c.listed)));
+                }
+            }
+            (tip, "crank", args, vec![l(link).clone()])
+        }
+        Step::Rrr { a, la, b, lb, c } => {
+            let (a, b, c) = (j(a), j(b), j(c));
+            let word = if side(a.at, b.at, c.at) > 0.0 {
+                "left"
+            } else {
+                "right"
+            };
+            let mode = Ident::new(word, c.name.span());
+            let args = vec![
+                name(a),
+                value(distance(a, c)),
+                name(b),
+                value(distance(b, c)),
+                name_arg(&mode),
+            ];
+            (c, "rrr", args, vec![l(la).clone(), l(lb).clone()])
+        }
+        Step::Triad { .. } => return triad(d, step),
+        Step::Point { link, frame, joint } => {
+            let (x, y) = local(j(frame.origin), j(frame.toward), j(joint));
+            let args = vec![
+                name_arg(l(link)),
+                Arg::From(j(frame.origin).name.clone()),
+                value(quote!((#x, #y))),
+            ];
+            (j(joint), "point", args, vec![])
+        }
+    };
+    let span = defines.name.span();
+    Let {
+        name: defines.name.clone(),
+        joints: Vec::new(),
+        kind: Ident::new(kind, span),
+        args,
+        args_span: span,
+        links,
+        slides: Vec::new(),
+    }
+}
+
+/// The triad's `let (A, B, P) = triad(..) as (LEG1, LEG2, LEG3, T)`: the
+/// legs' lengths, the side `|AB|` and `P` in the frame `A -> B` from the
+/// drawing; its assembly: the drawn joints at the drawn value of the input.
+fn triad(d: &Drawing, step: &Step) -> Let {
+    let Step::Triad {
+        t,
+        joints,
+        legs,
+        known,
+    } = *step
+    else {
+        unreachable!("triad() is called on a triad step");
+    };
+    let j = |k: JointId| d.joint(k);
+    let mut args = Vec::new();
+    for i in 0..3 {
+        args.push(name(j(known[i])));
+        args.push(value(distance(j(known[i]), j(joints[i]))));
+    }
+    let [a, b, p] = joints.map(j);
+    args.push(value(distance(a, b)));
+    let (x, y) = local(a, b, p);
+    args.push(value(quote!((#x, #y))));
+    let input = &d.inputs[0].name;
+    let at = drawn_input(d);
+    args.push(value(quote!(#input = #at)));
+    for k in joints {
+        let (x, y) = (&j(k).x, &j(k).y);
+        args.push(value(quote!((#x, #y))));
+    }
+    let span = a.name.span();
+    let links = legs.iter().chain([&t]).map(|&l| d.link(l).name.clone());
+    Let {
+        name: a.name.clone(),
+        joints: vec![b.name.clone(), p.name.clone()],
+        kind: Ident::new("triad", span),
+        args,
+        args_span: span,
+        links: links.collect(),
+        slides: Vec::new(),
+    }
+}
+
+/// The drawn value (rad) of the one input: the angle of its link's line
+/// (the pivot, its joint on what carries it, to the next joint listed) from
+/// +x, or from its carrier's first two joints as listed.
+fn drawn_input(d: &Drawing) -> TokenStream {
+    let input = &d.inputs[0];
+    let links = (
+        d.link_named(&input.link),
+        match &input.carrier {
+            Some(c) => d.link_named(c),
+            None => d.ground(),
+        },
+    );
+    let (Some(link), Some(on)) = links else {
+        unreachable!("the decomposition placed this input's link and carrier");
+    };
+    let (joints, carried_by) = (&d.link(link).joints, &d.link(on).joints);
+    let k = joints
+        .iter()
+        .position(|j| carried_by.contains(j))
+        .unwrap_or(0);
+    let line = Frame {
+        origin: joints[k],
+        toward: joints[(k + 1) % joints.len()],
+    };
+    match input.carrier {
+        None => {
+            let (p, t) = (d.joint(line.origin), d.joint(line.toward));
+            let (px, py, tx, ty) = (&p.x, &p.y, &t.x, &t.y);
+            quote!(atan2((#ty) - (#py), (#tx) - (#px)))
+        }
+        Some(_) => {
+            let listed = Frame {
+                origin: carried_by[0],
+                toward: carried_by[1],
+            };
+            turn(d, listed, line)
+        }
+    }
+}
+
+/// A generated expression as an argument.
+fn value(t: TokenStream) -> Arg {
+    Arg::Value(syn::parse2(t).expect("a generated expression parses"), None)
+}
+
+/// A joint's name as an argument.
+fn name(j: &Joint) -> Arg {
+    name_arg(&j.name)
+}
+
+/// A name as an argument.
+fn name_arg(i: &Ident) -> Arg {
+    Arg::Value(Expr::Path(syn::parse_quote!(#i)), None)
+}
+
+/// `hypot(xb - xa, yb - ya)`, spanned on `b`'s name.
+fn distance(a: &Joint, b: &Joint) -> TokenStream {
+    let (ax, ay, bx, by) = (&a.x, &a.y, &b.x, &b.y);
+    quote_spanned!(b.name.span()=> hypot((#bx) - (#ax), (#by) - (#ay)))
+}
+
+/// `j`'s coordinates in the frame at `from` whose axis points to `toward`:
+/// `(d . u, u x d) / |u|` with `d = j - from`, `u = toward - from`.
+fn local(from: &Joint, toward: &Joint, j: &Joint) -> (TokenStream, TokenStream) {
+    let (fx, fy, tx, ty, x, y) = (&from.x, &from.y, &toward.x, &toward.y, &j.x, &j.y);
+    let (ux, uy) = (quote!(((#tx) - (#fx))), quote!(((#ty) - (#fy))));
+    let (dx, dy) = (quote!(((#x) - (#fx))), quote!(((#y) - (#fy))));
+    let len = quote!(hypot(#ux, #uy));
+    (
+        quote_spanned!(j.name.span()=> (#dx * #ux + #dy * #uy) / #len),
+        quote_spanned!(j.name.span()=> (#ux * #dy - #uy * #dx) / #len),
+    )
+}
+
+/// The angle (rad, counter-clockwise) from the direction of frame `a` to
+/// that of frame `b`: `atan2(a x b, a . b)`.
+fn turn(d: &Drawing, a: Frame, b: Frame) -> TokenStream {
+    let v = |f: Frame| {
+        let (o, t) = (d.joint(f.origin), d.joint(f.toward));
+        let (ox, oy, tx, ty) = (&o.x, &o.y, &t.x, &t.y);
+        (quote!(((#tx) - (#ox))), quote!(((#ty) - (#oy))))
+    };
+    let ((ax, ay), (bx, by)) = (v(a), v(b));
+    quote!(atan2(#ax * #by - #ay * #bx, #ax * #bx + #ay * #by))
+}

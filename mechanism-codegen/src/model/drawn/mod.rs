@@ -1,0 +1,157 @@
+//! The drawn form of a definition: the joints where the drawing has them
+//! (the reference pose), the links as sets of joints (the fixed one named
+//! `ground`) and the inputs (a link's angle from the ground, or from the link
+//! that carries its motor). It is decomposed into the group statements
+//! (`ground`, `crank`, `rrr`, `triad`, `point`) a user would write by hand,
+//! in solve order, every length, offset and assembly mode read from the
+//! drawing; the rest of the macro sees only those statements.
+//!
+//! Stages, each looking only forward: [`read`] (the items into a
+//! [`Drawing`]), [`decompose`] (its structure and count of freedoms checked,
+//! then the solve order as [`decompose::Step`]s), [`emit`] (each step as the
+//! `let` statement a user would write).
+
+mod decompose;
+mod emit;
+mod read;
+
+use super::args::NumberScope;
+use super::Failed;
+use crate::diag::Diagnostics;
+use crate::parse::Item;
+use proc_macro2::Span;
+use syn::{Expr, Ident};
+
+/// The name of the fixed link.
+const GROUND: &str = "ground";
+
+/// A joint of the drawing, by its place in [`Drawing::joints`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct JointId(usize);
+
+/// A link of the drawing, by its place in [`Drawing::links`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct LinkId(usize);
+
+/// An input of the drawing, by its place in [`Drawing::inputs`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct InputId(usize);
+
+/// A joint of the drawing: its name, its coordinates as written and their
+/// values at the parameters' defaults (length units).
+struct Joint {
+    name: Ident,
+    x: Expr,
+    y: Expr,
+    at: (f64, f64),
+}
+
+/// A link of the drawing: its name and its joints, in the order written.
+struct Link {
+    name: Ident,
+    joints: Vec<JointId>,
+}
+
+/// An input of the drawing: `angle(link)` or `angle(link, carrier)`.
+struct Input {
+    name: Ident,
+    link: Ident,
+    carrier: Option<Ident>,
+}
+
+/// The drawing, read.
+struct Drawing {
+    joints: Vec<Joint>,
+    links: Vec<Link>,
+    inputs: Vec<Input>,
+    /// Where to point a message about the whole drawing (the `links` keyword).
+    span: Span,
+}
+
+impl Drawing {
+    fn joint(&self, j: JointId) -> &Joint {
+        &self.joints[j.0]
+    }
+
+    fn link(&self, l: LinkId) -> &Link {
+        &self.links[l.0]
+    }
+
+    fn input(&self, i: InputId) -> &Input {
+        &self.inputs[i.0]
+    }
+
+    fn link_ids(&self) -> impl Iterator<Item = LinkId> {
+        (0..self.links.len()).map(LinkId)
+    }
+
+    fn input_ids(&self) -> impl Iterator<Item = InputId> {
+        (0..self.inputs.len()).map(InputId)
+    }
+
+    /// The link named `name`.
+    fn link_named(&self, name: &Ident) -> Option<LinkId> {
+        self.links.iter().position(|l| &l.name == name).map(LinkId)
+    }
+
+    /// The fixed link.
+    fn ground(&self) -> Option<LinkId> {
+        self.links.iter().position(|l| l.name == GROUND).map(LinkId)
+    }
+}
+
+/// Replaces the drawn form's items (`joints`, `links`, `input`) by the group
+/// statements they decompose into, placed where the first of them stood;
+/// the other items are kept in order. Without a drawn item, `items` comes
+/// back as it was. When the drawing is rejected (errors reported), its
+/// names come back as failed statements, so that nothing else is blamed
+/// for them (a missing driver, an unknown link in a `mass`).
+pub(super) fn expand(
+    items: Vec<Item>,
+    scope: &NumberScope<'_>,
+    errors: &mut Diagnostics,
+) -> (Vec<Item>, Vec<Failed>) {
+    let drawn = |i: &Item| matches!(i, Item::Joints(..) | Item::Links(..) | Item::Input(..));
+    let Some(first) = items.iter().position(drawn) else {
+        return (items, Vec::new());
+    };
+    let (drawing_items, mut rest): (Vec<Item>, Vec<Item>) = items.into_iter().partition(drawn);
+    let before = errors.len();
+    let drawing = read::read(drawing_items, scope, errors);
+    let steps = if errors.len() > before {
+        None
+    } else {
+        decompose::decompose(&drawing, errors)
+    };
+    let Some(steps) = steps else {
+        return (rest, failed(&drawing));
+    };
+    let lets = steps
+        .iter()
+        .map(|s| Item::Let(emit::statement(&drawing, s)));
+    let at = first.min(rest.len());
+    rest.splice(at..at, lets);
+    (rest, Vec::new())
+}
+
+/// The drawing's names as failed statements: its joints, its links, its
+/// inputs (each a driver).
+fn failed(d: &Drawing) -> Vec<Failed> {
+    let none = |name: &Ident, kind: &str| Failed {
+        name: name.clone(),
+        kind: Ident::new(kind, d.span),
+        links: Vec::new(),
+        slides: Vec::new(),
+        input: None,
+    };
+    let mut out: Vec<Failed> = d.joints.iter().map(|j| none(&j.name, "joints")).collect();
+    out.extend(d.links.iter().map(|l| Failed {
+        links: vec![l.name.clone()],
+        ..none(&l.name, "links")
+    }));
+    out.extend(d.inputs.iter().map(|i| Failed {
+        input: Some(i.name.clone()),
+        ..none(&i.name, "crank")
+    }));
+    out
+}

@@ -1,0 +1,189 @@
+//! Reading the drawn items: each joint's coordinates (as written, and
+//! valued at the parameters' defaults), each link's joints, each input's
+//! link; malformed entries are reported on their tokens and left out.
+
+use super::{Drawing, Input, Joint, JointId, Link, GROUND};
+use crate::diag::{did_you_mean, Diagnostics};
+use crate::model::args::NumberScope;
+use crate::parse::{Assign, Item};
+use crate::value::convert;
+use proc_macro2::Span;
+use syn::{Expr, Ident};
+
+/// Reads the drawn items into a [`Drawing`], reporting malformed entries
+/// (left out of it).
+pub(super) fn read(items: Vec<Item>, scope: &NumberScope<'_>, errors: &mut Diagnostics) -> Drawing {
+    let mut drawing = Drawing {
+        joints: Vec::new(),
+        links: Vec::new(),
+        inputs: Vec::new(),
+        span: Span::call_site(),
+    };
+    let mut link_lists = Vec::new();
+    // Every joint written, drawn well or not (a malformed one is reported
+    // once, where it is drawn, not again in each link that lists it).
+    let mut all_joints = Vec::new();
+    for item in items {
+        match item {
+            Item::Joints(_, list) => {
+                all_joints.extend(list.iter().map(|a| a.name.to_string()));
+                for a in list {
+                    if let Some(j) = read_joint(a, scope, errors) {
+                        drawing.joints.push(j);
+                    }
+                }
+            }
+            Item::Links(span, list) => {
+                drawing.span = span;
+                link_lists.extend(list);
+            }
+            Item::Input(name, value) => {
+                if let Some(i) = read_input(name, &value, errors) {
+                    drawing.inputs.push(i);
+                }
+            }
+            _ => {}
+        }
+    }
+    for a in link_lists {
+        if let Some(l) = read_link(a, &drawing.joints, &all_joints, errors) {
+            drawing.links.push(l);
+        }
+    }
+    drawing
+}
+
+/// `NAME = (x, y)`: a joint at the reference pose.
+fn read_joint(a: Assign, scope: &NumberScope<'_>, errors: &mut Diagnostics) -> Option<Joint> {
+    let Expr::Tuple(t) = &a.value else {
+        errors.push(
+            a.name.span(),
+            format!("a joint is where the drawing has it, `{} = (x, y)`", a.name),
+        );
+        return None;
+    };
+    if t.elems.len() != 2 {
+        errors.push(
+            a.name.span(),
+            format!("a joint has two coordinates, `{} = (x, y)`", a.name),
+        );
+        return None;
+    }
+    let (x, y) = (t.elems[0].clone(), t.elems[1].clone());
+    let defaults = |p: &Ident| scope.params.iter().find(|(n, _)| n == p).map(|(_, v)| *v);
+    let mut at = [0.0; 2];
+    for (k, e) in [&x, &y].into_iter().enumerate() {
+        match convert(e, scope) {
+            Ok(v) => at[k] = v.eval_with(&defaults)?,
+            Err(e) => {
+                errors.error(e);
+                return None;
+            }
+        }
+    }
+    Some(Joint {
+        name: a.name,
+        x,
+        y,
+        at: (at[0], at[1]),
+    })
+}
+
+/// `NAME = [J1, J2, ..]`: a link and its joints. `joints`: the joints
+/// drawn; `written`: every joint name written (a malformed joint is
+/// reported where it is drawn, and the link is left out silently).
+fn read_link(
+    a: Assign,
+    joints: &[Joint],
+    written: &[String],
+    errors: &mut Diagnostics,
+) -> Option<Link> {
+    let usage = format!("a link is the list of its joints, `{} = [A, B]`", a.name);
+    let Expr::Array(list) = &a.value else {
+        errors.push(a.name.span(), usage);
+        return None;
+    };
+    let mut out = Vec::new();
+    for e in &list.elems {
+        let Expr::Path(p) = e else {
+            errors.error(syn::Error::new_spanned(e, &usage));
+            return None;
+        };
+        let Some(name) = p.path.get_ident() else {
+            errors.error(syn::Error::new_spanned(e, &usage));
+            return None;
+        };
+        let s = name.to_string();
+        if written.contains(&s) && !joints.iter().any(|j| &j.name == name) {
+            return None;
+        }
+        if !written.contains(&s) {
+            errors.push(
+                name.span(),
+                format!(
+                    "no joint named `{s}` is drawn: add it to `joints {{ .. }}`, `{s} = (x, y)`{}",
+                    did_you_mean(&s, written.iter().map(String::as_str))
+                ),
+            );
+            return None;
+        }
+        let id = JointId(joints.iter().position(|j| &j.name == name)?);
+        if out.contains(&id) {
+            errors.push(
+                name.span(),
+                format!("`{s}` is listed twice in link `{}`", a.name),
+            );
+            return None;
+        }
+        out.push(id);
+    }
+    let least = if a.name == GROUND { 1 } else { 2 };
+    if out.len() < least {
+        errors.push(
+            a.name.span(),
+            format!(
+                "link `{}` has {} joint(s); a moving link joins at least two",
+                a.name,
+                out.len()
+            ),
+        );
+        return None;
+    }
+    Some(Link {
+        name: a.name,
+        joints: out,
+    })
+}
+
+/// `angle(LINK)` or `angle(LINK, CARRIER)`.
+fn read_input(name: Ident, value: &Expr, errors: &mut Diagnostics) -> Option<Input> {
+    let usage = format!(
+        "an input is a link's angle: `input {name} = angle(crank);` (from the ground) or `input {name} = angle(shank, thigh);` (from the link carrying its motor)"
+    );
+    let ident = |e: &Expr| match e {
+        Expr::Path(p) => p.path.get_ident().cloned(),
+        _ => None,
+    };
+    let Expr::Call(call) = value else {
+        errors.error(syn::Error::new_spanned(value, usage));
+        return None;
+    };
+    let word = ident(&call.func).map(|i| i.to_string());
+    let args: Vec<Option<Ident>> = call.args.iter().map(ident).collect();
+    match (word.as_deref(), args.as_slice()) {
+        (Some("angle"), [Some(link)]) => Some(Input {
+            name,
+            link: link.clone(),
+            carrier: None,
+        }),
+        (Some("angle"), [Some(link), Some(carrier)]) => Some(Input {
+            name,
+            link: link.clone(),
+            carrier: (carrier != GROUND).then(|| carrier.clone()),
+        }),
+        _ => {
+            errors.error(syn::Error::new_spanned(value, usage));
+            None
+        }
+    }
+}

@@ -1,0 +1,229 @@
+//! The drawn form (joints at a reference pose, links as joint sets, inputs):
+//! each drawn definition here against the same mechanism written with group
+//! statements, its lengths and offsets computed from the same coordinates in
+//! the test, over the input range.
+
+use mechanism::mechanism;
+
+mechanism! {
+    /// A crank-rocker four-bar with a coupler point, as drawn.
+    pub DrawnFourBar {
+        joints {
+            O2 = (0.0, 0.0),
+            O4 = (4.0, 0.0),
+            A = (0.5, 0.8660254037844386),
+            B = (3.2, 2.1),
+            P = (2.0, 2.9),
+        }
+        links {
+            ground = [O2, O4],
+            crank = [O2, A],
+            coupler = [A, B, P],
+            rocker = [O4, B],
+        }
+        input theta = angle(crank);
+    }
+}
+
+mechanism! {
+    /// The same four-bar written as groups.
+    pub GroupedFourBar {
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(4.0, 0.0);
+        let A = crank(O2, hypot(0.5, 0.8660254037844386), theta) as crank;
+        const ux = 3.2 - 0.5;
+        const uy = 2.1 - 0.8660254037844386;
+        const dx = 2.0 - 0.5;
+        const dy = 2.9 - 0.8660254037844386;
+        let B = rrr(A, hypot(ux, uy), O4, hypot(3.2 - 4.0, 2.1), left) as (coupler, rocker);
+        let P = point(coupler, from A, ((dx * ux + dy * uy) / hypot(ux, uy), (ux * dy - uy * dx) / hypot(ux, uy)));
+    }
+}
+
+#[test]
+fn a_drawn_four_bar_is_the_grouped_one() {
+    // Proves: the drawn four-bar decomposes into the crank and RRR a user
+    // would write, with the lengths and the assembly of the drawing: both
+    // forms give the same joints over a full turn.
+    let (d, g) = (
+        DrawnFourBar::<f64>::default(),
+        GroupedFourBar::<f64>::default(),
+    );
+    for k in 0..360 {
+        let theta = (k as f64).to_radians();
+        let pd = d.position(&DrawnFourBarInput { theta }).unwrap();
+        let pg = g.position(&GroupedFourBarInput { theta }).unwrap();
+        assert!(
+            (pd.B - pg.B).norm() <= 4.0 * f64::EPSILON * 4.0,
+            "{k}: {} {}",
+            pd.B,
+            pg.B
+        );
+        assert!((pd.A - pg.A).norm() <= 4.0 * f64::EPSILON, "{k}");
+        assert!(
+            (pd.P - pg.P).norm() <= 16.0 * f64::EPSILON,
+            "{k}: {} {}",
+            pd.P,
+            pg.P
+        );
+    }
+    // At the drawn input the joints are where they are drawn.
+    let at = d
+        .position(&DrawnFourBarInput {
+            theta: 60f64.to_radians(),
+        })
+        .unwrap();
+    assert!(
+        (at.B - mechanism::Point2::new(3.2, 2.1)).norm() < 1e-14,
+        "{}",
+        at.B
+    );
+    assert!(
+        (at.P - mechanism::Point2::new(2.0, 2.9)).norm() < 1e-14,
+        "{}",
+        at.P
+    );
+}
+
+mechanism! {
+    /// The Stephenson III six-bar of `examples/stephenson.rs`, drawn at
+    /// phi = -28.402242220599071 deg (its joints from the example's table):
+    /// the triad and its assembly are found from the drawing.
+    pub DrawnStephenson {
+        const phi0 = -28.402242220599071 * pi / 180.0;
+        joints {
+            O2 = (0.0, 0.0),
+            O4 = (0.30, 0.0),
+            O6 = (0.05, 0.42),
+            C = (0.05 + 0.24 * cos(phi0), 0.42 + 0.24 * sin(phi0)),
+            A = (-5.9201362974731851e-2, 5.3807049927811955e-2),
+            B = (1.7859606664268302e-1, 1.5893736176674175e-1),
+            P = (6.9064856947974249e-3, 1.8845381871298039e-1),
+        }
+        links {
+            ground = [O2, O4, O6],
+            link6 = [O6, C],
+            crank2 = [O2, A],
+            rocker = [O4, B],
+            link5 = [C, P],
+            coupler = [A, B, P],
+        }
+        input phi = angle(link6);
+        range phi = (-50.43 deg, -2.64 deg);
+    }
+}
+
+#[path = "../../examples/common/stephenson.rs"]
+mod stephenson;
+
+#[test]
+fn a_drawn_stephenson_is_the_example_with_its_triad() {
+    // Proves: a drawing whose only decomposition is a triad becomes the
+    // triad statement, in the drawn assembly: over link 6's swing its joints
+    // agree with the example's (written with lengths, not coordinates) to
+    // the rounding of the 17-digit drawing times the conditioning.
+    let d = DrawnStephenson::<f64>::default();
+    let g = stephenson::Stephenson::<f64>::default();
+    for k in 0..=100 {
+        let phi = (-50.43 + (50.43 - 2.64) * k as f64 / 100.0).to_radians();
+        let pd = d.position(&DrawnStephensonInput { phi }).unwrap();
+        let pg = g.position(&stephenson::StephensonInput { phi }).unwrap();
+        for (x, y, what) in [(pd.A, pg.A, "A"), (pd.B, pg.B, "B"), (pd.P, pg.P, "P")] {
+            assert!((x - y).norm() < 1e-12, "{what} at {k}: {x} vs {y}");
+        }
+    }
+}
+
+mechanism! {
+    /// The 2R leg of `relative_drivers::Leg` drawn with its knee bent, the
+    /// hip and knee motors as inputs (the knee's angle from the thigh), its
+    /// masses and load written as for the grouped form.
+    pub DrawnLeg {
+        dof 2;
+        joints { H = (0.0, 0.0), K = (0.4, 0.0), F = (0.4, 0.35) }
+        links { ground = [H], thigh = [H, K], shank = [K, F] }
+        input q1 = angle(thigh);
+        input q2 = angle(shank, thigh);
+        let G1 = point(thigh, from H, 0.17, 4 deg);
+        let G2 = point(shank, from K, 0.15, -6 deg);
+        mass thigh { m = 7.0, at = G1, j = 0.11 };
+        mass shank { m = 3.2, at = G2, j = 0.045 };
+        gravity (0.0, -9.81);
+        force at F = (30.0, 250.0);
+    }
+}
+
+mechanism! {
+    /// The same leg with the thigh's joints listed knee first: the knee's
+    /// angle is then measured from the line K -> H, half a turn from H -> K.
+    pub DrawnLegReversed {
+        joints { H = (0.0, 0.0), K = (0.4, 0.0), F = (0.4, 0.35) }
+        links { ground = [H], thigh = [K, H], shank = [K, F] }
+        input q1 = angle(thigh);
+        input q2 = angle(shank, thigh);
+    }
+}
+
+#[test]
+fn a_drawn_leg_with_a_knee_motor_is_the_grouped_leg() {
+    // Proves: a relative input in the drawn form becomes a crank carried by
+    // the named link, measured from that link's first two joints as listed,
+    // and masses and loads written beside a drawing act as on the grouped
+    // form: same foot, rates and motor torques over a grid of both angles.
+    use crate::relative_drivers::{Leg, LegInput};
+    let (d, g) = (DrawnLeg::<f64>::default(), Leg::<f64>::default());
+    let r = DrawnLegReversed::<f64>::default();
+    for i in 0..24 {
+        for k in 0..24 {
+            let (q1, q2) = (
+                (15.0 * i as f64 - 170.0).to_radians(),
+                (15.0 * k as f64 - 175.0).to_radians(),
+            );
+            let (w, al) = ((2.5, -4.0), (-30.0, 45.0));
+            let sd = d
+                .solve(
+                    &DrawnLegInput { q1, q2 },
+                    &DrawnLegInput { q1: w.0, q2: w.1 },
+                    &DrawnLegInput { q1: al.0, q2: al.1 },
+                )
+                .unwrap();
+            let sg = g
+                .solve(
+                    &LegInput { q1, q2 },
+                    &LegInput { q1: w.0, q2: w.1 },
+                    &LegInput { q1: al.0, q2: al.1 },
+                )
+                .unwrap();
+            let tol = 8.0 * f64::EPSILON;
+            assert!((sd.position.F - sg.position.F).norm() <= tol, "{i} {k}");
+            assert!(
+                (sd.velocity.F - sg.velocity.F).norm() <= 8.0 * tol,
+                "{i} {k}"
+            );
+            let scale = sg.forces.drive_q1.abs().max(100.0);
+            assert!(
+                (sd.forces.drive_q1 - sg.forces.drive_q1).abs() <= tol * scale,
+                "{i} {k}"
+            );
+            assert!(
+                (sd.forces.drive_q2 - sg.forces.drive_q2).abs() <= tol * scale,
+                "{i} {k}"
+            );
+            // Listed knee first, the thigh's listed line is K -> H: q2 is
+            // measured from it, half a turn from H -> K; q1 is still the
+            // angle of the line from the thigh's ground joint H to K.
+            let pr = r
+                .position(&DrawnLegReversedInput {
+                    q1,
+                    q2: q2 - std::f64::consts::PI,
+                })
+                .unwrap();
+            assert!(
+                (pr.F - sg.position.F).norm() <= tol,
+                "reversed {i} {k}: {} {}",
+                pr.F,
+                sg.position.F
+            );
+        }
+    }
+}

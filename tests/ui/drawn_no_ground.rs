@@ -1,0 +1,12 @@
+// Error: no link is named `ground`, so nothing is fixed.
+use mechanism::mechanism;
+
+mechanism! {
+    pub FourBar {
+        joints { O2 = (0.0, 0.0), O4 = (4.0, 0.0), A = (0.5, 0.9), B = (3.2, 2.1) }
+        links { frame = [O2, O4], crank = [O2, A], coupler = [A, B], rocker = [O4, B] }
+        input theta = angle(crank);
+    }
+}
+
+fn main() {}
