@@ -9,7 +9,6 @@ use crate::diag::{did_you_mean, Diagnostics};
 use crate::kinds;
 use crate::model::{ForceSpec, ForceSpecValue, Level, MassSpec, Model};
 use crate::plan::{references, Plan};
-use std::collections::BTreeMap;
 use syn::Ident;
 
 /// Rule (with a force analysis): no group or driver is joined to an
@@ -76,36 +75,22 @@ pub(super) fn gravity_has_masses(model: &Model, errors: &mut Diagnostics) {
     }
 }
 
-/// Rule: a mass sits on a link that can carry loads, one `mass` per link,
-/// at a point of that link.
+/// Rule: a mass sits on a link that can carry loads, at a point of that
+/// link. A link may have several `mass` statements: each is a part of the
+/// link with its own centre and moment of inertia about it (`emit::forces`
+/// applies each part's loads at its own point).
 pub(super) fn masses_on_their_links(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
-    let mut with_mass: BTreeMap<String, Ident> = BTreeMap::new();
     for m in &model.kinetics.masses {
-        mass_on_its_link(model, plan, m, &mut with_mass, errors);
+        mass_on_its_link(model, plan, m, errors);
     }
 }
 
-/// [`masses_on_their_links`] for the mass `m`; `with_mass`: the links with a
-/// mass so far.
-fn mass_on_its_link(
-    model: &Model,
-    plan: &Plan,
-    m: &MassSpec,
-    with_mass: &mut BTreeMap<String, Ident>,
-    errors: &mut Diagnostics,
-) {
+/// [`masses_on_their_links`] for the mass `m`.
+fn mass_on_its_link(model: &Model, plan: &Plan, m: &MassSpec, errors: &mut Diagnostics) {
     if !loadable_link(model, plan, &m.link, "a mass", errors) {
         return;
     }
     let link = m.link.to_string();
-    if with_mass.contains_key(&link) {
-        errors.push(
-            m.link.span(),
-            format!("`{link}` already has a mass (its first `mass` statement comes earlier); give each link one `mass` statement: merge the two"),
-        );
-        return;
-    }
-    with_mass.insert(link.clone(), m.link.clone());
     let points = &plan.links[&link].points;
     let at = m.at.to_string();
     if !plan.owner.contains_key(&at) {
