@@ -12,7 +12,9 @@ use crate::plan::{references, Plan};
 use syn::Ident;
 
 /// Rule (with a force analysis): no group or driver is joined to an
-/// actuator's cylinder (at a point of it or on a guide it carries). The force
+/// actuator's massless cylinder (at a point of it or on a guide it carries;
+/// a barrel and a rod, `as (ARM, BARREL, ROD)`, carry what is joined to
+/// them like any link). The force
 /// analysis treats the cylinder as a massless two-force member (its force
 /// along its axis is the drive) and solves no equations for it, so a
 /// reaction passed to it would be lost and every effort behind it wrong; the
@@ -38,7 +40,7 @@ pub(super) fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Dia
                 errors.push(
                     r.span(),
                     format!(
-                        "`{name}` is {what} the actuator's cylinder `{body}`, which the force analysis takes as a massless two-force member (it carries only its axial force): `{}` cannot be joined to it there; join it to the link the actuator drives or to the ground, or leave out the force analysis (no `mass`, `force`, `torque`)",
+                        "`{name}` is {what} the actuator's cylinder `{body}`, which the force analysis takes as a massless two-force member (it carries only its axial force): `{}` cannot be joined to it there; join it to the link the actuator drives or to the ground, or make the cylinder a barrel and a rod by naming three links, `as (ARM, BARREL, ROD)`",
                         stmt.name
                     ),
                 );
@@ -178,7 +180,7 @@ fn force_at_a_point_of_its_link(
                 ),
                 1 => {
                     if is_cylinder(model, &links[0]) {
-                        errors.push(f.at.span(), format!("`{at}` is on an actuator's cylinder only, a massless two-force member here"));
+                        errors.push(f.at.span(), format!("`{at}` is on an actuator's cylinder only, a massless two-force member here; to load the cylinder, name its barrel and rod, `as (ARM, BARREL, ROD)`, and define the point on one of them"));
                     }
                 }
                 _ => errors.push(
@@ -286,7 +288,7 @@ fn loadable_link(
     if is_cylinder(model, &name) {
         errors.push(
             link.span(),
-            format!("`{name}` is an actuator's cylinder, a massless two-force member here; put the load on the link it drives"),
+            format!("`{name}` is an actuator's cylinder, a massless two-force member here; put the load on the link it drives, or give the actuator a third name to make its cylinder a barrel (pivoted at its base) and a rod (pinned at its joint) that carry loads: `as (ARM, BARREL, ROD)`"),
         );
         return false;
     }
