@@ -485,6 +485,30 @@ mod tests {
         assert!(with.contains("dot(&pw_weight_link3,&vel.vel_P)"), "{with}");
     }
 
+    // Proves several masses on one link get numbered locals (one inertia
+    // force and weight per part) and a single inertia couple whose literal
+    // `j`s are folded into one number (0.03 + 0.01), with one power term.
+    #[test]
+    fn parts_of_a_link_get_numbered_loads_and_one_folded_couple() {
+        let code = flat(
+            &forces(
+                "mass link3 { m = 2.0, at = P, j = 0.03 }; mass link3 { m = 1.0, at = B, j = 0.01 }; gravity (0.0, -9.81);",
+            )
+            .methods,
+        );
+        for local in [
+            "letpw_inertia_force_link3_1=acc.acc_P*",
+            "letpw_inertia_force_link3_2=acc.acc_B*",
+            "letpw_weight_link3_1=",
+            "letpw_weight_link3_2=",
+        ] {
+            assert!(code.contains(local), "{local} in {code}");
+        }
+        let couples = code.matches("letpw_inertia_couple_link3=").count();
+        assert_eq!(couples, 1, "{code}");
+        assert!(code.contains("letpw_inertia_couple_link3=-((<Tas::mechanism::Real>::lit(0.04f64))*acc.alpha_link3);"), "{code}");
+    }
+
     // Proves the `loads` block gives the `NameLoads` struct and the extra
     // parameter of `forces` and `solve`, and its absence neither.
     #[test]
