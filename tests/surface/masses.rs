@@ -104,7 +104,7 @@ mechanism! {
 /// [`LiteralParts`], written out to 17 digits (computed exactly in rational
 /// arithmetic; [`literal_merge_matches_the_parts`] recomputes them).
 const G_MERGED: (f64, f64) = (0.13357142857142856, 0.019285714285714285);
-const J_MERGED: f64 = 0.064107142857142863;
+const J_MERGED: f64 = 0.06410714285714286;
 
 mechanism! {
     /// [`LiteralParts`] merged by hand: `M = 7`, the centre and `J_G` above.
@@ -115,7 +115,7 @@ mechanism! {
         let A = crank(O2, 0.1016, theta) as crank;
         let B = rrr(A, 0.254, O4, 0.1778, left) as (coupler, rocker);
         let Gc = point(coupler, from A, (0.13357142857142856, 0.019285714285714285));
-        mass coupler { m = 7.0, at = Gc, j = 0.064107142857142863 };
+        mass coupler { m = 7.0, at = Gc, j = 0.06410714285714286 };
         gravity (0.0, -9.81);
         force at B on rocker = (-20.0, 5.0);
     }

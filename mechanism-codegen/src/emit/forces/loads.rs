@@ -7,7 +7,7 @@
 use super::ForceEmitter;
 use crate::emit::tag;
 use crate::kinds::{self, forces::ForceCx};
-use crate::model::{ForceSpec, ForceSpecValue, MassSpec, Stmt, TorqueSpec};
+use crate::model::{ForceSpec, ForceSpecValue, Kind, Local, MassSpec, Model, Stmt, TorqueSpec};
 use crate::value::Value;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -274,4 +274,84 @@ enum Quantity {
 fn primitive(stmt: &Stmt) -> TokenStream {
     let name = format_ident!("{}", kinds::of(stmt).primitive());
     quote!(::mechanism::Primitive::#name)
+}
+
+/// The doc comment's sentence on the links with several masses: each such
+/// link's combined mass `M = sum m_k`, centre `G = sum m_k p_k / M` (from
+/// the parts' common base point, in the link's frame: along its axis and
+/// its left normal) and `J_G = sum (j_k + m_k |p_k - G|^2)`, folded at
+/// expansion when every part's `m` and `j` is literal and its centre is the
+/// base point or a `point(LINK, from BASE, ..)` with literal offsets, the same
+/// base for every part; else the parts' count alone. Empty when every link
+/// has at most one mass (their expansions are unchanged).
+pub(super) fn parts_doc(model: &Model) -> String {
+    let mut out = String::new();
+    for (link, parts) in masses_by_link(&model.kinetics.masses) {
+        if parts.len() < 2 {
+            continue;
+        }
+        out.push_str(&format!(" `{link}` carries {} masses", parts.len()));
+        match combined(model, &link, &parts) {
+            Some((m, base, g, j)) => out.push_str(&format!(
+                ", combined: mass {m}, centre ({}, {}) from `{base}` in `{link}`'s frame (along its axis, along its left normal), moment of inertia {j} about it.",
+                g.x, g.y
+            )),
+            None => out.push('.'),
+        }
+    }
+    if out.is_empty() {
+        return out;
+    }
+    format!(" Several masses on one link are parts of it, each loading it at its own centre:{out}")
+}
+
+/// [`parts_doc`]'s folded merge of the parts of `link`: mass, base point,
+/// centre from it in the link's frame, moment of inertia about the centre.
+fn combined(
+    model: &Model,
+    link: &str,
+    parts: &[&MassSpec],
+) -> Option<(f64, String, mechanism_core::Vector2<f64>, f64)> {
+    use mechanism_core::Vector2;
+    let mut base: Option<String> = None;
+    let mut located = Vec::new();
+    for m in parts {
+        let mass = m.mass.fold()?;
+        let j = match &m.inertia {
+            Some(j) => j.fold()?,
+            None => 0.0,
+        };
+        let at = m.at.to_string();
+        let point = model
+            .stmts
+            .iter()
+            .find(|s| s.name == at)
+            .and_then(|s| match &s.kind {
+                Kind::Point {
+                    link: l,
+                    from,
+                    local,
+                } if *l == link => Some((from.to_string(), local)),
+                _ => None,
+            });
+        let (from, offset) = match point {
+            Some((from, Local::Cartesian(x, y))) => (from, Vector2::new(x.fold()?, y.fold()?)),
+            Some((from, Local::Polar(d, a))) => {
+                let (d, a) = (d.fold()?, a.fold()?);
+                (from, Vector2::new(d * a.cos(), d * a.sin()))
+            }
+            None => (at, Vector2::zeros()),
+        };
+        if base.get_or_insert_with(|| from.clone()) != &from {
+            return None;
+        }
+        located.push((mass, j, offset));
+    }
+    let total: f64 = located.iter().map(|p| p.0).sum();
+    let g = located.iter().map(|p| p.2 * p.0).sum::<Vector2<f64>>() / total;
+    let j = located
+        .iter()
+        .map(|p| p.1 + p.0 * (p.2 - g).norm_squared())
+        .sum();
+    Some((total, base?, g, j))
 }
