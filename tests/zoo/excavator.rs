@@ -334,3 +334,75 @@ fn loads_and_a_group_on_the_cylinder_balance_every_body() {
     }
     assert!(checked >= 40, "only {checked} poses checked");
 }
+
+// Proves the description lists the barrel and the rod as cylinder links
+// with their own points (the barrel from B, the rod from C) and every mass
+// part, the boom's two included.
+#[test]
+fn structure_lists_barrel_and_rod() {
+    use mechanism::structure::{Describe, LinkKind};
+    let s = Excavator::<f64>::STRUCTURE;
+    let links: Vec<(&str, LinkKind, &[&str])> =
+        s.links.iter().map(|l| (l.name, l.kind, l.points)).collect();
+    assert_eq!(
+        links,
+        [
+            ("boom", LinkKind::Bar, &["A", "C", "Gb", "Tip"][..]),
+            ("barrel", LinkKind::Cylinder, &["B", "G1"][..]),
+            ("rod", LinkKind::Cylinder, &["C", "G2"][..]),
+        ]
+    );
+    let masses: Vec<(&str, &str)> = s.masses.iter().map(|m| (m.link, m.at)).collect();
+    assert_eq!(
+        masses,
+        [
+            ("boom", "Gb"),
+            ("boom", "Tip"),
+            ("barrel", "G1"),
+            ("rod", "G2")
+        ]
+    );
+}
+
+// Proves the cylinder with mass runs in f32: every force within `F32_CLOSE`
+// of the f64 one, relative to the pose's largest force. f32's eps is 1.2e-7;
+// the positions, rates and loads each carry a few eps of their scale, and
+// the solves amplify that by at most 1 / condition (20 here): 20 eps is
+// 2.4e-6, taken as the bound; the largest measured, printed, is 3.7e-7.
+#[test]
+fn f32_agrees_with_f64() {
+    const F32_CLOSE: f64 = 2.5e-6;
+    let single = Excavator::<f32>::default();
+    let mut worst = 0.0f64;
+    for k in 0..12 {
+        let len = 1.95 + 0.09 * k as f64;
+        let double = solve(len, 0.3, -0.4);
+        if double.forces.condition < 0.05 {
+            continue;
+        }
+        let s = single
+            .solve(
+                &ExcavatorInput { len: len as f32 },
+                &ExcavatorInput { len: 0.3 },
+                &ExcavatorInput { len: -0.4 },
+            )
+            .unwrap();
+        let f = &s.forces;
+        let ours = SVector::<f64, 9>::from_column_slice(&[
+            f.r_ground_boom.x as f64,
+            f.r_ground_boom.y as f64,
+            f.r_boom_rod.x as f64,
+            f.r_boom_rod.y as f64,
+            f.r_ground_barrel.x as f64,
+            f.r_ground_barrel.y as f64,
+            f.r_barrel_rod.normal as f64,
+            f.r_barrel_rod.moment as f64,
+            f.drive_len as f64,
+        ]);
+        let reference = generated(&double.forces);
+        let d = (ours - reference).amax() / reference.amax();
+        worst = worst.max(d);
+        assert!(d <= F32_CLOSE, "len {len}: {d:e}");
+    }
+    println!("f32 vs f64: largest difference {worst:e} of the largest force");
+}
