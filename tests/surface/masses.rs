@@ -325,5 +325,5 @@ fn a_negative_params_part_is_an_error() {
         .acceleration(&s, &v, &PartsInput { theta: 0.0 })
         .unwrap();
     let e = parts.forces(&s, &v, &a).unwrap_err();
-    assert!(format!("{e}").contains("mass of `coupler`"), "{e}");
+    assert!(format!("{e}").contains("mass of `coupler` (part 3)"), "{e}");
 }

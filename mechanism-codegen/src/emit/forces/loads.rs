@@ -232,12 +232,12 @@ impl ForceEmitter<'_> {
             Quantity::Mass => (
                 format_ident!("pw_m_{}", part),
                 quote!(positive),
-                format!("mass of `{link}`"),
+                format!("mass of `{link}`{}", part_text(link, part)),
             ),
             Quantity::Inertia => (
                 format_ident!("pw_j_{}", part),
                 quote!(non_negative),
-                format!("moment of inertia of `{link}`"),
+                format!("moment of inertia of `{link}`{}", part_text(link, part)),
             ),
         };
         self.code.extend(quote!(
@@ -259,6 +259,15 @@ pub(super) fn masses_by_link(masses: &[MassSpec]) -> Vec<(String, Vec<&MassSpec>
         }
     }
     out
+}
+
+/// ` (part k)` for the local `part` = `LINK_k` of a link's part, empty for
+/// a link's only mass (`part` = `LINK`).
+fn part_text(link: &str, part: &str) -> String {
+    match part.strip_prefix(link).and_then(|k| k.strip_prefix('_')) {
+        Some(k) => format!(" (part {k})"),
+        None => String::new(),
+    }
 }
 
 /// What [`ForceEmitter::checked`] checks.
