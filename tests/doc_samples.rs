@@ -384,6 +384,58 @@ mod dsl_press {
     }
 }
 
+/// docs/dsl.md, the cylinder with mass (and two masses on the boom).
+mod dsl_excavator {
+    use mechanism::mechanism;
+
+    mechanism! {
+        /// Boom (m, kg, N), lifted by a cylinder from the ground point B.
+        pub Excavator {
+            let A = ground(0.0, 0.0);
+            let B = ground(0.8, -0.9);
+            let C = actuator(A, 2.2, B, len, left) as (boom, barrel, rod);
+            let Gb = point(boom, from A, 2.5, 8 deg);
+            let Tip = point(boom, from A, 5.0, 0 deg);
+            let G1 = point(barrel, from B, 0.6, 0 deg);   // 0.6 from B towards C
+            let G2 = point(rod, from C, 0.5, 180 deg);    // 0.5 from C towards B
+            mass boom { m = 1800.0, at = Gb, j = 4500.0 };
+            mass boom { m = 600.0, at = Tip };            // the payload: a second part
+            mass barrel { m = 220.0, at = G1, j = 30.0 };
+            mass rod { m = 140.0, at = G2, j = 18.0 };
+            gravity (0.0, -9.81);
+            range len = (1.9, 3.0);
+        }
+    }
+    // f.r_ground_boom, f.r_boom_rod, f.r_ground_barrel (N), f.r_barrel_rod.normal (N),
+    // f.r_barrel_rod.moment (N m), f.drive_len (N, positive pushing)
+
+    // Proves the sample's axial force at rest is the virtual-work one (the
+    // weights' power at a unit rate of `len`, every part and the cylinder's
+    // included), that it pushes (holds the boom up), and that the ground's
+    // forces at A and B carry the whole weight.
+    #[test]
+    fn excavator_static_axial_force_by_virtual_work() {
+        let m = Excavator::<f64>::default();
+        let pos = m.position(&ExcavatorInput { len: 2.4 }).unwrap();
+        let unit = m.velocity(&pos, &ExcavatorInput { len: 1.0 }).unwrap();
+        let g = -9.81;
+        let weights_power =
+            g * (1800.0 * unit.Gb.y + 600.0 * unit.Tip.y + 220.0 * unit.G1.y + 140.0 * unit.G2.y);
+        let vel = m.velocity(&pos, &ExcavatorInput { len: 0.0 }).unwrap();
+        let acc = m
+            .acceleration(&pos, &vel, &ExcavatorInput { len: 0.0 })
+            .unwrap();
+        let f = m.forces(&pos, &vel, &acc).unwrap();
+        // 1e-13 relative: a sum of four products against a few solves of
+        // 3 x 3 systems, each a few eps times the lever ratios (under 10).
+        assert!((f.drive_len + weights_power).abs() <= 1e-13 * weights_power.abs());
+        assert!(f.drive_len > 0.0);
+        let ground = f.r_ground_boom + f.r_ground_barrel;
+        assert!((ground.y + g * 2760.0).abs() <= 1e-13 * 2760.0 * 9.81 && ground.x.abs() <= 1e-9);
+        let _ = (f.r_boom_rod, f.r_barrel_rod.normal, f.r_barrel_rod.moment);
+    }
+}
+
 /// docs/checks.md: a rocking crank with a declared range.
 mod checks_rocker {
     use mechanism::mechanism;

@@ -645,12 +645,6 @@ fn cases() -> Vec<Case> {
             at: "at = B, ^m = 2.0",
             says: &["`m`", "twice"],
         },
-        Case {
-            name: "mass twice on one link",
-            src: loaded("    mass link3 { m = 1.0, at = A };"),
-            at: "mass ^link3 { m = 1.0",
-            says: &["`link3`", "already has a mass"],
-        },
         // ---- names and categories ----
         Case {
             name: "empty definition",

@@ -11,6 +11,7 @@
 //!   the limits, the ranges the expansion-time check suggests);
 //! - [`forces`]: the force analysis on loaded definitions the zoo does not have;
 //! - [`functions`]: functions in dimensions (`sqrt`, `hypot`, ...);
+//! - [`masses`]: several masses on one link against the hand-merged body;
 //! - [`relative_drivers`]: a crank carried by a moving link and a slider on
 //!   a carried guide, against Newton-Euler worked by hand;
 //! - [`describe`]: a mechanism's description of itself (`mechanism::structure`)
@@ -32,6 +33,7 @@ mod drawn;
 mod dsl;
 mod forces;
 mod functions;
+mod masses;
 mod relative_drivers;
 mod self_test_scales;
 mod statement_kinds;

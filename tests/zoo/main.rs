@@ -94,6 +94,7 @@ mod equilibrium;
 
 mod classic;
 mod dd_reference;
+mod excavator;
 mod floating;
 mod prismatic;
 mod quick_return;

@@ -1,9 +1,14 @@
 //! `actuator(A, l, B, INPUT, mode) as (ARM, CYLINDER)`: a linear actuator of
 //! input length (length units) from `B` to the joint, an arm of length `l`
-//! from `A` to it.
+//! from `A` to it. The cylinder is a massless two-force member.
+//!
+//! `as (ARM, BARREL, ROD)`: a cylinder with mass, two bodies turning
+//! together: the barrel pivoted at `B` (its points measured from `B`), the
+//! rod pinned at the joint (its points measured from the joint), sliding in
+//! each other along `B -> joint`, the axis of both.
 
 use super::closure::{axis_between, f, Residuals};
-use super::forces::{drive, revolute, rx, ForceCx, Held};
+use super::forces::{drive, prismatic, revolute, rx, ForceCx, Held};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
 use super::rates::{states, two_links, RateCx};
@@ -33,12 +38,19 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         vec![(self.a, Role::Point), (self.b, Role::Point)]
     }
 
+    /// The arm `A`-joint; the cylinder `B`-joint, or with three names the
+    /// barrel at `B` and the rod at the joint, turning with the barrel.
     fn link_shapes(&self) -> Vec<LinkShape> {
         let n = &self.stmt.name;
-        vec![
-            LinkShape::new(&[self.a, n], Turn::Own, None),
-            LinkShape::new(&[self.b, n], Turn::Own, None),
-        ]
+        let arm = LinkShape::new(&[self.a, n], Turn::Own, None);
+        match self.barrel_and_rod() {
+            None => vec![arm, LinkShape::new(&[self.b, n], Turn::Own, None)],
+            Some((barrel, _)) => vec![
+                arm,
+                LinkShape::new(&[self.b], Turn::Own, None),
+                LinkShape::new(&[n], Turn::With(barrel.to_string()), None),
+            ],
+        }
     }
 
     fn point_owner(&self) -> Option<Option<String>> {
@@ -57,7 +69,8 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         let len = input(self.input);
         let (pa, pb) = (pose.point(self.a), pose.point(self.b));
         let p = driver::actuator::position(&pa, num(self.l), &pb, len, mode(self.mode))?;
-        pose.found(self.stmt, Some(p.c), &[p.r1 / num(self.l), p.r2 / len]);
+        let (arm, cylinder) = (p.r1 / num(self.l), p.r2 / len);
+        pose.found(self.stmt, Some(p.c), &[arm, cylinder, cylinder]);
         Ok(Some(sweep::det_rrr(&p)))
     }
 
@@ -157,13 +170,17 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
             self.input,
         );
         format!(
-            "driver: linear actuator `{links}` from `{b}`, link pivoted at `{a}`, input `{input}`, joint `{n}`, {}",
-            mode_text(self.stmt, self.mode)
+            "driver: linear actuator `{links}` from `{b}`, link pivoted at `{a}`, input `{input}`, joint `{n}`, {}{}",
+            mode_text(self.stmt, self.mode),
+            match self.barrel_and_rod() {
+                Some((barrel, rod)) => format!(", cylinder with mass: barrel `{barrel}` pivoted at `{b}`, rod `{rod}` pinned at `{n}`"),
+                None => String::new(),
+            }
         )
     }
 
     fn link_kind(&self, index: usize) -> &'static str {
-        if index == 1 {
+        if index >= 1 {
             "Cylinder"
         } else {
             "Bar"
@@ -171,6 +188,9 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
     }
 
     fn forces(&self, cx: &mut dyn ForceCx) {
+        if self.barrel_and_rod().is_some() {
+            return self.forces_with_cylinder(cx);
+        }
         let (stmt, a, b, input) = (self.stmt, self.a, self.b, self.input);
         let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
         let load = cx.load_about(&links[0], a);
@@ -204,14 +224,58 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         ))
     }
 
+    /// The massless cylinder (none when it is a barrel and a rod).
     fn cylinder(&self) -> Option<&'a Ident> {
-        self.stmt.links.get(1)
+        match self.barrel_and_rod() {
+            None => self.stmt.links.get(1),
+            Some(_) => None,
+        }
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
         lane_steps(lane, s, self.a, self.l, self.b, self.input, &self.mode)
+    }
+}
+
+impl<'a> Actuator<'a> {
+    /// The barrel and the rod of a cylinder with mass (three names).
+    pub(super) fn barrel_and_rod(&self) -> Option<(&'a Ident, &'a Ident)> {
+        match self.stmt.links.as_slice() {
+            [_, barrel, rod] => Some((barrel, rod)),
+            _ => None,
+        }
+    }
+
+    /// The force analysis of a cylinder with mass
+    /// (`force::actuator::reactions_with_cylinder`): the loads of the arm
+    /// about `A`, of the rod about the joint and of the barrel about `B`;
+    /// the pivot at `A` and the barrel's force at `B` passed to their
+    /// bodies; fields for the four joints (`A`, the joint, `B`, the
+    /// barrel-rod pair) and the drive.
+    fn forces_with_cylinder(&self, cx: &mut dyn ForceCx) {
+        let (stmt, a, b, input) = (self.stmt, self.a, self.b, self.input);
+        let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
+        let arm = cx.load_about(&links[0], a);
+        let barrel = cx.load_about(&links[1], b);
+        let rod = cx.load_about(&links[2], name);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::actuator::reactions_with_cylinder(&pos.#a, &pos.#b, &pos.#name, &#arm, &#rod, &#barrel)),
+        );
+        let body_a = cx.pass_revolute(a, &rx, "a");
+        let body_b = cx.pass_revolute(b, &rx, "b");
+        cx.reaction(revolute(&rx, &body_a, &links[0], a, "a"));
+        let arm_body = Some(links[0].to_string());
+        cx.reaction(revolute(&rx, &arm_body, &links[2], name, "c"));
+        cx.reaction(revolute(&rx, &body_b, &links[1], b, "b"));
+        let barrel_body = Some(links[1].to_string());
+        cx.reaction(prismatic(&rx, &barrel_body, &links[2], name, "pair"));
+        cx.power(quote!(#rx.axial * vel.rates.#input));
+        cx.condition(quote!(#rx.min_pivot_ratio));
+        let doc = format!("Axial force of the actuator `{}`/`{}` (input `{input}`; force units): the pressure force between barrel and rod, positive when it pushes them apart.", links[1], links[2]);
+        cx.reaction(drive(&rx, input, "axial", Held::Push, doc));
     }
 }
 

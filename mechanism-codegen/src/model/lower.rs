@@ -386,7 +386,14 @@ impl<'a> Body<'a> {
             self.failed.extend(joints);
             return;
         };
-        let (links, links_named) = links(&l, kind.link_count(), errors);
+        // An actuator names two links (the arm; the cylinder, a massless
+        // two-force member) or three (the arm, the barrel, the rod: a
+        // cylinder with mass, `kinds::actuator`).
+        let want_links = match kind {
+            Kind::Actuator { .. } if l.links.len() == 3 => 3,
+            _ => kind.link_count(),
+        };
+        let (links, links_named) = links(&l, want_links, errors);
         let want_slides = kind.slide_count();
         if l.slides.len() > want_slides {
             errors.push(
@@ -590,6 +597,13 @@ fn link_count_message(l: &parse::Let, want: usize) -> String {
             "`{kind}` creates {want} links ({what}), and {} names are given: name the {want}, `as ({})`",
             given.len(),
             names.join(", ")
+        )
+    } else if given.len() > want && kind == "actuator" {
+        format!(
+            "`actuator` creates two links ({what}) or, for a cylinder with mass, three (the link, the barrel pivoted at B and the rod pinned at the joint), and {} names are given: `as ({})` or `as ({}, barrel, rod)`",
+            given.len(),
+            names.join(", "),
+            names[0]
         )
     } else if given.len() > want {
         format!(

@@ -9,11 +9,12 @@ use crate::diag::{did_you_mean, Diagnostics};
 use crate::kinds;
 use crate::model::{ForceSpec, ForceSpecValue, Level, MassSpec, Model};
 use crate::plan::{references, Plan};
-use std::collections::BTreeMap;
 use syn::Ident;
 
 /// Rule (with a force analysis): no group or driver is joined to an
-/// actuator's cylinder (at a point of it or on a guide it carries). The force
+/// actuator's massless cylinder (at a point of it or on a guide it carries;
+/// a barrel and a rod, `as (ARM, BARREL, ROD)`, carry what is joined to
+/// them like any link). The force
 /// analysis treats the cylinder as a massless two-force member (its force
 /// along its axis is the drive) and solves no equations for it, so a
 /// reaction passed to it would be lost and every effort behind it wrong; the
@@ -39,7 +40,7 @@ pub(super) fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Dia
                 errors.push(
                     r.span(),
                     format!(
-                        "`{name}` is {what} the actuator's cylinder `{body}`, which the force analysis takes as a massless two-force member (it carries only its axial force): `{}` cannot be joined to it there; join it to the link the actuator drives or to the ground, or leave out the force analysis (no `mass`, `force`, `torque`)",
+                        "`{name}` is {what} the actuator's cylinder `{body}`, which the force analysis takes as a massless two-force member (it carries only its axial force): `{}` cannot be joined to it there; join it to the link the actuator drives or to the ground, or make the cylinder a barrel and a rod by naming three links, `as (ARM, BARREL, ROD)`",
                         stmt.name
                     ),
                 );
@@ -76,36 +77,22 @@ pub(super) fn gravity_has_masses(model: &Model, errors: &mut Diagnostics) {
     }
 }
 
-/// Rule: a mass sits on a link that can carry loads, one `mass` per link,
-/// at a point of that link.
+/// Rule: a mass sits on a link that can carry loads, at a point of that
+/// link. A link may have several `mass` statements: each is a part of the
+/// link with its own centre and moment of inertia about it (`emit::forces`
+/// applies each part's loads at its own point).
 pub(super) fn masses_on_their_links(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
-    let mut with_mass: BTreeMap<String, Ident> = BTreeMap::new();
     for m in &model.kinetics.masses {
-        mass_on_its_link(model, plan, m, &mut with_mass, errors);
+        mass_on_its_link(model, plan, m, errors);
     }
 }
 
-/// [`masses_on_their_links`] for the mass `m`; `with_mass`: the links with a
-/// mass so far.
-fn mass_on_its_link(
-    model: &Model,
-    plan: &Plan,
-    m: &MassSpec,
-    with_mass: &mut BTreeMap<String, Ident>,
-    errors: &mut Diagnostics,
-) {
+/// [`masses_on_their_links`] for the mass `m`.
+fn mass_on_its_link(model: &Model, plan: &Plan, m: &MassSpec, errors: &mut Diagnostics) {
     if !loadable_link(model, plan, &m.link, "a mass", errors) {
         return;
     }
     let link = m.link.to_string();
-    if with_mass.contains_key(&link) {
-        errors.push(
-            m.link.span(),
-            format!("`{link}` already has a mass (its first `mass` statement comes earlier); give each link one `mass` statement: merge the two"),
-        );
-        return;
-    }
-    with_mass.insert(link.clone(), m.link.clone());
     let points = &plan.links[&link].points;
     let at = m.at.to_string();
     if !plan.owner.contains_key(&at) {
@@ -193,7 +180,7 @@ fn force_at_a_point_of_its_link(
                 ),
                 1 => {
                     if is_cylinder(model, &links[0]) {
-                        errors.push(f.at.span(), format!("`{at}` is on an actuator's cylinder only, a massless two-force member here"));
+                        errors.push(f.at.span(), format!("`{at}` is on an actuator's cylinder only, a massless two-force member here; to load the cylinder, name its barrel and rod, `as (ARM, BARREL, ROD)`, and define the point on one of them"));
                     }
                 }
                 _ => errors.push(
@@ -301,7 +288,7 @@ fn loadable_link(
     if is_cylinder(model, &name) {
         errors.push(
             link.span(),
-            format!("`{name}` is an actuator's cylinder, a massless two-force member here; put the load on the link it drives"),
+            format!("`{name}` is an actuator's cylinder, a massless two-force member here; put the load on the link it drives, or give the actuator a third name to make its cylinder a barrel (pivoted at its base) and a rod (pinned at its joint) that carry loads: `as (ARM, BARREL, ROD)`"),
         );
         return false;
     }

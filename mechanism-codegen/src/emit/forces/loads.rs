@@ -7,7 +7,7 @@
 use super::ForceEmitter;
 use crate::emit::tag;
 use crate::kinds::{self, forces::ForceCx};
-use crate::model::{ForceSpec, ForceSpecValue, MassSpec, Stmt, TorqueSpec};
+use crate::model::{ForceSpec, ForceSpecValue, Kind, Local, MassSpec, Model, Stmt, TorqueSpec};
 use crate::value::Value;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -22,8 +22,11 @@ impl ForceEmitter<'_> {
             self.code
                 .extend(quote!(let gravity = ::mechanism::Vector2::new(#gx, #gy);));
         }
-        for m in &k.masses {
-            self.mass(m);
+        for (link, parts) in masses_by_link(&k.masses) {
+            match parts.as_slice() {
+                [m] => self.mass(m),
+                _ => self.mass_parts(&link, &parts),
+            }
         }
         for (n, f) in k.forces.iter().enumerate() {
             self.external_force(n, f);
@@ -84,6 +87,75 @@ impl ForceEmitter<'_> {
         }
     }
 
+    /// The loads of a link with several `mass` statements (parts): each
+    /// part's inertia force and weight at its own point (the d'Alembert
+    /// loads are linear in the mass distribution, so this is exactly the
+    /// combined body's `-M a_G`, `M g` through the combined centre and the
+    /// couple `-J_G alpha` by the parallel-axis theorem, with no point at the
+    /// combined centre to compute), and one inertia couple `-(sum j_k)
+    /// alpha`, the sum folded when every `j` is literal. Locals are numbered
+    /// by part from 1 in the order written (`pw_inertia_force_LINK_1`).
+    fn mass_parts(&mut self, link: &str, parts: &[&MassSpec]) {
+        let gravity = self.model.kinetics.gravity.is_some();
+        let mut inertias = Vec::new();
+        for (k, m) in parts.iter().enumerate() {
+            let part = format!("{link}_{}", k + 1);
+            let at = &m.at;
+            let mass = self.checked_as(&m.mass, link, &part, Quantity::Mass);
+            let mut force_terms = Vec::new();
+            let v_g = self.velocity(at);
+            if let Some(v) = &v_g {
+                let (f, a) = (
+                    format_ident!("pw_inertia_force_{}", part),
+                    format_ident!("acc_{}", at),
+                );
+                self.code.extend(quote!(let #f = acc.#a * (-#mass);));
+                self.power
+                    .push(quote!(::mechanism::geometry::dot(&#f, &#v)));
+                force_terms.push(quote!(#f));
+            }
+            if gravity {
+                let w = format_ident!("pw_weight_{}", part);
+                self.code.extend(quote!(let #w = gravity * #mass;));
+                if let Some(v) = &v_g {
+                    self.power
+                        .push(quote!(::mechanism::geometry::dot(&#w, &#v)));
+                }
+                force_terms.push(quote!(#w));
+            }
+            if let Some((first, rest)) = force_terms.split_first() {
+                let total = rest.iter().fold(first.clone(), |acc, t| quote!(#acc + #t));
+                self.force_on(link, total, at);
+            }
+            if let Some(j) = m.inertia.as_ref().filter(|j| j.fold() != Some(0.0)) {
+                inertias.push((part, j));
+            }
+        }
+        let Some((w, alpha)) = self.rates_of(&parts[0].link) else {
+            return;
+        };
+        if inertias.is_empty() {
+            return;
+        }
+        let folded: Option<f64> = inertias.iter().map(|(_, j)| j.fold()).sum();
+        let j = match folded {
+            Some(sum) => crate::value::lit(sum),
+            None => {
+                let terms: Vec<TokenStream> = inertias
+                    .iter()
+                    .map(|(part, j)| self.checked_as(j, link, part, Quantity::Inertia))
+                    .collect();
+                terms[1..]
+                    .iter()
+                    .fold(terms[0].clone(), |acc, t| quote!(#acc + #t))
+            }
+        };
+        let c = format_ident!("pw_inertia_couple_{}", link);
+        self.code.extend(quote!(let #c = -((#j) * #alpha);));
+        self.power.push(quote!(#c * #w));
+        self.add(link, quote!(::mechanism::force::Wrench::couple(#c)));
+    }
+
     /// External force number `n` and its power.
     fn external_force(&mut self, n: usize, f: &ForceSpec) {
         let link = match &f.on {
@@ -130,6 +202,18 @@ impl ForceEmitter<'_> {
     /// negative, else a typed error naming the group that creates the link
     /// (a negative mass would give finite, consistent and wrong reactions).
     fn checked(&mut self, value: &Value, link: &str, quantity: Quantity) -> TokenStream {
+        self.checked_as(value, link, link, quantity)
+    }
+
+    /// [`Self::checked`] into the local named after `part` (`LINK` for a
+    /// link's only mass, `LINK_k` for its part `k`).
+    fn checked_as(
+        &mut self,
+        value: &Value,
+        link: &str,
+        part: &str,
+        quantity: Quantity,
+    ) -> TokenStream {
         if value.fold().is_some() {
             return value.emit();
         }
@@ -146,20 +230,43 @@ impl ForceEmitter<'_> {
         let t = tag(stmt);
         let (local, check, what) = match quantity {
             Quantity::Mass => (
-                format_ident!("pw_m_{}", link),
+                format_ident!("pw_m_{}", part),
                 quote!(positive),
-                format!("mass of `{link}`"),
+                format!("mass of `{link}`{}", part_text(link, part)),
             ),
             Quantity::Inertia => (
-                format_ident!("pw_j_{}", link),
+                format_ident!("pw_j_{}", part),
                 quote!(non_negative),
-                format!("moment of inertia of `{link}`"),
+                format!("moment of inertia of `{link}`{}", part_text(link, part)),
             ),
         };
         self.code.extend(quote!(
             let #local = ::mechanism::geometry::#check(#v, #primitive, #what) #t;
         ));
         quote!(#local)
+    }
+}
+
+/// The masses grouped by link, links in the order of their first `mass`,
+/// parts in the order written.
+pub(super) fn masses_by_link(masses: &[MassSpec]) -> Vec<(String, Vec<&MassSpec>)> {
+    let mut out: Vec<(String, Vec<&MassSpec>)> = Vec::new();
+    for m in masses {
+        let link = m.link.to_string();
+        match out.iter_mut().find(|(l, _)| *l == link) {
+            Some((_, parts)) => parts.push(m),
+            None => out.push((link, vec![m])),
+        }
+    }
+    out
+}
+
+/// ` (part k)` for the local `part` = `LINK_k` of a link's part, empty for
+/// a link's only mass (`part` = `LINK`).
+fn part_text(link: &str, part: &str) -> String {
+    match part.strip_prefix(link).and_then(|k| k.strip_prefix('_')) {
+        Some(k) => format!(" (part {k})"),
+        None => String::new(),
     }
 }
 
@@ -176,4 +283,84 @@ enum Quantity {
 fn primitive(stmt: &Stmt) -> TokenStream {
     let name = format_ident!("{}", kinds::of(stmt).primitive());
     quote!(::mechanism::Primitive::#name)
+}
+
+/// The doc comment's sentence on the links with several masses: each such
+/// link's combined mass `M = sum m_k`, centre `G = sum m_k p_k / M` (from
+/// the parts' common base point, in the link's frame: along its axis and
+/// its left normal) and `J_G = sum (j_k + m_k |p_k - G|^2)`, folded at
+/// expansion when every part's `m` and `j` is literal and its centre is the
+/// base point or a `point(LINK, from BASE, ..)` with literal offsets, the same
+/// base for every part; else the parts' count alone. Empty when every link
+/// has at most one mass (their expansions are unchanged).
+pub(super) fn parts_doc(model: &Model) -> String {
+    let mut out = String::new();
+    for (link, parts) in masses_by_link(&model.kinetics.masses) {
+        if parts.len() < 2 {
+            continue;
+        }
+        out.push_str(&format!(" `{link}` carries {} masses", parts.len()));
+        match combined(model, &link, &parts) {
+            Some((m, base, g, j)) => out.push_str(&format!(
+                ", combined: mass {m}, centre ({}, {}) from `{base}` in `{link}`'s frame (along its axis, along its left normal), moment of inertia {j} about it.",
+                g.x, g.y
+            )),
+            None => out.push('.'),
+        }
+    }
+    if out.is_empty() {
+        return out;
+    }
+    format!(" Several masses on one link are parts of it, each loading it at its own centre:{out}")
+}
+
+/// [`parts_doc`]'s folded merge of the parts of `link`: mass, base point,
+/// centre from it in the link's frame, moment of inertia about the centre.
+fn combined(
+    model: &Model,
+    link: &str,
+    parts: &[&MassSpec],
+) -> Option<(f64, String, mechanism_core::Vector2<f64>, f64)> {
+    use mechanism_core::Vector2;
+    let mut base: Option<String> = None;
+    let mut located = Vec::new();
+    for m in parts {
+        let mass = m.mass.fold()?;
+        let j = match &m.inertia {
+            Some(j) => j.fold()?,
+            None => 0.0,
+        };
+        let at = m.at.to_string();
+        let point = model
+            .stmts
+            .iter()
+            .find(|s| s.name == at)
+            .and_then(|s| match &s.kind {
+                Kind::Point {
+                    link: l,
+                    from,
+                    local,
+                } if *l == link => Some((from.to_string(), local)),
+                _ => None,
+            });
+        let (from, offset) = match point {
+            Some((from, Local::Cartesian(x, y))) => (from, Vector2::new(x.fold()?, y.fold()?)),
+            Some((from, Local::Polar(d, a))) => {
+                let (d, a) = (d.fold()?, a.fold()?);
+                (from, Vector2::new(d * a.cos(), d * a.sin()))
+            }
+            None => (at, Vector2::zeros()),
+        };
+        if base.get_or_insert_with(|| from.clone()) != &from {
+            return None;
+        }
+        located.push((mass, j, offset));
+    }
+    let total: f64 = located.iter().map(|p| p.0).sum();
+    let g = located.iter().map(|p| p.2 * p.0).sum::<Vector2<f64>>() / total;
+    let j = located
+        .iter()
+        .map(|p| p.1 + p.0 * (p.2 - g).norm_squared())
+        .sum();
+    Some((total, base?, g, j))
 }

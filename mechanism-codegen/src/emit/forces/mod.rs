@@ -316,7 +316,7 @@ fn forces_struct(
     let field_names: Vec<&Ident> = reactions.iter().map(|r| &r.name).collect();
     let field_types: Vec<&TokenStream> = reactions.iter().map(|r| &r.ty).collect();
     let field_docs: Vec<&String> = reactions.iter().map(|r| &r.doc).collect();
-    let forces_doc = format!("Joint reactions and driving efforts of [`{name}`] (force units: mass x length / s^2 in the definition's units; N with kg, m, s). Each reaction is the force of one body on another in the global frame, as its field says.");
+    let forces_doc = format!("Joint reactions and driving efforts of [`{name}`] (force units: mass x length / s^2 in the definition's units; N with kg, m, s). Each reaction is the force of one body on another in the global frame, as its field says.{}", loads::parts_doc(model));
     quote! {
         #[doc = #forces_doc]
         #[derive(Clone, Copy, Debug, PartialEq)]
@@ -483,6 +483,54 @@ mod tests {
             "{with}"
         );
         assert!(with.contains("dot(&pw_weight_link3,&vel.vel_P)"), "{with}");
+    }
+
+    // Proves several masses on one link get numbered locals (one inertia
+    // force and weight per part) and a single inertia couple whose literal
+    // `j`s are folded into one number (0.03 + 0.01), with one power term.
+    #[test]
+    fn parts_of_a_link_get_numbered_loads_and_one_folded_couple() {
+        let code = flat(
+            &forces(
+                "mass link3 { m = 2.0, at = P, j = 0.03 }; mass link3 { m = 1.0, at = B, j = 0.01 }; gravity (0.0, -9.81);",
+            )
+            .methods,
+        );
+        for local in [
+            "letpw_inertia_force_link3_1=acc.acc_P*",
+            "letpw_inertia_force_link3_2=acc.acc_B*",
+            "letpw_weight_link3_1=",
+            "letpw_weight_link3_2=",
+        ] {
+            assert!(code.contains(local), "{local} in {code}");
+        }
+        let couples = code.matches("letpw_inertia_couple_link3=").count();
+        assert_eq!(couples, 1, "{code}");
+        assert!(code.contains("letpw_inertia_couple_link3=-((<Tas::mechanism::Real>::lit(0.04f64))*acc.alpha_link3);"), "{code}");
+    }
+
+    // Proves the forces struct's doc gives the merged mass, centre (in the
+    // link's frame, from the parts' common base) and parallel-axis J of a
+    // link's literal parts (here 1 at (40, 0) from A with j 0.01 and 3 at A:
+    // M 4, G (10, 0), J 0.01 + 1 * 30^2 + 3 * 10^2 = 1200.01), the count
+    // alone when the bases differ, and nothing with one mass per link.
+    #[test]
+    fn merged_parts_in_the_forces_doc() {
+        let two = flat(
+            &forces(
+                "let Q = point(link3, from A, (40.0, 0.0)); mass link3 { m = 1.0, at = Q, j = 0.01 }; mass link3 { m = 3.0, at = A };",
+            )
+            .items,
+        );
+        assert!(
+            two.contains(&"`link3` carries 2 masses, combined: mass 4, centre (10, 0) from `A` in `link3`'s frame (along its axis, along its left normal), moment of inertia 1200.01".replace(' ', "")),
+            "{two}"
+        );
+        let bases =
+            flat(&forces("mass link3 { m = 1.0, at = P }; mass link3 { m = 3.0, at = B };").items);
+        assert!(bases.contains("`link3`carries2masses.\""), "{bases}");
+        let one = flat(&forces("mass link3 { m = 1.0, at = P };").items);
+        assert!(!one.contains("carries"), "{one}");
     }
 
     // Proves the `loads` block gives the `NameLoads` struct and the extra
