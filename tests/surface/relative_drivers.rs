@@ -414,3 +414,38 @@ fn an_elbow_motor_inside_a_closed_loop_balances_every_body() {
     }
     assert!(checked >= 200, "only {checked} poses checked");
 }
+
+mechanism! {
+    /// The 2R leg's kinematics with the knee's encoder zero 30 deg from the
+    /// thigh's axis.
+    pub LegZero {
+        dof 2;
+        let H = ground(0.0, 0.0);
+        let K = crank(H, 0.40, q1) as thigh;
+        let F = crank(K, 0.35, q2, thigh, 30 deg) as shank;
+    }
+}
+
+#[test]
+fn a_carried_crank_measures_its_input_from_its_zero_angle() {
+    // Proves: `crank(K, r, q, CARRIER, zero)` turns the link by `zero + q`
+    // from the carrier's axis: the foot is where the hand-worked chain puts
+    // it at the knee angle plus 30 deg, its rates unchanged by the zero.
+    let leg = LegZero::<f64>::default();
+    let (w, al) = ((1.5, -2.0), (4.0, 7.0));
+    for i in 0..36 {
+        let q = (0.2 + 0.1 * i as f64, (10.0 * i as f64 - 175.0).to_radians());
+        let zero = 30f64.to_radians();
+        let s = leg.position(&LegZeroInput { q1: q.0, q2: q.1 }).unwrap();
+        let v = leg
+            .velocity(&s, &LegZeroInput { q1: w.0, q2: w.1 })
+            .unwrap();
+        let a = leg
+            .acceleration(&s, &v, &LegZeroInput { q1: al.0, q2: al.1 })
+            .unwrap();
+        let (foot, fv, fa, ..) = leg_by_hand((q.0, q.1 + zero), w, al, false);
+        close_v(s.F.coords, foot.coords, "foot");
+        close_v(v.F, fv, "foot velocity");
+        close_v(a.F, fa, "foot acceleration");
+    }
+}
