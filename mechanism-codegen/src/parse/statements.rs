@@ -575,27 +575,14 @@ impl Parse for Assign {
 /// `{ name = value, .. }` of `params` or `loads` (`word`); `what` is one
 /// entry ("a parameter").
 fn assignments(input: ParseStream, word: &str, what: &str) -> syn::Result<Vec<Assign>> {
-    if !input.peek(syn::token::Brace) {
-        return Err(input.error(format!(
-            "expected `{{` after `{word}`: the entries go in braces, `{word} {{ a = 1.0, b = 2.0 }}`"
-        )));
-    }
-    let content;
-    braced!(content in input);
-    let list_name = format!("`{word} {{ .. }}`");
-    list(
-        &content,
-        &list_name,
-        Assign::parse,
-        starts_assign,
-        |a: &Assign, u| {
-            if word == "loads" {
-                unit_message(u, Valued::Load(what))
-            } else {
-                unit_message(u, Valued::Number(what, &a.name))
-            }
-        },
-    )
+    let example = format!("{word} {{ a = 1.0, b = 2.0 }}");
+    braced_assignments(input, word, &example, &|a: &Assign, u| {
+        if word == "loads" {
+            unit_message(u, Valued::Load(what))
+        } else {
+            unit_message(u, Valued::Number(what, &a.name))
+        }
+    })
 }
 
 /// `{ NAME = value, .. }` of the drawn form's `joints` (`(x, y)` values) or
@@ -606,6 +593,19 @@ fn drawn_list(input: ParseStream, word: &str) -> syn::Result<Vec<Assign>> {
     } else {
         "links { ground = [O2, O4], crank = [O2, A] }"
     };
+    braced_assignments(input, word, example, &|_, u| {
+        Some(format!("`{u}` has no place in `{word}`: `{example}`"))
+    })
+}
+
+/// `{ NAME = value, .. }` after `word`, `example` shown when the brace is
+/// missing; `unit` gives the message for a unit word after a value.
+fn braced_assignments(
+    input: ParseStream,
+    word: &str,
+    example: &str,
+    unit: &dyn Fn(&Assign, &Ident) -> Option<String>,
+) -> syn::Result<Vec<Assign>> {
     if !input.peek(syn::token::Brace) {
         return Err(input.error(format!(
             "expected `{{` after `{word}`: the entries go in braces, `{example}`"
@@ -614,13 +614,7 @@ fn drawn_list(input: ParseStream, word: &str) -> syn::Result<Vec<Assign>> {
     let content;
     braced!(content in input);
     let list_name = format!("`{word} {{ .. }}`");
-    list(
-        &content,
-        &list_name,
-        Assign::parse,
-        starts_assign,
-        |_, u| Some(format!("`{u}` has no place in `{word}`: `{example}`")),
-    )
+    list(&content, &list_name, Assign::parse, starts_assign, unit)
 }
 
 /// `input NAME = angle(LINK);` or `input NAME = angle(LINK, FROM_LINK);`,
