@@ -65,7 +65,7 @@ fn data_types(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>
     };
     let mut params: Vec<Ident> = model.params.iter().map(|(n, _)| n.clone()).collect();
     params.extend(model.modes.iter().map(|(n, _)| n.clone()));
-    let inputs = super::solution::input_names(model);
+    let inputs = super::names::input_names(model);
     let mut out = vec![own(&names.name, params), own(&names.input, inputs)];
     let loads = &model.kinetics.loads;
     if model.has_forces() && !loads.is_empty() {

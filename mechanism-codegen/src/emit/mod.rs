@@ -85,7 +85,7 @@ fn moving_points(model: &Model, plan: &Plan) -> BTreeSet<String> {
 fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
     let em = position::Emitter::new(model, plan, false);
     let moving = moving_points(model, plan);
-    let inputs = solution::input_names(model);
+    let inputs = names::input_names(model);
     let position = em.code();
     // The later analyses, generated first: the hidden fields of the
     // position, velocity and acceleration structs are only those a later

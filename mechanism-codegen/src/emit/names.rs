@@ -9,6 +9,15 @@ use quote::{format_ident, quote};
 use std::collections::BTreeSet;
 use syn::Ident;
 
+/// The inputs of the drivers, in statement order.
+pub(super) fn input_names(model: &Model) -> Vec<Ident> {
+    model
+        .stmts
+        .iter()
+        .filter_map(|s| s.kind.input().cloned())
+        .collect()
+}
+
 /// The names of the generated types of one mechanism (`FourBar`,
 /// `FourBarPosition`, ...).
 pub(super) struct TypeNames {

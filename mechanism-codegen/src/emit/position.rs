@@ -472,7 +472,7 @@ mod tests {
         let (model, plan) = planned(&four_bar("analysis position; outputs { B }"));
         let em = Emitter::new(&model, &plan, false);
         let code = em.code();
-        let inputs = crate::emit::solution::input_names(&model);
+        let inputs = crate::emit::names::input_names(&model);
         let none = flat(&items(&em, &code, &Reads::default(), &inputs).items);
         assert!(!none.contains("doc(hidden)"), "{none}");
         let mut reads = Reads::default();

@@ -13,15 +13,6 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
-/// The inputs of the drivers, in statement order.
-pub(super) fn input_names(model: &Model) -> Vec<Ident> {
-    model
-        .stmts
-        .iter()
-        .filter_map(|s| s.kind.input().cloned())
-        .collect()
-}
-
 /// The doc text that lists the statements in solve order and the analyses
 /// generated.
 fn structure_doc(model: &Model, plan: &Plan) -> String {
@@ -199,14 +190,14 @@ mod tests {
     #[test]
     fn parameters_or_a_marker() {
         let (model, plan) = planned(&four_bar(""));
-        let inputs = input_names(&model);
+        let inputs = crate::emit::names::input_names(&model);
         assert_eq!(inputs, ["theta2"]);
         let items = flat(&own_items(&model, &plan, &inputs).items);
         assert!(items.contains("pubground:T,"), "{items}");
         assert!(!items.contains("_scalar"), "{items}");
         let (model, plan) =
             planned("pub Crank { let O = ground(0.0, 0.0); let A = crank(O, 1.0, t) as link; }");
-        let items = flat(&own_items(&model, &plan, &input_names(&model)).items);
+        let items = flat(&own_items(&model, &plan, &crate::emit::names::input_names(&model)).items);
         assert!(
             items.contains("pub_scalar:::core::marker::PhantomData<T>,"),
             "{items}"
