@@ -379,8 +379,11 @@ fn place_driver(
 fn off_the_line(d: &Drawing, a: JointId, b: JointId, c: JointId, errors: &mut Diagnostics) -> bool {
     let (pa, pb, pc) = (d.joint(a).at, d.joint(b).at, d.joint(c).at);
     let scale = (pb.0 - pa.0).hypot(pb.1 - pa.1) * (pc.0 - pa.0).hypot(pc.1 - pa.1);
+    let cross = side(pa, pb, pc);
     // 1e-9: a sine that small is a drawing on the line to its last digits.
-    if side(pa, pb, pc).abs() > 1e-9 * scale {
+    // A drawing too large for an f64 is not judged here: its lengths
+    // overflow, which the lowering reports on the joint.
+    if cross.abs() > 1e-9 * scale || !(cross.is_finite() && scale.is_finite()) {
         return true;
     }
     let (na, nb, nc) = (&d.joint(a).name, &d.joint(b).name, &d.joint(c).name);

@@ -7,8 +7,8 @@
 use super::decompose::{side, Frame, Step};
 use super::{Drawing, Joint, JointId, LinkId};
 use crate::parse::{Arg, Let};
-use proc_macro2::TokenStream;
-use quote::{quote, quote_spanned};
+use proc_macro2::{Group, Span, TokenStream, TokenTree};
+use quote::quote;
 use syn::{Expr, Ident};
 
 /// The `let` statement of one step.
@@ -17,11 +17,12 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
     let l = |k: LinkId| &d.link(k).name;
     let (defines, kind, args, links): (&Joint, &str, Vec<Arg>, Vec<Ident>) = match *step {
         Step::Ground(k) => {
-            let (x, y) = (&j(k).x, &j(k).y);
+            // The user's own coordinates, with their spans.
+            let (x, y) = (j(k).x.clone(), j(k).y.clone());
             (
                 j(k),
                 "ground",
-                vec![value(quote!(#x)), value(quote!(#y))],
+                vec![Arg::Value(x, None), Arg::Value(y, None)],
                 vec![],
             )
         }
@@ -35,13 +36,13 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
             let (pivot, tip) = (j(frame.origin), j(frame.toward));
             let mut args = vec![
                 name(pivot),
-                value(distance(pivot, tip)),
-                value(quote!(#input)),
+                value(distance(pivot, tip), tip.name.span()),
+                name_arg(input),
             ];
             if let Some(c) = carrier {
                 args.push(name_arg(l(c.link)));
                 if c.frame != c.listed {
-                    args.push(value(turn(d, c.frame, c.listed)));
+                    args.push(value(turn(d, c.frame, c.listed), input.span()));
                 }
             }
             (tip, "crank", args, vec![l(link).clone()])
@@ -56,9 +57,9 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
             let mode = Ident::new(word, c.name.span());
             let args = vec![
                 name(a),
-                value(distance(a, c)),
+                value(distance(a, c), c.name.span()),
                 name(b),
-                value(distance(b, c)),
+                value(distance(b, c), c.name.span()),
                 name_arg(&mode),
             ];
             (c, "rrr", args, vec![l(la).clone(), l(lb).clone()])
@@ -69,7 +70,7 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
             let args = vec![
                 name_arg(l(link)),
                 Arg::From(j(frame.origin).name.clone()),
-                value(quote!((#x, #y))),
+                value(quote!((#x, #y)), j(joint).name.span()),
             ];
             (j(joint), "point", args, vec![])
         }
@@ -103,18 +104,21 @@ fn triad(d: &Drawing, step: &Step) -> Let {
     let mut args = Vec::new();
     for i in 0..3 {
         args.push(name(j(known[i])));
-        args.push(value(distance(j(known[i]), j(joints[i]))));
+        args.push(value(
+            distance(j(known[i]), j(joints[i])),
+            j(joints[i]).name.span(),
+        ));
     }
     let [a, b, p] = joints.map(j);
-    args.push(value(distance(a, b)));
+    args.push(value(distance(a, b), b.name.span()));
     let (x, y) = local(a, b, p);
-    args.push(value(quote!((#x, #y))));
+    args.push(value(quote!((#x, #y)), p.name.span()));
     let input = &d.inputs[0].name;
     let at = drawn_input(d);
-    args.push(value(quote!(#input = #at)));
+    args.push(value(quote!(#input = #at), input.span()));
     for k in joints {
         let (x, y) = (&j(k).x, &j(k).y);
-        args.push(value(quote!((#x, #y))));
+        args.push(value(quote!((#x, #y)), j(k).name.span()));
     }
     let span = a.name.span();
     let links = legs.iter().chain([&t]).map(|&l| d.link(l).name.clone());
@@ -169,9 +173,31 @@ fn drawn_input(d: &Drawing) -> TokenStream {
     }
 }
 
-/// A generated expression as an argument.
-fn value(t: TokenStream) -> Arg {
-    Arg::Value(syn::parse2(t).expect("a generated expression parses"), None)
+/// A generated expression as an argument, every token of it spanned on
+/// `at` (the user's name it is computed for), so that a message about it
+/// (an overflow, a value outside a range) points into the definition.
+fn value(t: TokenStream, at: Span) -> Arg {
+    Arg::Value(
+        syn::parse2(respan(t, at)).expect("a generated expression parses"),
+        None,
+    )
+}
+
+/// `t` with every token spanned on `at`.
+fn respan(t: TokenStream, at: Span) -> TokenStream {
+    t.into_iter()
+        .map(|tree| match tree {
+            TokenTree::Group(g) => {
+                let mut group = Group::new(g.delimiter(), respan(g.stream(), at));
+                group.set_span(at);
+                TokenTree::Group(group)
+            }
+            mut other => {
+                other.set_span(at);
+                other
+            }
+        })
+        .collect()
 }
 
 /// A joint's name as an argument.
@@ -184,10 +210,10 @@ fn name_arg(i: &Ident) -> Arg {
     Arg::Value(Expr::Path(syn::parse_quote!(#i)), None)
 }
 
-/// `hypot(xb - xa, yb - ya)`, spanned on `b`'s name.
+/// `hypot(xb - xa, yb - ya)`.
 fn distance(a: &Joint, b: &Joint) -> TokenStream {
     let (ax, ay, bx, by) = (&a.x, &a.y, &b.x, &b.y);
-    quote_spanned!(b.name.span()=> hypot((#bx) - (#ax), (#by) - (#ay)))
+    quote!(hypot((#bx) - (#ax), (#by) - (#ay)))
 }
 
 /// `j`'s coordinates in the frame at `from` whose axis points to `toward`:
@@ -198,8 +224,8 @@ fn local(from: &Joint, toward: &Joint, j: &Joint) -> (TokenStream, TokenStream) 
     let (dx, dy) = (quote!(((#x) - (#fx))), quote!(((#y) - (#fy))));
     let len = quote!(hypot(#ux, #uy));
     (
-        quote_spanned!(j.name.span()=> (#dx * #ux + #dy * #uy) / #len),
-        quote_spanned!(j.name.span()=> (#ux * #dy - #uy * #dx) / #len),
+        quote!((#dx * #ux + #dy * #uy) / #len),
+        quote!((#ux * #dy - #uy * #dx) / #len),
     )
 }
 
