@@ -1,5 +1,6 @@
-// Error: a joint drawn so far away that its distance from the next joint
-// overflows an f64; the message points at the joint the length is read for.
+// Error: a joint drawn 1e308 away, its links' lengths beyond the scale the
+// groups are solved in: the expansion-time check reports the group on the
+// joint (never a NaN at run time, never a message off the definition).
 use mechanism::mechanism;
 
 mechanism! {
