@@ -10,7 +10,9 @@
 //! - [`png`]: the examples' pictures rendered to pixels and looked at;
 //! - [`firmware_table`]: the host's values the firmware compares with
 //!   (`tests/firmware/src/expected.rs`) equal what the host computes now;
-//! - [`cli_options`]: the examples' command line (options, `--help`, typos).
+//! - [`cli_options`]: the examples' command line (options, `--help`, typos);
+//! - [`drawn`]: the four-bar and the five-bar written as drawn, against the
+//!   grouped scenes over their input ranges.
 
 /// The examples' command line, at the crate root where its macros expect it.
 #[path = "../../examples/common/cli.rs"]
@@ -26,6 +28,7 @@ mod check;
 mod render;
 
 mod cli_options;
+mod drawn;
 mod firmware_table;
 mod forces;
 mod kinematics;

@@ -425,23 +425,22 @@ fn place_points(d: &Drawing, placed: &mut Placed, steps: &mut Vec<Step>) -> bool
     progress
 }
 
-/// A dyad: an unplaced joint on exactly two unplaced links, each with a
-/// placed joint (two different ones).
+/// A dyad: an unplaced joint on two unplaced links that each have a placed
+/// joint (two different ones). Other unplaced links at the joint wait: they
+/// gain it as a placed joint.
 fn find_dyad(d: &Drawing, placed: &Placed, ground: LinkId) -> Option<Step> {
+    let known = |l: LinkId| d.link(l).joints.iter().copied().find(|&j| placed.joint(j));
     for c in (0..d.joints.len())
         .map(JointId)
         .filter(|&c| !placed.joint(c))
     {
-        let on: Vec<LinkId> = d
+        let on: Vec<(LinkId, JointId)> = d
             .link_ids()
             .filter(|&l| l != ground && placed.frame(l).is_none() && d.link(l).joints.contains(&c))
+            .filter_map(|l| Some((l, known(l)?)))
             .collect();
-        let [la, lb] = on[..] else {
-            continue;
-        };
-        let known = |l: LinkId| d.link(l).joints.iter().copied().find(|&j| placed.joint(j));
-        if let (Some(a), Some(b)) = (known(la), known(lb)) {
-            if a != b {
+        for (i, &(la, a)) in on.iter().enumerate() {
+            if let Some(&(lb, b)) = on[i + 1..].iter().find(|(_, b)| *b != a) {
                 return Some(Step::Rrr { a, la, b, lb, c });
             }
         }
