@@ -7,8 +7,7 @@
 use mechanism::mechanism;
 use mechanism::structure::{Describe, Fields, LinkKind, PointKind, Quantity, Value};
 
-#[path = "../../mechanism-plot/tests/check/png.rs"]
-mod render;
+use crate::render;
 
 mechanism! {
     /// Crank-rocker four-bar (mm) with a coupler point.

@@ -278,3 +278,54 @@ fn a_drawn_jansen_leg_is_the_grouped_one() {
         "largest foot difference {worst:e} of the size"
     );
 }
+
+mechanism! {
+    /// The drawn four-bar of `docs/dsl.md` ("Say it as drawn").
+    pub DocFourBar {
+        joints { O2 = (0.0, 0.0), O4 = (4.0, 0.0), A = (0.5, 0.9), B = (3.2, 2.1), P = (2.0, 2.9) }
+        links {
+            ground = [O2, O4],
+            crank = [O2, A],
+            coupler = [A, B, P],
+            rocker = [O4, B],
+        }
+        input theta = angle(crank);
+    }
+}
+
+#[test]
+fn the_drawn_four_bar_of_the_docs_draws_itself() {
+    // Proves: the docs' drawn four-bar turns fully (a Grashof crank-rocker
+    // read from the drawing: 1.03 + 4 <= 2.95 + 2.25) and draws its links
+    // and the path of P at the drawn pose, legibly (rendered and looked at;
+    // with MECHANISM_DOC_PNGS set, written as docs/drawn-fourbar.png).
+    let m = DocFourBar::<f64>::default();
+    let drawn = 0.9f64.atan2(0.5);
+    let poses: Vec<(f64, Option<DocFourBarPosition>)> = (0..=72)
+        .map(|k| {
+            let t = drawn + k as f64 * std::f64::consts::TAU / 72.0;
+            (t, m.position(&DocFourBarInput { theta: t }).ok())
+        })
+        .collect();
+    assert!(
+        poses.iter().all(|(_, p)| p.is_some()),
+        "the crank turns fully"
+    );
+    let sketch = mechanism_plot::any::sketch_with::<DocFourBar, _>(
+        "The four-bar as drawn",
+        "m",
+        &poses,
+        &["P"],
+        |t| format!("θ = {:.0}°", t.to_degrees()),
+    )
+    .unwrap();
+    let drawing = sketch.drawing(0).unwrap();
+    for link in ["crank", "coupler", "rocker"] {
+        assert!(
+            drawing.contains(&format!("\"{link}\"")),
+            "link {link} drawn"
+        );
+    }
+    let png = crate::render::look(&drawing, "drawn four-bar", 0.01);
+    crate::render::save_for_docs(&png, "drawn-fourbar.png");
+}

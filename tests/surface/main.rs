@@ -25,6 +25,9 @@
 #[path = "../common/equilibrium.rs"]
 #[allow(dead_code)]
 mod equilibrium;
+/// The pictures' looked-at check (rendered with resvg).
+#[path = "../../mechanism-plot/tests/check/png.rs"]
+mod render;
 #[path = "../common/surface_defs.rs"]
 mod surface_defs;
 
