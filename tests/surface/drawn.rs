@@ -329,3 +329,56 @@ fn the_drawn_four_bar_of_the_docs_draws_itself() {
     let png = crate::render::look(&drawing, "drawn four-bar", 0.01);
     crate::render::save_for_docs(&png, "drawn-fourbar.png");
 }
+
+mechanism! {
+    /// A piston-driven crank, drawn: the block B slides on the ground along
+    /// 10 deg through its drawn place, driven by its slide `s`; the rod and
+    /// the crank close on it.
+    pub DrawnPiston {
+        joints { O = (0.0, 0.0), A = (0.06, 0.08), B = (0.42, 0.05) }
+        links { ground = [O], crank = [O, A], rod = [A, B] }
+        slider piston at B on ground along 10 deg;
+        input s = slide(piston);
+    }
+}
+
+mechanism! {
+    /// The same, written with groups (its dimensions from the same drawing).
+    pub GroupedPiston {
+        let O = ground(0.0, 0.0);
+        let line = guide((0.42, 0.05), 10 deg);
+        let B = slider(line, s) as piston;
+        let A = rrr(O, hypot(0.06, 0.08), B, hypot(0.42 - 0.06, 0.05 - 0.08), left) as (crank, rod);
+    }
+}
+
+#[test]
+fn a_drawn_slider_driven_by_its_slide_is_the_grouped_one() {
+    // Proves: `input s = slide(block)` drives the block from its drawn place
+    // along its line (s = 0 as drawn), and the dyad closing on it takes the
+    // drawn side: the same joints as the grouped form, and at s = 0 the
+    // drawing itself.
+    let (d, g) = (
+        DrawnPiston::<f64>::default(),
+        GroupedPiston::<f64>::default(),
+    );
+    // From -0.1 to 0.03 m: the rod and crank reach B there (|OB| between
+    // 0.26 and 0.46 m).
+    for k in 0..=65 {
+        let s = -0.1 + 0.002 * k as f64;
+        let pd = d.position(&DrawnPistonInput { s }).unwrap();
+        let pg = g.position(&GroupedPistonInput { s }).unwrap();
+        assert!(
+            (pd.A - pg.A).norm() <= 4.0 * f64::EPSILON,
+            "{s}: {} {}",
+            pd.A,
+            pg.A
+        );
+    }
+    let at = d.position(&DrawnPistonInput { s: 0.0 }).unwrap();
+    assert!(
+        (at.A - mechanism::Point2::new(0.06, 0.08)).norm() < 1e-15,
+        "{}",
+        at.A
+    );
+}

@@ -321,7 +321,7 @@ impl<'a> Body<'a> {
             Item::Loads(_) => {}
             Item::Params(_) | Item::Const(_) => {}
             // Replaced by group statements before the body is lowered.
-            Item::Joints(..) | Item::Links(..) | Item::Input(..) => {}
+            Item::Joints(..) | Item::Links(..) | Item::Input(..) | Item::Slider(..) => {}
         }
     }
 

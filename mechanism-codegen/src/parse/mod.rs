@@ -96,6 +96,23 @@ pub enum Item {
     /// the ground) or `input knee = angle(shank, thigh);` (from another
     /// link): the input's name and what it measures.
     Input(Ident, Expr),
+    /// The drawn form: `slider BLOCK at J on ground along ANGLE;`, a block
+    /// pinned at joint `J` sliding on the ground along a line through `J`'s
+    /// drawn place.
+    Slider(DrawnSlider),
+}
+
+/// `slider BLOCK at J on CARRIER along angle;` of the drawn form.
+pub struct DrawnSlider {
+    /// The block (a link of its own).
+    pub block: Ident,
+    /// The joint it is pinned at.
+    pub at: Ident,
+    /// What it slides on (`ground`).
+    pub on: Ident,
+    /// The direction of the line, with its unit (`deg`, `rad`, none: rad).
+    pub angle: Expr,
+    pub unit: Option<Ident>,
 }
 
 /// `range INPUT = (lo, hi);`
@@ -178,7 +195,7 @@ pub enum ForceValue {
 /// The words that begin a statement (besides `let` and `const`).
 const STATEMENTS: &[&str] = &[
     "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "range",
-    "allow", "joints", "links", "input",
+    "allow", "joints", "links", "input", "slider",
 ];
 
 /// Unit words a user may write after a value where none is taken (in a
@@ -683,7 +700,7 @@ mod tests {
         let (message, _, column) = error("pub M { forse at E = (1.0, 0.0); }");
         assert_eq!(
             message,
-            "unknown statement `forse`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links` or `input`; did you mean `force`?"
+            "unknown statement `forse`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input` or `slider`; did you mean `force`?"
         );
         assert_eq!(column, 8);
     }

@@ -8,8 +8,8 @@
 
 use super::{
     end, kw, last_token, list, next_text, starts_arg, starts_assign, starts_statement, text,
-    unit_message, unit_word, vocabulary, Arg, Assign, Force, ForceValue, Item, Let, Mass,
-    RangeDecl, Valued, STATEMENTS,
+    unit_message, unit_word, vocabulary, Arg, Assign, DrawnSlider, Force, ForceValue, Item, Let,
+    Mass, RangeDecl, Valued, STATEMENTS,
 };
 use syn::buffer::Cursor;
 use syn::parse::{Parse, ParseStream};
@@ -28,7 +28,7 @@ impl Parse for Item {
         let word: Ident = input.parse().map_err(|e| {
             syn::Error::new(
                 e.span(),
-                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links` or `input`",
+                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input` or `slider`",
             )
         })?;
         match word.to_string().as_str() {
@@ -46,10 +46,11 @@ impl Parse for Item {
             "joints" => Ok(Item::Joints(word.span(), drawn_list(input, "joints")?)),
             "links" => Ok(Item::Links(word.span(), drawn_list(input, "links")?)),
             "input" => parse_input(input, start),
+            "slider" => parse_slider(input, start),
             other => Err(syn::Error::new(
                 word.span(),
                 format!(
-                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links` or `input`{}",
+                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input` or `slider`{}",
                     crate::diag::did_you_mean(other, STATEMENTS.iter().copied())
                 ),
             )),
@@ -615,6 +616,45 @@ fn braced_assignments(
     braced!(content in input);
     let list_name = format!("`{word} {{ .. }}`");
     list(&content, &list_name, Assign::parse, starts_assign, unit)
+}
+
+/// `slider BLOCK at J on CARRIER along angle;`, after `slider`.
+fn parse_slider(input: ParseStream, start: Cursor) -> syn::Result<Item> {
+    let usage = "`slider block at B on ground along 0 deg;`";
+    let block = name_after(input, "slider", "the block's name", usage)?;
+    let word = |w: &str, what: &str| -> syn::Result<Ident> {
+        if !kw(input, w) {
+            return Err(input.error(format!("expected `{w}`: {usage}")));
+        }
+        let _: Ident = input.parse()?;
+        name_after(input, w, what, usage)
+    };
+    let at = word("at", "the joint it is pinned at")?;
+    let on = word("on", "what it slides on")?;
+    if !kw(input, "along") {
+        return Err(input.error(format!(
+            "expected `along` and the line's direction: {usage}"
+        )));
+    }
+    let _: Ident = input.parse()?;
+    let angle: Expr = input.parse()?;
+    let unit = unit_word(input);
+    if unit.is_some() {
+        let _: Ident = input.parse()?;
+    }
+    end(
+        input,
+        start,
+        &format!("the `slider {block} ..` statement"),
+        Valued::Load("an angle"),
+    )?;
+    Ok(Item::Slider(DrawnSlider {
+        block,
+        at,
+        on,
+        angle,
+        unit,
+    }))
 }
 
 /// `input NAME = angle(LINK);` or `input NAME = angle(LINK, FROM_LINK);`,

@@ -55,6 +55,19 @@ pub(super) enum Step {
         legs: [LinkId; 3],
         known: [JointId; 3],
     },
+    /// The line a block slides on (the ground's): `sliders[k]`.
+    Guide(usize),
+    /// A slider driver: the block of `sliders[slider]` at its displacement
+    /// `input` along its line.
+    Slide { slider: usize, input: InputId },
+    /// An RRP dyad: joint `c` at its drawn distance from `a` on link `la`,
+    /// and on the block of `sliders[slider]`.
+    Rrp {
+        a: JointId,
+        la: LinkId,
+        c: JointId,
+        slider: usize,
+    },
     /// A joint fixed on `link`, in the link's frame.
     Point {
         link: LinkId,
@@ -106,10 +119,13 @@ pub(super) fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Ste
     }
     let out = solve_order(d)?;
     for step in &out.steps {
-        if let Step::Rrr { a, b, c, .. } = *step {
-            if !off_the_line(d, a, b, c, errors) {
-                return None;
-            }
+        let ok = match *step {
+            Step::Rrr { a, b, c, .. } => off_the_line(d, a, b, c, errors),
+            Step::Rrp { a, c, slider, .. } => off_the_normal(d, a, c, slider, errors),
+            _ => true,
+        };
+        if !ok {
+            return None;
         }
     }
     let left = unplaced(d, &out.placed);
@@ -183,6 +199,18 @@ fn structure_holds(d: &Drawing, errors: &mut Diagnostics) -> bool {
                 "the ground does not turn; an input is the angle of a moving link",
             );
         }
+        let block = d.link_named(&i.link).map(|l| d.slider_of(l).is_some());
+        match (i.slide, block) {
+            (true, Some(false)) => errors.push(
+                i.link.span(),
+                format!("`{}` is no slider's block: `slide(..)` names a block of a `slider` statement", i.link),
+            ),
+            (false, Some(true)) => errors.push(
+                i.link.span(),
+                format!("`{}` is a slider's block, which does not turn: its input is its slide, `input {} = slide({});`", i.link, i.name, i.link),
+            ),
+            _ => {}
+        }
     }
     errors.len() == before
 }
@@ -198,13 +226,14 @@ fn freedoms_match(d: &Drawing, errors: &mut Diagnostics) -> bool {
             on.count() as i64 - 1
         })
         .sum();
+    let pairs = pairs + d.sliders.len() as i64;
     let dof = 3 * moving - 2 * pairs;
     let inputs = d.inputs.len() as i64;
     if dof == inputs {
         return true;
     }
     let count = format!(
-        "Gruebler: 3 x {moving} moving links - 2 x {pairs} pin pairs = {dof} degree(s) of freedom"
+        "Gruebler: 3 x {moving} moving links - 2 x {pairs} lower pairs = {dof} degree(s) of freedom"
     );
     let message = if dof > inputs {
         let free = solve_order(d)
@@ -273,6 +302,7 @@ fn solve_order(d: &Drawing) -> Option<Outcome> {
         steps.push(Step::Ground(j));
     }
     placed.set_frame(ground, fixed[0], fixed[0]);
+    steps.extend((0..d.sliders.len()).map(Step::Guide));
     let mut pending: Vec<InputId> = d.input_ids().collect();
     loop {
         let before = pending.len();
@@ -282,10 +312,18 @@ fn solve_order(d: &Drawing) -> Option<Outcome> {
             continue;
         }
         if let Some(step) = find_dyad(d, &placed, ground) {
-            if let Step::Rrr { a, la, b, lb, c } = step {
-                placed.place(c);
-                placed.set_frame(la, a, c);
-                placed.set_frame(lb, b, c);
+            match step {
+                Step::Rrr { a, la, b, lb, c } => {
+                    placed.place(c);
+                    placed.set_frame(la, a, c);
+                    placed.set_frame(lb, b, c);
+                }
+                Step::Rrp { a, la, c, slider } => {
+                    placed.place(c);
+                    placed.set_frame(la, a, c);
+                    placed.set_frame(d.sliders[slider].link, c, c);
+                }
+                _ => {}
             }
             steps.push(step);
             continue;
@@ -332,6 +370,19 @@ fn place_driver(
     let Some(link) = d.link_named(&input.link) else {
         return false;
     };
+    if input.slide {
+        let Some(slider) = d.sliders.iter().position(|s| s.link == link) else {
+            return false;
+        };
+        let at = d.sliders[slider].at;
+        if placed.frame(link).is_some() || placed.joint(at) {
+            return false;
+        }
+        steps.push(Step::Slide { slider, input: k });
+        placed.place(at);
+        placed.set_frame(link, at, at);
+        return true;
+    }
     let carrier = input.carrier.as_ref().and_then(|c| d.link_named(c));
     let on = carrier.unwrap_or(ground);
     if placed.frame(on).is_none() || placed.frame(link).is_some() {
@@ -394,6 +445,31 @@ fn off_the_line(d: &Drawing, a: JointId, b: JointId, c: JointId, errors: &mut Di
     false
 }
 
+/// `true` when the drawing has the RRP's joint `c` clearly ahead of or
+/// behind the foot of `a` on the block's line (which picks its assembly);
+/// else an error on `c`: the link drawn square to the line (the tangent
+/// pose, where the two assemblies meet).
+fn off_the_normal(
+    d: &Drawing,
+    a: JointId,
+    c: JointId,
+    slider: usize,
+    errors: &mut Diagnostics,
+) -> bool {
+    let (pa, pc, dir) = (d.joint(a).at, d.joint(c).at, d.sliders[slider].dir);
+    let (dx, dy) = (pc.0 - pa.0, pc.1 - pa.1);
+    let along = dx * dir.0 + dy * dir.1;
+    if along.abs() > 1e-9 * dx.hypot(dy) || !along.is_finite() {
+        return true;
+    }
+    let (na, nc) = (&d.joint(a).name, &d.joint(c).name);
+    errors.push(
+        nc.span(),
+        format!("the drawing has `{na}`-`{nc}` square to the line `{nc}`'s block slides on (the pose where its two assemblies meet), so it does not say which is meant: draw the mechanism at a pose where `{nc}` is ahead of or behind the foot of `{na}` on that line"),
+    );
+    false
+}
+
 /// The side of `c` from the line `a -> b` (twice the signed area of the
 /// triangle): positive on the left.
 pub(super) fn side(a: (f64, f64), b: (f64, f64), c: (f64, f64)) -> f64 {
@@ -443,6 +519,14 @@ fn find_dyad(d: &Drawing, placed: &Placed, ground: LinkId) -> Option<Step> {
             if let Some(&(lb, b)) = on[i + 1..].iter().find(|(_, b)| *b != a) {
                 return Some(Step::Rrr { a, la, b, lb, c });
             }
+        }
+        // A link with a placed joint and a block at `c` on its line.
+        let block = d
+            .sliders
+            .iter()
+            .position(|s| s.at == c && placed.frame(s.link).is_none());
+        if let (Some(&(la, a)), Some(slider)) = (on.first(), block) {
+            return Some(Step::Rrp { a, la, c, slider });
         }
     }
     None

@@ -65,6 +65,28 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
             (c, "rrr", args, vec![l(la).clone(), l(lb).clone()])
         }
         Step::Triad { .. } => return triad(d, step),
+        Step::Guide(k) => return guide(d, k),
+        Step::Slide { slider, input } => {
+            let s = &d.sliders[slider];
+            let args = vec![
+                name_arg(&line_name(d, slider)),
+                name_arg(&d.input(input).name),
+            ];
+            (j(s.at), "slider", args, vec![l(s.link).clone()])
+        }
+        Step::Rrp { a, la, c, slider } => {
+            let s = &d.sliders[slider];
+            let (a, c) = (j(a), j(c));
+            let ahead = (c.at.0 - a.at.0) * s.dir.0 + (c.at.1 - a.at.1) * s.dir.1;
+            let mode = Ident::new(if ahead > 0.0 { "plus" } else { "minus" }, c.name.span());
+            let args = vec![
+                name(a),
+                value(distance(a, c), c.name.span()),
+                name_arg(&line_name(d, slider)),
+                name_arg(&mode),
+            ];
+            (c, "rrp", args, vec![l(la).clone(), l(s.link).clone()])
+        }
         Step::Point { link, frame, joint } => {
             let (x, y) = local(j(frame.origin), j(frame.toward), j(joint));
             let args = vec![
@@ -83,6 +105,33 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
         args,
         args_span: span,
         links,
+        slides: Vec::new(),
+    }
+}
+
+/// The name of the line the block of `sliders[k]` slides on: `BLOCK_line`.
+fn line_name(d: &Drawing, k: usize) -> Ident {
+    let block = &d.link(d.sliders[k].link).name;
+    Ident::new(&format!("{block}_line"), block.span())
+}
+
+/// `let BLOCK_line = guide((x, y), angle);`: the ground's line through the
+/// block's joint as drawn.
+fn guide(d: &Drawing, k: usize) -> Let {
+    let s = &d.sliders[k];
+    let (x, y) = (&d.joint(s.at).x, &d.joint(s.at).y);
+    let name = line_name(d, k);
+    let span = name.span();
+    Let {
+        name,
+        joints: Vec::new(),
+        kind: Ident::new("guide", span),
+        args: vec![
+            value(quote!((#x, #y)), d.joint(s.at).name.span()),
+            Arg::Value(s.angle.clone(), s.unit.clone()),
+        ],
+        args_span: span,
+        links: Vec::new(),
         slides: Vec::new(),
     }
 }
@@ -138,6 +187,10 @@ fn triad(d: &Drawing, step: &Step) -> Let {
 /// +x, or from its carrier's first two joints as listed.
 fn drawn_input(d: &Drawing) -> TokenStream {
     let input = &d.inputs[0];
+    if input.slide {
+        // A slide is measured from the block's drawn place.
+        return quote!(0.0);
+    }
     let links = (
         d.link_named(&input.link),
         match &input.carrier {

@@ -1,8 +1,10 @@
 //! The drawn form of a definition: the joints where the drawing has them
 //! (the reference pose), the links as sets of joints (the fixed one named
 //! `ground`) and the inputs (a link's angle from the ground, or from the link
-//! that carries its motor). It is decomposed into the group statements
-//! (`ground`, `crank`, `rrr`, `triad`, `point`) a user would write by hand,
+//! that carries its motor, or a block's slide), and the blocks sliding on
+//! the ground (`slider B at J on ground along angle`). It is decomposed into
+//! the group statements (`ground`, `guide`, `crank`, `slider`, `rrr`, `rrp`,
+//! `triad`, `point`) a user would write by hand,
 //! in solve order, every length, offset and assembly mode read from the
 //! drawing; the rest of the macro sees only those statements.
 //!
@@ -52,11 +54,25 @@ struct Link {
     joints: Vec<JointId>,
 }
 
-/// An input of the drawing: `angle(link)` or `angle(link, carrier)`.
+/// An input of the drawing: `angle(link)` or `angle(link, carrier)`, or
+/// `slide(block)` (`slide`: the block's displacement along its line, from
+/// its drawn place).
 struct Input {
     name: Ident,
     link: Ident,
     carrier: Option<Ident>,
+    slide: bool,
+}
+
+/// A block of the drawing sliding on the ground: its link (whose one joint
+/// is `at`), and its line through `at`'s drawn place at `angle` (`unit`
+/// `deg` or radians), the direction's value at the parameters' defaults.
+struct Slider {
+    link: LinkId,
+    at: JointId,
+    angle: Expr,
+    unit: Option<Ident>,
+    dir: (f64, f64),
 }
 
 /// The drawing, read.
@@ -64,6 +80,7 @@ struct Drawing {
     joints: Vec<Joint>,
     links: Vec<Link>,
     inputs: Vec<Input>,
+    sliders: Vec<Slider>,
     /// Where to point a message about the whole drawing (the `links` keyword).
     span: Span,
 }
@@ -94,6 +111,11 @@ impl Drawing {
         self.links.iter().position(|l| &l.name == name).map(LinkId)
     }
 
+    /// The slider whose block is `l`.
+    fn slider_of(&self, l: LinkId) -> Option<&Slider> {
+        self.sliders.iter().find(|s| s.link == l)
+    }
+
     /// The fixed link.
     fn ground(&self) -> Option<LinkId> {
         self.links.iter().position(|l| l.name == GROUND).map(LinkId)
@@ -111,7 +133,12 @@ pub(super) fn expand(
     scope: &NumberScope<'_>,
     errors: &mut Diagnostics,
 ) -> (Vec<Item>, Vec<Failed>) {
-    let drawn = |i: &Item| matches!(i, Item::Joints(..) | Item::Links(..) | Item::Input(..));
+    let drawn = |i: &Item| {
+        matches!(
+            i,
+            Item::Joints(..) | Item::Links(..) | Item::Input(..) | Item::Slider(..)
+        )
+    };
     let Some(first) = items.iter().position(drawn) else {
         return (items, Vec::new());
     };

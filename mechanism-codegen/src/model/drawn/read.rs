@@ -2,10 +2,10 @@
 //! valued at the parameters' defaults), each link's joints, each input's
 //! link; malformed entries are reported on their tokens and left out.
 
-use super::{Drawing, Input, Joint, JointId, Link, GROUND};
+use super::{Drawing, Input, Joint, JointId, Link, LinkId, Slider, GROUND};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::model::args::NumberScope;
-use crate::parse::{Assign, Item};
+use crate::parse::{Assign, DrawnSlider, Item};
 use crate::value::convert;
 use proc_macro2::Span;
 use syn::{Expr, Ident};
@@ -17,9 +17,11 @@ pub(super) fn read(items: Vec<Item>, scope: &NumberScope<'_>, errors: &mut Diagn
         joints: Vec::new(),
         links: Vec::new(),
         inputs: Vec::new(),
+        sliders: Vec::new(),
         span: Span::call_site(),
     };
     let mut link_lists = Vec::new();
+    let mut sliders = Vec::new();
     // Every joint written, drawn well or not (a malformed one is reported
     // once, where it is drawn, not again in each link that lists it).
     let mut all_joints = Vec::new();
@@ -42,6 +44,7 @@ pub(super) fn read(items: Vec<Item>, scope: &NumberScope<'_>, errors: &mut Diagn
                     drawing.inputs.push(i);
                 }
             }
+            Item::Slider(s) => sliders.push(s),
             _ => {}
         }
     }
@@ -50,7 +53,68 @@ pub(super) fn read(items: Vec<Item>, scope: &NumberScope<'_>, errors: &mut Diagn
             drawing.links.push(l);
         }
     }
+    for s in sliders {
+        read_slider(&mut drawing, s, scope, errors);
+    }
     drawing
+}
+
+/// `slider BLOCK at J on ground along angle;`: the block becomes a link with
+/// the one joint `J`, sliding on the ground along the line through `J`'s
+/// drawn place.
+fn read_slider(d: &mut Drawing, s: DrawnSlider, scope: &NumberScope<'_>, errors: &mut Diagnostics) {
+    if s.on != GROUND {
+        errors.push(
+            s.on.span(),
+            format!("the drawn form has sliders on the ground only, and `{}` moves; write this block with the group statements (`rrp` on a guide carried by `{}`, or `rpr`)", s.on, s.on),
+        );
+        return;
+    }
+    if d.links.iter().any(|l| l.name == s.block) {
+        errors.push(
+            s.block.span(),
+            format!("`{}` is a link of `links {{ .. }}` already; a slider's block is a link of its own: give it a name of its own", s.block),
+        );
+        return;
+    }
+    let Some(at) = d.joints.iter().position(|j| j.name == s.at).map(JointId) else {
+        let names = d
+            .joints
+            .iter()
+            .map(|j| j.name.to_string())
+            .collect::<Vec<_>>();
+        errors.push(
+            s.at.span(),
+            format!(
+                "no joint named `{}` is drawn{}",
+                s.at,
+                did_you_mean(&s.at.to_string(), names.iter().map(String::as_str))
+            ),
+        );
+        return;
+    };
+    let angle = match convert(&s.angle, scope) {
+        Ok(v) => v,
+        Err(e) => return errors.error(e),
+    };
+    let defaults = |p: &Ident| scope.params.iter().find(|(n, _)| n == p).map(|(_, v)| *v);
+    let Some(mut a) = angle.eval_with(&defaults) else {
+        return;
+    };
+    if s.unit.as_ref().is_some_and(|u| u == "deg") {
+        a = a.to_radians();
+    }
+    d.links.push(Link {
+        name: s.block,
+        joints: vec![at],
+    });
+    d.sliders.push(Slider {
+        link: LinkId(d.links.len() - 1),
+        at,
+        angle: s.angle,
+        unit: s.unit,
+        dir: (a.cos(), a.sin()),
+    });
 }
 
 /// `NAME = (x, y)`: a joint at the reference pose.
@@ -158,7 +222,7 @@ fn read_link(
 /// `angle(LINK)` or `angle(LINK, CARRIER)`.
 fn read_input(name: Ident, value: &Expr, errors: &mut Diagnostics) -> Option<Input> {
     let usage = format!(
-        "an input is a link's angle: `input {name} = angle(crank);` (from the ground) or `input {name} = angle(shank, thigh);` (from the link carrying its motor)"
+        "an input is a link's angle, `input {name} = angle(crank);` (from the ground) or `input {name} = angle(shank, thigh);` (from the link carrying its motor), or a block's slide, `input {name} = slide(block);`"
     );
     let ident = |e: &Expr| match e {
         Expr::Path(p) => p.path.get_ident().cloned(),
@@ -175,11 +239,19 @@ fn read_input(name: Ident, value: &Expr, errors: &mut Diagnostics) -> Option<Inp
             name,
             link: link.clone(),
             carrier: None,
+            slide: false,
         }),
         (Some("angle"), [Some(link), Some(carrier)]) => Some(Input {
             name,
             link: link.clone(),
             carrier: (carrier != GROUND).then(|| carrier.clone()),
+            slide: false,
+        }),
+        (Some("slide"), [Some(block)]) => Some(Input {
+            name,
+            link: block.clone(),
+            carrier: None,
+            slide: true,
         }),
         _ => {
             errors.error(syn::Error::new_spanned(value, usage));
