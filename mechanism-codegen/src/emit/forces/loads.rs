@@ -39,24 +39,8 @@ impl ForceEmitter<'_> {
     /// The inertia force, weight and inertia couple of a link with mass, and
     /// their powers.
     fn mass(&mut self, m: &MassSpec) {
-        let gravity = self.model.kinetics.gravity.is_some();
         let link = m.link.to_string();
-        let at = &m.at;
-        let mass = self.checked(&m.mass, &link, Quantity::Mass);
-        let inertia_force = format_ident!("pw_inertia_force_{}", link);
-        let weight = format_ident!("pw_weight_{}", link);
-        let v_g = self.velocity(at);
-        let mut force_terms = Vec::new();
-        if v_g.is_some() {
-            let a = format_ident!("acc_{}", at);
-            self.code
-                .extend(quote!(let #inertia_force = acc.#a * (-#mass);));
-            force_terms.push(quote!(#inertia_force));
-        }
-        if gravity {
-            self.code.extend(quote!(let #weight = gravity * #mass;));
-            force_terms.push(quote!(#weight));
-        }
+        let forces = self.part_forces(m, &link);
         let couple = match (&m.inertia, self.rates_of(&m.link)) {
             (Some(j), Some((w, alpha))) if j.fold() != Some(0.0) => {
                 let j = self.checked(j, &link, Quantity::Inertia);
@@ -67,21 +51,7 @@ impl ForceEmitter<'_> {
             }
             _ => None,
         };
-        if let Some(v) = &v_g {
-            self.power
-                .push(quote!(::mechanism::geometry::dot(&#inertia_force, &#v)));
-            if gravity {
-                self.power
-                    .push(quote!(::mechanism::geometry::dot(&#weight, &#v)));
-            }
-        }
-        if !force_terms.is_empty() {
-            let total = force_terms
-                .iter()
-                .skip(1)
-                .fold(force_terms[0].clone(), |acc, t| quote!(#acc + #t));
-            self.force_on(&link, total, at);
-        }
+        self.place_part(&link, m, forces);
         if let Some(c) = couple {
             self.add(&link, quote!(::mechanism::force::Wrench::couple(#c)));
         }
@@ -96,37 +66,11 @@ impl ForceEmitter<'_> {
     /// alpha`, the sum folded when every `j` is literal. Locals are numbered
     /// by part from 1 in the order written (`pw_inertia_force_LINK_1`).
     fn mass_parts(&mut self, link: &str, parts: &[&MassSpec]) {
-        let gravity = self.model.kinetics.gravity.is_some();
         let mut inertias = Vec::new();
         for (k, m) in parts.iter().enumerate() {
             let part = format!("{link}_{}", k + 1);
-            let at = &m.at;
-            let mass = self.checked_as(&m.mass, link, &part, Quantity::Mass);
-            let mut force_terms = Vec::new();
-            let v_g = self.velocity(at);
-            if let Some(v) = &v_g {
-                let (f, a) = (
-                    format_ident!("pw_inertia_force_{}", part),
-                    format_ident!("acc_{}", at),
-                );
-                self.code.extend(quote!(let #f = acc.#a * (-#mass);));
-                self.power
-                    .push(quote!(::mechanism::geometry::dot(&#f, &#v)));
-                force_terms.push(quote!(#f));
-            }
-            if gravity {
-                let w = format_ident!("pw_weight_{}", part);
-                self.code.extend(quote!(let #w = gravity * #mass;));
-                if let Some(v) = &v_g {
-                    self.power
-                        .push(quote!(::mechanism::geometry::dot(&#w, &#v)));
-                }
-                force_terms.push(quote!(#w));
-            }
-            if let Some((first, rest)) = force_terms.split_first() {
-                let total = rest.iter().fold(first.clone(), |acc, t| quote!(#acc + #t));
-                self.force_on(link, total, at);
-            }
+            let forces = self.part_forces(m, &part);
+            self.place_part(link, m, forces);
             if let Some(j) = m.inertia.as_ref().filter(|j| j.fold() != Some(0.0)) {
                 inertias.push((part, j));
             }
@@ -145,15 +89,54 @@ impl ForceEmitter<'_> {
                     .iter()
                     .map(|(part, j)| self.checked_as(j, link, part, Quantity::Inertia))
                     .collect();
-                terms[1..]
-                    .iter()
-                    .fold(terms[0].clone(), |acc, t| quote!(#acc + #t))
+                sum(&terms).expect("at least one part has a moment of inertia")
             }
         };
         let c = format_ident!("pw_inertia_couple_{}", link);
         self.code.extend(quote!(let #c = -((#j) * #alpha);));
         self.power.push(quote!(#c * #w));
         self.add(link, quote!(::mechanism::force::Wrench::couple(#c)));
+    }
+
+    /// A mass part's inertia force (`pw_inertia_force_PART = -m a_G`, when
+    /// its centre moves) and weight (`pw_weight_PART = m g`, with gravity):
+    /// their code emitted (the mass checked first when not literal), the
+    /// forces and their powers returned for [`Self::place_part`].
+    fn part_forces(&mut self, m: &MassSpec, part: &str) -> PartForces {
+        let gravity = self.model.kinetics.gravity.is_some();
+        let mass = self.checked_as(&m.mass, &m.link.to_string(), part, Quantity::Mass);
+        let v_g = self.velocity(&m.at);
+        let mut out = PartForces::default();
+        if v_g.is_some() {
+            let (f, a) = (
+                format_ident!("pw_inertia_force_{}", part),
+                format_ident!("acc_{}", m.at),
+            );
+            self.code.extend(quote!(let #f = acc.#a * (-#mass);));
+            out.terms.push(quote!(#f));
+        }
+        if gravity {
+            let w = format_ident!("pw_weight_{}", part);
+            self.code.extend(quote!(let #w = gravity * #mass;));
+            out.terms.push(quote!(#w));
+        }
+        if let Some(v) = v_g {
+            out.powers = out
+                .terms
+                .iter()
+                .map(|t| quote!(::mechanism::geometry::dot(&#t, &#v)))
+                .collect();
+        }
+        out
+    }
+
+    /// A part's forces and powers added: the powers to the balance, the sum
+    /// of the forces to `link`'s load at the part's centre.
+    fn place_part(&mut self, link: &str, m: &MassSpec, forces: PartForces) {
+        self.power.extend(forces.powers);
+        if let Some(total) = sum(&forces.terms) {
+            self.force_on(link, total, &m.at);
+        }
     }
 
     /// External force number `n` and its power.
@@ -268,6 +251,19 @@ fn part_text(link: &str, part: &str) -> String {
         Some(k) => format!(" (part {k})"),
         None => String::new(),
     }
+}
+
+/// A mass part's inertia force and weight terms, and their powers.
+#[derive(Default)]
+struct PartForces {
+    terms: Vec<TokenStream>,
+    powers: Vec<TokenStream>,
+}
+
+/// `a + b + ..` of `terms`, `None` for none.
+fn sum(terms: &[TokenStream]) -> Option<TokenStream> {
+    let (first, rest) = terms.split_first()?;
+    Some(rest.iter().fold(first.clone(), |acc, t| quote!(#acc + #t)))
 }
 
 /// What [`ForceEmitter::checked`] checks.
