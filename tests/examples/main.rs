@@ -11,7 +11,8 @@
 //! - [`firmware_table`]: the host's values the firmware compares with
 //!   (`tests/firmware/src/expected.rs`) equal what the host computes now;
 //! - [`cli_options`]: the examples' command line (options, `--help`, typos);
-//! - [`drawn`]: the four-bar and the five-bar written as drawn, against the
+//! - [`drawn`]: the four-bar, five-bar, slider-crank and Stephenson III
+//!   written as drawn, against the
 //!   grouped scenes over their input ranges.
 
 /// The examples' command line, at the crate root where its macros expect it.

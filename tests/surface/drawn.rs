@@ -86,55 +86,6 @@ fn a_drawn_four_bar_is_the_grouped_one() {
 }
 
 mechanism! {
-    /// The Stephenson III six-bar of `examples/stephenson.rs`, drawn at
-    /// phi = -28.402242220599071 deg (its joints from the example's table):
-    /// the triad and its assembly are found from the drawing.
-    pub DrawnStephenson {
-        const phi0 = -28.402242220599071 * pi / 180.0;
-        joints {
-            O2 = (0.0, 0.0),
-            O4 = (0.30, 0.0),
-            O6 = (0.05, 0.42),
-            C = (0.05 + 0.24 * cos(phi0), 0.42 + 0.24 * sin(phi0)),
-            A = (-5.9201362974731851e-2, 5.3807049927811955e-2),
-            B = (1.7859606664268302e-1, 1.5893736176674175e-1),
-            P = (6.9064856947974249e-3, 1.8845381871298039e-1),
-        }
-        links {
-            ground = [O2, O4, O6],
-            link6 = [O6, C],
-            crank2 = [O2, A],
-            rocker = [O4, B],
-            link5 = [C, P],
-            coupler = [A, B, P],
-        }
-        input phi = angle(link6);
-        range phi = (-50.43 deg, -2.64 deg);
-    }
-}
-
-#[path = "../../examples/common/stephenson.rs"]
-mod stephenson;
-
-#[test]
-fn a_drawn_stephenson_is_the_example_with_its_triad() {
-    // Proves: a drawing whose only decomposition is a triad becomes the
-    // triad statement, in the drawn assembly: over link 6's swing its joints
-    // agree with the example's (written with lengths, not coordinates) to
-    // the rounding of the 17-digit drawing times the conditioning.
-    let d = DrawnStephenson::<f64>::default();
-    let g = stephenson::Stephenson::<f64>::default();
-    for k in 0..=100 {
-        let phi = (-50.43 + (50.43 - 2.64) * k as f64 / 100.0).to_radians();
-        let pd = d.position(&DrawnStephensonInput { phi }).unwrap();
-        let pg = g.position(&stephenson::StephensonInput { phi }).unwrap();
-        for (x, y, what) in [(pd.A, pg.A, "A"), (pd.B, pg.B, "B"), (pd.P, pg.P, "P")] {
-            assert!((x - y).norm() < 1e-12, "{what} at {k}: {x} vs {y}");
-        }
-    }
-}
-
-mechanism! {
     /// The 2R leg of `relative_drivers::Leg` drawn with its knee bent, the
     /// hip and knee motors as inputs (the knee's angle from the thigh), its
     /// masses and load written as for the grouped form.
