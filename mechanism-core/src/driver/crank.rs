@@ -82,13 +82,6 @@ pub fn position_cos_sin<T: Real>(
     cos: T,
     sin: T,
 ) -> Result<CrankPosition<T>, Error<T>> {
-    place(pivot, length, unit_pair(cos, sin)?, true)
-}
-
-/// The unit vector of an encoder's `(cos, sin)` pair (any positive
-/// multiple of it). Errors: `NonFinite`; `NonPositive` for a zero pair.
-#[inline(always)]
-fn unit_pair<T: Real>(cos: T, sin: T) -> Result<Vector2<T>, Error<T>> {
     let v = finite_vec(Vector2::new(cos, sin), P, "crank (cos, sin)")?;
     // `|v|^2` plainly where it is a normal number with room below (the
     // usual encoder pair, of size about 1); a pair far from unit size (f64
@@ -101,7 +94,7 @@ fn unit_pair<T: Real>(cos: T, sin: T) -> Result<Vector2<T>, Error<T>> {
         scaled_pair(v)
     };
     let norm = positive(norm, P, "crank |(cos, sin)|")?;
-    Ok(v / norm)
+    place(pivot, length, v / norm, true)
 }
 
 /// A crank carried by a moving link (a motor or an encoder between two
@@ -136,7 +129,7 @@ pub fn position_cos_sin_on<T: Real>(
     cos: T,
     sin: T,
 ) -> Result<CrankPosition<T>, Error<T>> {
-    let own = unit_pair(cos, sin)?;
+    let own = position_cos_sin(&Point2::origin(), T::one(), cos, sin)?.axis;
     place(pivot, length, turned(carrier, own.x, own.y), true)
 }
 
