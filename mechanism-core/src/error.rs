@@ -24,6 +24,8 @@ pub enum Primitive {
     Slider,
     /// A linear-actuator driver (a length between two points is the input).
     Actuator,
+    /// A target driver (a point placed by two inputs, its coordinates).
+    Target,
     /// A point fixed on a link.
     LinkPoint,
     /// Class II group revolute-revolute-revolute.
@@ -50,6 +52,7 @@ impl Primitive {
             Primitive::Crank => "crank",
             Primitive::Slider => "slider",
             Primitive::Actuator => "actuator",
+            Primitive::Target => "target",
             Primitive::LinkPoint => "link point",
             Primitive::Rrr => "RRR",
             Primitive::Rrp => "RRP",

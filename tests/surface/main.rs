@@ -35,6 +35,7 @@ mod describe;
 mod drawn;
 mod dsl;
 mod forces;
+mod inverse;
 mod functions;
 mod masses;
 mod relative_drivers;

@@ -110,14 +110,15 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
         }
     }
     let (input, quantity) = (path("Input"), path("Quantity"));
-    let inputs = model.stmts.iter().filter_map(|s| {
+    let inputs = model.stmts.iter().flat_map(|s| {
         let q = if kinds::of(s).input_is_angle() {
             quote!(Angle)
         } else {
             quote!(Length)
         };
         let driver = s.name.to_string();
-        s.kind.input().map(|i| {
+        let (input, quantity) = (&input, &quantity);
+        s.kind.inputs().into_iter().map(move |i| {
             let i = i.to_string();
             quote!(#input { name: #i, quantity: #quantity::#q, driver: #driver })
         })

@@ -14,7 +14,7 @@ pub(super) fn input_names(model: &Model) -> Vec<Ident> {
     model
         .stmts
         .iter()
-        .filter_map(|s| s.kind.input().cloned())
+        .flat_map(|s| s.kind.inputs().into_iter().cloned())
         .collect()
 }
 

@@ -28,8 +28,8 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
     let inputs: Vec<Ident> = model
         .stmts
         .iter()
-        .filter_map(|s| s.kind.input().cloned())
-        .chain(model.failed.iter().filter_map(|f| f.input.clone()))
+        .flat_map(|s| s.kind.inputs().into_iter().cloned())
+        .chain(model.failed.iter().flat_map(|f| f.inputs.iter().cloned()))
         .filter(|i| unique(i))
         .collect();
     let params_marker = if params.is_empty() {

@@ -27,6 +27,7 @@ mod rpr;
 mod rrp;
 mod rrr;
 mod slider;
+mod target;
 pub(crate) mod tokens;
 pub mod triad;
 
@@ -470,6 +471,7 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             input,
             mode: *mode,
         }),
+        Kind::Target { x, y } => Box::new(target::Target { stmt, x, y }),
         Kind::Rrr { a, l1, b, l2, mode } => Box::new(rrr::Rrr {
             stmt,
             a,

@@ -153,9 +153,9 @@ pub(super) fn inputs(model: &Model, ranges: &[RangeDecl], errors: &mut Diagnosti
     let mut inputs: Vec<Input> = model
         .stmts
         .iter()
-        .filter_map(|s| {
+        .flat_map(|s| {
             let angle = matches!(s.kind, Kind::Crank { .. });
-            s.kind.input().map(|name| Input {
+            s.kind.inputs().into_iter().map(move |name| Input {
                 name: name.clone(),
                 angle,
                 range: angle.then_some(Range {

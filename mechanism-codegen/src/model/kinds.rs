@@ -75,6 +75,7 @@ pub(super) fn lower_kind(
         "crank" => crank(&mut a)?,
         "slider" => slider(&mut a)?,
         "actuator" => actuator(&mut a)?,
+        "target" => target(&mut a)?,
         "rrr" => rrr(&mut a)?,
         "rrp" => rrp(&mut a)?,
         "rpr" => rpr(&mut a)?,
@@ -199,6 +200,20 @@ fn slider(a: &mut Args) -> Option<Kind> {
         input: a.name("input name")?,
         offset: a.optional_number("offset"),
     })
+}
+
+/// `target(X, Y)`: the two inputs, which must differ.
+fn target(a: &mut Args) -> Option<Kind> {
+    let x = a.name("x input name")?;
+    let y = a.name("y input name")?;
+    if x == y {
+        a.errors.push(
+            y.span(),
+            format!("a target takes two inputs, its x and its y coordinate, and both are `{x}`; name the second another way, e.g. `target({x}, {x}_y)`"),
+        );
+        return None;
+    }
+    Some(Kind::Target { x, y })
 }
 
 /// `actuator(A, radius, B, INPUT, mode)`.

@@ -9,7 +9,7 @@ use super::{
     drawn, inputs, modes, Allowed, Failed, Kind, Kinetics, Level, Local, Mode, Model, Stmt,
 };
 use crate::diag::{did_you_mean, Diagnostics};
-use crate::parse::vocabulary::{input_position, links_created, KINDS};
+use crate::parse::vocabulary::{input_positions, links_created, KINDS};
 use crate::parse::{self, Arg, Assign, Definition, Item, RangeDecl};
 use crate::value::{convert, Value};
 use proc_macro2::Span;
@@ -115,9 +115,10 @@ fn defined_names(items: &[Item]) -> Vec<(String, &'static str)> {
                     .iter()
                     .map(|n| (n.to_string(), "a slide displacement")),
             );
-            let input = input_position(&kind)
-                .and_then(|i| l.args.get(i))
-                .and_then(|a| match a {
+            let inputs = input_positions(&kind)
+                .iter()
+                .filter_map(|&i| l.args.get(i))
+                .filter_map(|a| match a {
                     Arg::Value(Expr::Path(p), None) => p.path.get_ident(),
                     Arg::Value(Expr::Cast(c), None) => match &*c.expr {
                         Expr::Path(p) => p.path.get_ident(),
@@ -125,7 +126,7 @@ fn defined_names(items: &[Item]) -> Vec<(String, &'static str)> {
                     },
                     _ => None,
                 });
-            if let Some(input) = input {
+            for input in inputs {
                 names.push((input.to_string(), "a driver input"));
             }
         }
@@ -379,7 +380,7 @@ impl<'a> Body<'a> {
                 kind: l.kind.clone(),
                 links: Vec::new(),
                 slides: Vec::new(),
-                input: None,
+                inputs: Vec::new(),
             });
             let joints: Vec<Failed> = joints.collect();
             self.failed.push(failed(l));
@@ -464,18 +465,20 @@ fn triad_joints(l: &parse::Let, kind: &Kind, links: &[Ident]) -> Vec<Stmt> {
 /// define are kept, so that the rest of the definition and the user's code
 /// see no cascade.
 fn failed(l: parse::Let) -> Failed {
-    let input = input_position(&l.kind.to_string())
-        .and_then(|i| l.args.get(i))
-        .and_then(|a| match a {
+    let inputs = input_positions(&l.kind.to_string())
+        .iter()
+        .filter_map(|&i| l.args.get(i))
+        .filter_map(|a| match a {
             Arg::Value(Expr::Path(p), None) => p.path.get_ident().cloned(),
             _ => None,
-        });
+        })
+        .collect();
     Failed {
         name: l.name,
         kind: l.kind,
         links: l.links,
         slides: l.slides,
-        input,
+        inputs,
     }
 }
 

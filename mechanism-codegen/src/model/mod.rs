@@ -160,8 +160,8 @@ pub struct Failed {
     pub links: Vec<Ident>,
     /// Slides it names.
     pub slides: Vec<Ident>,
-    /// Its input name, for a driver.
-    pub input: Option<Ident>,
+    /// Its input names, for a driver.
+    pub inputs: Vec<Ident>,
 }
 
 /// A `let` statement of the definition, by its place in the order written
@@ -263,6 +263,10 @@ pub enum Kind {
         input: Ident,
         mode: Mode,
     },
+    /// Target driver: a point placed by two inputs, its coordinates `x`
+    /// and `y` (length units, global frame); its link is the effector, a
+    /// body that translates with it and does not turn.
+    Target { x: Ident, y: Ident },
     /// RRR group.
     Rrr {
         a: Ident,
@@ -351,7 +355,7 @@ impl Kind {
     pub fn link_count(&self) -> usize {
         match self {
             Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } => 0,
-            Kind::Crank { .. } | Kind::Slider { .. } => 1,
+            Kind::Crank { .. } | Kind::Slider { .. } | Kind::Target { .. } => 1,
             Kind::Triad(_) => 4,
             _ => 2,
         }
@@ -370,17 +374,19 @@ impl Kind {
     pub fn is_driver(&self) -> bool {
         matches!(
             self,
-            Kind::Crank { .. } | Kind::Slider { .. } | Kind::Actuator { .. }
+            Kind::Crank { .. } | Kind::Slider { .. } | Kind::Actuator { .. } | Kind::Target { .. }
         )
     }
 
-    /// The input variable of a driver.
-    pub fn input(&self) -> Option<&Ident> {
+    /// The input variables of a driver (one, or a target's two), none for
+    /// the other statements.
+    pub fn inputs(&self) -> Vec<&Ident> {
         match self {
             Kind::Crank { input, .. }
             | Kind::Slider { input, .. }
-            | Kind::Actuator { input, .. } => Some(input),
-            _ => None,
+            | Kind::Actuator { input, .. } => vec![input],
+            Kind::Target { x, y } => vec![x, y],
+            _ => Vec::new(),
         }
     }
 }
@@ -391,6 +397,7 @@ pub fn group_kind(kind: &Kind) -> Option<&'static str> {
         Kind::Crank { .. } => "crank",
         Kind::Slider { .. } => "slider",
         Kind::Actuator { .. } => "actuator",
+        Kind::Target { .. } => "target",
         Kind::Rrr { .. } => "RRR",
         Kind::Rrp { .. } => "RRP",
         Kind::Rpr { .. } => "RPR",

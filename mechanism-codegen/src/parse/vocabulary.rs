@@ -7,8 +7,8 @@ use syn::Expr;
 
 /// Every statement kind the language knows, for suggestions.
 pub const KINDS: &[&str] = &[
-    "ground", "guide", "crank", "slider", "actuator", "rrr", "rrp", "rpr", "prp", "rpp", "point",
-    "triad",
+    "ground", "guide", "crank", "slider", "actuator", "target", "rrr", "rrp", "rpr", "prp", "rpp",
+    "point", "triad",
 ];
 
 /// How a statement kind is written (for messages); "" for an unknown kind.
@@ -19,6 +19,7 @@ pub fn usage(kind: &str) -> &'static str {
         "crank" => "crank(PIVOT, radius, INPUT[, CARRIER[, zero_angle]]) as LINK",
         "slider" => "slider(GUIDE, INPUT[, offset]) as LINK",
         "actuator" => "actuator(A, radius, B, INPUT, left|right) as (LINK, CYLINDER)",
+        "target" => "target(X_INPUT, Y_INPUT) as EFFECTOR",
         "rrr" => "rrr(A, l1, B, l2, left|right) as (LINK1, LINK2)",
         "rrp" => "rrp(A, l, GUIDE, plus|minus[, offset]) as (LINK, BLOCK) slide S",
         "rpr" => "let S = rpr(A, B, plus|minus[, offset]) as (BLOCK, LINK)",
@@ -41,6 +42,7 @@ pub fn arity(kind: &str, args: &[Arg]) -> Option<(usize, usize)> {
         "guide" => (2, 3),
         "crank" => (3, 5),
         "slider" => (2, 3),
+        "target" => (2, 2),
         "actuator" | "rrr" => (5, 5),
         "rrp" => (4, 5),
         "rpr" => (3, 4),
@@ -78,6 +80,7 @@ pub fn links_created(kind: &str) -> &'static str {
         "crank" => "the crank, turning about its pivot",
         "slider" => "the block, sliding on the guide",
         "actuator" => "the link from A, and the cylinder from B",
+        "target" => "the effector, moving with the point and not turning",
         "rrr" => "L1 from A, L2 from B",
         "rrp" => "the link from A, and the block on the guide",
         "rpr" => "the block pinned at A, and the link pivoted at B",
@@ -90,12 +93,13 @@ pub fn links_created(kind: &str) -> &'static str {
     }
 }
 
-/// Where a driver's input name sits among its arguments.
-pub fn input_position(kind: &str) -> Option<usize> {
+/// Where a driver's input names sit among its arguments.
+pub fn input_positions(kind: &str) -> &'static [usize] {
     match kind {
-        "crank" => Some(2),
-        "slider" => Some(1),
-        "actuator" => Some(3),
-        _ => None,
+        "crank" => &[2],
+        "slider" => &[1],
+        "actuator" => &[3],
+        "target" => &[0, 1],
+        _ => &[],
     }
 }

@@ -102,7 +102,7 @@ fn every_symbol(model: &Model) -> Vec<(String, Category, Ident)> {
         for slide in stmt.slides.iter().flatten() {
             table.insert(slide.to_string(), (Category::Slide, slide.clone()));
         }
-        if let Some(input) = stmt.kind.input() {
+        for input in stmt.kind.inputs() {
             table.insert(input.to_string(), (Category::Input, input.clone()));
         }
     }
@@ -119,7 +119,7 @@ fn every_symbol(model: &Model) -> Vec<(String, Category, Ident)> {
         for slide in &f.slides {
             table.insert(slide.to_string(), (Category::Slide, slide.clone()));
         }
-        if let Some(input) = &f.input {
+        for input in &f.inputs {
             table.insert(input.to_string(), (Category::Input, input.clone()));
         }
     }
@@ -191,7 +191,7 @@ fn definitions(model: &Model) -> Vec<(Ident, Place)> {
         for slide in stmt.slides.iter().flatten() {
             push(slide, "as a slide displacement of");
         }
-        if let Some(input) = stmt.kind.input() {
+        for input in stmt.kind.inputs() {
             push(input, "as the input of");
         }
     }

@@ -43,9 +43,7 @@ pub(super) fn dof_matches(model: &Model, errors: &mut Diagnostics) {
         let (bodies, pairs) = kinds::of(stmt).bodies_and_pairs();
         links += bodies;
         joints += pairs;
-        if let Some(i) = stmt.kind.input() {
-            inputs.push(i.to_string());
-        }
+        inputs.extend(stmt.kind.inputs().iter().map(ToString::to_string));
     }
     let mobility = 3 * (links - 1) - 2 * joints;
     if mobility != n {

@@ -2,3 +2,4 @@
 pub mod actuator;
 pub mod crank;
 pub mod slider;
+pub mod target;

@@ -68,6 +68,7 @@ pub mod rpr;
 pub mod rrp;
 pub mod rrr;
 pub mod slider;
+pub mod target;
 
 pub use body::{inertia_and_gravity, moment_of, Wrench};
 

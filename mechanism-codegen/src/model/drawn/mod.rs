@@ -169,7 +169,7 @@ fn failed(d: &Drawing) -> Vec<Failed> {
         kind: Ident::new(kind, d.span),
         links: Vec::new(),
         slides: Vec::new(),
-        input: None,
+        inputs: Vec::new(),
     };
     let mut out: Vec<Failed> = d.joints.iter().map(|j| none(&j.name, "joints")).collect();
     out.extend(d.links.iter().map(|l| Failed {
@@ -177,7 +177,7 @@ fn failed(d: &Drawing) -> Vec<Failed> {
         ..none(&l.name, "links")
     }));
     out.extend(d.inputs.iter().map(|i| Failed {
-        input: Some(i.name.clone()),
+        inputs: vec![i.name.clone()],
         ..none(&i.name, "crank")
     }));
     out

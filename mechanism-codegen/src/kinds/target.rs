@@ -1,0 +1,137 @@
+//! `target(X, Y) as EFFECTOR`: a point placed by two inputs, its
+//! coordinates (length units, global frame). It is how inverse kinematics
+//! is written: the groups hanging on the point solve the motors' links from
+//! it. The effector is a body of its own that moves with the point and
+//! does not turn; its driving effort is the force (and couple) a positioner
+//! must apply to it, `drive_X` and `drive_Y` its components.
+
+use super::forces::{body_name, drive, rx, ForceCx, Held, Reaction};
+use super::lane::{Lane, Step};
+use super::rates::{vec_ty, RateCx};
+use super::tokens::tag;
+use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::model::Stmt;
+use crate::value::Value;
+use mechanism_core::driver;
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use syn::Ident;
+
+/// A `target` statement.
+pub(super) struct Target<'a> {
+    pub stmt: &'a Stmt,
+    pub x: &'a Ident,
+    pub y: &'a Ident,
+}
+
+impl<'a> GroupKind<'a> for Target<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        vec![]
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        vec![LinkShape::new(&[&self.stmt.name], Turn::None, None)]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        Vec::new()
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let p = driver::target::position(input(self.x), input(self.y))?;
+        pose.found(self.stmt, Some(p), &[mechanism_core::Vector2::x()]);
+        Ok(None)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (x, y, t) = (self.x, self.y, tag(self.stmt));
+        Solve::Own {
+            expr: quote!(::mechanism::driver::target::position(input.#x, input.#y) #t),
+            ty: quote!(::mechanism::Point2<T>),
+        }
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let (x, y, t) = (self.x, self.y, tag(self.stmt));
+        let pv = cx.motion(self.stmt);
+        cx.code(if cx.accel() {
+            quote!(let #pv = ::mechanism::driver::target::acceleration(accels.#x, accels.#y) #t;)
+        } else {
+            quote!(let #pv = ::mechanism::driver::target::velocity(rates.#x, rates.#y) #t;)
+        });
+        cx.field(pv, vec_ty());
+    }
+
+    /// The point at its two inputs.
+    fn residuals(
+        &self,
+        r: &mut super::closure::Residuals<'_>,
+        _link_axis: &dyn Fn(&Ident) -> TokenStream,
+    ) {
+        let (n, x, y) = (r.n, self.x, self.y);
+        r.push(
+            "x at its input",
+            quote!(<T as ::mechanism::Real>::as_f64(pos.#n.x) - <T as ::mechanism::Real>::as_f64(pos.input.#x)),
+        );
+        r.push(
+            "y at its input",
+            quote!(<T as ::mechanism::Real>::as_f64(pos.#n.y) - <T as ::mechanism::Real>::as_f64(pos.input.#y)),
+        );
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Target"
+    }
+
+    fn describe(&self) -> String {
+        let (n, links, x, y) = (&self.stmt.name, links_text(self.stmt), self.x, self.y);
+        format!("driver: target `{n}` at inputs (`{x}`, `{y}`), effector `{links}`")
+    }
+
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Block"
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, x, y) = (self.stmt, self.x, self.y);
+        let (rx, link, name) = (rx(stmt), &stmt.links[0], &stmt.name);
+        let load = cx.load_about(link, name);
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::target::reactions(&#load)),
+        );
+        cx.power(quote!(#rx.drive.x * vel.rates.#x + #rx.drive.y * vel.rates.#y));
+        for (input, axis) in [(x, "x"), (y, "y")] {
+            let doc = format!("Driving force on `{link}` along +{axis} (input `{input}`; force units): the {axis} component of the force a positioner applies at `{name}` to hold it on its path.");
+            let mut r = drive(&rx, input, "drive", Held::Push, doc);
+            let a = format_ident!("{}", axis);
+            r.value = quote!(#rx.drive.#a);
+            cx.reaction(r);
+        }
+        let ground = body_name(&None);
+        cx.reaction(Reaction {
+            name: format_ident!("m_{}_{}", ground, link),
+            ty: quote!(T),
+            value: quote!(#rx.couple),
+            doc: format!("Couple of the positioner on `{link}` (force x length units, counter-clockwise positive): zero unless loads act on `{link}` away from `{name}`."),
+            held: Held::Torque,
+        });
+    }
+
+    /// A carriage and the effector, on two sliding pairs: two freedoms.
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (2, 2)
+    }
+
+    fn lane(&self, _lane: &mut Lane, _s: &mut Step<'_>) -> Option<()> {
+        None
+    }
+}
