@@ -145,3 +145,44 @@ mechanism! {
         outputs { D, E, S3, S4, link3, link4, s_ram }
     }
 }
+
+mechanism! {
+    /// The five-bar robot of `FiveBar` given its end point (m, kg, N):
+    /// inverse kinematics, written as drawn. The drawing is the robot at
+    /// q1 = 100 deg, q2 = 45 deg (coordinates to 20 digits, so the lengths
+    /// read from it are 0.1 and 0.16 to the last bit); the end point `P`
+    /// is the input, `input x = P.x; input y = P.y;`, and each motor link
+    /// hangs on it by an RRR whose elbow is on the side drawn. Masses at
+    /// the links' midpoints (`G1`, `G2`, `H1`, `H2`, drawn as points of
+    /// their links) and on the effector (`P_effector`, the body moving
+    /// with `P`: a pen holder), gravity along -y and a 2 N payload at `P`.
+    pub FiveBarIk {
+        joints {
+            O1 = (0.0, 0.0),
+            O2 = (0.08, 0.0),
+            A = (-0.017364817766693034885, 0.098480775301220805937),
+            C = (0.15071067811865475244, 0.07071067811865475244),
+            P = (0.088752052427120438854, 0.2182272151659171658),
+            G1 = (-0.0086824088833465174425, 0.049240387650610402968),
+            G2 = (0.11535533905932737622, 0.03535533905932737622),
+            H1 = (0.035693617330213701984, 0.15835399523356898587),
+            H2 = (0.11973136527288759565, 0.14446894664228595912),
+        }
+        links {
+            ground = [O1, O2],
+            arm1 = [O1, A, G1],
+            arm2 = [O2, C, G2],
+            forearm1 = [A, P, H1],
+            forearm2 = [C, P, H2],
+        }
+        input x = P.x;
+        input y = P.y;
+        mass arm1 { m = 0.12, at = G1, j = 1.1e-4 };
+        mass arm2 { m = 0.12, at = G2, j = 1.1e-4 };
+        mass forearm1 { m = 0.09, at = H1, j = 2.0e-4 };
+        mass forearm2 { m = 0.09, at = H2, j = 2.0e-4 };
+        mass P_effector { m = 0.05, at = P };
+        gravity (0.0, -9.81);
+        force at P on P_effector = (0.0, -2.0);
+    }
+}

@@ -13,7 +13,9 @@
 //! - [`cli_options`]: the examples' command line (options, `--help`, typos);
 //! - [`drawn`]: the four-bar, five-bar, slider-crank and Stephenson III
 //!   written as drawn, against the
-//!   grouped scenes over their input ranges.
+//!   grouped scenes over their input ranges;
+//! - [`inverse`]: the five-bar robot given its end point (`five_bar_ik`)
+//!   against the forward five-bar.
 
 /// The examples' command line, at the crate root where its macros expect it.
 #[path = "../../examples/common/cli.rs"]
@@ -32,6 +34,7 @@ mod cli_options;
 mod drawn;
 mod firmware_table;
 mod forces;
+mod inverse;
 mod kinematics;
 mod plots;
 mod png;

@@ -104,10 +104,7 @@ impl<'a> GroupKind<'a> for Target<'a> {
         let (stmt, x, y) = (self.stmt, self.x, self.y);
         let (rx, link, name) = (rx(stmt), &stmt.links[0], &stmt.name);
         let load = cx.load_about(link, name);
-        cx.solve(
-            stmt,
-            quote!(::mechanism::force::target::reactions(&#load)),
-        );
+        cx.solve(stmt, quote!(::mechanism::force::target::reactions(&#load)));
         cx.power(quote!(#rx.drive.x * vel.rates.#x + #rx.drive.y * vel.rates.#y));
         for (input, axis) in [(x, "x"), (y, "y")] {
             let doc = format!("Driving force on `{link}` along +{axis} (input `{input}`; force units): the {axis} component of the force a positioner applies at `{name}` to hold it on its path.");

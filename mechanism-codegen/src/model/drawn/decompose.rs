@@ -6,7 +6,7 @@
 //! and inputs are checked, and Gruebler's count against the inputs. A
 //! drawing it cannot decompose is an error naming the links left.
 
-use super::{Drawing, InputId, JointId, LinkId, GROUND};
+use super::{Axis, Drawing, InputId, JointId, LinkId, GROUND};
 use crate::diag::{did_you_mean, Diagnostics};
 
 /// A link's frame: the joint at its origin and the joint its axis points to.
@@ -67,6 +67,13 @@ pub(super) enum Step {
         la: LinkId,
         c: JointId,
         slider: usize,
+    },
+    /// A target driver: `joint` placed at the inputs `x` and `y`, its
+    /// coordinates (inverse kinematics).
+    Target {
+        joint: JointId,
+        x: InputId,
+        y: InputId,
     },
     /// A joint fixed on `link`, in the link's frame.
     Point {
@@ -181,7 +188,8 @@ fn structure_holds(d: &Drawing, errors: &mut Diagnostics) -> bool {
         }
     }
     let link_names: Vec<String> = d.links.iter().map(|l| l.name.to_string()).collect();
-    for i in &d.inputs {
+    coordinates_hold(d, errors);
+    for i in d.inputs.iter().filter(|i| i.coordinate.is_none()) {
         for l in std::iter::once(&i.link).chain(&i.carrier) {
             if d.link_named(l).is_none() {
                 errors.push(
@@ -213,6 +221,77 @@ fn structure_holds(d: &Drawing, errors: &mut Diagnostics) -> bool {
         }
     }
     errors.len() == before
+}
+
+/// The joints whose coordinates are inputs, each with its `x` and `y`
+/// inputs (inverse kinematics), in the order of their `x` inputs.
+fn targets(d: &Drawing) -> Vec<(JointId, InputId, InputId)> {
+    let find = |joint: &syn::Ident, axis: Axis| {
+        d.input_ids().find(|&k| {
+            let i = d.input(k);
+            i.coordinate == Some(axis) && &i.link == joint
+        })
+    };
+    d.input_ids()
+        .filter(|&k| d.input(k).coordinate == Some(Axis::X))
+        .filter_map(|k| {
+            let joint = &d.input(k).link;
+            let j = d.joints.iter().position(|j| &j.name == joint)?;
+            Some((JointId(j), k, find(joint, Axis::Y)?))
+        })
+        .collect()
+}
+
+/// Every coordinate input names a moving joint, once, with its other
+/// coordinate an input too; errors otherwise.
+fn coordinates_hold(d: &Drawing, errors: &mut Diagnostics) {
+    let joint_names: Vec<String> = d.joints.iter().map(|j| j.name.to_string()).collect();
+    let fixed = d.ground().map(|g| &d.link(g).joints);
+    for (n, i) in d.inputs.iter().enumerate() {
+        let Some(axis) = i.coordinate else { continue };
+        let (joint, (this, other)) = (
+            &i.link,
+            match axis {
+                Axis::X => ("x", "y"),
+                Axis::Y => ("y", "x"),
+            },
+        );
+        let Some(j) = d.joints.iter().position(|j| &j.name == joint) else {
+            errors.push(
+                joint.span(),
+                format!(
+                    "no joint named `{joint}`{}; a coordinate input is a joint's, `input {} = P.{this};`",
+                    did_you_mean(&joint.to_string(), joint_names.iter().map(String::as_str)),
+                    i.name
+                ),
+            );
+            continue;
+        };
+        if fixed.is_some_and(|f| f.contains(&JointId(j))) {
+            errors.push(
+                joint.span(),
+                format!("`{joint}` is a joint of the ground, which does not move; a coordinate input places a moving joint (an end point, a foot)"),
+            );
+            continue;
+        }
+        let same = |k: &super::Input| k.coordinate == i.coordinate && &k.link == joint;
+        if d.inputs[..n].iter().any(same) {
+            errors.push(
+                i.name.span(),
+                format!("`{joint}.{this}` is already an input; remove this one"),
+            );
+        }
+        let partner = d
+            .inputs
+            .iter()
+            .any(|k| k.coordinate.is_some() && k.coordinate != i.coordinate && &k.link == joint);
+        if !partner {
+            errors.push(
+                i.name.span(),
+                format!("`{joint}.{this}` is an input, so `{joint}.{other}` must be one too: a joint is placed by both its coordinates (inverse kinematics); add `input {joint}_{other} = {joint}.{other};`"),
+            );
+        }
+    }
 }
 
 /// Gruebler's count of the drawing's freedoms equals its inputs; else an
@@ -303,7 +382,14 @@ fn solve_order(d: &Drawing) -> Option<Outcome> {
     }
     placed.set_frame(ground, fixed[0], fixed[0]);
     steps.extend((0..d.sliders.len()).map(Step::Guide));
-    let mut pending: Vec<InputId> = d.input_ids().collect();
+    for (joint, x, y) in targets(d) {
+        placed.place(joint);
+        steps.push(Step::Target { joint, x, y });
+    }
+    let mut pending: Vec<InputId> = d
+        .input_ids()
+        .filter(|&k| d.input(k).coordinate.is_none())
+        .collect();
     loop {
         let before = pending.len();
         pending.retain(|&k| !place_driver(d, k, ground, &mut placed, &mut steps));

@@ -87,6 +87,10 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
             ];
             (c, "rrp", args, vec![l(la).clone(), l(s.link).clone()])
         }
+        Step::Target { joint, x, y } => {
+            let args = vec![name_arg(&d.input(x).name), name_arg(&d.input(y).name)];
+            (j(joint), "target", args, vec![effector(j(joint))])
+        }
         Step::Point { link, frame, joint } => {
             let (x, y) = local(j(frame.origin), j(frame.toward), j(joint));
             let args = vec![
@@ -107,6 +111,12 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
         links,
         slides: Vec::new(),
     }
+}
+
+/// The effector of a target joint `J`, the body that moves with it and
+/// does not turn: `J_effector`.
+pub(super) fn effector(j: &Joint) -> Ident {
+    Ident::new(&format!("{}_effector", j.name), j.name.span())
 }
 
 /// The name of the line the block of `sliders[k]` slides on: `BLOCK_line`.

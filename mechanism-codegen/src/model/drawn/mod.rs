@@ -56,12 +56,21 @@ struct Link {
 
 /// An input of the drawing: `angle(link)` or `angle(link, carrier)`, or
 /// `slide(block)` (`slide`: the block's displacement along its line, from
-/// its drawn place).
+/// its drawn place), or a joint's coordinate, `J.x` or `J.y` (`coordinate`;
+/// `link` is then the joint's name): inverse kinematics.
 struct Input {
     name: Ident,
     link: Ident,
     carrier: Option<Ident>,
     slide: bool,
+    coordinate: Option<Axis>,
+}
+
+/// Which coordinate of a joint an input is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Axis {
+    X,
+    Y,
 }
 
 /// A block of the drawing sliding on the ground: its link (whose one joint
@@ -175,6 +184,16 @@ fn failed(d: &Drawing) -> Vec<Failed> {
     out.extend(d.links.iter().map(|l| Failed {
         links: vec![l.name.clone()],
         ..none(&l.name, "links")
+    }));
+    // A coordinate input's joint has its effector link (`J_effector`).
+    let effectors = d.joints.iter().filter(|j| {
+        d.inputs
+            .iter()
+            .any(|i| i.coordinate.is_some() && i.link == j.name)
+    });
+    out.extend(effectors.map(|j| Failed {
+        links: vec![emit::effector(j)],
+        ..none(&emit::effector(j), "links")
     }));
     out.extend(d.inputs.iter().map(|i| Failed {
         inputs: vec![i.name.clone()],

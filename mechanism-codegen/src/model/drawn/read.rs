@@ -2,7 +2,7 @@
 //! valued at the parameters' defaults), each link's joints, each input's
 //! link; malformed entries are reported on their tokens and left out.
 
-use super::{Drawing, Input, Joint, JointId, Link, LinkId, Slider, GROUND};
+use super::{Axis, Drawing, Input, Joint, JointId, Link, LinkId, Slider, GROUND};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::model::args::NumberScope;
 use crate::parse::{Assign, DrawnSlider, Item};
@@ -222,12 +222,28 @@ fn read_link(
 /// `angle(LINK)` or `angle(LINK, CARRIER)`.
 fn read_input(name: Ident, value: &Expr, errors: &mut Diagnostics) -> Option<Input> {
     let usage = format!(
-        "an input is a link's angle, `input {name} = angle(crank);` (from the ground) or `input {name} = angle(shank, thigh);` (from the link carrying its motor), or a block's slide, `input {name} = slide(block);`"
+        "an input is a link's angle, `input {name} = angle(crank);` (from the ground) or `input {name} = angle(shank, thigh);` (from the link carrying its motor), or a block's slide, `input {name} = slide(block);`, or a joint's coordinate, `input {name} = P.x;` with `P.y` an input too (inverse kinematics)"
     );
     let ident = |e: &Expr| match e {
         Expr::Path(p) => p.path.get_ident().cloned(),
         _ => None,
     };
+    if let Expr::Field(f) = value {
+        let axis = match &f.member {
+            syn::Member::Named(m) if m == "x" => Some(Axis::X),
+            syn::Member::Named(m) if m == "y" => Some(Axis::Y),
+            _ => None,
+        };
+        if let (Some(joint), Some(axis)) = (ident(&f.base), axis) {
+            return Some(Input {
+                name,
+                link: joint,
+                carrier: None,
+                slide: false,
+                coordinate: Some(axis),
+            });
+        }
+    }
     let Expr::Call(call) = value else {
         errors.error(syn::Error::new_spanned(value, usage));
         return None;
@@ -240,18 +256,21 @@ fn read_input(name: Ident, value: &Expr, errors: &mut Diagnostics) -> Option<Inp
             link: link.clone(),
             carrier: None,
             slide: false,
+            coordinate: None,
         }),
         (Some("angle"), [Some(link), Some(carrier)]) => Some(Input {
             name,
             link: link.clone(),
             carrier: (carrier != GROUND).then(|| carrier.clone()),
             slide: false,
+            coordinate: None,
         }),
         (Some("slide"), [Some(block)]) => Some(Input {
             name,
             link: block.clone(),
             carrier: None,
             slide: true,
+            coordinate: None,
         }),
         _ => {
             errors.error(syn::Error::new_spanned(value, usage));
