@@ -260,9 +260,9 @@ fn coordinates_hold(d: &Drawing, errors: &mut Diagnostics) {
             errors.push(
                 joint.span(),
                 format!(
-                    "no joint named `{joint}`{}; a coordinate input is a joint's, `input {} = P.{this};`",
+                    "no joint named `{joint}` (a coordinate input, `input {} = P.{this};`, names a joint of `joints`){}",
+                    i.name,
                     did_you_mean(&joint.to_string(), joint_names.iter().map(String::as_str)),
-                    i.name
                 ),
             );
             continue;
@@ -281,10 +281,12 @@ fn coordinates_hold(d: &Drawing, errors: &mut Diagnostics) {
                 format!("`{joint}.{this}` is already an input; remove this one"),
             );
         }
-        let partner = d
-            .inputs
-            .iter()
-            .any(|k| k.coordinate.is_some() && k.coordinate != i.coordinate && &k.link == joint);
+        // A partner on an unknown joint is reported there (a misspelt name).
+        let partner = d.inputs.iter().any(|k| {
+            k.coordinate.is_some()
+                && k.coordinate != i.coordinate
+                && (&k.link == joint || !d.joints.iter().any(|j| j.name == k.link))
+        });
         if !partner {
             errors.push(
                 i.name.span(),

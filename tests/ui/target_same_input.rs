@@ -1,0 +1,14 @@
+// Error: a target whose two inputs have one name.
+use mechanism::mechanism;
+
+mechanism! {
+    pub Arm {
+        let O1 = ground(0.0, 0.0);
+        let O2 = ground(0.08, 0.0);
+        let P = target(x, x) as effector;
+        let A = rrr(O1, 0.1, P, 0.16, left) as (arm1, fore1);
+        let C = rrr(O2, 0.1, P, 0.16, right) as (arm2, fore2);
+    }
+}
+
+fn main() {}
