@@ -6,10 +6,10 @@
 //!
 //! The generated `FiveBarIk` (written as drawn, `examples/common/scenes.rs`)
 //! takes the end point as its input. Its force analysis gives the force a
-//! positioner would need at the end point, `D = (drive_x, drive_y)`; the
-//! motors supply it, `tau = J^T D` by virtual work, with `J = dP/dq` the
-//! inverse of the rate map `K = dq/dP` the velocity analysis gives (its
-//! columns: the motor rates at unit end-point rates). Each row is checked
+//! positioner would need at the end point, `D = (drive_x, drive_y)`, and
+//! the torques of the two motors declared (`motor q1 = angle(arm1);`) that
+//! supply it, `drive_q1` and `drive_q2` (`tau = J^T D` by virtual work).
+//! Each row is checked
 //! against the forward five-bar (`FiveBar`, the motors as cranks): the
 //! forward position of the motor angles found is the end point given
 //! (`fwd_err`, m). An end point out of reach is a typed error.
@@ -19,7 +19,6 @@
 #[path = "common/cli.rs"]
 mod cli;
 mod common;
-use common::ik::motor_torques;
 use common::scenes::{FiveBar, FiveBarIk, FiveBarIkInput, FiveBarInput};
 
 fn main() {
@@ -60,14 +59,12 @@ fn main() {
         };
         let row = ik.solve(&p, &v, &a).and_then(|s| {
             let f = ik.forces(&s.position, &s.velocity, &s.acceleration)?;
-            let tau = motor_torques(&ik, &s.position, (f.drive_x, f.drive_y))?;
             let q = FiveBarInput {
                 q1: s.position.arm1,
                 q2: s.position.arm2,
             };
             let fwd = fk.position(&q)?;
             let err = (fwd.P.x - p.x).hypot(fwd.P.y - p.y);
-            let (t1, t2) = tau.unwrap_or((f64::INFINITY, f64::INFINITY));
             let (pos, vel, acc) = (&s.position, &s.velocity, &s.acceleration);
             Ok([
                 t,
@@ -79,8 +76,8 @@ fn main() {
                 vel.arm2,
                 acc.arm1,
                 acc.arm2,
-                t1,
-                t2,
+                f.drive_q1,
+                f.drive_q2,
                 err,
             ])
         });

@@ -2,7 +2,6 @@
 //! (the command line is `cli.rs`, mounted at each example's root).
 #![allow(dead_code)]
 
-pub mod ik;
 pub mod plots;
 pub mod scenes;
 pub mod seed003;

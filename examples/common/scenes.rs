@@ -156,6 +156,8 @@ mechanism! {
     /// the links' midpoints (`G1`, `G2`, `H1`, `H2`, drawn as points of
     /// their links) and on the effector (`P_effector`, the body moving
     /// with `P`: a pen holder), gravity along -y and a 2 N payload at `P`.
+    /// The motors turning `arm1` and `arm2` about the base pivots hold `P`
+    /// on its path: their torques are the forces' `drive_q1`, `drive_q2`.
     pub FiveBarIk {
         joints {
             O1 = (0.0, 0.0),
@@ -177,6 +179,8 @@ mechanism! {
         }
         input x = P.x;
         input y = P.y;
+        motor q1 = angle(arm1);
+        motor q2 = angle(arm2);
         mass arm1 { m = 0.12, at = G1, j = 1.1e-4 };
         mass arm2 { m = 0.12, at = G2, j = 1.1e-4 };
         mass forearm1 { m = 0.09, at = H1, j = 2.0e-4 };

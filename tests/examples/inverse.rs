@@ -4,7 +4,6 @@
 //! forward five-bar written here: the inverse's answers put back through
 //! the forward definitions, which share no group with it.
 
-use crate::common::ik::motor_torques;
 use crate::scenes::{FiveBar, FiveBarIk, FiveBarIkInput, FiveBarInput};
 use mechanism::{mechanism, Fault, Primitive, Vector2};
 
@@ -92,9 +91,9 @@ fn forward_of_inverse_is_the_end_point() {
 
 #[test]
 fn motor_rates_and_torques_agree_with_the_forward_analysis() {
-    // Proves the inverse's motor rates and accelerations, and the motor
-    // torques the example derives from its positioner force
-    // (`common::ik::motor_torques`, tau = J^T D), are those of the forward
+    // Proves the inverse's motor rates and accelerations, and its motor
+    // torques (`drive_q1`, `drive_q2`: tau = J^T D from the positioner's
+    // force), are those of the forward
     // five-bar with the same masses, gravity and payload driven by those
     // motor motions: the end point's velocity and acceleration come back
     // within 1e-13 of their largest term, the torques within 1e-12 of the
@@ -115,9 +114,7 @@ fn motor_rates_and_torques_agree_with_the_forward_analysis() {
         let held = ik
             .forces(&s.position, &s.velocity, &s.acceleration)
             .unwrap();
-        let tau = motor_torques(&ik, &s.position, (held.drive_x, held.drive_y))
-            .unwrap()
-            .expect("the arms hold P inside the workspace");
+        let tau = (held.drive_q1, held.drive_q2);
         let f = fk
             .solve(
                 &LoadedFiveBarInput {

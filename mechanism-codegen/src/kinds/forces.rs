@@ -227,6 +227,7 @@ impl FieldsOnly {
         for stmt in model.stmts.iter().rev() {
             super::of(stmt).forces(&mut cx);
         }
+        cx.reactions.extend(super::target::motor_reactions(model));
         cx.reactions
     }
 }

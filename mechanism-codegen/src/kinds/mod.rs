@@ -27,7 +27,7 @@ mod rpr;
 mod rrp;
 mod rrr;
 mod slider;
-mod target;
+pub mod target;
 pub(crate) mod tokens;
 pub mod triad;
 

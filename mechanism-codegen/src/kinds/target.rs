@@ -10,7 +10,7 @@ use super::lane::{Lane, Step};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::tag;
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
-use crate::model::Stmt;
+use crate::model::{Kind, Model, Stmt};
 use crate::value::Value;
 use mechanism_core::driver;
 use proc_macro2::TokenStream;
@@ -131,4 +131,49 @@ impl<'a> GroupKind<'a> for Target<'a> {
     fn lane(&self, _lane: &mut Lane, _s: &mut Step<'_>) -> Option<()> {
         None
     }
+}
+
+/// The local holding the motors' torques (`mechanism::force::target::MotorTorques`).
+pub fn motors_local() -> Ident {
+    format_ident!("rx_motors")
+}
+
+/// The target statement the motors of `model` hold (validated: one).
+pub fn held_target(model: &Model) -> Option<&Stmt> {
+    let mut targets = model
+        .stmts
+        .iter()
+        .filter(|s| matches!(s.kind, Kind::Target { .. }));
+    match (targets.next(), targets.next()) {
+        (Some(t), None) => Some(t),
+        _ => None,
+    }
+}
+
+/// The motors' torque fields of the forces struct (`drive_NAME`), read from
+/// [`motors_local`]; none unless the definition has one target and two
+/// motors.
+pub fn motor_reactions(model: &Model) -> Vec<Reaction> {
+    let motors = &model.kinetics.motors;
+    let Some(target) = held_target(model) else {
+        return Vec::new();
+    };
+    if motors.len() != 2 {
+        return Vec::new();
+    }
+    let local = motors_local();
+    motors
+        .iter()
+        .enumerate()
+        .map(|(k, m)| {
+            let on = m.carrier.as_ref().map_or("the ground".to_string(), |c| format!("`{c}`"));
+            Reaction {
+                name: format_ident!("drive_{}", m.name),
+                ty: quote!(T),
+                value: quote!(#local.torque[#k]),
+                doc: format!("Torque of the motor `{}` on `{}` (reacting on {on}; force x length units, counter-clockwise positive) that holds `{}` on its path: the target's driving force mapped to the motors by virtual work, `tau = J^T D`.", m.name, m.link, target.name),
+                held: Held::Torque,
+            }
+        })
+        .collect()
 }

@@ -6,7 +6,8 @@
 use super::args::{literal_scope_for, NumberScope, MODE_PARAM};
 use super::kinds::lower_kind;
 use super::{
-    drawn, inputs, modes, Allowed, Failed, Kind, Kinetics, Level, Local, Mode, Model, Stmt,
+    drawn, inputs, modes, Allowed, Failed, Kind, Kinetics, Level, Local, Mode, Model, MotorSpec,
+    Stmt,
 };
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::vocabulary::{input_positions, links_created, KINDS};
@@ -317,6 +318,14 @@ impl<'a> Body<'a> {
             Item::Gravity(span, x, y) => self.gravity(span, x, y, errors),
             Item::Force(f) => self.force(f, errors),
             Item::Torque(on, value) => self.torque(on, value, errors),
+            Item::Motor(name, link, carrier) => {
+                self.kinetics.declared = true;
+                self.kinetics.motors.push(MotorSpec {
+                    name,
+                    link,
+                    carrier,
+                });
+            }
             Item::Range(r) => self.range(r),
             Item::Allow(span, what, groups) => self.checks.allow.push((span, what, groups)),
             Item::Loads(_) => {}

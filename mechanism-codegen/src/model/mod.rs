@@ -99,6 +99,8 @@ pub struct Kinetics {
     pub forces: Vec<ForceSpec>,
     /// `torque on LINK = t`.
     pub torques: Vec<TorqueSpec>,
+    /// The motors (`motor`), of an inverse-kinematics definition.
+    pub motors: Vec<MotorSpec>,
     /// `loads { name = default }`: values supplied per evaluation.
     pub loads: Vec<(Ident, f64)>,
     /// A load statement was written (even one that was rejected).
@@ -133,6 +135,18 @@ pub enum ForceSpecValue {
     Components(Value, Value),
     /// Signed magnitude along a guide's unit direction.
     Along(Ident, Value),
+}
+
+/// A motor of an inverse-kinematics definition: its torque on `link`
+/// (reacting on `carrier`, or the ground) is what holds the target driver's
+/// point on its path.
+pub struct MotorSpec {
+    /// Its name (the forces struct's `drive_NAME`).
+    pub name: Ident,
+    /// The link it turns.
+    pub link: Ident,
+    /// The link carrying it (`None`: the ground).
+    pub carrier: Option<Ident>,
 }
 
 /// An external couple on a link (force x length, counter-clockwise positive).

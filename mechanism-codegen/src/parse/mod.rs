@@ -81,6 +81,10 @@ pub enum Item {
     Force(Force),
     /// `torque on link3 = t;`
     Torque(Ident, Expr),
+    /// `motor q1 = angle(arm1);` or `motor knee = angle(shank, thigh);`: a
+    /// motor of an inverse-kinematics definition (its torque is what holds
+    /// the target): its name, its link and the link carrying it.
+    Motor(Ident, Ident, Option<Ident>),
     /// `range theta2 = (-40 deg, 40 deg);`: the input range to check.
     Range(RangeDecl),
     /// `allow singular;` / `allow singular B, C;`: the `allow` keyword's
@@ -194,8 +198,8 @@ pub enum ForceValue {
 
 /// The words that begin a statement (besides `let` and `const`).
 const STATEMENTS: &[&str] = &[
-    "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "range",
-    "allow", "joints", "links", "input", "slider",
+    "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "motor",
+    "range", "allow", "joints", "links", "input", "slider",
 ];
 
 /// Unit words a user may write after a value where none is taken (in a

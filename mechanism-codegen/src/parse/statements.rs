@@ -41,6 +41,7 @@ impl Parse for Item {
             "gravity" => parse_gravity(input, start, &word),
             "force" => parse_force(input, start),
             "torque" => parse_torque(input, start),
+            "motor" => parse_motor(input, start),
             "range" => parse_range(input, start),
             "allow" => parse_allow(input, start, &word),
             "joints" => Ok(Item::Joints(word.span(), drawn_list(input, "joints")?)),
@@ -384,6 +385,40 @@ fn parse_torque(input: ParseStream, start: Cursor) -> syn::Result<Item> {
         Valued::Load("a torque"),
     )?;
     Ok(Item::Torque(on, value))
+}
+
+/// `motor NAME = angle(LINK);` or `motor NAME = angle(LINK, CARRIER);`,
+/// after `motor`.
+fn parse_motor(input: ParseStream, start: Cursor) -> syn::Result<Item> {
+    let usage = "`motor q1 = angle(arm1);` or `motor knee = angle(shank, thigh);`";
+    let name: Ident = name_after(input, "motor", "the motor's name", usage)?;
+    equals(input, start, usage)?;
+    let word: Ident = name_after(input, "=", "`angle`", usage)?;
+    if word != "angle" {
+        return Err(syn::Error::new(
+            word.span(),
+            format!("a motor is a link's angle, `angle(..)`: {usage}"),
+        ));
+    }
+    let content;
+    parenthesized!(content in input);
+    let links: Punctuated<Ident, Token![,]> = Punctuated::parse_terminated(&content)
+        .map_err(|e| syn::Error::new(e.span(), format!("expected a link's name: {usage}")))?;
+    let mut links = links.into_iter();
+    let (Some(link), carrier, None) = (links.next(), links.next(), links.next()) else {
+        return Err(syn::Error::new(
+            word.span(),
+            format!("`angle` takes the motor's link, and the link carrying it if that is not the ground: {usage}"),
+        ));
+    };
+    end(
+        input,
+        start,
+        &format!("the `motor {name} = ..` statement"),
+        Valued::Load("a motor"),
+    )?;
+    let carrier = carrier.filter(|c| c != "ground");
+    Ok(Item::Motor(name, link, carrier))
 }
 
 /// `range INPUT = (lo, hi);`, after `range`.

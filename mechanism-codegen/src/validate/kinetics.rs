@@ -224,6 +224,76 @@ pub(super) fn torques_on_links(model: &Model, plan: &Plan, errors: &mut Diagnost
     }
 }
 
+/// Rule: motors belong to an inverse-kinematics definition (one `target`,
+/// whose two inputs they hold: two motors), each on a turning link, carried
+/// by another link or the ground, under a name no input or other motor has
+/// (its torque is the field `drive_NAME`).
+pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
+    let motors = &model.kinetics.motors;
+    let Some(first) = motors.first() else {
+        return;
+    };
+    let targets: Vec<_> = model
+        .stmts
+        .iter()
+        .filter(|s| matches!(s.kind, crate::model::Kind::Target { .. }))
+        .collect();
+    if targets.len() != 1 {
+        let found = if targets.is_empty() {
+            "this definition has none".to_string()
+        } else {
+            format!("this definition has {}", targets.len())
+        };
+        // A driver's own link: its torque is that driver's effort already.
+        let driven = model.stmts.iter().find(|s| {
+            s.kind.is_driver() && s.links.contains(&first.link) && s.kind.inputs().len() == 1
+        });
+        let forward = match driven {
+            Some(s) => format!("`{}` is driven by `{i}`, whose torque is already the field `drive_{i}`", first.link, i = s.kind.inputs()[0]),
+            None => "in a forward definition the motor is the driver (`crank`), its torque the field `drive_INPUT`".to_string(),
+        };
+        errors.push(
+            first.name.span(),
+            format!("a `motor` is what holds the point of an inverse-kinematics definition, one whose input is a point (`let P = target(x, y) as effector;`, or drawn `input x = P.x; input y = P.y;`), and {found}; {forward}"),
+        );
+        return;
+    }
+    if motors.len() != 2 {
+        let at = motors.get(2).unwrap_or(first);
+        errors.push(
+            at.name.span(),
+            format!("the target `{}` has two inputs, so two motors hold it, and {} are declared: the force analysis maps the target's force to exactly two motor torques", targets[0].name, motors.len()),
+        );
+    }
+    let inputs: Vec<String> = model.inputs.iter().map(|i| i.name.to_string()).collect();
+    for (k, m) in motors.iter().enumerate() {
+        let name = m.name.to_string();
+        if inputs.contains(&name) || motors[..k].iter().any(|o| o.name == m.name) {
+            errors.push(
+                m.name.span(),
+                format!("`{name}` is already an input's or a motor's name; a motor's torque is the field `drive_{name}`: name the motor another way, e.g. `{}`", another(&name)),
+            );
+        }
+        for link in std::iter::once(&m.link).chain(&m.carrier) {
+            if loadable_link(model, plan, link, "a motor", errors)
+                && plan.turning_link(&link.to_string()).is_none()
+                && Some(link) == Some(&m.link)
+            {
+                errors.push(
+                    link.span(),
+                    format!("`{link}` does not turn, so no motor can turn it; a motor turns a link of a group hanging on the target"),
+                );
+            }
+        }
+        if m.carrier.as_ref() == Some(&m.link) {
+            errors.push(
+                m.link.span(),
+                format!("the motor `{name}` turns `{}` relative to itself; name the link carrying it, or none for the ground", m.link),
+            );
+        }
+    }
+}
+
 /// Rule: a load value's name is not a parameter's, a constant's or a
 /// statement's.
 pub(super) fn load_names_unique(model: &Model, plan: &Plan, errors: &mut Diagnostics) {

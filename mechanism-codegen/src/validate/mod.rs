@@ -70,6 +70,9 @@ pub fn planned(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
     kinetics::torques_on_links(model, plan, errors);
     // A load value's name is its own.
     kinetics::load_names_unique(model, plan, errors);
+    // Motors hold an inverse-kinematics definition's target: two, on
+    // turning links, with names of their own.
+    kinetics::motors_hold_the_target(model, plan, errors);
 }
 
 #[cfg(test)]

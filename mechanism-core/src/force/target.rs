@@ -15,7 +15,7 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::force::body::Wrench;
-use crate::scalar::Real;
+use crate::scalar::{abs, Real};
 use nalgebra::Vector2;
 
 const P: Primitive = Primitive::Target;
@@ -56,9 +56,91 @@ pub fn reactions<T: Real>(load: &Wrench<T>) -> Result<TargetReactions<T>, Error<
     })
 }
 
+/// The torques of the two motors that hold an inverse-kinematics linkage's
+/// target point, and how well they are determined.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct MotorTorques<T: Real> {
+    /// Each motor's torque on its link (`M L^2 / s^2`, counter-clockwise
+    /// positive), in the order the rates were given.
+    pub torque: [T; 2],
+    /// `|det K| / (|k_x| |k_y|)`, the sine of the angle between the rate
+    /// map's rows, in (0, 1]: small towards a pose where the motors cannot
+    /// hold the point (a forward singularity).
+    pub min_pivot_ratio: T,
+}
+
+/// The motor torques `tau` that supply the force `drive` (the positioner's,
+/// [`reactions`]) at the target point: `K^T tau = drive`, with
+/// `K = d q / d P` the rate map of the motors' angles `q` by the point's
+/// coordinates; `k_x` and `k_y` are its columns, the two motors' rates
+/// (rad/s) at unit rates of `x` and of `y` (L/s) (virtual work: the motors'
+/// power `tau . q_dot` equals the positioner's `drive . v_P` for every
+/// `v_P`, so `tau = J^T drive` with `J = K^-1`).
+///
+/// Errors ([`Primitive::Target`]): `NonFinite`; `Singular` when
+/// `|det K| <= 16 eps |k_x| |k_y|`: the motors' rates do not span the
+/// point's motions, so no torques hold it (the five-bar's distal links in
+/// line).
+#[inline]
+pub fn motor_torques<T: Real>(
+    k_x: [T; 2],
+    k_y: [T; 2],
+    drive: &Vector2<T>,
+) -> Result<MotorTorques<T>, Error<T>> {
+    let finite = k_x.iter().chain(&k_y).all(|v| v.finite()) && drive.x.finite() && drive.y.finite();
+    if !finite {
+        return Err(Error::new(
+            P,
+            Fault::NonFinite {
+                what: "motor rates or target force",
+            },
+        ));
+    }
+    // K^T tau = drive: rows k_x . tau = drive.x, k_y . tau = drive.y.
+    let det = k_x[0] * k_y[1] - k_x[1] * k_y[0];
+    let scale =
+        ((k_x[0] * k_x[0] + k_x[1] * k_x[1]) * (k_y[0] * k_y[0] + k_y[1] * k_y[1])).sqrt_kernel();
+    let ratio = if scale > T::zero() {
+        abs(det) / scale
+    } else {
+        T::zero()
+    };
+    if !(ratio > T::lit(16.0) * T::eps()) {
+        return Err(Error::new(P, Fault::Singular { det, scale }));
+    }
+    Ok(MotorTorques {
+        torque: [
+            (drive.x * k_y[1] - k_x[1] * drive.y) / det,
+            (k_x[0] * drive.y - k_y[0] * drive.x) / det,
+        ],
+        min_pivot_ratio: ratio,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn motor_torques_do_the_positioners_work() {
+        // Proves the torques solve K^T tau = D: for every end-point rate v
+        // the motors' power tau . (K v) equals the positioner's D . v
+        // (checked at two rates, to 1e-15 of the terms), and rows in line
+        // (a forward singularity) are a typed Singular error.
+        let (k_x, k_y) = ([2.0f64, -0.5], [0.7, 3.0]);
+        let d = Vector2::new(1.5, -2.0);
+        let m = motor_torques(k_x, k_y, &d).unwrap();
+        for v in [Vector2::new(1.0, 0.0), Vector2::new(0.3, -0.8)] {
+            let q_dot = [k_x[0] * v.x + k_y[0] * v.y, k_x[1] * v.x + k_y[1] * v.y];
+            let motors = m.torque[0] * q_dot[0] + m.torque[1] * q_dot[1];
+            assert!((motors - d.dot(&v)).abs() <= 1e-15 * 10.0, "{motors}");
+        }
+        assert!(m.min_pivot_ratio > 0.9 && m.min_pivot_ratio <= 1.0);
+        let e = motor_torques([1.0, 2.0], [2.0, 4.0], &d).unwrap_err();
+        assert!(matches!(e.fault, Fault::Singular { .. }));
+        assert_eq!(e.primitive, Primitive::Target);
+    }
 
     #[test]
     fn the_positioner_balances_the_load() {

@@ -15,7 +15,7 @@ mod loads;
 use super::describe::{fields_impl, FieldEntry};
 use super::names::TypeNames;
 use crate::kinds::{self, forces::ForceCx};
-use crate::model::Model;
+use crate::model::{Kind, Model};
 use crate::plan::Plan;
 use crate::value::lit;
 use proc_macro2::TokenStream;
@@ -126,6 +126,59 @@ impl ForceCx for ForceEmitter<'_> {
 }
 
 impl ForceEmitter<'_> {
+    /// The motors' torques of an inverse-kinematics definition: the rate
+    /// map `K = dq/dP` from the velocity at unit rates of the target's
+    /// inputs (every other input's rate 0), each motor's rate its link's
+    /// angular velocity less its carrier's, then `K^T tau = D` with `D` the
+    /// target's driving force (`mechanism::force::target::motor_torques`).
+    /// Nothing without motors.
+    fn motors(&mut self, names: &TypeNames) {
+        let model = self.model;
+        let reactions = kinds::target::motor_reactions(model);
+        let Some(target) = kinds::target::held_target(model) else {
+            return;
+        };
+        let (Kind::Target { x, y }, false) = (&target.kind, reactions.is_empty()) else {
+            return;
+        };
+        let input_ty = &names.input;
+        let unit = |axis: &Ident| {
+            let fields = model.inputs.iter().map(|i| {
+                let (n, v) = (&i.name, lit(if i.name == *axis { 1.0 } else { 0.0 }));
+                quote!(#n: #v)
+            });
+            quote!(#input_ty { #(#fields),* })
+        };
+        let rate = |link: &Ident| self.rates_of(link).map(|(w, _)| w);
+        let rates: Vec<TokenStream> = model
+            .kinetics
+            .motors
+            .iter()
+            .map(|m| {
+                let own = rate(&m.link).unwrap_or_else(|| lit(0.0));
+                match m.carrier.as_ref().and_then(rate) {
+                    Some(c) => quote!(#own - #c),
+                    None => own,
+                }
+            })
+            .collect();
+        let (ux, uy) = (unit(x), unit(y));
+        let (rx, local, t) = (
+            kinds::forces::rx(target),
+            kinds::target::motors_local(),
+            kinds::tokens::tag(target),
+        );
+        self.code.extend(quote! {
+            let #local = {
+                let k_x = { let vel = self.velocity(pos, &#ux)?; [#(#rates),*] };
+                let k_y = { let vel = self.velocity(pos, &#uy)?; [#(#rates),*] };
+                ::mechanism::force::target::motor_torques(k_x, k_y, &#rx.drive) #t
+            };
+        });
+        self.conditions.push(quote!(#local.min_pivot_ratio));
+        self.reactions.extend(reactions);
+    }
+
     /// Velocity of a point (code), `None` when it never moves.
     fn velocity(&self, point: &Ident) -> Option<TokenStream> {
         self.moving.contains(&point.to_string()).then(|| {
@@ -161,8 +214,9 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
     for &i in plan.solve.iter().rev() {
         kinds::of(&model.stmts[i]).forces(&mut em);
     }
-    unique_names(&mut em.reactions);
     let names = TypeNames::of(model);
+    em.motors(&names);
+    unique_names(&mut em.reactions);
     let loads = loads_struct(model, &names);
     let mut items = forces_struct(model, &names, &em.reactions, loads.item);
     items.extend(forces_fields(&names, &em.reactions));
