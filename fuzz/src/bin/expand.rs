@@ -340,6 +340,8 @@ const WORDS: &[&str] = &[
     "crank",
     "slider",
     "actuator",
+    "target",
+    "motor",
     "rrr",
     "rrp",
     "rpr",
@@ -625,7 +627,7 @@ impl Gen<'_> {
             .cloned()
             .unwrap_or_else(|| "link".into());
         let (p, q) = (self.point(), self.point());
-        let stmt = match self.rng.u8(..16) {
+        let stmt = match self.rng.u8(..18) {
             0 => format!(
                 "let {name} = point({link}, from {p}, {}, {});",
                 self.length(0.5),
@@ -697,6 +699,13 @@ impl Gen<'_> {
             12 => format!("outputs {{ {p}, {link} }}"),
             13 => format!("dof {};", self.rng.u8(..4)),
             14 => "allow singular;".to_string(),
+            15 => {
+                let (x, y, e) = (self.fresh("x"), self.fresh("y"), self.fresh("e"));
+                self.inputs.push(x.clone());
+                self.links.push(e.clone());
+                format!("let {name} = target({x}, {y}) as {e};")
+            }
+            16 => format!("motor {} = angle({link});", self.fresh("q")),
             _ => {
                 let c = self.fresh("k");
                 let v = self.value(2);

@@ -106,7 +106,9 @@ pub fn motor_torques<T: Real>(
     } else {
         T::zero()
     };
-    if !(ratio > T::lit(16.0) * T::eps()) {
+    // `ratio` is finite here (finite rates); at or below the threshold the
+    // torques would be rounding noise.
+    if ratio <= T::lit(16.0) * T::eps() {
         return Err(Error::new(P, Fault::Singular { det, scale }));
     }
     Ok(MotorTorques {
