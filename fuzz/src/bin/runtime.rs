@@ -98,6 +98,26 @@ mechanism! {
 }
 
 mechanism! {
+    /// The five-bar robot given its end point (inverse kinematics), with
+    /// masses, gravity, a payload and the two motors' torques.
+    pub FiveBarIk {
+        params { base = 0.08, prox1 = 0.1, prox2 = 0.1, dist1 = 0.16, dist2 = 0.16, m = 0.1 }
+        let O1 = ground(0.0, 0.0);
+        let O2 = ground(base, 0.0);
+        let P = target(x, y) as effector;
+        let A = rrr(O1, prox1, P, dist1, left) as (arm1, fore1);
+        let C = rrr(O2, prox2, P, dist2, right) as (arm2, fore2);
+        mass arm1 { m = m, at = A, j = 1e-4 };
+        mass fore2 { m = m, at = C, j = 2e-4 };
+        mass effector { m = m, at = P };
+        gravity (0.0, -9.81);
+        force at P on effector = (1.0, -2.0);
+        motor q1 = angle(arm1);
+        motor q2 = angle(arm2);
+    }
+}
+
+mechanism! {
     /// A yoke (RPP: the crank pin in a slot of a link sliding on a fixed
     /// guide) and a cross-slide (PRP: a block on the crank's line and one on
     /// a fixed guide at angle `tilt`).
@@ -989,6 +1009,98 @@ fn five_bar<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     desc
 }
 
+/// The five-bar given its end point: the arms close on the target, their
+/// rates and accelerations keep the links' lengths, and the motor torques
+/// do the positioner's work (`tau . q_dot = D . v_P`), or typed errors.
+fn five_bar_ik<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
+    let l = |g: &mut Gen, d: f64| T::lit(g.length(d));
+    let m = FiveBarIk::<T> {
+        base: l(g, 0.08),
+        prox1: l(g, 0.1),
+        prox2: l(g, 0.1),
+        dist1: l(g, 0.16),
+        dist2: l(g, 0.16),
+        m: T::lit(g.plain(0.1)),
+    };
+    let inp = |x: f64, y: f64| FiveBarIkInput {
+        x: T::lit(x),
+        y: T::lit(y),
+    };
+    let (x, y) = (g.length(0.04), g.length(0.2));
+    let (v, a) = (inp(g.rate(), g.rate()), inp(g.rate(), g.rate()));
+    let desc = format!("{m:?} P ({x:e}, {y:e}) v {v:?} a {a:?}");
+    let scale = amax(&[
+        m.base.as_f64(),
+        m.prox1.as_f64(),
+        m.dist1.as_f64(),
+        x.abs(),
+        y.abs(),
+    ]);
+    let mut c = Check::new::<T>(f, scale);
+    let Some(q) = st.count(m.position(&inp(x, y))) else {
+        return desc;
+    };
+    let xs = [q.A.x, q.A.y, q.C.x, q.C.y, q.P.x, q.P.y, q.arm1, q.arm2];
+    if !c.finite("position", &xs.map(|x| x.as_f64())) {
+        return desc;
+    }
+    let (o1, o2, pp) = ((0.0, 0.0), (m.base.as_f64(), 0.0), pt(&q.P));
+    let (aa, cc) = (pt(&q.A), pt(&q.C));
+    c.dist("proximal 1", aa, o1, m.prox1.as_f64());
+    c.dist("proximal 2", cc, o2, m.prox2.as_f64());
+    c.dist("distal 1", pp, aa, m.dist1.as_f64());
+    c.dist("distal 2", pp, cc, m.dist2.as_f64());
+    let Some(vel) = st.count(m.velocity(&q, &v)) else {
+        return desc;
+    };
+    let vs = [vel.A.x, vel.A.y, vel.C.x, vel.C.y, vel.arm1, vel.arm2];
+    if !c.finite("velocity", &vs.map(|x| x.as_f64())) {
+        return desc;
+    }
+    let vm = vmax(&[ve(&vel.A), ve(&vel.C), ve(&vel.P)]);
+    let z = (0.0, 0.0);
+    c.dist_rate("velocity proximal 1", aa, o1, ve(&vel.A), z, vm);
+    c.dist_rate("velocity distal 2", pp, cc, ve(&vel.P), ve(&vel.C), vm);
+    let Some(acc) = st.count(m.acceleration(&q, &vel, &a)) else {
+        return desc;
+    };
+    let xs = [acc.A.x, acc.A.y, acc.C.x, acc.C.y, acc.arm1, acc.arm2];
+    if !c.finite("acceleration", &xs.map(|x| x.as_f64())) {
+        return desc;
+    }
+    let Some(fo) = st.count(m.forces(&q, &vel, &acc)) else {
+        return desc;
+    };
+    let efforts = [fo.drive_x, fo.drive_y, fo.drive_q1, fo.drive_q2].map(|x| x.as_f64());
+    if c.finite("forces", &efforts) {
+        // Virtual work: the motors' power is the positioner's.
+        let motors = efforts[2] * vel.arm1.as_f64() + efforts[3] * vel.arm2.as_f64();
+        let held = efforts[0] * v.x.as_f64() + efforts[1] * v.y.as_f64();
+        // The rounding of each sum is bounded by the sum of its terms'
+        // sizes.
+        let size = (efforts[2] * vel.arm1.as_f64()).abs()
+            + (efforts[3] * vel.arm2.as_f64()).abs()
+            + (efforts[0] * v.x.as_f64()).abs()
+            + (efforts[1] * v.y.as_f64()).abs();
+        // Rates from rounded positions are good to eps / condition^2
+        // (docs/stability.md, "End to end"); the torques inherit it.
+        let cond = fo.condition.as_f64().max(1e-150);
+        // A rate below the normal range has lost bits to underflow: its
+        // products say nothing of the torques.
+        let rates = [v.x, v.y, vel.arm1, vel.arm2].map(|r| r.as_f64().abs());
+        let normal = if std::mem::size_of::<T>() == 4 {
+            1e-30
+        } else {
+            1e-280
+        };
+        let subnormal = rates.iter().any(|&r| r > 0.0 && r < normal);
+        if !subnormal {
+            c.small_rate("motor power", (motors - held) * cond * cond, size);
+        }
+    }
+    desc
+}
+
 fn elbow<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
     let (l, pl) = (
         |g: &mut Gen, d: f64| T::lit(g.length(d)),
@@ -1336,7 +1448,7 @@ fn press<T: Real>(g: &mut Gen, st: &mut Stats, f: &mut Failures) -> String {
 
 /// The mechanisms, each in `f32` and `f64`.
 type Case = fn(&mut Gen, &mut Stats, &mut Failures) -> String;
-const CASES: [(&str, bool, Case); 14] = [
+const CASES: [(&str, bool, Case); 16] = [
     ("four-bar f64", false, four_bar::<f64>),
     ("four-bar f32", true, four_bar::<f32>),
     ("slider-crank f64", false, slider_crank::<f64>),
@@ -1345,6 +1457,8 @@ const CASES: [(&str, bool, Case); 14] = [
     ("shaper f32", true, shaper::<f32>),
     ("five-bar f64", false, five_bar::<f64>),
     ("five-bar f32", true, five_bar::<f32>),
+    ("five-bar IK f64", false, five_bar_ik::<f64>),
+    ("five-bar IK f32", true, five_bar_ik::<f32>),
     ("elbow five-bar f64", false, elbow::<f64>),
     ("elbow five-bar f32", true, elbow::<f32>),
     ("slides f64", false, slides::<f64>),

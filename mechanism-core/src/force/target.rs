@@ -111,11 +111,22 @@ pub fn motor_torques<T: Real>(
     if ratio <= T::lit(16.0) * T::eps() {
         return Err(Error::new(P, Fault::Singular { det, scale }));
     }
+    let torque = [
+        (drive.x * k_y[1] - k_x[1] * drive.y) / det,
+        (k_x[0] * drive.y - k_y[0] * drive.x) / det,
+    ];
+    // Finite rates and force can still give torques beyond the scalar's
+    // range (a force of 1e30 on a lever of 1e-10).
+    if !(torque[0].finite() && torque[1].finite()) {
+        return Err(Error::new(
+            P,
+            Fault::NonFinite {
+                what: "motor torques",
+            },
+        ));
+    }
     Ok(MotorTorques {
-        torque: [
-            (drive.x * k_y[1] - k_x[1] * drive.y) / det,
-            (k_x[0] * drive.y - k_y[0] * drive.x) / det,
-        ],
+        torque,
         min_pivot_ratio: ratio,
     })
 }
