@@ -157,7 +157,7 @@ impl ForceEmitter<'_> {
             .map(|m| {
                 let own = rate(&m.link).unwrap_or_else(|| lit(0.0));
                 match m.carrier.as_ref().and_then(rate) {
-                    Some(c) => quote!(#own - #c),
+                    Some(c) => quote!((#own - #c)),
                     None => own,
                 }
             })
