@@ -17,6 +17,8 @@ mod batch;
 /// The forces section: generated force analysis against the Newton-Euler reference.
 mod forces;
 mod generated;
+/// The inverse-kinematics section: the five-bar given its end point.
+mod inverse;
 mod methods;
 mod numpy;
 mod reference;
@@ -292,6 +294,11 @@ fn main() {
         outln!("{}", triad::section(&out_dir));
         return;
     }
+    if std::env::var_os("REPORT_INVERSE_ONLY").is_some() {
+        // The inverse-kinematics section alone (development).
+        outln!("{}", inverse::section());
+        return;
+    }
     let mut md = String::new();
     let _ = writeln!(md, "# Error against run time\n");
     let _ = writeln!(md, "{}\n", machine());
@@ -445,6 +452,8 @@ fn main() {
     }
     eprintln!("scene Stephenson (triad)");
     md += &triad::section(&out_dir);
+    eprintln!("scene five-bar given its end point");
+    md += &inverse::section();
     let _ = writeln!(md, "## Targets (issue 5)\n");
     for l in &target_lines {
         let _ = writeln!(md, "- {l}");
