@@ -363,7 +363,7 @@ pub fn section() -> String {
         let (med, mn, mx) = timing::stats(&ns[k]);
         let cols = match errs[k] {
             Some(e) => e.map(sci).join(" | "),
-            None => vec!["-"; 6].join(" | "),
+            None => ["-"; 6].join(" | "),
         };
         let iters = if k == 3 && !iterations.is_empty() {
             let s: u64 = iterations.iter().map(|&i| i as u64).sum();
