@@ -7,7 +7,9 @@
 //! - `acceleration_full`: everything; fixed points pass `None`.
 //! - `forces_coupler_mass`: the force analysis with a mass on the coupler only
 //!   and no gravity: inertia terms for `link3` only, no weight terms, no
-//!   loads argument; `forces_gravity_loads`: gravity and a per-call load.
+//!   loads argument; `forces_gravity_loads`: gravity and a per-call load;
+//! - `inverse_five_bar_motors`: a target driver (inverse kinematics) and the
+//!   motors' torques.
 //!
 //! Review changes with `cargo insta review` (or `INSTA_UPDATE=always`).
 
@@ -118,5 +120,31 @@ fn forces_gravity_loads() {
         !code.contains("pw_inertia_force_link4"),
         "the rocker's centre of mass is its fixed pivot: no m a term"
     );
+    insta::assert_snapshot!(code);
+}
+
+#[test]
+fn inverse_five_bar_motors() {
+    // The five-bar robot given its end point, with a payload and its two
+    // motors: the target's point is its inputs, each arm an RRR on it; the
+    // forces end with the rate map at unit rates of the target's inputs
+    // (two velocity calls) and the motors' torques from the target's drive.
+    let code = expand(quote! {
+        pub Robot {
+            let O1 = ground(0.0, 0.0);
+            let O2 = ground(0.08, 0.0);
+            let P = target(x, y) as effector;
+            let A = rrr(O1, 0.1, P, 0.16, left) as (arm1, fore1);
+            let C = rrr(O2, 0.1, P, 0.16, right) as (arm2, fore2);
+            force at P on effector = (0.0, -2.0);
+            motor q1 = angle(arm1);
+            motor q2 = angle(arm2);
+            outputs { arm1, arm2 }
+        }
+    });
+    assert!(code.contains("driver::target::position(input.x, input.y)"));
+    assert!(code.contains("let k_x") && code.contains("let k_y"));
+    assert!(code.contains("force::target::motor_torques("));
+    assert!(code.contains("pub drive_q1: T") && code.contains("pub drive_q2: T"));
     insta::assert_snapshot!(code);
 }
