@@ -138,14 +138,23 @@ pub fn motors_local() -> Ident {
     format_ident!("rx_motors")
 }
 
-/// The target statement the motors of `model` hold (validated: one).
-pub fn held_target(model: &Model) -> Option<&Stmt> {
-    let mut targets = model
+/// The target statements of `model`, each with its `x` and `y` inputs.
+pub fn targets(model: &Model) -> Vec<(&Stmt, &Ident, &Ident)> {
+    model
         .stmts
         .iter()
-        .filter(|s| matches!(s.kind, Kind::Target { .. }));
-    match (targets.next(), targets.next()) {
-        (Some(t), None) => Some(t),
+        .filter_map(|s| match &s.kind {
+            Kind::Target { x, y } => Some((s, x, y)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The one target statement the motors of `model` hold, with its inputs
+/// (`None` unless there is exactly one).
+pub fn held_target(model: &Model) -> Option<(&Stmt, &Ident, &Ident)> {
+    match targets(model)[..] {
+        [one] => Some(one),
         _ => None,
     }
 }
@@ -155,7 +164,7 @@ pub fn held_target(model: &Model) -> Option<&Stmt> {
 /// motors.
 pub fn motor_reactions(model: &Model) -> Vec<Reaction> {
     let motors = &model.kinetics.motors;
-    let Some(target) = held_target(model) else {
+    let Some((target, _, _)) = held_target(model) else {
         return Vec::new();
     };
     if motors.len() != 2 {

@@ -233,11 +233,7 @@ pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Di
     let Some(first) = motors.first() else {
         return;
     };
-    let targets: Vec<_> = model
-        .stmts
-        .iter()
-        .filter(|s| matches!(s.kind, crate::model::Kind::Target { .. }))
-        .collect();
+    let targets = kinds::target::targets(model);
     if targets.len() != 1 {
         let found = if targets.is_empty() {
             "this definition has none".to_string()
@@ -262,7 +258,7 @@ pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Di
         let at = motors.get(2).unwrap_or(first);
         errors.push(
             at.name.span(),
-            format!("the target `{}` has two inputs, so two motors hold it, and {} are declared: the force analysis maps the target's force to exactly two motor torques", targets[0].name, motors.len()),
+            format!("the target `{}` has two inputs, so two motors hold it, and {} are declared: the force analysis maps the target's force to exactly two motor torques", targets[0].0.name, motors.len()),
         );
     }
     let inputs: Vec<String> = model.inputs.iter().map(|i| i.name.to_string()).collect();

@@ -15,7 +15,7 @@ mod loads;
 use super::describe::{fields_impl, FieldEntry};
 use super::names::TypeNames;
 use crate::kinds::{self, forces::ForceCx};
-use crate::model::{Kind, Model};
+use crate::model::Model;
 use crate::plan::Plan;
 use crate::value::lit;
 use proc_macro2::TokenStream;
@@ -135,12 +135,12 @@ impl ForceEmitter<'_> {
     fn motors(&mut self, names: &TypeNames) {
         let model = self.model;
         let reactions = kinds::target::motor_reactions(model);
-        let Some(target) = kinds::target::held_target(model) else {
+        let Some((target, x, y)) = kinds::target::held_target(model) else {
             return;
         };
-        let (Kind::Target { x, y }, false) = (&target.kind, reactions.is_empty()) else {
+        if reactions.is_empty() {
             return;
-        };
+        }
         let input_ty = &names.input;
         let unit = |axis: &Ident| {
             let fields = model.inputs.iter().map(|i| {
