@@ -40,6 +40,7 @@ scenes=(
   "forces64|forces64|with forces (same four-bar in m, with masses)|f64|"
   "crank32|crank32|crank driver alone, from an angle|f32|"
   "cossin32|cossin32|crank driver alone, from (cos, sin)|f32|"
+  "ik32|ik32|five-bar given its end point: motor angles, rates, accelerations and torques|f32|"
   "base32s|base32||f32|s"
   "pos32s|pos32|position only, opt-level \"s\"|f32|s"
   "acc32s|acc32|position + velocity + acceleration, opt-level \"s\"|f32|s"

@@ -100,6 +100,34 @@ mechanism::mechanism! {
     }
 }
 
+#[cfg(feature = "ik32")]
+mechanism::mechanism! {
+    /// The five-bar robot given its end point (m, kg, N): arms 0.12 kg and
+    /// forearms 0.09 kg at their midpoints, a 0.05 kg effector, gravity,
+    /// a 2 N payload, and its two motors' torques.
+    pub FiveBarIk {
+        let O1 = ground(0.0, 0.0);
+        let O2 = ground(0.08, 0.0);
+        let P = target(x, y) as effector;
+        let A = rrr(O1, 0.1, P, 0.16, left) as (arm1, fore1);
+        let C = rrr(O2, 0.1, P, 0.16, right) as (arm2, fore2);
+        let G1 = point(arm1, from O1, 0.05, 0 deg);
+        let G2 = point(arm2, from O2, 0.05, 0 deg);
+        let H1 = point(fore1, from P, 0.08, 0 deg);
+        let H2 = point(fore2, from P, 0.08, 0 deg);
+        mass arm1 { m = 0.12, at = G1, j = 1.1e-4 };
+        mass arm2 { m = 0.12, at = G2, j = 1.1e-4 };
+        mass fore1 { m = 0.09, at = H1, j = 2.0e-4 };
+        mass fore2 { m = 0.09, at = H2, j = 2.0e-4 };
+        mass effector { m = 0.05, at = P };
+        gravity (0.0, -9.81);
+        force at P on effector = (0.0, -2.0);
+        motor q1 = angle(arm1);
+        motor q2 = angle(arm2);
+        outputs { arm1, arm2 }
+    }
+}
+
 /// Marks the start of one evaluation (the trace counts from its entry).
 #[no_mangle]
 #[inline(never)]
@@ -123,7 +151,8 @@ pub extern "C" fn probe_end() {
     feature = "acc32",
     feature = "forces32",
     feature = "crank32",
-    feature = "cossin32"
+    feature = "cossin32",
+    feature = "ik32"
 ))]
 type T = f32;
 #[cfg(not(any(
@@ -133,7 +162,8 @@ type T = f32;
     feature = "acc32",
     feature = "forces32",
     feature = "crank32",
-    feature = "cossin32"
+    feature = "cossin32",
+    feature = "ik32"
 )))]
 type T = f64;
 
@@ -186,6 +216,30 @@ fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
     )
 }
 
+/// Inverse kinematics: the motor angles, rates, accelerations and torques
+/// for an end point on a line through the workspace (x 0.02..0.082 m,
+/// y 0.18..0.211 m as the angle runs over a turn: no sine or cosine is
+/// linked for it), moving and accelerating.
+#[cfg(feature = "ik32")]
+fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
+    let m = black_box(FiveBarIk::<T>::default());
+    let p = FiveBarIkInput {
+        x: T::lit(0.02) + T::lit(0.01) * q,
+        y: T::lit(0.18) + T::lit(0.005) * q,
+    };
+    let v = FiveBarIkInput {
+        x: T::lit(0.3),
+        y: T::lit(-0.2),
+    };
+    let a = FiveBarIkInput {
+        x: T::lit(1.5),
+        y: T::lit(2.5),
+    };
+    let s = m.solve(&p, &v, &a)?;
+    let f = m.forces(&s.position, &s.velocity, &s.acceleration)?;
+    Ok::<_, mechanism::Error<T>>((s.position.arm1, s.position.arm2, f.drive_q1, f.drive_q2))
+}
+
 #[cfg(feature = "crank32")]
 fn scene(m: &FourBar<T>, q: T) -> impl Sized {
     mechanism::driver::crank::position(&Point2::origin(), m.crank, q)
@@ -205,6 +259,7 @@ fn scene(m: &FourBar<T>, cs: (T, T)) -> impl Sized {
     feature = "forces32",
     feature = "crank32",
     feature = "cossin32",
+    feature = "ik32",
     feature = "pos64",
     feature = "vel64",
     feature = "acc64",
