@@ -18,7 +18,9 @@
 use mechanism::{mechanism, Error, Fault, Primitive, Vector2};
 
 mechanism! {
-    /// The five-bar robot, given its end point (m, kg, N).
+    /// The five-bar robot, given its end point (m, kg, N); its self-tests
+    /// sweep the end point over a box inside the workspace.
+    #[self_test]
     pub FiveBarIk {
         params { base = 0.08, proximal = 0.1, distal = 0.16 }
         dof 2;
@@ -40,6 +42,8 @@ mechanism! {
         force at P on effector = (1.5, -4.0);
         motor q1 = angle(arm1);
         motor q2 = angle(arm2);
+        range x = (0.0, 0.08);
+        range y = (0.16, 0.22);
     }
 }
 
