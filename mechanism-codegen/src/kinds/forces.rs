@@ -227,7 +227,6 @@ impl FieldsOnly {
         for stmt in model.stmts.iter().rev() {
             super::of(stmt).forces(&mut cx);
         }
-        cx.reactions.extend(super::target::motor_reactions(model));
         cx.reactions
     }
 }
