@@ -67,6 +67,8 @@ struct ForceEmitter<'a> {
     reactions: Vec<Reaction>,
     /// The groups' force-system conditioning (relative pivots).
     conditions: Vec<TokenStream>,
+    /// Methods beside `forces` (the motors' rate map).
+    extra_methods: TokenStream,
 }
 
 impl ForceCx for ForceEmitter<'_> {
@@ -168,11 +170,26 @@ impl ForceEmitter<'_> {
             kinds::target::motors_local(),
             kinds::tokens::tag(target),
         );
-        self.code.extend(quote! {
-            let #local = {
+        let position_ty = &names.position;
+        let doc = format!(
+            "The motors' rate map `K = dq/dP` at the pose `pos`: `k[i][j]` is motor `i`'s rate (rad/s; motors in the order declared: {}) per unit rate of the target `{}`'s input `j` (`{x}`, `{y}`; length units/s), from two velocity evaluations. `K` is the inverse of the forward Jacobian `J = dP/dq`; the motors' torques are `tau = K^-T D` (`forces`). Errors as `velocity`'s.",
+            model.kinetics.motors.iter().map(|m| format!("`{}`", m.name)).collect::<Vec<_>>().join(", "),
+            target.name
+        );
+        self.extra_methods.extend(quote! {
+            #[doc = #doc]
+            #[inline(always)]
+            #[allow(non_snake_case)]
+            pub fn motor_rate_map(&self, pos: &#position_ty<T>) -> ::core::result::Result<[[T; 2]; 2], ::mechanism::Error<T>> {
                 let k_x = { let vel = self.velocity(pos, &#ux)?; [#(#rates),*] };
                 let k_y = { let vel = self.velocity(pos, &#uy)?; [#(#rates),*] };
-                ::mechanism::force::target::motor_torques(k_x, k_y, &#rx.drive) #t
+                ::core::result::Result::Ok([[k_x[0], k_y[0]], [k_x[1], k_y[1]]])
+            }
+        });
+        self.code.extend(quote! {
+            let #local = {
+                let k = self.motor_rate_map(pos)?;
+                ::mechanism::force::target::motor_torques([k[0][0], k[1][0]], [k[0][1], k[1][1]], &#rx.drive) #t
             };
         });
         self.conditions.push(quote!(#local.min_pivot_ratio));
@@ -209,6 +226,7 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
         power: Vec::new(),
         reactions: Vec::new(),
         conditions: Vec::new(),
+        extra_methods: TokenStream::new(),
     };
     em.known_loads();
     for &i in plan.solve.iter().rev() {
@@ -220,7 +238,8 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
     let loads = loads_struct(model, &names);
     let mut items = forces_struct(model, &names, &em.reactions, loads.item);
     items.extend(forces_fields(&names, &em.reactions));
-    let methods = forces_method(&names, &em, &loads.param);
+    let mut methods = forces_method(&names, &em, &loads.param);
+    methods.extend(em.extra_methods.clone());
     let fields = em
         .reactions
         .iter()
