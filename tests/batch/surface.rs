@@ -337,6 +337,19 @@ mechanism! {
     }
 }
 
+mechanism! {
+    /// The five-bar robot given its end point (inverse kinematics): a
+    /// target driver and two RRRs hanging on it.
+    pub FiveBarTarget {
+        params { prox = 0.1 }
+        let O1 = ground(0.0, 0.0);
+        let O2 = ground(0.08, 0.0);
+        let P = target(x, y) as effector;
+        let A = rrr(O1, prox, P, 0.16, left) as (arm1, fore1);
+        let C = rrr(O2, prox, P, 0.16, right) as (arm2, fore2);
+    }
+}
+
 // ------------------------------------------------------------- helpers
 
 /// `len` inputs from `lo` to `hi`, then NaN, infinite and huge ones.
@@ -721,4 +734,18 @@ fn a_short_slice_is_an_error_before_any_write() {
     assert_eq!(m.solve_batch(&mut batch!()), Ok(200));
     assert!(status.iter().all(|s| *s == 3));
     assert!(bufs[10].iter().all(|x| *x == 0.0));
+}
+
+#[test]
+fn a_target_and_two_dyads_on_it() {
+    // The end point over a box that reaches beyond the arms (x -0.2..0.3,
+    // y -0.1..0.35: many end points out of reach), with the edge rows.
+    both!(
+        acc; FiveBarTarget { prox: 0.1 },
+        [x, y],
+        [P, A, C],
+        [arm1, arm2, fore1, fore2, effector],
+        grid2(("x", -0.2, 0.3), ("y", -0.1, 0.35), 60, 7, 9),
+        300
+    );
 }

@@ -6,7 +6,7 @@
 //! must apply to it, `drive_X` and `drive_Y` its components.
 
 use super::forces::{body_name, drive, rx, ForceCx, Held, Reaction};
-use super::lane::{Lane, Step};
+use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::tag;
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
@@ -128,8 +128,49 @@ impl<'a> GroupKind<'a> for Target<'a> {
         (2, 2)
     }
 
-    fn lane(&self, _lane: &mut Lane, _s: &mut Step<'_>) -> Option<()> {
-        None
+    /// The point is its inputs `in_X[k]`, `in_Y[k]`; its motion their
+    /// rates and accelerations; the effector never turns (axis +x).
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        let PointLocals {
+            px,
+            py,
+            vx,
+            vy,
+            ax,
+            ay,
+        } = s.own.clone();
+        let at = |prefix: &str| {
+            let (x, y) = (
+                format_ident!("{}_{}", prefix, self.x),
+                format_ident!("{}_{}", prefix, self.y),
+            );
+            (quote!(#x[k]), quote!(#y[k]))
+        };
+        let (x, y) = at("in");
+        s.emit(quote!(let #px = #x; let #py = #y;));
+        s.check([x, y]);
+        if lane.vel {
+            let (x, y) = at("rate");
+            s.emit(quote!(let #vx = #x; let #vy = #y;));
+            s.check([x, y]);
+        }
+        if lane.acc {
+            let (x, y) = at("accel");
+            s.emit(quote!(let #ax = #x; let #ay = #y;));
+            s.check([x, y]);
+        }
+        s.defines_link(
+            0,
+            LaneLink {
+                axis: Vector {
+                    x: quote!(<T as ::mechanism::Real>::lit(1.0)),
+                    y: quote!(zero),
+                },
+                angle: quote!(zero),
+                omega: quote!(zero),
+                alpha: quote!(zero),
+            },
+        )
     }
 }
 
