@@ -100,6 +100,19 @@ pub enum Item {
     /// pinned at joint `J` sliding on the ground along a line through `J`'s
     /// drawn place.
     Slider(DrawnSlider),
+    /// The drawn form: `cylinder CYL from B to C;` (or `cylinder (BARREL,
+    /// ROD) from B to C;`), a linear actuator pinned at joints `B` and `C`.
+    Cylinder(DrawnCylinder),
+}
+
+/// `cylinder CYL from B to C;` of the drawn form.
+pub struct DrawnCylinder {
+    /// The cylinder as one link, or its barrel and its rod.
+    pub names: Vec<Ident>,
+    /// The joint its barrel is pinned at.
+    pub from: Ident,
+    /// The joint its rod is pinned at.
+    pub to: Ident,
 }
 
 /// `slider BLOCK at J on CARRIER along angle;` of the drawn form.
@@ -195,7 +208,7 @@ pub enum ForceValue {
 /// The words that begin a statement (besides `let` and `const`).
 const STATEMENTS: &[&str] = &[
     "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "range",
-    "allow", "joints", "links", "input", "slider",
+    "allow", "joints", "links", "input", "slider", "cylinder",
 ];
 
 /// Unit words a user may write after a value where none is taken (in a
@@ -700,7 +713,7 @@ mod tests {
         let (message, _, column) = error("pub M { forse at E = (1.0, 0.0); }");
         assert_eq!(
             message,
-            "unknown statement `forse`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input` or `slider`; did you mean `force`?"
+            "unknown statement `forse`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input`, `slider` or `cylinder`; did you mean `force`?"
         );
         assert_eq!(column, 8);
     }

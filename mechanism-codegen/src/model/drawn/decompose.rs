@@ -16,6 +16,25 @@ pub(super) struct Frame {
     pub toward: JointId,
 }
 
+/// A placed link's drawn axis: from one of its joints toward another, or
+/// from one of its joints along the line of a block sliding on it (the
+/// slotted link of an RPR, whose axis is its slot).
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Axis {
+    Joints(Frame),
+    Slot { origin: JointId, slider: usize },
+}
+
+impl Axis {
+    /// The joint at the axis's origin.
+    pub fn origin(self) -> JointId {
+        match self {
+            Axis::Joints(f) => f.origin,
+            Axis::Slot { origin, .. } => origin,
+        }
+    }
+}
+
 /// The link that carries a driver's motor: the link, its frame as placed,
 /// and the line the input is measured from (its first two joints as listed).
 #[derive(Clone, Copy, Debug)]
@@ -74,12 +93,64 @@ pub(super) enum Step {
         frame: Frame,
         joint: JointId,
     },
+    /// An RPR dyad: the block of `sliders[slider]`, pinned at the placed
+    /// joint `j`, slides in the slot of `link` (its line), which turns about
+    /// its placed joint `pivot`.
+    Rpr {
+        j: JointId,
+        pivot: JointId,
+        link: LinkId,
+        slider: usize,
+    },
+    /// A joint fixed on the slotted `link` of an RPR, in its frame: at
+    /// `pivot`, along the line of `sliders[slider]`.
+    SlotPoint {
+        link: LinkId,
+        pivot: JointId,
+        slider: usize,
+        joint: JointId,
+    },
+    /// The line of `sliders[slider]`, carried by the placed link it slides
+    /// on (whose drawn axis is `axis`): through the axis's origin, or
+    /// (`mark`) through the block's drawn place, the point of [`Step::Mark`].
+    CarriedGuide {
+        slider: usize,
+        axis: Axis,
+        mark: bool,
+    },
+    /// The point `BLOCK_zero` of the link that `sliders[slider]` slides on
+    /// (axis `axis`), where the drawing has the block: a carried slide is
+    /// measured from it.
+    Mark { slider: usize, axis: Axis },
+    /// An RRP dyad on a carried line: joint `c` at its drawn distance from
+    /// `a` on link `la`, and on the block of `sliders[slider]`, whose line is
+    /// carried through `origin`.
+    RrpCarried {
+        a: JointId,
+        la: LinkId,
+        c: JointId,
+        slider: usize,
+        origin: JointId,
+    },
+    /// A cylinder driver: `cylinders[cylinder]`, from its placed joint `b`,
+    /// of length `input`, reaches joint `c` of `link`, which turns about its
+    /// placed joint `a`.
+    Actuator {
+        a: JointId,
+        link: LinkId,
+        b: JointId,
+        c: JointId,
+        cylinder: usize,
+        input: InputId,
+    },
 }
 
 /// What is placed so far: joints known, links placed with their frames.
 struct Placed {
     joint: Vec<bool>,
     frame: Vec<Option<Frame>>,
+    /// The links whose axis is a slot's line: its origin and the slider.
+    slot: Vec<Option<(JointId, usize)>>,
 }
 
 impl Placed {
@@ -97,6 +168,14 @@ impl Placed {
 
     fn set_frame(&mut self, l: LinkId, origin: JointId, toward: JointId) {
         self.frame[l.0] = Some(Frame { origin, toward });
+    }
+
+    /// The drawn axis of the placed link `l`.
+    fn axis(&self, l: LinkId) -> Option<Axis> {
+        match self.slot[l.0] {
+            Some((origin, slider)) => Some(Axis::Slot { origin, slider }),
+            None => self.frame(l).map(Axis::Joints),
+        }
     }
 }
 
@@ -121,7 +200,11 @@ pub(super) fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Ste
     for step in &out.steps {
         let ok = match *step {
             Step::Rrr { a, b, c, .. } => off_the_line(d, a, b, c, errors),
-            Step::Rrp { a, c, slider, .. } => off_the_normal(d, a, c, slider, errors),
+            Step::Rrp { a, c, slider, .. } | Step::RrpCarried { a, c, slider, .. } => {
+                off_the_normal(d, a, c, slider, errors)
+            }
+            Step::Rpr { j, pivot, slider, .. } => off_the_foot(d, j, pivot, slider, errors),
+            Step::Actuator { a, b, c, .. } => off_the_line(d, a, b, c, errors),
             _ => true,
         };
         if !ok {
@@ -134,6 +217,10 @@ pub(super) fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Ste
     }
     if let Some(&k) = out.pending.first() {
         let input = d.input(k);
+        if input.length || input.slide {
+            errors.push(input.link.span(), pending_linear(d, k, &left));
+            return None;
+        }
         let on = match &input.carrier {
             Some(c) => format!("`{c}`, the link named as its carrier,"),
             None => "the ground".to_string(),
@@ -181,7 +268,22 @@ fn structure_holds(d: &Drawing, errors: &mut Diagnostics) -> bool {
         }
     }
     let link_names: Vec<String> = d.links.iter().map(|l| l.name.to_string()).collect();
-    for i in &d.inputs {
+    cylinders_driven(d, errors);
+    for i in d.inputs.iter().filter(|i| i.length) {
+        if d.cylinder_named(&i.link).is_none() {
+            let names = d.cylinders.iter().map(|c| c.names[0].to_string());
+            let names: Vec<String> = names.collect();
+            errors.push(
+                i.link.span(),
+                format!(
+                    "no cylinder named `{}`: `length(..)` names a `cylinder` statement's cylinder{}",
+                    i.link,
+                    did_you_mean(&i.link.to_string(), names.iter().map(String::as_str))
+                ),
+            );
+        }
+    }
+    for i in d.inputs.iter().filter(|i| !i.length) {
         for l in std::iter::once(&i.link).chain(&i.carrier) {
             if d.link_named(l).is_none() {
                 errors.push(
@@ -226,7 +328,10 @@ fn freedoms_match(d: &Drawing, errors: &mut Diagnostics) -> bool {
             on.count() as i64 - 1
         })
         .sum();
-    let pairs = pairs + d.sliders.len() as i64;
+    // A cylinder: a barrel and a rod (two moving links), pinned at its two
+    // joints and sliding in each other (three lower pairs).
+    let moving = moving + 2 * d.cylinders.len() as i64;
+    let pairs = pairs + d.sliders.len() as i64 + 3 * d.cylinders.len() as i64;
     let dof = 3 * moving - 2 * pairs;
     let inputs = d.inputs.len() as i64;
     if dof == inputs {
@@ -294,6 +399,7 @@ fn solve_order(d: &Drawing) -> Option<Outcome> {
     let mut placed = Placed {
         joint: vec![false; d.joints.len()],
         frame: vec![None; d.links.len()],
+        slot: vec![None; d.links.len()],
     };
     let mut steps = Vec::new();
     let fixed = &d.link(ground).joints;
@@ -302,7 +408,8 @@ fn solve_order(d: &Drawing) -> Option<Outcome> {
         steps.push(Step::Ground(j));
     }
     placed.set_frame(ground, fixed[0], fixed[0]);
-    steps.extend((0..d.sliders.len()).map(Step::Guide));
+    let on_ground = (0..d.sliders.len()).filter(|&k| d.sliders[k].on.is_none());
+    steps.extend(on_ground.map(Step::Guide));
     let mut pending: Vec<InputId> = d.input_ids().collect();
     loop {
         let before = pending.len();
@@ -326,6 +433,9 @@ fn solve_order(d: &Drawing) -> Option<Outcome> {
                 _ => {}
             }
             steps.push(step);
+            continue;
+        }
+        if place_slot(d, &mut placed, &mut steps) {
             continue;
         }
         let triad = (d.inputs.len() == 1)
@@ -367,6 +477,9 @@ fn place_driver(
     steps: &mut Vec<Step>,
 ) -> bool {
     let input = d.input(k);
+    if input.length {
+        return place_actuator(d, k, placed, steps);
+    }
     let Some(link) = d.link_named(&input.link) else {
         return false;
     };
@@ -378,6 +491,17 @@ fn place_driver(
         if placed.frame(link).is_some() || placed.joint(at) {
             return false;
         }
+        if let Some(on) = d.sliders[slider].on {
+            let Some(axis) = placed.axis(on) else {
+                return false;
+            };
+            steps.push(Step::Mark { slider, axis });
+            steps.push(Step::CarriedGuide {
+                slider,
+                axis,
+                mark: true,
+            });
+        }
         steps.push(Step::Slide { slider, input: k });
         placed.place(at);
         placed.set_frame(link, at, at);
@@ -386,6 +510,10 @@ fn place_driver(
     let carrier = input.carrier.as_ref().and_then(|c| d.link_named(c));
     let on = carrier.unwrap_or(ground);
     if placed.frame(on).is_none() || placed.frame(link).is_some() {
+        return false;
+    }
+    // A motor on a slotted link (whose axis is its slot) is not drawn yet.
+    if placed.slot[on.0].is_some() {
         return false;
     }
     let joints = &d.link(link).joints;
@@ -493,6 +621,16 @@ fn place_points(d: &Drawing, placed: &mut Placed, steps: &mut Vec<Step>) -> bool
         for &joint in &d.link(link).joints {
             if !placed.joint(joint) {
                 placed.place(joint);
+                if let Some((pivot, slider)) = placed.slot[link.0] {
+                    steps.push(Step::SlotPoint {
+                        link,
+                        pivot,
+                        slider,
+                        joint,
+                    });
+                    progress = true;
+                    continue;
+                }
                 steps.push(Step::Point { link, frame, joint });
                 progress = true;
             }
@@ -524,7 +662,7 @@ fn find_dyad(d: &Drawing, placed: &Placed, ground: LinkId) -> Option<Step> {
         let block = d
             .sliders
             .iter()
-            .position(|s| s.at == c && placed.frame(s.link).is_none());
+            .position(|s| s.at == c && s.on.is_none() && placed.frame(s.link).is_none());
         if let (Some(&(la, a)), Some(slider)) = (on.first(), block) {
             return Some(Step::Rrp { a, la, c, slider });
         }
@@ -580,4 +718,162 @@ fn triad_legs(
         }
     }
     found.try_into().ok()
+}
+
+/// A block on a moving link: an RPR (the block's joint placed, the slotted
+/// link turning about a placed joint) or an RRP on the line the placed link
+/// carries (the block's joint on a link with a placed joint); the steps
+/// pushed, `true` when it placed one.
+fn place_slot(d: &Drawing, placed: &mut Placed, steps: &mut Vec<Step>) -> bool {
+    for (slider, s) in d.sliders.iter().enumerate() {
+        let Some(link) = s.on else {
+            continue;
+        };
+        if placed.frame(s.link).is_some() {
+            continue;
+        }
+        let j = s.at;
+        if placed.joint(j) && placed.frame(link).is_none() {
+            let Some(pivot) = d.link(link).joints.iter().copied().find(|&p| placed.joint(p)) else {
+                continue;
+            };
+            steps.push(Step::Rpr {
+                j,
+                pivot,
+                link,
+                slider,
+            });
+            placed.set_frame(s.link, j, j);
+            placed.set_frame(link, pivot, pivot);
+            placed.slot[link.0] = Some((pivot, slider));
+            return true;
+        }
+        let Some(axis) = placed.axis(link).filter(|_| !placed.joint(j)) else {
+            continue;
+        };
+        let leg = d.link_ids().find_map(|la| {
+            let free = la != s.link && placed.frame(la).is_none();
+            let joints = &d.link(la).joints;
+            let a = joints.iter().copied().find(|&a| placed.joint(a));
+            (free && joints.contains(&j)).then_some((la, a?))
+        });
+        let Some((la, a)) = leg else {
+            continue;
+        };
+        steps.push(Step::CarriedGuide {
+            slider,
+            axis,
+            mark: false,
+        });
+        steps.push(Step::RrpCarried {
+            a,
+            la,
+            c: j,
+            slider,
+            origin: axis.origin(),
+        });
+        placed.place(j);
+        placed.set_frame(la, a, j);
+        placed.set_frame(s.link, j, j);
+        return true;
+    }
+    false
+}
+
+/// Places the cylinder of the length input `k` when its barrel's joint is
+/// placed and its rod's joint is on a link turning about a placed joint:
+/// an actuator driver. `true` when placed.
+fn place_actuator(d: &Drawing, k: InputId, placed: &mut Placed, steps: &mut Vec<Step>) -> bool {
+    let Some(cylinder) = d.cylinder_named(&d.input(k).link) else {
+        return false;
+    };
+    let (b, c) = (d.cylinders[cylinder].from, d.cylinders[cylinder].to);
+    if !placed.joint(b) || placed.joint(c) {
+        return false;
+    }
+    let ground = d.ground();
+    let found = d.link_ids().find_map(|l| {
+        let joints = &d.link(l).joints;
+        let free = Some(l) != ground && placed.frame(l).is_none() && joints.contains(&c);
+        let a = joints.iter().copied().find(|&a| placed.joint(a));
+        free.then_some((l, a?))
+    });
+    let Some((link, a)) = found else {
+        return false;
+    };
+    steps.push(Step::Actuator {
+        a,
+        link,
+        b,
+        c,
+        cylinder,
+        input: k,
+    });
+    placed.place(c);
+    placed.set_frame(link, a, c);
+    true
+}
+
+/// Every cylinder is driven by one `length(..)` input; an error on the
+/// cylinder otherwise (a cylinder left free is not drawn yet).
+fn cylinders_driven(d: &Drawing, errors: &mut Diagnostics) {
+    for c in &d.cylinders {
+        let name = &c.names[0];
+        let drives = d.inputs.iter().filter(|i| i.length && &i.link == name);
+        match drives.count() {
+            1 => {}
+            0 => errors.push(
+                name.span(),
+                format!("cylinder `{name}` has no input: the drawn form drives a cylinder by its length, `input len = length({name});` (a cylinder that moves freely is not drawn yet: write it with the group statements, `rpr`)"),
+            ),
+            n => errors.push(
+                name.span(),
+                format!("cylinder `{name}` is driven by {n} inputs; give it one, `input len = length({name});`"),
+            ),
+        }
+    }
+}
+
+/// The message for a slide or length input that could not be placed: its
+/// block's or cylinder's joints, what they wait for.
+fn pending_linear(d: &Drawing, k: InputId, left: &[String]) -> String {
+    let input = d.input(k);
+    let (name, left) = (&input.name, left.join(", "));
+    if let Some(c) = d.cylinder_named(&input.link) {
+        let c = &d.cylinders[c];
+        let (b, cj) = (&d.joint(c.from).name, &d.joint(c.to).name);
+        return format!(
+            "the input `{name}` is the length of `{}`, which is driven from `{b}` (its barrel's joint, on the ground or on a link placed before it) to `{cj}` (a joint of a link turning about a joint placed before it); the drawing does not place it that way (links left unplaced: {left}): swap `from` and `to`, or choose another input",
+            input.link
+        );
+    }
+    format!(
+        "the input `{name}` slides `{}` along a line that is never placed (the link it slides on is not placed before it; links left unplaced: {left})",
+        input.link
+    )
+}
+
+/// `true` when the drawing has the RPR's pinned joint `j` clearly ahead of
+/// or behind the foot of `pivot` on the slot's line (which picks its
+/// assembly); else an error on `j` (the pose where the two meet).
+fn off_the_foot(
+    d: &Drawing,
+    j: JointId,
+    pivot: JointId,
+    slider: usize,
+    errors: &mut Diagnostics,
+) -> bool {
+    let (pj, pp, dir) = (d.joint(j).at, d.joint(pivot).at, d.sliders[slider].dir);
+    let (dx, dy) = (pj.0 - pp.0, pj.1 - pp.1);
+    let along = dx * dir.0 + dy * dir.1;
+    if along.abs() > 1e-9 * dx.hypot(dy) || !along.is_finite() {
+        return true;
+    }
+    let (nj, np) = (&d.joint(j).name, &d.joint(pivot).name);
+    let block = &d.link(d.sliders[slider].link).name;
+    errors.push(
+        nj.span(),
+        format!("the drawing has `{block}`'s line square to `{np}`-`{nj}`, with `{nj}` at the foot of `{np}` on it (the pose where its two assemblies meet), so it does not say which is meant: draw the mechanism at a pose where `{nj}` is ahead of or behind that foot along the line"),
+    );
+    false
 }

@@ -62,17 +62,31 @@ struct Input {
     link: Ident,
     carrier: Option<Ident>,
     slide: bool,
+    /// `length(cylinder)`: the cylinder's length (`link` names the cylinder).
+    length: bool,
 }
 
-/// A block of the drawing sliding on the ground: its link (whose one joint
-/// is `at`), and its line through `at`'s drawn place at `angle` (`unit`
-/// `deg` or radians), the direction's value at the parameters' defaults.
+/// A block of the drawing: its link (whose one joint is `at`), and its line
+/// through `at`'s drawn place at `angle` (absolute, counter-clockwise from
+/// +x; `unit` `deg` or radians), the direction's value at the parameters'
+/// defaults; `on`: the moving link whose slot that line is (`None`: the
+/// ground).
 struct Slider {
     link: LinkId,
     at: JointId,
     angle: Expr,
     unit: Option<Ident>,
     dir: (f64, f64),
+    on: Option<LinkId>,
+}
+
+/// A cylinder of the drawing (`cylinder CYL from B to C;`): its barrel is
+/// pinned at joint `from`, its rod at joint `to`; `names`: the cylinder as
+/// one link, or its barrel and its rod.
+struct Cylinder {
+    names: Vec<Ident>,
+    from: JointId,
+    to: JointId,
 }
 
 /// The drawing, read.
@@ -81,6 +95,7 @@ struct Drawing {
     links: Vec<Link>,
     inputs: Vec<Input>,
     sliders: Vec<Slider>,
+    cylinders: Vec<Cylinder>,
     /// Where to point a message about the whole drawing (the `links` keyword).
     span: Span,
 }
@@ -116,6 +131,11 @@ impl Drawing {
         self.sliders.iter().find(|s| s.link == l)
     }
 
+    /// The cylinder named `name` (its one name, or its barrel's).
+    fn cylinder_named(&self, name: &Ident) -> Option<usize> {
+        self.cylinders.iter().position(|c| &c.names[0] == name)
+    }
+
     /// The fixed link.
     fn ground(&self) -> Option<LinkId> {
         self.links.iter().position(|l| l.name == GROUND).map(LinkId)
@@ -136,7 +156,11 @@ pub(super) fn expand(
     let drawn = |i: &Item| {
         matches!(
             i,
-            Item::Joints(..) | Item::Links(..) | Item::Input(..) | Item::Slider(..)
+            Item::Joints(..)
+                | Item::Links(..)
+                | Item::Input(..)
+                | Item::Slider(..)
+                | Item::Cylinder(..)
         )
     };
     let Some(first) = items.iter().position(drawn) else {
@@ -175,6 +199,10 @@ fn failed(d: &Drawing) -> Vec<Failed> {
     out.extend(d.links.iter().map(|l| Failed {
         links: vec![l.name.clone()],
         ..none(&l.name, "links")
+    }));
+    out.extend(d.cylinders.iter().map(|c| Failed {
+        links: c.names.clone(),
+        ..none(&c.names[0], "cylinder")
     }));
     out.extend(d.inputs.iter().map(|i| Failed {
         input: Some(i.name.clone()),
