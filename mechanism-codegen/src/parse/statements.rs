@@ -8,8 +8,8 @@
 
 use super::{
     end, kw, last_token, list, next_text, starts_arg, starts_assign, starts_statement, text,
-    unit_message, unit_word, vocabulary, Arg, Assign, DrawnCylinder, DrawnSlider, Force, ForceValue, Item, Let,
-    Mass, RangeDecl, Valued, STATEMENTS,
+    unit_message, unit_word, vocabulary, Arg, Assign, DrawnCylinder, DrawnSlider, Force,
+    ForceValue, Item, Let, Mass, RangeDecl, Valued, STATEMENTS,
 };
 use syn::buffer::Cursor;
 use syn::parse::{Parse, ParseStream};

@@ -203,7 +203,9 @@ pub(super) fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Ste
             Step::Rrp { a, c, slider, .. } | Step::RrpCarried { a, c, slider, .. } => {
                 off_the_normal(d, a, c, slider, errors)
             }
-            Step::Rpr { j, pivot, slider, .. } => off_the_foot(d, j, pivot, slider, errors),
+            Step::Rpr {
+                j, pivot, slider, ..
+            } => off_the_foot(d, j, pivot, slider, errors),
             Step::Actuator { a, b, c, .. } => off_the_line(d, a, b, c, errors),
             _ => true,
         };
@@ -734,7 +736,13 @@ fn place_slot(d: &Drawing, placed: &mut Placed, steps: &mut Vec<Step>) -> bool {
         }
         let j = s.at;
         if placed.joint(j) && placed.frame(link).is_none() {
-            let Some(pivot) = d.link(link).joints.iter().copied().find(|&p| placed.joint(p)) else {
+            let Some(pivot) = d
+                .link(link)
+                .joints
+                .iter()
+                .copied()
+                .find(|&p| placed.joint(p))
+            else {
                 continue;
             };
             steps.push(Step::Rpr {

@@ -254,7 +254,11 @@ fn drawn_input(d: &Drawing) -> TokenStream {
         // A slide is measured from the block's drawn place.
         return quote!(0.0);
     }
-    if let Some(c) = input.length.then(|| d.cylinder_named(&input.link)).flatten() {
+    if let Some(c) = input
+        .length
+        .then(|| d.cylinder_named(&input.link))
+        .flatten()
+    {
         let c = &d.cylinders[c];
         return distance(d.joint(c.from), d.joint(c.to));
     }

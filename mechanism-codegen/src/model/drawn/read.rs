@@ -83,7 +83,11 @@ fn slid_on(d: &Drawing, k: usize, on: &Ident, errors: &mut Diagnostics) -> Optio
     let s = &d.sliders[k];
     let block = &d.link(s.link).name;
     let Some(link) = d.link_named(on) else {
-        let names = d.links.iter().map(|l| l.name.to_string()).collect::<Vec<_>>();
+        let names = d
+            .links
+            .iter()
+            .map(|l| l.name.to_string())
+            .collect::<Vec<_>>();
         errors.push(
             on.span(),
             format!(
@@ -129,7 +133,10 @@ fn read_cylinder(d: &mut Drawing, c: DrawnCylinder, errors: &mut Diagnostics) {
     if ends[0] == ends[1] {
         errors.push(
             c.to.span(),
-            format!("a cylinder joins two joints, and `{}` is both its ends", c.to),
+            format!(
+                "a cylinder joins two joints, and `{}` is both its ends",
+                c.to
+            ),
         );
         return;
     }
