@@ -631,3 +631,38 @@ fn a_drawn_boom_with_a_cylinder_is_the_grouped_actuator() {
         worst[1]
     );
 }
+
+mechanism! {
+    /// A PRP: C is pinned to a block in a slot of the crank link2 (square
+    /// to its axis, through A) and to a block on the ground's x axis. Drawn
+    /// at theta = 0.3 rad.
+    pub DrawnCrossSlide {
+        joints {
+            O2 = (0.0, 0.0),
+            A = (0.1 * cos(0.3), 0.1 * sin(0.3)),
+            C = (0.1 / cos(0.3), 0.0),
+        }
+        links { ground = [O2], link2 = [O2, A] }
+        slider b1 at C on link2 along 0.3 + pi / 2.0;
+        slider b2 at C on ground along 0 deg;
+        input theta = angle(link2);
+        range theta = (-60 deg, 60 deg);
+    }
+}
+
+#[test]
+fn a_drawn_joint_on_two_blocks_is_a_prp() {
+    // Proves: a joint pinned to two blocks, one in a slot of a turning link
+    // and one on the ground, becomes a PRP on the carried and the fixed
+    // line: C = (0.1 / cos(theta), 0) (worked by hand: the slot square to
+    // the crank through its tip meets the x axis there) within 8 ulps of
+    // C's distance over theta in [-60 deg, 60 deg].
+    let d = DrawnCrossSlide::<f64>::default();
+    for k in -60..=60 {
+        let theta = (k as f64).to_radians();
+        let p = d.position(&DrawnCrossSlideInput { theta }).unwrap();
+        let hand = mechanism::Point2::new(0.1 / theta.cos(), 0.0);
+        let tol = 8.0 * f64::EPSILON * hand.x;
+        assert!((p.C - hand).norm() <= tol, "{k}: {} {hand}", p.C);
+    }
+}

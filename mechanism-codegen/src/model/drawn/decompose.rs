@@ -132,6 +132,22 @@ pub(super) enum Step {
         slider: usize,
         origin: JointId,
     },
+    /// An RPP dyad (the sine mechanism's): the block of `sliders[slider]`,
+    /// pinned at the placed joint `j`, slides in the slot of the block of
+    /// `sliders[yoke]`, which slides on the ground; defines that block's
+    /// joint, where its slot crosses its line.
+    Rpp {
+        j: JointId,
+        slider: usize,
+        yoke: usize,
+    },
+    /// A PRP dyad: joint `c` on the blocks of `sliders[k]`, each on a line
+    /// (the ground's, or one its placed link carries through `origin[k]`).
+    Prp {
+        c: JointId,
+        sliders: [usize; 2],
+        origins: [Option<JointId>; 2],
+    },
     /// A cylinder driver: `cylinders[cylinder]`, from its placed joint `b`,
     /// of length `input`, reaches joint `c` of `link`, which turns about its
     /// placed joint `a`.
@@ -206,6 +222,8 @@ pub(super) fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Ste
             Step::Rpr {
                 j, pivot, slider, ..
             } => off_the_foot(d, j, pivot, slider, errors),
+            Step::Rpp { j, slider, yoke } => on_the_slot(d, j, slider, yoke, errors),
+            Step::Prp { c, sliders, .. } => across(d, c, sliders, errors),
             Step::Actuator { a, b, c, .. } => off_the_line(d, a, b, c, errors),
             _ => true,
         };
@@ -735,6 +753,18 @@ fn place_slot(d: &Drawing, placed: &mut Placed, steps: &mut Vec<Step>) -> bool {
             continue;
         }
         let j = s.at;
+        let yoke = d
+            .sliders
+            .iter()
+            .position(|y| y.link == link && y.on.is_none());
+        if let Some(yoke) = yoke.filter(|&y| placed.joint(j) && !placed.joint(d.sliders[y].at)) {
+            steps.push(Step::Rpp { j, slider, yoke });
+            let q = d.sliders[yoke].at;
+            placed.place(q);
+            placed.set_frame(link, q, q);
+            placed.set_frame(s.link, j, j);
+            return true;
+        }
         if placed.joint(j) && placed.frame(link).is_none() {
             let Some(pivot) = d
                 .link(link)
@@ -766,6 +796,10 @@ fn place_slot(d: &Drawing, placed: &mut Placed, steps: &mut Vec<Step>) -> bool {
             (free && joints.contains(&j)).then_some((la, a?))
         });
         let Some((la, a)) = leg else {
+            if let Some(prp) = prp_at(d, placed, slider) {
+                place_prp(d, placed, steps, prp);
+                return true;
+            }
             continue;
         };
         steps.push(Step::CarriedGuide {
@@ -882,6 +916,98 @@ fn off_the_foot(
     errors.push(
         nj.span(),
         format!("the drawing has `{block}`'s line square to `{np}`-`{nj}`, with `{nj}` at the foot of `{np}` on it (the pose where its two assemblies meet), so it does not say which is meant: draw the mechanism at a pose where `{nj}` is ahead of or behind that foot along the line"),
+    );
+    false
+}
+
+/// A PRP at the joint of `sliders[first]` (on a placed moving link): a
+/// second block at that joint whose line is placed (the ground's, or one a
+/// placed link carries), both blocks unplaced.
+fn prp_at(d: &Drawing, placed: &Placed, first: usize) -> Option<Step> {
+    let c = d.sliders[first].at;
+    let origin = |k: usize| {
+        d.sliders[k]
+            .on
+            .and_then(|l| placed.axis(l))
+            .map(Axis::origin)
+    };
+    let second = (0..d.sliders.len()).find(|&k| {
+        let s = &d.sliders[k];
+        let line = s.on.is_none() || origin(k).is_some();
+        k != first && s.at == c && line && placed.frame(s.link).is_none()
+    })?;
+    Some(Step::Prp {
+        c,
+        sliders: [first, second],
+        origins: [origin(first), origin(second)],
+    })
+}
+
+/// Pushes a PRP and the carried lines it needs, and places its joint.
+fn place_prp(d: &Drawing, placed: &mut Placed, steps: &mut Vec<Step>, prp: Step) {
+    let Step::Prp { c, sliders, .. } = prp else {
+        return;
+    };
+    for k in sliders {
+        if let Some(axis) = d.sliders[k].on.and_then(|l| placed.axis(l)) {
+            steps.push(Step::CarriedGuide {
+                slider: k,
+                axis,
+                mark: false,
+            });
+        }
+        placed.set_frame(d.sliders[k].link, c, c);
+    }
+    placed.place(c);
+    steps.push(prp);
+}
+
+/// `true` when the yoke's joint (the block of `sliders[yoke]`) is drawn on
+/// its slot's line, the line of `sliders[slider]` through `j`, and the slot
+/// crosses the yoke's line; else an error on the yoke's joint.
+fn on_the_slot(
+    d: &Drawing,
+    j: JointId,
+    slider: usize,
+    yoke: usize,
+    errors: &mut Diagnostics,
+) -> bool {
+    let (s, y) = (&d.sliders[slider], &d.sliders[yoke]);
+    let (pj, pq) = (d.joint(j).at, d.joint(y.at).at);
+    let (dx, dy) = (pq.0 - pj.0, pq.1 - pj.1);
+    let off = s.dir.0 * dy - s.dir.1 * dx;
+    let cross = s.dir.0 * y.dir.1 - s.dir.1 * y.dir.0;
+    let (nq, yoke_name) = (&d.joint(y.at).name, &d.link(y.link).name);
+    let slot = &d.link(s.link).name;
+    if cross.abs() <= 1e-9 {
+        errors.push(
+            nq.span(),
+            format!("`{slot}`'s slot is drawn parallel to the line `{yoke_name}` slides on, so it cannot drive `{yoke_name}` (an RPP with its slot along its guide is singular at every pose): draw the slot across that line"),
+        );
+        return false;
+    }
+    // 1e-9: a sine that small is a drawing on the line to its last digits.
+    if off.abs() <= 1e-9 * dx.hypot(dy) || !off.is_finite() {
+        return true;
+    }
+    errors.push(
+        nq.span(),
+        format!("`{nq}` is the reference point of `{yoke_name}`, in whose slot `{slot}` slides (an RPP): draw it where that slot (the line of `{slot}` through `{}`) crosses the line `{yoke_name}` slides on", d.joint(j).name),
+    );
+    false
+}
+
+/// `true` when the two lines of a PRP cross (not parallel as drawn); else
+/// an error on its joint.
+fn across(d: &Drawing, c: JointId, sliders: [usize; 2], errors: &mut Diagnostics) -> bool {
+    let (a, b) = (d.sliders[sliders[0]].dir, d.sliders[sliders[1]].dir);
+    if (a.0 * b.1 - a.1 * b.0).abs() > 1e-9 {
+        return true;
+    }
+    let nc = &d.joint(c).name;
+    errors.push(
+        nc.span(),
+        format!("the two blocks at `{nc}` slide on lines drawn parallel, so they do not fix `{nc}` (a PRP with parallel lines is singular): draw them across each other"),
     );
     false
 }

@@ -103,6 +103,43 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
             ];
             (c, "rrp", args, vec![l(la).clone(), l(s.link).clone()])
         }
+        Step::Rpp {
+            j: pin,
+            slider,
+            yoke,
+        } => {
+            let (s, y) = (&d.sliders[slider], &d.sliders[yoke]);
+            let (a, b) = (radians(s), radians(y));
+            let args = vec![
+                name(j(pin)),
+                name_arg(&line_name(d, yoke)),
+                value(quote!(#a - #b), l(s.link).span()),
+            ];
+            let links = vec![l(s.link).clone(), l(y.link).clone()];
+            (j(y.at), "rpp", args, links)
+        }
+        Step::Prp {
+            c,
+            sliders,
+            origins,
+        } => {
+            let c = j(c);
+            let mut args: Vec<Arg> = sliders
+                .iter()
+                .map(|&k| name_arg(&line_name(d, k)))
+                .collect();
+            if origins.iter().any(Option::is_some) {
+                for (k, o) in sliders.into_iter().zip(origins) {
+                    let e = match o {
+                        Some(o) => offset(j(o), &d.sliders[k], c),
+                        None => quote!(0.0),
+                    };
+                    args.push(value(e, c.name.span()));
+                }
+            }
+            let links = sliders.iter().map(|&k| l(d.sliders[k].link).clone());
+            (c, "prp", args, links.collect())
+        }
         Step::Actuator {
             a,
             link,
