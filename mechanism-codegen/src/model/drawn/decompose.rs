@@ -258,8 +258,9 @@ pub(super) fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Ste
         errors.push(
             d.span,
             format!(
-                "the links {} form a loop that is not a dyad (a joint on two links, each with a joint already placed) and not a triad (a link with three joints, each on a binary leg from a placed joint): it cannot be decomposed into the supported groups; write it with group statements, or choose inputs on these links",
-                left.join(", ")
+                "the links {} form a loop that is not a dyad (a joint on two links, each with a joint already placed) and not a triad (a link with three joints, each on a binary leg from a placed joint): it cannot be decomposed into the supported groups; write it with group statements, or choose inputs on these links{}",
+                left.join(", "),
+                slot_hint(d, &out.placed)
             ),
         );
     }
@@ -1010,4 +1011,19 @@ fn across(d: &Drawing, c: JointId, sliders: [usize; 2], errors: &mut Diagnostics
         format!("the two blocks at `{nc}` slide on lines drawn parallel, so they do not fix `{nc}` (a PRP with parallel lines is singular): draw them across each other"),
     );
     false
+}
+
+/// What the decomposition needs of a block left on a moving link, for the
+/// message about an undecomposable drawing (empty when there is none).
+fn slot_hint(d: &Drawing, placed: &Placed) -> String {
+    let Some(s) = d
+        .sliders
+        .iter()
+        .find(|s| s.on.is_some() && placed.frame(s.link).is_none())
+    else {
+        return String::new();
+    };
+    let (block, at) = (&d.link(s.link).name, &d.joint(s.at).name);
+    let on = s.on.map(|l| d.link(l).name.to_string()).unwrap_or_default();
+    format!(". A block on a moving link, as `{block}` on `{on}`, is solved when `{at}` is placed and `{on}` turns about a placed joint (an RPR) or slides on the ground (an RPP), or when `{on}` is placed and `{at}` is on a link with a placed joint (an RRP) or on another block whose line is placed (a PRP)")
 }

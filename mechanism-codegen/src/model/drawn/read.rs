@@ -102,7 +102,7 @@ fn slid_on(d: &Drawing, k: usize, on: &Ident, errors: &mut Diagnostics) -> Optio
         errors.push(on.span(), format!("`{block}` cannot slide on itself"));
     } else if d.link(link).joints.contains(&s.at) {
         errors.push(
-            at.span(),
+            on.span(),
             format!("`{at}` is a joint of `{on}` (a pin), so `{block}` cannot slide on `{on}` there: leave `{at}` out of `{on} = [..]`, the slot is the block's line"),
         );
     }
