@@ -68,6 +68,61 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
         Step::Rpr { .. } | Step::CarriedGuide { .. } | Step::Mark { .. } => {
             return slot_statement(d, step)
         }
+        Step::SlotPoint { .. }
+        | Step::RrpCarried { .. }
+        | Step::Rpp { .. }
+        | Step::Prp { .. }
+        | Step::Actuator { .. } => slot_joint(d, step),
+        Step::Guide(k) => return guide(d, k),
+        Step::Slide { slider, input } => {
+            let s = &d.sliders[slider];
+            let args = vec![
+                name_arg(&line_name(d, slider)),
+                name_arg(&d.input(input).name),
+            ];
+            (j(s.at), "slider", args, vec![l(s.link).clone()])
+        }
+        Step::Rrp { a, la, c, slider } => {
+            let s = &d.sliders[slider];
+            let (a, c) = (j(a), j(c));
+            let ahead = (c.at.0 - a.at.0) * s.dir.0 + (c.at.1 - a.at.1) * s.dir.1;
+            let mode = Ident::new(if ahead > 0.0 { "plus" } else { "minus" }, c.name.span());
+            let args = vec![
+                name(a),
+                value(distance(a, c), c.name.span()),
+                name_arg(&line_name(d, slider)),
+                name_arg(&mode),
+            ];
+            (c, "rrp", args, vec![l(la).clone(), l(s.link).clone()])
+        }
+        Step::Point { link, frame, joint } => {
+            let (x, y) = local(j(frame.origin), j(frame.toward), j(joint));
+            let args = vec![
+                name_arg(l(link)),
+                Arg::From(j(frame.origin).name.clone()),
+                value(quote!((#x, #y)), j(joint).name.span()),
+            ];
+            (j(joint), "point", args, vec![])
+        }
+    };
+    let span = defines.name.span();
+    Let {
+        name: defines.name.clone(),
+        joints: Vec::new(),
+        kind: Ident::new(kind, span),
+        args,
+        args_span: span,
+        links,
+        slides: Vec::new(),
+    }
+}
+
+/// What a step of a block on a moving link or of a cylinder that defines a
+/// joint writes: the joint, its kind, its arguments, its links.
+fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<Arg>, Vec<Ident>) {
+    let j = |k: JointId| d.joint(k);
+    let l = |k: LinkId| &d.link(k).name;
+    match *step {
         Step::SlotPoint {
             link,
             pivot,
@@ -165,47 +220,7 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
             links.extend(d.cylinders[cylinder].names.iter().cloned());
             (c, "actuator", args, links)
         }
-        Step::Guide(k) => return guide(d, k),
-        Step::Slide { slider, input } => {
-            let s = &d.sliders[slider];
-            let args = vec![
-                name_arg(&line_name(d, slider)),
-                name_arg(&d.input(input).name),
-            ];
-            (j(s.at), "slider", args, vec![l(s.link).clone()])
-        }
-        Step::Rrp { a, la, c, slider } => {
-            let s = &d.sliders[slider];
-            let (a, c) = (j(a), j(c));
-            let ahead = (c.at.0 - a.at.0) * s.dir.0 + (c.at.1 - a.at.1) * s.dir.1;
-            let mode = Ident::new(if ahead > 0.0 { "plus" } else { "minus" }, c.name.span());
-            let args = vec![
-                name(a),
-                value(distance(a, c), c.name.span()),
-                name_arg(&line_name(d, slider)),
-                name_arg(&mode),
-            ];
-            (c, "rrp", args, vec![l(la).clone(), l(s.link).clone()])
-        }
-        Step::Point { link, frame, joint } => {
-            let (x, y) = local(j(frame.origin), j(frame.toward), j(joint));
-            let args = vec![
-                name_arg(l(link)),
-                Arg::From(j(frame.origin).name.clone()),
-                value(quote!((#x, #y)), j(joint).name.span()),
-            ];
-            (j(joint), "point", args, vec![])
-        }
-    };
-    let span = defines.name.span();
-    Let {
-        name: defines.name.clone(),
-        joints: Vec::new(),
-        kind: Ident::new(kind, span),
-        args,
-        args_span: span,
-        links,
-        slides: Vec::new(),
+        _ => unreachable!("slot_joint() is called on the steps it matches"),
     }
 }
 
