@@ -666,3 +666,37 @@ fn a_drawn_joint_on_two_blocks_is_a_prp() {
         assert!((p.C - hand).norm() <= tol, "{k}: {} {hand}", p.C);
     }
 }
+
+mechanism! {
+    /// A slot in a block: the cart slides on the ground along +x (driven by
+    /// `s`), the block at J slides in its vertical slot and is pinned to
+    /// the rod O-J (0.5), which turns about O.
+    pub DrawnCartSlot {
+        joints { O = (0.0, 0.0), Q = (0.0, -0.2), J = (0.3, 0.4) }
+        links { ground = [O], rod = [O, J] }
+        slider cart at Q on ground along 0 deg;
+        slider b2 at J on cart along 90 deg;
+        input s = slide(cart);
+        range s = (-0.7, 0.15);
+    }
+}
+
+#[test]
+fn a_drawn_slot_in_a_sliding_block_turns_with_the_block_s_line() {
+    // Proves: a slot in a block is carried by the block, whose axis is its
+    // line (not two of its joints: it has one): J = (0.3 + s, sqrt(0.25 -
+    // (0.3 + s)^2)) (worked by hand: the slot x = 0.3 + s meets the rod's
+    // circle above O, as drawn) within 8 ulps of the rod over the stroke.
+    let d = DrawnCartSlot::<f64>::default();
+    for k in 0..=85 {
+        let s = -0.7 + 0.01 * k as f64;
+        let p = d.position(&DrawnCartSlotInput { s }).unwrap();
+        let x = 0.3 + s;
+        let hand = mechanism::Point2::new(x, (0.25 - x * x).sqrt());
+        assert!(
+            (p.J - hand).norm() <= 8.0 * f64::EPSILON * 0.5,
+            "{s}: {} {hand}",
+            p.J
+        );
+    }
+}

@@ -186,8 +186,14 @@ impl Placed {
         self.frame[l.0] = Some(Frame { origin, toward });
     }
 
-    /// The drawn axis of the placed link `l`.
-    fn axis(&self, l: LinkId) -> Option<Axis> {
+    /// The drawn axis of the placed link `l`: a block's is its line (the
+    /// direction of its guide, slot or slide in every group).
+    fn axis(&self, d: &Drawing, l: LinkId) -> Option<Axis> {
+        self.frame(l)?;
+        if let Some(k) = d.sliders.iter().position(|s| s.link == l) {
+            let origin = d.sliders[k].at;
+            return Some(Axis::Slot { origin, slider: k });
+        }
         match self.slot[l.0] {
             Some((origin, slider)) => Some(Axis::Slot { origin, slider }),
             None => self.frame(l).map(Axis::Joints),
@@ -315,6 +321,13 @@ fn structure_holds(d: &Drawing, errors: &mut Diagnostics) -> bool {
                     ),
                 );
             }
+        }
+        let block = |l: &syn::Ident| d.link_named(l).is_some_and(|l| d.slider_of(l).is_some());
+        if let Some(c) = i.carrier.as_ref().filter(|c| block(c)) {
+            errors.push(
+                c.span(),
+                format!("`{c}` is a block, whose axis is its line: a motor it carries is not drawn yet; write it with the group statements, `crank(K, r, {}, {c})`", i.name),
+            );
         }
         if i.link == GROUND {
             errors.push(
@@ -513,7 +526,7 @@ fn place_driver(
             return false;
         }
         if let Some(on) = d.sliders[slider].on {
-            let Some(axis) = placed.axis(on) else {
+            let Some(axis) = placed.axis(d, on) else {
                 return false;
             };
             steps.push(Step::Mark { slider, axis });
@@ -787,7 +800,7 @@ fn place_slot(d: &Drawing, placed: &mut Placed, steps: &mut Vec<Step>) -> bool {
             placed.slot[link.0] = Some((pivot, slider));
             return true;
         }
-        let Some(axis) = placed.axis(link).filter(|_| !placed.joint(j)) else {
+        let Some(axis) = placed.axis(d, link).filter(|_| !placed.joint(j)) else {
             continue;
         };
         let leg = d.link_ids().find_map(|la| {
@@ -929,7 +942,7 @@ fn prp_at(d: &Drawing, placed: &Placed, first: usize) -> Option<Step> {
     let origin = |k: usize| {
         d.sliders[k]
             .on
-            .and_then(|l| placed.axis(l))
+            .and_then(|l| placed.axis(d, l))
             .map(Axis::origin)
     };
     let second = (0..d.sliders.len()).find(|&k| {
@@ -950,7 +963,7 @@ fn place_prp(d: &Drawing, placed: &mut Placed, steps: &mut Vec<Step>, prp: Step)
         return;
     };
     for k in sliders {
-        if let Some(axis) = d.sliders[k].on.and_then(|l| placed.axis(l)) {
+        if let Some(axis) = d.sliders[k].on.and_then(|l| placed.axis(d, l)) {
             steps.push(Step::CarriedGuide {
                 slider: k,
                 axis,
