@@ -700,3 +700,45 @@ fn a_drawn_slot_in_a_sliding_block_turns_with_the_block_s_line() {
         );
     }
 }
+
+mechanism! {
+    /// A one-name cylinder: `lift` from the ground joint B to the boom's
+    /// joint C (the boom turns about A), drawn with C at 0.3 rad.
+    pub DrawnLift {
+        joints {
+            A = (0.0, 0.0),
+            B = (0.8, -0.9),
+            C = (2.2 * cos(0.3), 2.2 * sin(0.3)),
+        }
+        links { ground = [A, B], boom = [A, C] }
+        cylinder lift from B to C;
+        input len = length(lift);
+        range len = (1.9, 3.0);
+    }
+}
+
+#[test]
+fn a_drawn_cylinder_places_its_rod_end_on_the_drawn_side() {
+    // Proves: `length(lift)` drives the boom so that |C - B| = len and
+    // |C - A| = 2.2 with C on the drawn side of A -> B (its left): C from the
+    // law of cosines (worked here) within 8 ulps of the boom over the
+    // stroke, and the cylinder's angle is that of B -> C.
+    let d = DrawnLift::<f64>::default();
+    let (b, r) = (mechanism::Vector2::<f64>::new(0.8, -0.9), 2.2);
+    let ab = b.norm();
+    for k in 0..=110 {
+        let len = 1.9 + 0.01 * k as f64;
+        let p = d.position(&DrawnLiftInput { len }).unwrap();
+        let along = (r * r - len * len + ab * ab) / (2.0 * ab);
+        let h = (r * r - along * along).sqrt();
+        let (u, n) = (b / ab, mechanism::Vector2::new(0.9, 0.8) / ab);
+        let hand = mechanism::Point2::origin() + u * along + n * h;
+        assert!(
+            (p.C - hand).norm() <= 8.0 * f64::EPSILON * r,
+            "{len}: {} {hand}",
+            p.C
+        );
+        let axis = (p.C.y + 0.9).atan2(p.C.x - 0.8);
+        assert!((p.lift - axis).abs() <= 8.0 * f64::EPSILON, "{len}");
+    }
+}

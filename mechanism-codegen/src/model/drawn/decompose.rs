@@ -1,6 +1,7 @@
 //! The drawing decomposed into groups, Assur's way: from the ground and the
 //! drivers, repeatedly a dyad (a joint on two links, each with a joint
-//! already placed); when none is left, a triad (a link whose three joints
+//! already placed; or a block in a slot: an RPR, an RRP on a carried line,
+//! an RPP, a PRP); when none is left, a triad (a link whose three joints
 //! each hang on a binary leg from a placed joint); the other joints of
 //! every placed link are its points. Before it, the drawing's links, joints
 //! and inputs are checked, and Gruebler's count against the inputs. A

@@ -1,10 +1,12 @@
 //! The drawn form of a definition: the joints where the drawing has them
 //! (the reference pose), the links as sets of joints (the fixed one named
 //! `ground`) and the inputs (a link's angle from the ground, or from the link
-//! that carries its motor, or a block's slide), and the blocks sliding on
-//! the ground (`slider B at J on ground along angle`). It is decomposed into
-//! the group statements (`ground`, `guide`, `crank`, `slider`, `rrr`, `rrp`,
-//! `triad`, `point`) a user would write by hand,
+//! that carries its motor, a block's slide, a cylinder's length), the blocks
+//! sliding on the ground or in slots of moving links (`slider B at J on LINK
+//! along angle`) and the cylinders (`cylinder C from J1 to J2`). It is
+//! decomposed into the group statements (`ground`, `guide`, `crank`,
+//! `slider`, `actuator`, `rrr`, `rrp`, `rpr`, `rpp`, `prp`, `triad`, `point`)
+//! a user would write by hand,
 //! in solve order, every length, offset and assembly mode read from the
 //! drawing; the rest of the macro sees only those statements.
 //!
