@@ -135,12 +135,14 @@ pub(super) enum Step {
     },
     /// An RPP dyad (the sine mechanism's): the block of `sliders[slider]`,
     /// pinned at the placed joint `j`, slides in the slot of the block of
-    /// `sliders[yoke]`, which slides on the ground; defines that block's
-    /// joint, where its slot crosses its line.
+    /// `sliders[yoke]`, which slides on the ground or on a line a placed
+    /// link carries through `origin`; defines that block's joint, where its
+    /// slot crosses its line.
     Rpp {
         j: JointId,
         slider: usize,
         yoke: usize,
+        origin: Option<JointId>,
     },
     /// A PRP dyad: joint `c` on the blocks of `sliders[k]`, each on a line
     /// (the ground's, or one its placed link carries through `origin[k]`).
@@ -229,7 +231,9 @@ pub(super) fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Ste
             Step::Rpr {
                 j, pivot, slider, ..
             } => off_the_foot(d, j, pivot, slider, errors),
-            Step::Rpp { j, slider, yoke } => on_the_slot(d, j, slider, yoke, errors),
+            Step::Rpp {
+                j, slider, yoke, ..
+            } => on_the_slot(d, j, slider, yoke, errors),
             Step::Prp { c, sliders, .. } => across(d, c, sliders, errors),
             Step::Actuator { a, b, c, .. } => off_the_line(d, a, b, c, errors),
             _ => true,
@@ -768,12 +772,27 @@ fn place_slot(d: &Drawing, placed: &mut Placed, steps: &mut Vec<Step>) -> bool {
             continue;
         }
         let j = s.at;
-        let yoke = d
-            .sliders
-            .iter()
-            .position(|y| y.link == link && y.on.is_none());
-        if let Some(yoke) = yoke.filter(|&y| placed.joint(j) && !placed.joint(d.sliders[y].at)) {
-            steps.push(Step::Rpp { j, slider, yoke });
+        // The yoke: a block on the ground, or on a placed link's line.
+        let carried = |y: &super::Slider| y.on.map(|l| placed.axis(d, l));
+        let yoke = d.sliders.iter().position(|y| {
+            y.link == link && !matches!(carried(y), Some(None)) && !placed.joint(y.at)
+        });
+        if let Some(yoke) = yoke.filter(|_| placed.joint(j)) {
+            let axis = carried(&d.sliders[yoke]).flatten();
+            if let Some(axis) = axis {
+                steps.push(Step::CarriedGuide {
+                    slider: yoke,
+                    axis,
+                    mark: false,
+                });
+            }
+            let origin = axis.map(Axis::origin);
+            steps.push(Step::Rpp {
+                j,
+                slider,
+                yoke,
+                origin,
+            });
             let q = d.sliders[yoke].at;
             placed.place(q);
             placed.set_frame(link, q, q);
@@ -1039,5 +1058,5 @@ fn slot_hint(d: &Drawing, placed: &Placed) -> String {
     };
     let (block, at) = (&d.link(s.link).name, &d.joint(s.at).name);
     let on = s.on.map(|l| d.link(l).name.to_string()).unwrap_or_default();
-    format!(". A block on a moving link, as `{block}` on `{on}`, is solved when `{at}` is placed and `{on}` turns about a placed joint (an RPR) or slides on the ground (an RPP), or when `{on}` is placed and `{at}` is on a link with a placed joint (an RRP) or on another block whose line is placed (a PRP)")
+    format!(". A block on a moving link, as `{block}` on `{on}`, is solved when `{at}` is placed and `{on}` turns about a placed joint (an RPR) or slides on the ground or on a placed link (an RPP), or when `{on}` is placed and `{at}` is on a link with a placed joint (an RRP) or on another block whose line is placed (a PRP)")
 }

@@ -162,14 +162,18 @@ fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<
             j: pin,
             slider,
             yoke,
+            origin,
         } => {
             let (s, y) = (&d.sliders[slider], &d.sliders[yoke]);
             let (a, b) = (radians(s), radians(y));
-            let args = vec![
+            let mut args = vec![
                 name(j(pin)),
                 name_arg(&line_name(d, yoke)),
                 value(quote!(#a - #b), l(s.link).span()),
             ];
+            if let Some(o) = origin {
+                args.push(value(offset(j(o), y, j(y.at)), j(y.at).name.span()));
+            }
             let links = vec![l(s.link).clone(), l(y.link).clone()];
             (j(y.at), "rpp", args, links)
         }
