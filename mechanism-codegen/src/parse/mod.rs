@@ -96,9 +96,9 @@ pub enum Item {
     /// the ground) or `input knee = angle(shank, thigh);` (from another
     /// link): the input's name and what it measures.
     Input(Ident, Expr),
-    /// The drawn form: `slider BLOCK at J on ground along ANGLE;`, a block
-    /// pinned at joint `J` sliding on the ground along a line through `J`'s
-    /// drawn place.
+    /// The drawn form: `slider BLOCK at J on LINK along ANGLE;`, a block
+    /// pinned at joint `J` sliding on the ground (or in a slot of `LINK`)
+    /// along a line through `J`'s drawn place.
     Slider(DrawnSlider),
     /// The drawn form: `cylinder CYL from B to C;` (or `cylinder (BARREL,
     /// ROD) from B to C;`), a linear actuator pinned at joints `B` and `C`.
@@ -121,7 +121,7 @@ pub struct DrawnSlider {
     pub block: Ident,
     /// The joint it is pinned at.
     pub at: Ident,
-    /// What it slides on (`ground`).
+    /// What it slides on (`ground`, a moving link, or another block).
     pub on: Ident,
     /// The direction of the line, with its unit (`deg`, `rad`, none: rad).
     pub angle: Expr,
