@@ -4,7 +4,8 @@
 //! closes, and written with its lengths, give the same message (the group,
 //! the input interval where it fails, the reason); the drawn Grashof
 //! variant, like the grouped one, gives none. The same for a slotted link
-//! (an RPR) whose offset slot loses the block over part of the turn. Each
+//! (an RPR) whose offset slot loses the block over part of the turn, and a
+//! boom cylinder whose declared stroke starts below the boom's reach. Each
 //! is fed straight to `expand` (no rustc).
 
 use proc_macro2::{TokenStream, TokenTree};
@@ -140,4 +141,43 @@ fn a_drawn_slotted_link_gets_the_grouped_findings() {
     let (drawn, grouped) = both_slotted(0.4, 0.0);
     assert_eq!(messages(&grouped), Vec::<String>::new());
     assert_eq!(messages(&drawn), Vec::<String>::new());
+}
+
+#[test]
+fn a_drawn_cylinder_gets_the_grouped_findings() {
+    // Proves: a boom cylinder whose declared stroke (0.5 to 3.0) starts
+    // below what the boom (2.2 from A, B at 1.204 from A) can reach, 0.996,
+    // gets the same message drawn (the boom's length and side read from the
+    // drawing) as written with `actuator`; a stroke inside the reach gets
+    // none either way.
+    let body = |drawn: bool, lo: f64| {
+        let (c, s) = (2.2 * 0.3f64.cos(), 2.2 * 0.3f64.sin());
+        if drawn {
+            format!(
+                "pub M {{
+                    joints {{ A = (0.0, 0.0), B = (0.8, -0.9), C = ({c:e}, {s:e}) }}
+                    links {{ ground = [A, B], boom = [A, C] }}
+                    cylinder lift from B to C;
+                    input len = length(lift);
+                    range len = ({lo:e}, 3.0);
+                }}"
+            )
+        } else {
+            format!(
+                "pub M {{
+                    let A = ground(0.0, 0.0);
+                    let B = ground(0.8, -0.9);
+                    let C = actuator(A, 2.2, B, len, left) as (boom, lift);
+                    range len = ({lo:e}, 3.0);
+                }}"
+            )
+        }
+    };
+    let (d, g) = (messages(&body(true, 0.5)), messages(&body(false, 0.5)));
+    assert_eq!(g.len(), 1, "{g:?}");
+    assert!(g[0].contains("`C`"), "{g:?}");
+    eprintln!("{}", g[0]);
+    assert_eq!(d, g);
+    assert_eq!(messages(&body(true, 1.9)), Vec::<String>::new());
+    assert_eq!(messages(&body(false, 1.9)), Vec::<String>::new());
 }
