@@ -331,7 +331,11 @@ impl<'a> Body<'a> {
             Item::Loads(_) => {}
             Item::Params(_) | Item::Const(_) => {}
             // Replaced by group statements before the body is lowered.
-            Item::Joints(..) | Item::Links(..) | Item::Input(..) | Item::Slider(..) => {}
+            Item::Joints(..)
+            | Item::Links(..)
+            | Item::Input(..)
+            | Item::Slider(..)
+            | Item::Cylinder(..) => {}
         }
     }
 

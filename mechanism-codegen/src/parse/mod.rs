@@ -100,10 +100,23 @@ pub enum Item {
     /// the ground) or `input knee = angle(shank, thigh);` (from another
     /// link): the input's name and what it measures.
     Input(Ident, Expr),
-    /// The drawn form: `slider BLOCK at J on ground along ANGLE;`, a block
-    /// pinned at joint `J` sliding on the ground along a line through `J`'s
-    /// drawn place.
+    /// The drawn form: `slider BLOCK at J on LINK along ANGLE;`, a block
+    /// pinned at joint `J` sliding on the ground (or in a slot of `LINK`)
+    /// along a line through `J`'s drawn place.
     Slider(DrawnSlider),
+    /// The drawn form: `cylinder CYL from B to C;` (or `cylinder (BARREL,
+    /// ROD) from B to C;`), a linear actuator pinned at joints `B` and `C`.
+    Cylinder(DrawnCylinder),
+}
+
+/// `cylinder CYL from B to C;` of the drawn form.
+pub struct DrawnCylinder {
+    /// The cylinder as one link, or its barrel and its rod.
+    pub names: Vec<Ident>,
+    /// The joint its barrel is pinned at.
+    pub from: Ident,
+    /// The joint its rod is pinned at.
+    pub to: Ident,
 }
 
 /// `slider BLOCK at J on CARRIER along angle;` of the drawn form.
@@ -112,7 +125,7 @@ pub struct DrawnSlider {
     pub block: Ident,
     /// The joint it is pinned at.
     pub at: Ident,
-    /// What it slides on (`ground`).
+    /// What it slides on (`ground`, a moving link, or another block).
     pub on: Ident,
     /// The direction of the line, with its unit (`deg`, `rad`, none: rad).
     pub angle: Expr,
@@ -199,7 +212,7 @@ pub enum ForceValue {
 /// The words that begin a statement (besides `let` and `const`).
 const STATEMENTS: &[&str] = &[
     "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "motor",
-    "range", "allow", "joints", "links", "input", "slider",
+    "range", "allow", "joints", "links", "input", "slider", "cylinder",
 ];
 
 /// Unit words a user may write after a value where none is taken (in a
@@ -704,7 +717,7 @@ mod tests {
         let (message, _, column) = error("pub M { forse at E = (1.0, 0.0); }");
         assert_eq!(
             message,
-            "unknown statement `forse`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input` or `slider`; did you mean `force`?"
+            "unknown statement `forse`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input`, `slider` or `cylinder`; did you mean `force`?"
         );
         assert_eq!(column, 8);
     }

@@ -8,8 +8,8 @@
 
 use super::{
     end, kw, last_token, list, next_text, starts_arg, starts_assign, starts_statement, text,
-    unit_message, unit_word, vocabulary, Arg, Assign, DrawnSlider, Force, ForceValue, Item, Let,
-    Mass, RangeDecl, Valued, STATEMENTS,
+    unit_message, unit_word, vocabulary, Arg, Assign, DrawnCylinder, DrawnSlider, Force,
+    ForceValue, Item, Let, Mass, RangeDecl, Valued, STATEMENTS,
 };
 use syn::buffer::Cursor;
 use syn::parse::{Parse, ParseStream};
@@ -28,7 +28,7 @@ impl Parse for Item {
         let word: Ident = input.parse().map_err(|e| {
             syn::Error::new(
                 e.span(),
-                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input` or `slider`",
+                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input`, `slider` or `cylinder`",
             )
         })?;
         match word.to_string().as_str() {
@@ -48,10 +48,11 @@ impl Parse for Item {
             "links" => Ok(Item::Links(word.span(), drawn_list(input, "links")?)),
             "input" => parse_input(input, start),
             "slider" => parse_slider(input, start),
+            "cylinder" => parse_cylinder(input, start),
             other => Err(syn::Error::new(
                 word.span(),
                 format!(
-                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input` or `slider`{}",
+                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input`, `slider` or `cylinder`{}",
                     crate::diag::did_you_mean(other, STATEMENTS.iter().copied())
                 ),
             )),
@@ -690,6 +691,42 @@ fn parse_slider(input: ParseStream, start: Cursor) -> syn::Result<Item> {
         angle,
         unit,
     }))
+}
+
+/// `cylinder CYL from B to C;` or `cylinder (BARREL, ROD) from B to C;`,
+/// after `cylinder`.
+fn parse_cylinder(input: ParseStream, start: Cursor) -> syn::Result<Item> {
+    let usage = "`cylinder lift from B to C;` or `cylinder (barrel, rod) from B to C;`";
+    let names = if input.peek(syn::token::Paren) {
+        let content;
+        parenthesized!(content in input);
+        let list = content.parse_terminated(Ident::parse, Token![,])?;
+        if list.len() != 2 {
+            return Err(syn::Error::new(
+                content.span(),
+                format!("a cylinder is one link or two (its barrel and its rod): {usage}"),
+            ));
+        }
+        list.into_iter().collect()
+    } else {
+        vec![name_after(input, "cylinder", "the cylinder's name", usage)?]
+    };
+    let word = |w: &str, what: &str| -> syn::Result<Ident> {
+        if !kw(input, w) {
+            return Err(input.error(format!("expected `{w}`: {usage}")));
+        }
+        let _: Ident = input.parse()?;
+        name_after(input, w, what, usage)
+    };
+    let from = word("from", "the joint its barrel is pinned at")?;
+    let to = word("to", "the joint its rod is pinned at")?;
+    end(
+        input,
+        start,
+        &format!("the `cylinder {} ..` statement", names[0]),
+        Valued::Nothing,
+    )?;
+    Ok(Item::Cylinder(DrawnCylinder { names, from, to }))
 }
 
 /// `input NAME = angle(LINK);` or `input NAME = angle(LINK, FROM_LINK);`,

@@ -4,8 +4,8 @@
 //! from `params`), its assembly mode from the drawing, its spans on the
 //! user's names.
 
-use super::decompose::{side, Frame, Step};
-use super::{Drawing, Joint, JointId, LinkId};
+use super::decompose::{side, Axis, Frame, Step};
+use super::{Drawing, Joint, JointId, LinkId, Slider};
 use crate::parse::{Arg, Let};
 use proc_macro2::{Group, Span, TokenStream, TokenTree};
 use quote::quote;
@@ -65,6 +65,14 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
             (c, "rrr", args, vec![l(la).clone(), l(lb).clone()])
         }
         Step::Triad { .. } => return triad(d, step),
+        Step::Rpr { .. } | Step::CarriedGuide { .. } | Step::Mark { .. } => {
+            return slot_statement(d, step)
+        }
+        Step::SlotPoint { .. }
+        | Step::RrpCarried { .. }
+        | Step::Rpp { .. }
+        | Step::Prp { .. }
+        | Step::Actuator { .. } => slot_joint(d, step),
         Step::Guide(k) => return guide(d, k),
         Step::Slide { slider, input } => {
             let s = &d.sliders[slider];
@@ -117,6 +125,117 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
 /// does not turn: `J_effector`.
 pub(super) fn effector(j: &Joint) -> Ident {
     Ident::new(&format!("{}_effector", j.name), j.name.span())
+}
+
+/// What a step of a block on a moving link or of a cylinder that defines a
+/// joint writes: the joint, its kind, its arguments, its links.
+fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<Arg>, Vec<Ident>) {
+    let j = |k: JointId| d.joint(k);
+    let l = |k: LinkId| &d.link(k).name;
+    match *step {
+        Step::SlotPoint {
+            link,
+            pivot,
+            slider,
+            joint,
+        } => {
+            let (p, at) = (j(pivot), j(joint));
+            let (x, y) = local_along(p, &d.sliders[slider], at);
+            let args = vec![
+                name_arg(l(link)),
+                Arg::From(p.name.clone()),
+                value(quote!((#x, #y)), at.name.span()),
+            ];
+            (at, "point", args, vec![])
+        }
+        Step::RrpCarried {
+            a,
+            la,
+            c,
+            slider,
+            origin,
+        } => {
+            let s = &d.sliders[slider];
+            let (a, c) = (j(a), j(c));
+            let ahead = (c.at.0 - a.at.0) * s.dir.0 + (c.at.1 - a.at.1) * s.dir.1;
+            let mode = Ident::new(if ahead > 0.0 { "plus" } else { "minus" }, c.name.span());
+            let args = vec![
+                name(a),
+                value(distance(a, c), c.name.span()),
+                name_arg(&line_name(d, slider)),
+                name_arg(&mode),
+                value(offset(j(origin), s, c), c.name.span()),
+            ];
+            (c, "rrp", args, vec![l(la).clone(), l(s.link).clone()])
+        }
+        Step::Rpp {
+            j: pin,
+            slider,
+            yoke,
+            origin,
+        } => {
+            let (s, y) = (&d.sliders[slider], &d.sliders[yoke]);
+            let (a, b) = (radians(s), radians(y));
+            let mut args = vec![
+                name(j(pin)),
+                name_arg(&line_name(d, yoke)),
+                value(quote!(#a - #b), l(s.link).span()),
+            ];
+            if let Some(o) = origin {
+                args.push(value(offset(j(o), y, j(y.at)), j(y.at).name.span()));
+            }
+            let links = vec![l(s.link).clone(), l(y.link).clone()];
+            (j(y.at), "rpp", args, links)
+        }
+        Step::Prp {
+            c,
+            sliders,
+            origins,
+        } => {
+            let c = j(c);
+            let mut args: Vec<Arg> = sliders
+                .iter()
+                .map(|&k| name_arg(&line_name(d, k)))
+                .collect();
+            if origins.iter().any(Option::is_some) {
+                for (k, o) in sliders.into_iter().zip(origins) {
+                    let e = match o {
+                        Some(o) => offset(j(o), &d.sliders[k], c),
+                        None => quote!(0.0),
+                    };
+                    args.push(value(e, c.name.span()));
+                }
+            }
+            let links = sliders.iter().map(|&k| l(d.sliders[k].link).clone());
+            (c, "prp", args, links.collect())
+        }
+        Step::Actuator {
+            a,
+            link,
+            b,
+            c,
+            cylinder,
+            input,
+        } => {
+            let (a, b, c) = (j(a), j(b), j(c));
+            let word = if side(a.at, b.at, c.at) > 0.0 {
+                "left"
+            } else {
+                "right"
+            };
+            let args = vec![
+                name(a),
+                value(distance(a, c), c.name.span()),
+                name(b),
+                name_arg(&d.input(input).name),
+                name_arg(&Ident::new(word, c.name.span())),
+            ];
+            let mut links = vec![l(link).clone()];
+            links.extend(d.cylinders[cylinder].names.iter().cloned());
+            (c, "actuator", args, links)
+        }
+        _ => unreachable!("slot_joint() is called on the steps it matches"),
+    }
 }
 
 /// The name of the line the block of `sliders[k]` slides on: `BLOCK_line`.
@@ -200,6 +319,14 @@ fn drawn_input(d: &Drawing) -> TokenStream {
     if input.slide {
         // A slide is measured from the block's drawn place.
         return quote!(0.0);
+    }
+    if let Some(c) = input
+        .length
+        .then(|| d.cylinder_named(&input.link))
+        .flatten()
+    {
+        let c = &d.cylinders[c];
+        return distance(d.joint(c.from), d.joint(c.to));
     }
     let links = (
         d.link_named(&input.link),
@@ -302,4 +429,137 @@ fn turn(d: &Drawing, a: Frame, b: Frame) -> TokenStream {
     };
     let ((ax, ay), (bx, by)) = (v(a), v(b));
     quote!(atan2(#ax * #by - #ay * #bx, #ax * #bx + #ay * #by))
+}
+
+/// The statements of a block on a moving link that define no joint: the
+/// RPR (`let BLOCK_slide = rpr(J, PIVOT, mode, offset) as (BLOCK, LINK)`),
+/// the carried line (`let BLOCK_line = guide(P, LINK, angle)`) and the
+/// point a carried slide is measured from (`let BLOCK_zero = point(..)`).
+fn slot_statement(d: &Drawing, step: &Step) -> Let {
+    let j = |k: JointId| d.joint(k);
+    let (name, kind, args, links) = match *step {
+        Step::Rpr {
+            j: pin,
+            pivot,
+            link,
+            slider,
+        } => {
+            let s = &d.sliders[slider];
+            let (pin, pivot) = (j(pin), j(pivot));
+            let along = (pin.at.0 - pivot.at.0) * s.dir.0 + (pin.at.1 - pivot.at.1) * s.dir.1;
+            let mode = Ident::new(if along > 0.0 { "plus" } else { "minus" }, pin.name.span());
+            let args = vec![
+                name(pin),
+                name(pivot),
+                name_arg(&mode),
+                value(offset(pivot, s, pin), pin.name.span()),
+            ];
+            let links = vec![d.link(s.link).name.clone(), d.link(link).name.clone()];
+            (suffixed(d, slider, "slide"), "rpr", args, links)
+        }
+        Step::CarriedGuide { slider, axis, mark } => {
+            let s = &d.sliders[slider];
+            let on = s.on.map(|l| d.link(l).name.clone());
+            let on = on.expect("a carried guide's slider is on a link");
+            let through = if mark {
+                suffixed(d, slider, "zero")
+            } else {
+                j(axis.origin()).name.clone()
+            };
+            let span = d.link(s.link).name.span();
+            let args = vec![
+                name_arg(&through),
+                name_arg(&on),
+                value(turn_to(d, axis, s), span),
+            ];
+            (line_name(d, slider), "guide", args, vec![])
+        }
+        Step::Mark { slider, axis } => {
+            let s = &d.sliders[slider];
+            let on = s.on.map(|l| d.link(l).name.clone());
+            let on = on.expect("a carried slide's slider is on a link");
+            let (x, y) = local_on(d, axis, j(s.at));
+            let args = vec![
+                name_arg(&on),
+                Arg::From(j(axis.origin()).name.clone()),
+                value(quote!((#x, #y)), j(s.at).name.span()),
+            ];
+            (suffixed(d, slider, "zero"), "point", args, vec![])
+        }
+        _ => unreachable!("slot_statement() is called on an RPR, a carried guide or a mark"),
+    };
+    let span = name.span();
+    Let {
+        name,
+        joints: Vec::new(),
+        kind: Ident::new(kind, span),
+        args,
+        args_span: span,
+        links,
+        slides: Vec::new(),
+    }
+}
+
+/// `BLOCK_word`, spanned on the block of `sliders[k]`.
+fn suffixed(d: &Drawing, k: usize, word: &str) -> Ident {
+    let block = &d.link(d.sliders[k].link).name;
+    Ident::new(&format!("{block}_{word}"), block.span())
+}
+
+/// The direction of a slider's line (rad): its angle as written, turned
+/// into radians when written in degrees.
+fn radians(s: &Slider) -> TokenStream {
+    let a = &s.angle;
+    if s.unit.as_ref().is_some_and(|u| u == "deg") {
+        quote!(((#a) * 0.017453292519943295))
+    } else {
+        quote!((#a))
+    }
+}
+
+/// The signed distance (length units) of the line of `s` through `j`'s
+/// drawn place from `from`, positive when the line passes to the left of
+/// `from` along its direction: `(j - from) x dir`. It is the offset of a
+/// group whose line's origin or pivot is `from`.
+fn offset(from: &Joint, s: &Slider, j: &Joint) -> TokenStream {
+    let (fx, fy, x, y) = (&from.x, &from.y, &j.x, &j.y);
+    let a = radians(s);
+    quote!(((#y) - (#fy)) * cos(#a) - ((#x) - (#fx)) * sin(#a))
+}
+
+/// `j`'s coordinates in the frame at `from` whose axis is the line of `s`.
+fn local_along(from: &Joint, s: &Slider, j: &Joint) -> (TokenStream, TokenStream) {
+    let (fx, fy, x, y) = (&from.x, &from.y, &j.x, &j.y);
+    let a = radians(s);
+    let (dx, dy) = (quote!(((#x) - (#fx))), quote!(((#y) - (#fy))));
+    (
+        quote!(#dx * cos(#a) + #dy * sin(#a)),
+        quote!(#dy * cos(#a) - #dx * sin(#a)),
+    )
+}
+
+/// `j`'s coordinates in the frame of a placed link's drawn axis.
+fn local_on(d: &Drawing, axis: Axis, j: &Joint) -> (TokenStream, TokenStream) {
+    match axis {
+        Axis::Joints(f) => local(d.joint(f.origin), d.joint(f.toward), j),
+        Axis::Slot { origin, slider } => local_along(d.joint(origin), &d.sliders[slider], j),
+    }
+}
+
+/// The angle (rad, counter-clockwise) from a placed link's drawn axis to
+/// the line of `s`.
+fn turn_to(d: &Drawing, axis: Axis, s: &Slider) -> TokenStream {
+    let a = radians(s);
+    match axis {
+        Axis::Joints(f) => {
+            let (o, t) = (d.joint(f.origin), d.joint(f.toward));
+            let (ox, oy, tx, ty) = (&o.x, &o.y, &t.x, &t.y);
+            let (ux, uy) = (quote!(((#tx) - (#ox))), quote!(((#ty) - (#oy))));
+            quote!(atan2(#ux * sin(#a) - #uy * cos(#a), #ux * cos(#a) + #uy * sin(#a)))
+        }
+        Axis::Slot { slider, .. } => {
+            let b = radians(&d.sliders[slider]);
+            quote!(#a - #b)
+        }
+    }
 }

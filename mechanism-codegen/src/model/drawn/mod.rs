@@ -1,10 +1,12 @@
 //! The drawn form of a definition: the joints where the drawing has them
 //! (the reference pose), the links as sets of joints (the fixed one named
 //! `ground`) and the inputs (a link's angle from the ground, or from the link
-//! that carries its motor, or a block's slide), and the blocks sliding on
-//! the ground (`slider B at J on ground along angle`). It is decomposed into
-//! the group statements (`ground`, `guide`, `crank`, `slider`, `rrr`, `rrp`,
-//! `triad`, `point`) a user would write by hand,
+//! that carries its motor, a block's slide, a cylinder's length), the blocks
+//! sliding on the ground or in slots of moving links (`slider B at J on LINK
+//! along angle`) and the cylinders (`cylinder C from J1 to J2`). It is
+//! decomposed into the group statements (`ground`, `guide`, `crank`,
+//! `slider`, `actuator`, `rrr`, `rrp`, `rpr`, `rpp`, `prp`, `triad`, `point`)
+//! a user would write by hand,
 //! in solve order, every length, offset and assembly mode read from the
 //! drawing; the rest of the macro sees only those statements.
 //!
@@ -63,25 +65,39 @@ struct Input {
     link: Ident,
     carrier: Option<Ident>,
     slide: bool,
-    coordinate: Option<Axis>,
+    coordinate: Option<Coordinate>,
+    /// `length(cylinder)`: the cylinder's length (`link` names the cylinder).
+    length: bool,
 }
 
 /// Which coordinate of a joint an input is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Axis {
+enum Coordinate {
     X,
     Y,
 }
 
-/// A block of the drawing sliding on the ground: its link (whose one joint
-/// is `at`), and its line through `at`'s drawn place at `angle` (`unit`
-/// `deg` or radians), the direction's value at the parameters' defaults.
+/// A block of the drawing: its link (whose one joint is `at`), and its line
+/// through `at`'s drawn place at `angle` (absolute, counter-clockwise from
+/// +x; `unit` `deg` or radians), the direction's value at the parameters'
+/// defaults; `on`: the moving link whose slot that line is (`None`: the
+/// ground).
 struct Slider {
     link: LinkId,
     at: JointId,
     angle: Expr,
     unit: Option<Ident>,
     dir: (f64, f64),
+    on: Option<LinkId>,
+}
+
+/// A cylinder of the drawing (`cylinder CYL from B to C;`): its barrel is
+/// pinned at joint `from`, its rod at joint `to`; `names`: the cylinder as
+/// one link, or its barrel and its rod.
+struct Cylinder {
+    names: Vec<Ident>,
+    from: JointId,
+    to: JointId,
 }
 
 /// The drawing, read.
@@ -90,6 +106,7 @@ struct Drawing {
     links: Vec<Link>,
     inputs: Vec<Input>,
     sliders: Vec<Slider>,
+    cylinders: Vec<Cylinder>,
     /// Where to point a message about the whole drawing (the `links` keyword).
     span: Span,
 }
@@ -125,6 +142,11 @@ impl Drawing {
         self.sliders.iter().find(|s| s.link == l)
     }
 
+    /// The cylinder named `name` (its one name, or its barrel's).
+    fn cylinder_named(&self, name: &Ident) -> Option<usize> {
+        self.cylinders.iter().position(|c| &c.names[0] == name)
+    }
+
     /// The fixed link.
     fn ground(&self) -> Option<LinkId> {
         self.links.iter().position(|l| l.name == GROUND).map(LinkId)
@@ -145,7 +167,11 @@ pub(super) fn expand(
     let drawn = |i: &Item| {
         matches!(
             i,
-            Item::Joints(..) | Item::Links(..) | Item::Input(..) | Item::Slider(..)
+            Item::Joints(..)
+                | Item::Links(..)
+                | Item::Input(..)
+                | Item::Slider(..)
+                | Item::Cylinder(..)
         )
     };
     let Some(first) = items.iter().position(drawn) else {
@@ -194,6 +220,10 @@ fn failed(d: &Drawing) -> Vec<Failed> {
     out.extend(effectors.map(|j| Failed {
         links: vec![emit::effector(j)],
         ..none(&emit::effector(j), "links")
+    }));
+    out.extend(d.cylinders.iter().map(|c| Failed {
+        links: c.names.clone(),
+        ..none(&c.names[0], "cylinder")
     }));
     out.extend(d.inputs.iter().map(|i| Failed {
         inputs: vec![i.name.clone()],

@@ -2,10 +2,10 @@
 //! valued at the parameters' defaults), each link's joints, each input's
 //! link; malformed entries are reported on their tokens and left out.
 
-use super::{Axis, Drawing, Input, Joint, JointId, Link, LinkId, Slider, GROUND};
+use super::{Coordinate, Cylinder, Drawing, Input, Joint, JointId, Link, LinkId, Slider, GROUND};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::model::args::NumberScope;
-use crate::parse::{Assign, DrawnSlider, Item};
+use crate::parse::{Assign, DrawnCylinder, DrawnSlider, Item};
 use crate::value::convert;
 use proc_macro2::Span;
 use syn::{Expr, Ident};
@@ -18,8 +18,10 @@ pub(super) fn read(items: Vec<Item>, scope: &NumberScope<'_>, errors: &mut Diagn
         links: Vec::new(),
         inputs: Vec::new(),
         sliders: Vec::new(),
+        cylinders: Vec::new(),
         span: Span::call_site(),
     };
+    let mut cylinders = Vec::new();
     let mut link_lists = Vec::new();
     let mut sliders = Vec::new();
     // Every joint written, drawn well or not (a malformed one is reported
@@ -45,6 +47,7 @@ pub(super) fn read(items: Vec<Item>, scope: &NumberScope<'_>, errors: &mut Diagn
                 }
             }
             Item::Slider(s) => sliders.push(s),
+            Item::Cylinder(c) => cylinders.push(c),
             _ => {}
         }
     }
@@ -53,29 +56,122 @@ pub(super) fn read(items: Vec<Item>, scope: &NumberScope<'_>, errors: &mut Diagn
             drawing.links.push(l);
         }
     }
+    let mut ons = Vec::new();
     for s in sliders {
-        read_slider(&mut drawing, s, scope, errors);
+        if let Some(on) = read_slider(&mut drawing, s, scope, errors) {
+            ons.push(on);
+        }
+    }
+    // Blocks may slide on blocks (the sine mechanism's yoke), so what a
+    // block slides on is found once every block is a link.
+    for (k, on) in ons.into_iter().enumerate() {
+        drawing.sliders[k].on = slid_on(&drawing, k, &on, errors);
+    }
+    for c in cylinders {
+        read_cylinder(&mut drawing, c, errors);
     }
     drawing
 }
 
-/// `slider BLOCK at J on ground along angle;`: the block becomes a link with
-/// the one joint `J`, sliding on the ground along the line through `J`'s
-/// drawn place.
-fn read_slider(d: &mut Drawing, s: DrawnSlider, scope: &NumberScope<'_>, errors: &mut Diagnostics) {
-    if s.on != GROUND {
+/// The moving link `on` that the block of `sliders[k]` slides on (`None`:
+/// the ground, or an error reported: no such link, or the block's joint
+/// pinned to it as well).
+fn slid_on(d: &Drawing, k: usize, on: &Ident, errors: &mut Diagnostics) -> Option<LinkId> {
+    if on == GROUND {
+        return None;
+    }
+    let s = &d.sliders[k];
+    let block = &d.link(s.link).name;
+    let Some(link) = d.link_named(on) else {
+        let names = d
+            .links
+            .iter()
+            .map(|l| l.name.to_string())
+            .collect::<Vec<_>>();
         errors.push(
-            s.on.span(),
-            format!("the drawn form has sliders on the ground only, and `{}` moves; write this block with the group statements (`rrp` on a guide carried by `{}`, or `rpr`)", s.on, s.on),
+            on.span(),
+            format!(
+                "no link named `{on}` for `{block}` to slide on{}",
+                did_you_mean(&on.to_string(), names.iter().map(String::as_str))
+            ),
+        );
+        return None;
+    };
+    let at = &d.joint(s.at).name;
+    if link == s.link {
+        errors.push(on.span(), format!("`{block}` cannot slide on itself"));
+    } else if d.link(link).joints.contains(&s.at) {
+        errors.push(
+            on.span(),
+            format!("`{at}` is a joint of `{on}` (a pin), so `{block}` cannot slide on `{on}` there: leave `{at}` out of `{on} = [..]`, the slot is the block's line"),
+        );
+    }
+    Some(link)
+}
+
+/// `cylinder CYL from B to C;`: both joints drawn, and distinct.
+fn read_cylinder(d: &mut Drawing, c: DrawnCylinder, errors: &mut Diagnostics) {
+    let names = d
+        .joints
+        .iter()
+        .map(|j| j.name.to_string())
+        .collect::<Vec<_>>();
+    let mut ends = [JointId(0); 2];
+    for (k, end) in [&c.from, &c.to].into_iter().enumerate() {
+        let Some(id) = d.joints.iter().position(|j| &j.name == end) else {
+            errors.push(
+                end.span(),
+                format!(
+                    "no joint named `{end}` is drawn{}",
+                    did_you_mean(&end.to_string(), names.iter().map(String::as_str))
+                ),
+            );
+            return;
+        };
+        ends[k] = JointId(id);
+    }
+    if ends[0] == ends[1] {
+        errors.push(
+            c.to.span(),
+            format!(
+                "a cylinder joins two joints, and `{}` is both its ends",
+                c.to
+            ),
         );
         return;
     }
+    for n in &c.names {
+        if d.links.iter().any(|l| &l.name == n) {
+            errors.push(
+                n.span(),
+                format!("`{n}` is a link already; a cylinder's links have names of their own"),
+            );
+            return;
+        }
+    }
+    d.cylinders.push(Cylinder {
+        names: c.names,
+        from: ends[0],
+        to: ends[1],
+    });
+}
+
+/// `slider BLOCK at J on LINK along angle;`: the block becomes a link with
+/// the one joint `J`, sliding on `LINK` (the ground or a moving link) along
+/// the line through `J`'s drawn place; the name `LINK` comes back (found
+/// once every block is read), `None` when the statement is rejected.
+fn read_slider(
+    d: &mut Drawing,
+    s: DrawnSlider,
+    scope: &NumberScope<'_>,
+    errors: &mut Diagnostics,
+) -> Option<Ident> {
     if d.links.iter().any(|l| l.name == s.block) {
         errors.push(
             s.block.span(),
             format!("`{}` is a link of `links {{ .. }}` already; a slider's block is a link of its own: give it a name of its own", s.block),
         );
-        return;
+        return None;
     }
     let Some(at) = d.joints.iter().position(|j| j.name == s.at).map(JointId) else {
         let names = d
@@ -91,16 +187,17 @@ fn read_slider(d: &mut Drawing, s: DrawnSlider, scope: &NumberScope<'_>, errors:
                 did_you_mean(&s.at.to_string(), names.iter().map(String::as_str))
             ),
         );
-        return;
+        return None;
     };
     let angle = match convert(&s.angle, scope) {
         Ok(v) => v,
-        Err(e) => return errors.error(e),
+        Err(e) => {
+            errors.error(e);
+            return None;
+        }
     };
     let defaults = |p: &Ident| scope.params.iter().find(|(n, _)| n == p).map(|(_, v)| *v);
-    let Some(mut a) = angle.eval_with(&defaults) else {
-        return;
-    };
+    let mut a = angle.eval_with(&defaults)?;
     if s.unit.as_ref().is_some_and(|u| u == "deg") {
         a = a.to_radians();
     }
@@ -114,7 +211,9 @@ fn read_slider(d: &mut Drawing, s: DrawnSlider, scope: &NumberScope<'_>, errors:
         angle: s.angle,
         unit: s.unit,
         dir: (a.cos(), a.sin()),
+        on: None,
     });
+    Some(s.on)
 }
 
 /// `NAME = (x, y)`: a joint at the reference pose.
@@ -222,7 +321,7 @@ fn read_link(
 /// `angle(LINK)` or `angle(LINK, CARRIER)`.
 fn read_input(name: Ident, value: &Expr, errors: &mut Diagnostics) -> Option<Input> {
     let usage = format!(
-        "an input is a link's angle, `input {name} = angle(crank);` (from the ground) or `input {name} = angle(shank, thigh);` (from the link carrying its motor), or a block's slide, `input {name} = slide(block);`, or a joint's coordinate, `input {name} = P.x;` with `P.y` an input too (inverse kinematics)"
+        "an input is a link's angle, `input {name} = angle(crank);` (from the ground) or `input {name} = angle(shank, thigh);` (from the link carrying its motor), or a block's slide, `input {name} = slide(block);`, or a cylinder's length, `input {name} = length(cylinder);`, or a joint's coordinate, `input {name} = P.x;` with `P.y` an input too (inverse kinematics)"
     );
     let ident = |e: &Expr| match e {
         Expr::Path(p) => p.path.get_ident().cloned(),
@@ -230,8 +329,8 @@ fn read_input(name: Ident, value: &Expr, errors: &mut Diagnostics) -> Option<Inp
     };
     if let Expr::Field(f) = value {
         let axis = match &f.member {
-            syn::Member::Named(m) if m == "x" => Some(Axis::X),
-            syn::Member::Named(m) if m == "y" => Some(Axis::Y),
+            syn::Member::Named(m) if m == "x" => Some(Coordinate::X),
+            syn::Member::Named(m) if m == "y" => Some(Coordinate::Y),
             _ => None,
         };
         if let (Some(joint), Some(axis)) = (ident(&f.base), axis) {
@@ -240,6 +339,7 @@ fn read_input(name: Ident, value: &Expr, errors: &mut Diagnostics) -> Option<Inp
                 link: joint,
                 carrier: None,
                 slide: false,
+                length: false,
                 coordinate: Some(axis),
             });
         }
@@ -257,6 +357,7 @@ fn read_input(name: Ident, value: &Expr, errors: &mut Diagnostics) -> Option<Inp
             carrier: None,
             slide: false,
             coordinate: None,
+            length: false,
         }),
         (Some("angle"), [Some(link), Some(carrier)]) => Some(Input {
             name,
@@ -264,12 +365,22 @@ fn read_input(name: Ident, value: &Expr, errors: &mut Diagnostics) -> Option<Inp
             carrier: (carrier != GROUND).then(|| carrier.clone()),
             slide: false,
             coordinate: None,
+            length: false,
         }),
         (Some("slide"), [Some(block)]) => Some(Input {
             name,
             link: block.clone(),
             carrier: None,
             slide: true,
+            coordinate: None,
+            length: false,
+        }),
+        (Some("length"), [Some(cylinder)]) => Some(Input {
+            name,
+            link: cylinder.clone(),
+            carrier: None,
+            slide: false,
+            length: true,
             coordinate: None,
         }),
         _ => {
