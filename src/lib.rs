@@ -62,6 +62,55 @@
 //! links, masses and loads, analyses, outputs, ranges) is described on the
 //! page of the [`mechanism!`] macro.
 //!
+//! # As drawn, and inverse kinematics
+//!
+//! A definition may also say the mechanism as it is drawn: the joints at one
+//! pose, the links as sets of joints, the inputs. The macro finds the groups
+//! and reads every length and assembly from the drawing. Making a joint's
+//! coordinates the inputs gives the inverse kinematics: a five-bar robot
+//! given its end point, its motor angles, rates and the torques that hold a
+//! 2 N payload:
+//!
+//! ```
+//! use mechanism::mechanism;
+//!
+//! mechanism! {
+//!     /// A five-bar robot given its end point (m, N).
+//!     pub Robot {
+//!         joints {
+//!             O1 = (0.0, 0.0),
+//!             O2 = (0.08, 0.0),
+//!             A = (-0.017364817766693034885, 0.098480775301220805937),
+//!             C = (0.15071067811865475244, 0.07071067811865475244),
+//!             P = (0.088752052427120438854, 0.2182272151659171658),
+//!         }
+//!         links { ground = [O1, O2], arm1 = [O1, A], arm2 = [O2, C], fore1 = [A, P], fore2 = [C, P] }
+//!         input x = P.x;                          // the end point is the input
+//!         input y = P.y;
+//!         motor q1 = angle(arm1);                 // the motors that hold it
+//!         motor q2 = angle(arm2);
+//!         force at P on P_effector = (0.0, -2.0); // a 2 N payload
+//!     }
+//! }
+//!
+//! fn main() -> Result<(), mechanism::Error> {
+//!     let robot = Robot::<f64>::default();
+//!     let (p, v, a) = (RobotInput { x: 0.04, y: 0.2 }, RobotInput { x: 0.1, y: 0.0 }, RobotInput { x: 0.0, y: 0.0 });
+//!     let s = robot.solve(&p, &v, &a)?;
+//!     let f = robot.forces(&s.position, &s.velocity, &s.acceleration)?;
+//!     let (q1, q2) = (s.position.arm1, s.position.arm2);
+//!     println!("q1 = {:.3} deg, q2 = {:.3} deg, rates {:.4} and {:.4} rad/s, torques {:.4} and {:.4} N m",
+//!         q1.to_degrees(), q2.to_degrees(), s.velocity.arm1, s.velocity.arm2, f.drive_q1, f.drive_q2);
+//!     // The end point is on the robot's axis of symmetry: the motors mirror each other.
+//!     assert!((q1 + q2 - core::f64::consts::PI).abs() < 1e-14);
+//!     assert!((f.drive_q1 + f.drive_q2).abs() < 1e-15);
+//!     Ok(())
+//! }
+//! ```
+//!
+//! `docs/dsl.md` ("Say it as drawn") has the whole drawn language: blocks in
+//! slots, cylinders, motors on moving links.
+//!
 //! # Conventions
 //!
 //! Lengths in the user's unit L throughout (results scale with it); angles in
