@@ -286,8 +286,47 @@ pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Di
                 m.link.span(),
                 format!("the motor `{name}` turns `{}` relative to itself; name the link carrying it, or none for the ground", m.link),
             );
+        } else if plan.turning_link(&m.link.to_string()).is_some()
+            && motor_joint(plan, m) == Some(false)
+        {
+            let on = m
+                .carrier
+                .as_ref()
+                .map_or("the ground".to_string(), |c| format!("`{c}`"));
+            let own = plan
+                .links
+                .get(&m.link.to_string())
+                .map(|i| i.points.clone())
+                .unwrap_or_default();
+            // A link pinned to it: the carrier the motor could have.
+            let neighbour = plan
+                .links
+                .iter()
+                .find(|(l, i)| {
+                    **l != m.link.to_string() && i.points.iter().any(|p| own.contains(p))
+                })
+                .map(|(l, _)| l.clone())
+                .unwrap_or_else(|| "LINK".into());
+            errors.push(
+                m.link.span(),
+                format!("the motor `{name}` turns `{}` on {on}, and they share no joint for its axis (`{}` has {}); a motor sits at the joint of the two links it turns: `motor {name} = angle({}, {neighbour});`, or a motor on a link pinned to {on}", m.link, m.link, own.join(", "), m.link),
+            );
         }
     }
+}
+
+/// Whether a motor's link and its carrier (or the ground) share a joint,
+/// its axis; `None` when a link is unknown (reported elsewhere).
+fn motor_joint(plan: &Plan, m: &crate::model::MotorSpec) -> Option<bool> {
+    let points = |l: &Ident| plan.links.get(&l.to_string()).map(|i| &i.points);
+    let own = points(&m.link)?;
+    Some(match &m.carrier {
+        Some(c) => {
+            let other = points(c)?;
+            own.iter().any(|p| other.contains(p))
+        }
+        None => own.iter().any(|p| plan.is_ground(p)),
+    })
 }
 
 /// Rule: a load value's name is not a parameter's, a constant's or a
