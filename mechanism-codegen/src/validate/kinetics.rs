@@ -303,7 +303,7 @@ pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Di
                 .links
                 .iter()
                 .find(|(l, i)| {
-                    **l != m.link.to_string() && i.points.iter().any(|p| own.contains(p))
+                    m.link != l.as_str() && i.points.iter().any(|p| own.contains(p))
                 })
                 .map(|(l, _)| l.clone())
                 .unwrap_or_else(|| "LINK".into());
