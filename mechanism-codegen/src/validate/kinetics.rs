@@ -302,9 +302,7 @@ pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Di
             let neighbour = plan
                 .links
                 .iter()
-                .find(|(l, i)| {
-                    m.link != l.as_str() && i.points.iter().any(|p| own.contains(p))
-                })
+                .find(|(l, i)| m.link != l.as_str() && i.points.iter().any(|p| own.contains(p)))
                 .map(|(l, _)| l.clone())
                 .unwrap_or_else(|| "LINK".into());
             errors.push(
