@@ -22,7 +22,10 @@ pub struct Columns(Vec<Column>);
 
 impl Columns {
     fn add(&mut self, name: &'static str, diff: f64, magnitude: f64) {
-        assert!(diff.is_finite() && magnitude.is_finite(), "{name}: not finite");
+        assert!(
+            diff.is_finite() && magnitude.is_finite(),
+            "{name}: not finite"
+        );
         let k = match self.0.iter().position(|c| c.name == name) {
             Some(k) => k,
             None => {

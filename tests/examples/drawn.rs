@@ -7,8 +7,8 @@
 
 use crate::common::scenes::{
     FiveBar, FiveBarInput, FourBar, FourBarInput, Shaper, ShaperForces, ShaperForcesInput,
-    ShaperForcesLoads, ShaperInput, SineMechanism, SineMechanismInput, SixBar, SixBarInput, SliderCrank,
-    SliderCrankInput,
+    ShaperForcesLoads, ShaperInput, SineMechanism, SineMechanismInput, SixBar, SixBarInput,
+    SliderCrank, SliderCrankInput,
 };
 use mechanism::mechanism;
 

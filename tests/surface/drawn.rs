@@ -1212,7 +1212,10 @@ fn a_drawn_watt_ii_is_the_grouped_one_with_its_forces() {
     // within an ulp or two (hypot and projections of 18-digit coordinates),
     // grown through two RRRs and the force solve; 48 is four times the
     // figure measured.
-    let (d, g) = (DrawnWattII::<f64>::default(), GroupedWattII::<f64>::default());
+    let (d, g) = (
+        DrawnWattII::<f64>::default(),
+        GroupedWattII::<f64>::default(),
+    );
     let mut c = Columns::default();
     for k in 0..1440 {
         let theta = (k as f64 / 4.0).to_radians();
@@ -1250,8 +1253,16 @@ fn a_drawn_watt_ii_is_the_grouped_one_with_its_forces() {
             ("r_crank_coupler", fd.r_crank_coupler, fg.r_crank_coupler),
             ("r_coupler_rocker", fd.r_coupler_rocker, fg.r_coupler_rocker),
             ("r_ground_rocker", fd.r_ground_rocker, fg.r_ground_rocker),
-            ("r_rocker_coupler2", fd.r_rocker_coupler2, fg.r_rocker_coupler2),
-            ("r_coupler2_output", fd.r_coupler2_output, fg.r_coupler2_output),
+            (
+                "r_rocker_coupler2",
+                fd.r_rocker_coupler2,
+                fg.r_rocker_coupler2,
+            ),
+            (
+                "r_coupler2_output",
+                fd.r_coupler2_output,
+                fg.r_coupler2_output,
+            ),
             ("r_ground_output", fd.r_ground_output, fg.r_ground_output),
         ] {
             c.vector(name, x, y);
@@ -1332,7 +1343,10 @@ fn a_drawn_trammel_is_the_grouped_one_with_its_forces() {
     // the rod's length and P's and G's offsets from the drawing remains.
     // (Given the grouped one x and the drawn one x - 0.12, A differs by up
     // to an ulp, which the near-dead poses grow to 25 ulps in the forces.)
-    let (d, g) = (DrawnTrammel::<f64>::default(), GroupedTrammel::<f64>::default());
+    let (d, g) = (
+        DrawnTrammel::<f64>::default(),
+        GroupedTrammel::<f64>::default(),
+    );
     let mut c = Columns::default();
     for k in -760..=760 {
         // The drawn slide is measured from A's drawn place, x = 0.12: the
@@ -1367,10 +1381,26 @@ fn a_drawn_trammel_is_the_grouped_one_with_its_forces() {
             ("omega_rod", vd.rod, vg.rod),
             ("alpha_rod", ad.rod, ag.rod),
             ("drive_s", fd.drive_s, fg.drive_s),
-            ("r_ground_block_a", fd.r_ground_block_a.normal, fg.r_ground_block_a.normal),
-            ("m_ground_block_a", fd.r_ground_block_a.moment, fg.r_ground_block_a.moment),
-            ("r_ground_block_b", fd.r_ground_block_b.normal, fg.r_ground_block_b.normal),
-            ("m_ground_block_b", fd.r_ground_block_b.moment, fg.r_ground_block_b.moment),
+            (
+                "r_ground_block_a",
+                fd.r_ground_block_a.normal,
+                fg.r_ground_block_a.normal,
+            ),
+            (
+                "m_ground_block_a",
+                fd.r_ground_block_a.moment,
+                fg.r_ground_block_a.moment,
+            ),
+            (
+                "r_ground_block_b",
+                fd.r_ground_block_b.normal,
+                fg.r_ground_block_b.normal,
+            ),
+            (
+                "m_ground_block_b",
+                fd.r_ground_block_b.moment,
+                fg.r_ground_block_b.moment,
+            ),
         ] {
             c.scalar(name, x, y);
         }
