@@ -11,9 +11,10 @@
 //! - [`firmware_table`]: the host's values the firmware compares with
 //!   (`tests/firmware/src/expected.rs`) equal what the host computes now;
 //! - [`cli_options`]: the examples' command line (options, `--help`, typos);
-//! - [`drawn`]: the four-bar, five-bar, slider-crank, Stephenson III,
-//!   shaper (with its forces) and sine mechanism written as drawn, against
-//!   the grouped scenes over their input ranges;
+//! - [`drawn`]: the four-bar, five-bar, slider-crank, six-bar (a block on
+//!   the crank's own line), Stephenson III, shaper (with its forces) and sine
+//!   mechanism written as drawn, against the grouped scenes over their input
+//!   ranges;
 //! - [`inverse`]: the five-bar robot given its end point (`five_bar_ik`)
 //!   against the forward five-bar.
 

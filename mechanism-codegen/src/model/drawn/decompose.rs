@@ -290,9 +290,15 @@ pub(super) fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Ste
 fn structure_holds(d: &Drawing, errors: &mut Diagnostics) -> bool {
     let before = errors.len();
     if d.ground().is_none() {
+        // Blocks on the ground's lines and no pin on it: a trammel's frame.
+        let lines_only = d.sliders.iter().any(|s| s.on.is_none());
         errors.push(
             d.span,
-            "the drawing has no fixed link: name it `ground`, with its joints, `ground = [O2, O4]`",
+            if lines_only {
+                "the drawing has no fixed link: name it `ground`, with its joints, `ground = [O2, O4]`, or `ground = []` when it has no pin, only the lines its blocks slide on"
+            } else {
+                "the drawing has no fixed link: name it `ground`, with its joints, `ground = [O2, O4]`"
+            },
         );
     }
     for (k, j) in d.joints.iter().enumerate() {
@@ -531,7 +537,11 @@ fn solve_order(d: &Drawing) -> Option<Outcome> {
         placed.place(j);
         steps.push(Step::Ground(j));
     }
-    placed.set_frame(ground, fixed[0], fixed[0]);
+    // The ground's frame marks it placed and is never read (its joints are
+    // placed here, its lines are guides). A ground without joints (its
+    // blocks' lines only, `ground = []`) is placed all the same.
+    let origin = fixed.first().copied().unwrap_or(JointId(0));
+    placed.set_frame(ground, origin, origin);
     let on_ground = (0..d.sliders.len()).filter(|&k| d.sliders[k].on.is_none());
     steps.extend(on_ground.map(Step::Guide));
     for (joint, x, y) in targets(d) {
