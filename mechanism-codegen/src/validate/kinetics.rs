@@ -364,6 +364,15 @@ fn loadable_link(
     errors: &mut Diagnostics,
 ) -> bool {
     let name = link.to_string();
+    // A link of a rejected statement (or drawing) was reported there: a
+    // load on it blames nothing more.
+    if model
+        .failed
+        .iter()
+        .any(|f| f.links.iter().any(|l| *l == name))
+    {
+        return false;
+    }
     if !plan.links.contains_key(&name) {
         let named = named_links(model);
         let hint = did_you_mean(&name, named.iter().map(String::as_str));
