@@ -4,7 +4,7 @@
 //! from `params`), its assembly mode from the drawing, its spans on the
 //! user's names.
 
-use super::decompose::{side, Axis, Frame, Step};
+use super::steps::{side, Axis, Frame, Step};
 use super::{Drawing, Joint, JointId, LinkId, Slider};
 use crate::parse::{Arg, Let};
 use proc_macro2::{Group, Span, TokenStream, TokenTree};

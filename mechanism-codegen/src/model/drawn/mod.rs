@@ -5,19 +5,24 @@
 //! sliding on the ground or in slots of moving links (`slider B at J on LINK
 //! along angle`) and the cylinders (`cylinder C from J1 to J2`). It is
 //! decomposed into the group statements (`ground`, `guide`, `crank`,
-//! `slider`, `actuator`, `rrr`, `rrp`, `rpr`, `rpp`, `prp`, `triad`, `point`)
+//! `slider`, `actuator`, `target`, `rrr`, `rrp`, `rpr`, `rpp`, `prp`,
+//! `triad`, `point`)
 //! a user would write by hand,
 //! in solve order, every length, offset and assembly mode read from the
 //! drawing; the rest of the macro sees only those statements.
 //!
 //! Stages, each looking only forward: [`read`] (the items into a
-//! [`Drawing`]), [`decompose`] (its structure and count of freedoms checked,
-//! then the solve order as [`decompose::Step`]s), [`emit`] (each step as the
+//! [`Drawing`]), [`decompose`] (its structure and count of freedoms checked
+//! by the drawing's [`rules`], then the solve order as [`steps::Step`]s, the
+//! next group each time found by [`groups`]), [`emit`] (each step as the
 //! `let` statement a user would write).
 
 mod decompose;
 mod emit;
+mod groups;
 mod read;
+mod rules;
+mod steps;
 
 use super::args::NumberScope;
 use super::Failed;
