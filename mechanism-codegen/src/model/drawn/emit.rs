@@ -85,8 +85,7 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
         Step::Rrp { a, la, c, slider } => {
             let s = &d.sliders[slider];
             let (a, c) = (j(a), j(c));
-            let ahead = (c.at.0 - a.at.0) * s.dir.0 + (c.at.1 - a.at.1) * s.dir.1;
-            let mode = Ident::new(if ahead > 0.0 { "plus" } else { "minus" }, c.name.span());
+            let mode = ahead(a, c, s);
             let args = vec![
                 name(a),
                 value(distance(a, c), c.name.span()),
@@ -157,8 +156,7 @@ fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<
         } => {
             let s = &d.sliders[slider];
             let (a, c) = (j(a), j(c));
-            let ahead = (c.at.0 - a.at.0) * s.dir.0 + (c.at.1 - a.at.1) * s.dir.1;
-            let mode = Ident::new(if ahead > 0.0 { "plus" } else { "minus" }, c.name.span());
+            let mode = ahead(a, c, s);
             let args = vec![
                 name(a),
                 value(distance(a, c), c.name.span()),
@@ -236,6 +234,14 @@ fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<
         }
         _ => unreachable!("slot_joint() is called on the steps it matches"),
     }
+}
+
+/// The mode a block's line gives a group: `plus` when the drawing has `to`
+/// ahead of `from` along the line's direction (`dot(to - from, dir) > 0`),
+/// `minus` behind it; spanned on `to`.
+fn ahead(from: &Joint, to: &Joint, s: &Slider) -> Ident {
+    let along = (to.at.0 - from.at.0) * s.dir.0 + (to.at.1 - from.at.1) * s.dir.1;
+    Ident::new(if along > 0.0 { "plus" } else { "minus" }, to.name.span())
 }
 
 /// The name of the line the block of `sliders[k]` slides on: `BLOCK_line`.
@@ -446,8 +452,7 @@ fn slot_statement(d: &Drawing, step: &Step) -> Let {
         } => {
             let s = &d.sliders[slider];
             let (pin, pivot) = (j(pin), j(pivot));
-            let along = (pin.at.0 - pivot.at.0) * s.dir.0 + (pin.at.1 - pivot.at.1) * s.dir.1;
-            let mode = Ident::new(if along > 0.0 { "plus" } else { "minus" }, pin.name.span());
+            let mode = ahead(pivot, pin, s);
             let args = vec![
                 name(pin),
                 name(pivot),
