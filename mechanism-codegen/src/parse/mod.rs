@@ -717,7 +717,7 @@ mod tests {
         let (message, _, column) = error("pub M { forse at E = (1.0, 0.0); }");
         assert_eq!(
             message,
-            "unknown statement `forse`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input`, `slider` or `cylinder`; did you mean `force`?"
+            "unknown statement `forse`; expected `let`, `const`, `params`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `motor`, `range`, `allow`, `joints`, `links`, `input`, `slider` or `cylinder`; did you mean `force`?"
         );
         assert_eq!(column, 8);
     }

@@ -16,6 +16,21 @@ use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
 use syn::{braced, parenthesized, Expr, ExprLit, Ident, Lit, Token};
 
+/// Every word that begins a statement, for messages: `` `let`, `const`,
+/// `params`, .. or `cylinder` `` (the vocabulary's list, so a new statement
+/// is named in them).
+fn statement_words() -> String {
+    let words: Vec<String> = ["let", "const"]
+        .iter()
+        .chain(STATEMENTS)
+        .map(|w| format!("`{w}`"))
+        .collect();
+    match words.split_last() {
+        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+        None => String::new(),
+    }
+}
+
 impl Parse for Item {
     fn parse(input: ParseStream) -> syn::Result<Self> {
         let start = input.cursor();
@@ -28,7 +43,7 @@ impl Parse for Item {
         let word: Ident = input.parse().map_err(|e| {
             syn::Error::new(
                 e.span(),
-                "expected a statement: `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input`, `slider` or `cylinder`",
+                format!("expected a statement: {}", statement_words()),
             )
         })?;
         match word.to_string().as_str() {
@@ -52,7 +67,8 @@ impl Parse for Item {
             other => Err(syn::Error::new(
                 word.span(),
                 format!(
-                    "unknown statement `{other}`; expected `let`, `params`, `const`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `range`, `allow`, `joints`, `links`, `input`, `slider` or `cylinder`{}",
+                    "unknown statement `{other}`; expected {}{}",
+                    statement_words(),
                     crate::diag::did_you_mean(other, STATEMENTS.iter().copied())
                 ),
             )),
