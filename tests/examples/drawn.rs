@@ -12,9 +12,7 @@ use crate::common::scenes::{
 };
 use mechanism::mechanism;
 
-#[path = "../common/columns.rs"]
-mod columns;
-use columns::Columns;
+use crate::columns::Columns;
 
 mechanism! {
     /// The four-bar of seed 002 (mm), drawn at theta2 = 1 rad.

@@ -32,6 +32,9 @@ mod check;
 mod render;
 
 mod cli_options;
+/// Drawn-against-grouped comparisons by column (`drawn`, `inverse`).
+#[path = "../common/columns.rs"]
+mod columns;
 mod drawn;
 mod firmware_table;
 mod forces;
