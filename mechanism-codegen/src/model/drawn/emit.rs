@@ -84,15 +84,8 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
         }
         Step::Rrp { a, la, c, slider } => {
             let s = &d.sliders[slider];
-            let (a, c) = (j(a), j(c));
-            let mode = ahead(a, c, s);
-            let args = vec![
-                name(a),
-                value(distance(a, c), c.name.span()),
-                name_arg(&line_name(d, slider)),
-                name_arg(&mode),
-            ];
-            (c, "rrp", args, vec![l(la).clone(), l(s.link).clone()])
+            let args = rrp_args(d, j(a), j(c), slider);
+            (j(c), "rrp", args, vec![l(la).clone(), l(s.link).clone()])
         }
         Step::Target { joint, x, y } => {
             let args = vec![name_arg(&d.input(x).name), name_arg(&d.input(y).name)];
@@ -156,14 +149,8 @@ fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<
         } => {
             let s = &d.sliders[slider];
             let (a, c) = (j(a), j(c));
-            let mode = ahead(a, c, s);
-            let args = vec![
-                name(a),
-                value(distance(a, c), c.name.span()),
-                name_arg(&line_name(d, slider)),
-                name_arg(&mode),
-                value(offset(j(origin), s, c), c.name.span()),
-            ];
+            let mut args = rrp_args(d, a, c, slider);
+            args.push(value(offset(j(origin), s, c), c.name.span()));
             (c, "rrp", args, vec![l(la).clone(), l(s.link).clone()])
         }
         Step::Rpp {
@@ -234,6 +221,17 @@ fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<
         }
         _ => unreachable!("slot_joint() is called on the steps it matches"),
     }
+}
+
+/// An RRP's first four arguments: the known joint `a`, its drawn distance
+/// to `c`, the line of `sliders[slider]` and the mode `c` is drawn in.
+fn rrp_args(d: &Drawing, a: &Joint, c: &Joint, slider: usize) -> Vec<Arg> {
+    vec![
+        name(a),
+        value(distance(a, c), c.name.span()),
+        name_arg(&line_name(d, slider)),
+        name_arg(&ahead(a, c, &d.sliders[slider])),
+    ]
 }
 
 /// The mode a block's line gives a group: `plus` when the drawing has `to`
