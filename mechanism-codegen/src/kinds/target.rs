@@ -5,7 +5,7 @@
 //! does not turn; its driving effort is the force (and couple) a positioner
 //! must apply to it, `drive_X` and `drive_Y` its components.
 
-use super::forces::{body_name, drive, rx, ForceCx, Held, Reaction};
+use super::forces::{body_name, rx, ForceCx, Held, Reaction};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::tag;
@@ -107,11 +107,14 @@ impl<'a> GroupKind<'a> for Target<'a> {
         cx.solve(stmt, quote!(::mechanism::force::target::reactions(&#load)));
         cx.power(quote!(#rx.drive.x * vel.rates.#x + #rx.drive.y * vel.rates.#y));
         for (input, axis) in [(x, "x"), (y, "y")] {
-            let doc = format!("Driving force on `{link}` along +{axis} (input `{input}`; force units): the {axis} component of the force a positioner applies at `{name}` to hold it on its path.");
-            let mut r = drive(&rx, input, "drive", Held::Push, doc);
             let a = format_ident!("{}", axis);
-            r.value = quote!(#rx.drive.#a);
-            cx.reaction(r);
+            cx.reaction(Reaction {
+                name: format_ident!("drive_{}", input),
+                ty: quote!(T),
+                value: quote!(#rx.drive.#a),
+                doc: format!("Driving force on `{link}` along +{axis} (input `{input}`; force units): the {axis} component of the force a positioner applies at `{name}` to hold it on its path."),
+                held: Held::Push,
+            });
         }
         let ground = body_name(&None);
         cx.reaction(Reaction {
