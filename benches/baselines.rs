@@ -8,6 +8,12 @@
 //! `velocity` and `acceleration`, against Newton on the whole loop closure
 //! with nalgebra `SMatrix` and heap `DMatrix` LU, warm-started from the
 //! previous input (`cargo bench --bench baselines -- stephenson`).
+//!
+//! The five-bar robot given its end point, group `five_bar_ik`: the
+//! generated `solve` (motor angles, rates, accelerations), and with `forces`
+//! (the motors' torques), against Newton on the arms' loop closure with
+//! nalgebra `SMatrix` LU, warm-started from the answer at a nearby end point
+//! (`cargo bench --bench baselines -- five_bar_ik`).
 
 #[path = "common/baselines.rs"]
 mod baselines;
@@ -233,5 +239,40 @@ fn stephenson(c: &mut Criterion) {
     grp.finish();
 }
 
-criterion_group!(benches, fourbar, stephenson);
+/// One end point of the report's section, with its velocity and
+/// acceleration: the generated inverse and the Newton baseline.
+fn five_bar_ik(c: &mut Criterion) {
+    use scenes::{FiveBarIk, FiveBarIkInput};
+    let m = FiveBarIk::default();
+    let inp = |x: f64, y: f64| FiveBarIkInput { x, y };
+    let (p, v, a) = ((0.05, 0.2), (0.3, -0.2), (1.5, 2.5));
+    let (vi, ai) = (inp(v.0, v.1), inp(a.0, a.1));
+    // Newton's warm start: the answer at an end point 0.1 mm away.
+    let near = m
+        .position(&inp(p.0 - 1e-4, p.1))
+        .expect("inside the workspace");
+    // Newton's distal angles run from the elbows to P, the generated
+    // forearms' axes from P to the elbows.
+    let pi = std::f64::consts::PI;
+    let guess = [near.arm1, near.forearm1 + pi, near.arm2, near.forearm2 + pi];
+    let mut grp = c.benchmark_group("five_bar_ik");
+    grp.throughput(Throughput::Elements(1));
+    grp.bench_function("generated solve", |b| {
+        b.iter(|| m.solve(&inp(black_box(p.0), black_box(p.1)), &vi, &ai))
+    });
+    grp.bench_function("generated solve + forces (motor torques)", |b| {
+        b.iter(|| {
+            let s = m
+                .solve(&inp(black_box(p.0), black_box(p.1)), &vi, &ai)
+                .ok()?;
+            m.forces(&s.position, &s.velocity, &s.acceleration).ok()
+        })
+    });
+    grp.bench_function("Newton SMatrix 4x4 LU (warm start)", |b| {
+        b.iter(|| baselines::five_bar_ik_newton(black_box(p), v, a, guess))
+    });
+    grp.finish();
+}
+
+criterion_group!(benches, fourbar, stephenson, five_bar_ik);
 criterion_main!(benches);

@@ -11,6 +11,11 @@
 //! driven by link 6): Newton-Raphson on its whole loop closure in the four
 //! unknown link angles, with nalgebra's fixed-size and heap LU
 //! ([`stephenson_newton_fixed`], [`stephenson_newton_heap`]).
+//!
+//! The five-bar robot given its end point (`scenes::FiveBarIk`): Newton on
+//! the two arms' loop closure in the motor and distal angles, with
+//! nalgebra's fixed-size LU ([`five_bar_ik_newton`]), the usual numerical
+//! inverse kinematics.
 #![allow(dead_code)]
 
 use nalgebra::{DMatrix, DVector, Matrix2, RealField, SMatrix, SVector, Vector2};
@@ -414,4 +419,90 @@ pub fn stephenson_joints(q: &[f64; 4]) -> [(f64, f64); 3] {
         (a.0 + ab * c4, a.1 + ab * s4),
         (a.0 + u * c4 - v * s4, a.1 + u * s4 + v * c4),
     ]
+}
+
+/// The five-bar robot's base, proximal and distal lengths (m).
+pub const IK_BASE: f64 = 0.08;
+pub const IK_PROX: f64 = 0.1;
+pub const IK_DIST: f64 = 0.16;
+/// Newton's stop for the five-bar: the first step below this (rad), at
+/// most `IK_MAX_ITER` steps.
+pub const IK_TOL: f64 = 1e-13;
+pub const IK_MAX_ITER: u32 = 20;
+
+/// The five-bar robot's inverse kinematics by Newton: the angles `[q1, t3, q2, t4]`, their rates and
+/// accelerations, and the iterations taken.
+pub struct FiveBarIkOut {
+    pub q: [f64; 4],
+    pub w: [f64; 4],
+    pub al: [f64; 4],
+    pub iterations: u32,
+}
+
+/// Newton on the two arms' loop closure at end point `p` (m) from
+/// `guess`, then the rates and accelerations for the end point's velocity
+/// `v` (m/s) and acceleration `a` (m/s^2) with the converged Jacobian.
+pub fn five_bar_ik_newton(
+    p: (f64, f64),
+    v: (f64, f64),
+    a: (f64, f64),
+    guess: [f64; 4],
+) -> Option<FiveBarIkOut> {
+    let r = [IK_PROX, IK_DIST, IK_PROX, IK_DIST];
+    let jac = |q: &[f64; 4]| {
+        let (s, c): (Vec<f64>, Vec<f64>) = q.iter().map(|a| a.sin_cos()).unzip();
+        let mut j = SMatrix::<f64, 4, 4>::zeros();
+        for k in 0..2 {
+            j[(0, k)] = -r[k] * s[k];
+            j[(1, k)] = r[k] * c[k];
+            j[(2, k + 2)] = -r[k + 2] * s[k + 2];
+            j[(3, k + 2)] = r[k + 2] * c[k + 2];
+        }
+        (j, s, c)
+    };
+    let mut q = guess;
+    let mut iterations = 0;
+    loop {
+        let (j, s, c) = jac(&q);
+        let f = SVector::<f64, 4>::new(
+            r[0] * c[0] + r[1] * c[1] - p.0,
+            r[0] * s[0] + r[1] * s[1] - p.1,
+            IK_BASE + r[2] * c[2] + r[3] * c[3] - p.0,
+            r[2] * s[2] + r[3] * s[3] - p.1,
+        );
+        let step = j.lu().solve(&f)?;
+        for k in 0..4 {
+            q[k] -= step[k];
+        }
+        iterations += 1;
+        if step.amax() < IK_TOL {
+            break;
+        }
+        if iterations >= IK_MAX_ITER {
+            return None;
+        }
+    }
+    let (j, s, c) = jac(&q);
+    let lu = j.lu();
+    let w = lu.solve(&SVector::<f64, 4>::new(v.0, v.1, v.0, v.1))?;
+    let centripetal = |k: usize| (r[k] * c[k] * w[k] * w[k], r[k] * s[k] * w[k] * w[k]);
+    let (c0, c1, c2, c3) = (
+        centripetal(0),
+        centripetal(1),
+        centripetal(2),
+        centripetal(3),
+    );
+    let rhs = SVector::<f64, 4>::new(
+        a.0 + c0.0 + c1.0,
+        a.1 + c0.1 + c1.1,
+        a.0 + c2.0 + c3.0,
+        a.1 + c2.1 + c3.1,
+    );
+    let al = lu.solve(&rhs)?;
+    Some(FiveBarIkOut {
+        q,
+        w: [w[0], w[1], w[2], w[3]],
+        al: [al[0], al[1], al[2], al[3]],
+        iterations,
+    })
 }

@@ -20,12 +20,12 @@
 //! the rate and acceleration systems with the converged Jacobian: the usual
 //! numerical inverse kinematics.
 
+use crate::baselines::{self, IK_BASE as BASE, IK_DIST as DIST, IK_PROX as PROX};
 use crate::scenes::{FiveBar, FiveBarIk, FiveBarIkInput, FiveBarInput};
 use crate::timing::{self, Sweep};
 use mechanism::Real;
 use mechanism_reference::groups::{rrr_accelerations, rrr_position, rrr_rates, v};
 use mechanism_reference::Dd;
-use nalgebra::{SMatrix, SVector};
 use std::fmt::Write as _;
 use std::hint::black_box;
 
@@ -34,15 +34,8 @@ const SIDE: usize = 60;
 /// The end point's velocity (m/s) and acceleration (m/s^2).
 const V: (f64, f64) = (0.3, -0.2);
 const A: (f64, f64) = (1.5, 2.5);
-/// The robot's dimensions (m): base, proximal and distal lengths.
-const BASE: f64 = 0.08;
-const PROX: f64 = 0.1;
-const DIST: f64 = 0.16;
 /// Columns: the motor angles, their rates, their accelerations.
 const NAMES: [&str; 6] = ["q1", "q2", "d/dt q1", "d/dt q2", "d2/dt2 q1", "d2/dt2 q2"];
-/// Newton's stop: the first step below this (rad), at most `MAX_ITER`.
-const TOL: f64 = 1e-13;
-const MAX_ITER: u32 = 20;
 
 /// The smallest sine of an elbow angle kept (the angle between an arm and
 /// its distal link): 3 deg from the workspace's edge, where the arms
@@ -103,76 +96,6 @@ fn generated<T: Real>(m: &FiveBarIk<T>, p: (f64, f64)) -> Option<[f64; 6]> {
     Some([pos.arm1, pos.arm2, vel.arm1, vel.arm2, acc.arm1, acc.arm2].map(T::as_f64))
 }
 
-/// Newton's answer: the angles `[q1, t3, q2, t4]`, their rates and
-/// accelerations, and the iterations taken.
-struct NewtonOut {
-    q: [f64; 4],
-    w: [f64; 4],
-    al: [f64; 4],
-    iterations: u32,
-}
-
-/// Newton on the two arms' loop closure at end point `p` from `guess`.
-fn newton(p: (f64, f64), guess: [f64; 4]) -> Option<NewtonOut> {
-    let r = [PROX, DIST, PROX, DIST];
-    let jac = |q: &[f64; 4]| {
-        let (s, c): (Vec<f64>, Vec<f64>) = q.iter().map(|a| a.sin_cos()).unzip();
-        let mut j = SMatrix::<f64, 4, 4>::zeros();
-        for k in 0..2 {
-            j[(0, k)] = -r[k] * s[k];
-            j[(1, k)] = r[k] * c[k];
-            j[(2, k + 2)] = -r[k + 2] * s[k + 2];
-            j[(3, k + 2)] = r[k + 2] * c[k + 2];
-        }
-        (j, s, c)
-    };
-    let mut q = guess;
-    let mut iterations = 0;
-    loop {
-        let (j, s, c) = jac(&q);
-        let f = SVector::<f64, 4>::new(
-            r[0] * c[0] + r[1] * c[1] - p.0,
-            r[0] * s[0] + r[1] * s[1] - p.1,
-            BASE + r[2] * c[2] + r[3] * c[3] - p.0,
-            r[2] * s[2] + r[3] * s[3] - p.1,
-        );
-        let step = j.lu().solve(&f)?;
-        for k in 0..4 {
-            q[k] -= step[k];
-        }
-        iterations += 1;
-        if step.amax() < TOL {
-            break;
-        }
-        if iterations >= MAX_ITER {
-            return None;
-        }
-    }
-    let (j, s, c) = jac(&q);
-    let lu = j.lu();
-    let w = lu.solve(&SVector::<f64, 4>::new(V.0, V.1, V.0, V.1))?;
-    let centripetal = |k: usize| (r[k] * c[k] * w[k] * w[k], r[k] * s[k] * w[k] * w[k]);
-    let (c0, c1, c2, c3) = (
-        centripetal(0),
-        centripetal(1),
-        centripetal(2),
-        centripetal(3),
-    );
-    let rhs = SVector::<f64, 4>::new(
-        A.0 + c0.0 + c1.0,
-        A.1 + c0.1 + c1.1,
-        A.0 + c2.0 + c3.0,
-        A.1 + c2.1 + c3.1,
-    );
-    let al = lu.solve(&rhs)?;
-    Some(NewtonOut {
-        q,
-        w: [w[0], w[1], w[2], w[3]],
-        al: [al[0], al[1], al[2], al[3]],
-        iterations,
-    })
-}
-
 /// Newton's answers over the grid, warm-started along it.
 fn newton_rows(g: &[(f64, f64)], guess0: [f64; 4]) -> (Vec<Option<[f64; 6]>>, Vec<u32>) {
     let mut guess = guess0;
@@ -180,7 +103,7 @@ fn newton_rows(g: &[(f64, f64)], guess0: [f64; 4]) -> (Vec<Option<[f64; 6]>>, Ve
     let rows = g
         .iter()
         .map(|&p| {
-            let o = newton(p, guess)?;
+            let o = baselines::five_bar_ik_newton(p, V, A, guess)?;
             iterations.push(o.iterations);
             // An answer on the other elbow is no answer to this one: the
             // definition's elbows turn the distal links clockwise from arm
@@ -250,7 +173,15 @@ pub fn section() -> String {
             y: g[0].1,
         })
         .expect("in reach");
-    let guess0 = [first.arm1, first.forearm1, first.arm2, first.forearm2];
+    // Newton's distal angles run from the elbows to P; the generated
+    // forearms' axes run from P to the elbows (each RRR hangs them on P).
+    let pi = std::f64::consts::PI;
+    let guess0 = [
+        first.arm1,
+        first.forearm1 + pi,
+        first.arm2,
+        first.forearm2 + pi,
+    ];
     let (nrows, iterations) = newton_rows(&g, guess0);
     let n = g.len();
     let inp = |x: f64, y: f64| FiveBarIkInput { x, y };
@@ -304,7 +235,7 @@ pub fn section() -> String {
             Box::new(|| {
                 let (mut s, mut guess) = (0.0, guess0);
                 for &p in &g {
-                    if let Some(o) = newton(p, guess) {
+                    if let Some(o) = baselines::five_bar_ik_newton(p, V, A, guess) {
                         guess = o.q;
                         s += o.q[0] + o.w[2] + o.al[0];
                     }
@@ -341,7 +272,7 @@ pub fn section() -> String {
          the motor angles by its `atan2`); for f32, from the inputs rounded to f32. Baseline: \
          Newton on the two arms' loop closure (four equations in the motor and distal angles, \
          nalgebra `SMatrix` LU, warm-started from the previous point, stop at the first step \
-         below {TOL:.0e} rad, at most {MAX_ITER} iterations), then its rate and acceleration \
+         below {:.0e} rad, at most {} iterations), then its rate and acceleration \
          systems; an answer on the other elbow counts as failed. ns per end point, median and min-max over {} interleaved rounds. Errors: max \
          over the points; angles absolute (rad), rates and accelerations relative to the \
          column's largest |reference| value. The motor torques are not in the reference: they \
@@ -351,6 +282,8 @@ pub fn section() -> String {
         V.1,
         A.0,
         A.1,
+        baselines::IK_TOL,
+        baselines::IK_MAX_ITER,
         crate::ROUNDS
     );
     let _ = writeln!(
