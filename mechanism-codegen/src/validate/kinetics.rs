@@ -55,7 +55,7 @@ pub(super) fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Dia
 pub(super) fn level_matches_loads(model: &Model, errors: &mut Diagnostics) {
     let k = &model.kinetics;
     let loaded = !k.masses.is_empty() || !k.forces.is_empty() || !k.torques.is_empty();
-    if model.level == Level::Forces && !loaded && !k.declared {
+    if model.level >= Level::Forces && !loaded && !k.declared {
         if let Some(span) = model.level_span {
             errors.push(span, "`analysis forces` needs something to carry: add `mass LINK { m = .., at = POINT }`, `force at POINT = (fx, fy);` or `torque on LINK = t;`");
         }

@@ -54,7 +54,7 @@ pub fn planned(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
     // a ground point; a guide passes through a point of what carries it.
     geometry::geometry_consistent(model, plan, errors);
     // With a force analysis, nothing is joined to an actuator's cylinder.
-    if model.level == Level::Forces {
+    if model.level >= Level::Forces {
         kinetics::nothing_on_a_cylinder(model, plan, errors);
     }
     // `analysis forces` has loads to carry, and loads are not left out by a

@@ -1,0 +1,5 @@
+//! Forward dynamics of generated definitions (`analysis dynamics`): the
+//! inverse dynamics round trip, the energy balance of simulated runs, and
+//! the `run_up` four-bar against an independent reference.
+mod defs;
+mod round_trip;
