@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 pub mod plots;
+pub mod run_up;
 pub mod scenes;
 pub mod seed003;
 

@@ -3,3 +3,7 @@
 //! the `run_up` four-bar against an independent reference.
 mod defs;
 mod round_trip;
+#[path = "../../examples/common/run_up.rs"]
+mod run_up_scene;
+mod run_up;
+mod energy;

@@ -421,3 +421,47 @@ pub fn emit(
     };
     DynamicsCode { items, methods }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::emit::test_support::{flat, four_bar};
+    use proc_macro2::TokenStream;
+    use std::str::FromStr;
+
+    fn expand(src: &str) -> String {
+        flat(&crate::expand(TokenStream::from_str(src).unwrap()))
+    }
+
+    // Proves `analysis dynamics` alone generates the `dynamics` method and
+    // its struct (a force analysis alone does not), with one velocity
+    // evaluation at a unit rate per input, the acceleration at zero input
+    // accelerations, the closed form for one input and weights only with
+    // gravity.
+    #[test]
+    fn dynamics_only_when_asked() {
+        let forces = expand(&four_bar("mass link3 { m = 2.0, at = P, j = 0.1 };"));
+        assert!(!forces.contains("fndynamics("), "{forces}");
+        let dynamics = expand(&four_bar(
+            "analysis dynamics; mass link3 { m = 2.0, at = P, j = 0.1 };",
+        ));
+        assert!(dynamics.contains("fndynamics(") && dynamics.contains("structFourBarDynamics"));
+        assert!(dynamics.contains("self.velocity(pos,&FourBarInput{theta2:<Tas::mechanism::Real>::lit(1f64)})?"), "{dynamics}");
+        assert!(dynamics.contains("letx=[rhs[0]/m];"));
+        assert!(!dynamics.contains("gravity"));
+        let weighed = expand(&four_bar(
+            "analysis dynamics; mass link3 { m = 2.0, at = P }; gravity (0.0, -9.81);",
+        ));
+        assert!(weighed.contains("::mechanism::geometry::dot(&gravity,&c_0_0)"), "{weighed}");
+    }
+
+    // Proves a definition asked for dynamics with no inertia that moves is
+    // a compile error naming the links to give a mass.
+    #[test]
+    fn no_moving_inertia_is_an_error() {
+        let out = expand(&four_bar("analysis dynamics; mass link2 { m = 2.0, at = O2 };"));
+        assert!(out.contains("compile_error"), "{out}");
+        assert!(out.contains("`link2`,`link3`,`link4`"), "{out}");
+        let fine = expand(&four_bar("analysis dynamics; mass link2 { m = 2.0, at = O2, j = 0.1 };"));
+        assert!(!fine.contains("compile_error"), "{fine}");
+    }
+}

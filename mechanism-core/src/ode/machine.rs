@@ -191,3 +191,68 @@ pub fn steady_state<T: Real, S: System<T, 2>>(
         iterations,
     })
 }
+
+/// The flywheel that brings a machine's speed fluctuation to a target, by
+/// the energy method ([`flywheel`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Flywheel<T> {
+    /// The largest fluctuation of the excess work over a turn (J):
+    /// `max W - min W`.
+    pub energy: T,
+    /// The machine's reduced inertia averaged over the turn (kg m^2).
+    pub mean_inertia: T,
+    /// The inertia to add on the crank (kg m^2; 0 when the machine already
+    /// meets the target).
+    pub added: T,
+}
+
+/// Flywheel sizing by the energy method at the mean speed `omega_mean`
+/// (rad/s) with the drive's torque `drive` there (N m): over `samples`
+/// equal steps of a turn, `at(phi)` gives the reduced inertia `I(phi)`, its
+/// derivative `I'(phi)` and the generalized force of the loads and gravity
+/// `Q(phi)`; the equivalent torque `drive + Q - I' omega_mean^2 / 2` (the
+/// inertia's variation as a load at the mean speed), less its mean, is
+/// integrated (trapezoids) into the excess work `W(phi)`, and
+/// `added = (max W - min W) / (delta omega_mean^2) - mean I`, at least 0.
+/// Errors: `at`'s.
+pub fn flywheel<T: Real, E>(
+    samples: u32,
+    omega_mean: T,
+    drive: T,
+    delta: T,
+    mut at: impl FnMut(T) -> Result<(T, T, T), E>,
+) -> Result<Flywheel<T>, E> {
+    let n = samples.max(8);
+    let step = T::lit(core::f64::consts::TAU) / T::lit(f64::from(n));
+    let half = T::lit(0.5);
+    let torque = |i_prime: T, q: T| drive + q - half * i_prime * omega_mean * omega_mean;
+    // First pass: mean inertia and mean torque (rectangle rule = trapezoid
+    // rule for a periodic function).
+    let (mut sum_i, mut sum_t) = (T::zero(), T::zero());
+    for k in 0..n {
+        let (i, ip, q) = at(T::lit(f64::from(k)) * step)?;
+        sum_i += i;
+        sum_t += torque(ip, q);
+    }
+    let count = T::lit(f64::from(n));
+    let (mean_i, mean_t) = (sum_i / count, sum_t / count);
+    // Second pass: the excess work by trapezoids.
+    let (mut w, mut hi, mut lo) = (T::zero(), T::zero(), T::zero());
+    let (_, ip0, q0) = at(T::zero())?;
+    let mut prev = torque(ip0, q0) - mean_t;
+    for k in 1..=n {
+        let (_, ip, q) = at(T::lit(f64::from(k)) * step)?;
+        let cur = torque(ip, q) - mean_t;
+        w += half * step * (prev + cur);
+        hi = max(hi, w);
+        lo = min(lo, w);
+        prev = cur;
+    }
+    let energy = hi - lo;
+    let added = max(T::zero(), energy / (delta * omega_mean * omega_mean) - mean_i);
+    Ok(Flywheel {
+        energy,
+        mean_inertia: mean_i,
+        added,
+    })
+}
