@@ -6,4 +6,6 @@ mod round_trip;
 #[path = "../../examples/common/run_up.rs"]
 mod run_up_scene;
 mod run_up;
+#[path = "../../examples/common/leg_drop.rs"]
+mod leg_drop_scene;
 mod energy;
