@@ -22,7 +22,10 @@ fn main() {
         "A 2R leg released from rest under gravity, motors off or holding a pose (PD).",
         &[
             cli::CSV,
-            cli::flag("--pd", "the motors as a PD controller holding hip -80 deg, knee 30 deg"),
+            cli::flag(
+                "--pd",
+                "the motors as a PD controller holding hip -80 deg, knee 30 deg",
+            ),
         ],
     );
     let m = LegDrop::<f64>::default();
@@ -39,13 +42,24 @@ fn main() {
     let e0 = energy(&m, &y0).expect("assembles");
     let mut sys = Leg(m, motors);
     let mut ode = Dopri5::new(&mut sys, 0.0, y0, Options::new(1e-13, 1e-13)).expect("starts");
-    let names = ["t", "hip", "knee", "hip_rate", "knee_rate", "energy", "drift"];
+    let names = [
+        "t",
+        "hip",
+        "knee",
+        "hip_rate",
+        "knee_rate",
+        "energy",
+        "drift",
+    ];
     let csv = args.flag("--csv");
     if csv {
         outln!("{}", names.join(","));
     } else {
         outln!("2R leg released from rest at hip 0.3 rad, knee 0.9 rad; motors {motors:?}");
-        outln!("rad, rad/s, J; drift = (E - E0) / |E0|\n{}", common::header(&names, 13));
+        outln!(
+            "rad, rad/s, J; drift = (E - E0) / |E0|\n{}",
+            common::header(&names, 13)
+        );
     }
     for k in 0..=20 {
         let t = 0.5 * k as f64;

@@ -62,7 +62,15 @@ fn main() {
 /// pictures.
 fn report(m: &RunUp<f64>, s: &Steady<f64>) {
     outln!("Run-up of the four-bar under a DC motor tau = 1.2 (1 - omega/40) N m, from rest at phi = 0");
-    let names = ["t_s", "phi_rad", "omega", "alpha", "theta3", "theta4", "torque_Nm"];
+    let names = [
+        "t_s",
+        "phi_rad",
+        "omega",
+        "alpha",
+        "theta3",
+        "theta4",
+        "torque_Nm",
+    ];
     outln!("{}", common::header(&names, 12));
     let times: Vec<f64> = (0..=30).map(|k| k as f64 / 10.0).collect();
     let rows = run_up(m, &times).expect("the run-up integrates");
@@ -81,8 +89,10 @@ fn report(m: &RunUp<f64>, s: &Steady<f64>) {
         outln!("{}", common::table_row(&[30.0 * k as f64, i, di, q], 14, 6));
     }
     let target = 0.5 * s.delta;
-    let fly = machine::flywheel(720, s.mean_speed, motor(s.mean_speed), target, |phi| reduced(m, phi))
-        .expect("assembles");
+    let fly = machine::flywheel(720, s.mean_speed, motor(s.mean_speed), target, |phi| {
+        reduced(m, phi)
+    })
+    .expect("assembles");
     let mut bigger = *m;
     bigger.jf += fly.added;
     let check = steady(&bigger);

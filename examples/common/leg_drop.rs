@@ -63,11 +63,17 @@ pub struct Leg(pub LegDrop<f64>, pub Motors);
 impl System<f64, 4> for Leg {
     type Error = mechanism::Error;
     fn rate(&mut self, _t: f64, y: &[f64; 4]) -> Result<[f64; 4], mechanism::Error> {
-        let pos = self.0.position(&LegDropInput { hip: y[0], knee: y[1] })?;
+        let pos = self.0.position(&LegDropInput {
+            hip: y[0],
+            knee: y[1],
+        })?;
         let [th, tk] = self.1.torques(y);
         let d = self.0.dynamics(
             &pos,
-            &LegDropInput { hip: y[2], knee: y[3] },
+            &LegDropInput {
+                hip: y[2],
+                knee: y[3],
+            },
             &LegDropInput { hip: th, knee: tk },
         )?;
         Ok([y[2], y[3], d.accels.hip, d.accels.knee])
@@ -78,8 +84,17 @@ impl System<f64, 4> for Leg {
 /// `y`, from the position and velocity analyses alone (each mass centre's
 /// velocity and height, each link's angular velocity), not the dynamics.
 pub fn energy(m: &LegDrop<f64>, y: &[f64; 4]) -> Result<f64, mechanism::Error> {
-    let pos = m.position(&LegDropInput { hip: y[0], knee: y[1] })?;
-    let vel = m.velocity(&pos, &LegDropInput { hip: y[2], knee: y[3] })?;
+    let pos = m.position(&LegDropInput {
+        hip: y[0],
+        knee: y[1],
+    })?;
+    let vel = m.velocity(
+        &pos,
+        &LegDropInput {
+            hip: y[2],
+            knee: y[3],
+        },
+    )?;
     let g = 9.81;
     let parts = [
         (2.0, 0.03, vel.Gt, vel.thigh, pos.Gt.y),

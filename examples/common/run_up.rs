@@ -94,7 +94,11 @@ pub fn steady(m: &RunUp<f64>) -> Steady<f64> {
 pub fn reduced(m: &RunUp<f64>, phi: f64) -> Result<(f64, f64, f64), mechanism::Error> {
     let pos = m.position(&RunUpInput { phi })?;
     let d = m.dynamics(&pos, &RunUpInput { phi: 1.0 }, &RunUpInput { phi: 0.0 })?;
-    Ok((d.mass[0][0], 2.0 * d.velocity_terms[0], d.generalized_forces[0]))
+    Ok((
+        d.mass[0][0],
+        2.0 * d.velocity_terms[0],
+        d.generalized_forces[0],
+    ))
 }
 
 /// The grid of the CSV: 0.00 .. 3.00 s by 0.01 (301 times).

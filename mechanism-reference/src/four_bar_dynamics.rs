@@ -57,6 +57,10 @@ pub struct FourBar {
 
 type V = (f64, f64);
 
+/// A joint: (link, its joint's offset along the link from the centre),
+/// and the other link's the same (`None`: the ground).
+type Joint = (usize, f64, Option<(usize, f64)>);
+
 fn rot(th: f64, s: f64) -> V {
     (s * th.cos(), s * th.sin())
 }
@@ -70,7 +74,9 @@ impl FourBar {
         let d = (dx * dx + dy * dy).sqrt();
         // Distance from A along A -> O4 to the foot of B, and the height.
         let along = (self.coupler * self.coupler - self.rocker * self.rocker + d * d) / (2.0 * d);
-        let h = (self.coupler * self.coupler - along * along).max(0.0).sqrt();
+        let h = (self.coupler * self.coupler - along * along)
+            .max(0.0)
+            .sqrt();
         let (ux, uy) = (dx / d, dy / d);
         let b = (
             a.0 + along * ux - self.sign * h * uy,
@@ -100,7 +106,7 @@ impl FourBar {
         let s = self.local();
         // Constraint rows act on 9 coordinates (x_k, y_k, th_k).
         // Joint list: (body i, local s_i) - (body j, local s_j); j = None: ground.
-        let joints: [(usize, f64, Option<(usize, f64)>); 4] = [
+        let joints: [Joint; 4] = [
             (0, s[0].0, None),
             (0, s[0].1, Some((1, s[1].0))),
             (1, s[1].1, Some((2, s[2].1))),
@@ -190,7 +196,8 @@ impl FourBar {
         let mut kin = 0.0;
         for n in 0..3 {
             let v = (base[n].0 - w[n] * vel[n].1, base[n].1 + w[n] * vel[n].0);
-            kin += 0.5 * (self.bodies[n].m * (v.0 * v.0 + v.1 * v.1) + self.bodies[n].j * w[n] * w[n]);
+            kin +=
+                0.5 * (self.bodies[n].m * (v.0 * v.0 + v.1 * v.1) + self.bodies[n].j * w[n] * w[n]);
         }
         (kin, pot)
     }
@@ -251,6 +258,7 @@ impl FourBar {
 }
 
 /// Gaussian elimination with partial pivoting (the reference's own, `f64`).
+#[allow(clippy::needless_range_loop)]
 fn solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> [f64; N] {
     for k in 0..N {
         let p = (k..N)
@@ -291,7 +299,11 @@ mod tests {
             coupler: 0.25,
             rocker: 0.18,
             sign: 1.0,
-            bodies: [body(1.0, 1e-3, 0.05), body(1.2, 6.5e-3, 0.125), body(0.9, 2.5e-3, 0.09)],
+            bodies: [
+                body(1.0, 1e-3, 0.05),
+                body(1.2, 6.5e-3, 0.125),
+                body(0.9, 2.5e-3, 0.09),
+            ],
             gravity: (0.0, -9.81),
         }
     }

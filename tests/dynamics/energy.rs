@@ -25,8 +25,15 @@ fn a_released_leg_keeps_its_energy_for_ten_seconds() {
         let e = energy(&m, ode.y()).unwrap();
         worst = worst.max((e - e0).abs() / e0.abs());
     }
-    eprintln!("leg energy drift over 10 s: {worst:.1e} relative, steps {:?}", ode.steps());
-    assert!(worst < 1e-10, "energy drift {worst:e} over 10 s; steps {:?}", ode.steps());
+    eprintln!(
+        "leg energy drift over 10 s: {worst:.1e} relative, steps {:?}",
+        ode.steps()
+    );
+    assert!(
+        worst < 1e-10,
+        "energy drift {worst:e} over 10 s; steps {:?}",
+        ode.steps()
+    );
     // It did move: the joints are not at rest at the end.
     assert!(ode.y()[2].abs() + ode.y()[3].abs() > 0.1);
 }
@@ -38,10 +45,26 @@ fn a_released_leg_keeps_its_energy_for_ten_seconds() {
 fn a_pd_controller_holds_the_leg() {
     let m = LegDrop::<f64>::default();
     let target = [(-80.0f64).to_radians(), 30.0f64.to_radians()];
-    let mut sys = Leg(m, Motors::Pd { target, kp: 200.0, kd: 20.0 });
-    let mut ode = Dopri5::new(&mut sys, 0.0, [0.3, 0.9, 0.0, 0.0], Options::new(1e-10, 1e-10)).unwrap();
+    let mut sys = Leg(
+        m,
+        Motors::Pd {
+            target,
+            kp: 200.0,
+            kd: 20.0,
+        },
+    );
+    let mut ode = Dopri5::new(
+        &mut sys,
+        0.0,
+        [0.3, 0.9, 0.0, 0.0],
+        Options::new(1e-10, 1e-10),
+    )
+    .unwrap();
     ode.advance(&mut sys, 10.0).unwrap();
     let y = ode.y();
-    assert!((y[0] - target[0]).abs() < 0.1 && (y[1] - target[1]).abs() < 0.1, "{y:?}");
+    assert!(
+        (y[0] - target[0]).abs() < 0.1 && (y[1] - target[1]).abs() < 0.1,
+        "{y:?}"
+    );
     assert!(y[2].abs() < 1e-3 && y[3].abs() < 1e-3, "{y:?}");
 }

@@ -2,10 +2,10 @@
 //! inverse dynamics round trip, the energy balance of simulated runs, and
 //! the `run_up` four-bar against an independent reference.
 mod defs;
-mod round_trip;
-#[path = "../../examples/common/run_up.rs"]
-mod run_up_scene;
-mod run_up;
+mod energy;
 #[path = "../../examples/common/leg_drop.rs"]
 mod leg_drop_scene;
-mod energy;
+mod round_trip;
+mod run_up;
+#[path = "../../examples/common/run_up.rs"]
+mod run_up_scene;

@@ -35,7 +35,10 @@ fn check(name: &str, tau: &[f64], back: &[f64], scale: f64) -> f64 {
         .zip(back)
         .map(|(a, b)| (a - b).abs() / scale)
         .fold(0.0, f64::max);
-    assert!(worst <= 1e-13, "{name}: tau {tau:?} back {back:?} (rel {worst:e})");
+    assert!(
+        worst <= 1e-13,
+        "{name}: tau {tau:?} back {back:?} (rel {worst:e})"
+    );
     worst
 }
 
@@ -75,10 +78,51 @@ macro_rules! one_input {
     };
 }
 
-one_input!(four_bar_with_couple_and_force, FourBar, FourBarInput, phi, drive_phi, -4.0, 4.0, 40.0, 2.0);
-one_input!(slider_crank_with_slider_mass_and_press, SliderCrank, SliderCrankInput, theta, drive_theta, -4.0, 4.0, 100.0, 5.0, SliderCrankLoads { press: 300.0 });
-one_input!(stephenson_triad, Stephenson, StephensonInput, phi, drive_phi, -50.0f64.to_radians(), -3.0f64.to_radians(), 5.0, 1.0);
-one_input!(actuator_with_masses, Boom, BoomInput, len, drive_len, 2.0, 2.9, 0.5, 1.0e5);
+one_input!(
+    four_bar_with_couple_and_force,
+    FourBar,
+    FourBarInput,
+    phi,
+    drive_phi,
+    -4.0,
+    4.0,
+    40.0,
+    2.0
+);
+one_input!(
+    slider_crank_with_slider_mass_and_press,
+    SliderCrank,
+    SliderCrankInput,
+    theta,
+    drive_theta,
+    -4.0,
+    4.0,
+    100.0,
+    5.0,
+    SliderCrankLoads { press: 300.0 }
+);
+one_input!(
+    stephenson_triad,
+    Stephenson,
+    StephensonInput,
+    phi,
+    drive_phi,
+    -50.0f64.to_radians(),
+    -3.0f64.to_radians(),
+    5.0,
+    1.0
+);
+one_input!(
+    actuator_with_masses,
+    Boom,
+    BoomInput,
+    len,
+    drive_len,
+    2.0,
+    2.9,
+    0.5,
+    1.0e5
+);
 
 /// A two-input definition's round trip at random states.
 macro_rules! two_inputs {
@@ -88,9 +132,18 @@ macro_rules! two_inputs {
             let m = $ty::<f64>::default();
             let mut rng = Rng(0x0fed_cba9_8765_4321);
             for _ in 0..200 {
-                let input = $input { $a: rng.range($ra.0, $ra.1), $b: rng.range($rb.0, $rb.1) };
-                let rates = $input { $a: rng.range(-$rate, $rate), $b: rng.range(-$rate, $rate) };
-                let tau = $input { $a: rng.range(-$tau, $tau), $b: rng.range(-$tau, $tau) };
+                let input = $input {
+                    $a: rng.range($ra.0, $ra.1),
+                    $b: rng.range($rb.0, $rb.1),
+                };
+                let rates = $input {
+                    $a: rng.range(-$rate, $rate),
+                    $b: rng.range(-$rate, $rate),
+                };
+                let tau = $input {
+                    $a: rng.range(-$tau, $tau),
+                    $b: rng.range(-$tau, $tau),
+                };
                 let pos = m.position(&input).unwrap();
                 let d = m.dynamics(&pos, &rates, &tau).unwrap();
                 let vel = m.velocity(&pos, &rates).unwrap();
@@ -112,6 +165,36 @@ macro_rules! two_inputs {
     };
 }
 
-two_inputs!(leg_with_a_carried_knee_motor, Leg, LegInput, (hip, knee), (drive_hip, drive_knee), (-2.5, -0.5), (0.2, 2.5), 6.0, 30.0);
-two_inputs!(five_bar_given_its_end_point, FiveBarIk, FiveBarIkInput, (x, y), (drive_x, drive_y), (0.0, 0.08), (0.16, 0.22), 0.5, 10.0);
-two_inputs!(five_bar_given_its_motors, FiveBarFk, FiveBarFkInput, (q1, q2), (drive_q1, drive_q2), (1.6, 2.0), (1.1, 1.5), 5.0, 1.0);
+two_inputs!(
+    leg_with_a_carried_knee_motor,
+    Leg,
+    LegInput,
+    (hip, knee),
+    (drive_hip, drive_knee),
+    (-2.5, -0.5),
+    (0.2, 2.5),
+    6.0,
+    30.0
+);
+two_inputs!(
+    five_bar_given_its_end_point,
+    FiveBarIk,
+    FiveBarIkInput,
+    (x, y),
+    (drive_x, drive_y),
+    (0.0, 0.08),
+    (0.16, 0.22),
+    0.5,
+    10.0
+);
+two_inputs!(
+    five_bar_given_its_motors,
+    FiveBarFk,
+    FiveBarFkInput,
+    (q1, q2),
+    (drive_q1, drive_q2),
+    (1.6, 2.0),
+    (1.1, 1.5),
+    5.0,
+    1.0
+);

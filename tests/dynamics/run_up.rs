@@ -20,9 +20,21 @@ fn reference() -> FourBar {
         rocker: 0.18,
         sign: 1.0,
         bodies: [
-            Body { m: 2.5, j: 0.0214, g: 0.01 },
-            Body { m: 1.2, j: 6.5e-3, g: 0.125 },
-            Body { m: 0.9, j: 2.5e-3, g: 0.09 },
+            Body {
+                m: 2.5,
+                j: 0.0214,
+                g: 0.01,
+            },
+            Body {
+                m: 1.2,
+                j: 6.5e-3,
+                g: 0.125,
+            },
+            Body {
+                m: 0.9,
+                j: 2.5e-3,
+                g: 0.09,
+            },
         ],
         gravity: (0.0, -9.81),
     }
@@ -37,7 +49,9 @@ const STEPS: f64 = 4000.0;
 // crank angle 0.
 #[test]
 fn b_is_above_the_x_axis_at_crank_angle_zero() {
-    let pos = RunUp::<f64>::default().position(&RunUpInput { phi: 0.0 }).unwrap();
+    let pos = RunUp::<f64>::default()
+        .position(&RunUpInput { phi: 0.0 })
+        .unwrap();
     assert!(pos.B.y > 0.1, "{:?}", pos.B);
 }
 
@@ -58,11 +72,25 @@ fn csv_rows_match_the_global_formulation() {
     for (row, y) in rows.iter().zip(&refs) {
         let (alpha, r) = fb.accel(y[0], y[1], motor(y[1]));
         let expect = [row[0], y[0], y[1], alpha, r[0], r[1], motor(y[1])];
-        let scale = [1.0, y[0].abs().max(1.0), y[1].abs().max(1.0), alpha.abs().max(1.0), 1.0, 1.0, 1.0];
+        let scale = [
+            1.0,
+            y[0].abs().max(1.0),
+            y[1].abs().max(1.0),
+            alpha.abs().max(1.0),
+            1.0,
+            1.0,
+            1.0,
+        ];
         for k in 1..7 {
             let err = (row[k] - expect[k]).abs() / scale[k];
             worst = worst.max(err);
-            assert!(err < 1e-9, "t {} column {k}: {} vs {} ({err:e})", row[0], row[k], expect[k]);
+            assert!(
+                err < 1e-9,
+                "t {} column {k}: {} vs {} ({err:e})",
+                row[0],
+                row[k],
+                expect[k]
+            );
         }
     }
     eprintln!("run-up rows against the reference: worst {worst:.1e} relative, reference spread {spread:.1e}");
@@ -93,13 +121,28 @@ fn steady_state_is_periodic_in_the_reference() {
     let (ys, spread) = fb.run(0.0, [0.0, s.omega_0], &times, 40000.0, &motor);
     assert!(spread < 1e-9, "reference spread {spread:e}");
     let last = ys[n - 1];
-    assert!((last[0] - std::f64::consts::TAU).abs() < 1e-9, "phi {}", last[0]);
-    assert!((last[1] - s.omega_0).abs() < 1e-9, "omega {} vs {}", last[1], s.omega_0);
-    let w: Vec<f64> = std::iter::once(s.omega_0).chain(ys.iter().map(|y| y[1])).collect();
+    assert!(
+        (last[0] - std::f64::consts::TAU).abs() < 1e-9,
+        "phi {}",
+        last[0]
+    );
+    assert!(
+        (last[1] - s.omega_0).abs() < 1e-9,
+        "omega {} vs {}",
+        last[1],
+        s.omega_0
+    );
+    let w: Vec<f64> = std::iter::once(s.omega_0)
+        .chain(ys.iter().map(|y| y[1]))
+        .collect();
     let refine = |k: usize| {
         let (a, b, c) = (w[k - 1], w[k], w[k + 1]);
         let den = a - 2.0 * b + c;
-        if den == 0.0 { b } else { b - (c - a).powi(2) / (8.0 * den) }
+        if den == 0.0 {
+            b
+        } else {
+            b - (c - a).powi(2) / (8.0 * den)
+        }
     };
     let kmax = (1..n).max_by(|&i, &j| w[i].total_cmp(&w[j])).unwrap();
     let kmin = (1..n).min_by(|&i, &j| w[i].total_cmp(&w[j])).unwrap();
@@ -108,8 +151,16 @@ fn steady_state_is_periodic_in_the_reference() {
         "steady state against the reference: phi {:.1e}, omega {:.1e}, max {:.1e}, min {:.1e}; spread {spread:.1e}",
         last[0] - std::f64::consts::TAU, last[1] - s.omega_0, hi - s.max_speed, lo - s.min_speed
     );
-    assert!((hi - s.max_speed).abs() < 1e-8, "max {hi} vs {}", s.max_speed);
-    assert!((lo - s.min_speed).abs() < 1e-8, "min {lo} vs {}", s.min_speed);
+    assert!(
+        (hi - s.max_speed).abs() < 1e-8,
+        "max {hi} vs {}",
+        s.max_speed
+    );
+    assert!(
+        (lo - s.min_speed).abs() < 1e-8,
+        "min {lo} vs {}",
+        s.min_speed
+    );
     let mean = std::f64::consts::TAU / s.period;
     assert!((s.mean_speed - mean).abs() < 1e-14 * mean);
     assert!((s.delta - (s.max_speed - s.min_speed) / mean).abs() < 1e-14);

@@ -203,69 +203,13 @@ fn sum(terms: Vec<TokenStream>) -> TokenStream {
     }
 }
 
-/// Emits the dynamics of a valid, planned model at `analysis dynamics`.
-/// `moving` holds the points that move; `loads_param` is the force
-/// analysis' extra parameter (empty without a `loads` block).
-pub fn emit(
-    model: &Model,
-    plan: &Plan,
-    moving: &BTreeSet<String>,
-    loads_param: &TokenStream,
-) -> DynamicsCode {
-    let mut cx = Terms {
-        model,
-        plan,
-        moving,
-        terms: Vec::new(),
-        checks: TokenStream::new(),
-    };
-    cx.collect();
-    let names = TypeNames::of(model);
-    let inputs = super::names::input_names(model);
-    let n = inputs.len();
-    let coefficients = cx.coefficients();
+/// The code of `M`, `h`, `Q` and the right-hand side `tau + Q - h` from the
+/// velocity coefficients `c_I_K` (coefficient `K` at a unit rate of input `I`).
+fn equations(cx: &Terms<'_>, coefficients: &[Coefficient], n: usize) -> TokenStream {
     let index = |c: &Coefficient| coefficients.iter().position(|x| x == c).unwrap_or(0);
-    // c_I_K: coefficient K at a unit rate of input I.
     let c = |i: usize, k: usize| format_ident!("c_{}_{}", i, k);
-    let input_ty = &names.input;
-    let unit = |i: usize| {
-        let fields = inputs.iter().enumerate().map(|(k, name)| {
-            let v = lit(if k == i { 1.0 } else { 0.0 });
-            quote!(#name: #v)
-        });
-        quote!(#input_ty { #(#fields),* })
-    };
-    let mut code = cx.checks.clone();
-    if let Some((_, gx, gy)) = &model.kinetics.gravity {
-        let (gx, gy) = (gx.emit(), gy.emit());
-        code.extend(quote!(let gravity = ::mechanism::Vector2::new(#gx, #gy);));
-    }
-    for i in 0..n {
-        let locals: Vec<Ident> = (0..coefficients.len()).map(|k| c(i, k)).collect();
-        let fields: Vec<Ident> = coefficients.iter().map(Coefficient::field).collect();
-        let u = unit(i);
-        code.extend(quote! {
-            let (#(#locals,)*) = {
-                let vel = self.velocity(pos, &#u)?;
-                (#(vel.#fields,)*)
-            };
-        });
-    }
-    let needs_bias = cx
-        .terms
-        .iter()
-        .any(|t| matches!(t, Term::Translation { .. } | Term::Rotation { .. }));
-    if needs_bias {
-        let zero = {
-            let fields = inputs.iter().map(|name| quote!(#name: <T as ::mechanism::Real>::lit(0.0)));
-            quote!(#input_ty { #(#fields),* })
-        };
-        code.extend(quote! {
-            let vel = self.velocity(pos, rates)?;
-            let acc = self.acceleration(pos, &vel, &#zero)?;
-        });
-    }
-    let gravity = model.kinetics.gravity.is_some();
+    let gravity = cx.model.kinetics.gravity.is_some();
+    let mut code = TokenStream::new();
     let mut mass_entries = Vec::new();
     let mut h = Vec::new();
     let mut q = Vec::new();
@@ -329,7 +273,10 @@ pub fn emit(
     }
     // Rows one at a time (an entry below the diagonal reads the one above it).
     let rows = mass_entries.iter().enumerate().map(|(i, row)| {
-        let sets = row.iter().enumerate().map(|(j, e)| quote!(m_mat[#i][#j] = #e;));
+        let sets = row
+            .iter()
+            .enumerate()
+            .map(|(j, e)| quote!(m_mat[#i][#j] = #e;));
         quote!(#(#sets)*)
     });
     code.extend(quote! {
@@ -339,12 +286,19 @@ pub fn emit(
         let q_vec: [T; #n] = [#(#q),*];
         let rhs: [T; #n] = ::core::array::from_fn(|k| efforts_vec[k] + q_vec[k] - h_vec[k]);
     });
+    code
+}
+
+/// The code solving `M x = rhs` (closed form for one input, the core's
+/// elimination for several): `x` and `condition`, or the typed error.
+fn solve_code(inputs: &[Ident]) -> TokenStream {
+    let n = inputs.len();
     let group = inputs
         .iter()
         .map(|i| i.to_string())
         .collect::<Vec<_>>()
         .join(", ");
-    let solve = if n == 1 {
+    if n == 1 {
         quote! {
             let m = m_mat[0][0];
             // A sum of non-negative terms: zero only when no mass moves with
@@ -364,9 +318,80 @@ pub fn emit(
             let x = solved.x;
             let condition = solved.min_pivot_ratio;
         }
+    }
+}
+
+/// Emits the dynamics of a valid, planned model at `analysis dynamics`.
+/// `moving` holds the points that move; `loads_param` is the force
+/// analysis' extra parameter (empty without a `loads` block).
+pub fn emit(
+    model: &Model,
+    plan: &Plan,
+    moving: &BTreeSet<String>,
+    loads_param: &TokenStream,
+) -> DynamicsCode {
+    let mut cx = Terms {
+        model,
+        plan,
+        moving,
+        terms: Vec::new(),
+        checks: TokenStream::new(),
     };
-    code.extend(solve);
+    cx.collect();
+    let names = TypeNames::of(model);
+    let inputs = super::names::input_names(model);
+    let n = inputs.len();
+    let coefficients = cx.coefficients();
+    // c_I_K: coefficient K at a unit rate of input I.
+    let c = |i: usize, k: usize| format_ident!("c_{}_{}", i, k);
+    let input_ty = &names.input;
+    let unit = |i: usize| {
+        let fields = inputs.iter().enumerate().map(|(k, name)| {
+            let v = lit(if k == i { 1.0 } else { 0.0 });
+            quote!(#name: #v)
+        });
+        quote!(#input_ty { #(#fields),* })
+    };
+    let mut code = cx.checks.clone();
+    if let Some((_, gx, gy)) = &model.kinetics.gravity {
+        let (gx, gy) = (gx.emit(), gy.emit());
+        code.extend(quote!(let gravity = ::mechanism::Vector2::new(#gx, #gy);));
+    }
+    for i in 0..n {
+        let locals: Vec<Ident> = (0..coefficients.len()).map(|k| c(i, k)).collect();
+        let fields: Vec<Ident> = coefficients.iter().map(Coefficient::field).collect();
+        let u = unit(i);
+        code.extend(quote! {
+            let (#(#locals,)*) = {
+                let vel = self.velocity(pos, &#u)?;
+                (#(vel.#fields,)*)
+            };
+        });
+    }
+    let needs_bias = cx
+        .terms
+        .iter()
+        .any(|t| matches!(t, Term::Translation { .. } | Term::Rotation { .. }));
+    if needs_bias {
+        let zero = {
+            let fields = inputs
+                .iter()
+                .map(|name| quote!(#name: <T as ::mechanism::Real>::lit(0.0)));
+            quote!(#input_ty { #(#fields),* })
+        };
+        code.extend(quote! {
+            let vel = self.velocity(pos, rates)?;
+            let acc = self.acceleration(pos, &vel, &#zero)?;
+        });
+    }
+    code.extend(equations(&cx, &coefficients, n));
+    code.extend(solve_code(&inputs));
     let k: Vec<usize> = (0..n).collect();
+    let group = inputs
+        .iter()
+        .map(|i| i.to_string())
+        .collect::<Vec<_>>()
+        .join(", ");
     let dynamics_ty = format_ident!("{}Dynamics", model.name);
     let (position_ty, vis, name) = (&names.position, &model.vis, &names.name);
     let input_list = inputs
@@ -445,23 +470,35 @@ mod tests {
             "analysis dynamics; mass link3 { m = 2.0, at = P, j = 0.1 };",
         ));
         assert!(dynamics.contains("fndynamics(") && dynamics.contains("structFourBarDynamics"));
-        assert!(dynamics.contains("self.velocity(pos,&FourBarInput{theta2:<Tas::mechanism::Real>::lit(1f64)})?"), "{dynamics}");
+        assert!(
+            dynamics.contains(
+                "self.velocity(pos,&FourBarInput{theta2:<Tas::mechanism::Real>::lit(1f64)})?"
+            ),
+            "{dynamics}"
+        );
         assert!(dynamics.contains("letx=[rhs[0]/m];"));
-        assert!(!dynamics.contains("gravity"));
+        assert!(!dynamics.contains("letgravity"), "{dynamics}");
         let weighed = expand(&four_bar(
             "analysis dynamics; mass link3 { m = 2.0, at = P }; gravity (0.0, -9.81);",
         ));
-        assert!(weighed.contains("::mechanism::geometry::dot(&gravity,&c_0_0)"), "{weighed}");
+        assert!(
+            weighed.contains("::mechanism::geometry::dot(&gravity,&c_0_0)"),
+            "{weighed}"
+        );
     }
 
     // Proves a definition asked for dynamics with no inertia that moves is
     // a compile error naming the links to give a mass.
     #[test]
     fn no_moving_inertia_is_an_error() {
-        let out = expand(&four_bar("analysis dynamics; mass link2 { m = 2.0, at = O2 };"));
+        let out = expand(&four_bar(
+            "analysis dynamics; mass link2 { m = 2.0, at = O2 };",
+        ));
         assert!(out.contains("compile_error"), "{out}");
         assert!(out.contains("`link2`,`link3`,`link4`"), "{out}");
-        let fine = expand(&four_bar("analysis dynamics; mass link2 { m = 2.0, at = O2, j = 0.1 };"));
+        let fine = expand(&four_bar(
+            "analysis dynamics; mass link2 { m = 2.0, at = O2, j = 0.1 };",
+        ));
         assert!(!fine.contains("compile_error"), "{fine}");
     }
 }

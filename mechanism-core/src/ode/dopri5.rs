@@ -105,6 +105,9 @@ const D5: f64 = 701980252875.0 / 199316789632.0;
 const D6: f64 = -1453857185.0 / 822651844.0;
 const D7: f64 = 69997945.0 / 29380423.0;
 
+/// A trial step's fifth-order state, error estimate and seven stages.
+type Trial<T, const N: usize> = ([T; N], [T; N], [[T; N]; 7]);
+
 /// The integrator's state: time, state, derivative there, the next step
 /// size, and the last step's dense output.
 #[derive(Clone, Copy, Debug)]
@@ -230,16 +233,15 @@ impl<T: Real, const N: usize> Dopri5<T, N> {
 
     /// The seven stages of a step of size `h`: the fifth-order state, the
     /// error estimate and the stages the dense output needs.
-    fn trial<S: System<T, N>>(
-        &self,
-        sys: &mut S,
-        h: T,
-    ) -> Result<([T; N], [T; N], [[T; N]; 7]), (T, S::Error)> {
+    fn trial<S: System<T, N>>(&self, sys: &mut S, h: T) -> Result<Trial<T, N>, (T, S::Error)> {
         let (t, y, k1) = (self.t, &self.y, &self.k1);
         let l = T::lit;
         let mut eval = |tt: T, yy: &[T; N]| sys.rate(tt, yy).map_err(|e| (tt, e));
         let k2 = eval(t + l(C2) * h, &combine(y, h, &[(l(A21), k1)]))?;
-        let k3 = eval(t + l(C3) * h, &combine(y, h, &[(l(A31), k1), (l(A32), &k2)]))?;
+        let k3 = eval(
+            t + l(C3) * h,
+            &combine(y, h, &[(l(A31), k1), (l(A32), &k2)]),
+        )?;
         let y4 = combine(y, h, &[(l(A41), k1), (l(A42), &k2), (l(A43), &k3)]);
         let k4 = eval(t + l(C4) * h, &y4)?;
         let y5 = combine(
@@ -328,7 +330,11 @@ impl<T: Real, const N: usize> Dopri5<T, N> {
         budget: &mut u32,
     ) -> Result<(), Halt<T, S::Error>> {
         let span = t_end - self.t;
-        let dir = if span < T::zero() { -T::one() } else { T::one() };
+        let dir = if span < T::zero() {
+            -T::one()
+        } else {
+            T::one()
+        };
         if self.h <= T::zero() {
             self.h = self.start(sys, dir)?;
         }
@@ -368,7 +374,10 @@ impl<T: Real, const N: usize> Dopri5<T, N> {
                     let fac = if e == T::zero() {
                         T::lit(10.0)
                     } else {
-                        min(T::lit(10.0), max(T::lit(0.2), T::lit(0.9) * e.powf(T::lit(-0.2))))
+                        min(
+                            T::lit(10.0),
+                            max(T::lit(0.2), T::lit(0.9) * e.powf(T::lit(-0.2))),
+                        )
                     };
                     if e <= T::one() {
                         self.keep_dense(hs, &y1, &k);
@@ -386,7 +395,10 @@ impl<T: Real, const N: usize> Dopri5<T, N> {
                     self.rejected += 1;
                     self.h = h * max(T::lit(0.2), T::lit(0.9) * e.powf(T::lit(-0.2)));
                     if self.h < h_min {
-                        return Err(Halt::StepSize { t: self.t, h: self.h });
+                        return Err(Halt::StepSize {
+                            t: self.t,
+                            h: self.h,
+                        });
                     }
                 }
             }
@@ -398,7 +410,11 @@ impl<T: Real, const N: usize> Dopri5<T, N> {
     /// and [`Dopri5::locate`] over the step from [`Dopri5::t_old`] to
     /// [`Dopri5::t`]). Errors as [`Dopri5::advance`]'s, with a budget of
     /// [`Options::max_steps`] trials for this one step.
-    pub fn step_towards<S: System<T, N>>(&mut self, sys: &mut S, t_end: T) -> Result<(), Halt<T, S::Error>> {
+    pub fn step_towards<S: System<T, N>>(
+        &mut self,
+        sys: &mut S,
+        t_end: T,
+    ) -> Result<(), Halt<T, S::Error>> {
         let mut budget = self.options.max_steps;
         if self.t != t_end {
             self.step(sys, t_end, &mut budget)?;
@@ -414,7 +430,11 @@ impl<T: Real, const N: usize> Dopri5<T, N> {
     /// Integrates to `t_end` (either direction), stepping exactly onto it.
     /// Errors: [`Halt`] (the system's error with its time, a collapsed step,
     /// the step budget of [`Options::max_steps`] spent, non-finite values).
-    pub fn advance<S: System<T, N>>(&mut self, sys: &mut S, t_end: T) -> Result<(), Halt<T, S::Error>> {
+    pub fn advance<S: System<T, N>>(
+        &mut self,
+        sys: &mut S,
+        t_end: T,
+    ) -> Result<(), Halt<T, S::Error>> {
         let mut budget = self.options.max_steps;
         while self.t != t_end {
             self.step(sys, t_end, &mut budget)?;
@@ -440,14 +460,20 @@ impl<T: Real, const N: usize> Dopri5<T, N> {
         G: FnMut(&mut S, T, &[T; N]) -> Result<T, S::Error>,
     {
         let mut budget = self.options.max_steps;
-        let mut g0 = event(sys, self.t, &self.y).map_err(|error| Halt::System { t: self.t, error })?;
+        let mut g0 =
+            event(sys, self.t, &self.y).map_err(|error| Halt::System { t: self.t, error })?;
         while self.t != t_end {
             self.step(sys, t_end, &mut budget)?;
-            let g1 = event(sys, self.t, &self.y).map_err(|error| Halt::System { t: self.t, error })?;
-            let crossed = (g0 < T::zero() && g1 >= T::zero()) || (g0 > T::zero() && g1 <= T::zero());
+            let g1 =
+                event(sys, self.t, &self.y).map_err(|error| Halt::System { t: self.t, error })?;
+            let crossed =
+                (g0 < T::zero() && g1 >= T::zero()) || (g0 > T::zero() && g1 <= T::zero());
             if crossed {
                 let t = self.locate(sys, &mut event, g0, g1)?;
-                return Ok(Stop::Event { t, y: self.dense(t) });
+                return Ok(Stop::Event {
+                    t,
+                    y: self.dense(t),
+                });
             }
             if g1 != T::zero() {
                 g0 = g1;
@@ -459,7 +485,13 @@ impl<T: Real, const N: usize> Dopri5<T, N> {
     /// The root of `event` in the last step (a sign change between its
     /// ends, `g0` at [`Dopri5::t_old`] and `g1` at [`Dopri5::t`]) by the
     /// Illinois method on the dense output, to a few eps relative in `t`.
-    pub fn locate<S, G>(&self, sys: &mut S, event: &mut G, g0: T, g1: T) -> Result<T, Halt<T, S::Error>>
+    pub fn locate<S, G>(
+        &self,
+        sys: &mut S,
+        event: &mut G,
+        g0: T,
+        g1: T,
+    ) -> Result<T, Halt<T, S::Error>>
     where
         S: System<T, N>,
         G: FnMut(&mut S, T, &[T; N]) -> Result<T, S::Error>,
@@ -490,14 +522,14 @@ impl<T: Real, const N: usize> Dopri5<T, N> {
                 b = t;
                 gb = g;
                 if side == 1 {
-                    ga = ga * T::lit(0.5);
+                    ga *= T::lit(0.5);
                 }
                 side = 1;
             } else {
                 a = t;
                 ga = g;
                 if side == -1 {
-                    gb = gb * T::lit(0.5);
+                    gb *= T::lit(0.5);
                 }
                 side = -1;
             }
@@ -523,7 +555,8 @@ mod tests {
     // the tolerance times the number of periods' growth: below 1e-10).
     #[test]
     fn meets_a_tight_tolerance_on_the_oscillator() {
-        let mut ode = Dopri5::new(&mut Oscillator, 0.0, [1.0, 0.0], Options::new(1e-12, 1e-14)).unwrap();
+        let mut ode =
+            Dopri5::new(&mut Oscillator, 0.0, [1.0, 0.0], Options::new(1e-12, 1e-14)).unwrap();
         let t1 = 20.0 * core::f64::consts::PI;
         ode.advance(&mut Oscillator, t1).unwrap();
         assert_eq!(ode.t(), t1);
@@ -536,11 +569,14 @@ mod tests {
     // found at the dense output's root: y0 = cos t crosses 0 at pi/2.
     #[test]
     fn dense_output_and_an_event() {
-        let mut ode = Dopri5::new(&mut Oscillator, 0.0, [1.0, 0.0], Options::new(1e-10, 1e-12)).unwrap();
+        let mut ode =
+            Dopri5::new(&mut Oscillator, 0.0, [1.0, 0.0], Options::new(1e-10, 1e-12)).unwrap();
         let stop = ode
             .advance_until(&mut Oscillator, 10.0, |_, _, y| Ok(y[0]))
             .unwrap();
-        let Stop::Event { t, y } = stop else { panic!("no event") };
+        let Stop::Event { t, y } = stop else {
+            panic!("no event")
+        };
         assert!((t - core::f64::consts::FRAC_PI_2).abs() < 1e-9, "{t}");
         assert!((y[1] + 1.0).abs() < 1e-9, "{y:?}");
         let mid = 0.5 * (t + ode.t());

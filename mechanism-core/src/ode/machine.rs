@@ -69,6 +69,9 @@ impl<T, E> From<Halt<T, E>> for SteadyError<T, E> {
     }
 }
 
+/// The end of a turn: its time and speed, the largest and smallest speed.
+type TurnEnd<T> = (T, T, T, T);
+
 /// One turn from `(phi0, omega)` at time 0: the time to reach `phi0 + 2
 /// pi` and the speed there; with `extremes`, also the largest and smallest
 /// speed on the way (the speed's stationary points, where `omega'` changes
@@ -81,7 +84,7 @@ fn turn<T: Real, S: System<T, 2>>(
     options: Options<T>,
     t_max: T,
     extremes: bool,
-) -> Result<Option<(T, T, T, T)>, Halt<T, S::Error>> {
+) -> Result<Option<TurnEnd<T>>, Halt<T, S::Error>> {
     let target = phi0 + T::lit(core::f64::consts::TAU);
     let mut ode = Dopri5::new(sys, T::zero(), [phi0, omega], options)?;
     let (mut hi, mut lo) = (omega, omega);
@@ -96,7 +99,12 @@ fn turn<T: Real, S: System<T, 2>>(
         };
         let g1 = ode.rate()[1];
         if extremes && ((g0 < T::zero()) != (g1 < T::zero())) {
-            let t = ode.locate(sys, &mut |s: &mut S, t, y: &[T; 2]| s.rate(t, y).map(|r| r[1]), g0, g1)?;
+            let t = ode.locate(
+                sys,
+                &mut |s: &mut S, t, y: &[T; 2]| s.rate(t, y).map(|r| r[1]),
+                g0,
+                g1,
+            )?;
             if end.is_none_or(|(t_end, _)| t <= t_end) {
                 let w = ode.dense(t)[1];
                 hi = max(hi, w);
@@ -131,7 +139,11 @@ fn end_of_turn<T: Real>(ode: &Dopri5<T, 2>, target: T) -> (T, T) {
     }
     // The nearer of the two bracketing times.
     let (pa, pb) = (ode.dense(a)[0], ode.dense(b)[0]);
-    let t = if abs(target - pa) < abs(pb - target) { a } else { b };
+    let t = if abs(target - pa) < abs(pb - target) {
+        a
+    } else {
+        b
+    };
     (t, ode.dense(t)[1])
 }
 
@@ -249,7 +261,10 @@ pub fn flywheel<T: Real, E>(
         prev = cur;
     }
     let energy = hi - lo;
-    let added = max(T::zero(), energy / (delta * omega_mean * omega_mean) - mean_i);
+    let added = max(
+        T::zero(),
+        energy / (delta * omega_mean * omega_mean) - mean_i,
+    );
     Ok(Flywheel {
         energy,
         mean_inertia: mean_i,

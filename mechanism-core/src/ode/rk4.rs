@@ -19,16 +19,19 @@ pub fn step<T: Real, const N: usize, S: System<T, N>>(
 ) -> Result<[T; N], Halt<T, S::Error>> {
     let half = T::lit(0.5);
     let (th, t1) = (t + half * h, t + h);
-    let eval = |sys: &mut S, t: T, y: &[T; N]| {
-        sys.rate(t, y).map_err(|error| Halt::System { t, error })
-    };
+    let eval =
+        |sys: &mut S, t: T, y: &[T; N]| sys.rate(t, y).map_err(|error| Halt::System { t, error });
     let k1 = eval(sys, t, y)?;
     let k2 = eval(sys, th, &combine(y, h, &[(half, &k1)]))?;
     let k3 = eval(sys, th, &combine(y, h, &[(half, &k2)]))?;
     let k4 = eval(sys, t1, &combine(y, h, &[(T::one(), &k3)]))?;
     let sixth = T::lit(1.0 / 6.0);
     let third = T::lit(1.0 / 3.0);
-    let out = combine(y, h, &[(sixth, &k1), (third, &k2), (third, &k3), (sixth, &k4)]);
+    let out = combine(
+        y,
+        h,
+        &[(sixth, &k1), (third, &k2), (third, &k3), (sixth, &k4)],
+    );
     if all_finite(&out) {
         Ok(out)
     } else {
@@ -100,6 +103,12 @@ mod tests {
     #[test]
     fn a_system_error_carries_its_time() {
         let halt = integrate(&mut Fails, 0.0f32, &[0.0], 1.0, 4).unwrap_err();
-        assert_eq!(halt, Halt::System { t: 0.625, error: "cannot assemble" });
+        assert_eq!(
+            halt,
+            Halt::System {
+                t: 0.625,
+                error: "cannot assemble"
+            }
+        );
     }
 }
