@@ -786,7 +786,7 @@ const DOCS: &[&str] = &[
 ];
 
 fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
+    mechanism_dev::workspace_root()
 }
 
 /// The fenced code blocks of a markdown text: (info string, body).

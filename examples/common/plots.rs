@@ -18,9 +18,15 @@ use std::path::{Path, PathBuf};
 const CYCLE_S: f64 = 4.0;
 
 /// `target/plots/<example>/`: under `CARGO_TARGET_DIR` if set (at run time, else at
-/// build time), else under the workspace's `target/`.
+/// build time), else under the workspace's `target/` (the nearest directory up
+/// from the manifest's with a `Cargo.lock`: the examples are the facade's, the
+/// tests that call this `mechanism-dev`'s).
 pub fn out_dir(example: &str) -> PathBuf {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = manifest
+        .ancestors()
+        .find(|d| d.join("Cargo.lock").is_file())
+        .unwrap_or(manifest);
     let target = std::env::var_os("CARGO_TARGET_DIR")
         .map(PathBuf::from)
         .or_else(|| option_env!("CARGO_TARGET_DIR").map(PathBuf::from))
