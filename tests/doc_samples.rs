@@ -940,6 +940,7 @@ fn named_targets_and_paths_exist() {
 mechanism::mechanism! {
     /// The Jansen leg of `tests/surface/describe.rs`, for the docs/plots.md sample.
     pub JansenLeg {
+        units { length = "cm" }
         let O = ground(0.0, 0.0);
         let Z = ground(-38.0, -7.8);
         let A = crank(O, 15.0, theta) as crank;
@@ -982,10 +983,9 @@ fn any_sample() -> Result<(), Box<dyn std::error::Error>> {
         .map(|k| { let t = k as f64 * std::f64::consts::TAU / 72.0;
                    (t, leg.position(&JansenLegInput { theta: t }).ok()) })
         .collect();
-    mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", "cm", &poses, &["F"])?
+    mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", &poses, &["F"])?
         .write_animation(4.0, "jansen.svg")?;
     std::fs::write("jansen.csv", mechanism_plot::any::csv("theta", "rad", &poses))?;
-    let cm = mechanism_plot::any::Units { length: "cm", force: "N" };
-    mechanism_plot::any::chart("Jansen leg", ("θ", "rad"), cm, &poses, &["F"])?.write("foot.svg")?;
+    mechanism_plot::any::chart("Jansen leg", ("θ", "rad"), &poses, &["F"])?.write("foot.svg")?;
     Ok(())
 }
