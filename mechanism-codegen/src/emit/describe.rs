@@ -5,6 +5,7 @@
 //! and trait methods nobody calls.
 
 use crate::kinds::{self, GuideLine};
+use crate::model::units::UnitNames;
 use crate::model::{Level, Model};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
@@ -41,12 +42,22 @@ fn path(item: &str) -> TokenStream {
 }
 
 /// The `mechanism::structure::Units` of the definition (its `units`
-/// statement, the symbols without one).
-pub fn units(model: &Model) -> TokenStream {
+/// statement; `Units::SYMBOLS` without one), for its `Structure`.
+fn units(model: &Model) -> TokenStream {
     let u = &model.units;
-    let (length, force, mass, time) = (&u.length, &u.force, &u.mass, &u.time);
     let ty = path("Units");
+    if *u == UnitNames::symbols() {
+        return quote!(#ty::SYMBOLS);
+    }
+    let (length, force, mass, time) = (&u.length, &u.force, &u.mass, &u.time);
     quote!(#ty { length: #length, force: #force, mass: #mass, time: #time })
+}
+
+/// The units of the result structs' `Fields` impls: the structure's, read
+/// from the mechanism's `Describe` impl (written once).
+pub fn units_of(model: &Model) -> TokenStream {
+    let name = &model.name;
+    quote!(<#name<T> as ::mechanism::structure::Describe>::STRUCTURE.units)
 }
 
 fn option_str(s: Option<String>) -> TokenStream {
@@ -244,5 +255,5 @@ fn fields(model: &Model, plan: &Plan, ty: &syn::Ident, level: usize) -> TokenStr
         let read = quote!(condition);
         entries.push(FieldEntry::new("condition".into(), "Ratio", "Scalar", read));
     }
-    fields_impl(ty, &entries, &units(model))
+    fields_impl(ty, &entries, &units_of(model))
 }

@@ -158,7 +158,7 @@ fn describe_stub(model: &Model) -> TokenStream {
     let text = name.to_string();
     let st = quote!(::mechanism::structure);
     let forces = model.kinetics.declared || model.level == Level::Forces;
-    let units = super::describe::units(model);
+    let units = super::describe::units_of(model);
     let fields = ["Position", "Velocity", "Acceleration", "Forces"]
         .iter()
         .take(if forces { 4 } else { 3 })
@@ -167,7 +167,7 @@ fn describe_stub(model: &Model) -> TokenStream {
         impl<T: ::mechanism::Real> #st::Describe for #name<T> {
             const STRUCTURE: #st::Structure = #st::Structure {
                 name: #text, points: &[], links: &[], guides: &[], inputs: &[], masses: &[],
-                units: #units,
+                units: #st::Units::SYMBOLS,
             };
         }
         #(#fields)*

@@ -440,7 +440,7 @@ fn forces_fields(model: &Model, names: &TypeNames, reactions: &[Reaction]) -> To
         let f = format_ident!("{}", extra);
         entries.push(FieldEntry::new(extra.into(), "Ratio", "Scalar", quote!(#f)));
     }
-    fields_impl(&names.forces, &entries, &super::describe::units(model))
+    fields_impl(&names.forces, &entries, &super::describe::units_of(model))
 }
 
 /// The `forces` method: the emitter's code, then the struct's value.
