@@ -214,7 +214,7 @@ fn parse_analysis(input: ParseStream, start: Cursor, word: &Ident) -> syn::Resul
         input,
         "analysis",
         "the analysis",
-        "`analysis position;`, `velocity`, `acceleration` or `forces`",
+        "`analysis position;`, `velocity`, `acceleration`, `forces` or `dynamics`",
     )?;
     end(
         input,
