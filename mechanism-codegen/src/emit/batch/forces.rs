@@ -299,7 +299,14 @@ pub(super) struct Owned {
 }
 
 /// The owned form's force parts (see [`Owned`]).
-pub(super) fn owned(model: &Model, force_fields: &[(Ident, ForceField)]) -> Owned {
+/// `kinematic`: the kinematic batch borrowed from the columns' fields
+/// (`NAMEBatch { in_theta: &self.in_theta, .. }`; borrowed field by field,
+/// so that the force columns can be borrowed beside it).
+pub(super) fn owned(
+    model: &Model,
+    force_fields: &[(Ident, ForceField)],
+    kinematic: &TokenStream,
+) -> Owned {
     let names = TypeNames::of(model);
     let fb_ty = format_ident!("{}ForcesBatch", names.name);
     let forces_ty = &names.forces;
@@ -318,7 +325,7 @@ pub(super) fn owned(model: &Model, force_fields: &[(Ident, ForceField)]) -> Owne
         #[inline]
         pub fn as_forces_batch(&mut self) -> #fb_ty<'_, T> {
             #fb_ty {
-                batch: self.as_batch(),
+                batch: #kinematic,
                 #(#loads: &self.#loads,)*
                 #(#outs: &mut self.#outs,)*
             }

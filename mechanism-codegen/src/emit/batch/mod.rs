@@ -88,7 +88,7 @@ pub fn emit(
 ) -> TokenStream {
     let kept: Vec<(Ident, TokenStream)> = outputs
         .iter()
-        .filter(|(o, _)| !given(model, o) && !constant(model, plan, o))
+        .filter(|(o, ty)| !given(model, o) && !constant(model, plan, o, ty))
         .cloned()
         .collect();
     let outputs = &kept[..];
@@ -303,7 +303,12 @@ fn owned(
     let cols_ty = format_ident!("{}Columns", name);
     let all_in = fields.input_names();
     let out_names = fields.output_names();
-    let force = force_fields.map(|ff| forces::owned(model, ff));
+    let kinematic = quote!(#batch_ty {
+        #(#all_in: &self.#all_in,)*
+        #(#out_names: &mut self.#out_names,)*
+        status: &mut self.status,
+    });
+    let force = force_fields.map(|ff| forces::owned(model, ff, &kinematic));
     let (loads, load_defaults, force_outs, force_methods) = match &force {
         Some(f) => (&f.loads[..], &f.load_defaults[..], &f.outs[..], f.methods.clone()),
         None => (&[][..], &[][..], &[][..], TokenStream::new()),
@@ -384,11 +389,7 @@ fn owned(
                 /// The columns as the borrowed batch of `solve_batch`.
                 #[inline]
                 pub fn as_batch(&mut self) -> #batch_ty<'_, T> {
-                    #batch_ty {
-                        #(#all_in: &self.#all_in,)*
-                        #(#out_names: &mut self.#out_names,)*
-                        status: &mut self.status,
-                    }
+                    #kinematic
                 }
             }
 
@@ -557,13 +558,13 @@ fn solve_batch(
 /// does not move (on such a link, from a still point). Its value is the
 /// scalar `position`'s at any element (and its rates zero); a column would
 /// repeat it per element.
-fn constant(model: &Model, plan: &Plan, output: &Ident) -> bool {
+/// `ty`: the output's type (`Point2<T>` for a point).
+fn constant(model: &Model, plan: &Plan, output: &Ident, ty: &TokenStream) -> bool {
     let o = output.to_string();
-    if plan.links.contains_key(&o) {
-        return plan.turning_link(&o).is_none();
+    if ty.to_string().contains("Point2") {
+        return !crate::emit::moving_points(model, plan).contains(&o);
     }
-    let is_point = model.stmts.iter().any(|s| s.name == o);
-    is_point && !crate::emit::moving_points(model, plan).contains(&o)
+    plan.links.contains_key(&o) && plan.turning_link(&o).is_none()
 }
 
 /// `true` for an output the batch leaves out because the caller has it
