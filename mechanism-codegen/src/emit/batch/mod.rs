@@ -324,15 +324,44 @@ fn owned(
         Some(r) => quote!(#r),
         None => quote!(status),
     };
-    let vec = quote!(::mechanism::__alloc::Vec);
     let doc = format!(
         "The owned form of [`{batch_ty}`] (feature `alloc` of `mechanism`): the same fields as `Vec`s{}. [`{name}::batch`] makes one of `n` zeroed elements; fill the `in_*` (`rate_*`, `accel_*`) columns, then [`{name}::solve_columns`] (or [`Self::as_batch`] for `solve_batch` and `mechanism::par_solve`).",
         if force.is_some() { format!(", and those of [`{name}ForcesBatch`] (the force analysis: [`Self::as_forces_batch`], [`Self::forces_at`])") } else { String::new() }
     );
-    let zeros_doc = if loads.is_empty() {
-        "`n` elements, every column and `status` zero.".to_string()
+    let vec = quote!(::mechanism::__alloc::Vec);
+    // Without loads, every column is zero; with them, the `load_*` columns
+    // start at the definition's values.
+    let zeros = if loads.is_empty() {
+        quote! {
+            /// `n` elements, every column and `status` zero.
+            pub fn zeros(n: usize) -> Self {
+                let column = || {
+                    let mut v = #vec::new();
+                    v.resize(n, <T as ::mechanism::Real>::lit(0.0));
+                    v
+                };
+                let mut status = #vec::new();
+                status.resize(n, 0u8);
+                #cols_ty { #(#zeroed: column(),)* status }
+            }
+        }
     } else {
-        "`n` elements, every column and `status` zero but the `load_*` columns, which hold the definition's values (those of the loads struct's `Default`).".to_string()
+        quote! {
+            /// `n` elements, every column and `status` zero but the
+            /// `load_*` columns, which hold the definition's values (those
+            /// of the loads struct's `Default`).
+            pub fn zeros(n: usize) -> Self {
+                let column = |x: T| {
+                    let mut v = #vec::new();
+                    v.resize(n, x);
+                    v
+                };
+                let zero = <T as ::mechanism::Real>::lit(0.0);
+                let mut status = #vec::new();
+                status.resize(n, 0u8);
+                #cols_ty { #(#zeroed: column(zero),)* #(#loads: column(#load_defaults),)* status }
+            }
+        }
     };
     let batch_doc = format!(
         "A [`{cols_ty}`] of `n` elements, every column and `status` zero{}: `{name}::<f64>::batch(n)`.",
@@ -359,18 +388,7 @@ fn owned(
             }
 
             impl<T: ::mechanism::Real> #cols_ty<T> {
-                #[doc = #zeros_doc]
-                pub fn zeros(n: usize) -> Self {
-                    let column = |x: T| {
-                        let mut v = #vec::new();
-                        v.resize(n, x);
-                        v
-                    };
-                    let zero = <T as ::mechanism::Real>::lit(0.0);
-                    let mut status = #vec::new();
-                    status.resize(n, 0u8);
-                    #cols_ty { #(#zeroed: column(zero),)* #(#loads: column(#load_defaults),)* status }
-                }
+                #zeros
                 #force_methods
             }
 
