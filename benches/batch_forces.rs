@@ -87,7 +87,11 @@ macro_rules! press_bench {
         g.finish();
         // The same torque curve both ways, bit for bit.
         m.solve_columns(&mut cols).expect("one length");
-        assert!(cols.drive_theta.iter().zip(&torque).all(|(a, b)| a.to_bits() == b.to_bits()));
+        assert!(cols
+            .drive_theta
+            .iter()
+            .zip(&torque)
+            .all(|(a, b)| a.to_bits() == b.to_bits()));
     }};
 }
 

@@ -157,7 +157,10 @@ fn sine_mechanism() {
     .into_iter()
     .zip(["f64", "f32"])
     {
-        assert!(counts[0] > 1500 && counts[1..4].iter().all(|c| *c >= 1), "{t}: {counts:?}");
+        assert!(
+            counts[0] > 1500 && counts[1..4].iter().all(|c| *c >= 1),
+            "{t}: {counts:?}"
+        );
         assert_eq!(counts[4], 0, "{t}");
     }
 }
@@ -192,9 +195,17 @@ fn load_columns_start_at_the_definitions_values() {
     for k in 0..n {
         let i = |x: f64| DefaultLoadsInput { theta: x };
         let s = m
-            .solve(&i(c.in_theta[k]), &i(10.0), &i(0.0), &DefaultLoadsLoads::default())
+            .solve(
+                &i(c.in_theta[k]),
+                &i(10.0),
+                &i(0.0),
+                &DefaultLoadsLoads::default(),
+            )
             .expect("assembles");
-        assert_eq!(format!("{:?}", c.forces_at(k)), format!("{:?}", Some(s.forces)));
+        assert_eq!(
+            format!("{:?}", c.forces_at(k)),
+            format!("{:?}", Some(s.forces))
+        );
         assert_eq!(c.pos_B_x[k].to_bits(), s.position.B.x.to_bits());
         assert_eq!(c.acc_link3[k].to_bits(), s.acceleration.link3.to_bits());
     }
@@ -220,8 +231,10 @@ fn par_solve_over_the_forces_batch() {
     serial.load_press = load(n, 500.0, Some(7000));
     let mut par = serial.clone();
     let f1 = m.solve_columns(&mut serial).unwrap();
-    let f2 = mechanism::par_solve(par.as_forces_batch(), 0, &|mut b| m.solve_batch_forces(&mut b))
-        .unwrap();
+    let f2 = mechanism::par_solve(par.as_forces_batch(), 0, &|mut b| {
+        m.solve_batch_forces(&mut b)
+    })
+    .unwrap();
     assert_eq!(f1, 1);
     assert_eq!(f2, f1);
     assert_eq!(format!("{serial:?}"), format!("{par:?}"));

@@ -310,7 +310,12 @@ fn owned(
     });
     let force = force_fields.map(|ff| forces::owned(model, ff, &kinematic));
     let (loads, load_defaults, force_outs, force_methods) = match &force {
-        Some(f) => (&f.loads[..], &f.load_defaults[..], &f.outs[..], f.methods.clone()),
+        Some(f) => (
+            &f.loads[..],
+            &f.load_defaults[..],
+            &f.outs[..],
+            f.methods.clone(),
+        ),
         None => (&[][..], &[][..], &[][..], TokenStream::new()),
     };
     let zeroed: Vec<&Ident> = all_in

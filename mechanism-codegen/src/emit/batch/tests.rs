@@ -223,12 +223,28 @@ fn constant_columns_are_left_out() {
     let out = press();
     let fields = struct_fields(&out, "PressBatch");
     for absent in ["pos_ram", "vel_ram", "acc_ram", "pos_link2", "pos_O_x"] {
-        assert!(!fields.iter().any(|f| f == absent), "{absent} in {fields:?}");
+        assert!(
+            !fields.iter().any(|f| f == absent),
+            "{absent} in {fields:?}"
+        );
     }
-    for present in ["pos_B_x", "pos_G3_y", "pos_link3", "pos_x", "vel_x", "acc_link3"] {
-        assert!(fields.iter().any(|f| f == present), "{present} not in {fields:?}");
+    for present in [
+        "pos_B_x",
+        "pos_G3_y",
+        "pos_link3",
+        "pos_x",
+        "vel_x",
+        "acc_link3",
+    ] {
+        assert!(
+            fields.iter().any(|f| f == present),
+            "{present} not in {fields:?}"
+        );
     }
-    assert!(out.contains("pubram:T"), "the scalar position keeps the ram's angle");
+    assert!(
+        out.contains("pubram:T"),
+        "the scalar position keeps the ram's angle"
+    );
 }
 
 /// Proves a definition with masses and loads gets the forces batch: the
@@ -262,7 +278,10 @@ fn forces_batch_fields() {
         ]
     );
     assert!(out.contains("pubfnsolve_batch_forces("), "{out}");
-    assert!(out.contains("pubload_cut:::mechanism::__alloc::Vec<T>,"), "{out}");
+    assert!(
+        out.contains("pubload_cut:::mechanism::__alloc::Vec<T>,"),
+        "{out}"
+    );
     assert!(out.contains("pubfnas_forces_batch("), "{out}");
     let plain: String = crate::expand(quote::quote! {
         pub Plain {
