@@ -2,7 +2,7 @@
 //! force analysis (`solve_columns`, i.e. `solve_batch_forces`) against a
 //! scalar loop of `solve` with forces writing the same torque, and the
 //! kinematic batch alone (`solve_batch`, the vectorized kernel) for scale.
-//! f64 and f32, one run: `cargo bench --bench batch_forces` (criterion's
+//! f64 and f32, one run: `cargo bench -p mechanism-dev --bench batch_forces` (criterion's
 //! medians; `docs/performance.md`, "The force analysis in a batch").
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
