@@ -141,8 +141,13 @@ fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
     out.items.extend(display::emit(model, plan, force_fields));
     out.items.extend(interop::emit(model, plan, force_fields));
     // Batch API (structure of arrays, issue 5): see `batch`.
-    out.items
-        .extend(batch::emit(model, plan, &inputs, &position.outputs));
+    out.items.extend(batch::emit(
+        model,
+        plan,
+        &inputs,
+        &position.outputs,
+        force_fields,
+    ));
     let Generated { items, methods } = out;
     let name = TypeNames::of(model).name;
     let allow_lints = allow_literal_lints();
