@@ -26,11 +26,11 @@ use mechanism_synthesis::fourbar::{FourBarPath, FourBarPathInput, FourBarPathPos
 /// start, basin hops, for each case (in `cases::all()` order). Sized so that the five
 /// cases take well under 60 s in release on two cores.
 const BUDGET: [(usize, usize, usize, usize); 5] = [
-    (500, 50, 30, 1500),
-    (100, 20, 30, 100),
-    (100, 20, 30, 300),
-    (150, 20, 30, 600),
-    (150, 20, 30, 600),
+    (12000, 50, 30, 0),
+    (300, 20, 30, 300),
+    (300, 20, 30, 600),
+    (600, 20, 30, 3000),
+    (600, 20, 30, 3000),
 ];
 
 fn main() {
