@@ -133,7 +133,7 @@ fn picture(case: &Case, f: &Found, dir: &std::path::Path) -> Result<PathBuf, Str
         })
         .collect();
     let title = format!("{}: objective {:.4e}", case.id, f.objective);
-    let mut sk = any::sketch_with::<FourBarPath<f64>, _>(&title, "", &poses, &["P"], |q| {
+    let mut sk = any::sketch_with::<FourBarPath<f64>, _>(&title, &poses, &["P"], |q| {
         format!("th2 = {:.1} deg", q.to_degrees())
     })
     .map_err(|e| e.to_string())?;

@@ -354,14 +354,13 @@ pub fn assign(curve: &[[f64; 2]], targets: &[[f64; 2]]) -> Vec<usize> {
         // best[i] = min over i' <= i of the previous row, and where.
         let (mut run, mut arg) = (f64::INFINITY, 0);
         let mut next = vec![0.0; m];
-        for i in 0..m {
+        for (i, c) in curve.iter().enumerate() {
             let prev = if k == 0 { 0.0 } else { cost[i] };
             if prev < run {
                 run = prev;
                 arg = i;
             }
-            let d = (curve[i][0] - t[0]).powi(2) + (curve[i][1] - t[1]).powi(2);
-            next[i] = run + d;
+            next[i] = run + (c[0] - t[0]).powi(2) + (c[1] - t[1]).powi(2);
             from[k][i] = arg;
         }
         cost = next;

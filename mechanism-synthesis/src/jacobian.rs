@@ -53,8 +53,8 @@ pub fn jacobian<P: Problem>(
         }
         for (i, ri) in ws.r.iter().enumerate() {
             r[i] = ri.re;
-            for k in 0..CHUNK.min(n - start) {
-                jac[(i, start + k)] = ri.eps[k];
+            for (k, d) in ri.eps.iter().take(n - start).enumerate() {
+                jac[(i, start + k)] = *d;
             }
         }
         start += CHUNK;

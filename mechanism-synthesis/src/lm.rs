@@ -117,8 +117,8 @@ impl Solver {
                 }
                 continue;
             };
-            for j in 0..n {
-                self.trial[j] = (x[j] + step[j]).clamp(lo[j], hi[j]);
+            for (j, t) in self.trial.iter_mut().enumerate() {
+                *t = (x[j] + step[j]).clamp(lo[j], hi[j]);
             }
             let c = objective(p, &self.trial, &mut self.buf);
             out.evaluations += 1;
