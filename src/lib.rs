@@ -161,6 +161,9 @@ pub use mechanism_core as core_api;
 #[doc(hidden)]
 pub use mechanism_core::*;
 // ... and, shadowing those, the documented API.
+#[cfg(feature = "dual")]
+#[cfg_attr(docsrs, doc(cfg(feature = "dual")))]
+pub use mechanism_core::dual;
 pub use mechanism_core::{
     driver, dyad, error, force, geometry, guide, link, linsolve, mode, structure, triad, trig,
 };

@@ -23,6 +23,9 @@
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
 pub mod driver;
+#[cfg(feature = "dual")]
+#[cfg_attr(docsrs, doc(cfg(feature = "dual")))]
+pub mod dual;
 pub mod dyad;
 mod eft;
 pub mod error;

@@ -1,0 +1,29 @@
+//! Dimensional synthesis of `mechanism!` definitions: choose a definition's
+//! parameters, its frame placement and its free input values so that an output
+//! follows targets over a sweep, in the least-squares sense.
+//!
+//! - [`Problem`]: the residuals of a design, written once for any scalar
+//!   [`mechanism::Real`]; the same code runs on `f64` (the objective) and on
+//!   [`mechanism::dual::Dual`] (the exact Jacobian, [`jacobian`]).
+//! - [`lm`]: a bounded Levenberg-Marquardt on those residuals and that Jacobian.
+//! - [`multistart`]: the global strategy: quasi-random starts, each polished by
+//!   the bounded LM, the best kept.
+//! - [`fourbar`]: path generation by a four-bar (`fourbar::FourBarPath`, a
+//!   `mechanism!` definition evaluated in either assembly mode), with prescribed
+//!   or free timing, Grashof crank-rocker by construction; [`cases`]: the five
+//!   benchmark cases of the literature.
+//!
+//! Why a crate of its own (std, nalgebra's dynamic matrices) and not a module
+//! of the facade: the facade and the core are `no_std`; synthesis needs
+//! growable buffers and dense linear algebra of run-time size, and only
+//! desktop users run it.
+
+pub mod cases;
+pub mod fourbar;
+pub mod jacobian;
+pub mod lm;
+pub mod multistart;
+pub mod problem;
+pub mod rng;
+
+pub use problem::Problem;

@@ -1,0 +1,119 @@
+//! The global strategy: many starts, each polished by the bounded
+//! Levenberg-Marquardt of [`crate::lm`], the best kept.
+//!
+//! The starts come from the problem's own sampler (uniform in its box, or
+//! something smarter: the four-bar places each random shape on the targets
+//! before its first step). A screening pass draws `screen` candidates per
+//! start and polishes only the best of them by objective, so most of the
+//! budget goes to starts that already lie in a reasonable basin.
+
+use crate::lm::{Options, Outcome, Solver};
+use crate::problem::{objective, Problem};
+use crate::rng::Rng;
+
+/// Settings of a multi-start run.
+#[derive(Clone, Copy, Debug)]
+pub struct Settings {
+    /// Local solves.
+    pub starts: usize,
+    /// Candidates drawn per local solve; the best one (by objective) starts it.
+    pub screen: usize,
+    /// The local solver's stopping rules for each start (short: most starts
+    /// end in a basin that is not the best, and that shows early).
+    pub local: Options,
+    /// The stopping rules of the final polish of the best start.
+    pub polish: Options,
+    /// Basin hops after the starts: the best design perturbed (a random
+    /// third of its variables each moved by up to `hop_scale` of its size)
+    /// and polished, kept when better (monotonic basin hopping, Leary 2000).
+    pub hops: usize,
+    /// Relative size of a hop's perturbation.
+    pub hop_scale: f64,
+    /// Seed of the run.
+    pub seed: u64,
+}
+
+/// The best design of a run and what it cost.
+#[derive(Clone, Debug)]
+pub struct Best {
+    /// The best local solve's result.
+    pub outcome: Outcome,
+    /// Objective evaluations over the run (screening and local solves).
+    pub evaluations: usize,
+    /// Jacobian evaluations over the run.
+    pub jacobians: usize,
+}
+
+/// Runs `settings.starts` local solves from starts drawn by `sample` and
+/// returns the best. `sample` writes a candidate design into its slice.
+pub fn run<P: Problem>(
+    p: &P,
+    settings: &Settings,
+    mut sample: impl FnMut(&mut Rng, &mut [f64]),
+) -> Best {
+    let mut rng = Rng::new(settings.seed);
+    let mut solver = Solver::new(p);
+    let mut buf = vec![0.0; p.residual_count()];
+    let mut cand = vec![0.0; p.dim()];
+    let mut start = vec![0.0; p.dim()];
+    let mut best: Option<Outcome> = None;
+    let (mut evaluations, mut jacobians) = (0, 0);
+    for _ in 0..settings.starts {
+        let mut start_cost = f64::INFINITY;
+        for _ in 0..settings.screen.max(1) {
+            sample(&mut rng, &mut cand);
+            let c = objective(p, &cand, &mut buf);
+            evaluations += 1;
+            if c < start_cost {
+                start_cost = c;
+                start.copy_from_slice(&cand);
+            }
+        }
+        if !start_cost.is_finite() {
+            continue;
+        }
+        let out = solver.minimize(p, &start, &settings.local);
+        evaluations += out.evaluations;
+        jacobians += out.jacobians;
+        if best.as_ref().is_none_or(|b| out.cost < b.cost) {
+            best = Some(out);
+        }
+    }
+    if let Some(b) = best.as_mut() {
+        let (lo, hi) = (p.lower(), p.upper());
+        for _ in 0..settings.hops {
+            for (j, v) in cand.iter_mut().enumerate() {
+                let x = b.x[j];
+                *v = if rng.unit() < 1.0 / 3.0 {
+                    let size = x.abs().max(0.1 * (hi[j] - lo[j]).min(1.0));
+                    (x + settings.hop_scale * size * (2.0 * rng.unit() - 1.0)).clamp(lo[j], hi[j])
+                } else {
+                    x
+                };
+            }
+            let out = solver.minimize(p, &cand, &settings.local);
+            evaluations += out.evaluations;
+            jacobians += out.jacobians;
+            if out.cost < b.cost {
+                *b = out;
+            }
+        }
+        let out = solver.minimize(p, &b.x, &settings.polish);
+        evaluations += out.evaluations;
+        jacobians += out.jacobians;
+        if out.cost <= b.cost {
+            *b = out;
+        }
+    }
+    let outcome = best.unwrap_or(Outcome {
+        x: start,
+        cost: f64::INFINITY,
+        evaluations: 0,
+        jacobians: 0,
+    });
+    Best {
+        outcome,
+        evaluations,
+        jacobians,
+    }
+}
