@@ -22,6 +22,7 @@ mod point;
 pub mod pose;
 mod prp;
 pub mod rates;
+pub mod run;
 mod rpp;
 mod rpr;
 mod rrp;
@@ -127,7 +128,7 @@ pub enum Solve {
 
 /// What the macro knows about one statement kind. Implemented once per
 /// kind, on a view of one statement of that kind ([`of`]).
-pub trait GroupKind<'a> {
+pub trait GroupKind<'a>: run::RunKind {
     /// Names the statement refers to, with their tokens and what each must
     /// name.
     fn references(&self) -> Vec<(&'a Ident, Role)>;
