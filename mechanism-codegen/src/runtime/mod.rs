@@ -57,12 +57,15 @@ pub struct Column {
 }
 
 /// A driver input of the definition.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct InputInfo {
     /// Its name (a field of the generated input struct).
     pub name: String,
     /// `true` for an angle (rad), `false` for a length (L).
     pub angle: bool,
+    /// The range the definition declares or implies (a crank's full turn),
+    /// `(lo, hi)` in rad or L; `None` when it has none.
+    pub range: Option<(f64, f64)>,
 }
 
 /// The position at one input: the outputs in [`Mechanism::columns`] order
@@ -161,6 +164,7 @@ impl Mechanism {
             .map(|i| InputInfo {
                 name: i.name.to_string(),
                 angle: i.angle,
+                range: i.range.map(|r| (r.lo, r.hi)),
             })
             .collect()
     }
