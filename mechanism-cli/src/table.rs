@@ -4,6 +4,10 @@
 use crate::spec::Spec;
 use mechanism_codegen::runtime::{Analysis, Mechanism};
 
+/// Values of an input not given on the command line that has a range (a
+/// crank's full turn, a declared `range`): every 5 degrees of a full turn.
+const DEFAULT_COUNT: usize = 73;
+
 /// What to tabulate.
 pub struct Request {
     /// One spec per input (values to sweep).
@@ -63,13 +67,17 @@ pub fn points(m: &Mechanism, specs: &[Spec], paired: bool) -> Result<Vec<Vec<f64
     check_names(m, specs)?;
     let mut lists = Vec::new();
     for i in m.inputs() {
-        let spec = specs.iter().find(|s| s.name == i.name).ok_or_else(|| {
-            format!(
-                "no values for input `{}`: add --input {}=LO:HI:N",
-                i.name, i.name
-            )
-        })?;
-        lists.push(spec.values.clone());
+        let values = match (specs.iter().find(|s| s.name == i.name), i.range) {
+            (Some(spec), _) => spec.values.clone(),
+            (None, Some((lo, hi))) => crate::spec::linspace(lo, hi, DEFAULT_COUNT)?,
+            (None, None) => {
+                return Err(format!(
+                    "no values for input `{}` (it has no range): add --input {}=LO:HI:N",
+                    i.name, i.name
+                ))
+            }
+        };
+        lists.push(values);
     }
     if paired {
         let n = lists.first().map_or(0, Vec::len);
