@@ -232,8 +232,12 @@ fn run_table(file: &Path, args: &TableArgs, csv: bool, json: bool) -> Result<(),
     let req = table::Request {
         inputs: specs(&args.inputs)?,
         paired: args.paired,
-        rates: (!args.rates.is_empty()).then(|| specs(&args.rates)).transpose()?,
-        accels: (!args.accels.is_empty()).then(|| specs(&args.accels)).transpose()?,
+        rates: (!args.rates.is_empty())
+            .then(|| specs(&args.rates))
+            .transpose()?,
+        accels: (!args.accels.is_empty())
+            .then(|| specs(&args.accels))
+            .transpose()?,
     };
     let n = table::points(&m, &req.inputs, req.paired)
         .map_err(Failure::Usage)?

@@ -115,7 +115,10 @@ mod tests {
     #[test]
     fn single_values_and_lists_read_their_units() {
         // Proves one value, a list with a shared suffix, and a length.
-        assert_eq!(Spec::parse("t=30deg").unwrap().values, vec![30f64.to_radians()]);
+        assert_eq!(
+            Spec::parse("t=30deg").unwrap().values,
+            vec![30f64.to_radians()]
+        );
         assert_eq!(
             Spec::parse("t=0,90deg").unwrap().values,
             vec![0.0, 90f64.to_radians()]

@@ -20,6 +20,9 @@ pub struct Request {
     pub accels: Option<Vec<Spec>>,
 }
 
+/// One pose: its inputs, and its outputs or why it failed.
+pub type Row = (Vec<f64>, Result<Vec<f64>, String>);
+
 /// The table: its header (input columns, then outputs) and rows.
 pub struct Table {
     /// `name [unit]` of every column.
@@ -27,7 +30,7 @@ pub struct Table {
     /// The input names.
     pub input_names: Vec<String>,
     /// Per row: the inputs, and the outputs or the error.
-    pub rows: Vec<(Vec<f64>, Result<Vec<f64>, String>)>,
+    pub rows: Vec<Row>,
 }
 
 /// The value of each input for one spec list (`default` when not named).
@@ -84,7 +87,9 @@ pub fn points(m: &Mechanism, specs: &[Spec], paired: bool) -> Result<Vec<Vec<f64
         if lists.iter().any(|l| l.len() != n) {
             return Err("--paired needs the same number of values for every input".into());
         }
-        return Ok((0..n).map(|k| lists.iter().map(|l| l[k]).collect()).collect());
+        return Ok((0..n)
+            .map(|k| lists.iter().map(|l| l[k]).collect())
+            .collect());
     }
     let mut out: Vec<Vec<f64>> = vec![Vec::new()];
     for list in &lists {
@@ -137,7 +142,13 @@ fn header(m: &Mechanism, req: &Request) -> Vec<String> {
 }
 
 /// Evaluates one row.
-fn row(m: &Mechanism, q: &[f64], rates: &[f64], accels: &[f64], req: &Request) -> Result<Vec<f64>, String> {
+fn row(
+    m: &Mechanism,
+    q: &[f64],
+    rates: &[f64],
+    accels: &[f64],
+    req: &Request,
+) -> Result<Vec<f64>, String> {
     let pos = m.position(q).map_err(|e| e.to_string())?;
     let mut values = pos.values.clone();
     let want = analyses(req);
@@ -145,7 +156,9 @@ fn row(m: &Mechanism, q: &[f64], rates: &[f64], accels: &[f64], req: &Request) -
         let vel = m.velocity(&pos, rates).map_err(|e| e.to_string())?;
         values.extend(&vel.values);
         if want.contains(&Analysis::Acceleration) {
-            let acc = m.acceleration(&pos, &vel, accels).map_err(|e| e.to_string())?;
+            let acc = m
+                .acceleration(&pos, &vel, accels)
+                .map_err(|e| e.to_string())?;
             values.extend(&acc.values);
         }
     }
@@ -234,7 +247,13 @@ impl Table {
 
     /// An aligned table for reading (6 significant digits).
     pub fn text(&self) -> String {
-        let w = self.header.iter().map(String::len).max().unwrap_or(8).clamp(12, 24);
+        let w = self
+            .header
+            .iter()
+            .map(String::len)
+            .max()
+            .unwrap_or(8)
+            .clamp(12, 24);
         let mut s: String = self.header.iter().map(|h| format!("{h:>w$} ")).collect();
         s.push('\n');
         for (q, r) in &self.rows {

@@ -147,49 +147,91 @@ macro_rules! compare {
 #[test]
 fn four_bar() {
     use scenes::{FourBar, FourBarInput};
-    let t = compare!("../../examples/common/scenes.rs", FourBar, FourBarInput { theta2 }, 0.0, 1.0);
+    let t = compare!(
+        "../../examples/common/scenes.rs",
+        FourBar,
+        FourBarInput { theta2 },
+        0.0,
+        1.0
+    );
     assert_eq!(t.solved, POSES, "the crank-rocker assembles at every angle");
 }
 
 #[test]
 fn six_bar() {
     use scenes::{SixBar, SixBarInput};
-    let t = compare!("../../examples/common/scenes.rs", SixBar, SixBarInput { phi1 }, 0.0, 1.0);
+    let t = compare!(
+        "../../examples/common/scenes.rs",
+        SixBar,
+        SixBarInput { phi1 },
+        0.0,
+        1.0
+    );
     assert!(t.solved > POSES / 2, "{t:?}");
 }
 
 #[test]
 fn shaper() {
     use scenes::{Shaper, ShaperInput};
-    let t = compare!("../../examples/common/scenes.rs", Shaper, ShaperInput { crank }, 0.0, 1.0);
+    let t = compare!(
+        "../../examples/common/scenes.rs",
+        Shaper,
+        ShaperInput { crank },
+        0.0,
+        1.0
+    );
     assert!(t.solved > POSES / 2, "{t:?}");
 }
 
 #[test]
 fn slider_crank() {
     use scenes::{SliderCrank, SliderCrankInput};
-    let t = compare!("../../examples/common/scenes.rs", SliderCrank, SliderCrankInput { theta }, 0.0, 1.0);
+    let t = compare!(
+        "../../examples/common/scenes.rs",
+        SliderCrank,
+        SliderCrankInput { theta },
+        0.0,
+        1.0
+    );
     assert!(t.solved > POSES / 2, "{t:?}");
 }
 
 #[test]
 fn five_bar_two_inputs() {
     use scenes::{FiveBar, FiveBarInput};
-    let t = compare!("../../examples/common/scenes.rs", FiveBar, FiveBarInput { q1, q2 }, 0.0, 1.0);
+    let t = compare!(
+        "../../examples/common/scenes.rs",
+        FiveBar,
+        FiveBarInput { q1, q2 },
+        0.0,
+        1.0
+    );
     assert!(t.solved > POSES / 2, "{t:?}");
 }
 
 #[test]
 fn sine_mechanism() {
     use scenes::{SineMechanism, SineMechanismInput};
-    let t = compare!("../../examples/common/scenes.rs", SineMechanism, SineMechanismInput { phi1 }, 0.0, 1.0);
+    let t = compare!(
+        "../../examples/common/scenes.rs",
+        SineMechanism,
+        SineMechanismInput { phi1 },
+        0.0,
+        1.0
+    );
     assert!(t.solved > POSES / 2, "{t:?}");
 }
 
 #[test]
 fn shaper_with_loads() {
     use scenes::{ShaperForces, ShaperForcesInput};
-    let t = compare!("../../examples/common/scenes.rs", ShaperForces, ShaperForcesInput { crank }, 0.0, 1.0);
+    let t = compare!(
+        "../../examples/common/scenes.rs",
+        ShaperForces,
+        ShaperForcesInput { crank },
+        0.0,
+        1.0
+    );
     assert!(t.solved > POSES / 2, "{t:?}");
 }
 
@@ -197,20 +239,38 @@ fn shaper_with_loads() {
 fn five_bar_inverse_kinematics_drawn() {
     use scenes::{FiveBarIk, FiveBarIkInput};
     // The end point over a box around the drawn pose (m).
-    let t = compare!("../../examples/common/scenes.rs", FiveBarIk, FiveBarIkInput { x, y }, 0.0, 0.25);
+    let t = compare!(
+        "../../examples/common/scenes.rs",
+        FiveBarIk,
+        FiveBarIkInput { x, y },
+        0.0,
+        0.25
+    );
     assert!(t.solved > 0, "{t:?}");
 }
 
 #[test]
 fn stephenson_triad() {
     use stephenson::{Stephenson, StephensonInput};
-    let t = compare!("../../examples/common/stephenson.rs", Stephenson, StephensonInput { phi }, 0.0, 1.0);
+    let t = compare!(
+        "../../examples/common/stephenson.rs",
+        Stephenson,
+        StephensonInput { phi },
+        0.0,
+        1.0
+    );
     assert!(t.solved > 0, "{t:?}");
 }
 
 #[test]
 fn two_r_leg_carried_crank() {
     use leg::{Leg, LegInput};
-    let t = compare!("../../examples/common/leg.rs", Leg, LegInput { hip, knee }, -3.0, 3.0);
+    let t = compare!(
+        "../../examples/common/leg.rs",
+        Leg,
+        LegInput { hip, knee },
+        -3.0,
+        3.0
+    );
     assert_eq!(t.solved, POSES, "an open chain always assembles");
 }

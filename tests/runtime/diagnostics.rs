@@ -41,7 +41,10 @@ fn snapshot_errors(stderr: &str, file: &str) -> Vec<Shown> {
             msg.push_str(lines[j]);
             j += 1;
         }
-        let Some(at) = lines.get(j).and_then(|l| l.trim_start().strip_prefix("--> ")) else {
+        let Some(at) = lines
+            .get(j)
+            .and_then(|l| l.trim_start().strip_prefix("--> "))
+        else {
             continue;
         };
         let mut parts = at.rsplitn(3, ':');
@@ -70,7 +73,11 @@ fn runtime_errors(source: &str, start: usize, text: &str) -> Vec<Shown> {
             .iter()
             .map(|d| {
                 let line = line0 + d.line - 1;
-                let col = if d.line == 1 { col0 + d.column } else { d.column };
+                let col = if d.line == 1 {
+                    col0 + d.column
+                } else {
+                    d.column
+                };
                 (normal(&d.message), line, col + 1)
             })
             .collect(),
@@ -97,7 +104,10 @@ fn every_ui_failure_gives_the_same_errors_at_run_time() {
         };
         let file = format!("tests/ui/{}", case.file_name().unwrap().to_string_lossy());
         let want = snapshot_errors(&stderr, &file);
-        let opens: Vec<usize> = source.match_indices("mechanism! {").map(|(i, _)| i).collect();
+        let opens: Vec<usize> = source
+            .match_indices("mechanism! {")
+            .map(|(i, _)| i)
+            .collect();
         if opens.len() != 1 || want.is_empty() {
             skipped.push(file);
             continue;
@@ -107,10 +117,15 @@ fn every_ui_failure_gives_the_same_errors_at_run_time() {
         let got = runtime_errors(&source, start, text);
         compared += 1;
         if got != want {
-            mismatches.push(format!("{file}:\n  macro:    {want:?}\n  run time: {got:?}"));
+            mismatches.push(format!(
+                "{file}:\n  macro:    {want:?}\n  run time: {got:?}"
+            ));
         }
     }
-    eprintln!("compared {compared} UI cases; skipped {}: {skipped:?}", skipped.len());
+    eprintln!(
+        "compared {compared} UI cases; skipped {}: {skipped:?}",
+        skipped.len()
+    );
     assert!(compared > 100, "only {compared} cases compared");
     assert!(
         mismatches.is_empty(),

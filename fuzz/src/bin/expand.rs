@@ -874,7 +874,9 @@ fn judge_runtime(text: &str) -> Option<Verdict> {
             for k in 0..4 {
                 let q = vec![0.3 + 1.7 * f64::from(k); n];
                 let Ok(p) = m.position(&q) else { continue };
-                let Ok(v) = m.velocity(&p, &vec![1.0; n]) else { continue };
+                let Ok(v) = m.velocity(&p, &vec![1.0; n]) else {
+                    continue;
+                };
                 let a = m.acceleration(&p, &v, &vec![-0.5; n]);
                 if !finite(&p.values) || !finite(&v.values) || a.is_ok_and(|a| !finite(&a.values)) {
                     return Some(format!("a non-finite output in Ok at {q:?}"));

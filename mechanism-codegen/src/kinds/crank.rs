@@ -371,10 +371,7 @@ impl super::run::RunKind for Crank<'_> {
         let (rate, acc) = (cx.rate(self.input), cx.accel_of(self.input));
         let carrier = self.carrier.and_then(|l| cx.link_rate(l).map(|w| (l, w)));
         let (pv, w) = match (cx.accel(), carrier) {
-            (true, None) => (
-                driver::crank::acceleration(g, m.as_ref(), rate, acc)?,
-                acc,
-            ),
+            (true, None) => (driver::crank::acceleration(g, m.as_ref(), rate, acc)?, acc),
             (false, None) => (driver::crank::velocity(g, m.as_ref(), rate)?, rate),
             (true, Some((l, alpha_c))) => {
                 let omega_c = cx.link_omega_in_accel(l).unwrap_or(f64::NAN);

@@ -269,14 +269,8 @@ impl super::run::RunKind for Rrp<'_> {
                 .vel_group::<dyad::rrp::RrpVelocity<f64>>(&stmt.name)
                 .ok_or_else(missing)?;
             let gacc = cx.guide_acc(self.guide);
-            let r = dyad::rrp::acceleration(
-                g,
-                &line,
-                gv,
-                ma.as_ref(),
-                gvel.as_ref(),
-                gacc.as_ref(),
-            )?;
+            let r =
+                dyad::rrp::acceleration(g, &line, gv, ma.as_ref(), gvel.as_ref(), gacc.as_ref())?;
             cx.set_motion(stmt, r.ac);
             cx.set_own(stmt, 0, r.alpha1);
             cx.set_slide(stmt, 0, r.s_ddot);

@@ -82,7 +82,11 @@ impl RunCx<'_> {
         if !self.moves(p) {
             return Vector2::zeros();
         }
-        self.out.points.get(&p.to_string()).copied().unwrap_or_else(nan2)
+        self.out
+            .points
+            .get(&p.to_string())
+            .copied()
+            .unwrap_or_else(nan2)
     }
 
     /// The motion of a known point as the optional argument of a core call

@@ -632,14 +632,20 @@ impl super::run::RunKind for TriadKind<'_> {
                 .ok_or_else(missing)?;
             let r = triad::acceleration(&d, g, gv, m1.as_ref(), m2.as_ref(), m3.as_ref())?;
             cx.set_motion(stmt, r.aa);
-            for (i, w) in [r.alpha1, r.alpha2, r.alpha3, r.alpha].into_iter().enumerate() {
+            for (i, w) in [r.alpha1, r.alpha2, r.alpha3, r.alpha]
+                .into_iter()
+                .enumerate()
+            {
                 cx.set_own(stmt, i, w);
             }
             cx.keep(stmt, r, None);
         } else {
             let r = triad::velocity(&d, g, m1.as_ref(), m2.as_ref(), m3.as_ref())?;
             cx.set_motion(stmt, r.va);
-            for (i, w) in [r.omega1, r.omega2, r.omega3, r.omega].into_iter().enumerate() {
+            for (i, w) in [r.omega1, r.omega2, r.omega3, r.omega]
+                .into_iter()
+                .enumerate()
+            {
                 cx.set_own(stmt, i, w);
             }
             cx.keep(stmt, r, Some(r.condition));

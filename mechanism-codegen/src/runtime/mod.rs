@@ -195,7 +195,9 @@ impl Mechanism {
     /// Sets parameter `name` (finite). `Err`: the names there are, or why not.
     pub fn set_param(&mut self, name: &str, value: f64) -> Result<(), String> {
         if !value.is_finite() {
-            return Err(format!("parameter `{name}`: {value} is not a finite number"));
+            return Err(format!(
+                "parameter `{name}`: {value} is not a finite number"
+            ));
         }
         match self.params.get_mut(name) {
             Some(v) => {
@@ -366,12 +368,7 @@ impl Mechanism {
     ) -> Result<Rates, Error<f64>> {
         let mut motion = Motion::default();
         let turning = |l: &str| self.plan.turning_link(l);
-        let carried = |g: &str| {
-            self.plan
-                .guides
-                .get(g)
-                .is_some_and(|i| i.carrier.is_some())
-        };
+        let carried = |g: &str| self.plan.guides.get(g).is_some_and(|i| i.carrier.is_some());
         let inputs = |n: &syn::Ident| {
             self.input_index(n).map_or([f64::NAN; 3], |k| {
                 [

@@ -164,7 +164,9 @@ fn is_item(tokens: &TokenStream) -> bool {
             i += 1;
         }
     }
-    let named = matches!(trees.get(i), Some(TokenTree::Ident(id)) if !BLOCK_WORDS.iter().any(|w| id == w));
-    let braced = matches!(trees.get(i + 1), Some(TokenTree::Group(g)) if g.delimiter() == Delimiter::Brace);
+    let named =
+        matches!(trees.get(i), Some(TokenTree::Ident(id)) if !BLOCK_WORDS.iter().any(|w| id == w));
+    let braced =
+        matches!(trees.get(i + 1), Some(TokenTree::Group(g)) if g.delimiter() == Delimiter::Brace);
     named && braced && trees.len() == i + 2
 }
