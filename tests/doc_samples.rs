@@ -25,7 +25,7 @@ mod readme {
     use mechanism::mechanism;
 
     mechanism! {
-        /// Crank-rocker four-bar of seed 002 (mm).
+        /// Crank-rocker four-bar with a coupler point P (mm).
         pub FourBar {
             params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
             let O2 = ground(0.0, 0.0);
@@ -786,7 +786,7 @@ const DOCS: &[&str] = &[
 ];
 
 fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
+    mechanism_dev::workspace_root()
 }
 
 /// The fenced code blocks of a markdown text: (info string, body).
@@ -940,6 +940,7 @@ fn named_targets_and_paths_exist() {
 mechanism::mechanism! {
     /// The Jansen leg of `tests/surface/describe.rs`, for the docs/plots.md sample.
     pub JansenLeg {
+        units { length = "cm" }
         let O = ground(0.0, 0.0);
         let Z = ground(-38.0, -7.8);
         let A = crank(O, 15.0, theta) as crank;
@@ -982,10 +983,9 @@ fn any_sample() -> Result<(), Box<dyn std::error::Error>> {
         .map(|k| { let t = k as f64 * std::f64::consts::TAU / 72.0;
                    (t, leg.position(&JansenLegInput { theta: t }).ok()) })
         .collect();
-    mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", "cm", &poses, &["F"])?
+    mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", &poses, &["F"])?
         .write_animation(4.0, "jansen.svg")?;
     std::fs::write("jansen.csv", mechanism_plot::any::csv("theta", "rad", &poses))?;
-    let cm = mechanism_plot::any::Units { length: "cm", force: "N" };
-    mechanism_plot::any::chart("Jansen leg", ("θ", "rad"), cm, &poses, &["F"])?.write("foot.svg")?;
+    mechanism_plot::any::chart("Jansen leg", ("θ", "rad"), &poses, &["F"])?.write("foot.svg")?;
     Ok(())
 }

@@ -89,7 +89,13 @@ fn every_ui_failure_gives_the_same_errors_at_run_time() {
     // Proves, for each tests/ui case with one definition, that the
     // run-time reading reports exactly the macro's errors of the snapshot
     // (messages, lines and columns), and at least one.
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/ui");
+    // The repository root: the manifest's directory (`mechanism-dev/`)'s parent.
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = [manifest, manifest.parent().unwrap_or(manifest)]
+        .iter()
+        .map(|d| d.join("tests/ui"))
+        .find(|d| d.is_dir())
+        .expect("tests/ui");
     let mut cases: Vec<_> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().path())

@@ -158,14 +158,16 @@ fn describe_stub(model: &Model) -> TokenStream {
     let text = name.to_string();
     let st = quote!(::mechanism::structure);
     let forces = model.kinetics.declared || model.level == Level::Forces;
+    let units = super::describe::units_of(model);
     let fields = ["Position", "Velocity", "Acceleration", "Forces"]
         .iter()
         .take(if forces { 4 } else { 3 })
-        .map(|s| super::describe::fields_impl(&format_ident!("{}{}", name, s), &[]));
+        .map(|s| super::describe::fields_impl(&format_ident!("{}{}", name, s), &[], &units));
     quote! {
         impl<T: ::mechanism::Real> #st::Describe for #name<T> {
             const STRUCTURE: #st::Structure = #st::Structure {
                 name: #text, points: &[], links: &[], guides: &[], inputs: &[], masses: &[],
+                units: #st::Units::SYMBOLS,
             };
         }
         #(#fields)*

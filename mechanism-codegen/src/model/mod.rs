@@ -14,6 +14,7 @@ mod kinds;
 mod kinetics;
 mod lower;
 pub mod modes;
+pub mod units;
 
 pub use inputs::{Allowed, Input, RangeSpans};
 pub use lower::lower;
@@ -86,6 +87,9 @@ pub struct Model {
     /// A statement's kind is unknown (reported): no other statement is
     /// blamed for what it would have defined (a missing driver, say).
     pub unknown_kinds: bool,
+    /// The names of the definition's units (`units { .. }`; the symbols
+    /// `L`, `F`, `M`, `s` without it).
+    pub units: units::UnitNames,
 }
 
 /// What the force analysis needs: masses, gravity and external loads.
