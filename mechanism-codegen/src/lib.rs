@@ -21,6 +21,7 @@ pub(crate) mod kinds;
 pub mod model;
 pub mod parse;
 pub mod plan;
+pub mod runtime;
 pub mod validate;
 pub mod value;
 

@@ -17,7 +17,10 @@
 //! Run: `cargo run --release -p mechanism-fuzz --bin expand -- --seconds 600`
 //! (`--seed S` replays a run; `--compile-sample K` compiles 1 in K successful
 //! expansions, 0 for none; `--case-ms MS` is the time limit of one case;
-//! `--repro FILE` expands one saved input and prints the verdict). It prints
+//! `--repro FILE` expands one saved input and prints the verdict; `--runtime`
+//! also reads each case at run time, `mechanism_codegen::runtime`: no
+//! panic, no hang, every diagnostic at a place in the text, and the
+//! analyses of a definition that reads run without a panic). It prints
 //! the counts and exits non-zero on any failure, the failing input saved in
 //! `target/fuzz-expand/`.
 
@@ -28,6 +31,9 @@ use std::process::{Child, Command, Stdio};
 use std::sync::mpsc;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
+
+/// `--runtime`: each case is also read by the run-time mechanism.
+static RUNTIME: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
 /// The message of the last panic of the worker (the hook keeps it quiet).
 static PANIC_MESSAGE: Mutex<Option<String>> = Mutex::new(None);
@@ -70,9 +76,10 @@ fn options() -> Result<Options, String> {
             "--compile-sample" => o.compile_sample = number(value()?)?,
             "--case-ms" => o.case_ms = number(value()?)?,
             "--repro" => o.repro = Some(PathBuf::from(value()?)),
+            "--runtime" => RUNTIME.store(true, std::sync::atomic::Ordering::Relaxed),
             _ => {
                 return Err(format!(
-                    "unknown option {flag}; options: --seconds N, --seed S, --compile-sample K, --case-ms MS, --repro FILE"
+                    "unknown option {flag}; options: --seconds N, --seed S, --compile-sample K, --case-ms MS, --repro FILE, --runtime"
                 ))
             }
         }
@@ -849,8 +856,55 @@ fn misplaced_errors(out: &TokenStream, input: &std::ops::Range<usize>) -> Vec<St
     bad
 }
 
+/// The run-time reading of `text`: `None` when it behaves (diagnostics,
+/// each at a place in the text, or a mechanism whose analyses run at a few
+/// inputs without a panic and without a non-finite value in `Ok`).
+fn judge_runtime(text: &str) -> Option<Verdict> {
+    use mechanism_codegen::runtime::Mechanism;
+    let text = text.to_string();
+    let result = std::panic::catch_unwind(move || match Mechanism::new(&text) {
+        Err(e) => e
+            .diagnostics
+            .iter()
+            .find(|d| d.line == 0)
+            .map(|d| format!("a diagnostic at no place in the text: {}", d.message)),
+        Ok(m) => {
+            let n = m.inputs().len();
+            let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+            for k in 0..4 {
+                let q = vec![0.3 + 1.7 * f64::from(k); n];
+                let Ok(p) = m.position(&q) else { continue };
+                let Ok(v) = m.velocity(&p, &vec![1.0; n]) else {
+                    continue;
+                };
+                let a = m.acceleration(&p, &v, &vec![-0.5; n]);
+                if !finite(&p.values) || !finite(&v.values) || a.is_ok_and(|a| !finite(&a.values)) {
+                    return Some(format!("a non-finite output in Ok at {q:?}"));
+                }
+            }
+            None
+        }
+    });
+    match result {
+        Ok(None) => None,
+        Ok(Some(bad)) => Some(Verdict::CallSiteError(format!("run time: {bad}"))),
+        Err(_) => {
+            let message = PANIC_MESSAGE
+                .lock()
+                .map(|mut m| m.take().unwrap_or_default())
+                .unwrap_or_default();
+            Some(Verdict::Panic(format!("run time: {message}")))
+        }
+    }
+}
+
 fn judge(text: &str) -> Verdict {
     proc_macro2::extra::invalidate_current_thread_spans();
+    if RUNTIME.load(std::sync::atomic::Ordering::Relaxed) {
+        if let Some(v) = judge_runtime(text) {
+            return v;
+        }
+    }
     let Ok(input) = text.parse::<TokenStream>() else {
         return Verdict::Unlexable;
     };

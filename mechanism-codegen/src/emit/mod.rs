@@ -65,7 +65,7 @@ pub fn mechanism(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream
 
 /// Points that move (everything but ground points and points on still links
 /// measured from still points).
-fn moving_points(model: &Model, plan: &Plan) -> BTreeSet<String> {
+pub(crate) fn moving_points(model: &Model, plan: &Plan) -> BTreeSet<String> {
     let mut moving: BTreeSet<String> = BTreeSet::new();
     for &i in &plan.solve {
         let stmt = &model.stmts[i];

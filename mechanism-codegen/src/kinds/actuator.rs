@@ -71,6 +71,7 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         let p = driver::actuator::position(&pa, num(self.l), &pb, len, mode(self.mode))?;
         let (arm, cylinder) = (p.r1 / num(self.l), p.r2 / len);
         pose.found(self.stmt, Some(p.c), &[arm, cylinder, cylinder]);
+        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_rrr(&p)))
     }
 
@@ -293,4 +294,41 @@ fn lane_steps(
     mode: &Mode,
 ) -> Option<()> {
     dyad(lane, s, a, l, b, SecondSide::Input(input), mode)
+}
+
+impl super::run::RunKind for Actuator<'_> {
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let stmt = self.stmt;
+        let missing = || super::run::missing(mechanism_core::Primitive::Actuator);
+        let g = cx
+            .pose
+            .kept::<driver::actuator::ActuatorPosition<f64>>(&stmt.name)
+            .ok_or_else(missing)?;
+        let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
+        let rate = cx.rate(self.input);
+        if cx.accel() {
+            let gv = cx
+                .vel_group::<driver::actuator::ActuatorVelocity<f64>>(&stmt.name)
+                .ok_or_else(missing)?;
+            let acc = cx.accel_of(self.input);
+            let r = driver::actuator::acceleration(g, gv, ma.as_ref(), mb.as_ref(), rate, acc)?;
+            cx.set_motion(stmt, r.ac);
+            cx.set_own(stmt, 0, r.alpha1);
+            cx.set_own(stmt, 1, r.alpha2);
+            cx.keep(stmt, r, None);
+        } else {
+            let r = driver::actuator::velocity(g, ma.as_ref(), mb.as_ref(), rate)?;
+            cx.set_motion(stmt, r.vc);
+            cx.set_own(stmt, 0, r.omega1);
+            cx.set_own(stmt, 1, r.omega2);
+            cx.keep(stmt, r, Some(r.condition));
+        }
+        Ok(())
+    }
+
+    fn run_link_dir(&self, index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+        let nan = mechanism_core::Vector2::new(f64::NAN, f64::NAN);
+        pose.kept::<driver::actuator::ActuatorPosition<f64>>(&self.stmt.name)
+            .map_or(nan, |p| if index == 0 { p.r1 } else { p.r2 })
+    }
 }

@@ -88,6 +88,7 @@ impl<'a> GroupKind<'a> for Crank<'a> {
             }
         };
         pose.found(self.stmt, Some(c.tip), &[c.axis]);
+        pose.keep(self.stmt, c);
         Ok(None)
     }
 
@@ -357,4 +358,47 @@ fn lane_steps(
             alpha: quote!(#alpha),
         },
     )
+}
+
+impl super::run::RunKind for Crank<'_> {
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let stmt = self.stmt;
+        let g = cx
+            .pose
+            .kept::<driver::crank::CrankPosition<f64>>(&stmt.name)
+            .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Crank))?;
+        let m = cx.point_arg(self.pivot);
+        let (rate, acc) = (cx.rate(self.input), cx.accel_of(self.input));
+        let carrier = self.carrier.and_then(|l| cx.link_rate(l).map(|w| (l, w)));
+        let (pv, w) = match (cx.accel(), carrier) {
+            (true, None) => (driver::crank::acceleration(g, m.as_ref(), rate, acc)?, acc),
+            (false, None) => (driver::crank::velocity(g, m.as_ref(), rate)?, rate),
+            (true, Some((l, alpha_c))) => {
+                let omega_c = cx.link_omega_in_accel(l).unwrap_or(f64::NAN);
+                let w = alpha_c + acc;
+                (
+                    driver::crank::acceleration(g, m.as_ref(), omega_c + rate, w)?,
+                    w,
+                )
+            }
+            (false, Some((_, omega_c))) => {
+                let w = omega_c + rate;
+                (driver::crank::velocity(g, m.as_ref(), w)?, w)
+            }
+        };
+        cx.set_motion(stmt, pv);
+        cx.set_own(stmt, 0, w);
+        Ok(())
+    }
+
+    fn run_link_dir(&self, _index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+        pose.kept::<driver::crank::CrankPosition<f64>>(&self.stmt.name)
+            .map_or(mechanism_core::Vector2::new(f64::NAN, f64::NAN), |c| c.axis)
+    }
+
+    fn run_link_angle(&self, value: &dyn Fn(&Ident) -> f64) -> Option<f64> {
+        self.carrier
+            .is_none()
+            .then(|| geometry::wrap_angle(value(self.input)))
+    }
 }

@@ -103,3 +103,13 @@ fn lane_steps(s: &mut Step, x: &Value, y: &Value) {
         let #ax = zero; let #ay = zero;
     });
 }
+
+impl super::run::RunKind for Ground<'_> {
+    fn run_rates(&self, _cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        Ok(())
+    }
+
+    fn run_link_dir(&self, _index: usize, _pose: &Pose) -> mechanism_core::Vector2<f64> {
+        mechanism_core::Vector2::x()
+    }
+}

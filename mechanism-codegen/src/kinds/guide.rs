@@ -270,3 +270,36 @@ fn lane_steps(
     s.defines_guide(guide);
     Some(())
 }
+
+impl super::run::RunKind for Guide<'_> {
+    /// A carried guide's motion: its origin's and its carrier's rate.
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let Some(link) = self.carrier else {
+            return Ok(());
+        };
+        let origin_motion = match self.origin {
+            Origin::Point(p) if cx.moves(p) => cx.motion_of(p),
+            _ => mechanism_core::Vector2::zeros(),
+        };
+        let w = cx.link_rate(link).unwrap_or(0.0);
+        let name = self.stmt.name.to_string();
+        if cx.accel() {
+            let a = mechanism_core::guide::LineAcceleration {
+                a_origin: origin_motion,
+                alpha: w,
+            };
+            cx.out.guide_acc.insert(name, a);
+        } else {
+            let v = mechanism_core::guide::LineVelocity {
+                v_origin: origin_motion,
+                omega: w,
+            };
+            cx.out.guide_vel.insert(name, v);
+        }
+        Ok(())
+    }
+
+    fn run_link_dir(&self, _index: usize, _pose: &Pose) -> mechanism_core::Vector2<f64> {
+        mechanism_core::Vector2::x()
+    }
+}

@@ -26,6 +26,7 @@ mod rpp;
 mod rpr;
 mod rrp;
 mod rrr;
+pub mod run;
 mod slider;
 pub mod target;
 pub(crate) mod tokens;
@@ -127,7 +128,7 @@ pub enum Solve {
 
 /// What the macro knows about one statement kind. Implemented once per
 /// kind, on a view of one statement of that kind ([`of`]).
-pub trait GroupKind<'a> {
+pub trait GroupKind<'a>: run::RunKind {
     /// Names the statement refers to, with their tokens and what each must
     /// name.
     fn references(&self) -> Vec<(&'a Ident, Role)>;

@@ -242,3 +242,42 @@ fn lane_steps(lane: &Lane, s: &mut Step, link: &Ident, from: &Ident, local: &Loc
     }
     Some(())
 }
+
+impl super::run::RunKind for Point<'_> {
+    /// The motion of a point on a link: its base's plus the motion about
+    /// the base, checked as the generated code checks it.
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let (stmt, link, from) = (self.stmt, self.link, self.from);
+        if !cx.moves(&stmt.name) {
+            return Ok(());
+        }
+        let base = cx.moves(from).then(|| cx.motion_of(from));
+        let offset = cx.pose.point(&stmt.name) - cx.pose.point(from);
+        let relative = match (cx.link_rate(link), cx.accel()) {
+            (None, _) => None,
+            (Some(w), false) => Some((
+                link::relative_velocity(&offset, w),
+                link::point_velocity(&offset, w),
+            )),
+            (Some(alpha), true) => {
+                let w = cx.link_omega_in_accel(link).unwrap_or(0.0);
+                Some((
+                    link::relative_acceleration(&offset, w, alpha),
+                    link::point_acceleration(&offset, w, alpha),
+                ))
+            }
+        };
+        let value = match (base, relative) {
+            (Some(b), Some((r, _))) => link::point_sum(&b, r)?,
+            (Some(b), None) => b,
+            (None, Some((_, checked))) => checked?,
+            (None, None) => Vector2::zeros(),
+        };
+        cx.set_motion(stmt, value);
+        Ok(())
+    }
+
+    fn run_link_dir(&self, _index: usize, _pose: &Pose) -> Vector2<f64> {
+        Vector2::x()
+    }
+}

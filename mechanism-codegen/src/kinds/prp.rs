@@ -54,6 +54,7 @@ impl<'a> GroupKind<'a> for Prp<'a> {
         let (l1, l2) = (pose.line(self.g1), pose.line(self.g2));
         let p = dyad::prp::position(&l1, num(self.offset1), &l2, num(self.offset2))?;
         pose.found(self.stmt, Some(p.c), &[l1.dir, l2.dir]);
+        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_prp(&l1, &l2)))
     }
 
@@ -242,4 +243,56 @@ fn lane_steps(
         s.defines_link(k, block)?;
     }
     Some(())
+}
+
+impl super::run::RunKind for Prp<'_> {
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let stmt = self.stmt;
+        let missing = || super::run::missing(mechanism_core::Primitive::Prp);
+        let g = cx
+            .pose
+            .kept::<dyad::prp::PrpPosition<f64>>(&stmt.name)
+            .ok_or_else(missing)?;
+        let (l1, l2) = (cx.pose.line(self.g1), cx.pose.line(self.g2));
+        let (v1, v2) = (cx.guide_vel(self.g1), cx.guide_vel(self.g2));
+        if cx.accel() {
+            let gv = cx
+                .vel_group::<dyad::prp::PrpVelocity<f64>>(&stmt.name)
+                .ok_or_else(missing)?;
+            let (a1, a2) = (cx.guide_acc(self.g1), cx.guide_acc(self.g2));
+            let r = dyad::prp::acceleration(
+                g,
+                &l1,
+                &l2,
+                gv,
+                v1.as_ref(),
+                a1.as_ref(),
+                v2.as_ref(),
+                a2.as_ref(),
+            )?;
+            cx.set_motion(stmt, r.ac);
+            cx.set_slide(stmt, 0, r.s1_ddot);
+            cx.set_slide(stmt, 1, r.s2_ddot);
+            cx.keep(stmt, r, None);
+        } else {
+            let r = dyad::prp::velocity(g, &l1, &l2, v1.as_ref(), v2.as_ref())?;
+            cx.set_motion(stmt, r.vc);
+            cx.set_slide(stmt, 0, r.s1_dot);
+            cx.set_slide(stmt, 1, r.s2_dot);
+            cx.keep(stmt, r, Some(r.condition));
+        }
+        Ok(())
+    }
+
+    fn run_link_dir(&self, index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+        match index {
+            0 => pose.line(self.g1).dir,
+            _ => pose.line(self.g2).dir,
+        }
+    }
+
+    fn run_slide(&self, slot: usize, pose: &Pose) -> Option<f64> {
+        pose.kept::<dyad::prp::PrpPosition<f64>>(&self.stmt.name)
+            .map(|p| if slot == 0 { p.s1 } else { p.s2 })
+    }
 }

@@ -57,6 +57,7 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
         let u = geometry::unit(num(self.slot));
         let p = dyad::rpp::position(&pa, &gl, num(self.offset), &u)?;
         pose.found(self.stmt, Some(p.q), &[p.slot, gl.dir]);
+        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_rpp(&p, &gl)))
     }
 
@@ -274,4 +275,58 @@ fn lane_steps(
     let turning = |v: Vector| LaneLink::along(v, None, gd.omega.clone(), gd.alpha.clone());
     s.defines_link(0, turning(along_line(&g, "w")))?;
     s.defines_link(1, turning(line_axis(line)))
+}
+
+impl super::run::RunKind for Rpp<'_> {
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let stmt = self.stmt;
+        let missing = || super::run::missing(mechanism_core::Primitive::Rpp);
+        let g = cx
+            .pose
+            .kept::<dyad::rpp::RppPosition<f64>>(&stmt.name)
+            .ok_or_else(missing)?;
+        let (pa, line) = (cx.pose.point(self.a), cx.pose.line(self.guide));
+        let (ma, gvel) = (cx.point_arg(self.a), cx.guide_vel(self.guide));
+        if cx.accel() {
+            let gv = cx
+                .vel_group::<dyad::rpp::RppVelocity<f64>>(&stmt.name)
+                .ok_or_else(missing)?;
+            let gacc = cx.guide_acc(self.guide);
+            let r = dyad::rpp::acceleration(
+                g,
+                &pa,
+                &line,
+                gv,
+                ma.as_ref(),
+                gvel.as_ref(),
+                gacc.as_ref(),
+            )?;
+            cx.set_motion(stmt, r.aq);
+            cx.set_slide(stmt, 0, r.s1_ddot);
+            cx.set_slide(stmt, 1, r.s2_ddot);
+            cx.keep(stmt, r, None);
+        } else {
+            let r = dyad::rpp::velocity(g, &pa, &line, ma.as_ref(), gvel.as_ref())?;
+            cx.set_motion(stmt, r.vq);
+            cx.set_slide(stmt, 0, r.s1_dot);
+            cx.set_slide(stmt, 1, r.s2_dot);
+            cx.keep(stmt, r, Some(r.condition));
+        }
+        Ok(())
+    }
+
+    fn run_link_dir(&self, index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+        let nan = mechanism_core::Vector2::new(f64::NAN, f64::NAN);
+        match index {
+            1 => pose.line(self.guide).dir,
+            _ => pose
+                .kept::<dyad::rpp::RppPosition<f64>>(&self.stmt.name)
+                .map_or(nan, |p| p.slot),
+        }
+    }
+
+    fn run_slide(&self, slot: usize, pose: &Pose) -> Option<f64> {
+        pose.kept::<dyad::rpp::RppPosition<f64>>(&self.stmt.name)
+            .map(|p| if slot == 0 { p.s1 } else { p.s2 })
+    }
 }

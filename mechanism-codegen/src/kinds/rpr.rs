@@ -54,6 +54,7 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
         let (pa, pb) = (pose.point(self.a), pose.point(self.b));
         let p = dyad::rpr::position(&pa, &pb, num(self.offset), mode(self.mode))?;
         pose.found(self.stmt, None, &[p.axis, p.axis]);
+        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_rpr(&p, &pa, &pb)))
     }
 
@@ -277,4 +278,45 @@ fn lane_steps(
         )?;
     }
     Some(())
+}
+
+impl super::run::RunKind for Rpr<'_> {
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let stmt = self.stmt;
+        let missing = || super::run::missing(mechanism_core::Primitive::Rpr);
+        let g = cx
+            .pose
+            .kept::<dyad::rpr::RprPosition<f64>>(&stmt.name)
+            .ok_or_else(missing)?;
+        let (pa, pb) = (cx.pose.point(self.a), cx.pose.point(self.b));
+        let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
+        if cx.accel() {
+            let gv = cx
+                .vel_group::<dyad::rpr::RprVelocity<f64>>(&stmt.name)
+                .ok_or_else(missing)?;
+            let r = dyad::rpr::acceleration(g, &pa, &pb, gv, ma.as_ref(), mb.as_ref())?;
+            cx.set_own(stmt, 0, r.alpha);
+            cx.set_own(stmt, 1, r.alpha);
+            cx.set_slide(stmt, 0, r.s_ddot);
+            cx.keep(stmt, r, None);
+        } else {
+            let r = dyad::rpr::velocity(g, &pa, &pb, ma.as_ref(), mb.as_ref())?;
+            cx.set_own(stmt, 0, r.omega);
+            cx.set_own(stmt, 1, r.omega);
+            cx.set_slide(stmt, 0, r.s_dot);
+            cx.keep(stmt, r, Some(r.condition));
+        }
+        Ok(())
+    }
+
+    fn run_link_dir(&self, _index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+        let nan = mechanism_core::Vector2::new(f64::NAN, f64::NAN);
+        pose.kept::<dyad::rpr::RprPosition<f64>>(&self.stmt.name)
+            .map_or(nan, |p| p.axis)
+    }
+
+    fn run_slide(&self, _slot: usize, pose: &Pose) -> Option<f64> {
+        pose.kept::<dyad::rpr::RprPosition<f64>>(&self.stmt.name)
+            .map(|p| p.s)
+    }
 }

@@ -56,6 +56,7 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
         let (pa, gl, l) = (pose.point(self.a), pose.line(self.guide), num(self.l));
         let p = dyad::rrp::position(&pa, l, &gl, num(self.offset), mode(self.mode))?;
         pose.found(self.stmt, Some(p.c), &[p.r1 / l, gl.dir]);
+        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_rrp(&p, &gl)))
     }
 
@@ -251,4 +252,51 @@ fn lane_steps(
     s.defines_link(0, LaneLink::along(along_line(&g, "r1"), Some(&l), w1, al1))?;
     let block = LaneLink::along(line_axis(line), None, gd.omega.clone(), gd.alpha.clone());
     s.defines_link(1, block)
+}
+
+impl super::run::RunKind for Rrp<'_> {
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let stmt = self.stmt;
+        let missing = || super::run::missing(mechanism_core::Primitive::Rrp);
+        let g = cx
+            .pose
+            .kept::<dyad::rrp::RrpPosition<f64>>(&stmt.name)
+            .ok_or_else(missing)?;
+        let line = cx.pose.line(self.guide);
+        let (ma, gvel) = (cx.point_arg(self.a), cx.guide_vel(self.guide));
+        if cx.accel() {
+            let gv = cx
+                .vel_group::<dyad::rrp::RrpVelocity<f64>>(&stmt.name)
+                .ok_or_else(missing)?;
+            let gacc = cx.guide_acc(self.guide);
+            let r =
+                dyad::rrp::acceleration(g, &line, gv, ma.as_ref(), gvel.as_ref(), gacc.as_ref())?;
+            cx.set_motion(stmt, r.ac);
+            cx.set_own(stmt, 0, r.alpha1);
+            cx.set_slide(stmt, 0, r.s_ddot);
+            cx.keep(stmt, r, None);
+        } else {
+            let r = dyad::rrp::velocity(g, &line, ma.as_ref(), gvel.as_ref())?;
+            cx.set_motion(stmt, r.vc);
+            cx.set_own(stmt, 0, r.omega1);
+            cx.set_slide(stmt, 0, r.s_dot);
+            cx.keep(stmt, r, Some(r.condition));
+        }
+        Ok(())
+    }
+
+    fn run_link_dir(&self, index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+        let nan = mechanism_core::Vector2::new(f64::NAN, f64::NAN);
+        match index {
+            0 => pose
+                .kept::<dyad::rrp::RrpPosition<f64>>(&self.stmt.name)
+                .map_or(nan, |p| p.r1),
+            _ => pose.line(self.guide).dir,
+        }
+    }
+
+    fn run_slide(&self, _slot: usize, pose: &Pose) -> Option<f64> {
+        pose.kept::<dyad::rrp::RrpPosition<f64>>(&self.stmt.name)
+            .map(|p| p.s)
+    }
 }

@@ -57,6 +57,7 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
         let (l1, l2) = (num(self.l1), num(self.l2));
         let p = dyad::rrr::position(&pa, l1, &pb, l2, mode(self.mode))?;
         pose.found(self.stmt, Some(p.c), &[p.r1 / l1, p.r2 / l2]);
+        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_rrr(&p)))
     }
 
@@ -280,5 +281,42 @@ impl FourBar<'_> {
         } else {
             return None;
         })
+    }
+}
+
+impl super::run::RunKind for Rrr<'_> {
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let stmt = self.stmt;
+        let missing = || super::run::missing(mechanism_core::Primitive::Rrr);
+        let g = cx
+            .pose
+            .kept::<dyad::rrr::RrrPosition<f64>>(&stmt.name)
+            .ok_or_else(missing)?;
+        let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
+        if cx.accel() {
+            let gv = cx
+                .vel_group::<dyad::rrr::RrrVelocity<f64>>(&stmt.name)
+                .ok_or_else(missing)?;
+            let r = dyad::rrr::acceleration(g, gv, ma.as_ref(), mb.as_ref())?;
+            cx.set_motion(stmt, r.ac);
+            cx.set_own(stmt, 0, r.alpha1);
+            cx.set_own(stmt, 1, r.alpha2);
+            cx.keep(stmt, r, None);
+        } else {
+            // The link lengths are the determinant's scale, as emitted.
+            let (l1, l2) = (num(self.l1), num(self.l2));
+            let r = dyad::rrr::velocity_lengths(g, l1, l2, ma.as_ref(), mb.as_ref())?;
+            cx.set_motion(stmt, r.vc);
+            cx.set_own(stmt, 0, r.omega1);
+            cx.set_own(stmt, 1, r.omega2);
+            cx.keep(stmt, r, Some(r.condition));
+        }
+        Ok(())
+    }
+
+    fn run_link_dir(&self, index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+        let nan = mechanism_core::Vector2::new(f64::NAN, f64::NAN);
+        pose.kept::<dyad::rrr::RrrPosition<f64>>(&self.stmt.name)
+            .map_or(nan, |p| if index == 0 { p.r1 } else { p.r2 })
     }
 }

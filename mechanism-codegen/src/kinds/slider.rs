@@ -52,6 +52,7 @@ impl<'a> GroupKind<'a> for Slider<'a> {
         let g = pose.line(self.guide);
         let s = driver::slider::position(&g, num(self.offset), input(self.input))?;
         pose.found(self.stmt, Some(s.p), &[g.dir]);
+        pose.keep(self.stmt, s);
         Ok(None)
     }
 
@@ -201,4 +202,29 @@ fn lane_steps(
             gd.alpha.clone(),
         ),
     )
+}
+
+impl super::run::RunKind for Slider<'_> {
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let g = cx
+            .pose
+            .kept::<driver::slider::SliderPosition<f64>>(&self.stmt.name)
+            .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Slider))?;
+        let line = cx.pose.line(self.guide);
+        let (s, rate) = (cx.value(self.input), cx.rate(self.input));
+        let gvel = cx.guide_vel(self.guide);
+        let pv = if cx.accel() {
+            let gacc = cx.guide_acc(self.guide);
+            let acc = cx.accel_of(self.input);
+            driver::slider::acceleration(g, &line, s, rate, acc, gvel.as_ref(), gacc.as_ref())?
+        } else {
+            driver::slider::velocity(g, &line, s, rate, gvel.as_ref())?
+        };
+        cx.set_motion(self.stmt, pv);
+        Ok(())
+    }
+
+    fn run_link_dir(&self, _index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+        pose.line(self.guide).dir
+    }
 }

@@ -230,3 +230,19 @@ pub fn motor_reactions(model: &Model) -> Vec<Reaction> {
         })
         .collect()
 }
+
+impl super::run::RunKind for Target<'_> {
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let v = if cx.accel() {
+            driver::target::acceleration(cx.accel_of(self.x), cx.accel_of(self.y))?
+        } else {
+            driver::target::velocity(cx.rate(self.x), cx.rate(self.y))?
+        };
+        cx.set_motion(self.stmt, v);
+        Ok(())
+    }
+
+    fn run_link_dir(&self, _index: usize, _pose: &Pose) -> mechanism_core::Vector2<f64> {
+        mechanism_core::Vector2::x()
+    }
+}

@@ -259,6 +259,7 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         let p = triad::position(&dims, &k, &near)?;
         let axes = [p.r1 / dims.l1, p.r2 / dims.l2, p.r3 / dims.l3, p.axis];
         pose.found(self.stmt, Some(p.a), &axes);
+        pose.keep(self.stmt, p);
         Ok(Some(p.jacobian))
     }
 
@@ -612,6 +613,55 @@ fn why(fault: &Fault) -> String {
         ),
         Fault::CannotAssemble { .. } => "it has no assembly at that input".into(),
         other => other.to_string(),
+    }
+}
+
+impl super::run::RunKind for TriadKind<'_> {
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let stmt = self.stmt;
+        let missing = || super::run::missing(mechanism_core::Primitive::Triad);
+        let g = cx
+            .pose
+            .kept::<triad::TriadPosition<f64>>(&stmt.name)
+            .ok_or_else(missing)?;
+        let d = dims(self.t);
+        let [m1, m2, m3] = self.t.k.each_ref().map(|k| cx.point_arg(k));
+        if cx.accel() {
+            let gv = cx
+                .vel_group::<triad::TriadVelocity<f64>>(&stmt.name)
+                .ok_or_else(missing)?;
+            let r = triad::acceleration(&d, g, gv, m1.as_ref(), m2.as_ref(), m3.as_ref())?;
+            cx.set_motion(stmt, r.aa);
+            for (i, w) in [r.alpha1, r.alpha2, r.alpha3, r.alpha]
+                .into_iter()
+                .enumerate()
+            {
+                cx.set_own(stmt, i, w);
+            }
+            cx.keep(stmt, r, None);
+        } else {
+            let r = triad::velocity(&d, g, m1.as_ref(), m2.as_ref(), m3.as_ref())?;
+            cx.set_motion(stmt, r.va);
+            for (i, w) in [r.omega1, r.omega2, r.omega3, r.omega]
+                .into_iter()
+                .enumerate()
+            {
+                cx.set_own(stmt, i, w);
+            }
+            cx.keep(stmt, r, Some(r.condition));
+        }
+        Ok(())
+    }
+
+    fn run_link_dir(&self, index: usize, pose: &Pose) -> Vector2<f64> {
+        let nan = Vector2::new(f64::NAN, f64::NAN);
+        pose.kept::<triad::TriadPosition<f64>>(&self.stmt.name)
+            .map_or(nan, |p| match index {
+                0 => p.r1,
+                1 => p.r2,
+                2 => p.r3,
+                _ => p.axis,
+            })
     }
 }
 
