@@ -698,6 +698,7 @@ mod performance_forces_batch {
     }
 
     #[test]
+    #[rustfmt::skip] // the sample verbatim from docs/performance.md
     fn torque_curve_sample_is_the_scalar_solve() -> Result<(), mechanism::BatchError> {
         let m = Press::<f64>::default();
         let mut b = Press::<f64>::batch(100_000); // load_* columns at the definition's values
