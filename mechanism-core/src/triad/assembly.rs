@@ -1,8 +1,9 @@
 //! Every assembly, the one nearest a given pose, and tracking.
 
 use super::frame::Frame;
-use super::scan::search;
-use super::{Assemblies, Near, Triad, TriadPosition, NEAR_FACTOR, PRIM};
+use super::polynomial::{self, RootsOf};
+use super::scan::{self, add_root};
+use super::{Assemblies, Near, Triad, TriadPosition, MAX_ASSEMBLIES, NEAR_FACTOR, PRIM};
 use crate::error::{Error, Fault};
 use crate::geometry::{all_finite, angle, min};
 use crate::scalar::Real;
@@ -19,6 +20,35 @@ pub fn assemblies<T: Real>(
 ) -> Result<Assemblies<T>, Error<T>> {
     let f = Frame::new(triad, k)?;
     Ok(search(&f))
+}
+
+/// Every assembly: the closed form's roots ([`polynomial`]), each polished
+/// by Newton on the leg equations and merged when they coincide; the sampled
+/// scan ([`scan::search`]) where the polynomial vanishes identically (a
+/// degenerate triad) and, to measure how far the triad misses closing, where
+/// it gives no assembly.
+fn search<T: Real>(f: &Frame<T>) -> Assemblies<T> {
+    let RootsOf::Halves(t, s) = polynomial::roots(f) else {
+        return scan::search(f);
+    };
+    let mut found = Assemblies {
+        list: [None; MAX_ASSEMBLIES],
+        count: 0,
+        miss: T::zero(),
+        reach: f.l3 * f.up,
+    };
+    for (starts, flip) in [(&t, false), (&s, true)] {
+        for x in starts.iter() {
+            let e = polynomial::unit_of(*x, flip);
+            for start in polynomial::starts_at(f, &e).into_iter().flatten() {
+                add_root(f, start, &mut found);
+            }
+        }
+    }
+    if found.is_empty() {
+        return scan::search(f);
+    }
+    found
 }
 
 /// The nearest of `candidates` to `near` and the distance to the next one

@@ -100,6 +100,7 @@
 mod assembly;
 mod forces;
 mod frame;
+mod polynomial;
 mod rates;
 mod scan;
 

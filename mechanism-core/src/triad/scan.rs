@@ -250,7 +250,7 @@ fn minimum<T: Real>(
 }
 
 /// Polishes `x` by Newton and keeps it unless it duplicates one found.
-fn add_root<T: Real>(f: &Frame<T>, x: State<T>, found: &mut Assemblies<T>) {
+pub(super) fn add_root<T: Real>(f: &Frame<T>, x: State<T>, found: &mut Assemblies<T>) {
     let Some(pos) = f.newton(x).and_then(|x| f.finish(&x)) else {
         return;
     };
