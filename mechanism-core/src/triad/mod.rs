@@ -216,7 +216,41 @@ impl<T: Real> Near<T> {
 /// not known there: it vanished, or the range ends) or a table of fewer
 /// than two rows.
 pub fn near_from_table<T: Real>(table: &[[f64; 7]], q: T) -> Result<Near<T>, Error<T>> {
+    lookup(table, q.as_f64())
+}
+
+/// [`near_from_table`] for an input that is an angle (rad): the pose repeats
+/// every turn, so `q` is first moved by whole turns into `[q0, q0 + 2 pi)`,
+/// `q0` the table's first input (a crank at `theta - 2 pi` is where it is
+/// at `theta`). Errors as for [`near_from_table`], for the moved input.
+pub fn near_from_table_turning<T: Real>(table: &[[f64; 7]], q: T) -> Result<Near<T>, Error<T>> {
     let x = q.as_f64();
+    match table.first() {
+        Some(first) if x.is_finite() => lookup(table, same_turn(x, first[0])),
+        _ => lookup(table, x),
+    }
+}
+
+/// The angle `x` (rad) moved by whole turns into `[from, from + 2 pi)`
+/// (unchanged when the turns do not fit an `i64`: then outside any table).
+pub fn same_turn(x: f64, from: f64) -> f64 {
+    let tau = core::f64::consts::TAU;
+    let turns = (x - from) / tau;
+    if !(turns.abs() < 9.0e18) {
+        return x;
+    }
+    let mut y = x - from - (turns as i64) as f64 * tau;
+    if y < 0.0 {
+        y += tau;
+    }
+    if y >= tau {
+        y -= tau;
+    }
+    from + y
+}
+
+/// The table's pose at input `x` (see [`near_from_table`]).
+fn lookup<T: Real>(table: &[[f64; 7]], x: f64) -> Result<Near<T>, Error<T>> {
     if !x.is_finite() {
         return Err(Error::new(
             PRIM,
@@ -334,6 +368,20 @@ mod tests {
             );
         }
         assert!(near_from_table(&table[..1], -1.0).is_err());
+        // As an angle: whole turns away is the same pose (bit for bit where
+        // the turn is exact in f64 arithmetic, here within 4 ulps of 2 pi).
+        let tau = core::f64::consts::TAU;
+        for q in [-0.6, 0.1, 1.7] {
+            let n0 = near_from_table_turning(&table, q).unwrap();
+            for turns in [-3.0, -1.0, 1.0, 2.0] {
+                let n = near_from_table_turning(&table, q + turns * tau).unwrap();
+                assert!((n.a.x - n0.a.x).abs() <= 16.0 * f64::EPSILON, "{q} {turns}");
+                assert!((n.p.y - n0.p.y).abs() <= 16.0 * f64::EPSILON, "{q} {turns}");
+            }
+        }
+        // A table over less than a turn still refuses the rest of the turn.
+        assert!(near_from_table_turning(&table, 3.0).is_err());
+        assert!(near_from_table_turning(&table, f64::NAN).is_err());
         assert!(near_from_table::<f64>(&[], 0.0).is_err());
     }
 }
