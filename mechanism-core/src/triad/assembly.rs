@@ -1,11 +1,11 @@
 //! Every assembly, the one nearest a given pose, and tracking.
 
-use super::frame::Frame;
+use super::frame::{Frame, State};
 use super::polynomial::{self, RootsOf};
 use super::scan::{self, add_root};
 use super::{Assemblies, Near, Triad, TriadPosition, MAX_ASSEMBLIES, NEAR_FACTOR, PRIM};
 use crate::error::{Error, Fault};
-use crate::geometry::{all_finite, angle, min};
+use crate::geometry::{all_finite, length, min};
 use crate::scalar::Real;
 use nalgebra::Point2;
 
@@ -136,10 +136,15 @@ pub fn refine<T: Real>(
     let f = Frame::new(triad, k)?;
     let inf = T::lit(f64::INFINITY);
     let x0 = (previous.a - f.origin) * f.down;
-    let start = [x0.x, x0.y, angle(&previous.axis)];
-    if !all_finite(start) {
+    let axis = previous.axis;
+    let norm = length(&axis);
+    if !(all_finite([x0.x, x0.y, axis.x, axis.y]) && norm > T::zero()) {
         return Err(Error::new(PRIM, Fault::NonFinite { what: "triad pose" }));
     }
+    let start = State {
+        a: x0,
+        e: axis / norm,
+    };
     let Some(pos) = f.newton(start).and_then(|x| f.finish(&x)) else {
         return Err(not_near(&f, inf, f.jump()));
     };

@@ -3,8 +3,7 @@
 
 use super::{Near, Triad, TriadPosition, JUMP_FRACTION, MAX_NEWTON, PRIM};
 use crate::error::{Error, Fault};
-use crate::geometry::{abs, all_finite, cross, dot, length, min, perp, unit};
-use crate::linsolve;
+use crate::geometry::{abs, all_finite, cross, dot, length, min, perp};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
 
@@ -28,8 +27,15 @@ pub(super) struct Frame<T: Real> {
     pub(super) reach: T,
 }
 
-/// A Newton state in the normalized frame: `A` and the ternary's angle.
-pub(super) type State<T> = [T; 3];
+/// A Newton state in the normalized frame: `A` and the ternary's unit axis
+/// (`(cos, sin)` of its angle: no trigonometry in the iteration).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct State<T: Real> {
+    /// Joint `A` (normalized).
+    pub(super) a: Vector2<T>,
+    /// The ternary's axis, along `A -> B`, of unit length.
+    pub(super) e: Vector2<T>,
+}
 
 fn validate<T: Real>(triad: &Triad<T>, k: &[Point2<T>; 3]) -> Result<(), Error<T>> {
     let lengths = [
@@ -102,9 +108,8 @@ impl<T: Real> Frame<T> {
 
     /// Residuals `(|ri|^2 - li^2) / 2` and their Jacobian in `(A, phi)`.
     pub(super) fn system(&self, x: &State<T>) -> ([T; 3], [[T; 3]; 3]) {
-        let a = Vector2::new(x[0], x[1]);
-        let e = unit(x[2]);
-        let (ab, ap) = self.offsets(&e);
+        let a = x.a;
+        let (ab, ap) = self.offsets(&x.e);
         let r2 = a + ab - self.k2;
         let r3 = a + ap - self.k3;
         let half = T::lit(0.5);
@@ -123,18 +128,23 @@ impl<T: Real> Frame<T> {
 
     /// Newton's method on [`Frame::system`] from `x`: `Some` when the steps
     /// fall below `sqrt(eps) R` (then one more is taken) and every residual
-    /// ends within `64 eps l_i R`.
+    /// ends within `64 eps l_i R`. The axis turns by `atan(step)` rather than
+    /// `step` (a rotation by `(1, step) / sqrt(1 + step^2)`, no sine or
+    /// cosine): the difference is third order in the step, so convergence
+    /// stays quadratic. Each step solves the 3x3 system by Cramer's rule
+    /// (its accuracy matters only to the speed of convergence: the residuals
+    /// decide the result).
     pub(super) fn newton(&self, mut x: State<T>) -> Option<State<T>> {
         let small = T::eps().sqrt() * self.reach;
         let mut settled = false;
         for _ in 0..MAX_NEWTON {
             let (g, jac) = self.system(&x);
-            let step = linsolve::solve(jac, [-g[0], -g[1], -g[2]]).ok()?.x;
-            for (xi, si) in x.iter_mut().zip(step) {
-                *xi += si;
-            }
+            let step = cramer(&jac, [-g[0], -g[1], -g[2]])?;
+            x.a += Vector2::new(step[0], step[1]);
+            let turned = x.e + perp(&x.e) * step[2];
+            x.e = turned / (T::one() + step[2] * step[2]).sqrt_kernel();
             let size = abs(step[0]) + abs(step[1]) + abs(step[2]) * self.c;
-            if !(size.finite() && abs(x[0]) + abs(x[1]) <= T::lit(4.0) * self.reach) {
+            if !(size.finite() && abs(x.a.x) + abs(x.a.y) <= T::lit(4.0) * self.reach) {
                 return None;
             }
             if settled {
@@ -154,8 +164,7 @@ impl<T: Real> Frame<T> {
 
     /// The assembly at a converged state, in the user's frame.
     pub(super) fn finish(&self, x: &State<T>) -> Option<TriadPosition<T>> {
-        let a = Vector2::new(x[0], x[1]);
-        let e = unit(x[2]);
+        let (a, e) = (x.a, x.e);
         let (ab, ap) = self.offsets(&e);
         let r2 = a + ab - self.k2;
         let r3 = a + ap - self.k3;
@@ -196,4 +205,27 @@ impl<T: Real> Frame<T> {
         let shortest = [self.l2, self.l3, self.c].into_iter().fold(self.l1, min);
         T::lit(JUMP_FRACTION) * shortest
     }
+}
+
+/// `m x = b` for a 3x3 `m` by Cramer's rule (rows' cross products); `None`
+/// when the determinant is zero or the result not finite.
+#[inline(always)]
+fn cramer<T: Real>(m: &[[T; 3]; 3], b: [T; 3]) -> Option<[T; 3]> {
+    let cross3 = |p: &[T; 3], q: &[T; 3]| {
+        [
+            p[1] * q[2] - p[2] * q[1],
+            p[2] * q[0] - p[0] * q[2],
+            p[0] * q[1] - p[1] * q[0],
+        ]
+    };
+    let c0 = cross3(&m[1], &m[2]);
+    let c1 = cross3(&m[2], &m[0]);
+    let c2 = cross3(&m[0], &m[1]);
+    let det = m[0][0] * c0[0] + m[0][1] * c0[1] + m[0][2] * c0[2];
+    if det == T::zero() {
+        return None;
+    }
+    let inv = T::one() / det;
+    let x: [T; 3] = core::array::from_fn(|i| (b[0] * c0[i] + b[1] * c1[i] + b[2] * c2[i]) * inv);
+    all_finite(x).then_some(x)
 }

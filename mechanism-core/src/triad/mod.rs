@@ -14,47 +14,35 @@
 //!
 //! # Position: every assembly, then the one asked for
 //!
-//! There is no closed form. The chain `K1 - A - B - K2` is a four-bar whose
-//! coupler carries `P`; `P`'s path (the coupler curve, a circular sextic)
-//! meets the circle of radius `l3` about `K3` in at most 6 points, so a triad
-//! has at most 6 real assemblies ([`MAX_ASSEMBLIES`]). [`assemblies`] finds
-//! them all without heap:
+//! The assembly reduces to one polynomial equation of degree six: with the
+//! ternary's angle `phi` known, legs 2 and 3 minus leg 1 are two equations
+//! linear in `A`; Cramer's rule gives `A`, and leg 1's equation becomes a
+//! trigonometric polynomial of order 3 in `phi`, of degree 6 in
+//! `tan(phi / 2)`, so a triad has at most 6 real assemblies
+//! ([`MAX_ASSEMBLIES`]). [`assemblies`] finds them all without heap:
 //!
-//! 1. the angle `theta` of leg 1 parametrizes the four-bar; where `|A - K2|`
-//!    lies in `[|ab - l2|, ab + l2]` (closed form: up to two intervals of
-//!    `theta`, or the whole turn) `B` follows by the circle-circle step on one
-//!    of its two branches. Each interval is traversed as one closed loop,
-//!    `theta = mid - half cos t` for `t` in `[0, 2 pi)`, branch `+` while
-//!    `sin t > 0` and `-` after: at the interval's ends (where the step stops
-//!    assembling) the two branches meet, the height of `B` goes as `sin t`,
-//!    and the loop is a smooth closed curve, so no root hides at a branch
-//!    end. A whole turn gives two loops, one per branch;
-//! 2. along each loop the residual `f(t) = |P - K3| - l3` is sampled at
-//!    [`SAMPLES`] points; every sign change is bracketed and narrowed by the
-//!    Illinois method. A pair of roots closer than the sample spacing (near
-//!    a branch point) shows no sign change between samples but a local
-//!    minimum of `|f|`: wherever the parabola through the three samples
-//!    comes near zero, the extremum of `f` between the neighbours is located
-//!    by golden-section search, and if `f` changes sign there both sides are
-//!    bracketed (a tangency, `f` within `sqrt(eps)` of zero, starts Newton
-//!    directly);
-//! 3. each start is polished by Newton's method on the full 3x3 system in
-//!    the unknowns `(A, phi)` (`phi` the angle of `A -> B`), equations
-//!    `(|A - Ki|^2 - li^2) / 2 = 0` for the three legs, solved by
-//!    [`crate::linsolve`], and kept when it converges (residuals at rounding
-//!    level); assemblies whose joints agree to `sqrt(eps) / 8` of the
-//!    group's scale are merged.
+//! 1. the polynomial's coefficients from the dimensions and the known points
+//!    (a few dozen products, `polynomial.rs`);
+//! 2. its real roots, each half of the circle in its own variable (`tan` or
+//!    `cot` of `phi / 2`, in `[-1, 1]`): isolated by the roots of its
+//!    derivatives (monotone pieces), each bracketed root found by Newton's
+//!    method kept in its bracket; local extrema within rounding of zero
+//!    (near-double roots, where two assemblies meet) are kept as candidates;
+//! 3. `A` at each root by Cramer's rule (or, where the two lines are nearly
+//!    parallel, from leg 1's circle, both intersections), then Newton's
+//!    method on the full 3x3 system in the unknowns `(A, phi)`, equations
+//!    `(|A - Ki|^2 - li^2) / 2 = 0` for the three legs, to full precision;
+//!    kept when it converges (residuals at rounding level); assemblies whose
+//!    joints agree to `sqrt(eps) / 8` of the group's scale are merged.
 //!
-//! Why [`SAMPLES`] = 720 per loop: `f` has at most 6 zeros on all loops
-//! together, so a sign change between two samples is a root and the only
-//! roots a scan can miss are pairs (or quadruples) closer than the spacing,
-//! which the local-minimum step recovers; what the count must resolve is the
-//! separation of `f`'s extrema. Measured on the 600 random triads of
-//! `tests/triad.rs` (checked against a double-double scan of the ternary's
-//! angle): 90 samples found every assembly, 45 missed one; 720 keeps a
-//! factor 8. Cost: about 1 500 residual evaluations (one or two `sin_cos`,
-//! two square roots each), 0.1 ms per search in f64 on an x86-64 core; the
-//! tracking form is a few Newton steps (under 1 us).
+//! Where the polynomial vanishes identically (a degenerate triad whose
+//! reduced equation holds at every angle) and where it gives no assembly,
+//! the earlier sampled search (`scan.rs`) runs instead: the chain `K1 - A -
+//! B - K2` as a four-bar traversed along its closed loops, the residual
+//! `|P - K3| - l3` sampled at [`SAMPLES`] points per loop, sign changes
+//! bracketed and near-zero minima searched, each start polished the same
+//! way; with no assembly it measures how far the triad misses closing
+//! (`CannotAssemble`'s `miss`).
 //!
 //! Everything is computed in a frame moved to `K1` and scaled by the power
 //! of two at or below the longest dimension (exact), so results scale exactly
@@ -67,7 +55,9 @@
 //! assembly is `CannotAssemble`, and a nearest one farther than
 //! [`JUMP_FRACTION`] of the shortest dimension, or not at most half as far
 //! ([`NEAR_FACTOR`]) as the next, is `NotNear`. [`position_near`]
-//! tracks an assembly from a previous pose: Newton from it, accepted when it
+//! tracks an assembly from a previous pose: Newton on the loop from it (a
+//! few steps without trigonometry, faster than the polynomial's roots and
+//! their polish; measured in docs/report.md), accepted when it
 //! converges, the Jacobian's determinant keeps its sign (no branch point was
 //! crossed) and the joints moved at most [`JUMP_FRACTION`] of the shortest
 //! dimension; else the full search, the nearest assembly on the same side
@@ -236,7 +226,8 @@ pub fn near_from_table_turning<T: Real>(table: &[[f64; 7]], q: T) -> Result<Near
 pub fn same_turn(x: f64, from: f64) -> f64 {
     let tau = core::f64::consts::TAU;
     let turns = (x - from) / tau;
-    if !(turns.abs() < 9.0e18) {
+    let fits = turns.abs() < 9.0e18;
+    if !fits {
         return x;
     }
     let mut y = x - from - (turns as i64) as f64 * tau;

@@ -71,7 +71,7 @@
 //! leg 1's circle and the longer of the two lines, both intersections tried.
 
 use super::frame::{Frame, State};
-use crate::geometry::{abs, angle, cross, dot, max, perp};
+use crate::geometry::{abs, cross, dot, max, perp};
 use crate::scalar::Real;
 use nalgebra::{Complex, Vector2};
 
@@ -242,7 +242,9 @@ pub(super) fn roots<T: Real>(f: &Frame<T>) -> RootsOf<T> {
     let (fm, scale) = closure_coefficients(f);
     let p = tangent_polynomial(&fm);
     let size = p.iter().fold(T::zero(), |m, x| max(m, abs(*x)));
-    if !(size > T::lit(VANISH) * T::eps() * scale) {
+    // NaN (overflowed products) counts as vanishing too.
+    let live = size > T::lit(VANISH) * T::eps() * scale;
+    if !live {
         return RootsOf::Degenerate;
     }
     let mut rev = p;
@@ -351,7 +353,6 @@ fn roots_in_unit<T: Real>(p: &Poly<T>) -> Starts<T> {
 /// circle when the two lines are nearly parallel; `None` for unused slots.
 pub(super) fn starts_at<T: Real>(f: &Frame<T>, e: &Vector2<T>) -> [Option<State<T>>; 2] {
     let half = T::lit(0.5);
-    let phi = angle(e);
     let (ab, ap) = f.offsets(e);
     let (d2, d3) = (ab - f.k2, ap - f.k3);
     let l1s = f.l1 * f.l1;
@@ -362,17 +363,18 @@ pub(super) fn starts_at<T: Real>(f: &Frame<T>, e: &Vector2<T>) -> [Option<State<
     // |sin| of the angle between the lines above 1/1024: Cramer's rule.
     if det * det > T::lit(1.0 / 1_048_576.0) * n2 * n3 {
         let a = (Vector2::new(d3.y, -d3.x) * h2 + Vector2::new(-d2.y, d2.x) * h3) / det;
-        return [Some([a.x, a.y, phi]), None];
+        return [Some(State { a, e: *e }), None];
     }
     let (n, h, nn) = if n2 >= n3 { (d2, h2, n2) } else { (d3, h3, n3) };
-    if !(nn > T::zero()) {
+    let usable = nn > T::zero();
+    if !usable {
         return [None, None];
     }
     let foot = n * (h / nn);
     let off = max(l1s - h * h / nn, T::zero()).sqrt_kernel();
     let side = perp(&n) * (off / nn.sqrt_kernel());
     let (p, m) = (foot + side, foot - side);
-    [Some([p.x, p.y, phi]), Some([m.x, m.y, phi])]
+    [Some(State { a: p, e: *e }), Some(State { a: m, e: *e })]
 }
 
 /// The unit vector of `phi` from `t = tan(phi / 2)` (`flip`: from `s =

@@ -105,7 +105,7 @@ type Sample<T> = (Vector2<T>, Vector2<T>);
 /// The Newton state at a sample (the axis's angle taken only here, for the
 /// few samples that start a polish).
 fn state<T: Real>((a, e): Sample<T>) -> State<T> {
-    [a.x, a.y, angle(&e)]
+    State { a, e }
 }
 
 /// Samples one loop, starts Newton at every bracket and near-zero minimum.
