@@ -9,12 +9,9 @@ use crate::geometry::{all_finite, length, min};
 use crate::scalar::Real;
 use nalgebra::Point2;
 
-/// Finds every assembly (see the module documentation).
-///
-/// Errors: `NonPositive` for a length `<= 0` (or non-finite: `NonFinite`),
-/// `NonFinite` for a non-finite point or `P_local`. No assembly is not an
-/// error here: the list is empty ([`position`] reports it).
-pub fn assemblies<T: Real>(
+/// [`super::assemblies`], generic: instantiated in this crate for `f32` and
+/// `f64` only (through [`super::Kernels`]).
+pub(super) fn assemblies_in<T: Real>(
     triad: &Triad<T>,
     k: &[Point2<T>; 3],
 ) -> Result<Assemblies<T>, Error<T>> {
@@ -75,17 +72,9 @@ fn nearest<'a, T: Real>(
     best.map(|(q, d)| (q, d, next))
 }
 
-/// The assembly nearest to `near` (see the module documentation).
-///
-/// Errors ([`Primitive::Triad`]): input errors as for [`assemblies`];
-/// `CannotAssemble` when the triad does not close at this input (`miss`:
-/// how far the four-bar `K1 - A - B - K2` misses closing, or, when it
-/// closes, the least `| |P - K3| - l3 |` sampled; L); `NotNear` when the
-/// nearest assembly is farther from `near` than [`JUMP_FRACTION`] of the
-/// shortest dimension (then the intended one may not exist at this input:
-/// even a single assembly is not returned), or not at most half as far as
-/// the next.
-pub fn position<T: Real>(
+/// [`super::position`], generic: instantiated in this crate for `f32` and
+/// `f64` only (through [`super::Kernels`]).
+pub(super) fn position_in<T: Real>(
     triad: &Triad<T>,
     k: &[Point2<T>; 3],
     near: &Near<T>,
@@ -161,17 +150,9 @@ fn same_side<T: Real>(p: &TriadPosition<T>, q: &TriadPosition<T>) -> bool {
     p.jacobian * q.jacobian > T::zero()
 }
 
-/// Tracking: [`refine`] from `previous`, falling back to the full search and
-/// the nearest assembly to `previous` on the same side of the branch points
-/// (sign of [`TriadPosition::jacobian`]), accepted when it moved at most
-/// [`JUMP_FRACTION`] of the shortest dimension and is at most half as far
-/// as the next such assembly.
-///
-/// Errors ([`Primitive::Triad`]): input errors as for [`assemblies`];
-/// `CannotAssemble` when no assembly exists; `NotNear` when the followed
-/// assembly has vanished (met another at a branch point) or the match is
-/// not clear (see [`Fault::NotNear`]).
-pub fn position_near<T: Real>(
+/// [`super::position_near`], generic: instantiated in this crate for `f32` and
+/// `f64` only (through [`super::Kernels`]).
+pub(super) fn position_near_in<T: Real>(
     triad: &Triad<T>,
     k: &[Point2<T>; 3],
     previous: &TriadPosition<T>,

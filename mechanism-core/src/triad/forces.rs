@@ -40,20 +40,9 @@ pub struct TriadReactions<T: Real> {
     pub min_pivot_ratio: T,
 }
 
-/// The joint reactions from the known loads (see [`TriadLoads`] for the
-/// points each is about).
-///
-/// Unknowns (columns, two each): `K1`, `K2`, `K3` (outside on the legs),
-/// `A`, `B`, `P` (legs on the ternary). Rows, three per body (`Fx`, `Fy`,
-/// moment): leg 1 about `A`, leg 2 about `B`, leg 3 about `P`, the ternary
-/// about `A`; so a leg's moment row holds only its outer force, and the
-/// ternary's only `B`'s and `P`'s. Solved by [`linsolve::solve`] (row
-/// equilibration, partial pivoting) on the 12x12 system.
-///
-/// Errors ([`Primitive::Triad`]): `NonFinite` for non-finite loads or
-/// results; `Singular` when the pose admits no unique reactions (a branch
-/// point, or a relative pivot `<= 12 eps`).
-pub fn reactions<T: Real>(
+/// [`super::reactions`], generic: instantiated in this crate for `f32` and
+/// `f64` only (through [`super::Kernels`]).
+pub(super) fn reactions_in<T: Real>(
     pos: &TriadPosition<T>,
     loads: &TriadLoads<T>,
 ) -> Result<TriadReactions<T>, Error<T>> {

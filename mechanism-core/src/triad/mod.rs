@@ -94,8 +94,8 @@ mod polynomial;
 mod rates;
 mod scan;
 
-pub use assembly::{assemblies, position, position_near, refine};
-pub use forces::{reactions, TriadLoads, TriadReactions};
+pub use assembly::refine;
+pub use forces::{TriadLoads, TriadReactions};
 pub use rates::{acceleration, velocity, TriadAcceleration, TriadVelocity};
 
 use crate::error::{Error, Fault, Primitive};
@@ -194,6 +194,159 @@ impl<T: Real> Near<T> {
             p: pos.p,
         }
     }
+}
+
+/// The triad's searches and reactions compiled once, in this crate, for
+/// `f32` and `f64` (a supertrait of [`Real`]): a definition's crate calls
+/// them instead of instantiating the generic search, its polish and the
+/// 12x12 elimination in its own code, which made a triad definition take
+/// seconds longer to compile than a dyad's. Out of line (`inline(never)`),
+/// so no copy is made downstream. Not for implementing elsewhere.
+#[doc(hidden)]
+pub trait Kernels: Sized {
+    /// [`assemblies`] in this type.
+    fn triad_assemblies(
+        triad: &Triad<Self>,
+        k: &[Point2<Self>; 3],
+    ) -> Result<Assemblies<Self>, Error<Self>>
+    where
+        Self: Real;
+    /// [`position`] in this type.
+    fn triad_position(
+        triad: &Triad<Self>,
+        k: &[Point2<Self>; 3],
+        near: &Near<Self>,
+    ) -> Result<TriadPosition<Self>, Error<Self>>
+    where
+        Self: Real;
+    /// [`position_near`] in this type.
+    fn triad_position_near(
+        triad: &Triad<Self>,
+        k: &[Point2<Self>; 3],
+        previous: &TriadPosition<Self>,
+    ) -> Result<TriadPosition<Self>, Error<Self>>
+    where
+        Self: Real;
+    /// [`reactions`] in this type.
+    fn triad_reactions(
+        pos: &TriadPosition<Self>,
+        loads: &TriadLoads<Self>,
+    ) -> Result<TriadReactions<Self>, Error<Self>>
+    where
+        Self: Real;
+}
+
+/// Implements [`Kernels`] for one scalar type.
+macro_rules! kernels {
+    ($t:ty) => {
+        impl Kernels for $t {
+            #[inline(never)]
+            fn triad_assemblies(
+                triad: &Triad<Self>,
+                k: &[Point2<Self>; 3],
+            ) -> Result<Assemblies<Self>, Error<Self>> {
+                assembly::assemblies_in(triad, k)
+            }
+            #[inline(never)]
+            fn triad_position(
+                triad: &Triad<Self>,
+                k: &[Point2<Self>; 3],
+                near: &Near<Self>,
+            ) -> Result<TriadPosition<Self>, Error<Self>> {
+                assembly::position_in(triad, k, near)
+            }
+            #[inline(never)]
+            fn triad_position_near(
+                triad: &Triad<Self>,
+                k: &[Point2<Self>; 3],
+                previous: &TriadPosition<Self>,
+            ) -> Result<TriadPosition<Self>, Error<Self>> {
+                assembly::position_near_in(triad, k, previous)
+            }
+            #[inline(never)]
+            fn triad_reactions(
+                pos: &TriadPosition<Self>,
+                loads: &TriadLoads<Self>,
+            ) -> Result<TriadReactions<Self>, Error<Self>> {
+                forces::reactions_in(pos, loads)
+            }
+        }
+    };
+}
+
+kernels!(f32);
+kernels!(f64);
+
+/// Finds every assembly (see the module documentation).
+///
+/// Errors: `NonPositive` for a length `<= 0` (or non-finite: `NonFinite`),
+/// `NonFinite` for a non-finite point or `P_local`. No assembly is not an
+/// error here: the list is empty ([`position`] reports it).
+#[inline]
+pub fn assemblies<T: Real>(
+    triad: &Triad<T>,
+    k: &[Point2<T>; 3],
+) -> Result<Assemblies<T>, Error<T>> {
+    T::triad_assemblies(triad, k)
+}
+
+/// The assembly nearest to `near` (see the module documentation).
+///
+/// Errors ([`Primitive::Triad`]): input errors as for [`assemblies`];
+/// `CannotAssemble` when the triad does not close at this input (`miss`:
+/// how far the four-bar `K1 - A - B - K2` misses closing, or, when it
+/// closes, the least `| |P - K3| - l3 |` sampled; L); `NotNear` when the
+/// nearest assembly is farther from `near` than [`JUMP_FRACTION`] of the
+/// shortest dimension (then the intended one may not exist at this input:
+/// even a single assembly is not returned), or not at most half as far as
+/// the next.
+#[inline]
+pub fn position<T: Real>(
+    triad: &Triad<T>,
+    k: &[Point2<T>; 3],
+    near: &Near<T>,
+) -> Result<TriadPosition<T>, Error<T>> {
+    T::triad_position(triad, k, near)
+}
+
+/// Tracking: [`refine`] from `previous`, falling back to the full search and
+/// the nearest assembly to `previous` on the same side of the branch points
+/// (sign of [`TriadPosition::jacobian`]), accepted when it moved at most
+/// [`JUMP_FRACTION`] of the shortest dimension and is at most half as far
+/// as the next such assembly.
+///
+/// Errors ([`Primitive::Triad`]): input errors as for [`assemblies`];
+/// `CannotAssemble` when no assembly exists; `NotNear` when the followed
+/// assembly has vanished (met another at a branch point) or the match is
+/// not clear (see [`Fault::NotNear`]).
+#[inline]
+pub fn position_near<T: Real>(
+    triad: &Triad<T>,
+    k: &[Point2<T>; 3],
+    previous: &TriadPosition<T>,
+) -> Result<TriadPosition<T>, Error<T>> {
+    T::triad_position_near(triad, k, previous)
+}
+
+/// The joint reactions from the known loads (see [`TriadLoads`] for the
+/// points each is about).
+///
+/// Unknowns (columns, two each): `K1`, `K2`, `K3` (outside on the legs),
+/// `A`, `B`, `P` (legs on the ternary). Rows, three per body (`Fx`, `Fy`,
+/// moment): leg 1 about `A`, leg 2 about `B`, leg 3 about `P`, the ternary
+/// about `A`; so a leg's moment row holds only its outer force, and the
+/// ternary's only `B`'s and `P`'s. Solved by [`linsolve::solve`] (row
+/// equilibration, partial pivoting) on the 12x12 system.
+///
+/// Errors ([`Primitive::Triad`]): `NonFinite` for non-finite loads or
+/// results; `Singular` when the pose admits no unique reactions (a branch
+/// point, or a relative pivot `<= 12 eps`).
+#[inline]
+pub fn reactions<T: Real>(
+    pos: &TriadPosition<T>,
+    loads: &TriadLoads<T>,
+) -> Result<TriadReactions<T>, Error<T>> {
+    T::triad_reactions(pos, loads)
 }
 
 /// The pose an assembly tracked ahead of time has at input `q`: linear

@@ -73,6 +73,11 @@ fn loops<T: Real>(f: &Frame<T>) -> Result<Loops<T>, (T, T)> {
 
 /// A point of a loop at `t`: the sample and the residual
 /// `|P - K3| - l3` (normalized); `None` where `A` meets `K2`.
+///
+/// Out of line: the scan calls it from six places, each of which would
+/// otherwise carry its own copy of the sine and cosine kernel into every
+/// definition's code (compile time; the scan is the rare path).
+#[inline(never)]
 fn curve<T: Real>(f: &Frame<T>, lp: &Loop<T>, psi: T, t: T) -> Option<(Sample<T>, T)> {
     let (theta, sign) = match *lp {
         Loop::Full { sign } => (psi + t, sign),
