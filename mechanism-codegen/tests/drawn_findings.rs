@@ -181,3 +181,85 @@ fn a_drawn_cylinder_gets_the_grouped_findings() {
     assert_eq!(messages(&body(true, 1.9)), Vec::<String>::new());
     assert_eq!(messages(&body(false, 1.9)), Vec::<String>::new());
 }
+
+/// The drawn Stephenson III (tests/examples/drawn.rs) with `extra` joints,
+/// link lines `links` and the crank pivot `o6`, the input's `range` line.
+fn stephenson(extra: &str, links: &str, o6: &str, range: &str) -> String {
+    format!(
+        "pub S {{
+            const phi0 = -28.402242220599071 * pi / 180.0;
+            joints {{
+                O2 = (0.0, 0.0), O4 = (0.30, 0.0), O6 = {o6},
+                C = (0.05 + 0.24 * cos(phi0), 0.42 + 0.24 * sin(phi0)),
+                A = (-5.9201362974731851e-2, 5.3807049927811955e-2),
+                B = (1.7859606664268302e-1, 1.5893736176674175e-1),
+                P = (6.9064856947974249e-3, 1.8845381871298039e-1),
+                {extra}
+            }}
+            links {{ ground = [O2, O4, O6], link6 = [O6, C], coupler = [A, B, P], {links} }}
+            input phi = angle(link6);
+            {range}
+        }}"
+    )
+}
+
+const SWING: &str = "range phi = (-50.43 deg, -2.64 deg);";
+const PIVOT: &str = "(0.05, 0.42)";
+
+#[test]
+fn a_mass_centre_drawn_on_a_triad_leg_keeps_the_triad() {
+    // Proves: a third joint on a triad's leg that nothing else uses (a mass
+    // centre) leaves the leg a binary leg of the triad: the drawing expands
+    // without error, where the same drawing with that joint also on another
+    // link is not a triad (the decomposition's message), so the rule can
+    // fail.
+    let legs = "crank2 = [O2, A, G2], rocker = [O4, B, G4], link5 = [C, P, G5],";
+    let extra = "G2 = (-0.03, 0.027), G4 = (0.24, 0.08), G5 = (0.09, 0.25),";
+    let ok = messages(&stephenson(extra, legs, PIVOT, SWING));
+    assert!(ok.is_empty(), "{ok:?}");
+    // G2 also carries a dyad (G2 - Q - O4): then crank2 is no binary leg.
+    let shared = "crank2 = [O2, A, G2], rocker = [O4, B, G4], link5 = [C, P, G5], e1 = [G2, Q], e2 = [Q, O4],";
+    let extra_q = "G2 = (-0.03, 0.027), G4 = (0.24, 0.08), G5 = (0.09, 0.25), Q = (0.2, -0.1),";
+    let bad = messages(&stephenson(extra_q, shared, PIVOT, SWING));
+    assert!(bad.iter().any(|m| m.contains("not a triad")), "{bad:?}");
+}
+
+#[test]
+fn a_crank_drawn_below_the_axis_in_front_of_a_triad_is_read_a_turn_away() {
+    // Proves: a full-turn crank (default range [0, 360] deg) drawn at -120
+    // deg in front of a triad expands without error (the drawn input counts
+    // as 240 deg, inside the range), where before the drawing's angle was
+    // outside the range checked.
+    let o6 = "(0.05 + 0.24 * cos(phi0) + 0.01, 0.42 + 0.24 * sin(phi0) + 0.01 * sqrt(3.0))";
+    let legs = "crank2 = [O2, A], rocker = [O4, B], link5 = [C, P],";
+    let out = messages(&stephenson("", legs, o6, ""));
+    assert!(out.is_empty(), "{out:?}");
+}
+
+#[test]
+fn a_class_four_group_says_what_is_supported() {
+    // Proves: an undecomposable loop's message names what is solved (dyads
+    // and the triad) and that a class IV group is not, instead of sending
+    // the user to group statements, which do not solve it either.
+    let out = messages(
+        "pub Class4 {
+            joints {
+                O1 = (0.0, 0.0), O2 = (3.0, 0.0), A = (0.3, 0.9),
+                X = (1.0, 1.6), Y = (0.6, 2.4), Z = (2.4, 1.5), W = (2.2, 2.6),
+            }
+            links {
+                ground = [O1, O2], crank = [O1, A], t1 = [A, X, Y], t2 = [O2, Z, W],
+                l1 = [X, Z], l2 = [Y, W],
+            }
+            input theta = angle(crank);
+        }",
+    );
+    assert_eq!(out.len(), 1, "{out:?}");
+    let m = &out[0];
+    assert!(
+        m.contains("class IV or higher") && m.contains("are not solved"),
+        "{m}"
+    );
+    assert!(m.contains("dyads") && m.contains("the triad"), "{m}");
+    assert!(!m.contains("write it with group statements"), "{m}");
+}

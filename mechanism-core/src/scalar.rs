@@ -27,7 +27,7 @@ pub(crate) fn single<T: Real>() -> bool {
 /// A floating-point scalar: `f32` or `f64`. `LowerExp` (`{:e}`) so that an
 /// [`Error<T>`](crate::Error) prints its numbers in their own precision
 /// from generic code.
-pub trait Real: RealField + Copy + core::fmt::LowerExp {
+pub trait Real: RealField + Copy + core::fmt::LowerExp + crate::triad::Kernels {
     /// Converts an `f64` literal (rounding to nearest for `f32`).
     fn lit(x: f64) -> Self;
     /// Widens to `f64` (exact for both implementations); used where results

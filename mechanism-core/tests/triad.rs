@@ -966,3 +966,65 @@ fn single_precision_finds_the_same_assembly() {
         assert!(err < 1e-5, "{err:e}");
     }
 }
+
+#[test]
+fn near_a_branch_point_both_merging_assemblies_are_found() {
+    // Proves: the closed form's root isolation keeps both assemblies that
+    // are about to merge at the end of the Stephenson III's swing (a fold,
+    // at -2.6333554164 deg by the reference in `stephenson_iii_swing`): at
+    // 1e-3 to 1e-9 rad inside the end, `assemblies()` holds the assembly
+    // tracked there by Newton from the stated pose (`position_near`, which
+    // uses no polynomial) to its conditioning's accuracy, and another one,
+    // on the other side of the branch point (opposite Jacobian sign), that
+    // tends to it; 1e-6 rad beyond the end both are gone (two fewer).
+    let phi0 = (-49.48f64).to_radians();
+    let end = (-2.6333554164f64).to_radians();
+    let case = stephenson(phi0);
+    let hint = Near::new(
+        Point2::new(-0.061, -0.052),
+        Point2::new(0.137, 0.116),
+        Point2::new(-0.036, 0.096),
+    );
+    let mut pos = triad::position(&case.triad, &case.k, &hint).unwrap();
+    let mut phi = phi0;
+    let step = 0.25f64.to_radians();
+    let mut inside = 0;
+    for delta in [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9] {
+        let target = end - delta;
+        while phi < target {
+            phi = (phi + step).min(target);
+            let c = stephenson(phi);
+            pos = triad::position_near(&c.triad, &c.k, &pos).unwrap();
+        }
+        let c = stephenson(phi);
+        let all = triad::assemblies(&c.triad, &c.k).unwrap();
+        let d = |p: &TriadPosition<f64>| {
+            ((p.a - pos.a).norm_squared()
+                + (p.b - pos.b).norm_squared()
+                + (p.p - pos.p).norm_squared())
+            .sqrt()
+        };
+        // Conditioning-limited accuracy (as in `track_to_end`).
+        let bound = 8.0 * f64::EPSILON * 0.28 / pos.jacobian.abs();
+        let same = all.iter().map(d).fold(f64::INFINITY, f64::min);
+        assert!(
+            same <= bound,
+            "{delta:e}: tracked assembly missing ({same:e} > {bound:e})"
+        );
+        // The partner: opposite side, within a multiple of sqrt(delta) of
+        // the scale (the fold is quadratic: the roots part as sqrt).
+        let partner = all
+            .iter()
+            .filter(|p| p.jacobian * pos.jacobian < 0.0)
+            .map(d)
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            partner <= 10.0 * delta.sqrt(),
+            "{delta:e}: partner at {partner:e}"
+        );
+        inside = all.len();
+    }
+    let c = stephenson(end + 1e-6);
+    let beyond = triad::assemblies(&c.triad, &c.k).unwrap().len();
+    assert_eq!(beyond + 2, inside, "{inside} inside, {beyond} beyond");
+}

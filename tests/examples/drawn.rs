@@ -432,3 +432,60 @@ fn the_drawn_six_bar_is_the_example_six_bar() {
     let ulps = c.report("drawn six-bar");
     assert!(ulps < 256.0, "{ulps}");
 }
+
+mechanism! {
+    /// The triad of [`DrawnStephenson`] behind a full-turn crank of 0.02 m
+    /// drawn below the x axis (at -120 deg): the drawing's input is read in
+    /// (-180, 180] deg, the crank's default range is [0, 360] deg.
+    pub CrankBelowTriad {
+        const phi0 = -28.402242220599071 * pi / 180.0;
+        joints {
+            O2 = (0.0, 0.0),
+            O4 = (0.30, 0.0),
+            O6 = (0.05 + 0.24 * cos(phi0) + 0.01, 0.42 + 0.24 * sin(phi0) + 0.01 * sqrt(3.0)),
+            C = (0.05 + 0.24 * cos(phi0), 0.42 + 0.24 * sin(phi0)),
+            A = (-5.9201362974731851e-2, 5.3807049927811955e-2),
+            B = (1.7859606664268302e-1, 1.5893736176674175e-1),
+            P = (6.9064856947974249e-3, 1.8845381871298039e-1),
+        }
+        links {
+            ground = [O2, O4, O6],
+            crank = [O6, C],
+            crank2 = [O2, A],
+            rocker = [O4, B],
+            link5 = [C, P],
+            coupler = [A, B, P],
+        }
+        input theta = angle(crank);
+    }
+}
+
+#[test]
+fn a_triad_behind_a_full_turn_crank_takes_any_turn_of_the_angle() {
+    // Proves: the crank's angle is periodic for the triad's position: at
+    // theta, theta - 2 pi and theta + 4 pi the generated position() gives the
+    // same assembly (to the rounding of the angle's turns, a few ulps of
+    // 4 pi times the joints' rates of 0.02 m/rad at most: 1e-15 m), over
+    // the whole turn including (-pi, 0), and at the drawn angle (-120 deg)
+    // it is the drawing.
+    let m = CrankBelowTriad::<f64>::default();
+    let tau = std::f64::consts::TAU;
+    for k in 0..72 {
+        let theta = tau * (k as f64 + 0.5) / 72.0;
+        let p0 = m.position(&CrankBelowTriadInput { theta }).unwrap();
+        for turns in [-1.0, 2.0] {
+            let p = m
+                .position(&CrankBelowTriadInput {
+                    theta: theta + turns * tau,
+                })
+                .unwrap_or_else(|e| panic!("{theta} {turns}: {e}"));
+            for (x, y) in [(p.A, p0.A), (p.B, p0.B), (p.P, p0.P)] {
+                assert!((x - y).norm() < 1e-14, "{theta} {turns}: {x} vs {y}");
+            }
+        }
+    }
+    let drawn = (-120f64).to_radians();
+    let p = m.position(&CrankBelowTriadInput { theta: drawn }).unwrap();
+    let a = mechanism::Point2::new(-5.9201362974731851e-2, 5.3807049927811955e-2);
+    assert!((p.A - a).norm() < 1e-12, "{}", p.A);
+}

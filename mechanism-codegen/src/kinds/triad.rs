@@ -96,14 +96,16 @@ fn dims_code(t: &Args) -> TokenStream {
 /// solved at the stated input from the stated pose, then followed up and
 /// down in steps of `(hi - lo) / ((ROWS - 1) SUB)` by `triad::position_near`.
 /// `ks` gives the three known points at an input. `Err` when the stated
-/// input is outside the range or the stated pose selects no assembly.
+/// input is outside the range or the stated pose selects no assembly. An
+/// angle input (`angle`, rad) is periodic: a stated input outside the range
+/// counts at the same angle a whole number of turns away ([`stated_input`]).
 pub fn track(
     t: &Args,
-    lo: f64,
-    hi: f64,
+    (lo, hi): (f64, f64),
+    angle: bool,
     ks: &dyn Fn(f64) -> Option<[Point2<f64>; 3]>,
 ) -> Result<Tracked, mechanism_core::Error<f64>> {
-    let q0 = num(&t.at.1);
+    let q0 = stated_input(t, (lo, hi), angle);
     let steps = (ROWS - 1) * SUB;
     let h = (hi - lo) / steps as f64;
     let not_near = mechanism_core::Error::new(
@@ -179,6 +181,20 @@ pub fn track(
     })
 }
 
+/// The input at which the pose is stated: as written, or for an angle
+/// (rad) outside `[lo, hi]`, the same angle a whole number of turns away
+/// when that lies inside (a drawing's angles read in `(-180, 180]` deg where
+/// a crank's range is `[0, 360]`).
+fn stated_input(t: &Args, (lo, hi): (f64, f64), angle: bool) -> f64 {
+    let q = num(&t.at.1);
+    let turned = triad::same_turn(q, lo);
+    if angle && !(q >= lo && q <= hi) && turned <= hi {
+        turned
+    } else {
+        q
+    }
+}
+
 impl TriadKind<'_> {
     /// The hint the position uses at `q`: the table's pose, or the stated
     /// one when there is no table.
@@ -186,6 +202,8 @@ impl TriadKind<'_> {
         let rows = self.t.table.borrow();
         if rows.rows.is_empty() {
             Ok(stated(self.t))
+        } else if rows.angle {
+            triad::near_from_table_turning(&rows.rows, q)
         } else {
             triad::near_from_table(&rows.rows, q)
         }
@@ -208,9 +226,16 @@ impl TriadKind<'_> {
             quote!([#(#v),*])
         });
         let (input, t) = (&self.t.at.0, tag(self.stmt));
+        // An angle's pose repeats every turn: any input is read in the
+        // table's turn.
+        let lookup = if rows.angle {
+            quote!(near_from_table_turning)
+        } else {
+            quote!(near_from_table)
+        };
         quote!({
             const TRACKED: [[f64; 7]; #n] = [#(#body),*];
-            ::mechanism::triad::near_from_table(&TRACKED, input.#input) #t
+            ::mechanism::triad::#lookup(&TRACKED, input.#input) #t
         })
     }
 }
@@ -430,14 +455,17 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
             let pose = before(q)?;
             Some(t.k.each_ref().map(|k| pose.point(k)))
         };
-        let e = match track(t, lo, hi, &ks) {
+        let e = match track(t, (lo, hi), angle, &ks) {
             Ok(tracked) => {
                 *t.table.borrow_mut() = Tracked { angle, ..tracked };
                 return true;
             }
             Err(e) => e,
         };
-        let q = t.at.1.fold().unwrap_or(f64::NAN);
+        let q =
+            t.at.1
+                .fold()
+                .map_or(f64::NAN, |_| stated_input(t, (lo, hi), angle));
         let shown = |x: f64| {
             if angle {
                 format!("{} deg", show_num(x.to_degrees()))
@@ -740,7 +768,7 @@ mod tests {
             Some([Point2::new(0.0, 0.0), Point2::new(0.30, 0.0), c])
         };
         let (lo, hi) = ((-60f64).to_radians(), 0.0);
-        let tracked = track(t, lo, hi, &ks).expect("the stated pose selects an assembly");
+        let tracked = track(t, (lo, hi), false, &ks).expect("the stated pose selects an assembly");
         let step = (hi - lo) / ((ROWS - 1) * SUB) as f64;
         let mut ends = tracked.ends.clone();
         ends.sort_by(|a, b| a.0.total_cmp(&b.0));

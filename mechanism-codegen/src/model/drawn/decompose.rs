@@ -82,7 +82,7 @@ pub(super) fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Ste
         errors.push(
             d.span,
             format!(
-                "the links {} form a loop that is not a dyad (a joint on two links, each with a joint already placed) and not a triad (a link with three joints, each on a binary leg from a placed joint): it cannot be decomposed into the supported groups; write it with group statements, or choose inputs on these links{}",
+                "the links {} form a loop that is not a dyad (a joint on two links, each with a joint already placed) and not a triad (a link with three joints, each on a binary leg from a placed joint): none of the groups `mechanism` solves, which are the dyads (RRR, RRP, RPR, PRP, RPP) and the triad of three binary revolute legs (class III); groups of class IV or higher, and triads with a sliding pair, are not solved, in a drawing or in group statements; choose inputs on these links so that what is left decomposes into those{}",
                 left.join(", "),
                 slot_hint(d, &out.placed)
             ),

@@ -68,7 +68,8 @@ pub(super) fn find_dyad(d: &Drawing, placed: &Placed, ground: LinkId) -> Option<
 
 /// A triad: an unplaced link with three unplaced joints, each on one other
 /// unplaced link, a binary leg whose other joint is placed, and no other
-/// joint on an unplaced link.
+/// joint on an unplaced link. A leg may carry further joints that nothing
+/// else uses (a mass centre drawn on it): they are points on the leg.
 pub(super) fn find_triad(d: &Drawing, placed: &Placed, ground: LinkId) -> Option<Step> {
     let free = |l: LinkId| l != ground && placed.frame(l).is_none();
     for t in d
@@ -103,17 +104,35 @@ pub(super) fn triad_legs(
             .collect();
         match others[..] {
             [] => {}
-            [leg] if d.link(leg).joints.len() == 2 && !placed.joint(j) => {
-                let k = d.link(leg).joints.iter().copied().find(|&x| x != j)?;
-                if !placed.joint(k) {
-                    return None;
-                }
-                found.push((j, leg, k));
-            }
+            [leg] if !placed.joint(j) => found.push((j, leg, leg_base(d, placed, leg, j)?)),
             _ => return None,
         }
     }
     found.try_into().ok()
+}
+
+/// The placed joint of a triad's leg `leg` hanging at `j`: its one placed
+/// joint, when every other joint of it is unplaced and on no other link,
+/// slider or cylinder (a point of the leg only); `None` otherwise.
+fn leg_base(d: &Drawing, placed: &Placed, leg: LinkId, j: JointId) -> Option<JointId> {
+    let mut base = None;
+    for &x in d.link(leg).joints.iter().filter(|&&x| x != j) {
+        if placed.joint(x) {
+            if base.replace(x).is_some() {
+                return None;
+            }
+            continue;
+        }
+        let elsewhere = d
+            .link_ids()
+            .any(|l| l != leg && d.link(l).joints.contains(&x))
+            || d.sliders.iter().any(|s| s.at == x)
+            || d.cylinders.iter().any(|c| c.from == x || c.to == x);
+        if elsewhere {
+            return None;
+        }
+    }
+    base
 }
 
 /// A block on a moving link: an RPR (the block's joint placed, the slotted

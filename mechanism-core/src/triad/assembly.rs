@@ -1,0 +1,255 @@
+//! Every assembly, the one nearest a given pose, and tracking.
+
+use super::frame::{Frame, State};
+use super::polynomial::{self, RootsOf};
+use super::scan::{self, add_root};
+use super::{Assemblies, Near, Triad, TriadPosition, MAX_ASSEMBLIES, NEAR_FACTOR, PRIM};
+use crate::error::{Error, Fault};
+use crate::geometry::{all_finite, length, min};
+use crate::scalar::Real;
+use nalgebra::Point2;
+
+/// [`super::assemblies`], generic: instantiated in this crate for `f32` and
+/// `f64` only (through [`super::Kernels`]).
+pub(super) fn assemblies_in<T: Real>(
+    triad: &Triad<T>,
+    k: &[Point2<T>; 3],
+) -> Result<Assemblies<T>, Error<T>> {
+    let f = Frame::new(triad, k)?;
+    Ok(search(&f))
+}
+
+/// Every assembly: the closed form's roots ([`polynomial`]), each polished
+/// by Newton on the leg equations and merged when they coincide; the sampled
+/// scan ([`scan::search`]) where the polynomial vanishes identically (a
+/// degenerate triad) and, to measure how far the triad misses closing, where
+/// it gives no assembly.
+fn search<T: Real>(f: &Frame<T>) -> Assemblies<T> {
+    let RootsOf::Halves(t, s) = polynomial::roots(f) else {
+        return scan::search(f);
+    };
+    let mut found = Assemblies {
+        list: [None; MAX_ASSEMBLIES],
+        count: 0,
+        miss: T::zero(),
+        reach: f.l3 * f.up,
+    };
+    for (starts, flip) in [(&t, false), (&s, true)] {
+        for x in starts.iter() {
+            let e = polynomial::unit_of(*x, flip);
+            for start in polynomial::starts_at(f, &e).into_iter().flatten() {
+                add_root(f, start, &mut found);
+            }
+        }
+    }
+    if found.is_empty() {
+        return scan::search(f);
+    }
+    found
+}
+
+/// The nearest of `candidates` to `near` and the distance to the next one
+/// (normalized; infinite when there is no other).
+fn nearest<'a, T: Real>(
+    f: &Frame<T>,
+    candidates: impl Iterator<Item = &'a TriadPosition<T>>,
+    near: &Near<T>,
+) -> Option<(TriadPosition<T>, T, T)> {
+    let inf = T::lit(f64::INFINITY);
+    let mut best: Option<(TriadPosition<T>, T)> = None;
+    let mut next = inf;
+    for q in candidates {
+        let d = f.distance(q, near);
+        match best {
+            Some((_, bd)) if d >= bd => next = min(next, d),
+            Some((_, bd)) => {
+                next = bd;
+                best = Some((*q, d));
+            }
+            None => best = Some((*q, d)),
+        }
+    }
+    best.map(|(q, d)| (q, d, next))
+}
+
+/// [`super::position`], generic: instantiated in this crate for `f32` and
+/// `f64` only (through [`super::Kernels`]).
+pub(super) fn position_in<T: Real>(
+    triad: &Triad<T>,
+    k: &[Point2<T>; 3],
+    near: &Near<T>,
+) -> Result<TriadPosition<T>, Error<T>> {
+    let f = Frame::new(triad, k)?;
+    if !near_finite(near) {
+        return Err(Error::new(PRIM, Fault::NonFinite { what: "triad pose" }));
+    }
+    let all = search(&f);
+    let Some((pos, d, next)) = nearest(&f, all.iter(), near) else {
+        return Err(all.none_error());
+    };
+    if d > f.jump() {
+        return Err(not_near(&f, d, f.jump()));
+    }
+    if next < T::lit(NEAR_FACTOR) * d {
+        return Err(not_near(&f, d, next));
+    }
+    Ok(pos)
+}
+
+fn near_finite<T: Real>(near: &Near<T>) -> bool {
+    all_finite([near.a.x, near.a.y, near.b.x, near.b.y, near.p.x, near.p.y])
+}
+
+fn not_near<T: Real>(f: &Frame<T>, nearest: T, next: T) -> Error<T> {
+    Error::new(
+        PRIM,
+        Fault::NotNear {
+            nearest: nearest * f.up,
+            next: next * f.up,
+        },
+    )
+}
+
+/// Newton from `previous` only: the same assembly at the new input when
+/// Newton converges, the Jacobian's determinant keeps its sign and the
+/// joints moved at most [`JUMP_FRACTION`] of the shortest dimension.
+///
+/// Errors: input errors as for [`assemblies`]; `NotNear { nearest, next }`
+/// otherwise (`nearest`: the joints' move, infinite when Newton failed;
+/// `next`: the largest move accepted).
+pub fn refine<T: Real>(
+    triad: &Triad<T>,
+    k: &[Point2<T>; 3],
+    previous: &TriadPosition<T>,
+) -> Result<TriadPosition<T>, Error<T>> {
+    let f = Frame::new(triad, k)?;
+    let inf = T::lit(f64::INFINITY);
+    let x0 = (previous.a - f.origin) * f.down;
+    let axis = previous.axis;
+    let norm = length(&axis);
+    if !(all_finite([x0.x, x0.y, axis.x, axis.y]) && norm > T::zero()) {
+        return Err(Error::new(PRIM, Fault::NonFinite { what: "triad pose" }));
+    }
+    let start = State {
+        a: x0,
+        e: axis / norm,
+    };
+    let Some(pos) = f.newton(start).and_then(|x| f.finish(&x)) else {
+        return Err(not_near(&f, inf, f.jump()));
+    };
+    let moved = f.distance(&pos, &Near::of(previous));
+    if same_side(&pos, previous) && moved <= f.jump() {
+        Ok(pos)
+    } else {
+        Err(not_near(&f, moved, f.jump()))
+    }
+}
+
+/// Both determinants non-zero with the same sign (no branch point between).
+fn same_side<T: Real>(p: &TriadPosition<T>, q: &TriadPosition<T>) -> bool {
+    p.jacobian * q.jacobian > T::zero()
+}
+
+/// [`super::position_near`], generic: instantiated in this crate for `f32` and
+/// `f64` only (through [`super::Kernels`]).
+pub(super) fn position_near_in<T: Real>(
+    triad: &Triad<T>,
+    k: &[Point2<T>; 3],
+    previous: &TriadPosition<T>,
+) -> Result<TriadPosition<T>, Error<T>> {
+    match refine(triad, k, previous) {
+        Ok(pos) => return Ok(pos),
+        Err(e) if !matches!(e.fault, Fault::NotNear { .. }) => return Err(e),
+        Err(_) => {}
+    }
+    fallback(&Frame::new(triad, k)?, previous)
+}
+
+/// [`position_near`]'s full search: the nearest assembly to `previous` on
+/// its side of the branch points, within the jump and clearly nearest.
+fn fallback<T: Real>(
+    f: &Frame<T>,
+    previous: &TriadPosition<T>,
+) -> Result<TriadPosition<T>, Error<T>> {
+    let all = search(f);
+    if all.is_empty() {
+        return Err(all.none_error());
+    }
+    let near = Near::of(previous);
+    let side = all.iter().filter(|q| same_side(q, previous));
+    let inf = T::lit(f64::INFINITY);
+    let Some((pos, d, next)) = nearest(f, side, &near) else {
+        return Err(not_near(f, inf, f.jump()));
+    };
+    if d > f.jump() {
+        return Err(not_near(f, d, f.jump()));
+    }
+    if next < T::lit(NEAR_FACTOR) * d {
+        return Err(not_near(f, d, next));
+    }
+    Ok(pos)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector2;
+
+    /// The Stephenson III triad of `examples/stephenson.rs` at link 6's angle `phi` (rad).
+    fn stephenson(phi: f64) -> (Triad<f64>, [Point2<f64>; 3]) {
+        let d = 40f64.to_radians();
+        let triad = Triad {
+            l1: 0.08,
+            l2: 0.20,
+            l3: 0.28,
+            ab: 0.26,
+            p_local: Vector2::new(0.15 * d.cos(), 0.15 * d.sin()),
+        };
+        let c = Point2::new(0.05 + 0.24 * phi.cos(), 0.42 + 0.24 * phi.sin());
+        (triad, [Point2::new(0.0, 0.0), Point2::new(0.30, 0.0), c])
+    }
+
+    /// The search that [`position_near`] falls back on when Newton fails
+    /// gives, for a small step, the assembly Newton finds (bit for bit: both
+    /// end in the same polish); from a pose claimed to lie on the other
+    /// side of the branch points it takes the nearest assembly there, and
+    /// from a pose beyond the jump limit it refuses (`NotNear`), never
+    /// returning the nearest assembly of the wrong side.
+    #[test]
+    fn fallback_keeps_the_side_and_the_jump_limit() {
+        let phi0 = (-40.0f64).to_radians();
+        let (triad, k) = stephenson(phi0);
+        let f = Frame::new(&triad, &k).unwrap();
+        let all = search(&f);
+        assert_eq!(all.len(), 4);
+        let start = *all.iter().next().unwrap();
+        let (t1, k1) = stephenson(phi0 + 0.5f64.to_radians());
+        let f1 = Frame::new(&t1, &k1).unwrap();
+        let by_newton = refine(&t1, &k1, &start).unwrap();
+        let by_search = fallback(&f1, &start).unwrap();
+        assert!(f1.distance(&by_newton, &Near::of(&by_search)) < 1e-15);
+        assert!(by_search.jacobian * start.jacobian > 0.0);
+        // Claimed on the other side: the nearest there, or NotNear.
+        let flipped = TriadPosition {
+            jacobian: -start.jacobian,
+            ..start
+        };
+        match fallback(&f1, &flipped) {
+            Ok(p) => assert!(p.jacobian * start.jacobian < 0.0),
+            Err(e) => assert!(matches!(e.fault, Fault::NotNear { .. })),
+        }
+        // Beyond the jump: a pose 0.1 m off (the limit is 0.04 m).
+        let off = Vector2::new(0.1, 0.0);
+        let far = TriadPosition {
+            a: start.a + off,
+            b: start.b + off,
+            p: start.p + off,
+            ..start
+        };
+        let e = fallback(&f1, &far).unwrap_err();
+        assert!(
+            matches!(e.fault, Fault::NotNear { next, .. } if next == 0.04),
+            "{e:?}"
+        );
+    }
+}

@@ -1,0 +1,231 @@
+//! The problem in a normalized frame and Newton's method on the three leg
+//! equations: the polish every assembly ends in.
+
+use super::{Near, Triad, TriadPosition, JUMP_FRACTION, MAX_NEWTON, PRIM};
+use crate::error::{Error, Fault};
+use crate::geometry::{abs, all_finite, cross, dot, length, min, perp};
+use crate::scalar::Real;
+use nalgebra::{Point2, Vector2};
+
+/// The problem in the normalized frame: origin `K1`, lengths divided by
+/// `up` (a power of two, exact).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Frame<T: Real> {
+    pub(super) origin: Point2<T>,
+    pub(super) down: T,
+    pub(super) up: T,
+    pub(super) k2: Vector2<T>,
+    pub(super) k3: Vector2<T>,
+    pub(super) l1: T,
+    pub(super) l2: T,
+    pub(super) l3: T,
+    pub(super) c: T,
+    pub(super) u: T,
+    pub(super) v: T,
+    /// `R`: `1 + |K2 - K1| + |K3 - K1|` (normalized), the size of the
+    /// coordinates the residuals are rounded at.
+    pub(super) reach: T,
+}
+
+/// A Newton state in the normalized frame: `A` and the ternary's unit axis
+/// (`(cos, sin)` of its angle: no trigonometry in the iteration).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct State<T: Real> {
+    /// Joint `A` (normalized).
+    pub(super) a: Vector2<T>,
+    /// The ternary's axis, along `A -> B`, of unit length.
+    pub(super) e: Vector2<T>,
+}
+
+fn validate<T: Real>(triad: &Triad<T>, k: &[Point2<T>; 3]) -> Result<(), Error<T>> {
+    let lengths = [
+        (triad.l1, "triad leg length l1"),
+        (triad.l2, "triad leg length l2"),
+        (triad.l3, "triad leg length l3"),
+        (triad.ab, "triad side |AB|"),
+    ];
+    for (x, what) in lengths {
+        crate::geometry::positive(x, PRIM, what)?;
+    }
+    if !all_finite([triad.p_local.x, triad.p_local.y]) {
+        return Err(Error::new(
+            PRIM,
+            Fault::NonFinite {
+                what: "triad P_local",
+            },
+        ));
+    }
+    if !k.iter().all(|p| all_finite([p.x, p.y])) {
+        return Err(Error::new(
+            PRIM,
+            Fault::NonFinite {
+                what: "triad known point",
+            },
+        ));
+    }
+    Ok(())
+}
+
+impl<T: Real> Frame<T> {
+    pub(super) fn new(triad: &Triad<T>, k: &[Point2<T>; 3]) -> Result<Self, Error<T>> {
+        validate(triad, k)?;
+        let big = [triad.l2, triad.l3, triad.ab, abs(triad.p_local.x)]
+            .into_iter()
+            .chain([abs(triad.p_local.y)])
+            .fold(triad.l1, crate::geometry::max);
+        let (down, up) = crate::geometry::pow2_scale(big);
+        let k2 = (k[1] - k[0]) * down;
+        let k3 = (k[2] - k[0]) * down;
+        if !all_finite([k2.x, k2.y, k3.x, k3.y]) {
+            return Err(Error::new(
+                PRIM,
+                Fault::NonFinite {
+                    what: "triad distance between known points",
+                },
+            ));
+        }
+        let reach = T::one() + length(&k2) + length(&k3);
+        Ok(Frame {
+            origin: k[0],
+            down,
+            up,
+            k2,
+            k3,
+            l1: triad.l1 * down,
+            l2: triad.l2 * down,
+            l3: triad.l3 * down,
+            c: triad.ab * down,
+            u: triad.p_local.x * down,
+            v: triad.p_local.y * down,
+            reach,
+        })
+    }
+
+    /// `B - A` and `P - A` (normalized) for the ternary's unit axis `e`.
+    pub(super) fn offsets(&self, e: &Vector2<T>) -> (Vector2<T>, Vector2<T>) {
+        (e * self.c, e * self.u + perp(e) * self.v)
+    }
+
+    /// Residuals `(|ri|^2 - li^2) / 2` and their Jacobian in `(A, phi)`.
+    pub(super) fn system(&self, x: &State<T>) -> ([T; 3], [[T; 3]; 3]) {
+        let a = x.a;
+        let (ab, ap) = self.offsets(&x.e);
+        let r2 = a + ab - self.k2;
+        let r3 = a + ap - self.k3;
+        let half = T::lit(0.5);
+        let g = [
+            half * (dot(&a, &a) - self.l1 * self.l1),
+            half * (dot(&r2, &r2) - self.l2 * self.l2),
+            half * (dot(&r3, &r3) - self.l3 * self.l3),
+        ];
+        let jac = [
+            [a.x, a.y, T::zero()],
+            [r2.x, r2.y, cross(&ab, &r2)],
+            [r3.x, r3.y, cross(&ap, &r3)],
+        ];
+        (g, jac)
+    }
+
+    /// Newton's method on [`Frame::system`] from `x`: `Some` when the steps
+    /// fall below `sqrt(eps) R` (then one more is taken) and every residual
+    /// ends within `64 eps l_i R`. The axis turns by `atan(step)` rather than
+    /// `step` (a rotation by `(1, step) / sqrt(1 + step^2)`, no sine or
+    /// cosine): the difference is third order in the step, so convergence
+    /// stays quadratic. Each step solves the 3x3 system by Cramer's rule
+    /// (its accuracy matters only to the speed of convergence: the residuals
+    /// decide the result).
+    pub(super) fn newton(&self, mut x: State<T>) -> Option<State<T>> {
+        let small = T::eps().sqrt() * self.reach;
+        let mut settled = false;
+        for _ in 0..MAX_NEWTON {
+            let (g, jac) = self.system(&x);
+            let step = cramer(&jac, [-g[0], -g[1], -g[2]])?;
+            x.a += Vector2::new(step[0], step[1]);
+            let turned = x.e + perp(&x.e) * step[2];
+            x.e = turned / (T::one() + step[2] * step[2]).sqrt_kernel();
+            let size = abs(step[0]) + abs(step[1]) + abs(step[2]) * self.c;
+            if !(size.finite() && abs(x.a.x) + abs(x.a.y) <= T::lit(4.0) * self.reach) {
+                return None;
+            }
+            if settled {
+                break;
+            }
+            settled = size <= small;
+        }
+        if !settled {
+            return None;
+        }
+        let (g, _) = self.system(&x);
+        let tol = T::lit(64.0) * T::eps() * self.reach;
+        let ok =
+            abs(g[0]) <= tol * self.l1 && abs(g[1]) <= tol * self.l2 && abs(g[2]) <= tol * self.l3;
+        ok.then_some(x)
+    }
+
+    /// The assembly at a converged state, in the user's frame.
+    pub(super) fn finish(&self, x: &State<T>) -> Option<TriadPosition<T>> {
+        let (a, e) = (x.a, x.e);
+        let (ab, ap) = self.offsets(&e);
+        let r2 = a + ab - self.k2;
+        let r3 = a + ap - self.k3;
+        let det = cross(&ap, &r3) * cross(&a, &r2) - cross(&ab, &r2) * cross(&a, &r3);
+        let bound = self.l1 * self.l2 * self.l3 * (self.c + length(&ap));
+        let jacobian = det / bound;
+        let up = self.up;
+        let pa = self.origin + a * up;
+        let pos = TriadPosition {
+            a: pa,
+            b: pa + ab * up,
+            p: pa + ap * up,
+            r1: a * up,
+            r2: r2 * up,
+            r3: r3 * up,
+            ab: ab * up,
+            ap: ap * up,
+            axis: e,
+            jacobian: crate::geometry::max(-T::one(), min(jacobian, T::one())),
+        };
+        let all = [pos.a, pos.b, pos.p];
+        let finite = all.iter().all(|q| all_finite([q.x, q.y])) && jacobian.finite();
+        finite.then_some(pos)
+    }
+
+    /// Root-sum-square distance of the joints of `pos` from `near`, in the
+    /// normalized unit (no overflow).
+    pub(super) fn distance(&self, pos: &TriadPosition<T>, near: &Near<T>) -> T {
+        let d = |p: &Point2<T>, q: &Point2<T>| {
+            let w = (p - q) * self.down;
+            dot(&w, &w)
+        };
+        (d(&pos.a, &near.a) + d(&pos.b, &near.b) + d(&pos.p, &near.p)).sqrt_kernel()
+    }
+
+    /// The largest accepted jump, normalized.
+    pub(super) fn jump(&self) -> T {
+        let shortest = [self.l2, self.l3, self.c].into_iter().fold(self.l1, min);
+        T::lit(JUMP_FRACTION) * shortest
+    }
+}
+
+/// `m x = b` for a 3x3 `m` by Cramer's rule (rows' cross products); `None`
+/// when the determinant is zero or the result not finite.
+#[inline(always)]
+fn cramer<T: Real>(m: &[[T; 3]; 3], b: [T; 3]) -> Option<[T; 3]> {
+    let cross3 = |p: &[T; 3], q: &[T; 3]| {
+        [
+            p[1] * q[2] - p[2] * q[1],
+            p[2] * q[0] - p[0] * q[2],
+            p[0] * q[1] - p[1] * q[0],
+        ]
+    };
+    let c0 = cross3(&m[1], &m[2]);
+    let c1 = cross3(&m[2], &m[0]);
+    let c2 = cross3(&m[0], &m[1]);
+    let det = m[0][0] * c0[0] + m[0][1] * c0[1] + m[0][2] * c0[2];
+    if det == T::zero() {
+        return None;
+    }
+    let inv = T::one() / det;
+    let x: [T; 3] = core::array::from_fn(|i| (b[0] * c0[i] + b[1] * c1[i] + b[2] * c2[i]) * inv);
+    all_finite(x).then_some(x)
+}
