@@ -238,8 +238,8 @@ pub trait Kernels: Sized {
 
 /// Implements [`Kernels`] for one scalar type.
 macro_rules! kernels {
-    ($t:ty) => {
-        impl Kernels for $t {
+    ([$($g:tt)*] $t:ty) => {
+        impl<$($g)*> Kernels for $t {
             #[inline(never)]
             fn triad_assemblies(
                 triad: &Triad<Self>,
@@ -274,8 +274,11 @@ macro_rules! kernels {
     };
 }
 
-kernels!(f32);
-kernels!(f64);
+kernels!([] f32);
+kernels!([] f64);
+// The dual numbers of sensitivities: the same bodies, one copy per `N`.
+#[cfg(feature = "dual")]
+kernels!([const N: usize] crate::dual::Dual<N>);
 
 /// Finds every assembly (see the module documentation).
 ///
