@@ -107,6 +107,10 @@ pub enum Item {
     /// The drawn form: `cylinder CYL from B to C;` (or `cylinder (BARREL,
     /// ROD) from B to C;`), a linear actuator pinned at joints `B` and `C`.
     Cylinder(DrawnCylinder),
+    /// The drawn form: `mode elbow = assembly(C);`, a run-time assembly
+    /// mode parameter (`elbow`) read by the group that places the joint (or
+    /// slides the block) `C`, its default the drawing's assembly.
+    Mode(Ident, Ident),
 }
 
 /// `cylinder CYL from B to C;` of the drawn form.
@@ -212,7 +216,7 @@ pub enum ForceValue {
 /// The words that begin a statement (besides `let` and `const`).
 const STATEMENTS: &[&str] = &[
     "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "motor",
-    "range", "allow", "joints", "links", "input", "slider", "cylinder",
+    "range", "allow", "joints", "links", "input", "slider", "cylinder", "mode",
 ];
 
 /// Unit words a user may write after a value where none is taken (in a
@@ -717,7 +721,7 @@ mod tests {
         let (message, _, column) = error("pub M { forse at E = (1.0, 0.0); }");
         assert_eq!(
             message,
-            "unknown statement `forse`; expected `let`, `const`, `params`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `motor`, `range`, `allow`, `joints`, `links`, `input`, `slider` or `cylinder`; did you mean `force`?"
+            "unknown statement `forse`; expected `let`, `const`, `params`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `motor`, `range`, `allow`, `joints`, `links`, `input`, `slider`, `cylinder` or `mode`; did you mean `force`?"
         );
         assert_eq!(column, 8);
     }
