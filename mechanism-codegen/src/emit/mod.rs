@@ -10,6 +10,7 @@
 
 pub mod batch;
 pub mod check_fn;
+pub mod krate;
 pub mod describe;
 mod display;
 pub mod forces;

@@ -418,8 +418,9 @@ impl<'a> Body<'a> {
             errors.push(
                 l.slides[0].span(),
                 format!(
-                    "`{}` has {want_slides} slide displacement(s) to name, not {}",
+                    "`{}` has {} to name, not {}",
                     l.kind,
+                    crate::diag::counted(want_slides as i64, "slide displacement", "slide displacements"),
                     l.slides.len()
                 ),
             );

@@ -48,6 +48,9 @@ pub struct Definition {
     /// `#[derive(..)]`s (also inside `#[cfg_attr(..)]`), passed on to the
     /// generated types.
     pub derives: Vec<Derive>,
+    /// `#[mechanism(crate = PATH)]`: the facade's path for a renamed
+    /// dependency (`None`: `::mechanism`).
+    pub krate: Option<syn::Path>,
     /// Visibility of the generated items.
     pub vis: Visibility,
     /// Name of the mechanism type.
@@ -500,6 +503,7 @@ impl Parse for Definition {
             docs,
             self_test,
             derives,
+            krate,
         } = attrs::sort(input.call(Attribute::parse_outer)?)?;
         let vis = input.parse()?;
         let name: Ident = input.parse().map_err(|e| {
@@ -538,6 +542,7 @@ impl Parse for Definition {
             docs,
             self_test,
             derives,
+            krate,
             vis,
             name,
             items,
