@@ -212,7 +212,11 @@ mechanism! {
 }
 
 /// `d`'s side of the directed line `from -> to` (+1 left, -1 right).
-fn side(from: mechanism::Point2<f64>, to: mechanism::Point2<f64>, d: mechanism::Point2<f64>) -> f64 {
+fn side(
+    from: mechanism::Point2<f64>,
+    to: mechanism::Point2<f64>,
+    d: mechanism::Point2<f64>,
+) -> f64 {
     let (u, w) = (to - from, d - from);
     (u.x * w.y - u.y * w.x).signum()
 }
@@ -235,10 +239,9 @@ fn the_drawn_elbows_flip_at_run_time_as_the_grouped_ones_do() {
         mechanism::Point2::new(0.08, 0.0),
     );
     let (point_tol, angle_tol) = (8.0 * f64::EPSILON * 0.3, 8.0 * f64::EPSILON * 3.2);
-    let flip = |m: Mode| if m == Mode::Plus { Mode::Minus } else { Mode::Plus };
     for (f1, f2) in [(false, false), (true, false), (false, true), (true, true)] {
-        drawn.elbow1 = if f1 { flip(d1) } else { d1 };
-        drawn.elbow2 = if f2 { flip(d2) } else { d2 };
+        drawn.elbow1 = if f1 { d1.flipped() } else { d1 };
+        drawn.elbow2 = if f2 { d2.flipped() } else { d2 };
         grouped.elbow1 = if f1 { Mode::Minus } else { Mode::Plus };
         grouped.elbow2 = if f2 { Mode::Plus } else { Mode::Minus };
         for i in 0..=8 {

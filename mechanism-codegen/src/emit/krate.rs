@@ -45,9 +45,7 @@ fn walk(code: TokenStream, with: &TokenStream, text: &str) -> TokenStream {
 /// Whether `tokens[i..]` is `:: mechanism` beginning a path: not after a
 /// name or a `>` (the end of a path segment or of generic arguments).
 fn starts_facade_path(tokens: &[TokenTree], i: usize) -> bool {
-    let colon = |t: Option<&TokenTree>, spacing: Spacing| {
-        matches!(t, Some(TokenTree::Punct(p)) if p.as_char() == ':' && p.spacing() == spacing)
-    };
+    let colon = |t: Option<&TokenTree>, spacing: Spacing| matches!(t, Some(TokenTree::Punct(p)) if p.as_char() == ':' && p.spacing() == spacing);
     let named = matches!(tokens.get(i + 2), Some(TokenTree::Ident(n)) if n == "mechanism");
     let after_segment = i > 0
         && match &tokens[i - 1] {

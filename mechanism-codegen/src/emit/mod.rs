@@ -10,11 +10,11 @@
 
 pub mod batch;
 pub mod check_fn;
-pub mod krate;
 pub mod describe;
 mod display;
 pub mod forces;
 mod interop;
+pub mod krate;
 mod names;
 mod position;
 mod rates;

@@ -420,7 +420,11 @@ impl<'a> Body<'a> {
                 format!(
                     "`{}` has {} to name, not {}",
                     l.kind,
-                    crate::diag::counted(want_slides as i64, "slide displacement", "slide displacements"),
+                    crate::diag::counted(
+                        want_slides as i64,
+                        "slide displacement",
+                        "slide displacements"
+                    ),
                     l.slides.len()
                 ),
             );

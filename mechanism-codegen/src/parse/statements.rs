@@ -419,9 +419,9 @@ fn parse_mode(input: ParseStream, start: Cursor) -> syn::Result<Item> {
     }
     let content;
     parenthesized!(content in input);
-    let joint: Ident = content.parse().map_err(|e| {
-        syn::Error::new(e.span(), format!("expected a joint's name: {usage}"))
-    })?;
+    let joint: Ident = content
+        .parse()
+        .map_err(|e| syn::Error::new(e.span(), format!("expected a joint's name: {usage}")))?;
     if !content.is_empty() {
         return Err(content.error(format!("`assembly` takes one joint: {usage}")));
     }

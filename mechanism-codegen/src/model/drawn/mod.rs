@@ -211,10 +211,7 @@ pub(super) fn expand(
         let modes = drawn_modes.into_iter().map(|m| (m.name, Mode::Plus));
         return (rest, failed(&drawing), modes.collect());
     };
-    let mut lets: Vec<_> = steps
-        .iter()
-        .map(|s| emit::statement(&drawing, s))
-        .collect();
+    let mut lets: Vec<_> = steps.iter().map(|s| emit::statement(&drawing, s)).collect();
     let modes = modes::attach(&mut lets, &drawn_modes, errors);
     let at = first.min(rest.len());
     rest.splice(at..at, lets.into_iter().map(Item::Let));

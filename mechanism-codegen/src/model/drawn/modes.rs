@@ -25,9 +25,7 @@ pub(super) struct DrawnMode {
 /// joint `at`, or the RPR whose block (its first link) is `at`.
 fn group_of<'l>(lets: &'l mut [Let], at: &Ident) -> Option<&'l mut Let> {
     lets.iter_mut().find(|l| {
-        &l.name == at
-            || l.joints.contains(at)
-            || (l.kind == "rpr" && l.links.first() == Some(at))
+        &l.name == at || l.joints.contains(at) || (l.kind == "rpr" && l.links.first() == Some(at))
     })
 }
 
