@@ -43,7 +43,7 @@ pub(super) fn attach(
     let mut taken: Vec<&Ident> = Vec::new();
     let groups = "an RRR, an RRP or a cylinder places (a dyad's free joint, a cylinder's rod end), or the block of an RPR";
     for m in modes {
-        if taken.iter().any(|t| *t == &m.at) {
+        if taken.contains(&&m.at) {
             errors.push(
                 m.at.span(),
                 format!("the assembly of `{}` is already the mode parameter of another `mode` statement; one parameter per group: remove this statement, or use the other parameter's field", m.at),
