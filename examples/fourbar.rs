@@ -13,7 +13,7 @@ mod common;
 use common::scenes::{FourBar, FourBarInput};
 use mechanism::geometry::angle_deg_0_360;
 
-/// Crank speed of seed 002 (rad/s).
+/// Crank speed (rad/s).
 const OMEGA2: f64 = 250.0;
 
 fn main() {
@@ -36,7 +36,7 @@ fn main() {
     if csv {
         outln!("{}", names.join(","));
     } else {
-        outln!("Four-bar of seed 002: ground 304.8, crank 101.6, coupler 254.0, rocker 177.8 mm; crank 250 rad/s");
+        outln!("Crank-rocker four-bar: ground 304.8, crank 101.6, coupler 254.0, rocker 177.8 mm; crank 250 rad/s");
         outln!(
             "angles in deg, omega in rad/s, alpha in rad/s^2\n{}",
             common::header(&names, 14)

@@ -1,7 +1,9 @@
 //! Prepares the language reference (`dsl.md`, the repository's `docs/dsl.md`)
 //! for the macro's documentation page: every ```` ```rust ```` block that does
 //! not import the macro gets the hidden line `# use mechanism::mechanism;`, so
-//! that the samples run as doctests as written in the document.
+//! that the samples run as doctests as written in the document; a picture
+//! (a line `![alt](file.png)`, a file next to the document in the repository)
+//! is left out, since docs.rs has no copy of the file to show.
 
 use std::{env, fs, path::Path};
 
@@ -11,6 +13,9 @@ fn main() {
     let mut out = String::with_capacity(text.len() + 256);
     let mut lines = text.lines().peekable();
     while let Some(line) = lines.next() {
+        if line.starts_with("![") {
+            continue;
+        }
         out.push_str(line);
         out.push('\n');
         if line.trim_end() == "```rust" {

@@ -39,7 +39,7 @@
 use crate::mechanism;
 
 mechanism! {
-    /// Crank-rocker four-bar of seed 002 (mm), with the coupler's mass (kg,
+    /// Crank-rocker four-bar (mm), with the coupler's mass (kg,
     /// kg mm^2) at the coupler point `P`.
     pub FourBar {
         params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }

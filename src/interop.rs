@@ -49,7 +49,8 @@ pub fn pair<T: Real>(
     write!(f, "){unit}")
 }
 
-/// Writes a prismatic pair's reaction: `SEP NAME = (normal N F, moment M F L)`.
+/// Writes a prismatic pair's reaction: `SEP NAME = (normal N F, moment M F L)`, with
+/// the force and moment units given (each with its leading space: `" N"`).
 #[inline]
 pub fn prismatic<T: Real>(
     f: &mut Formatter<'_>,
@@ -57,12 +58,14 @@ pub fn prismatic<T: Real>(
     name: &str,
     normal: T,
     moment: T,
+    force_unit: &str,
+    moment_unit: &str,
 ) -> Result {
     write!(f, "{sep}{name} = (normal ")?;
     number(f, normal)?;
-    f.write_str(" F, moment ")?;
+    write!(f, "{force_unit}, moment ")?;
     number(f, moment)?;
-    f.write_str(" F L)")
+    write!(f, "{moment_unit})")
 }
 
 /// Implemented when this crate's feature `serde` is on: the generated code of

@@ -9,6 +9,12 @@
 //! definition that does not make sense, or that cannot move over its input
 //! range, is a compile error on the offending name.
 //!
+//! A crank-rocker four-bar at a crank angle of 60 deg, with
+//! the path of its coupler point `P` over a turn, as
+//! [`mechanism-plot`](https://docs.rs/mechanism-plot) draws any definition:
+//!
+#![doc = include_str!("../docs/fourbar-drawing.svg")]
+//!
 //! # Quick start
 //!
 //! In `Cargo.toml` (the package is `planar-mechanism`, the library
@@ -17,6 +23,7 @@
 //! ```toml
 //! [dependencies]
 //! planar-mechanism = "0.1"
+//! mechanism-plot = "0.1"      # optional: pictures, charts and CSV tables
 //! ```
 //!
 //! A crank-rocker four-bar with a coupler point, its position and velocity at
@@ -26,7 +33,7 @@
 //! use mechanism::mechanism;
 //!
 //! mechanism! {
-//!     /// Crank-rocker four-bar of seed 002 (mm).
+//!     /// Crank-rocker four-bar with a coupler point P (mm).
 //!     pub FourBar {
 //!         params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
 //!         let O2 = ground(0.0, 0.0);
@@ -108,8 +115,16 @@
 //! }
 //! ```
 //!
-//! `docs/dsl.md` ("Say it as drawn") has the whole drawn language: blocks in
-//! slots, cylinders, motors on moving links.
+//! The [`mechanism!`] page ("Say it as drawn") has the whole drawn
+//! language: blocks in slots, cylinders, motors on moving links.
+//!
+//! # Pictures
+//!
+//! [`mechanism-plot`](https://docs.rs/mechanism-plot) (a separate crate, std)
+//! reads a definition's description of itself: `mechanism_plot::any::sketch`
+//! draws it at one pose or animates it over its input, `chart` plots any
+//! outputs against the input, `csv` tabulates them, with the definition's
+//! units.
 //!
 //! # Conventions
 //!

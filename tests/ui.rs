@@ -6,6 +6,12 @@
 
 #[test]
 fn ui() {
+    // trybuild builds the cases against the crate whose manifest is in
+    // CARGO_MANIFEST_DIR: the facade at the workspace's root, not
+    // `mechanism-dev` which holds this test (the snapshots' paths stay
+    // `tests/ui/...`). The only test in this binary: nothing reads the
+    // environment concurrently.
+    std::env::set_var("CARGO_MANIFEST_DIR", mechanism_dev::workspace_root());
     let t = trybuild::TestCases::new();
     t.compile_fail("tests/ui/*.rs");
     t.pass("tests/ui_pass/*.rs");

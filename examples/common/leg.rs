@@ -12,6 +12,7 @@ mechanism! {
     /// axis (0: the leg straight, positive counter-clockwise). The foot F
     /// takes the ground's reaction `(fx, fy)` (a load, zero in swing).
     pub Leg {
+        units { length = "m", force = "N", mass = "kg" }
         dof 2;
         loads { fx = 0.0, fy = 0.0 }
         let H = ground(0.0, 0.0);
@@ -77,7 +78,7 @@ pub fn gait(t: f64) -> (LegInput<f64>, LegInput<f64>, LegInput<f64>, LegLoads<f6
 /// Pictures: the leg drawn along the gait, its kinematics and the motor
 /// torques and reactions over one period.
 pub fn plots(dir: &std::path::Path) -> Result<Vec<std::path::PathBuf>, mechanism_plot::PlotError> {
-    use mechanism_plot::any::{self, Units};
+    use mechanism_plot::any;
     let m = Leg::<f64>::default();
     let n = 96;
     let times: Vec<f64> = (0..n).map(|k| PERIOD * k as f64 / n as f64).collect();
@@ -89,10 +90,6 @@ pub fn plots(dir: &std::path::Path) -> Result<Vec<std::path::PathBuf>, mechanism
         })
         .collect();
     let title = "2R leg: hip motor on the ground, knee motor on the thigh";
-    let units = Units {
-        length: "m",
-        force: "N",
-    };
     let x = ("time", "s");
     let kin: Vec<_> = solved
         .iter()
@@ -103,15 +100,15 @@ pub fn plots(dir: &std::path::Path) -> Result<Vec<std::path::PathBuf>, mechanism
             )
         })
         .collect();
-    let fig = any::kinematics_chart(title, x, units, &kin, &["F"])?;
+    let fig = any::kinematics_chart(title, x, &kin, &["F"])?;
     let forces: Vec<_> = solved
         .iter()
         .map(|(t, s)| (*t, s.as_ref().map(|s| s.forces)))
         .collect();
-    let torques = any::force_chart(title, x, units, &forces)?;
+    let torques = any::force_chart(title, x, &forces)?;
     let poses: Vec<_> = kin.iter().map(|(t, r)| (*t, r.map(|r| r.0))).collect();
     let sk =
-        any::sketch_with::<Leg<f64>, _>(title, "m", &poses, &["F"], |t| format!("t = {t:.2} s"))?;
+        any::sketch_with::<Leg<f64>, _>(title, &poses, &["F"], |t| format!("t = {t:.2} s"))?;
     let files = [
         dir.join("kinematics.svg"),
         dir.join("forces.svg"),

@@ -9,7 +9,7 @@
 #![allow(dead_code)]
 
 use super::scenes::*;
-use mechanism_plot::any::{self, Pose, Units};
+use mechanism_plot::any::{self, Pose};
 use mechanism_plot::{Figure, PlotError, Sketch};
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
@@ -18,9 +18,15 @@ use std::path::{Path, PathBuf};
 const CYCLE_S: f64 = 4.0;
 
 /// `target/plots/<example>/`: under `CARGO_TARGET_DIR` if set (at run time, else at
-/// build time), else under the workspace's `target/`.
+/// build time), else under the workspace's `target/` (the nearest directory up
+/// from the manifest's with a `Cargo.lock`: the examples are the facade's, the
+/// tests that call this `mechanism-dev`'s).
 pub fn out_dir(example: &str) -> PathBuf {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = manifest
+        .ancestors()
+        .find(|d| d.join("Cargo.lock").is_file())
+        .unwrap_or(manifest);
     let target = std::env::var_os("CARGO_TARGET_DIR")
         .map(PathBuf::from)
         .or_else(|| option_env!("CARGO_TARGET_DIR").map(PathBuf::from))
@@ -48,16 +54,6 @@ pub fn write_and_report(example: &str, make: fn(&Path) -> Result<Vec<PathBuf>, P
         Err(e) => eprintln!("pictures: not written to {}: {e}", dir.display()),
     }
 }
-
-/// Millimetres and newtons; metres and newtons.
-const MM: Units = Units {
-    length: "mm",
-    force: "N",
-};
-const M: Units = Units {
-    length: "m",
-    force: "N",
-};
 
 /// Inputs from `lo` to `hi` (deg) in `n` equal steps, both ends included.
 fn grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
@@ -98,10 +94,10 @@ pub fn fourbar(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
         .collect();
     let title = "Four-bar of seed 002, crank at 250 rad/s";
     let x = ("crank angle θ2", "deg");
-    let fig = any::kinematics_chart(title, x, MM, &rows, &["link3", "link4"])?;
+    let fig = any::kinematics_chart(title, x, &rows, &["link3", "link4"])?;
     // Every other pose, 0..356 deg: 90 frames 4 deg apart.
     let poses = &positions(&rows, 2)[..90];
-    let sk = any::sketch_with::<FourBar<f64>, _>(title, "mm", poses, &["B"], degrees("θ2"))?;
+    let sk = any::sketch_with::<FourBar<f64>, _>(title, poses, &["B"], degrees("θ2"))?;
     // The drawing: theta2 = 60 deg (frame 15).
     save(dir, fig, &sk, 15)
 }
@@ -123,11 +119,11 @@ pub fn sixbar(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
     let rows: Vec<_> = grid(40.0, 55.0, 60).into_iter().map(solve).collect();
     let title = "Six-bar of seed 000 (problem 3-28), crank at 10 rad/s";
     let x = ("crank angle φ1", "deg");
-    let fig = any::kinematics_chart(title, x, MM, &rows, &["link2", "link3", "link4", "af"])?;
+    let fig = any::kinematics_chart(title, x, &rows, &["link2", "link3", "link4", "af"])?;
     let there = positions(&rows, 2);
     let back = there.iter().rev().skip(1).take(there.len() - 2).cloned();
     let poses: Vec<_> = there.iter().cloned().chain(back).collect();
-    let sk = any::sketch_with::<SixBar<f64>, _>(title, "mm", &poses, &["C"], degrees("φ1"))?;
+    let sk = any::sketch_with::<SixBar<f64>, _>(title, &poses, &["C"], degrees("φ1"))?;
     save(dir, fig, &sk, 0)
 }
 
@@ -150,9 +146,9 @@ pub fn shaper(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
         .collect();
     let title = "Quick-return shaper of seed 001, crank at 1 rad/s";
     let x = ("crank angle", "deg");
-    let fig = any::kinematics_chart(title, x, M, &rows, &["E", "link3", "link4"])?;
+    let fig = any::kinematics_chart(title, x, &rows, &["E", "link3", "link4"])?;
     let poses = &positions(&rows, 2)[..90];
-    let sk = any::sketch_with::<Shaper<f64>, _>(title, "m", poses, &["D"], degrees("crank"))?;
+    let sk = any::sketch_with::<Shaper<f64>, _>(title, poses, &["D"], degrees("crank"))?;
     save(dir, fig, &sk, 15)
 }
 
@@ -176,9 +172,9 @@ pub fn slider_crank(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
         .collect();
     let title = "Offset slider-crank at 3000 rpm";
     let x = ("crank angle θ", "deg");
-    let fig = any::kinematics_chart(title, x, M, &rows, &["x", "link3"])?;
+    let fig = any::kinematics_chart(title, x, &rows, &["x", "link3"])?;
     let poses = &positions(&rows, 2)[..90];
-    let sk = any::sketch_with::<SliderCrank<f64>, _>(title, "m", poses, &[], degrees("θ"))?;
+    let sk = any::sketch_with::<SliderCrank<f64>, _>(title, poses, &[], degrees("θ"))?;
     save(dir, fig, &sk, 15)
 }
 
@@ -210,9 +206,9 @@ pub fn five_bar(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
         .collect();
     let title = "Five-bar robot (m): P along a loop of both inputs, both at 1 rad/s";
     let x = ("loop parameter t", "deg");
-    let fig = any::kinematics_chart(title, x, M, &rows, &["P"])?;
+    let fig = any::kinematics_chart(title, x, &rows, &["P"])?;
     let poses = &positions(&rows, 1)[..90];
-    let sk = any::sketch_with::<FiveBar<f64>, _>(title, "m", poses, &["P"], |t| {
+    let sk = any::sketch_with::<FiveBar<f64>, _>(title, poses, &["P"], |t| {
         let (q1, q2) = inputs(t);
         format!("q1 = {q1:.0}°, q2 = {q2:.0}°")
     })?;
@@ -260,8 +256,8 @@ pub fn sine_mechanism(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
         .map(|(d, s)| (*d, s.as_ref().map(|s| s.position)))
         .collect();
     let title = "Sine mechanism of seed 000 (4-23): crank 10 rad/s, Fr = 400 N";
-    let fig = any::force_chart(title, ("crank angle φ1", "deg"), M, &forces)?;
-    let sk = any::sketch_with::<SineMechanism<f64>, _>(title, "m", &poses, &["B"], degrees("φ1"))?;
+    let fig = any::force_chart(title, ("crank angle φ1", "deg"), &forces)?;
+    let sk = any::sketch_with::<SineMechanism<f64>, _>(title, &poses, &["B"], degrees("φ1"))?;
     let files = [
         dir.join("forces.svg"),
         dir.join("drawing.svg"),
@@ -298,7 +294,7 @@ pub fn shaper_forces(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
     let title = "Shaper with masses and gravity, 60 rpm, 5 kN cut on the forward stroke";
     let mut files = shaper(dir)?;
     let path = dir.join("forces.svg");
-    any::force_chart(title, ("crank angle", "deg"), M, &forces)?.write(&path)?;
+    any::force_chart(title, ("crank angle", "deg"), &forces)?.write(&path)?;
     files.push(path);
     Ok(files)
 }

@@ -11,6 +11,7 @@ mechanism! {
     #[self_test]
     pub FourBar {
         params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        units { length = "mm" }
         dof 1;
         let O2 = ground(0.0, 0.0);
         let O4 = ground(ground, 0.0);
@@ -26,6 +27,7 @@ mechanism! {
     /// RRR group B-C-D (50, 75) closes the loop.
     #[self_test]
     pub SixBar {
+        units { length = "mm" }
         dof 1;
         let A = ground(0.0, 0.0);
         let E = ground(70.0, 0.0);
@@ -49,6 +51,7 @@ mechanism! {
     /// (guide direction 180 deg, as in the document).
     #[self_test]
     pub Shaper {
+        units { length = "m" }
         dof 1;
         let A = ground(0.0, 0.0);
         let C = ground(0.0, -0.275);
@@ -67,6 +70,7 @@ mechanism! {
     #[self_test]
     pub SliderCrank {
         params { crank = 0.1, rod = 0.4, offset = 0.02 }
+        units { length = "m" }
         dof 1;
         let O = ground(0.0, 0.0);
         let line = guide((0.0, offset), 0 deg);
@@ -83,6 +87,7 @@ mechanism! {
     #[self_test]
     pub FiveBar {
         params { base = 0.08, proximal = 0.1, distal = 0.16 }
+        units { length = "m" }
         dof 2;
         let O1 = ground(0.0, 0.0);
         let O2 = ground(base, 0.0);
@@ -105,6 +110,7 @@ mechanism! {
     #[self_test]
     pub SineMechanism {
         params { crank = 0.1, m2 = 4.0, m3 = 10.0, fr = 400.0 }
+        units { length = "m", force = "N", mass = "kg" }
         dof 1;
         let A = ground(0.0, 0.0);
         let frame = guide((0.0, 0.0), 90 deg);
@@ -126,6 +132,7 @@ mechanism! {
     #[self_test]
     pub ShaperForces {
         params { m3 = 20.0, j3 = 0.6, m4 = 3.0, j4 = 0.005625, m5 = 60.0 }
+        units { length = "m", force = "N", mass = "kg" }
         loads { cut = 0.0 }
         dof 1;
         let A = ground(0.0, 0.0);
@@ -159,6 +166,7 @@ mechanism! {
     /// The motors turning `arm1` and `arm2` about the base pivots hold `P`
     /// on its path: their torques are the forces' `drive_q1`, `drive_q2`.
     pub FiveBarIk {
+        units { length = "m", force = "N", mass = "kg" }
         joints {
             O1 = (0.0, 0.0),
             O2 = (0.08, 0.0),

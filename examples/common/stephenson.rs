@@ -16,6 +16,7 @@ mechanism! {
     /// Link 6 swings between about -50.4365 deg and -2.6334 deg on it.
     #[self_test]
     pub Stephenson {
+        units { length = "m", force = "N", mass = "kg" }
         params { m2 = 0.4, j2 = 2.2e-4, m3 = 1.2, j3 = 7.5e-3, m4 = 0.8, j4 = 2.7e-3,
                  m5 = 1.0, j5 = 6.5e-3, m6 = 0.9, j6 = 4.3e-3 }
         loads { fp = 0.0 }
@@ -190,7 +191,7 @@ impl Row {
 /// the stated input with the path of P (`drawing.svg`) and an animation
 /// over the swing and back (`animation.svg`).
 pub fn plots(dir: &std::path::Path) -> Result<Vec<std::path::PathBuf>, mechanism_plot::PlotError> {
-    use mechanism_plot::any::{self, Units};
+    use mechanism_plot::any;
     let m = Stephenson::<f64>::default();
     let swing = swing(&m);
     let rows: Vec<_> = rows(&m, swing, 60)
@@ -198,14 +199,9 @@ pub fn plots(dir: &std::path::Path) -> Result<Vec<std::path::PathBuf>, mechanism
         .map(|r| (r.phi.to_degrees(), Some((r.p, r.v, r.a))))
         .collect();
     let title = "Stephenson III six-bar, link 6 at 1.5 rad/s";
-    let units = Units {
-        length: "m",
-        force: "N",
-    };
     let fig = any::kinematics_chart(
         title,
         ("link 6 angle φ", "deg"),
-        units,
         &rows,
         &["crank2", "coupler", "rocker"],
     )?;
@@ -215,7 +211,7 @@ pub fn plots(dir: &std::path::Path) -> Result<Vec<std::path::PathBuf>, mechanism
         .collect();
     let back = there.iter().rev().skip(1).take(there.len() - 2).cloned();
     let poses: Vec<_> = there.iter().cloned().chain(back).collect();
-    let sk = any::sketch_with::<Stephenson<f64>, _>(title, "m", &poses, &["P"], |d| {
+    let sk = any::sketch_with::<Stephenson<f64>, _>(title, &poses, &["P"], |d| {
         format!("φ = {d:.1}°")
     })?;
     let files = [

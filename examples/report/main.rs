@@ -282,7 +282,7 @@ fn main() {
         "Error against run time for every example scene and method, written to target/report/ (summary.md, one SVG and one CSV per scene); the summary is also printed.",
         &[],
     );
-    let out_dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/report");
+    let out_dir = mechanism_dev::workspace_root().join("target/report");
     std::fs::create_dir_all(&out_dir).expect("create target/report");
     if std::env::var_os("REPORT_FORCES_ONLY").is_some() {
         // The forces section alone (development): not written to summary.md.

@@ -2,7 +2,7 @@
 //! `expand` (parse to tokens, with the expansion-time check when the scene's
 //! dimensions are literal), median of 5 runs.
 //!
-//! Run: `cargo run --release -p mechanism-codegen --example expand_timing`
+//! Run: `cargo run --release -p mechanism-dev --example expand_timing`
 //! (rustc runs proc macros built in the dev profile unless the profile says
 //! otherwise: run without `--release` for what a user's build sees).
 

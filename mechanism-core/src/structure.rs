@@ -113,6 +113,55 @@ pub struct Structure {
     pub inputs: &'static [Input],
     /// The masses of the force analysis.
     pub masses: &'static [Mass],
+    /// The names of the definition's units (its `units` statement).
+    pub units: Units,
+}
+
+/// The names of a definition's units, from its `units` statement
+/// (`units { length = "mm", force = "N", mass = "kg", time = "s" }`), for
+/// labels only: the numbers are in whatever consistent units the definition
+/// was written in, and nothing is converted. A unit the statement does not
+/// name is its symbol: [`Units::SYMBOLS`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Units {
+    /// Lengths, positions and slides (`"mm"`; `"L"` when not named).
+    pub length: &'static str,
+    /// Forces (`"N"`; `"F"` when not named): mass x length / time^2.
+    pub force: &'static str,
+    /// Masses (`"kg"`; `"M"` when not named).
+    pub mass: &'static str,
+    /// Time, the denominator of every rate (`"s"` when not named: rates are
+    /// per second unless the definition says otherwise).
+    pub time: &'static str,
+}
+
+impl Units {
+    /// The units of a definition without a `units` statement: `L`, `F`, `M`
+    /// and `s`.
+    pub const SYMBOLS: Units = Units {
+        length: "L",
+        force: "F",
+        mass: "M",
+        time: "s",
+    };
+
+    /// The unit of `q` in these units, as its parts (concatenated, they are
+    /// the unit: `["mm", "/", "s", "^2"]` for an acceleration in mm and s;
+    /// empty parts for a ratio). `no_std`: no string is built.
+    pub const fn parts(&self, q: Quantity) -> [&'static str; 4] {
+        let (l, f, t) = (self.length, self.force, self.time);
+        match q {
+            Quantity::Length => [l, "", "", ""],
+            Quantity::Angle => ["rad", "", "", ""],
+            Quantity::Velocity => [l, "/", t, ""],
+            Quantity::AngularVelocity => ["rad", "/", t, ""],
+            Quantity::Acceleration => [l, "/", t, "^2"],
+            Quantity::AngularAcceleration => ["rad", "/", t, "^2"],
+            Quantity::Force => [f, "", "", ""],
+            Quantity::Moment => [f, " ", l, ""],
+            Quantity::Ratio => ["", "", "", ""],
+        }
+    }
 }
 
 impl Structure {
@@ -208,6 +257,10 @@ pub trait Describe {
 pub trait Fields<T: nalgebra::Scalar> {
     /// Every field [`Fields::get`] reads, in the struct's order.
     const FIELDS: &'static [Field];
+
+    /// The names of the definition's units ([`Structure::units`]): what `L`,
+    /// `F` and `s` of [`Quantity::unit`] are for these fields.
+    const UNITS: Units;
 
     /// The value of the field `name` (`None`: no such field).
     fn get(&self, name: &str) -> Option<Value<T>>;

@@ -15,23 +15,36 @@
 //!     .iter()
 //!     .map(|&t| (t, fb.position(&FourBarInput { theta2: t }).ok()))
 //!     .collect();
-//! let sketch = mechanism_plot::any::sketch::<FourBar, _>("Four-bar", "mm", &poses, &["P"])?;
+//! let sketch = mechanism_plot::any::sketch::<FourBar<f64>, _>("Four-bar", &poses, &["P"])?;
 //! sketch.write_animation(4.0, "fourbar.svg")?;
 //! std::fs::write("fourbar.csv", mechanism_plot::any::csv("theta2", "rad", &poses))?;
 //! ```
 
 use crate::{Figure, Frame, Plot, PlotError, Sketch, Xy};
 use mechanism_core::structure::{
-    Describe, Field, Fields, Guide, LinkKind, PointKind, Quantity, Structure, Value,
+    Describe, Field, Fields, Guide, LinkKind, PointKind, Quantity, Structure, Units, Value,
 };
+use mechanism_core::{Point2, Real, Vector2};
 use std::fmt::Write;
 
 /// One solved pose: the input value and the position (`None`: the mechanism
-/// cannot be assembled there; drawn as a gap, not as a jump).
+/// cannot be assembled there; drawn as a gap, not as a jump). The results
+/// may be `f32` or `f64` (`FourBarPosition<f32>`); the input is an `f64`
+/// either way (widen an `f32` input with `f64::from`).
 pub type Pose<P> = (f64, Option<P>);
 
-fn point_of<P: Fields<f64>>(pos: &P, name: &str) -> Option<Xy> {
-    match pos.get(name) {
+/// The field `name` of a result of either precision, as `f64` (an `f32`
+/// widens exactly).
+fn value<T: Real, P: Fields<T>>(pos: &P, name: &str) -> Option<Value<f64>> {
+    Some(match pos.get(name)? {
+        Value::Point(p) => Value::Point(Point2::new(p.x.as_f64(), p.y.as_f64())),
+        Value::Vector(v) => Value::Vector(Vector2::new(v.x.as_f64(), v.y.as_f64())),
+        Value::Scalar(x) => Value::Scalar(x.as_f64()),
+    })
+}
+
+fn point_of<T: Real, P: Fields<T>>(pos: &P, name: &str) -> Option<Xy> {
+    match value(pos, name) {
         Some(Value::Point(p)) if p.x.is_finite() && p.y.is_finite() => Some([p.x, p.y]),
         _ => None,
     }
@@ -40,7 +53,7 @@ fn point_of<P: Fields<f64>>(pos: &P, name: &str) -> Option<Xy> {
 /// The direction (rad) a block slides along at one pose: a fixed guide's own
 /// angle; a carried guide's angle from its carrier's axis (the carrier's
 /// first two points); an RPR block's from the other link's origin.
-fn block_angle<P: Fields<f64>>(s: &Structure, link: usize, pos: &P) -> f64 {
+fn block_angle<T: Real, P: Fields<T>>(s: &Structure, link: usize, pos: &P) -> f64 {
     let axis = |points: &[&str]| -> Option<f64> {
         let a = point_of(pos, points.first()?)?;
         let b = point_of(pos, points.get(1)?)?;
@@ -74,7 +87,7 @@ fn block_angle<P: Fields<f64>>(s: &Structure, link: usize, pos: &P) -> f64 {
 
 /// Where a guide carried by a link starts at one pose: the named point it
 /// passes through, else its carrier's first point (`None` for a fixed guide).
-fn carried_guide_origin<P: Fields<f64>>(s: &Structure, guide: Option<&str>, pos: &P) -> Option<Xy> {
+fn carried_guide_origin<T: Real, P: Fields<T>>(s: &Structure, guide: Option<&str>, pos: &P) -> Option<Xy> {
     let g = s.guide(guide?)?;
     let carrier = s.link(g.carrier?)?;
     point_of(pos, g.through.or(carrier.points.first().copied())?)
@@ -82,7 +95,7 @@ fn carried_guide_origin<P: Fields<f64>>(s: &Structure, guide: Option<&str>, pos:
 
 /// One pose as a frame: links (bars and plates through their points), blocks
 /// on their guides, revolute joints, and the traced points.
-fn frame<P: Fields<f64>>(s: &Structure, caption: &str, pos: &P, traced: &[&str]) -> Frame {
+fn frame<T: Real, P: Fields<T>>(s: &Structure, caption: &str, pos: &P, traced: &[&str]) -> Frame {
     let mut f = Frame::new(caption);
     for (k, l) in s.links.iter().enumerate() {
         let pts: Vec<Xy> = l.points.iter().filter_map(|p| point_of(pos, p)).collect();
@@ -124,33 +137,44 @@ fn frame<P: Fields<f64>>(s: &Structure, caption: &str, pos: &P, traced: &[&str])
 
 /// A drawing of mechanism `M` over its poses: ground pivots with hatching,
 /// fixed guides as long as the blocks travel on them, one frame per pose that
-/// assembles (captioned with its input), and the paths of the `traced`
-/// points, broken where a pose fails. `unit` is the length unit shown on the
-/// scale bar. [`Sketch::drawing`] draws one frame, [`Sketch::animation`] all.
-pub fn sketch<M: Describe, P: Fields<f64>>(
+/// assembles (captioned with its input: `theta = 30 deg` for a crank, whose
+/// pose holds radians; `s = 12.5 mm` for a slider), and the paths of the `traced`
+/// points, broken where a pose fails. The scale bar is in the definition's
+/// length unit (its `units` statement; `L` without one). The results may be
+/// `f32` or `f64`. [`Sketch::drawing`] draws one frame, [`Sketch::animation`] all.
+pub fn sketch<M: Describe, T: Real>(
     title: &str,
-    unit: &str,
-    poses: &[Pose<P>],
+    poses: &[Pose<impl Fields<T>>],
     traced: &[&str],
 ) -> Result<Sketch, PlotError> {
-    let input = M::STRUCTURE.inputs.first().map_or("input", |i| i.name);
-    sketch_with::<M, P>(title, unit, poses, traced, |q| {
-        format!("{input} = {}", short(q))
-    })
+    let input = M::STRUCTURE.inputs.first();
+    let name = input.map_or("input", |i| i.name);
+    let angle = input.is_some_and(|i| i.quantity == Quantity::Angle);
+    let unit = M::STRUCTURE.units.length;
+    sketch_with::<M, T>(title, poses, traced, |q| caption(name, q, angle, unit))
 }
 
 /// [`sketch`] with each frame's caption made by `caption` from the pose's
 /// input value (for several inputs, or an input in other units than the
 /// structure's).
-pub fn sketch_with<M: Describe, P: Fields<f64>>(
+pub fn sketch_with<M: Describe, T: Real>(
     title: &str,
-    unit: &str,
+    poses: &[Pose<impl Fields<T>>],
+    traced: &[&str],
+    caption: impl Fn(f64) -> String,
+) -> Result<Sketch, PlotError> {
+    draw(&M::STRUCTURE, title, poses, traced, caption)
+}
+
+/// [`sketch_with`] for the structure `s` (the result type named).
+fn draw<T: Real, P: Fields<T>>(
+    s: &Structure,
+    title: &str,
     poses: &[Pose<P>],
     traced: &[&str],
     caption: impl Fn(f64) -> String,
 ) -> Result<Sketch, PlotError> {
-    let s = M::STRUCTURE;
-    let mut sketch = Sketch::new(title, unit);
+    let mut sketch = Sketch::new(title, s.units.length);
     let solved: Vec<(f64, &P)> = poses
         .iter()
         .filter_map(|(q, p)| p.as_ref().map(|p| (*q, p)))
@@ -174,7 +198,7 @@ pub fn sketch_with<M: Describe, P: Fields<f64>>(
                 .iter()
                 .filter_map(|(_, p)| l.points.first().and_then(|n| point_of(*p, n)))
                 .collect();
-            if let Some((a, b)) = travel(&along, block_angle(&s, k, first)) {
+            if let Some((a, b)) = travel(&along, block_angle(s, k, first)) {
                 sketch.ground_guide(a, b);
             }
         }
@@ -185,9 +209,21 @@ pub fn sketch_with<M: Describe, P: Fields<f64>>(
         }
     }
     for (q, p) in &solved {
-        sketch.frame(frame(&s, &caption(*q), *p, traced));
+        sketch.frame(frame(s, &caption(*q), *p, traced));
     }
     Ok(sketch)
+}
+
+/// A frame's caption: the input's name and value, an angle (rad in the pose)
+/// in degrees (`theta = 30 deg`), a length in `unit` (`s = 0.12 mm`).
+fn caption(name: &str, q: f64, angle: bool, unit: &str) -> String {
+    if angle {
+        format!("{name} = {} deg", short(q.to_degrees()))
+    } else if unit.is_empty() {
+        format!("{name} = {}", short(q))
+    } else {
+        format!("{name} = {} {unit}", short(q))
+    }
 }
 
 /// A number with at most four decimals, trailing zeros dropped (`60`, `1.0472`).
@@ -238,14 +274,14 @@ fn runs<P, V>(poses: &[Pose<P>], value: impl Fn(&P) -> Option<V>) -> Vec<Vec<V>>
 }
 
 /// A CSV table of every field of `P` over the poses: the input first, then
-/// each point as two columns (`B.x`, `B.y`) and each scalar as one, units in
-/// the headers (`L` is the definition's length unit: `B.x [L]`,
-/// `link3 [rad]`). A pose that fails is a row with empty fields, so the gap
+/// each point as two columns (`B.x`, `B.y`) and each scalar as one, the
+/// definition's units in the headers (`B.x [mm]`, `link3 [rad]`, `B.x [L]`
+/// for a definition without a `units` statement). A pose that fails is a row with empty fields, so the gap
 /// shows in a spreadsheet. Values with 17 significant digits (round-trip).
-pub fn csv<P: Fields<f64>>(input: &str, input_unit: &str, poses: &[Pose<P>]) -> String {
+pub fn csv<T: Real, P: Fields<T>>(input: &str, input_unit: &str, poses: &[Pose<P>]) -> String {
     let mut out = format!("{input} [{input_unit}]");
     for f in P::FIELDS {
-        let unit = f.quantity.unit();
+        let unit = display_unit(f.quantity, &P::UNITS, false);
         if f.planar {
             let _ = write!(out, ",{0}.x [{unit}],{0}.y [{unit}]", f.name);
         } else {
@@ -256,7 +292,7 @@ pub fn csv<P: Fields<f64>>(input: &str, input_unit: &str, poses: &[Pose<P>]) -> 
     for (q, p) in poses {
         let _ = write!(out, "{q:.16e}");
         for f in P::FIELDS {
-            let cells = match p.as_ref().and_then(|p| p.get(f.name)) {
+            let cells = match p.as_ref().and_then(|p| value(p, f.name)) {
                 Some(Value::Point(v)) => format!("{:.16e},{:.16e}", v.x, v.y),
                 Some(Value::Vector(v)) => format!("{:.16e},{:.16e}", v.x, v.y),
                 Some(Value::Scalar(x)) => format!("{x:.16e}"),
@@ -270,32 +306,14 @@ pub fn csv<P: Fields<f64>>(input: &str, input_unit: &str, poses: &[Pose<P>]) -> 
     out
 }
 
-/// What the definition's units are called, for chart labels: `length` stands
-/// for `L` (the unit the dimensions were written in, `"mm"`), `force` for `F`
-/// (`"N"` with kg, m and s).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Units<'a> {
-    /// The length unit.
-    pub length: &'a str,
-    /// The force unit.
-    pub force: &'a str,
-}
-
-/// The display unit of a quantity: `L` and `F` replaced by `units`, angles in
-/// degrees (`deg`; rates stay in rad/s and rad/s²).
-fn display_unit(q: Quantity, units: Units) -> String {
-    if q == Quantity::Angle {
+/// The unit of `q` in the definition's `units` (`mm/s^2`; `L/s^2` without a
+/// `units` statement), angles in degrees (`deg`) when `degrees` (the charts
+/// show them so; rates stay in rad per time unit).
+fn display_unit(q: Quantity, units: &Units, degrees: bool) -> String {
+    if degrees && q == Quantity::Angle {
         return "deg".to_string();
     }
-    let mut out = String::new();
-    for c in q.unit().chars() {
-        match c {
-            'L' => out.push_str(units.length),
-            'F' => out.push_str(units.force),
-            c => out.push(c),
-        }
-    }
-    out
+    units.parts(q).concat()
 }
 
 /// A panel's title and its y axis' quantity, for fields of quantity `q`.
@@ -318,14 +336,14 @@ fn quantity_words(q: Quantity) -> (&'static str, &'static str) {
 /// not finite. Angles in degrees, unwrapped: each value moved by whole turns
 /// to within half a turn of the previous value (across gaps too), the whole
 /// series by whole turns so that it starts in [0, 360).
-fn columns<P: Fields<f64>>(
+fn columns<T: Real, P: Fields<T>>(
     f: &Field,
     rows: &[Pose<P>],
     magnitude: bool,
 ) -> Vec<(String, Vec<Option<f64>>)> {
     let finite = |v: f64| v.is_finite().then_some(v);
     if magnitude && f.planar {
-        let norm = |pos: &Option<P>| match pos.as_ref()?.get(f.name)? {
+        let norm = |pos: &Option<P>| match value(pos.as_ref()?, f.name)? {
             Value::Point(p) => finite(p.coords.norm()),
             Value::Vector(v) => finite(v.norm()),
             Value::Scalar(x) => finite(x.abs()),
@@ -334,7 +352,7 @@ fn columns<P: Fields<f64>>(
         return vec![(format!("|{}|", f.name), ys)];
     }
     let read = |pos: &Option<P>, k: usize| -> Option<f64> {
-        match pos.as_ref()?.get(f.name)? {
+        match value(pos.as_ref()?, f.name)? {
             Value::Point(p) => finite([p.x, p.y][k]),
             Value::Vector(v) => finite([v.x, v.y][k]),
             Value::Scalar(x) => finite(x),
@@ -378,10 +396,9 @@ fn unwrap_degrees(ys: &mut [Option<f64>]) {
 
 /// One panel titled `title` with every column of `fields` (all of one
 /// quantity) against the rows' input.
-fn panel<P: Fields<f64>>(
+fn panel<T: Real, P: Fields<T>>(
     title: &str,
     input: (&str, &str),
-    units: Units,
     rows: &[Pose<P>],
     fields: &[&Field],
     magnitude: bool,
@@ -390,7 +407,7 @@ fn panel<P: Fields<f64>>(
     let q = fields.first().map_or(Quantity::Ratio, |f| f.quantity);
     let mut plot = Plot::new(title)
         .x_axis(input.0, input.1)
-        .y_axis(quantity_words(q).1, &display_unit(q, units));
+        .y_axis(quantity_words(q).1, &display_unit(q, &P::UNITS, true));
     for f in fields {
         for (name, ys) in columns(f, rows, magnitude) {
             plot = plot.gapped(&name, &xs, &ys);
@@ -401,7 +418,7 @@ fn panel<P: Fields<f64>>(
 
 /// The fields of `P` named in `names`, in that order (every field but the
 /// pure ratios when `names` is empty).
-fn chosen<P: Fields<f64>>(names: &[&str]) -> Result<Vec<&'static Field>, PlotError> {
+fn chosen<T: Real, P: Fields<T>>(names: &[&str]) -> Result<Vec<&'static Field>, PlotError> {
     if names.is_empty() {
         return Ok(P::FIELDS
             .iter()
@@ -427,17 +444,17 @@ fn chosen<P: Fields<f64>>(names: &[&str]) -> Result<Vec<&'static Field>, PlotErr
 /// the input: one panel per quantity, in the order the quantities first
 /// appear, one series per scalar and two (`.x`, `.y`) per point or vector.
 /// `input` is the x axis' label and unit as the rows hold it (`("crank angle
-/// θ2", "deg")`); lengths and forces are labelled with `units`, angles are
-/// shown in degrees (continuous), rates in rad/s. A row whose result is
+/// θ2", "deg")`); lengths, forces and rates are labelled in the definition's
+/// units (its `units` statement; `L` and `F` without one), angles are
+/// shown in degrees (continuous), angular rates in rad per time unit. A row whose result is
 /// `None` (the mechanism cannot be assembled there) is a gap in every series,
 /// not a line across it. An unknown field name is [`PlotError::NoField`].
-pub fn panels<P: Fields<f64>>(
+pub fn panels<T: Real, P: Fields<T>>(
     input: (&str, &str),
-    units: Units,
     rows: &[Pose<P>],
     fields: &[&str],
 ) -> Result<Vec<Plot>, PlotError> {
-    let fields = chosen::<P>(fields)?;
+    let fields = chosen::<T, P>(fields)?;
     let mut groups: Vec<(Quantity, Vec<&Field>)> = Vec::new();
     for f in fields {
         match groups.iter_mut().find(|(q, _)| *q == f.quantity) {
@@ -447,7 +464,7 @@ pub fn panels<P: Fields<f64>>(
     }
     Ok(groups
         .iter()
-        .map(|(q, g)| panel(quantity_words(*q).0, input, units, rows, g, false))
+        .map(|(q, g)| panel(quantity_words(*q).0, input, rows, g, false))
         .collect())
 }
 
@@ -459,17 +476,15 @@ pub fn panels<P: Fields<f64>>(
 ///     .iter()
 ///     .map(|&d| (d, fb.position(&FourBarInput { theta2: d.to_radians() }).ok()))
 ///     .collect();
-/// let units = Units { length: "mm", force: "N" };
-/// chart("Four-bar", ("θ2", "deg"), units, &rows, &["link3", "B"])?.write("angles.svg")?;
+/// chart("Four-bar", ("θ2", "deg"), &rows, &["link3", "B"])?.write("angles.svg")?;
 /// ```
-pub fn chart<P: Fields<f64>>(
+pub fn chart<T: Real, P: Fields<T>>(
     title: &str,
     input: (&str, &str),
-    units: Units,
     rows: &[Pose<P>],
     fields: &[&str],
 ) -> Result<Figure, PlotError> {
-    Ok(panels(input, units, rows, fields)?
+    Ok(panels(input, rows, fields)?
         .into_iter()
         .fold(Figure::new(title), Figure::panel))
 }
@@ -481,10 +496,9 @@ pub fn chart<P: Fields<f64>>(
 /// force too), then the prismatic pairs' couples, one panel per quantity in
 /// each group; the power balance residual is left out. Signs follow the
 /// forces struct (moments counter-clockwise positive). Failed rows are gaps.
-pub fn force_chart<F: Fields<f64>>(
+pub fn force_chart<T: Real, F: Fields<T>>(
     title: &str,
     input: (&str, &str),
-    units: Units,
     rows: &[Pose<F>],
 ) -> Result<Figure, PlotError> {
     let drive = |f: &&Field| f.name.starts_with("drive_");
@@ -510,7 +524,7 @@ pub fn force_chart<F: Fields<f64>>(
         for q in [Quantity::Moment, Quantity::Force] {
             let these: Vec<&Field> = fields.iter().copied().filter(|f| f.quantity == q).collect();
             if !these.is_empty() {
-                fig = fig.panel(panel(title, input, units, rows, &these, true));
+                fig = fig.panel(panel(title, input, rows, &these, true));
             }
         }
     }
@@ -536,23 +550,23 @@ fn split<P: Clone, V: Clone, A: Clone>(rows: &[Pose<(P, V, A)>]) -> Split<P, V, 
 /// input, the panels of [`panels`] for each (`fields` names the outputs, the
 /// same names in the three structs; all of them when empty). The rows hold
 /// the three results of one input (`None` where it fails: a gap).
-pub fn kinematics_chart<P, V, A>(
+pub fn kinematics_chart<T, P, V, A>(
     title: &str,
     input: (&str, &str),
-    units: Units,
     rows: &[Pose<(P, V, A)>],
     fields: &[&str],
 ) -> Result<Figure, PlotError>
 where
-    P: Fields<f64> + Clone,
-    V: Fields<f64> + Clone,
-    A: Fields<f64> + Clone,
+    T: Real,
+    P: Fields<T> + Clone,
+    V: Fields<T> + Clone,
+    A: Fields<T> + Clone,
 {
     let (p, v, a) = split(rows);
     let all = [
-        panels(input, units, &p, fields)?,
-        panels(input, units, &v, fields)?,
-        panels(input, units, &a, fields)?,
+        panels(input, &p, fields)?,
+        panels(input, &v, fields)?,
+        panels(input, &a, fields)?,
     ];
     Ok(all
         .into_iter()

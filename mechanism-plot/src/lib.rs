@@ -1,37 +1,15 @@
-//! `mechanism-plot`: SVG pictures of planar linkages, std-only and dependency-free.
+#![doc = include_str!("../README.md")]
 //!
-//! Two kinds of picture, both written as plain SVG 1.1 text (no system libraries, no
-//! fonts needed at build time; viewers use their own sans-serif font):
-//!
-//! - [`Plot`] / [`Figure`]: line plots of any output against the input (angles, rates,
-//!   accelerations, slider positions, reactions, driving torque), labelled axes with units,
-//!   tick values on a 1-2-5 grid (15/30/45/90 for degrees), a legend, several series per
-//!   panel and several panels per figure.
-//! - [`Sketch`]: a drawing of the mechanism built from solved positions: ground pivots and
-//!   ground guides with hatching, links as bars (two joints) or filled polygons (three or
-//!   more), revolute joints, sliders oriented along their guides, guides carried by links,
-//!   coupler-point paths; one pose as a static drawing, or every pose as an animated SVG
-//!   (SMIL, discrete frames, plays in browsers).
-//!
-//! Bad data (NaN or infinite values, empty or mismatched series, no frames) is a typed
-//! [`PlotError`], never a panic and never a NaN in the SVG. The core crates stay `no_std`;
-//! only the examples and users who want pictures depend on this crate.
-//!
-//! ```
-//! use mechanism_plot::Plot;
-//! let xs: Vec<f64> = (0..=36).map(|k| 10.0 * k as f64).collect();
-//! let ys: Vec<f64> = xs.iter().map(|d| d.to_radians().sin()).collect();
-//! let svg = Plot::new("A sine")
-//!     .x_axis("crank angle", "deg")
-//!     .y_axis("sin", "")
-//!     .series("sin", &xs, &ys)
-//!     .to_svg()
-//!     .unwrap();
-//! assert!(svg.starts_with("<svg"));
-//! ```
+//! The modules: [`any`] (any generated mechanism, from its description),
+//! [`Plot`] / [`Figure`] (line plots), [`Sketch`] / [`Frame`] (drawings),
+//! and with the feature `dxf` the module `dxf` (`Sketch::dxf`, `Sketch::write_dxf`).
 #![forbid(unsafe_code)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 
 pub mod any;
+#[cfg(feature = "dxf")]
+#[cfg_attr(docsrs, doc(cfg(feature = "dxf")))]
+pub mod dxf;
 mod labels;
 mod plot;
 mod sketch;

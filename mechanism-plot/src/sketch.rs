@@ -27,7 +27,7 @@ const BLOCK: (f64, f64) = (36.0, 18.0);
 const PATH_COLORS: [&str; 4] = ["#C0392B", "#8E44AD", "#16A085", "#2C3E50"];
 
 #[derive(Clone, Debug)]
-enum Shape {
+pub(crate) enum Shape {
     Link { name: String, points: Vec<Xy> },
     Joint { name: String, p: Xy },
     Slider { name: String, p: Xy, angle: f64 },
@@ -40,7 +40,7 @@ enum Shape {
 #[derive(Clone, Debug, Default)]
 pub struct Frame {
     caption: String,
-    shapes: Vec<Shape>,
+    pub(crate) shapes: Vec<Shape>,
 }
 
 impl Frame {
@@ -132,12 +132,12 @@ impl Frame {
 #[derive(Clone, Debug, Default)]
 pub struct Sketch {
     title: String,
-    unit: String,
-    pivots: Vec<(String, Xy)>,
+    pub(crate) unit: String,
+    pub(crate) pivots: Vec<(String, Xy)>,
     ground_guides: Vec<(Xy, Xy)>,
     paths: Vec<(String, Vec<Xy>)>,
     faint: Vec<Vec<Xy>>,
-    frames: Vec<Frame>,
+    pub(crate) frames: Vec<Frame>,
 }
 
 /// World-to-pixel mapping: uniform scale, y flipped.

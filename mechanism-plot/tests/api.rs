@@ -4,9 +4,12 @@
 mod check;
 
 use check::*;
-use mechanism_core::structure::{Field, Fields, Quantity, Value};
-use mechanism_core::Point2;
-use mechanism_plot::any::{self, Units};
+use mechanism_core::structure::{
+    Describe, Field, Fields, Input, Link, LinkKind, Point, PointKind, Quantity, Structure, Units,
+    Value,
+};
+use mechanism_core::{Point2, Real};
+use mechanism_plot::any;
 use mechanism_plot::{Figure, Frame, Plot, PlotError, Sketch};
 
 fn sine() -> (Vec<f64>, Vec<f64>) {
@@ -286,13 +289,23 @@ fn the_animation_shows_exactly_one_pose_at_a_time() {
     }
 }
 
-/// A result struct read by name, as the macro's are: an angle and a point.
-struct Out {
-    a: f64,
-    p: Point2<f64>,
+/// A result struct read by name, as the macro's are: an angle and a point,
+/// in `f32` or `f64`, in mm and N (as a `units` statement names them).
+#[derive(Clone)]
+struct Out<T: Real> {
+    a: T,
+    p: Point2<T>,
 }
 
-impl Fields<f64> for Out {
+const MM_N: Units = Units {
+    length: "mm",
+    force: "N",
+    mass: "kg",
+    time: "s",
+};
+
+impl<T: Real> Fields<T> for Out<T> {
+    const UNITS: Units = MM_N;
     const FIELDS: &'static [Field] = &[
         Field {
             name: "a",
@@ -306,7 +319,7 @@ impl Fields<f64> for Out {
         },
     ];
 
-    fn get(&self, name: &str) -> Option<Value<f64>> {
+    fn get(&self, name: &str) -> Option<Value<T>> {
         match name {
             "a" => Some(Value::Scalar(self.a)),
             "P" => Some(Value::Point(self.p)),
@@ -315,15 +328,9 @@ impl Fields<f64> for Out {
     }
 }
 
-/// A generic chart of outputs named by the caller: one panel per quantity with
-/// units filled in (`L` -> mm, angles in deg), a row that failed breaks every
-/// series into two runs (two `M` commands, no vertex for the five failed rows,
-/// no segment across them), an angle that wraps at +-180 deg is drawn
-/// continuous (its vertices rise monotonically on screen), and an unknown field
-/// name is a typed error.
-#[test]
-fn a_generic_chart_has_gaps_where_rows_fail() {
-    let rows: Vec<(f64, Option<Out>)> = (0..=40)
+/// The rows of [`a_generic_chart_has_gaps_where_rows_fail`] in `f64`.
+fn out_rows() -> Vec<(f64, Option<Out<f64>>)> {
+    (0..=40)
         .map(|k| {
             let x = 9.0 * k as f64;
             let t = (2.0 * x).to_radians();
@@ -333,12 +340,19 @@ fn a_generic_chart_has_gaps_where_rows_fail() {
             };
             (x, (!(10..15).contains(&k)).then_some(out))
         })
-        .collect();
-    let units = Units {
-        length: "mm",
-        force: "N",
-    };
-    let svg = any::chart("t", ("x", "deg"), units, &rows, &["a", "P"])
+        .collect()
+}
+
+/// A generic chart of outputs named by the caller: one panel per quantity with
+/// the result's units (`mm`, angles in deg), a row that failed breaks every
+/// series into two runs (two `M` commands, no vertex for the five failed rows,
+/// no segment across them), an angle that wraps at +-180 deg is drawn
+/// continuous (its vertices rise monotonically on screen), and an unknown field
+/// name is a typed error.
+#[test]
+fn a_generic_chart_has_gaps_where_rows_fail() {
+    let rows = out_rows();
+    let svg = any::chart("t", ("x", "deg"), &rows, &["a", "P"])
         .unwrap()
         .to_svg()
         .unwrap();
@@ -365,7 +379,7 @@ fn a_generic_chart_has_gaps_where_rows_fail() {
         assert!(w[1][1] < w[0][1], "the angle rises continuously: {w:?}");
     }
     assert!(matches!(
-        any::chart("t", ("x", "deg"), units, &rows, &["nope"]),
+        any::chart("t", ("x", "deg"), &rows, &["nope"]),
         Err(PlotError::NoField { ref name, .. }) if name == "nope"
     ));
 }
@@ -399,4 +413,165 @@ fn a_long_legend_stays_inside_its_panel() {
         "the last legend row ({last} px) above the next panel's plot area ({} px)",
         ps[1].area[1]
     );
+}
+
+/// `f32` results chart and tabulate as their `f64` counterparts do: the same
+/// panels, series and labels, every vertex within a pixel's rounding of the
+/// `f64` chart's (the values differ by f32's rounding, 6e-8 relative, far below
+/// the 0.01 px the SVG writes), and the CSV's numbers are the `f32` values
+/// widened exactly.
+#[test]
+fn f32_results_chart_and_tabulate_like_f64() {
+    let rows64 = out_rows();
+    let rows32: Vec<(f64, Option<Out<f32>>)> = rows64
+        .iter()
+        .map(|(x, o)| {
+            let o = o.as_ref().map(|o| Out {
+                a: o.a as f32,
+                p: Point2::new(o.p.x as f32, o.p.y as f32),
+            });
+            (*x, o)
+        })
+        .collect();
+    let svg64 = any::chart("t", ("x", "deg"), &rows64, &["a", "P"]).unwrap().to_svg().unwrap();
+    let svg32 = any::chart("t", ("x", "deg"), &rows32, &["a", "P"]).unwrap().to_svg().unwrap();
+    let ((d64, _), (d32, _)) = (parse(&svg64), parse(&svg32));
+    let (p64, p32) = (panels(&d64), panels(&d32));
+    assert_eq!(p64.len(), p32.len());
+    for (a, b) in p64.iter().zip(&p32) {
+        assert_eq!(a.series, b.series);
+        for (pa, pb) in a.paths.iter().zip(&b.paths) {
+            assert_eq!(pa.len(), pb.len());
+            for (u, v) in pa.iter().zip(pb) {
+                assert!((u[0] - v[0]).abs() <= 0.011 && (u[1] - v[1]).abs() <= 0.011, "{u:?} {v:?}");
+            }
+        }
+    }
+    let csv = any::csv("x", "deg", &rows32);
+    let header = csv.lines().next().unwrap();
+    assert_eq!(header, "x [deg],a [rad],P.x [mm],P.y [mm]");
+    let row: Vec<f64> = csv.lines().nth(2).unwrap().split(',').map(|c| c.parse().unwrap()).collect();
+    let o = rows32[1].1.as_ref().unwrap();
+    assert_eq!(row[1..], [f64::from(o.a), f64::from(o.p.x), f64::from(o.p.y)]);
+}
+
+/// Without a `units` statement the symbols stay: the CSV header and the
+/// chart's y labels say `L` (and the x axis what the caller says).
+#[test]
+fn a_definition_without_units_is_labelled_with_the_symbols() {
+    #[derive(Clone)]
+    struct Bare(f64);
+    impl Fields<f64> for Bare {
+        const FIELDS: &'static [Field] = &[Field {
+            name: "s",
+            quantity: Quantity::Velocity,
+            planar: false,
+        }];
+        const UNITS: Units = Units::SYMBOLS;
+        fn get(&self, name: &str) -> Option<Value<f64>> {
+            (name == "s").then_some(Value::Scalar(self.0))
+        }
+    }
+    let rows = vec![(0.0, Some(Bare(1.0))), (1.0, Some(Bare(2.0)))];
+    assert!(any::csv("x", "s", &rows).starts_with("x [s],s [L/s]\n"));
+    let svg = any::chart("t", ("x", "s"), &rows, &[]).unwrap().to_svg().unwrap();
+    let (doc, _) = parse(&svg);
+    let labels: Vec<&str> = with_class(doc.root_element(), "y-label")
+        .iter()
+        .map(|t| t.text().unwrap())
+        .collect();
+    assert_eq!(labels, ["velocity (L/s)"]);
+}
+
+/// A crank O-A about the ground pivot O, as the macro describes one, in mm.
+struct Crank;
+
+impl Describe for Crank {
+    const STRUCTURE: Structure = Structure {
+        name: "Crank",
+        points: &[
+            Point {
+                name: "O",
+                kind: PointKind::Ground,
+            },
+            Point {
+                name: "A",
+                kind: PointKind::Joint,
+            },
+        ],
+        links: &[Link {
+            name: "link2",
+            named: true,
+            kind: LinkKind::Crank,
+            points: &["O", "A"],
+            guide: None,
+        }],
+        guides: &[],
+        inputs: &[Input {
+            name: "theta",
+            quantity: Quantity::Angle,
+            driver: "A",
+        }],
+        masses: &[],
+        units: MM_N,
+    };
+}
+
+/// The crank's position: O and A.
+#[derive(Clone)]
+struct CrankAt<T: Real> {
+    o: Point2<T>,
+    a: Point2<T>,
+}
+
+impl<T: Real> Fields<T> for CrankAt<T> {
+    const FIELDS: &'static [Field] = &[
+        Field {
+            name: "O",
+            quantity: Quantity::Length,
+            planar: true,
+        },
+        Field {
+            name: "A",
+            quantity: Quantity::Length,
+            planar: true,
+        },
+    ];
+    const UNITS: Units = MM_N;
+    fn get(&self, name: &str) -> Option<Value<T>> {
+        match name {
+            "O" => Some(Value::Point(self.o)),
+            "A" => Some(Value::Point(self.a)),
+            _ => None,
+        }
+    }
+}
+
+/// An animation's captions give a crank's angle in degrees (the poses hold
+/// radians: 0.5236 rad is `theta = 30 deg`), its scale bar the definition's
+/// length unit; `f32` poses draw as `f64` ones do.
+#[test]
+fn captions_are_in_degrees_and_the_scale_in_the_units() {
+    let poses: Vec<(f64, Option<CrankAt<f32>>)> = (0..4)
+        .map(|k| {
+            let t = (30.0 * k as f64).to_radians();
+            let a = Point2::new(50.0 * t.cos() as f32, 50.0 * t.sin() as f32);
+            (t, Some(CrankAt { o: Point2::origin(), a }))
+        })
+        .collect();
+    let svg = any::sketch::<Crank, _>("crank", &poses, &[])
+        .unwrap()
+        .animation(2.0)
+        .unwrap();
+    let (doc, _) = parse(&svg);
+    let captions: Vec<&str> = with_class(doc.root_element(), "caption")
+        .iter()
+        .map(|t| t.text().unwrap())
+        .collect();
+    assert_eq!(
+        captions,
+        ["theta = 0 deg", "theta = 30 deg", "theta = 60 deg", "theta = 90 deg"]
+    );
+    let scale = with_class(doc.root_element(), "scale-label");
+    assert!(scale[0].text().unwrap().ends_with(" mm"), "the scale bar is in mm");
 }

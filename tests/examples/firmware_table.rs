@@ -16,7 +16,7 @@ use std::fmt::Write;
 
 const PATH: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
-    "/tests/firmware/src/expected.rs"
+    "/../tests/firmware/src/expected.rs"
 );
 
 fn table(name: &str, row: fn(f64) -> Result<[f64; 9], mechanism::Error>) -> String {

@@ -136,3 +136,49 @@ fn a_prismatic_reaction_and_a_push() {
          forces: r_ground_ram = (normal 20.000 F, moment 0.000 F L), drive_s = 6.000 F, condition = 1.000, power_residual = 0.000"
     );
 }
+
+mechanism! {
+    /// The ram of `Ram` with its units named: mm, N, kg and ms (labels
+    /// only; the numbers are the same).
+    pub RamInUnits {
+        units { length = "mm", force = "N", mass = "kg", time = "ms" }
+        outputs { P }
+        let line = guide((0.0, 0.0), 0 deg);
+        let P = slider(line, s) as ram;
+        mass ram { m = 2.0, at = P };
+        gravity (0.0, -10.0);
+    }
+}
+
+// Proves a `units` statement reaches every unit `Display` prints: the ram's
+// lines of `a_prismatic_reaction_and_a_push`, the same numbers, with `mm`
+// for `L`, `N` for `F` and `ms` for the time of the rates; and the
+// description carries the same names.
+#[test]
+fn a_units_statement_names_every_unit() {
+    use mechanism::structure::{Describe, Fields, Units};
+    let s = RamInUnits::<f64>::default()
+        .solve(
+            &RamInUnitsInput { s: 1.5 },
+            &RamInUnitsInput { s: 0.5 },
+            &RamInUnitsInput { s: 3.0 },
+        )
+        .unwrap();
+    assert_eq!(
+        format!("{s:.3}"),
+        "position: P = (1.500, 0.000) mm\n\
+         velocity: P = (0.500, 0.000) mm/ms, condition = 1.000\n\
+         acceleration: P = (3.000, 0.000) mm/ms^2\n\
+         forces: r_ground_ram = (normal 20.000 N, moment 0.000 N mm), drive_s = 6.000 N, condition = 1.000, power_residual = 0.000"
+    );
+    let units = Units {
+        length: "mm",
+        force: "N",
+        mass: "kg",
+        time: "ms",
+    };
+    assert_eq!(RamInUnits::<f64>::STRUCTURE.units, units);
+    assert_eq!(<RamInUnitsPosition<f64> as Fields<f64>>::UNITS, units);
+    assert_eq!(<RamInUnitsForces<f32> as Fields<f32>>::UNITS, units);
+    assert_eq!(Crank::<f64>::STRUCTURE.units, Units::SYMBOLS);
+}

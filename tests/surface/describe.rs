@@ -130,6 +130,7 @@ mechanism! {
     /// origin, the frame pivot Z at (-a, -l)). The triangles B-Z-D and E-C-F
     /// are written as groups of two links each: the same motion.
     pub JansenLeg {
+        units { length = "cm" }
         let O = ground(0.0, 0.0);
         let Z = ground(-38.0, -7.8);
         let A = crank(O, 15.0, theta) as crank;
@@ -161,7 +162,7 @@ fn jansen_leg_pictures_and_table_from_its_description_alone() {
         "the leg turns fully"
     );
     let sketch =
-        mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", "cm", &poses, &["F"]).unwrap();
+        mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", &poses, &["F"]).unwrap();
     assert_eq!(sketch.frame_count(), 73);
     let drawing = sketch.drawing(0).unwrap();
     for link in ["crank", "j", "b", "k", "c", "d", "e", "f", "g", "h", "i"] {
@@ -192,12 +193,8 @@ fn jansen_leg_pictures_and_table_from_its_description_alone() {
         .fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
     assert!(xmax - xmin > 30.0, "stride {}", xmax - xmin);
     // A chart of one output, the foot F, from its name alone: one panel of
-    // positions in cm with F.x and F.y over the turn.
-    let units = mechanism_plot::any::Units {
-        length: "cm",
-        force: "N",
-    };
-    let chart = mechanism_plot::any::chart("Jansen leg: foot", ("θ", "rad"), units, &poses, &["F"])
+    // positions in cm (the definition's `units`) with F.x and F.y over the turn.
+    let chart = mechanism_plot::any::chart("Jansen leg: foot", ("θ", "rad"), &poses, &["F"])
         .unwrap()
         .to_svg()
         .unwrap();
@@ -214,11 +211,11 @@ fn jansen_leg_pictures_and_table_from_its_description_alone() {
     let mut lines = table.lines();
     let header = lines.next().unwrap();
     assert!(
-        header.starts_with("theta [rad],O.x [L],O.y [L],"),
+        header.starts_with("theta [rad],O.x [cm],O.y [cm],"),
         "{header}"
     );
     assert!(
-        header.contains(",F.x [L],F.y [L],") && header.ends_with(",i [rad]"),
+        header.contains(",F.x [cm],F.y [cm],") && header.ends_with(",i [rad]"),
         "{header}"
     );
     assert_eq!(lines.count(), 73);
@@ -329,11 +326,7 @@ fn poses_that_fail_are_gaps_in_every_picture() {
     }
     let solved = rows.iter().filter(|(_, p)| p.is_some()).count();
     assert!(solved > 20 && solved < 60, "{solved} of 73 close");
-    let units = mechanism_plot::any::Units {
-        length: "mm",
-        force: "N",
-    };
-    let chart = mechanism_plot::any::chart("gaps", ("θ2", "deg"), units, &rows, &["link3"])
+    let chart = mechanism_plot::any::chart("gaps", ("θ2", "deg"), &rows, &["link3"])
         .unwrap()
         .to_svg()
         .unwrap();
@@ -350,7 +343,7 @@ fn poses_that_fail_are_gaps_in_every_picture() {
         "one vertex per solved row"
     );
     let sketch =
-        mechanism_plot::any::sketch::<FourBar<f64>, _>("gaps", "mm", &rows, &["P"]).unwrap();
+        mechanism_plot::any::sketch::<FourBar<f64>, _>("gaps", &rows, &["P"]).unwrap();
     assert_eq!(sketch.frame_count(), solved);
     let drawing = sketch.drawing(0).unwrap();
     assert_eq!(drawing.matches(r#"class="path" data-name="P""#).count(), 2);

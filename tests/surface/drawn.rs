@@ -268,7 +268,6 @@ fn the_drawn_four_bar_of_the_docs_draws_itself() {
     );
     let sketch = mechanism_plot::any::sketch_with::<DocFourBar, _>(
         "The four-bar as drawn",
-        "m",
         &poses,
         &["P"],
         |t| format!("θ = {:.0}°", t.to_degrees()),

@@ -5,6 +5,7 @@
 //! and trait methods nobody calls.
 
 use crate::kinds::{self, GuideLine};
+use crate::model::units::UnitNames;
 use crate::model::{Level, Model};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
@@ -29,7 +30,7 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
     ];
     for (k, (level, suffix)) in levels.into_iter().enumerate() {
         if model.level >= level {
-            out.extend(fields(plan, &format_ident!("{}{}", name, suffix), k));
+            out.extend(fields(model, plan, &format_ident!("{}{}", name, suffix), k));
         }
     }
     out
@@ -38,6 +39,25 @@ pub fn emit(model: &Model, plan: &Plan) -> TokenStream {
 fn path(item: &str) -> TokenStream {
     let item = format_ident!("{}", item);
     quote!(::mechanism::structure::#item)
+}
+
+/// The `mechanism::structure::Units` of the definition (its `units`
+/// statement; `Units::SYMBOLS` without one), for its `Structure`.
+fn units(model: &Model) -> TokenStream {
+    let u = &model.units;
+    let ty = path("Units");
+    if *u == UnitNames::symbols() {
+        return quote!(#ty::SYMBOLS);
+    }
+    let (length, force, mass, time) = (&u.length, &u.force, &u.mass, &u.time);
+    quote!(#ty { length: #length, force: #force, mass: #mass, time: #time })
+}
+
+/// The units of the result structs' `Fields` impls: the structure's, read
+/// from the mechanism's `Describe` impl (written once).
+pub fn units_of(model: &Model) -> TokenStream {
+    let name = &model.name;
+    quote!(<#name<T> as ::mechanism::structure::Describe>::STRUCTURE.units)
 }
 
 fn option_str(s: Option<String>) -> TokenStream {
@@ -130,6 +150,7 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
     });
     let name = model.name.to_string();
     let structure = path("Structure");
+    let units = units(model);
     quote! {
         #structure {
             name: #name,
@@ -138,6 +159,7 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
             guides: &[#(#guides),*],
             inputs: &[#(#inputs),*],
             masses: &[#(#masses),*],
+            units: #units,
         }
     }
 }
@@ -171,8 +193,8 @@ impl FieldEntry {
 }
 
 /// The `Fields` impl of the struct `ty` with `entries`, in order (empty for
-/// the stubs emitted on error).
-pub fn fields_impl(ty: &syn::Ident, entries: &[FieldEntry]) -> TokenStream {
+/// the stubs emitted on error), in the definition's `units` ([`units`]).
+pub fn fields_impl(ty: &syn::Ident, entries: &[FieldEntry], units: &TokenStream) -> TokenStream {
     let (field, quantity, value) = (path("Field"), path("Quantity"), path("Value"));
     let infos = entries.iter().map(|e| {
         let (n, q, planar) = (&e.name, format_ident!("{}", e.quantity), e.planar);
@@ -192,6 +214,7 @@ pub fn fields_impl(ty: &syn::Ident, entries: &[FieldEntry]) -> TokenStream {
     quote! {
         impl<T: ::mechanism::Real> ::mechanism::structure::Fields<T> for #ty<T> {
             const FIELDS: &'static [#field] = &[#(#infos),*];
+            const UNITS: ::mechanism::structure::Units = #units;
             #[allow(unused_variables)]
             fn get(&self, name: &::core::primitive::str) -> ::core::option::Option<#value<T>> {
                 #body
@@ -203,7 +226,7 @@ pub fn fields_impl(ty: &syn::Ident, entries: &[FieldEntry]) -> TokenStream {
 /// The `Fields` impl of one result struct: `level` 0 position, 1 velocity,
 /// 2 acceleration. Its fields are the definition's outputs (points, named
 /// links' angles and rates, slides), in the struct's order.
-fn fields(plan: &Plan, ty: &syn::Ident, level: usize) -> TokenStream {
+fn fields(model: &Model, plan: &Plan, ty: &syn::Ident, level: usize) -> TokenStream {
     let out = &plan.outputs;
     let [point_q, angle_q, slide_q] = [
         ["Length", "Angle", "Length"],
@@ -232,5 +255,5 @@ fn fields(plan: &Plan, ty: &syn::Ident, level: usize) -> TokenStream {
         let read = quote!(condition);
         entries.push(FieldEntry::new("condition".into(), "Ratio", "Scalar", read));
     }
-    fields_impl(ty, &entries)
+    fields_impl(ty, &entries, &units_of(model))
 }

@@ -1,6 +1,8 @@
 //! `Display` of the result structs: one line per struct, its label and the
-//! user's fields with their units, `L` standing for the definition's length
-//! unit and `F` for its force unit (mass x L / s^2):
+//! user's fields with their units: the definition's `units` statement
+//! (`units { length = "mm", force = "N" }` shows `mm`, `mm/s`, `N mm`), or
+//! without one `L` standing for the definition's length unit and `F` for its
+//! force unit (mass x L / s^2):
 //!
 //! ```text
 //! position: B = (307.929, 177.772) L, link3 = 0.533 rad, s = 1.250 L
@@ -15,30 +17,38 @@
 
 use super::forces::ForceField;
 use super::names::TypeNames;
+use crate::model::units::UnitNames;
 use crate::model::{Level, Model};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
-/// How one field is written.
+/// How one field is written (each unit with its leading space, `" mm/s"`;
+/// `""` for a ratio).
 enum Shown {
     /// A point or a vector: `NAME = (x, y) UNIT`.
-    Pair(&'static str),
+    Pair(String),
     /// A number: `NAME = x UNIT`.
-    Scalar(&'static str),
-    /// A prismatic pair's reaction.
-    Prismatic,
+    Scalar(String),
+    /// A prismatic pair's reaction: its force and moment units.
+    Prismatic(String, String),
+}
+
+/// `unit` with its leading space.
+fn spaced(unit: &str) -> String {
+    format!(" {unit}")
 }
 
 /// The `Display` impls of the definition's result structs (and solution),
 /// as far as its analysis level goes; `forces`: the forces struct's fields.
 pub fn emit(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>) -> TokenStream {
     let names = TypeNames::of(model);
-    let mut out = line_impl(&names.position, "position", &outputs(plan, 0));
+    let u = &model.units;
+    let mut out = line_impl(&names.position, "position", &outputs(plan, u, 0));
     if model.level >= Level::Velocity {
-        let mut fields = outputs(plan, 1);
-        fields.push((quote::format_ident!("condition"), Shown::Scalar("")));
+        let mut fields = outputs(plan, u, 1);
+        fields.push((quote::format_ident!("condition"), Shown::Scalar(String::new())));
         out.extend(line_impl(&names.velocity, "velocity", &fields));
     }
     if model.level < Level::Acceleration {
@@ -47,7 +57,7 @@ pub fn emit(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>) 
     out.extend(line_impl(
         &names.acceleration,
         "acceleration",
-        &outputs(plan, 2),
+        &outputs(plan, u, 2),
     ));
     let mut parts = vec![quote!(position), quote!(velocity), quote!(acceleration)];
     if let Some(f) = forces {
@@ -55,16 +65,16 @@ pub fn emit(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>) 
             .iter()
             .map(|(n, held)| {
                 let shown = match held {
-                    ForceField::Force => Shown::Pair(" F"),
-                    ForceField::Prismatic => Shown::Prismatic,
-                    ForceField::Torque => Shown::Scalar(" F L"),
-                    ForceField::Push => Shown::Scalar(" F"),
+                    ForceField::Force => Shown::Pair(spaced(&u.force)),
+                    ForceField::Prismatic => Shown::Prismatic(spaced(&u.force), spaced(&u.moment())),
+                    ForceField::Torque => Shown::Scalar(spaced(&u.moment())),
+                    ForceField::Push => Shown::Scalar(spaced(&u.force)),
                 };
                 (n.clone(), shown)
             })
             .collect();
         for extra in ["condition", "power_residual"] {
-            fields.push((quote::format_ident!("{}", extra), Shown::Scalar("")));
+            fields.push((quote::format_ident!("{}", extra), Shown::Scalar(String::new())));
         }
         out.extend(line_impl(&names.forces, "forces", &fields));
         parts.push(quote!(forces));
@@ -88,19 +98,26 @@ pub fn emit(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>) 
 
 /// The outputs of the position (`level` 0), velocity (1) or acceleration
 /// (2) struct, with their units.
-fn outputs(plan: &Plan, level: usize) -> Vec<(Ident, Shown)> {
-    let [point, angle, slide] = [
-        [" L", " rad", " L"],
-        [" L/s", " rad/s", " L/s"],
-        [" L/s^2", " rad/s^2", " L/s^2"],
-    ][level];
+fn outputs(plan: &Plan, u: &UnitNames, level: usize) -> Vec<(Ident, Shown)> {
+    let l = u.length();
+    let (length, angle) = match level {
+        0 => (l.to_string(), "rad".to_string()),
+        1 => (u.per_time(l), u.per_time("rad")),
+        _ => (u.per_time_squared(l), u.per_time_squared("rad")),
+    };
     let o = &plan.outputs;
-    let points = o.points.iter().map(|p| (p.clone(), Shown::Pair(point)));
-    let links = o.links.iter().map(|l| (l.clone(), Shown::Scalar(angle)));
+    let points = o
+        .points
+        .iter()
+        .map(|p| (p.clone(), Shown::Pair(spaced(&length))));
+    let links = o
+        .links
+        .iter()
+        .map(|k| (k.clone(), Shown::Scalar(spaced(&angle))));
     let slides = o
         .slides
         .iter()
-        .map(|s| (s.name.clone(), Shown::Scalar(slide)));
+        .map(|s| (s.name.clone(), Shown::Scalar(spaced(&length))));
     points.chain(links).chain(slides).collect()
 }
 
@@ -116,8 +133,8 @@ fn line_impl(ty: &Ident, label: &str, fields: &[(Ident, Shown)]) -> TokenStream 
                 quote!(#i::pair(f, #sep, #text, self.#name.x, self.#name.y, #unit)?;)
             }
             Shown::Scalar(unit) => quote!(#i::scalar(f, #sep, #text, self.#name, #unit)?;),
-            Shown::Prismatic => {
-                quote!(#i::prismatic(f, #sep, #text, self.#name.normal, self.#name.moment)?;)
+            Shown::Prismatic(force, moment) => {
+                quote!(#i::prismatic(f, #sep, #text, self.#name.normal, self.#name.moment, #force, #moment)?;)
             }
         }
     });

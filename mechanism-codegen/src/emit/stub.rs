@@ -81,7 +81,7 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
     // and the reactions and efforts of every statement that lowered (named
     // by the same per-kind code as the real forces struct).
     let (forces_stub, stub_loads_param, stub_forces_field) = if model.kinetics.declared
-        || model.level == Level::Forces
+        || model.level >= Level::Forces
     {
         let forces_ty = format_ident!("{}Forces", name);
         let loads_ty = format_ident!("{}Loads", name);
@@ -158,15 +158,17 @@ fn describe_stub(model: &Model) -> TokenStream {
     let name = &model.name;
     let text = name.to_string();
     let st = quote!(::mechanism::structure);
-    let forces = model.kinetics.declared || model.level == Level::Forces;
+    let forces = model.kinetics.declared || model.level >= Level::Forces;
+    let units = super::describe::units_of(model);
     let fields = ["Position", "Velocity", "Acceleration", "Forces"]
         .iter()
         .take(if forces { 4 } else { 3 })
-        .map(|s| super::describe::fields_impl(&format_ident!("{}{}", name, s), &[]));
+        .map(|s| super::describe::fields_impl(&format_ident!("{}{}", name, s), &[], &units));
     quote! {
         impl<T: ::mechanism::Real> #st::Describe for #name<T> {
             const STRUCTURE: #st::Structure = #st::Structure {
                 name: #text, points: &[], links: &[], guides: &[], inputs: &[], masses: &[],
+                units: #st::Units::SYMBOLS,
             };
         }
         #(#fields)*

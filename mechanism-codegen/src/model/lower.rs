@@ -24,6 +24,7 @@ pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
         _ => false,
     });
     let names = defined_names(&def.items);
+    let units = super::units::read(&def.items, errors);
     let Numbers {
         params,
         consts,
@@ -87,6 +88,7 @@ pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
         allowed: Allowed::Nothing,
         self_test: def.self_test,
         unknown_kinds,
+        units,
     };
     model.inputs = inputs::inputs(&model, &checks.ranges, errors);
     model.allowed = inputs::allowances(&model, &checks.allow, errors);
@@ -332,7 +334,7 @@ impl<'a> Body<'a> {
             }
             Item::Range(r) => self.range(r),
             Item::Allow(span, what, groups) => self.checks.allow.push((span, what, groups)),
-            Item::Loads(_) => {}
+            Item::Loads(_) | Item::Units(..) => {}
             Item::Params(_) | Item::Const(_) => {}
             // Replaced by group statements before the body is lowered.
             Item::Joints(..)
@@ -357,12 +359,13 @@ impl<'a> Body<'a> {
             "velocity" => Level::Velocity,
             "acceleration" => Level::Acceleration,
             "forces" => Level::Forces,
+            "dynamics" => Level::Dynamics,
             other => {
-                let known = ["position", "velocity", "acceleration", "forces"];
+                let known = ["position", "velocity", "acceleration", "forces", "dynamics"];
                 errors.push(
                     what.span(),
                     format!(
-                        "this definition cannot give the analysis `{other}`; write `position`, `velocity`, `acceleration` or `forces`{}",
+                        "this definition cannot give the analysis `{other}`; write `position`, `velocity`, `acceleration`, `forces` or `dynamics`{}",
                         did_you_mean(other, known)
                     ),
                 );

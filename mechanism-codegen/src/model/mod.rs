@@ -14,6 +14,7 @@ mod kinds;
 mod kinetics;
 mod lower;
 pub mod modes;
+pub mod units;
 
 pub use inputs::{Allowed, Input, RangeSpans};
 pub use lower::lower;
@@ -34,6 +35,9 @@ pub enum Level {
     Acceleration,
     /// Everything, and the force analysis (the default with loads).
     Forces,
+    /// Everything, the force analysis and the forward dynamics in the
+    /// inputs' coordinates (`analysis dynamics;`, with masses).
+    Dynamics,
 }
 
 /// Assembly mode as written.
@@ -86,6 +90,9 @@ pub struct Model {
     /// A statement's kind is unknown (reported): no other statement is
     /// blamed for what it would have defined (a missing driver, say).
     pub unknown_kinds: bool,
+    /// The names of the definition's units (`units { .. }`; the symbols
+    /// `L`, `F`, `M`, `s` without it).
+    pub units: units::UnitNames,
 }
 
 /// What the force analysis needs: masses, gravity and external loads.
@@ -160,7 +167,7 @@ pub struct TorqueSpec {
 impl Model {
     /// `true` when the definition asks for the force analysis.
     pub fn has_forces(&self) -> bool {
-        self.level == Level::Forces
+        self.level >= Level::Forces
     }
 }
 

@@ -20,6 +20,7 @@
 //!             | 'torque' 'on' IDENT '=' expr ';'
 //!             | 'range' IDENT '=' '(' arg ',' arg ')' ';'
 //!             | 'allow' 'singular' (IDENT,*)? ';'
+//!             | 'units' '{' (IDENT '=' STRING),* '}'
 //! arg        := 'from' IDENT | expr ('deg' | 'rad')?
 //! links      := IDENT | '(' IDENT,* ')'
 //! names      := IDENT | '(' IDENT,* ')'
@@ -114,6 +115,10 @@ pub enum Item {
     /// mode parameter (`elbow`) read by the group that places the joint (or
     /// slides the block) `C`, its default the drawing's assembly.
     Mode(Ident, Ident),
+    /// `units { length = "mm", force = "N" }`: the names of the
+    /// definition's units, for labels (read in `model::units`), with the
+    /// keyword's span.
+    Units(Span, Vec<Assign>),
 }
 
 /// `cylinder CYL from B to C;` of the drawn form.
@@ -219,7 +224,7 @@ pub enum ForceValue {
 /// The words that begin a statement (besides `let` and `const`).
 const STATEMENTS: &[&str] = &[
     "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "motor",
-    "range", "allow", "joints", "links", "input", "slider", "cylinder", "mode",
+    "range", "allow", "joints", "links", "input", "slider", "cylinder", "units", "mode",
 ];
 
 /// Unit words a user may write after a value where none is taken (in a
@@ -726,7 +731,7 @@ mod tests {
         let (message, _, column) = error("pub M { forse at E = (1.0, 0.0); }");
         assert_eq!(
             message,
-            "unknown statement `forse`; expected `let`, `const`, `params`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `motor`, `range`, `allow`, `joints`, `links`, `input`, `slider`, `cylinder` or `mode`; did you mean `force`?"
+            "unknown statement `forse`; expected `let`, `const`, `params`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `motor`, `range`, `allow`, `joints`, `links`, `input`, `slider`, `cylinder`, `units` or `mode`; did you mean `force`?"
         );
         assert_eq!(column, 8);
     }

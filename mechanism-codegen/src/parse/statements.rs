@@ -65,6 +65,7 @@ impl Parse for Item {
             "slider" => parse_slider(input, start),
             "cylinder" => parse_cylinder(input, start),
             "mode" => parse_mode(input, start),
+            "units" => Ok(Item::Units(word.span(), units_list(input)?)),
             other => Err(syn::Error::new(
                 word.span(),
                 format!(
@@ -678,6 +679,18 @@ fn drawn_list(input: ParseStream, word: &str) -> syn::Result<Vec<Assign>> {
     };
     braced_assignments(input, word, example, &|_, u| {
         Some(format!("`{u}` has no place in `{word}`: `{example}`"))
+    })
+}
+
+/// `{ length = "mm", .. }` of `units`; the names and values are read in
+/// `model::units`.
+fn units_list(input: ParseStream) -> syn::Result<Vec<Assign>> {
+    let example = r#"units { length = "mm", force = "N", mass = "kg", time = "s" }"#;
+    braced_assignments(input, "units", example, &|a, u| {
+        Some(format!(
+            "`{u}` has no place here: a unit is named by a string, `{} = \"{u}\"`",
+            a.name
+        ))
     })
 }
 

@@ -53,6 +53,7 @@ pub enum ForceField {
 }
 
 pub(crate) use crate::kinds::forces::{Held, Reaction};
+pub(crate) use loads::masses_by_link;
 
 struct ForceEmitter<'a> {
     model: &'a Model,
@@ -237,7 +238,7 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode
     unique_names(&mut em.reactions);
     let loads = loads_struct(model, &names);
     let mut items = forces_struct(model, &names, &em.reactions, loads.item);
-    items.extend(forces_fields(&names, &em.reactions));
+    items.extend(forces_fields(model, &names, &em.reactions));
     let mut methods = forces_method(&names, &em, &loads.param);
     methods.extend(em.extra_methods.clone());
     let fields = em
@@ -415,7 +416,7 @@ fn forces_struct(
 /// The forces struct's `Fields` impl (`mechanism::structure`): every
 /// reaction and effort by name with its quantity, a prismatic pair's as
 /// `NAME.force` and `NAME.moment`, then `condition` and `power_residual`.
-fn forces_fields(names: &TypeNames, reactions: &[Reaction]) -> TokenStream {
+fn forces_fields(model: &Model, names: &TypeNames, reactions: &[Reaction]) -> TokenStream {
     let mut entries = Vec::new();
     for r in reactions {
         let (n, text) = (&r.name, r.name.to_string());
@@ -440,7 +441,7 @@ fn forces_fields(names: &TypeNames, reactions: &[Reaction]) -> TokenStream {
         let f = format_ident!("{}", extra);
         entries.push(FieldEntry::new(extra.into(), "Ratio", "Scalar", quote!(#f)));
     }
-    fields_impl(&names.forces, &entries)
+    fields_impl(&names.forces, &entries, &super::describe::units_of(model))
 }
 
 /// The `forces` method: the emitter's code, then the struct's value.

@@ -1,7 +1,7 @@
 use mechanism::mechanism;
 
 mechanism! {
-    /// Crank-rocker four-bar of seed 002 (mm).
+    /// Crank-rocker four-bar with a coupler point P (mm).
     pub FourBar {
         params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
         let O2 = ground(0.0, 0.0);
