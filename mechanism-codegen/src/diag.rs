@@ -125,6 +125,21 @@ pub fn did_you_mean<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str
     }
 }
 
+/// `n` and the noun it counts, singular for 1: `1 input`, `2 inputs`.
+pub fn counted(n: impl Into<i64>, singular: &str, plural: &str) -> String {
+    let n = n.into();
+    format!("{n} {}", if n == 1 { singular } else { plural })
+}
+
+/// The verb after a count of `n`: `is` for 1, else `are`.
+pub fn is_are(n: impl Into<i64>) -> &'static str {
+    if n.into() == 1 {
+        "is"
+    } else {
+        "are"
+    }
+}
+
 /// A number for a message: up to 6 decimals, trailing zeros removed.
 pub fn show_num(x: f64) -> String {
     let s = format!("{x:.6}");

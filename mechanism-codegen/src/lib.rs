@@ -33,6 +33,17 @@ pub fn expand(input: TokenStream) -> TokenStream {
         Ok(d) => d,
         Err(e) => return e.to_compile_error(),
     };
+    let krate = definition.krate.clone();
+    let code = expand_definition(definition);
+    match &krate {
+        Some(path) => emit::krate::rename(code, path),
+        None => code,
+    }
+}
+
+/// The pipeline on a parsed definition, every path to the facade written
+/// `::mechanism`.
+fn expand_definition(definition: parse::Definition) -> TokenStream {
     let mut diag = diag::Diagnostics::new();
     let mut model = model::lower(definition, &mut diag);
     validate::model(&model, &mut diag);

@@ -732,6 +732,65 @@ fn cases() -> Vec<Case> {
             says: &["`P` is a point", "guide"],
         },
         Case {
+            name: "force along the drawn block's line by its short name",
+            src: body(
+                "    joints { O = (0.0, 0.0), A = (1.0, 0.0), B = (4.0, 0.5) }
+    links { ground = [O], crank = [O, A], rod = [A, B] }
+    slider ram at B on ground along 0 deg;
+    input theta = angle(crank);
+    mass rod { m = 1.0, at = B };
+    force at B on ram along line = 1.0;",
+            ),
+            at: "along ^line",
+            says: &["cannot find guide `line`", "did you mean `ram_line`?"],
+        },
+        Case {
+            name: "force along an unknown guide lists the guides",
+            src: loaded("    force at C on ram along slideway = 1.0;"),
+            at: "along ^slideway",
+            says: &["cannot find guide `slideway`", "the guides are `line`"],
+        },
+        Case {
+            name: "a drawn mode on a joint a crank places",
+            src: body(
+                "    joints { O2 = (0.0, 0.0), O4 = (4.0, 0.0), A = (0.5, 0.9), B = (3.2, 2.1) }
+    links { ground = [O2, O4], crank = [O2, A], coupler = [A, B], rocker = [O4, B] }
+    input theta = angle(crank);
+    mode m = assembly(A);",
+            ),
+            at: "assembly(^A)",
+            says: &["`A` is placed by a `crank`", "single assembly"],
+        },
+        Case {
+            name: "a drawn mode on an unknown joint",
+            src: body(
+                "    joints { O2 = (0.0, 0.0), O4 = (4.0, 0.0), A = (0.5, 0.9), B = (3.2, 2.1) }
+    links { ground = [O2, O4], crank = [O2, A], coupler = [A, B], rocker = [O4, B] }
+    input theta = angle(crank);
+    mode m = assembly(Bx);",
+            ),
+            at: "assembly(^Bx)",
+            says: &["`Bx` is no joint or block of the drawing", "did you mean `B`?"],
+        },
+        Case {
+            name: "a drawn mode without a drawing",
+            src: four_bar("    mode m = assembly(B);"),
+            at: "mode ^m",
+            says: &["belongs to the drawn form", "params { m = left }"],
+        },
+        Case {
+            name: "two drawn modes on one joint",
+            src: body(
+                "    joints { O2 = (0.0, 0.0), O4 = (4.0, 0.0), A = (0.5, 0.9), B = (3.2, 2.1) }
+    links { ground = [O2, O4], crank = [O2, A], coupler = [A, B], rocker = [O4, B] }
+    input theta = angle(crank);
+    mode m = assembly(B);
+    mode n = assembly(B);",
+            ),
+            at: "n = assembly(^B)",
+            says: &["already the mode parameter of another `mode` statement"],
+        },
+        Case {
             name: "torque on the ground",
             src: loaded("    torque on ground = 1.0;"),
             at: "torque on ^ground",

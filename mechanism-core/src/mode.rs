@@ -19,6 +19,22 @@ pub enum Mode {
 }
 
 impl Mode {
+    /// The other mode: the other closure of the same group (`Plus` and
+    /// `Minus` swapped).
+    ///
+    /// ```
+    /// use mechanism_core::Mode;
+    /// assert_eq!(Mode::Plus.flipped(), Mode::Minus);
+    /// assert_eq!(Mode::Minus.flipped().flipped(), Mode::Minus);
+    /// ```
+    #[inline(always)]
+    pub const fn flipped(self) -> Mode {
+        match self {
+            Mode::Plus => Mode::Minus,
+            Mode::Minus => Mode::Plus,
+        }
+    }
+
     /// `+1` or `-1` in the scalar type.
     #[inline(always)]
     pub fn sign<T: Real>(self) -> T {

@@ -1328,6 +1328,29 @@ mechanism! {
 }
 
 #[test]
+fn a_drawn_rrp_names_its_blocks_slide() {
+    // Proves the drawn form gives the RRP it finds a slide output, named as
+    // an RPR's is, `BLOCK_slide`: `block_b_slide` is B's displacement up its
+    // line (90 deg) from its drawn place (0, 0.16), in position, rate and
+    // acceleration, over A's travel. B = origin + slide * dir, so the two
+    // differ by the rounding of that sum and of cos(90 deg) ~ 6e-17 times
+    // x: 4 ulps of the largest value (0.36) bound it.
+    let d = DrawnTrammel::<f64>::default();
+    let tol = 4.0 * f64::EPSILON * 0.36;
+    for k in -19..=19 {
+        let s = k as f64 / 100.0 - 0.12;
+        let p = d.position(&DrawnTrammelInput { s }).unwrap();
+        let v = d.velocity(&p, &DrawnTrammelInput { s: 0.5 }).unwrap();
+        let a = d
+            .acceleration(&p, &v, &DrawnTrammelInput { s: -2.0 })
+            .unwrap();
+        assert!((p.block_b_slide - (p.B.y - 0.16)).abs() <= tol, "{s}");
+        assert!((v.block_b_slide - v.B.y).abs() <= tol * 10.0, "{s}");
+        assert!((a.block_b_slide - a.B.y).abs() <= tol * 100.0, "{s}");
+    }
+}
+
+#[test]
 fn a_drawn_trammel_is_the_grouped_one_with_its_forces() {
     // Proves: a ground with no pin (`ground = []`, two blocks on its lines)
     // and a rod whose joints are on blocks only decompose into the slider

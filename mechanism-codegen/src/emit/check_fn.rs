@@ -16,16 +16,49 @@ pub(crate) fn det_code(model: &Model, stmt_index: StmtId) -> TokenStream {
     kinds::of(&model.stmts[stmt_index]).det_code()
 }
 
-/// The generated `check()` method (empty when an input has no range).
-pub fn emit_check(model: &Model, plan: &Plan, summary: &str) -> TokenStream {
+/// The generated `check()` method: the items to put beside the mechanism's
+/// (empty, or the trait of [`uncallable`]) and the method.
+pub struct CheckFn {
+    pub items: TokenStream,
+    pub method: TokenStream,
+}
+
+/// The generated `check()`. It sweeps the ranges the definition gives
+/// (declared by `range`, or a crank's full turn for a one-input
+/// mechanism). Where the definition gives none for an input (a slider, a
+/// cylinder, a target's coordinate, either of two inputs not both declared),
+/// or the inputs are more than two, `check()` still exists, and a call is a
+/// compile error saying which `range` statements to add ([`uncallable`]).
+pub fn emit_check(model: &Model, plan: &Plan, summary: &str) -> CheckFn {
     let inputs = &model.inputs;
     let checked = checked(model, plan);
-    if inputs.is_empty()
-        || inputs.len() > 2
-        || inputs.iter().any(|i| i.range.is_none())
-        || (inputs.len() == 2 && inputs.iter().any(|i| !i.declared))
-    {
-        return TokenStream::new();
+    if inputs.is_empty() || inputs.len() > 2 {
+        let why = format!(
+            "`{}::check()` sweeps one or two inputs, and this mechanism has {}; check the run-time cases with `position()`",
+            model.name,
+            inputs.len()
+        );
+        return uncallable(model, &why);
+    }
+    let missing: Vec<&Ident> = inputs
+        .iter()
+        .filter(|i| i.range.is_none() || (inputs.len() == 2 && !i.declared))
+        .map(|i| &i.name)
+        .collect();
+    if !missing.is_empty() {
+        let declare: Vec<String> = missing
+            .iter()
+            .map(|i| format!("`range {i} = (lo, hi);`"))
+            .collect();
+        let quoted: Vec<String> = missing.iter().map(|i| format!("`{i}`")).collect();
+        let why = format!(
+            "`{}::check()` sweeps the input ranges the definition gives, and it gives none for {}{}: add {} to the definition",
+            model.name,
+            quoted.join(" and "),
+            if inputs.len() == 2 { " (a two-input sweep takes both ranges declared)" } else { "" },
+            declare.join(" and "),
+        );
+        return uncallable(model, &why);
     }
     let name = &model.name;
     let input_ty = format_ident!("{}Input", name);
@@ -67,7 +100,7 @@ pub fn emit_check(model: &Model, plan: &Plan, summary: &str) -> TokenStream {
         group_names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", "),
         if d == 1 { "4000" } else { "15000" }
     );
-    quote! {
+    let method = quote! {
         #[doc = #doc]
         #[allow(clippy::all)]
         pub fn check(&self) -> ::mechanism::sweep::Report<#g, #d> {
@@ -87,5 +120,38 @@ pub fn emit_check(model: &Model, plan: &Plan, summary: &str) -> TokenStream {
             #sweep_call
             report
         }
+    };
+    CheckFn {
+        items: TokenStream::new(),
+        method,
+    }
+}
+
+/// `check()` for a definition that gives it nothing to sweep: it exists, so
+/// that a call finds it (rather than no method, or an unrelated trait's),
+/// and its bound is a trait of the definition's own that nothing implements,
+/// whose `on_unimplemented` message, `why`, is the compile error at the call.
+/// It returns `()`: it can never run.
+fn uncallable(model: &Model, why: &str) -> CheckFn {
+    let name = &model.name;
+    let vis = &model.vis;
+    let bound = format_ident!("{}CheckNeedsRanges", name);
+    let doc = format!("Not available for this definition: {why}.");
+    let label = "`check()` has no range to sweep";
+    CheckFn {
+        items: quote! {
+            #[doc(hidden)]
+            #[diagnostic::on_unimplemented(message = #why, label = #label)]
+            #vis trait #bound {
+                /// Never called: nothing implements the trait.
+                fn never(&self);
+            }
+        },
+        method: quote! {
+            #[doc = #doc]
+            pub fn check(&self) where Self: #bound {
+                <Self as #bound>::never(self)
+            }
+        },
     }
 }

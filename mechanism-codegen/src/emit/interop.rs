@@ -177,8 +177,9 @@ fn deserialize_impl(model: &Model, t: &DataType) -> TokenStream {
             }
         })
         .collect();
-    // The mechanism's struct without parameters has a marker field.
-    let marker = (*ty == model.name && fields.is_empty())
+    // The mechanism's struct without numeric parameters (none, or modes
+    // only) has a marker field.
+    let marker = (*ty == model.name && model.params.is_empty())
         .then(|| quote!(_scalar: ::core::marker::PhantomData,));
     let serde_path = "::mechanism::__interop::serde";
     quote! {

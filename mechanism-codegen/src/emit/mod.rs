@@ -15,6 +15,7 @@ mod display;
 pub mod dynamics;
 pub mod forces;
 mod interop;
+pub mod krate;
 mod names;
 mod position;
 mod rates;
@@ -46,14 +47,16 @@ pub fn mechanism(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream
         .map(|_| self_test::emit(model, plan, findings));
     // The position struct keeps the fields these read (`pos.NAME`).
     let mut readers = Reads::default();
-    readers.scan(&check);
+    readers.scan(&check.method);
     if let Some(tests) = &self_tests {
         readers.scan(tests);
     }
     let mut out = items(model, plan, readers);
     let name = &model.name;
     let allow_lints = allow_literal_lints();
+    let (check_items, check) = (check.items, check.method);
     out.extend(quote! {
+        #check_items
         #allow_lints
         impl<T: ::mechanism::Real> #name<T> { #check }
     });

@@ -42,10 +42,11 @@ pub(super) fn own_items(model: &Model, plan: &Plan, inputs: &[Ident]) -> Generat
     let (name, vis, docs, input_ty) = (&names.name, &model.vis, &model.docs, &names.input);
     let param_names: Vec<&Ident> = model.params.iter().map(|(n, _)| n).collect();
     let param_defaults: Vec<TokenStream> = model.params.iter().map(|(_, v)| lit(*v)).collect();
-    // With `params` the struct can be written out in full
-    // (`FourBar { ground: 0.3, crank: 0.1, .. }`, no hidden field).
-    let (params_marker, params_marker_init) =
-        marker(param_names.is_empty() && model.modes.is_empty());
+    // With numeric `params` the struct can be written out in full
+    // (`FourBar { ground: 0.3, crank: 0.1, .. }`, no hidden field); mode
+    // parameters are `Mode`s, not `T`s, so a struct of modes alone still
+    // needs the marker for its `T`.
+    let (params_marker, params_marker_init) = marker(param_names.is_empty());
     let mode_names: Vec<&Ident> = model.modes.iter().map(|(n, _)| n).collect();
     let mode_defaults: Vec<TokenStream> =
         model.modes.iter().map(|(_, m)| mode_tokens(*m)).collect();

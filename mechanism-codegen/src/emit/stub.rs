@@ -23,6 +23,7 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
     let input_ty = format_ident!("{}Input", name);
     let solution_ty = format_ident!("{}Solution", name);
     let params: Vec<&Ident> = model.params.iter().map(|(n, _)| n).collect();
+    let modes: Vec<&Ident> = model.modes.iter().map(|(n, _)| n).collect();
     let mut seen = BTreeSet::new();
     let mut unique = |i: &Ident| seen.insert(i.to_string());
     let inputs: Vec<Ident> = model
@@ -51,7 +52,7 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
             model
                 .failed
                 .iter()
-                .filter(|f| f.kind != "guide" && f.kind != "rpr")
+                .filter(|f| f.names_point())
                 .map(|f| &f.name),
         )
         .filter(|i| unique(i))
@@ -123,7 +124,7 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
         #describe
         #forces_stub
         #[allow(non_snake_case, dead_code)]
-        #vis struct #name<T = ::core::primitive::f64> { #(pub #params: T,)* #params_marker }
+        #vis struct #name<T = ::core::primitive::f64> { #(pub #params: T,)* #(pub #modes: ::mechanism::Mode,)* #params_marker }
         impl<T: ::mechanism::Real> ::core::default::Default for #name<T> {
             fn default() -> Self { ::core::unimplemented!() }
         }

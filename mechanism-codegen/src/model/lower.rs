@@ -29,7 +29,7 @@ pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
         params,
         consts,
         loads,
-        modes,
+        mut modes,
     } = numbers(&def.items, &names, errors);
     let scope = NumberScope {
         consts: &consts,
@@ -42,7 +42,8 @@ pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
         allow_loads: true,
         ..scope
     };
-    let (items, drawing_failed) = drawn::expand(def.items, &scope, errors);
+    let (items, drawing_failed, drawn_modes) = drawn::expand(def.items, &scope, errors);
+    modes.extend(drawn_modes);
     let mut body = Body::new(&scope, &load_scope, loads.clone());
     body.modes = modes.clone();
     body.failed = drawing_failed;
@@ -102,6 +103,9 @@ fn defined_names(items: &[Item]) -> Vec<(String, &'static str)> {
         if let Item::Params(list) = item {
             let modes = list.iter().filter(|p| modes::mode_word(&p.value).is_some());
             names.extend(modes.map(|p| (p.name.to_string(), MODE_PARAM)));
+        }
+        if let Item::Mode(name, _) = item {
+            names.push((name.to_string(), MODE_PARAM));
         }
         if let Item::Let(l) = item {
             let kind = l.kind.to_string();
@@ -337,7 +341,8 @@ impl<'a> Body<'a> {
             | Item::Links(..)
             | Item::Input(..)
             | Item::Slider(..)
-            | Item::Cylinder(..) => {}
+            | Item::Cylinder(..)
+            | Item::Mode(..) => {}
         }
     }
 
@@ -416,8 +421,13 @@ impl<'a> Body<'a> {
             errors.push(
                 l.slides[0].span(),
                 format!(
-                    "`{}` has {want_slides} slide displacement(s) to name, not {}",
+                    "`{}` has {} to name, not {}",
                     l.kind,
+                    crate::diag::counted(
+                        want_slides as i64,
+                        "slide displacement",
+                        "slide displacements"
+                    ),
                     l.slides.len()
                 ),
             );

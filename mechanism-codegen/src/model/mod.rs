@@ -185,6 +185,19 @@ pub struct Failed {
     pub inputs: Vec<Ident>,
 }
 
+impl Failed {
+    /// Whether its name is a point (the `let` of a point-placing kind, or a
+    /// drawing's joint), rather than a guide, an RPR's slide, or a drawing's
+    /// link, cylinder or input (kinds `links`, `cylinder`, `input`), whose
+    /// names are in `links` and `inputs`.
+    pub fn names_point(&self) -> bool {
+        !matches!(
+            self.kind.to_string().as_str(),
+            "guide" | "rpr" | "links" | "cylinder" | "input"
+        )
+    }
+}
+
 /// A `let` statement of the definition, by its place in the order written
 /// (`Model::stmts[id]`). The plan's solve order, the owners of points and
 /// the findings of the expansion-time check name statements by it.

@@ -19,14 +19,14 @@ const WORDS: [(&str, Mode); 4] = [
 
 /// The mode a parameter's default names, when it is a mode word (`left`,
 /// `right`, `plus`, `minus`), `None` for anything else (a number).
-pub(super) fn mode_word(value: &Expr) -> Option<Mode> {
+pub(in crate::model) fn mode_word(value: &Expr) -> Option<Mode> {
     let Expr::Path(p) = value else { return None };
     let word = p.path.get_ident()?.to_string();
     WORDS.iter().find(|(w, _)| *w == word).map(|(_, m)| *m)
 }
 
 /// The position of the mode among a statement kind's arguments.
-fn mode_index(kind: &str) -> Option<usize> {
+pub(in crate::model) fn mode_index(kind: &str) -> Option<usize> {
     match kind {
         "rrr" | "actuator" => Some(4),
         "rrp" => Some(3),

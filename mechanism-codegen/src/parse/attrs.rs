@@ -64,10 +64,14 @@ pub struct Attrs {
     pub self_test: Option<Span>,
     /// The derives, in order.
     pub derives: Vec<Derive>,
+    /// `#[mechanism(crate = PATH)]`: the path the generated code names the
+    /// facade by, for a dependency renamed in Cargo.toml (`None`:
+    /// `::mechanism`).
+    pub krate: Option<Path>,
 }
 
 /// What a definition accepts, for the messages.
-const ACCEPTED: &str = "a definition takes doc comments (`///`), `#[self_test]`, `#[derive(..)]` and `#[cfg_attr(PREDICATE, derive(..))]`";
+const ACCEPTED: &str = "a definition takes doc comments (`///`), `#[self_test]`, `#[derive(..)]`, `#[cfg_attr(PREDICATE, derive(..))]` and `#[mechanism(crate = PATH)]`";
 
 /// A doc attribute as `///` writes it: `#[doc = "text"]`. Anything else
 /// (`#[doc = - "text"]`, `#[doc(hidden)]`) would be copied onto the
@@ -99,6 +103,7 @@ pub fn sort(attrs: Vec<Attribute>) -> syn::Result<Attrs> {
         docs: Vec::new(),
         self_test: None,
         derives: Vec::new(),
+        krate: None,
     };
     for attr in attrs {
         let path = attr.path();
@@ -121,6 +126,8 @@ pub fn sort(attrs: Vec<Attribute>) -> syn::Result<Attrs> {
             out.self_test = Some(attr.span());
         } else if path.is_ident("derive") || path.is_ident("cfg_attr") {
             meta(&attr.meta, None, &mut out.derives)?;
+        } else if path.is_ident("mechanism") {
+            crate_path(&attr, &mut out.krate)?;
         } else {
             return Err(unknown(&attr));
         }
@@ -170,6 +177,34 @@ fn meta(meta: &Meta, cfg: Option<&TokenStream>, derives: &mut Vec<Derive>) -> sy
     cfg_attr(meta, cfg, derives)
 }
 
+/// `#[mechanism(crate = PATH)]` (or `crate = "PATH"`, as serde writes it):
+/// the facade's path in the user's crate, once.
+fn crate_path(attr: &Attribute, krate: &mut Option<Path>) -> syn::Result<()> {
+    let usage = "write `#[mechanism(crate = pm)]` with the name your Cargo.toml gives the `planar-mechanism` dependency (`pm = { package = \"planar-mechanism\", .. }`)";
+    attr.parse_nested_meta(|m| {
+        if !m.path.is_ident("crate") {
+            return Err(m.error(format!("`#[mechanism(..)]` takes `crate = PATH`; {usage}")));
+        }
+        let value = m.value()?;
+        let path: Path = if value.peek(syn::LitStr) {
+            value.parse::<syn::LitStr>()?.parse()?
+        } else {
+            value.parse()?
+        };
+        if krate.replace(path).is_some() {
+            return Err(m.error("`crate = ..` is given twice; keep one"));
+        }
+        Ok(())
+    })
+    .map_err(|e| {
+        if e.to_string().contains("crate") {
+            e
+        } else {
+            syn::Error::new(e.span(), format!("{e}; {usage}"))
+        }
+    })
+}
+
 /// The error on an attribute a definition does not take (`attr`: its tokens).
 fn unknown(attr: &Attribute) -> syn::Error {
     let word = attr.path().to_token_stream().to_string().replace(' ', "");
@@ -179,7 +214,7 @@ fn unknown(attr: &Attribute) -> syn::Error {
         "repr" | "non_exhaustive" | "allow" | "warn" | "deny" | "must_use" => {
             "; the layout, lints and attributes of the generated types are fixed: remove it".to_string()
         }
-        _ => crate::diag::did_you_mean(&word, ["self_test", "derive", "cfg_attr"]),
+        _ => crate::diag::did_you_mean(&word, ["self_test", "derive", "cfg_attr", "mechanism"]),
     };
     syn::Error::new_spanned(
         attr,

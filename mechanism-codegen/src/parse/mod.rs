@@ -49,6 +49,9 @@ pub struct Definition {
     /// `#[derive(..)]`s (also inside `#[cfg_attr(..)]`), passed on to the
     /// generated types.
     pub derives: Vec<Derive>,
+    /// `#[mechanism(crate = PATH)]`: the facade's path for a renamed
+    /// dependency (`None`: `::mechanism`).
+    pub krate: Option<syn::Path>,
     /// Visibility of the generated items.
     pub vis: Visibility,
     /// Name of the mechanism type.
@@ -108,6 +111,10 @@ pub enum Item {
     /// The drawn form: `cylinder CYL from B to C;` (or `cylinder (BARREL,
     /// ROD) from B to C;`), a linear actuator pinned at joints `B` and `C`.
     Cylinder(DrawnCylinder),
+    /// The drawn form: `mode elbow = assembly(C);`, a run-time assembly
+    /// mode parameter (`elbow`) read by the group that places the joint (or
+    /// slides the block) `C`, its default the drawing's assembly.
+    Mode(Ident, Ident),
     /// `units { length = "mm", force = "N" }`: the names of the
     /// definition's units, for labels (read in `model::units`), with the
     /// keyword's span.
@@ -217,7 +224,7 @@ pub enum ForceValue {
 /// The words that begin a statement (besides `let` and `const`).
 const STATEMENTS: &[&str] = &[
     "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "motor",
-    "range", "allow", "joints", "links", "input", "slider", "cylinder", "units",
+    "range", "allow", "joints", "links", "input", "slider", "cylinder", "units", "mode",
 ];
 
 /// Unit words a user may write after a value where none is taken (in a
@@ -501,6 +508,7 @@ impl Parse for Definition {
             docs,
             self_test,
             derives,
+            krate,
         } = attrs::sort(input.call(Attribute::parse_outer)?)?;
         let vis = input.parse()?;
         let name: Ident = input.parse().map_err(|e| {
@@ -539,6 +547,7 @@ impl Parse for Definition {
             docs,
             self_test,
             derives,
+            krate,
             vis,
             name,
             items,
@@ -722,7 +731,7 @@ mod tests {
         let (message, _, column) = error("pub M { forse at E = (1.0, 0.0); }");
         assert_eq!(
             message,
-            "unknown statement `forse`; expected `let`, `const`, `params`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `motor`, `range`, `allow`, `joints`, `links`, `input`, `slider`, `cylinder` or `units`; did you mean `force`?"
+            "unknown statement `forse`; expected `let`, `const`, `params`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `motor`, `range`, `allow`, `joints`, `links`, `input`, `slider`, `cylinder`, `units` or `mode`; did you mean `force`?"
         );
         assert_eq!(column, 8);
     }

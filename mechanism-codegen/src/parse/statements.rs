@@ -64,6 +64,7 @@ impl Parse for Item {
             "input" => parse_input(input, start),
             "slider" => parse_slider(input, start),
             "cylinder" => parse_cylinder(input, start),
+            "mode" => parse_mode(input, start),
             "units" => Ok(Item::Units(word.span(), units_list(input)?)),
             other => Err(syn::Error::new(
                 word.span(),
@@ -403,6 +404,35 @@ fn parse_torque(input: ParseStream, start: Cursor) -> syn::Result<Item> {
         Valued::Load("a torque"),
     )?;
     Ok(Item::Torque(on, value))
+}
+
+/// `mode NAME = assembly(J);`, after `mode`.
+fn parse_mode(input: ParseStream, start: Cursor) -> syn::Result<Item> {
+    let usage = "`mode elbow = assembly(C);` (the group placing joint `C` takes its assembly from the run-time field `elbow`)";
+    let name: Ident = name_after(input, "mode", "the mode parameter's name", usage)?;
+    equals(input, start, usage)?;
+    let word: Ident = name_after(input, "=", "`assembly`", usage)?;
+    if word != "assembly" {
+        return Err(syn::Error::new(
+            word.span(),
+            format!("a mode parameter is the assembly of the group placing a joint, `assembly(..)`: {usage}"),
+        ));
+    }
+    let content;
+    parenthesized!(content in input);
+    let joint: Ident = content
+        .parse()
+        .map_err(|e| syn::Error::new(e.span(), format!("expected a joint's name: {usage}")))?;
+    if !content.is_empty() {
+        return Err(content.error(format!("`assembly` takes one joint: {usage}")));
+    }
+    end(
+        input,
+        start,
+        &format!("the `mode {name} = ..` statement"),
+        Valued::Nothing,
+    )?;
+    Ok(Item::Mode(name, joint))
 }
 
 /// `motor NAME = angle(LINK);` or `motor NAME = angle(LINK, CARRIER);`,

@@ -210,11 +210,38 @@ fn force_along_a_guide(model: &Model, plan: &Plan, f: &ForceSpec, errors: &mut D
                 guide.span(),
                 format!(
                     "{what}; `along` takes a guide, whose direction the force follows{}",
-                    did_you_mean(&g, plan.guides.keys().map(String::as_str))
+                    guide_hint(&g, plan.guides.keys().map(String::as_str))
                 ),
             );
         }
     }
+}
+
+/// The hint after an unknown guide `name`: the nearest guide's name; else
+/// the one guide whose name ends in `_NAME` (a drawn block's line is
+/// `BLOCK_line`, so `line` finds `ram_line`); else every guide there is,
+/// with the drawn form's naming when a name ends in `_line`.
+fn guide_hint<'a>(name: &str, guides: impl IntoIterator<Item = &'a str>) -> String {
+    let guides: Vec<&str> = guides.into_iter().collect();
+    let near = did_you_mean(name, guides.iter().copied());
+    if !near.is_empty() {
+        return near;
+    }
+    let suffix = format!("_{name}");
+    let ending: Vec<&&str> = guides.iter().filter(|g| g.ends_with(&suffix)).collect();
+    if let [one] = ending[..] {
+        return format!("; did you mean `{one}`?");
+    }
+    if guides.is_empty() {
+        return "; this definition has no guide".to_string();
+    }
+    let listed: Vec<String> = guides.iter().map(|g| format!("`{g}`")).collect();
+    let drawn = if guides.iter().any(|g| g.ends_with("_line")) {
+        " (a block of the drawn form slides on the line `BLOCK_line`)"
+    } else {
+        ""
+    };
+    format!("; the guides are {}{drawn}", listed.join(", "))
 }
 
 /// Rule: a torque acts on a link that can carry loads.
@@ -258,7 +285,7 @@ pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Di
         let at = motors.get(2).unwrap_or(first);
         errors.push(
             at.name.span(),
-            format!("the target `{}` has two inputs, so two motors hold it, and {} are declared: the force analysis maps the target's force to exactly two motor torques", targets[0].0.name, motors.len()),
+            format!("the target `{}` has two inputs, so two motors hold it, and {} {} declared: the force analysis maps the target's force to exactly two motor torques", targets[0].0.name, motors.len(), crate::diag::is_are(motors.len() as i64)),
         );
     }
     let inputs: Vec<String> = model.inputs.iter().map(|i| i.name.to_string()).collect();

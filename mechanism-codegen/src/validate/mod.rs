@@ -149,7 +149,7 @@ mod tests {
         );
         assert_eq!(
             errors("dof 2;"),
-            ["the mechanism has 1 degree(s) of freedom (Gruebler: 3*(4-1) - 2*4 = 1) for 1 input(s) [theta], but `dof 2` is declared; add or remove a driver, or correct `dof`"]
+            ["the mechanism has 1 degree of freedom (Gruebler: 3*(4-1) - 2*4 = 1) for 1 input [theta], but `dof 2` is declared; add or remove a driver, or correct `dof`"]
         );
         assert_eq!(
             errors("outputs { B, link9 }"),

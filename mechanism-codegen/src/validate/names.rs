@@ -108,11 +108,13 @@ fn every_symbol(model: &Model) -> Vec<(String, Category, Ident)> {
     }
     for f in &model.failed {
         let cat = match f.kind.to_string().as_str() {
-            "guide" => Category::Guide,
-            "rpr" => Category::Slide,
-            _ => Category::Point,
+            "guide" => Some(Category::Guide),
+            "rpr" => Some(Category::Slide),
+            _ => f.names_point().then_some(Category::Point),
         };
-        table.insert(f.name.to_string(), (cat, f.name.clone()));
+        if let Some(cat) = cat {
+            table.insert(f.name.to_string(), (cat, f.name.clone()));
+        }
         for link in &f.links {
             table.insert(link.to_string(), (Category::Link, link.clone()));
         }

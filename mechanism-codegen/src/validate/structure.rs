@@ -50,8 +50,9 @@ pub(super) fn dof_matches(model: &Model, errors: &mut Diagnostics) {
         errors.push(
             declared.span(),
             format!(
-                "the mechanism has {mobility} degree(s) of freedom (Gruebler: 3*({links}-1) - 2*{joints} = {mobility}) for {} input(s) [{}], but `dof {n}` is declared; add or remove a driver, or correct `dof`",
-                inputs.len(),
+                "the mechanism has {} (Gruebler: 3*({links}-1) - 2*{joints} = {mobility}) for {} [{}], but `dof {n}` is declared; add or remove a driver, or correct `dof`",
+                crate::diag::counted(mobility, "degree of freedom", "degrees of freedom"),
+                crate::diag::counted(inputs.len() as i64, "input", "inputs"),
                 inputs.join(", ")
             ),
         );

@@ -15,7 +15,7 @@ use super::rules::{
 };
 use super::steps::{next_joint, Carrier, Frame, Placed, Step};
 use super::{Coordinate, Drawing, InputId, JointId, LinkId};
-use crate::diag::Diagnostics;
+use crate::diag::{counted, is_are, Diagnostics};
 
 /// Where the decomposition got to: the steps found, what they placed, and
 /// the inputs it could not place.
@@ -131,15 +131,19 @@ fn freedoms_match(d: &Drawing, errors: &mut Diagnostics) -> bool {
         return true;
     }
     let count = format!(
-        "Gruebler: 3 x {moving} moving links - 2 x {pairs} lower pairs = {dof} degree(s) of freedom"
+        "Gruebler: 3 x {moving} moving links - 2 x {pairs} lower pairs = {}",
+        counted(dof, "degree of freedom", "degrees of freedom")
     );
     let message = if dof > inputs {
         let free = solve_order(d)
             .map(|out| unplaced(d, &out.placed))
             .unwrap_or_default();
         format!(
-            "the drawing is under-constrained: {count}, and {inputs} input(s) drive it, so {} motion(s) are free (links left free: {}); add {} `input` (a link's angle), or a link that closes a loop",
-            dof - inputs,
+            "the drawing is under-constrained: {count}, and {} {} it, so {} {} free (links left free: {}); add {} `input` (a link's angle), or a link that closes a loop",
+            counted(inputs, "input", "inputs"),
+            if inputs == 1 { "drives" } else { "drive" },
+            counted(dof - inputs, "motion", "motions"),
+            is_are(dof - inputs),
             free.join(", "),
             dof - inputs
         )
@@ -154,8 +158,10 @@ fn freedoms_match(d: &Drawing, errors: &mut Diagnostics) -> bool {
             )
         };
         format!(
-            "the drawing is over-constrained: {count}, and {inputs} input(s) are given{which}; remove {} input(s), or a link that makes a loop rigid",
-            inputs - dof
+            "the drawing is over-constrained: {count}, and {} {} given{which}; remove {}, or a link that makes a loop rigid",
+            counted(inputs, "input", "inputs"),
+            is_are(inputs),
+            counted(inputs - dof, "input", "inputs")
         )
     };
     errors.push(d.span, message);

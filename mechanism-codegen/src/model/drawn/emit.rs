@@ -102,6 +102,7 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
         }
     };
     let span = defines.name.span();
+    let slides = block_slides(kind, &links);
     Let {
         name: defines.name.clone(),
         joints: Vec::new(),
@@ -109,7 +110,21 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
         args,
         args_span: span,
         links,
-        slides: Vec::new(),
+        slides,
+    }
+}
+
+/// The names of the slides a group with blocks has, each `BLOCK_slide` as
+/// an RPR's is (`links`: the group's, in its statement's order): an RRP's
+/// block along its line (its second link); a PRP's two blocks, each along
+/// its own line; an RPP's block along the slot, then the yoke along its
+/// line. Each is measured from its line's origin (`assembly-modes.md`).
+fn block_slides(kind: &str, links: &[Ident]) -> Vec<Ident> {
+    let slide = |l: &Ident| Ident::new(&format!("{l}_slide"), l.span());
+    match kind {
+        "rrp" => links.get(1).map(slide).into_iter().collect(),
+        "prp" | "rpp" => links.iter().take(2).map(slide).collect(),
+        _ => Vec::new(),
     }
 }
 
@@ -522,7 +537,8 @@ fn radians(s: &Slider) -> TokenStream {
 
 /// The signed distance (length units) of the line of `s` through `j`'s
 /// drawn place from `from`, positive when the line passes to the left of
-/// `from` along its direction: `(j - from) x dir`. It is the offset of a
+/// `from` along its direction: `dir x (j - from) = dot(j - from,
+/// perp(dir))`, with `a x b = a.x b.y - a.y b.x`. It is the offset of a
 /// group whose line's origin or pivot is `from`.
 fn offset(from: &Joint, s: &Slider, j: &Joint) -> TokenStream {
     let (fx, fy, x, y) = (&from.x, &from.y, &j.x, &j.y);

@@ -20,12 +20,13 @@
 mod decompose;
 mod emit;
 mod groups;
+mod modes;
 mod read;
 mod rules;
 mod steps;
 
 use super::args::NumberScope;
-use super::Failed;
+use super::{Failed, Mode};
 use crate::diag::Diagnostics;
 use crate::parse::Item;
 use proc_macro2::Span;
@@ -163,12 +164,23 @@ impl Drawing {
 /// the other items are kept in order. Without a drawn item, `items` comes
 /// back as it was. When the drawing is rejected (errors reported), its
 /// names come back as failed statements, so that nothing else is blamed
-/// for them (a missing driver, an unknown link in a `mass`).
+/// for them (a missing driver, an unknown link in a `mass`). The drawing's
+/// `mode` statements come back as run-time mode parameters with their
+/// defaults (the drawn assemblies), their groups reading them.
 pub(super) fn expand(
     items: Vec<Item>,
     scope: &NumberScope<'_>,
     errors: &mut Diagnostics,
-) -> (Vec<Item>, Vec<Failed>) {
+) -> (Vec<Item>, Vec<Failed>, Vec<(Ident, Mode)>) {
+    let (mode_items, items): (Vec<Item>, Vec<Item>) =
+        items.into_iter().partition(|i| matches!(i, Item::Mode(..)));
+    let drawn_modes: Vec<modes::DrawnMode> = mode_items
+        .into_iter()
+        .filter_map(|i| match i {
+            Item::Mode(name, at) => Some(modes::DrawnMode { name, at }),
+            _ => None,
+        })
+        .collect();
     let drawn = |i: &Item| {
         matches!(
             i,
@@ -180,7 +192,10 @@ pub(super) fn expand(
         )
     };
     let Some(first) = items.iter().position(drawn) else {
-        return (items, Vec::new());
+        for m in &drawn_modes {
+            errors.push(m.name.span(), format!("`mode {} = assembly(..)` belongs to the drawn form (`joints`, `links`, `input`); with group statements, write `params {{ {} = left }}` and the name in the group's mode place, `rrr(A, l1, B, l2, {})`", m.name, m.name, m.name));
+        }
+        return (items, Vec::new(), Vec::new());
     };
     let (drawing_items, mut rest): (Vec<Item>, Vec<Item>) = items.into_iter().partition(drawn);
     let before = errors.len();
@@ -191,14 +206,16 @@ pub(super) fn expand(
         decompose::decompose(&drawing, errors)
     };
     let Some(steps) = steps else {
-        return (rest, failed(&drawing));
+        // The names stay parameters (without a group), so that code reading
+        // them reports nothing more.
+        let modes = drawn_modes.into_iter().map(|m| (m.name, Mode::Plus));
+        return (rest, failed(&drawing), modes.collect());
     };
-    let lets = steps
-        .iter()
-        .map(|s| Item::Let(emit::statement(&drawing, s)));
+    let mut lets: Vec<_> = steps.iter().map(|s| emit::statement(&drawing, s)).collect();
+    let modes = modes::attach(&mut lets, &drawn_modes, errors);
     let at = first.min(rest.len());
-    rest.splice(at..at, lets);
-    (rest, Vec::new())
+    rest.splice(at..at, lets.into_iter().map(Item::Let));
+    (rest, Vec::new(), modes)
 }
 
 /// The drawing's names as failed statements: its joints, its links, its
@@ -232,7 +249,7 @@ fn failed(d: &Drawing) -> Vec<Failed> {
     }));
     out.extend(d.inputs.iter().map(|i| Failed {
         inputs: vec![i.name.clone()],
-        ..none(&i.name, "crank")
+        ..none(&i.name, "input")
     }));
     out
 }

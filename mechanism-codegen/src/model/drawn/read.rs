@@ -306,9 +306,9 @@ fn read_link(
         errors.push(
             a.name.span(),
             format!(
-                "link `{}` has {} joint(s); a moving link joins at least two",
+                "link `{}` has {}; a moving link joins at least two",
                 a.name,
-                out.len()
+                crate::diag::counted(out.len() as i64, "joint", "joints")
             ),
         );
         return None;
