@@ -6,13 +6,31 @@
 //! [`BatchError`] naming the first slice that does not, before evaluating
 //! anything.
 //!
+//! # The force analysis
+//!
+//! A definition with masses or loads also gets `<Name>ForcesBatch` (its
+//! kinematic `<Name>Batch` as the field `batch`, the run-time loads per
+//! element as `load_*` slices, one output slice per scalar of
+//! `<Name>Forces`) and `<Name>::solve_batch_forces`, which evaluates every
+//! element through the scalar `solve` path (status 4: the force analysis
+//! failed). It implements [`BatchSplit`] too, splitting its kinematic batch
+//! at the same index.
+//!
+//! # Columns that never change
+//!
+//! No slice is generated for what the caller has or what never changes:
+//! ground points, crank links (their angle is the input), the angle of a
+//! link that does not turn (a block on a fixed guide) and points that do
+//! not move. The scalar `position` has them.
+//!
 //! # The owned form (feature `alloc`)
 //!
 //! With the feature `alloc` (on by default through `std`), `mechanism!` also
 //! emits `<Name>Columns<T>`: the same fields as `Vec<T>` (and `Vec<u8>` for
 //! `status`), `<Name>::batch(n)` to make one of `n` zeroed elements,
 //! `as_batch()` to borrow it as a `<Name>Batch`, and
-//! `<Name>::solve_columns(&mut columns)`. Without `alloc` (embedded builds:
+//! `<Name>::solve_columns(&mut columns)` (with the force analysis, when the
+//! definition has one, and `as_forces_batch()`, `forces_at(k)`). Without `alloc` (embedded builds:
 //! `default-features = false`) none of these exist and nothing allocates.
 //!
 //! The generated code cannot test this crate's features with `cfg` (that

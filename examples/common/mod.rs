@@ -2,7 +2,9 @@
 //! (the command line is `cli.rs`, mounted at each example's root).
 #![allow(dead_code)]
 
+pub mod leg_drop;
 pub mod plots;
+pub mod run_up;
 pub mod scenes;
 pub mod seed003;
 

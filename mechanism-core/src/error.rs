@@ -43,6 +43,10 @@ pub enum Primitive {
     Triad,
     /// The linear solver ([`crate::linsolve`]).
     LinearSystem,
+    /// The generalized mass matrix of the forward dynamics (a definition's
+    /// generated `dynamics`): no inertia moves with some input, or a dead
+    /// point of the drive. The error's group lists the inputs.
+    MassMatrix,
 }
 
 impl Primitive {
@@ -61,6 +65,7 @@ impl Primitive {
             Primitive::Rpp => "RPP",
             Primitive::Triad => "triad",
             Primitive::LinearSystem => "linear system",
+            Primitive::MassMatrix => "mass matrix",
         }
     }
 }

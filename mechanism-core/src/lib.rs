@@ -32,6 +32,7 @@ pub mod guide;
 pub mod link;
 pub mod linsolve;
 pub mod mode;
+pub mod ode;
 mod real;
 pub mod scalar;
 #[cfg(feature = "serde")]

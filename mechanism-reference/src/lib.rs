@@ -11,6 +11,7 @@
 pub mod constraint;
 mod dd;
 pub mod equations;
+pub mod four_bar_dynamics;
 pub mod groups;
 pub mod linear;
 pub mod loop_closure;

@@ -17,4 +17,5 @@ mod batch_compare;
 mod surface_defs;
 
 mod examples;
+mod forces;
 mod surface;

@@ -494,7 +494,8 @@ fn guide_on_a_block() {
             acc; BlockGuide { tilt: tilt },
             [theta],
             [A, B, C, D, E, F],
-            [link3, slider, link5, block6, link7, link8, x, y],
+            // The slider and block6 never turn: no columns.
+            [link3, link5, link7, link8, x, y],
             grid1("theta", angles(2000), 100, 200),
             4
         );
@@ -531,7 +532,7 @@ fn slider_on_a_guide_at_a_param_angle() {
             acc; SliderParamAngle { slope: slope, off: off },
             [s],
             [P, C, D],
-            [block, link1, link2],
+            [link1, link2], // the block never turns: no column
             grid1("s", stroke(2000, -1.5, 1.5), 900, 1000),
             300
         );
@@ -552,7 +553,7 @@ fn slider_on_a_carried_guide_and_crank_with_slider() {
         acc; SliderCrankDof2 {},
         [s, theta],
         [P, A, B],
-        [block, link3, link4],
+        [link3, link4], // the block never turns: no column
         grid2(("s", -0.8, 0.8), ("theta", -4.0, 4.0), 60, 7, 9),
         300
     );
@@ -591,7 +592,8 @@ fn group_offsets_and_slot_angle_from_params() {
         acc; ParamGroups {},
         [phi],
         [A, D, E, Q],
-        [block, link3, b1, b2, b5, yoke, s, s1, s2, t1, t2],
+        // b2, b5 and the yoke never turn: no columns.
+        [block, link3, b1, s, s1, s2, t1, t2],
         grid1("phi", angles(2000), 100, 200),
         4
     );
@@ -599,7 +601,8 @@ fn group_offsets_and_slot_angle_from_params() {
         acc; ParamGroups { off: 0.03, o1: -0.01, o2: 0.04, slot: 35.0, ay: -0.1, gx: -0.2 },
         [phi],
         [A, D, E, Q],
-        [block, link3, b1, b2, b5, yoke, s, s1, s2, t1, t2],
+        // b2, b5 and the yoke never turn: no columns.
+        [block, link3, b1, s, s1, s2, t1, t2],
         grid1("phi", angles(2000), 100, 200),
         4
     );
@@ -645,7 +648,7 @@ fn loaded_press_kinematics() {
         acc; LoadedPress { crank: 0.12, g: 3.0 },
         [theta],
         [A, B, G3],
-        [link3, ram, x],
+        [link3, x], // the ram on its fixed guide has no column
         grid1("theta", angles(2000), 100, 200),
         4
     );
@@ -664,7 +667,7 @@ fn subsets_at_lower_levels_with_carried_guides() {
     both!(vel; CarriedRppVel { slot: 100.0 }, [phi], [Y], [t2, blk], p1(), 3);
     both!(pos; RprCarrierPos {}, [phi], [F, R], [s, shoe], p1(), 2);
     both!(vel; RprCarrierVel {}, [phi], [S], [u, sleeve], p1(), 3);
-    both!(pos; BlockGuidePos { tilt: 0.5 }, [theta], [E], [y, block6], g1(), 2);
+    both!(pos; BlockGuidePos { tilt: 0.5 }, [theta], [E], [y], g1(), 2); // block6 never turns: no column
     both!(vel; BlockGuideVel { tilt: 0.5 }, [theta], [F], [link8], g1(), 3);
     let g2 = || grid2(("theta", -4.0, 4.0), ("s", -0.3, 0.3), 60, 7, 9);
     both!(pos; SliderOnCarriedPos {}, [theta, s], [Q], [block], g2(), 2);
@@ -744,7 +747,7 @@ fn a_target_and_two_dyads_on_it() {
         acc; FiveBarTarget { prox: 0.1 },
         [x, y],
         [P, A, C],
-        [arm1, arm2, fore1, fore2, effector],
+        [arm1, arm2, fore1, fore2], // the effector translates: no column
         grid2(("x", -0.2, 0.3), ("y", -0.1, 0.35), 60, 7, 9),
         300
     );

@@ -12,6 +12,7 @@ pub mod batch;
 pub mod check_fn;
 pub mod describe;
 mod display;
+pub mod dynamics;
 pub mod forces;
 mod interop;
 mod names;
@@ -93,6 +94,10 @@ fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
     // `vel.NAME`, `acc.NAME`); the rest are locals and never stored.
     let level = model.level;
     let forces = (level >= Level::Forces).then(|| forces::emit(model, plan, &moving));
+    let dynamics = forces
+        .as_ref()
+        .filter(|_| level >= Level::Dynamics)
+        .map(|f| dynamics::emit(model, plan, &moving, &f.loads_param));
     let accel = (level >= Level::Acceleration)
         .then(|| rates::code(model, plan, &moving, Rate::Acceleration));
     let vel = (level >= Level::Velocity).then(|| rates::code(model, plan, &moving, Rate::Velocity));
@@ -102,6 +107,9 @@ fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
     }
     if let Some(f) = &forces {
         reads.scan(&f.methods);
+    }
+    if let Some(d) = &dynamics {
+        reads.scan(&d.methods);
     }
     if let Some(code) = position::tracking_code(&em) {
         reads.scan(&code);
@@ -119,6 +127,12 @@ fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
                 methods: f.methods.clone(),
             });
         }
+        if let Some(d) = dynamics {
+            out.push(Generated {
+                items: d.items,
+                methods: d.methods,
+            });
+        }
         out.push(rates::acceleration_items(model, plan, accel, &reads));
         out.push(solution::solve_items(model, forces.as_ref()));
     }
@@ -127,8 +141,13 @@ fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
     out.items.extend(display::emit(model, plan, force_fields));
     out.items.extend(interop::emit(model, plan, force_fields));
     // Batch API (structure of arrays, issue 5): see `batch`.
-    out.items
-        .extend(batch::emit(model, plan, &inputs, &position.outputs));
+    out.items.extend(batch::emit(
+        model,
+        plan,
+        &inputs,
+        &position.outputs,
+        force_fields,
+    ));
     let Generated { items, methods } = out;
     let name = TypeNames::of(model).name;
     let allow_lints = allow_literal_lints();

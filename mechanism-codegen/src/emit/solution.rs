@@ -28,6 +28,8 @@ fn structure_doc(model: &Model, plan: &Plan) -> String {
             Level::Acceleration => "position, velocity, acceleration",
             Level::Forces =>
                 "position, velocity, acceleration, forces (joint reactions and driving efforts)",
+            Level::Dynamics =>
+                "position, velocity, acceleration, forces (joint reactions and driving efforts), dynamics (the equations of motion in the inputs' coordinates)",
         }
     ));
     structure

@@ -80,7 +80,7 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
     // and the reactions and efforts of every statement that lowered (named
     // by the same per-kind code as the real forces struct).
     let (forces_stub, stub_loads_param, stub_forces_field) = if model.kinetics.declared
-        || model.level == Level::Forces
+        || model.level >= Level::Forces
     {
         let forces_ty = format_ident!("{}Forces", name);
         let loads_ty = format_ident!("{}Loads", name);
@@ -157,7 +157,7 @@ fn describe_stub(model: &Model) -> TokenStream {
     let name = &model.name;
     let text = name.to_string();
     let st = quote!(::mechanism::structure);
-    let forces = model.kinetics.declared || model.level == Level::Forces;
+    let forces = model.kinetics.declared || model.level >= Level::Forces;
     let units = super::describe::units_of(model);
     let fields = ["Position", "Velocity", "Acceleration", "Forces"]
         .iter()

@@ -354,12 +354,13 @@ impl<'a> Body<'a> {
             "velocity" => Level::Velocity,
             "acceleration" => Level::Acceleration,
             "forces" => Level::Forces,
+            "dynamics" => Level::Dynamics,
             other => {
-                let known = ["position", "velocity", "acceleration", "forces"];
+                let known = ["position", "velocity", "acceleration", "forces", "dynamics"];
                 errors.push(
                     what.span(),
                     format!(
-                        "this definition cannot give the analysis `{other}`; write `position`, `velocity`, `acceleration` or `forces`{}",
+                        "this definition cannot give the analysis `{other}`; write `position`, `velocity`, `acceleration`, `forces` or `dynamics`{}",
                         did_you_mean(other, known)
                     ),
                 );

@@ -35,6 +35,9 @@ pub enum Level {
     Acceleration,
     /// Everything, and the force analysis (the default with loads).
     Forces,
+    /// Everything, the force analysis and the forward dynamics in the
+    /// inputs' coordinates (`analysis dynamics;`, with masses).
+    Dynamics,
 }
 
 /// Assembly mode as written.
@@ -164,7 +167,7 @@ pub struct TorqueSpec {
 impl Model {
     /// `true` when the definition asks for the force analysis.
     pub fn has_forces(&self) -> bool {
-        self.level == Level::Forces
+        self.level >= Level::Forces
     }
 }
 

@@ -55,7 +55,7 @@ pub(super) fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Dia
 pub(super) fn level_matches_loads(model: &Model, errors: &mut Diagnostics) {
     let k = &model.kinetics;
     let loaded = !k.masses.is_empty() || !k.forces.is_empty() || !k.torques.is_empty();
-    if model.level == Level::Forces && !loaded && !k.declared {
+    if model.level >= Level::Forces && !loaded && !k.declared {
         if let Some(span) = model.level_span {
             errors.push(span, "`analysis forces` needs something to carry: add `mass LINK { m = .., at = POINT }`, `force at POINT = (fx, fy);` or `torque on LINK = t;`");
         }
@@ -431,4 +431,42 @@ fn unknown_point(
         Some((cat, _)) => format!("`{at}` is {}, not a point; {what}{hint}", cat.article()),
         None => format!("cannot find point `{at}`{hint}"),
     })
+}
+
+/// Rule (`analysis dynamics`): some inertia moves with the inputs. A mass
+/// counts when its centre is not a ground point, or its moment of inertia
+/// is not a literal 0 and its link turns; without one the mass matrix is
+/// zero and no input can be accelerated. The error is on the `dynamics`
+/// word and names the moving links that could be given a mass.
+pub(super) fn dynamics_has_inertia(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
+    if model.level != Level::Dynamics {
+        return;
+    }
+    let moves = |m: &MassSpec| {
+        let centre_moves = !plan.is_ground(&m.at.to_string());
+        let turns = plan.turning_link(&m.link.to_string()).is_some()
+            && m.inertia.as_ref().is_some_and(|j| j.fold() != Some(0.0));
+        centre_moves || turns
+    };
+    if model.kinetics.masses.iter().any(moves) {
+        return;
+    }
+    let Some(span) = model.level_span else {
+        return;
+    };
+    let links: Vec<String> = plan
+        .links
+        .iter()
+        .filter(|(_, info)| info.named)
+        .map(|(l, _)| format!("`{l}`"))
+        .collect();
+    let first = links.first().cloned().unwrap_or_else(|| "`LINK`".into());
+    errors.push(
+        span,
+        format!(
+            "`analysis dynamics` needs inertia that moves with the inputs, and no mass here moves: give the moving links a mass ({}), e.g. `mass {} {{ m = 1.0, at = POINT, j = 0.01 }};` with `POINT` a joint or `point` of that link away from the ground",
+            links.join(", "),
+            first.trim_matches('`')
+        ),
+    );
 }

@@ -54,7 +54,7 @@ pub fn planned(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
     // a ground point; a guide passes through a point of what carries it.
     geometry::geometry_consistent(model, plan, errors);
     // With a force analysis, nothing is joined to an actuator's cylinder.
-    if model.level == Level::Forces {
+    if model.level >= Level::Forces {
         kinetics::nothing_on_a_cylinder(model, plan, errors);
     }
     // `analysis forces` has loads to carry, and loads are not left out by a
@@ -62,6 +62,8 @@ pub fn planned(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
     kinetics::level_matches_loads(model, errors);
     // `gravity` acts through at least one mass.
     kinetics::gravity_has_masses(model, errors);
+    // `analysis dynamics` has inertia that moves with the inputs.
+    kinetics::dynamics_has_inertia(model, plan, errors);
     // A mass sits on a loadable link, once per link, at a point of it.
     kinetics::masses_on_their_links(model, plan, errors);
     // A force acts at a point of one loadable link; `along` names a guide.

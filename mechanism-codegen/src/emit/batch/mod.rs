@@ -29,10 +29,12 @@
 //! `kinds::lane`, each kind's lane code is its `GroupKind::lane`), then the
 //! scalar path for the elements the kernel did not accept.
 
+mod forces;
 mod kernel;
 #[cfg(test)]
 mod tests;
 
+use crate::emit::forces::ForceField;
 use crate::kinds;
 use crate::model::{Level, Model};
 use crate::plan::Plan;
@@ -71,7 +73,9 @@ impl Fields {
     }
 }
 
-/// Emits the batch struct, its `BatchSplit` impl and `solve_batch`.
+/// Emits the batch struct, its `BatchSplit` impl and `solve_batch`, and
+/// with `force_fields` (the forces struct's reactions and efforts, for a
+/// definition with the force analysis) the forces batch (`forces`).
 /// `inputs`: the driver inputs; `outputs`: the position outputs with their
 /// types (`Point2<T>` for points, `T` otherwise; velocity and acceleration
 /// outputs have the same names).
@@ -80,10 +84,11 @@ pub fn emit(
     plan: &Plan,
     inputs: &[Ident],
     outputs: &[(Ident, TokenStream)],
+    force_fields: Option<&[(Ident, ForceField)]>,
 ) -> TokenStream {
     let kept: Vec<(Ident, TokenStream)> = outputs
         .iter()
-        .filter(|(o, _)| !given(model, o))
+        .filter(|(o, ty)| !given(model, o) && !constant(model, plan, o, ty))
         .cloned()
         .collect();
     let outputs = &kept[..];
@@ -111,7 +116,10 @@ pub fn emit(
     let kernel = kernel::kernel(model, plan, &fields.input_names(), outputs, levels);
     let mut items = batch_struct(model, &fields);
     items.extend(solve_batch(model, inputs, &fields, levels, kernel));
-    items.extend(owned(model, &fields));
+    if let Some(ff) = force_fields {
+        items.extend(forces::emit(model, inputs, &fields, ff));
+    }
+    items.extend(owned(model, &fields, force_fields));
     items
 }
 
@@ -281,30 +289,99 @@ fn batch_struct(model: &Model, fields: &Fields) -> TokenStream {
 
 /// The owned form, inside `::mechanism::__with_alloc!` (emitted only when
 /// the facade's feature `alloc` is on): `NAMEColumns<T>` (the batch's fields
-/// as `Vec`s), its `zeros`, `len`, `is_empty` and `as_batch`, and
-/// `NAME::batch(n)` and `NAME::solve_columns`.
-fn owned(model: &Model, fields: &Fields) -> TokenStream {
+/// as `Vec`s, and with `force_fields` the forces batch's), its `zeros`,
+/// `len`, `is_empty` and `as_batch` (and `as_forces_batch`, `forces_at`),
+/// and `NAME::batch(n)` and `NAME::solve_columns`.
+fn owned(
+    model: &Model,
+    fields: &Fields,
+    force_fields: Option<&[(Ident, ForceField)]>,
+) -> TokenStream {
     let name = &model.name;
     let vis = &model.vis;
     let batch_ty = format_ident!("{}Batch", name);
     let cols_ty = format_ident!("{}Columns", name);
     let all_in = fields.input_names();
     let out_names = fields.output_names();
-    let all: Vec<&Ident> = all_in.iter().chain(out_names.iter()).copied().collect();
+    let kinematic = quote!(#batch_ty {
+        #(#all_in: &self.#all_in,)*
+        #(#out_names: &mut self.#out_names,)*
+        status: &mut self.status,
+    });
+    let force = force_fields.map(|ff| forces::owned(model, ff, &kinematic));
+    let (loads, load_defaults, force_outs, force_methods) = match &force {
+        Some(f) => (
+            &f.loads[..],
+            &f.load_defaults[..],
+            &f.outs[..],
+            f.methods.clone(),
+        ),
+        None => (&[][..], &[][..], &[][..], TokenStream::new()),
+    };
+    let zeroed: Vec<&Ident> = all_in
+        .iter()
+        .chain(out_names.iter())
+        .copied()
+        .chain(force_outs.iter())
+        .collect();
+    let all: Vec<&Ident> = zeroed.iter().copied().chain(loads.iter()).collect();
     let reference = match all_in.first() {
         Some(r) => quote!(#r),
         None => quote!(status),
     };
-    let vec = quote!(::mechanism::__alloc::Vec);
     let doc = format!(
-        "The owned form of [`{batch_ty}`] (feature `alloc` of `mechanism`): the same fields as `Vec`s. [`{name}::batch`] makes one of `n` zeroed elements; fill the `in_*` (`rate_*`, `accel_*`) columns, then [`{name}::solve_columns`] (or [`Self::as_batch`] for `solve_batch` and `mechanism::par_solve`)."
+        "The owned form of [`{batch_ty}`] (feature `alloc` of `mechanism`): the same fields as `Vec`s{}. [`{name}::batch`] makes one of `n` zeroed elements; fill the `in_*` (`rate_*`, `accel_*`) columns, then [`{name}::solve_columns`] (or [`Self::as_batch`] for `solve_batch` and `mechanism::par_solve`).",
+        if force.is_some() { format!(", and those of [`{name}ForcesBatch`] (the force analysis: [`Self::as_forces_batch`], [`Self::forces_at`])") } else { String::new() }
     );
+    let vec = quote!(::mechanism::__alloc::Vec);
+    // Without loads, every column is zero; with them, the `load_*` columns
+    // start at the definition's values.
+    let zeros = if loads.is_empty() {
+        quote! {
+            /// `n` elements, every column and `status` zero.
+            pub fn zeros(n: usize) -> Self {
+                let column = || {
+                    let mut v = #vec::new();
+                    v.resize(n, <T as ::mechanism::Real>::lit(0.0));
+                    v
+                };
+                let mut status = #vec::new();
+                status.resize(n, 0u8);
+                #cols_ty { #(#zeroed: column(),)* status }
+            }
+        }
+    } else {
+        quote! {
+            /// `n` elements, every column and `status` zero but the
+            /// `load_*` columns, which hold the definition's values (those
+            /// of the loads struct's `Default`).
+            pub fn zeros(n: usize) -> Self {
+                let column = |x: T| {
+                    let mut v = #vec::new();
+                    v.resize(n, x);
+                    v
+                };
+                let zero = <T as ::mechanism::Real>::lit(0.0);
+                let mut status = #vec::new();
+                status.resize(n, 0u8);
+                #cols_ty { #(#zeroed: column(zero),)* #(#loads: column(#load_defaults),)* status }
+            }
+        }
+    };
     let batch_doc = format!(
-        "A [`{cols_ty}`] of `n` elements, every column and `status` zero: `{name}::<f64>::batch(n)`."
+        "A [`{cols_ty}`] of `n` elements, every column and `status` zero{}: `{name}::<f64>::batch(n)`.",
+        if loads.is_empty() { "" } else { " (the `load_*` columns at the definition's values)" }
     );
-    let solve_doc = format!(
-        "[`Self::solve_batch`] on the columns (`columns.as_batch()`): the number of failed elements, or the `mechanism::BatchError` naming the first column whose length differs from `{reference}`'s (nothing evaluated)."
-    );
+    let (solve_doc, solve_body) = match &force {
+        Some(f) => (
+            format!("[`Self::solve_batch_forces`] on the columns (`columns.as_forces_batch()`): kinematics and force analysis of every element; the number of failed elements, or the `mechanism::BatchError` naming the first column whose length differs from `{reference}`'s (nothing evaluated). For the kinematics alone (the vectorized kernel), `solve_batch(&mut columns.as_batch())`."),
+            f.solve.clone(),
+        ),
+        None => (
+            format!("[`Self::solve_batch`] on the columns (`columns.as_batch()`): the number of failed elements, or the `mechanism::BatchError` naming the first column whose length differs from `{reference}`'s (nothing evaluated)."),
+            quote!(self.solve_batch(&mut columns.as_batch())),
+        ),
+    };
     quote! {
         ::mechanism::__with_alloc! {
             #[doc = #doc]
@@ -316,17 +393,8 @@ fn owned(model: &Model, fields: &Fields) -> TokenStream {
             }
 
             impl<T: ::mechanism::Real> #cols_ty<T> {
-                /// `n` elements, every column and `status` zero.
-                pub fn zeros(n: usize) -> Self {
-                    let column = || {
-                        let mut v = #vec::new();
-                        v.resize(n, <T as ::mechanism::Real>::lit(0.0));
-                        v
-                    };
-                    let mut status = #vec::new();
-                    status.resize(n, 0u8);
-                    #cols_ty { #(#all: column(),)* status }
-                }
+                #zeros
+                #force_methods
             }
 
             impl<T> #cols_ty<T> {
@@ -344,11 +412,7 @@ fn owned(model: &Model, fields: &Fields) -> TokenStream {
                 /// The columns as the borrowed batch of `solve_batch`.
                 #[inline]
                 pub fn as_batch(&mut self) -> #batch_ty<'_, T> {
-                    #batch_ty {
-                        #(#all_in: &self.#all_in,)*
-                        #(#out_names: &mut self.#out_names,)*
-                        status: &mut self.status,
-                    }
+                    #kinematic
                 }
             }
 
@@ -361,7 +425,7 @@ fn owned(model: &Model, fields: &Fields) -> TokenStream {
                 #[must_use = "the number of failed elements; an error means no element was evaluated"]
                 #[inline]
                 pub fn solve_columns(&self, columns: &mut #cols_ty<T>) -> ::core::result::Result<usize, ::mechanism::BatchError> {
-                    self.solve_batch(&mut columns.as_batch())
+                    #solve_body
                 }
             }
         }
@@ -372,12 +436,19 @@ fn owned(model: &Model, fields: &Fields) -> TokenStream {
 /// (`p`, `v`, `a`: `None` once a level failed), the status byte from them
 /// (0 ok, 1 position, 2 velocity, 3 acceleration failed), and the writes of
 /// the outputs (zero where the element failed: no NaN reaches the buffers).
-fn element(model: &Model, inputs: &[Ident], fields: &Fields, levels: usize) -> TokenStream {
+/// `b`: the kinematic batch (`b`, or `b.batch` inside the forces batch).
+fn element(
+    model: &Model,
+    inputs: &[Ident],
+    fields: &Fields,
+    levels: usize,
+    b: &TokenStream,
+) -> TokenStream {
     let input_ty = format_ident!("{}Input", model.name);
     let ins: Vec<TokenStream> = fields
         .inputs
         .iter()
-        .map(|names| quote!(#input_ty { #(#inputs: b.#names[k],)* }))
+        .map(|names| quote!(#input_ty { #(#inputs: #b.#names[k],)* }))
         .collect();
     let mut eval = TokenStream::new();
     let p_in = &ins[0];
@@ -412,7 +483,7 @@ fn element(model: &Model, inputs: &[Ident], fields: &Fields, levels: usize) -> T
     let an = [quote!(p), quote!(v), quote!(a)];
     let writes = fields.outputs.iter().map(|o| {
         let (f, src, r) = (&o.field, &o.source, &an[o.level]);
-        quote!(b.#f[k] = match &#r { ::core::option::Option::Some(r) => r.#src, ::core::option::Option::None => zero };)
+        quote!(#b.#f[k] = match &#r { ::core::option::Option::Some(r) => r.#src, ::core::option::Option::None => zero };)
     });
     quote! {
         #eval
@@ -433,7 +504,7 @@ fn solve_batch(
 ) -> TokenStream {
     let name = &model.name;
     let batch_ty = format_ident!("{}Batch", name);
-    let element = element(model, inputs, fields, levels);
+    let element = element(model, inputs, fields, levels, &quote!(b));
     let has_lane = kernel.is_some();
     let (lane_method, lane_call) = match kernel {
         Some(k) => (k.method, k.call),
@@ -502,6 +573,21 @@ fn solve_batch(
             #lane_method
         }
     }
+}
+
+/// `true` for an output that never changes, so that the batch leaves it
+/// out: the angle of a link that does not turn (a block on a fixed guide,
+/// whose angle is the guide's and whose rates are zero) and a point that
+/// does not move (on such a link, from a still point). Its value is the
+/// scalar `position`'s at any element (and its rates zero); a column would
+/// repeat it per element.
+/// `ty`: the output's type (`Point2<T>` for a point).
+fn constant(model: &Model, plan: &Plan, output: &Ident, ty: &TokenStream) -> bool {
+    let o = output.to_string();
+    if ty.to_string().contains("Point2") {
+        return !crate::emit::moving_points(model, plan).contains(&o);
+    }
+    plan.links.contains_key(&o) && plan.turning_link(&o).is_none()
 }
 
 /// `true` for an output the batch leaves out because the caller has it

@@ -174,3 +174,125 @@ fn given_outputs_have_no_slices() {
         assert!(!batch.contains(absent), "{absent} in {batch}");
     }
 }
+
+/// The batch fields of `NAMEBatch` or `NAMEForcesBatch` (`ty`) in the
+/// expansion `out` (text without spaces), in order.
+fn struct_fields(out: &str, ty: &str) -> Vec<String> {
+    let start = out
+        .find(&format!("struct{ty}<'a,T=::core::primitive::f64>{{"))
+        .unwrap_or_else(|| panic!("{ty} in {out}"));
+    let body = &out[start..];
+    let body = &body[body.find('{').unwrap() + 1..body.find('}').unwrap()];
+    body.split("pub")
+        .filter_map(|f| f.split(':').next())
+        .map(str::to_string)
+        .filter(|f| !f.is_empty())
+        .collect()
+}
+
+/// A press (slider-crank) with masses on every link, gravity and a
+/// run-time load on the ram, every output asked for.
+fn press() -> String {
+    let out = crate::expand(quote::quote! {
+        pub Press {
+            loads { cut = 0.0 }
+            let O = ground(0.0, 0.0);
+            let line = guide((0.0, -0.02), 0 deg);
+            let A = crank(O, 0.1, theta) as link2;
+            let B = rrp(A, 0.4, line, plus) as (link3, ram) slide x;
+            let G3 = point(link3, from A, 0.2, 0 deg);
+            mass link2 { m = 0.5, at = A, j = 0.001 };
+            mass link3 { m = 2.0, at = G3, j = 0.03 };
+            mass ram { m = 5.0, at = B };
+            gravity (0.0, -9.81);
+            force at B on ram along line = cut;
+        }
+    });
+    let text: String = out.to_string().split_whitespace().collect();
+    assert!(!text.contains("compile_error"), "{text}");
+    text
+}
+
+/// Proves the batch leaves out the columns that never change: the press's
+/// ram is a block on a fixed guide, so its angle `ram` (and its rates) has
+/// no column, while the coupler's angle, the points and the slide do; the
+/// scalar position keeps `ram`. (The crank's link and the ground point are
+/// left out as before: the caller has them.)
+#[test]
+fn constant_columns_are_left_out() {
+    let out = press();
+    let fields = struct_fields(&out, "PressBatch");
+    for absent in ["pos_ram", "vel_ram", "acc_ram", "pos_link2", "pos_O_x"] {
+        assert!(
+            !fields.iter().any(|f| f == absent),
+            "{absent} in {fields:?}"
+        );
+    }
+    for present in [
+        "pos_B_x",
+        "pos_G3_y",
+        "pos_link3",
+        "pos_x",
+        "vel_x",
+        "acc_link3",
+    ] {
+        assert!(
+            fields.iter().any(|f| f == present),
+            "{present} not in {fields:?}"
+        );
+    }
+    assert!(
+        out.contains("pubram:T"),
+        "the scalar position keeps the ram's angle"
+    );
+}
+
+/// Proves a definition with masses and loads gets the forces batch: the
+/// kinematic batch, one `load_*` column per run-time load, and one column
+/// per scalar of the forces struct (a joint force as `_x`, `_y`; a
+/// prismatic reaction as `_normal`, `_moment`, `_x`, `_y`; the crank's
+/// torque; `condition` and `power_residual`), in the forces struct's order;
+/// the owned form holds them too; a definition without masses has none.
+#[test]
+fn forces_batch_fields() {
+    let out = press();
+    let fields = struct_fields(&out, "PressForcesBatch");
+    assert_eq!(
+        fields,
+        [
+            "batch",
+            "load_cut",
+            "r_link2_link3_x",
+            "r_link2_link3_y",
+            "r_link3_ram_x",
+            "r_link3_ram_y",
+            "r_ground_ram_normal",
+            "r_ground_ram_moment",
+            "r_ground_ram_x",
+            "r_ground_ram_y",
+            "r_ground_link2_x",
+            "r_ground_link2_y",
+            "drive_theta",
+            "condition",
+            "power_residual",
+        ]
+    );
+    assert!(out.contains("pubfnsolve_batch_forces("), "{out}");
+    assert!(
+        out.contains("pubload_cut:::mechanism::__alloc::Vec<T>,"),
+        "{out}"
+    );
+    assert!(out.contains("pubfnas_forces_batch("), "{out}");
+    let plain: String = crate::expand(quote::quote! {
+        pub Plain {
+            let O = ground(0.0, 0.0);
+            let line = guide((0.0, -0.02), 0 deg);
+            let A = crank(O, 0.1, theta) as link2;
+            let B = rrp(A, 0.4, line, plus) as (link3, ram) slide x;
+        }
+    })
+    .to_string()
+    .split_whitespace()
+    .collect();
+    assert!(!plain.contains("ForcesBatch") && !plain.contains("solve_batch_forces"));
+}

@@ -232,7 +232,7 @@ impl ForceEmitter<'_> {
 
 /// The masses grouped by link, links in the order of their first `mass`,
 /// parts in the order written.
-pub(super) fn masses_by_link(masses: &[MassSpec]) -> Vec<(String, Vec<&MassSpec>)> {
+pub(crate) fn masses_by_link(masses: &[MassSpec]) -> Vec<(String, Vec<&MassSpec>)> {
     let mut out: Vec<(String, Vec<&MassSpec>)> = Vec::new();
     for m in masses {
         let link = m.link.to_string();

@@ -53,6 +53,7 @@ pub enum ForceField {
 }
 
 pub(crate) use crate::kinds::forces::{Held, Reaction};
+pub(crate) use loads::masses_by_link;
 
 struct ForceEmitter<'a> {
     model: &'a Model,
