@@ -107,8 +107,7 @@ pub fn plots(dir: &std::path::Path) -> Result<Vec<std::path::PathBuf>, mechanism
         .collect();
     let torques = any::force_chart(title, x, &forces)?;
     let poses: Vec<_> = kin.iter().map(|(t, r)| (*t, r.map(|r| r.0))).collect();
-    let sk =
-        any::sketch_with::<Leg<f64>, _>(title, &poses, &["F"], |t| format!("t = {t:.2} s"))?;
+    let sk = any::sketch_with::<Leg<f64>, _>(title, &poses, &["F"], |t| format!("t = {t:.2} s"))?;
     let files = [
         dir.join("kinematics.svg"),
         dir.join("forces.svg"),

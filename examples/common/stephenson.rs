@@ -211,9 +211,8 @@ pub fn plots(dir: &std::path::Path) -> Result<Vec<std::path::PathBuf>, mechanism
         .collect();
     let back = there.iter().rev().skip(1).take(there.len() - 2).cloned();
     let poses: Vec<_> = there.iter().cloned().chain(back).collect();
-    let sk = any::sketch_with::<Stephenson<f64>, _>(title, &poses, &["P"], |d| {
-        format!("φ = {d:.1}°")
-    })?;
+    let sk =
+        any::sketch_with::<Stephenson<f64>, _>(title, &poses, &["P"], |d| format!("φ = {d:.1}°"))?;
     let files = [
         dir.join("kinematics.svg"),
         dir.join("drawing.svg"),

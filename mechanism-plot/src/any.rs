@@ -87,7 +87,11 @@ fn block_angle<T: Real, P: Fields<T>>(s: &Structure, link: usize, pos: &P) -> f6
 
 /// Where a guide carried by a link starts at one pose: the named point it
 /// passes through, else its carrier's first point (`None` for a fixed guide).
-fn carried_guide_origin<T: Real, P: Fields<T>>(s: &Structure, guide: Option<&str>, pos: &P) -> Option<Xy> {
+fn carried_guide_origin<T: Real, P: Fields<T>>(
+    s: &Structure,
+    guide: Option<&str>,
+    pos: &P,
+) -> Option<Xy> {
     let g = s.guide(guide?)?;
     let carrier = s.link(g.carrier?)?;
     point_of(pos, g.through.or(carrier.points.first().copied())?)

@@ -81,10 +81,16 @@ impl Sketch {
 
     /// Writes [`Sketch::dxf`] of the pose `index` to `path` (ASCII DXF),
     /// creating the parent directories.
-    pub fn write_dxf(&self, index: usize, cut: Cut, path: impl AsRef<Path>) -> Result<(), PlotError> {
+    pub fn write_dxf(
+        &self,
+        index: usize,
+        cut: Cut,
+        path: impl AsRef<Path>,
+    ) -> Result<(), PlotError> {
         let d = self.dxf(index, cut)?;
         let mut text = Vec::new();
-        d.save(&mut text).map_err(|e| PlotError::Io(std::io::Error::other(e.to_string())))?;
+        d.save(&mut text)
+            .map_err(|e| PlotError::Io(std::io::Error::other(e.to_string())))?;
         let text = String::from_utf8(text)
             .map_err(|e| PlotError::Io(std::io::Error::other(e.to_string())))?;
         crate::write_file(path.as_ref(), &text)
@@ -174,7 +180,11 @@ fn outline(d: &mut Drawing, h: &[Xy], r: f64) {
     for (i, &a) in h.iter().enumerate() {
         let (b, m) = (h[(i + 1) % n], normal(i));
         let shift = |p: Xy| [p[0] + r * m[0], p[1] + r * m[1]];
-        add(d, OUTLINE, EntityType::Line(Line::new(at(shift(a)), at(shift(b)))));
+        add(
+            d,
+            OUTLINE,
+            EntityType::Line(Line::new(at(shift(a)), at(shift(b)))),
+        );
         let next = normal((i + 1) % n);
         let (from, to) = (m[1].atan2(m[0]), next[1].atan2(next[0]));
         let arc = Arc::new(at(b), r, from.to_degrees(), to.to_degrees());

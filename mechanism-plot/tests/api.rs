@@ -433,8 +433,14 @@ fn f32_results_chart_and_tabulate_like_f64() {
             (*x, o)
         })
         .collect();
-    let svg64 = any::chart("t", ("x", "deg"), &rows64, &["a", "P"]).unwrap().to_svg().unwrap();
-    let svg32 = any::chart("t", ("x", "deg"), &rows32, &["a", "P"]).unwrap().to_svg().unwrap();
+    let svg64 = any::chart("t", ("x", "deg"), &rows64, &["a", "P"])
+        .unwrap()
+        .to_svg()
+        .unwrap();
+    let svg32 = any::chart("t", ("x", "deg"), &rows32, &["a", "P"])
+        .unwrap()
+        .to_svg()
+        .unwrap();
     let ((d64, _), (d32, _)) = (parse(&svg64), parse(&svg32));
     let (p64, p32) = (panels(&d64), panels(&d32));
     assert_eq!(p64.len(), p32.len());
@@ -443,16 +449,28 @@ fn f32_results_chart_and_tabulate_like_f64() {
         for (pa, pb) in a.paths.iter().zip(&b.paths) {
             assert_eq!(pa.len(), pb.len());
             for (u, v) in pa.iter().zip(pb) {
-                assert!((u[0] - v[0]).abs() <= 0.011 && (u[1] - v[1]).abs() <= 0.011, "{u:?} {v:?}");
+                assert!(
+                    (u[0] - v[0]).abs() <= 0.011 && (u[1] - v[1]).abs() <= 0.011,
+                    "{u:?} {v:?}"
+                );
             }
         }
     }
     let csv = any::csv("x", "deg", &rows32);
     let header = csv.lines().next().unwrap();
     assert_eq!(header, "x [deg],a [rad],P.x [mm],P.y [mm]");
-    let row: Vec<f64> = csv.lines().nth(2).unwrap().split(',').map(|c| c.parse().unwrap()).collect();
+    let row: Vec<f64> = csv
+        .lines()
+        .nth(2)
+        .unwrap()
+        .split(',')
+        .map(|c| c.parse().unwrap())
+        .collect();
     let o = rows32[1].1.as_ref().unwrap();
-    assert_eq!(row[1..], [f64::from(o.a), f64::from(o.p.x), f64::from(o.p.y)]);
+    assert_eq!(
+        row[1..],
+        [f64::from(o.a), f64::from(o.p.x), f64::from(o.p.y)]
+    );
 }
 
 /// Without a `units` statement the symbols stay: the CSV header and the
@@ -474,7 +492,10 @@ fn a_definition_without_units_is_labelled_with_the_symbols() {
     }
     let rows = vec![(0.0, Some(Bare(1.0))), (1.0, Some(Bare(2.0)))];
     assert!(any::csv("x", "s", &rows).starts_with("x [s],s [L/s]\n"));
-    let svg = any::chart("t", ("x", "s"), &rows, &[]).unwrap().to_svg().unwrap();
+    let svg = any::chart("t", ("x", "s"), &rows, &[])
+        .unwrap()
+        .to_svg()
+        .unwrap();
     let (doc, _) = parse(&svg);
     let labels: Vec<&str> = with_class(doc.root_element(), "y-label")
         .iter()
@@ -556,7 +577,13 @@ fn captions_are_in_degrees_and_the_scale_in_the_units() {
         .map(|k| {
             let t = (30.0 * k as f64).to_radians();
             let a = Point2::new(50.0 * t.cos() as f32, 50.0 * t.sin() as f32);
-            (t, Some(CrankAt { o: Point2::origin(), a }))
+            (
+                t,
+                Some(CrankAt {
+                    o: Point2::origin(),
+                    a,
+                }),
+            )
         })
         .collect();
     let svg = any::sketch::<Crank, _>("crank", &poses, &[])
@@ -570,8 +597,16 @@ fn captions_are_in_degrees_and_the_scale_in_the_units() {
         .collect();
     assert_eq!(
         captions,
-        ["theta = 0 deg", "theta = 30 deg", "theta = 60 deg", "theta = 90 deg"]
+        [
+            "theta = 0 deg",
+            "theta = 30 deg",
+            "theta = 60 deg",
+            "theta = 90 deg"
+        ]
     );
     let scale = with_class(doc.root_element(), "scale-label");
-    assert!(scale[0].text().unwrap().ends_with(" mm"), "the scale bar is in mm");
+    assert!(
+        scale[0].text().unwrap().ends_with(" mm"),
+        "the scale bar is in mm"
+    );
 }

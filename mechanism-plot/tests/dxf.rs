@@ -112,8 +112,14 @@ fn outlines_are_closed_at_half_the_width() {
     // 2 + 3 sides, 4 block sides; 2 + 3 arcs.
     assert_eq!(back.lines.len(), 9);
     assert_eq!(back.arcs.len(), 5);
-    assert!(back.lines.iter().any(|l| close(l[0], [0.0, -2.0]) && close(l[1], [10.0, -2.0])));
-    assert!(back.lines.iter().any(|l| close(l[0], [10.0, 2.0]) && close(l[1], [0.0, 2.0])));
+    assert!(back
+        .lines
+        .iter()
+        .any(|l| close(l[0], [0.0, -2.0]) && close(l[1], [10.0, -2.0])));
+    assert!(back
+        .lines
+        .iter()
+        .any(|l| close(l[0], [10.0, 2.0]) && close(l[1], [0.0, 2.0])));
     // Each arc is about a link point, of half the width.
     let points = [[0.0, 0.0], [10.0, 0.0], [30.0, 5.0], [20.0, 20.0]];
     for (c, r, _, _) in &back.arcs {
@@ -161,11 +167,29 @@ fn outlines_are_closed_at_half_the_width() {
 fn bad_cuts_are_errors() {
     let s = sketch();
     for cut in [
-        Cut { width: 0.0, hole: 1.0 },
-        Cut { width: 4.0, hole: 4.0 },
-        Cut { width: f64::NAN, hole: 1.0 },
+        Cut {
+            width: 0.0,
+            hole: 1.0,
+        },
+        Cut {
+            width: 4.0,
+            hole: 4.0,
+        },
+        Cut {
+            width: f64::NAN,
+            hole: 1.0,
+        },
     ] {
-        assert!(matches!(s.dxf(0, cut), Err(PlotError::BadRange { .. })), "{cut:?}");
+        assert!(
+            matches!(s.dxf(0, cut), Err(PlotError::BadRange { .. })),
+            "{cut:?}"
+        );
     }
-    assert!(matches!(s.dxf(1, CUT), Err(PlotError::NoFrame { index: 1, frames: 1 })));
+    assert!(matches!(
+        s.dxf(1, CUT),
+        Err(PlotError::NoFrame {
+            index: 1,
+            frames: 1
+        })
+    ));
 }

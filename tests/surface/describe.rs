@@ -161,8 +161,7 @@ fn jansen_leg_pictures_and_table_from_its_description_alone() {
         poses.iter().all(|(_, p)| p.is_some()),
         "the leg turns fully"
     );
-    let sketch =
-        mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", &poses, &["F"]).unwrap();
+    let sketch = mechanism_plot::any::sketch::<JansenLeg, _>("Jansen leg", &poses, &["F"]).unwrap();
     assert_eq!(sketch.frame_count(), 73);
     let drawing = sketch.drawing(0).unwrap();
     for link in ["crank", "j", "b", "k", "c", "d", "e", "f", "g", "h", "i"] {
@@ -342,8 +341,7 @@ fn poses_that_fail_are_gaps_in_every_picture() {
         solved - 2,
         "one vertex per solved row"
     );
-    let sketch =
-        mechanism_plot::any::sketch::<FourBar<f64>, _>("gaps", &rows, &["P"]).unwrap();
+    let sketch = mechanism_plot::any::sketch::<FourBar<f64>, _>("gaps", &rows, &["P"]).unwrap();
     assert_eq!(sketch.frame_count(), solved);
     let drawing = sketch.drawing(0).unwrap();
     assert_eq!(drawing.matches(r#"class="path" data-name="P""#).count(), 2);

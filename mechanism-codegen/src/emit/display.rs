@@ -48,7 +48,10 @@ pub fn emit(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>) 
     let mut out = line_impl(&names.position, "position", &outputs(plan, u, 0));
     if model.level >= Level::Velocity {
         let mut fields = outputs(plan, u, 1);
-        fields.push((quote::format_ident!("condition"), Shown::Scalar(String::new())));
+        fields.push((
+            quote::format_ident!("condition"),
+            Shown::Scalar(String::new()),
+        ));
         out.extend(line_impl(&names.velocity, "velocity", &fields));
     }
     if model.level < Level::Acceleration {
@@ -66,7 +69,9 @@ pub fn emit(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>) 
             .map(|(n, held)| {
                 let shown = match held {
                     ForceField::Force => Shown::Pair(spaced(&u.force)),
-                    ForceField::Prismatic => Shown::Prismatic(spaced(&u.force), spaced(&u.moment())),
+                    ForceField::Prismatic => {
+                        Shown::Prismatic(spaced(&u.force), spaced(&u.moment()))
+                    }
                     ForceField::Torque => Shown::Scalar(spaced(&u.moment())),
                     ForceField::Push => Shown::Scalar(spaced(&u.force)),
                 };
@@ -74,7 +79,10 @@ pub fn emit(model: &Model, plan: &Plan, forces: Option<&[(Ident, ForceField)]>) 
             })
             .collect();
         for extra in ["condition", "power_residual"] {
-            fields.push((quote::format_ident!("{}", extra), Shown::Scalar(String::new())));
+            fields.push((
+                quote::format_ident!("{}", extra),
+                Shown::Scalar(String::new()),
+            ));
         }
         out.extend(line_impl(&names.forces, "forces", &fields));
         parts.push(quote!(forces));

@@ -184,7 +184,10 @@ mod tests {
         for (units, wanted) in [
             (r#"lenght = "mm""#, "did you mean `length`?"),
             (r#"length = "mm", length = "m""#, "named twice"),
-            ("length = mm", "a unit is named by a string: `length = \"mm\"`"),
+            (
+                "length = mm",
+                "a unit is named by a string: `length = \"mm\"`",
+            ),
             ("force = 1.0", "`force = \"N\"`"),
             (r#"time = """#, "the unit of `time` is empty"),
         ] {
