@@ -705,7 +705,7 @@ mod performance_forces_batch {
         b.rate_theta = vec![10.0; 100_000];
         b.load_press = b.in_theta.iter().map(|q| process_force(*q)).collect();
         let failed = m.solve_columns(&mut b)?; // kinematics and forces of every element
-                                               // b.drive_theta[k]: the crank torque; b.forces_at(k): element k as the scalar PressForces
+        // b.drive_theta[k]: the crank torque; b.forces_at(k): element k as the scalar PressForces
 
         // No offset and rod > crank: every angle assembles, and no force
         // system is singular away from the dead centres (0 and pi, which
@@ -715,14 +715,7 @@ mod performance_forces_batch {
         for k in [1, 12_345, 45_000, 49_999, 77_777] {
             let i = |x: f64| PressInput { theta: x };
             let s = m
-                .solve(
-                    &i(b.in_theta[k]),
-                    &i(10.0),
-                    &i(0.0),
-                    &PressLoads {
-                        press: b.load_press[k],
-                    },
-                )
+                .solve(&i(b.in_theta[k]), &i(10.0), &i(0.0), &PressLoads { press: b.load_press[k] })
                 .expect("assembles");
             assert_eq!(b.drive_theta[k].to_bits(), s.forces.drive_theta.to_bits());
             assert_eq!(b.forces_at(k), Some(s.forces));
