@@ -177,8 +177,8 @@ fn outline(d: &mut Drawing, h: &[Xy], r: f64) {
         let len = (b[0] - a[0]).hypot(b[1] - a[1]);
         [(b[1] - a[1]) / len, -(b[0] - a[0]) / len]
     };
-    for i in 0..n {
-        let (a, b, m) = (h[i], h[(i + 1) % n], normal(i));
+    for (i, &a) in h.iter().enumerate() {
+        let (b, m) = (h[(i + 1) % n], normal(i));
         let shift = |p: Xy| [p[0] + r * m[0], p[1] + r * m[1]];
         add(
             d,
@@ -203,8 +203,8 @@ fn block(d: &mut Drawing, p: Xy, angle: f64, width: f64) {
         corner(width, 0.5 * width),
         corner(-width, 0.5 * width),
     ];
-    for i in 0..4 {
-        let line = Line::new(at(corners[i]), at(corners[(i + 1) % 4]));
+    for (i, a) in corners.iter().enumerate() {
+        let line = Line::new(at(*a), at(corners[(i + 1) % 4]));
         add(d, OUTLINE, EntityType::Line(line));
     }
 }
