@@ -39,7 +39,6 @@ use mechanism_reference::Dd;
 use methods::{Method, Precision};
 use reference::{Kind, Scene};
 use std::fmt::Write as _;
-use std::path::Path;
 
 /// Interleaved rounds per method (the targets ask for at least 5).
 const ROUNDS: usize = 21;

@@ -486,6 +486,6 @@ fn a_triad_behind_a_full_turn_crank_takes_any_turn_of_the_angle() {
     }
     let drawn = (-120f64).to_radians();
     let p = m.position(&CrankBelowTriadInput { theta: drawn }).unwrap();
-    let a = mechanism::Point2::new(-5.9201362974731851e-2, 5.3807049927811955e-2);
+    let a = mechanism::Point2::new(-5.920136297473185e-2, 5.3807049927811955e-2);
     assert!((p.A - a).norm() < 1e-12, "{}", p.A);
 }
