@@ -56,7 +56,7 @@ pub fn run<P: Problem>(
     let mut buf = vec![0.0; p.residual_count()];
     let mut cand = vec![0.0; p.dim()];
     let mut start = vec![0.0; p.dim()];
-    let mut best: Option<Outcome> = None;
+    let mut elites: Vec<Outcome> = Vec::with_capacity(ELITES + 1);
     let (mut evaluations, mut jacobians) = (0, 0);
     for _ in 0..settings.starts {
         let mut start_cost = f64::INFINITY;
@@ -75,22 +75,37 @@ pub fn run<P: Problem>(
         let out = solver.minimize(p, &start, &settings.local);
         evaluations += out.evaluations;
         jacobians += out.jacobians;
-        if best.as_ref().is_none_or(|b| out.cost < b.cost) {
-            best = Some(out);
+        keep_elite(&mut elites, out);
+    }
+    let (lo, hi) = (p.lower(), p.upper());
+    // First half of the hops: round robin over the elites (a second basin
+    // that hops improve faster than the first gets its chance); second half:
+    // the best of them.
+    let spread = if elites.len() > 1 {
+        settings.hops / 2
+    } else {
+        0
+    };
+    for h in 0..spread {
+        let k = h % elites.len();
+        let scale = settings.hop_scale * [0.5, 1.0, 2.0][(h / elites.len()) % 3];
+        perturb(&elites[k].x, &mut cand, lo, hi, scale, &mut rng);
+        p.reseat(&mut cand);
+        let out = solver.minimize(p, &cand, &settings.local);
+        evaluations += out.evaluations;
+        jacobians += out.jacobians;
+        if out.cost < elites[k].cost {
+            elites[k] = out;
         }
     }
+    let mut best = elites.into_iter().min_by(|a, b| a.cost.total_cmp(&b.cost));
     if let Some(b) = best.as_mut() {
-        let (lo, hi) = (p.lower(), p.upper());
-        for _ in 0..settings.hops {
-            for (j, v) in cand.iter_mut().enumerate() {
-                let x = b.x[j];
-                *v = if rng.unit() < 1.0 / 3.0 {
-                    let size = x.abs().max(0.1 * (hi[j] - lo[j]).min(1.0));
-                    (x + settings.hop_scale * size * (2.0 * rng.unit() - 1.0)).clamp(lo[j], hi[j])
-                } else {
-                    x
-                };
-            }
+        for h in 0..settings.hops - spread {
+            // Three radii in turn (half, one and two `hop_scale`): the near
+            // basins and the farther ones both get a share.
+            let scale = settings.hop_scale * [0.5, 1.0, 2.0][h % 3];
+            perturb(&b.x, &mut cand, lo, hi, scale, &mut rng);
+            p.reseat(&mut cand);
             let out = solver.minimize(p, &cand, &settings.local);
             evaluations += out.evaluations;
             jacobians += out.jacobians;
@@ -98,10 +113,20 @@ pub fn run<P: Problem>(
                 *b = out;
             }
         }
+        // The polish, then the sub-problem re-solved at the polished design
+        // and polished again, kept when better.
         let out = solver.minimize(p, &b.x, &settings.polish);
         evaluations += out.evaluations;
         jacobians += out.jacobians;
         if out.cost <= b.cost {
+            *b = out;
+        }
+        cand.copy_from_slice(&b.x);
+        p.reseat(&mut cand);
+        let out = solver.minimize(p, &cand, &settings.polish);
+        evaluations += out.evaluations;
+        jacobians += out.jacobians;
+        if out.cost < b.cost {
             *b = out;
         }
     }
@@ -115,5 +140,43 @@ pub fn run<P: Problem>(
         outcome,
         evaluations,
         jacobians,
+    }
+}
+
+/// Elites kept from the starts for the first half of the hops.
+const ELITES: usize = 4;
+
+/// Inserts `out` among the `ELITES` lowest-cost outcomes (finite costs only;
+/// one within a relative `1e-6` of a kept one is the same basin, kept once).
+fn keep_elite(elites: &mut Vec<Outcome>, out: Outcome) {
+    if !out.cost.is_finite() {
+        return;
+    }
+    if let Some(same) = elites
+        .iter_mut()
+        .find(|e| (e.cost - out.cost).abs() <= 1e-6 * e.cost.max(out.cost))
+    {
+        if out.cost < same.cost {
+            *same = out;
+        }
+        return;
+    }
+    elites.push(out);
+    elites.sort_by(|a, b| a.cost.total_cmp(&b.cost));
+    elites.truncate(ELITES);
+}
+
+/// A hop from `x` into `cand`: a random third of the variables each moved by
+/// up to `scale` of its size (its magnitude, at least a tenth of its box up to
+/// one unit), clamped into the box.
+fn perturb(x: &[f64], cand: &mut [f64], lo: &[f64], hi: &[f64], scale: f64, rng: &mut Rng) {
+    for (j, v) in cand.iter_mut().enumerate() {
+        let xj = x[j];
+        *v = if rng.unit() < 1.0 / 3.0 {
+            let size = xj.abs().max(0.1 * (hi[j] - lo[j]).min(1.0));
+            (xj + scale * size * (2.0 * rng.unit() - 1.0)).clamp(lo[j], hi[j])
+        } else {
+            xj
+        };
     }
 }
