@@ -80,8 +80,9 @@ pub fn run<P: Problem>(
     let (lo, hi) = (p.lower(), p.upper());
     // First half of the hops: round robin over the elites (a second basin
     // that hops improve faster than the first gets its chance); second half:
-    // the best of them.
-    let spread = if elites.len() > 1 {
+    // the best of them. Only when each elite gets `MIN_SPREAD` hops or more:
+    // a few hops spread over four basins move none of them far.
+    let spread = if elites.len() > 1 && settings.hops / 2 >= MIN_SPREAD * elites.len() {
         settings.hops / 2
     } else {
         0
@@ -145,6 +146,9 @@ pub fn run<P: Problem>(
 
 /// Elites kept from the starts for the first half of the hops.
 const ELITES: usize = 4;
+
+/// Fewest hops per elite for the round robin to run.
+const MIN_SPREAD: usize = 25;
 
 /// Inserts `out` among the `ELITES` lowest-cost outcomes (finite costs only;
 /// one within a relative `1e-6` of a kept one is the same basin, kept once).
