@@ -267,18 +267,26 @@ impl PathProblem {
 
     /// Sets the free angle variables of `x` from [`assign`] on 121 samples.
     fn assign_angles(&self, x: &mut [f64]) -> bool {
-        const M: usize = 120;
+        self.assign_angles_on(x, 120)
+    }
+
+    /// Sets the free angle variables of `x` from [`assign`] on `samples + 1`
+    /// samples of the coupler curve (a crank step of `2 pi / samples`).
+    fn assign_angles_on(&self, x: &mut [f64], samples: usize) -> bool {
         let d = self.design(x);
         let fb = d.mechanism(self.mode);
-        let mut curve = Vec::with_capacity(M + 1);
-        for k in 0..=M {
-            match Self::coupler(&fb, TAU * k as f64 / M as f64) {
+        let mut curve = Vec::with_capacity(samples + 1);
+        for k in 0..=samples {
+            match Self::coupler(&fb, TAU * k as f64 / samples as f64) {
                 Some(p) => curve.push(p),
                 None => return false,
             }
         }
         let idx = assign(&curve, &self.targets);
-        let th: Vec<f64> = idx.iter().map(|&i| TAU * i as f64 / M as f64).collect();
+        let th: Vec<f64> = idx
+            .iter()
+            .map(|&i| TAU * i as f64 / samples as f64)
+            .collect();
         let b = self.angle_base();
         let n = th.len();
         // Gaps floored at a degree: a zero gap has a zero derivative in v.
@@ -419,6 +427,18 @@ impl Problem for PathProblem {
         true
     }
     /// `theta0` into `[0, 2 pi)`, the angle variables `|v|` with `sum v^2 = 1`.
+    /// Free timing: the ordered nearest assignment on 361 samples of the
+    /// coupler curve (a crank step of one degree, which the local solve then
+    /// refines); the crank angles are the variables a dimension change moves
+    /// furthest. Prescribed timing: nothing.
+    fn reseat(&self, x: &mut [f64]) {
+        if matches!(self.timing, Timing::Free) {
+            let mut y = x.to_vec();
+            if self.assign_angles_on(&mut y, 360) {
+                x.copy_from_slice(&y);
+            }
+        }
+    }
     fn canonical(&self, x: &mut [f64]) {
         if self.frame.is_none() {
             x[6] = x[6].rem_euclid(TAU);

@@ -26,6 +26,12 @@ pub trait Problem {
     /// (a periodic angle into its period, a scale-free group rescaled). The
     /// default leaves it unchanged.
     fn canonical(&self, _x: &mut [f64]) {}
+    /// Re-solves, in place, the variables of `x` that have a cheap global
+    /// sub-problem given the others (free input values: the best ordered
+    /// positions on the output's curve), so that a perturbed design starts its
+    /// local solve with them in their best basin. The default leaves `x`
+    /// unchanged.
+    fn reseat(&self, _x: &mut [f64]) {}
 }
 
 /// The objective: the sum of squared residuals, or `+inf` when the design
