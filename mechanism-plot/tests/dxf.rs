@@ -38,7 +38,11 @@ struct Back {
 }
 
 fn written_and_read() -> Back {
-    let path = std::env::temp_dir().join(format!("mechanism_plot_{}.dxf", std::process::id()));
+    // One file per call: the tests run on several threads of one process.
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let path =
+        std::env::temp_dir().join(format!("mechanism_plot_{}_{call}.dxf", std::process::id()));
     sketch().write_dxf(0, CUT, &path).unwrap();
     let d = dxf::Drawing::load_file(&path).unwrap();
     std::fs::remove_file(&path).unwrap();
