@@ -939,7 +939,9 @@ fn judge(text: &str) -> Verdict {
 // ------------------------------------------------------- compile sample ---
 
 /// Batches of successful expansions compiled by `cargo check`, one batch at
-/// a time in the background.
+/// a time in the background. The scratch crate turns on the facade's feature
+/// `serde` and depends on serde: a definition that derives `Serialize`
+/// expands without error but only compiles with both.
 struct Compiler {
     root: PathBuf,
     pending: Vec<String>,
@@ -967,7 +969,7 @@ impl Compiler {
         self.batches += 1;
         let _ = std::fs::create_dir_all(dir.join("src"));
         let manifest = format!(
-            "[package]\nname = \"fuzz-sample\"\nversion = \"0.0.0\"\nedition = \"2021\"\npublish = false\n\n[dependencies]\nmechanism = {{ package = \"planar-mechanism\", path = {:?} }}\n\n[workspace]\n",
+            "[package]\nname = \"fuzz-sample\"\nversion = \"0.0.0\"\nedition = \"2021\"\npublish = false\n\n[dependencies]\nmechanism = {{ package = \"planar-mechanism\", path = {:?}, features = [\"serde\"] }}\nserde = {{ version = \"1\", features = [\"derive\"] }}\n\n[workspace]\n",
             self.root.display().to_string()
         );
         let mut lib = String::from("#![allow(warnings)]\n");
