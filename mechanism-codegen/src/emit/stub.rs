@@ -2,8 +2,9 @@
 //! the `compile_error!`s, and stubs with the real names and fields so the
 //! user's own code reports no follow-on errors.
 
+use crate::kinds::word::KindWord;
 use crate::kinds::{self, forces::FieldsOnly};
-use crate::model::{Level, Model};
+use crate::model::{FailedKind, Level, Model};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use std::collections::BTreeSet;
@@ -71,7 +72,7 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
                 .chain(rpr)
         })
         .chain(model.failed.iter().flat_map(|f| {
-            let rpr = (f.kind == "rpr").then_some(&f.name);
+            let rpr = (f.kind == FailedKind::Let(Some(KindWord::Rpr))).then_some(&f.name);
             f.links.iter().chain(f.slides.iter()).chain(rpr)
         }))
         .filter(|i| unique(i))

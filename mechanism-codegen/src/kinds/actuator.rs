@@ -23,6 +23,18 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
 
+/// How `actuator` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Actuator,
+    text: "actuator",
+    usage: "actuator(A, radius, B, INPUT, left|right) as (LINK, CYLINDER)",
+    arity: super::word::Arity::Range(5, 5),
+    links: "the link from A, and the cylinder from B",
+    inputs: &[3],
+    mode_at: Some(4),
+    mode_words: super::word::SIDE_MODES,
+};
+
 /// An `actuator` statement.
 pub(super) struct Actuator<'a> {
     pub stmt: &'a Stmt,

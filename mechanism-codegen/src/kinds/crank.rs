@@ -20,6 +20,18 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
 
+/// How `crank` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Crank,
+    text: "crank",
+    usage: "crank(PIVOT, radius, INPUT[, CARRIER[, zero_angle]]) as LINK",
+    arity: super::word::Arity::Range(3, 5),
+    links: "the crank, turning about its pivot",
+    inputs: &[2],
+    mode_at: None,
+    mode_words: &[],
+};
+
 /// A `crank` statement. `cos_sin`: its input is marked `as cos_sin`;
 /// `carrier`: the moving link that carries its pivot and its motor (`None`:
 /// the ground).

@@ -9,6 +9,18 @@ use mechanism_core::Point2;
 use quote::quote;
 use syn::Ident;
 
+/// How `ground` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Ground,
+    text: "ground",
+    usage: "ground(x, y)",
+    arity: super::word::Arity::Range(2, 2),
+    links: "",
+    inputs: &[],
+    mode_at: None,
+    mode_words: &[],
+};
+
 /// A `ground` statement.
 pub(super) struct Ground<'a> {
     pub stmt: &'a Stmt,

@@ -17,6 +17,18 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
 
+/// How `guide` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Guide,
+    text: "guide",
+    usage: "guide(POINT or (x, y), angle) or guide(POINT, LINK[, angle])",
+    arity: super::word::Arity::Range(2, 3),
+    links: "",
+    inputs: &[],
+    mode_at: None,
+    mode_words: &[],
+};
+
 /// A `guide` statement.
 pub(super) struct Guide<'a> {
     pub stmt: &'a Stmt,

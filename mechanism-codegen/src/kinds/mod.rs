@@ -31,6 +31,7 @@ mod slider;
 pub mod target;
 pub(crate) mod tokens;
 pub mod triad;
+pub mod word;
 
 use crate::diag::Diagnostics;
 use crate::model::{Kind, Stmt};
@@ -417,16 +418,61 @@ fn mode_text(stmt: &Stmt, m: crate::model::Mode) -> String {
     }
 }
 
+/// A statement seen as its kind: the kind's view of it, held by value (no
+/// allocation), used through [`GroupKind`] (`View` derefs to it).
+pub struct View<'a>(Repr<'a>);
+
+/// The views of the kinds, one variant per kind.
+enum Repr<'a> {
+    Ground(ground::Ground<'a>),
+    Guide(guide::Guide<'a>),
+    Crank(crank::Crank<'a>),
+    Slider(slider::Slider<'a>),
+    Actuator(actuator::Actuator<'a>),
+    Target(target::Target<'a>),
+    Rrr(rrr::Rrr<'a>),
+    Rrp(rrp::Rrp<'a>),
+    Rpr(rpr::Rpr<'a>),
+    Prp(prp::Prp<'a>),
+    Rpp(rpp::Rpp<'a>),
+    Point(point::Point<'a>),
+    Triad(triad::TriadKind<'a>),
+}
+
+impl<'a> std::ops::Deref for View<'a> {
+    type Target = dyn GroupKind<'a> + 'a;
+
+    fn deref(&self) -> &Self::Target {
+        match &self.0 {
+            Repr::Ground(k) => k,
+            Repr::Guide(k) => k,
+            Repr::Crank(k) => k,
+            Repr::Slider(k) => k,
+            Repr::Actuator(k) => k,
+            Repr::Target(k) => k,
+            Repr::Rrr(k) => k,
+            Repr::Rrp(k) => k,
+            Repr::Rpr(k) => k,
+            Repr::Prp(k) => k,
+            Repr::Rpp(k) => k,
+            Repr::Point(k) => k,
+            Repr::Triad(k) => k,
+        }
+    }
+}
+
 /// The statement `stmt` as its kind: the one dispatch from [`Kind`] to the
-/// kinds' modules.
-pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
-    match &stmt.kind {
-        Kind::Ground { x, y } => Box::new(ground::Ground { stmt, x, y }),
+/// kinds' modules. The view borrows the statement's arguments and is built
+/// on the stack (a few references), so a walker may call it per statement
+/// and per sample.
+pub fn of(stmt: &Stmt) -> View<'_> {
+    View(match &stmt.kind {
+        Kind::Ground { x, y } => Repr::Ground(ground::Ground { stmt, x, y }),
         Kind::Guide {
             origin,
             angle,
             carrier,
-        } => Box::new(guide::Guide {
+        } => Repr::Guide(guide::Guide {
             stmt,
             origin,
             angle,
@@ -439,7 +485,7 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             cos_sin,
             carrier,
             zero,
-        } => Box::new(crank::Crank {
+        } => Repr::Crank(crank::Crank {
             stmt,
             pivot,
             radius,
@@ -452,7 +498,7 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             guide,
             input,
             offset,
-        } => Box::new(slider::Slider {
+        } => Repr::Slider(slider::Slider {
             stmt,
             guide,
             input,
@@ -464,7 +510,7 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             b,
             input,
             mode,
-        } => Box::new(actuator::Actuator {
+        } => Repr::Actuator(actuator::Actuator {
             stmt,
             a,
             l,
@@ -472,8 +518,8 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             input,
             mode: *mode,
         }),
-        Kind::Target { x, y } => Box::new(target::Target { stmt, x, y }),
-        Kind::Rrr { a, l1, b, l2, mode } => Box::new(rrr::Rrr {
+        Kind::Target { x, y } => Repr::Target(target::Target { stmt, x, y }),
+        Kind::Rrr { a, l1, b, l2, mode } => Repr::Rrr(rrr::Rrr {
             stmt,
             a,
             l1,
@@ -487,7 +533,7 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             guide,
             mode,
             offset,
-        } => Box::new(rrp::Rrp {
+        } => Repr::Rrp(rrp::Rrp {
             stmt,
             a,
             l,
@@ -495,7 +541,7 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             mode: *mode,
             offset,
         }),
-        Kind::Rpr { a, b, mode, offset } => Box::new(rpr::Rpr {
+        Kind::Rpr { a, b, mode, offset } => Repr::Rpr(rpr::Rpr {
             stmt,
             a,
             b,
@@ -507,7 +553,7 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             g2,
             offset1,
             offset2,
-        } => Box::new(prp::Prp {
+        } => Repr::Prp(prp::Prp {
             stmt,
             g1,
             g2,
@@ -519,21 +565,21 @@ pub fn of(stmt: &Stmt) -> Box<dyn GroupKind<'_> + '_> {
             guide,
             slot,
             offset,
-        } => Box::new(rpp::Rpp {
+        } => Repr::Rpp(rpp::Rpp {
             stmt,
             a,
             guide,
             slot,
             offset,
         }),
-        Kind::Point { link, from, local } => Box::new(point::Point {
+        Kind::Point { link, from, local } => Repr::Point(point::Point {
             stmt,
             link,
             from,
             local,
         }),
-        Kind::Triad(t) => Box::new(triad::TriadKind { stmt, t }),
-    }
+        Kind::Triad(t) => Repr::Triad(triad::TriadKind { stmt, t }),
+    })
 }
 
 #[cfg(test)]

@@ -16,6 +16,22 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
 
+/// How `point` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Point,
+    text: "point",
+    usage: "point(LINK, from POINT, distance, angle) or point(LINK, from POINT, (x, y))",
+    arity: super::word::Arity::TupleAt {
+        index: 2,
+        tuple: (3, 3),
+        other: (4, 4),
+    },
+    links: "",
+    inputs: &[],
+    mode_at: None,
+    mode_words: &[],
+};
+
 /// A `point` statement.
 pub(super) struct Point<'a> {
     pub stmt: &'a Stmt,

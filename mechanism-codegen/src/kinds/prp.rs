@@ -16,6 +16,18 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
+/// How `prp` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Prp,
+    text: "prp",
+    usage: "prp(GUIDE1, GUIDE2[, offset1, offset2]) as (LINK1, LINK2) slide (S1, S2)",
+    arity: super::word::Arity::Range(2, 4),
+    links: "the block on the first guide, and the block on the second",
+    inputs: &[],
+    mode_at: None,
+    mode_words: &[],
+};
+
 /// A `prp` statement.
 pub(super) struct Prp<'a> {
     pub stmt: &'a Stmt,

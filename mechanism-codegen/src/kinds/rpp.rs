@@ -18,6 +18,18 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
+/// How `rpp` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Rpp,
+    text: "rpp",
+    usage: "rpp(A, GUIDE, slot_angle[, offset]) as (BLOCK, LINK) slide (S1, S2)",
+    arity: super::word::Arity::Range(3, 4),
+    links: "the block pinned at A, and the slotted link sliding on the guide",
+    inputs: &[],
+    mode_at: None,
+    mode_words: &[],
+};
+
 /// An `rpp` statement.
 pub(super) struct Rpp<'a> {
     pub stmt: &'a Stmt,

@@ -17,6 +17,18 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
+/// How `rpr` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Rpr,
+    text: "rpr",
+    usage: "let S = rpr(A, B, plus|minus[, offset]) as (BLOCK, LINK)",
+    arity: super::word::Arity::Range(3, 4),
+    links: "the block pinned at A, and the link pivoted at B",
+    inputs: &[],
+    mode_at: Some(2),
+    mode_words: super::word::SIGN_MODES,
+};
+
 /// An `rpr` statement.
 pub(super) struct Rpr<'a> {
     pub stmt: &'a Stmt,

@@ -17,6 +17,18 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
+/// How `rrp` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Rrp,
+    text: "rrp",
+    usage: "rrp(A, l, GUIDE, plus|minus[, offset]) as (LINK, BLOCK) slide S",
+    arity: super::word::Arity::Range(4, 5),
+    links: "the link from A, and the block on the guide",
+    inputs: &[],
+    mode_at: Some(3),
+    mode_words: super::word::SIGN_MODES,
+};
+
 /// An `rrp` statement.
 pub(super) struct Rrp<'a> {
     pub stmt: &'a Stmt,

@@ -17,6 +17,18 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
+/// How `rrr` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Rrr,
+    text: "rrr",
+    usage: "rrr(A, l1, B, l2, left|right) as (LINK1, LINK2)",
+    arity: super::word::Arity::Range(5, 5),
+    links: "L1 from A, L2 from B",
+    inputs: &[],
+    mode_at: Some(4),
+    mode_words: super::word::SIDE_MODES,
+};
+
 /// An `rrr` statement.
 pub(super) struct Rrr<'a> {
     pub stmt: &'a Stmt,

@@ -15,6 +15,18 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
 
+/// How `slider` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Slider,
+    text: "slider",
+    usage: "slider(GUIDE, INPUT[, offset]) as LINK",
+    arity: super::word::Arity::Range(2, 3),
+    links: "the block, sliding on the guide",
+    inputs: &[1],
+    mode_at: None,
+    mode_words: &[],
+};
+
 /// A `slider` statement.
 pub(super) struct Slider<'a> {
     pub stmt: &'a Stmt,

@@ -17,6 +17,18 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
 
+/// How `target` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Target,
+    text: "target",
+    usage: "target(X_INPUT, Y_INPUT) as EFFECTOR",
+    arity: super::word::Arity::Range(2, 2),
+    links: "the effector, moving with the point and not turning",
+    inputs: &[0, 1],
+    mode_at: None,
+    mode_words: &[],
+};
+
 /// A `target` statement.
 pub(super) struct Target<'a> {
     pub stmt: &'a Stmt,

@@ -37,6 +37,18 @@ use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
+/// How `triad` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Triad,
+    text: "triad",
+    usage: "let (A, B, P) = triad(K1, l1, K2, l2, K3, l3, ab, distance, angle, INPUT = value, (ax, ay), (bx, by), (px, py)) as (LEG1, LEG2, LEG3, TERNARY), P's place also `(x, y)`",
+    arity: super::word::Arity::TupleAt { index: 7, tuple: (12, 12), other: (13, 13) },
+    links: "leg 1 from K1 to A, leg 2 from K2 to B, leg 3 from K3 to P, and the ternary link A-B-P",
+    inputs: &[],
+    mode_at: None,
+    mode_words: &[],
+};
+
 /// Evenly spaced rows of the tracked-pose table the generated
 /// `position()` reads (plus the last input found towards each end).
 pub const ROWS: usize = 49;

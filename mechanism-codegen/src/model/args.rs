@@ -86,7 +86,7 @@ pub(super) struct Args<'a> {
     /// The span of the parenthesized argument list.
     pub(super) span: Span,
     /// The statement kind (`rrr`).
-    pub(super) kind: String,
+    pub(super) kind: crate::kinds::word::KindWord,
     /// The statement's usage, for messages.
     pub(super) usage: &'static str,
     /// The names its numbers may use.
@@ -236,14 +236,11 @@ impl<'a> Args<'a> {
             .unwrap_or_else(|| Value::lit(0.0, self.span))
     }
 
-    /// An assembly mode of the group `group`.
-    pub(super) fn mode(&mut self, group: &str) -> Option<Mode> {
+    /// The assembly mode of the statement's group (the words its kind's
+    /// descriptor accepts).
+    pub(super) fn mode(&mut self) -> Option<Mode> {
         let name = self.name("assembly mode")?;
-        let accepted: &[&str] = if group == "rrr" || group == "actuator" {
-            &["left", "right", "plus", "minus"]
-        } else {
-            &["plus", "minus"]
-        };
+        let accepted: &[&str] = self.kind.spec().mode_words;
         match name.to_string().as_str() {
             s if !accepted.contains(&s) => {
                 // Run-time mode parameters are candidates too (`params { circuit = left }`).
@@ -264,7 +261,8 @@ impl<'a> Args<'a> {
                 self.fail(
                     name.span(),
                     format!(
-                        "unknown assembly mode `{s}` for `{group}`; write {}, or the name of a run-time mode parameter{hint}",
+                        "unknown assembly mode `{s}` for `{}`; write {}, or the name of a run-time mode parameter{hint}",
+                        self.kind,
                         accepted
                             .iter()
                             .map(|m| format!("`{m}`"))

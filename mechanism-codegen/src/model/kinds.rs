@@ -5,7 +5,7 @@
 use super::args::{Args, NumberScope};
 use super::{Kind, Local, Origin, Triad};
 use crate::diag::{did_you_mean, Diagnostics};
-use crate::parse::vocabulary::{arity, unsupported_driver, usage, KINDS};
+use crate::parse::vocabulary::{kinds, kinds_list, unsupported_driver, KindWord};
 use crate::parse::{self, Arg};
 use crate::value::convert;
 use crate::value::{Scope, Value};
@@ -17,13 +17,13 @@ use syn::{Expr, Ident};
 /// fill the wrong roles (`rrr(A, 3.5, O4, left)` would read `left` as the
 /// second length), and the message would be about a name instead of the
 /// count.
-fn too_few_arguments(stmt: &parse::Let, kind: &str) -> Option<String> {
-    let (least, most) = arity(kind, &stmt.args)?;
+fn too_few_arguments(stmt: &parse::Let, kind: KindWord) -> Option<String> {
+    let (least, most) = kind.arity(&stmt.args);
     let given = stmt.args.len();
     if given >= least {
         return None;
     }
-    let takes = if kind == "point" {
+    let takes = if kind == KindWord::Point {
         "it takes 4 (3 in the `(x, y)` form)".to_string()
     } else if least == most {
         format!("it takes {least}")
@@ -32,7 +32,7 @@ fn too_few_arguments(stmt: &parse::Let, kind: &str) -> Option<String> {
     };
     Some(format!(
         "missing argument(s) for `{kind}`: {given} given, {takes}; usage: `{}`",
-        usage(kind)
+        kind.spec().usage
     ))
 }
 
@@ -43,47 +43,46 @@ pub(super) fn lower_kind(
     scope: &NumberScope<'_>,
     errors: &mut Diagnostics,
 ) -> Option<Kind> {
-    let kind = stmt.kind.to_string();
-    if !KINDS.contains(&kind.as_str()) {
+    let Some(kind) = stmt.word else {
+        let kind = stmt.kind.to_string();
         let hint = match unsupported_driver(&kind) {
             Some(h) => format!("unsupported driver `{kind}`: {h}"),
             None => format!(
                 "unknown statement kind `{kind}`; expected one of {}{}",
-                KINDS.join(", "),
-                did_you_mean(&kind, KINDS.iter().copied())
+                kinds_list(),
+                did_you_mean(&kind, kinds())
             ),
         };
         errors.push(stmt.kind.span(), hint);
         return None;
-    }
-    if let Some(message) = too_few_arguments(stmt, &kind) {
+    };
+    if let Some(message) = too_few_arguments(stmt, kind) {
         errors.push(stmt.args_span, message);
         return None;
     }
     let mut a = Args {
         args: stmt.args.iter(),
         span: stmt.args_span,
-        usage: usage(&kind),
-        kind: kind.clone(),
+        usage: kind.spec().usage,
+        kind,
         scope,
         errors,
         failed: false,
     };
-    let k = match kind.as_str() {
-        "ground" => ground(&mut a)?,
-        "guide" => guide(&mut a, stmt)?,
-        "crank" => crank(&mut a)?,
-        "slider" => slider(&mut a)?,
-        "actuator" => actuator(&mut a)?,
-        "target" => target(&mut a)?,
-        "rrr" => rrr(&mut a)?,
-        "rrp" => rrp(&mut a)?,
-        "rpr" => rpr(&mut a)?,
-        "prp" => prp(&mut a)?,
-        "rpp" => rpp(&mut a)?,
-        "point" => point(&mut a, stmt)?,
-        "triad" => triad(&mut a, stmt)?,
-        _ => return None,
+    let k = match kind {
+        KindWord::Ground => ground(&mut a)?,
+        KindWord::Guide => guide(&mut a, stmt)?,
+        KindWord::Crank => crank(&mut a)?,
+        KindWord::Slider => slider(&mut a)?,
+        KindWord::Actuator => actuator(&mut a)?,
+        KindWord::Target => target(&mut a)?,
+        KindWord::Rrr => rrr(&mut a)?,
+        KindWord::Rrp => rrp(&mut a)?,
+        KindWord::Rpr => rpr(&mut a)?,
+        KindWord::Prp => prp(&mut a)?,
+        KindWord::Rpp => rpp(&mut a)?,
+        KindWord::Point => point(&mut a, stmt)?,
+        KindWord::Triad => triad(&mut a, stmt)?,
     };
     a.finish();
     if a.failed {
@@ -223,7 +222,7 @@ fn actuator(a: &mut Args) -> Option<Kind> {
         l: a.length("radius |C - A|")?,
         b: a.name("cylinder base point B")?,
         input: a.name("input name")?,
-        mode: a.mode("actuator")?,
+        mode: a.mode()?,
     })
 }
 
@@ -234,7 +233,7 @@ fn rrr(a: &mut Args) -> Option<Kind> {
         l1: a.length("first link length")?,
         b: a.name("second known joint")?,
         l2: a.length("second link length")?,
-        mode: a.mode("rrr")?,
+        mode: a.mode()?,
     })
 }
 
@@ -244,7 +243,7 @@ fn rrp(a: &mut Args) -> Option<Kind> {
         a: a.name("known joint")?,
         l: a.length("link length")?,
         guide: a.name("guide")?,
-        mode: a.mode("rrp")?,
+        mode: a.mode()?,
         offset: a.optional_number("offset"),
     })
 }
@@ -254,7 +253,7 @@ fn rpr(a: &mut Args) -> Option<Kind> {
     Some(Kind::Rpr {
         a: a.name("block pin")?,
         b: a.name("rocker pivot")?,
-        mode: a.mode("rpr")?,
+        mode: a.mode()?,
         offset: a.optional_number("offset"),
     })
 }

@@ -6,11 +6,11 @@
 use super::args::{literal_scope_for, NumberScope, MODE_PARAM};
 use super::kinds::lower_kind;
 use super::{
-    drawn, inputs, modes, Allowed, Failed, Kind, Kinetics, Level, Local, Mode, Model, MotorSpec,
-    Stmt,
+    drawn, inputs, modes, Allowed, Failed, FailedKind, Kind, Kinetics, Level, Local, Mode, Model,
+    MotorSpec, Stmt,
 };
 use crate::diag::{did_you_mean, Diagnostics};
-use crate::parse::vocabulary::{input_positions, links_created, KINDS};
+use crate::parse::vocabulary::KindWord;
 use crate::parse::{self, Arg, Assign, Definition, Item, RangeDecl};
 use crate::value::{convert, Value};
 use proc_macro2::Span;
@@ -20,7 +20,7 @@ use syn::{Expr, Ident, LitInt};
 /// Lowers a parsed definition. Returns the model (possibly partial) and errors.
 pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
     let unknown_kinds = def.items.iter().any(|item| match item {
-        Item::Let(l) => !KINDS.contains(&l.kind.to_string().as_str()),
+        Item::Let(l) => l.word.is_none(),
         _ => false,
     });
     let names = defined_names(&def.items);
@@ -108,10 +108,9 @@ fn defined_names(items: &[Item]) -> Vec<(String, &'static str)> {
             names.push((name.to_string(), MODE_PARAM));
         }
         if let Item::Let(l) = item {
-            let kind = l.kind.to_string();
-            let what = match kind.as_str() {
-                "guide" => "a guide",
-                "rpr" => "a slide displacement",
+            let what = match l.word {
+                Some(KindWord::Guide) => "a guide",
+                Some(KindWord::Rpr) => "a slide displacement",
                 _ => "a point",
             };
             names.push((l.name.to_string(), what));
@@ -122,7 +121,8 @@ fn defined_names(items: &[Item]) -> Vec<(String, &'static str)> {
                     .iter()
                     .map(|n| (n.to_string(), "a slide displacement")),
             );
-            let inputs = input_positions(&kind)
+            let positions: &[usize] = l.word.map_or(&[], |k| k.spec().inputs);
+            let inputs = positions
                 .iter()
                 .filter_map(|&i| l.args.get(i))
                 .filter_map(|a| match a {
@@ -398,7 +398,7 @@ impl<'a> Body<'a> {
             // A triad's other joints stay defined as well.
             let joints = l.joints.iter().map(|j| Failed {
                 name: j.clone(),
-                kind: l.kind.clone(),
+                kind: FailedKind::Let(l.word),
                 links: Vec::new(),
                 slides: Vec::new(),
                 inputs: Vec::new(),
@@ -491,7 +491,8 @@ fn triad_joints(l: &parse::Let, kind: &Kind, links: &[Ident]) -> Vec<Stmt> {
 /// define are kept, so that the rest of the definition and the user's code
 /// see no cascade.
 fn failed(l: parse::Let) -> Failed {
-    let inputs = input_positions(&l.kind.to_string())
+    let positions: &[usize] = l.word.map_or(&[], |k| k.spec().inputs);
+    let inputs = positions
         .iter()
         .filter_map(|&i| l.args.get(i))
         .filter_map(|a| match a {
@@ -501,7 +502,7 @@ fn failed(l: parse::Let) -> Failed {
         .collect();
     Failed {
         name: l.name,
-        kind: l.kind,
+        kind: FailedKind::Let(l.word),
         links: l.links,
         slides: l.slides,
         inputs,
@@ -602,7 +603,7 @@ fn link_count_message(l: &parse::Let, want: usize) -> String {
     while names.len() < want {
         // A triad's links by role (a number after the last given name may
         // be a link of the crank that drives it).
-        let next = match (l.kind == "triad", names.len()) {
+        let next = match (l.word == Some(KindWord::Triad), names.len()) {
             (true, 3) => "ternary".to_string(),
             (true, k) => format!("leg{}", k + 1),
             _ => next_name(names.last().map_or("link", String::as_str)),
@@ -610,7 +611,7 @@ fn link_count_message(l: &parse::Let, want: usize) -> String {
         names.push(next);
     }
     let kind = &l.kind;
-    let what = links_created(&kind.to_string());
+    let what = l.word.map_or("", |k| k.spec().links);
     if want == 1 {
         let extra = given[1..]
             .iter()
@@ -627,7 +628,7 @@ fn link_count_message(l: &parse::Let, want: usize) -> String {
             given.len(),
             names.join(", ")
         )
-    } else if given.len() > want && kind == "actuator" {
+    } else if given.len() > want && l.word == Some(KindWord::Actuator) {
         format!(
             "`actuator` creates two links ({what}) or, for a cylinder with mass, three (the link, the barrel pivoted at B and the rod pinned at the joint), and {} names are given: `as ({})` or `as ({}, barrel, rod)`",
             given.len(),

@@ -19,6 +19,7 @@ pub mod units;
 pub use inputs::{Allowed, Input, RangeSpans};
 pub use lower::lower;
 
+use crate::kinds::word::KindWord;
 use crate::value::Value;
 use proc_macro2::Span;
 use std::collections::BTreeMap;
@@ -175,8 +176,8 @@ impl Model {
 pub struct Failed {
     /// The name it defines.
     pub name: Ident,
-    /// Its kind token.
-    pub kind: Ident,
+    /// What it was written as.
+    pub kind: FailedKind,
     /// Links it names.
     pub links: Vec<Ident>,
     /// Slides it names.
@@ -185,15 +186,32 @@ pub struct Failed {
     pub inputs: Vec<Ident>,
 }
 
+/// What a rejected statement was written as.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FailedKind {
+    /// A `let` of this kind (`None`: a word the language does not know).
+    Let(Option<KindWord>),
+    /// A joint of the drawn form.
+    DrawnJoint,
+    /// A link of the drawn form (or a coordinate input's effector).
+    DrawnLink,
+    /// A cylinder of the drawn form.
+    DrawnCylinder,
+    /// An input of the drawn form.
+    DrawnInput,
+}
+
 impl Failed {
     /// Whether its name is a point (the `let` of a point-placing kind, or a
     /// drawing's joint), rather than a guide, an RPR's slide, or a drawing's
-    /// link, cylinder or input (kinds `links`, `cylinder`, `input`), whose
-    /// names are in `links` and `inputs`.
+    /// link, cylinder or input, whose names are in `links` and `inputs`.
     pub fn names_point(&self) -> bool {
         !matches!(
-            self.kind.to_string().as_str(),
-            "guide" | "rpr" | "links" | "cylinder" | "input"
+            self.kind,
+            FailedKind::Let(Some(KindWord::Guide | KindWord::Rpr))
+                | FailedKind::DrawnLink
+                | FailedKind::DrawnCylinder
+                | FailedKind::DrawnInput
         )
     }
 }

@@ -6,6 +6,7 @@
 //! `expand` runs the expansion-time check once more per other value.
 
 use super::{Kind, Mode};
+use crate::parse::vocabulary::KindWord;
 use crate::parse::{self, Arg};
 use syn::{Expr, Ident};
 
@@ -25,14 +26,10 @@ pub(in crate::model) fn mode_word(value: &Expr) -> Option<Mode> {
     WORDS.iter().find(|(w, _)| *w == word).map(|(_, m)| *m)
 }
 
-/// The position of the mode among a statement kind's arguments.
-pub(in crate::model) fn mode_index(kind: &str) -> Option<usize> {
-    match kind {
-        "rrr" | "actuator" => Some(4),
-        "rrp" => Some(3),
-        "rpr" => Some(2),
-        _ => None,
-    }
+/// The position of the mode among a statement kind's arguments (`None`
+/// for a word the language does not know, or a kind without a mode).
+pub(in crate::model) fn mode_index(kind: Option<KindWord>) -> Option<usize> {
+    kind?.spec().mode_at
 }
 
 /// When the statement `l` names a mode parameter of `modes` in its mode's
@@ -40,7 +37,7 @@ pub(in crate::model) fn mode_index(kind: &str) -> Option<usize> {
 /// default (on the parameter's span), so the statement lowers as with a
 /// literal mode.
 pub(super) fn take_mode_param(l: &mut parse::Let, modes: &[(Ident, Mode)]) -> Option<Ident> {
-    let at = mode_index(&l.kind.to_string())?;
+    let at = mode_index(l.word)?;
     let Some(Arg::Value(Expr::Path(p), None)) = l.args.get(at) else {
         return None;
     };

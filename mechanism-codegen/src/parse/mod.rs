@@ -169,8 +169,11 @@ pub struct Let {
     /// The other joints a `let (A, B, P) = triad(..)` defines (`B`, `P`);
     /// empty for every other statement.
     pub joints: Vec<Ident>,
-    /// The statement kind (`ground`, `crank`, `rrr`, ...).
+    /// The statement kind as written (`ground`, `crank`, `rrr`, ...).
     pub kind: Ident,
+    /// The kind it names, `None` for a word the language does not know
+    /// (reported when the statement is lowered).
+    pub word: Option<vocabulary::KindWord>,
     /// Arguments in order.
     pub args: Vec<Arg>,
     /// Span of the parenthesized argument list (for arity errors).

@@ -134,16 +134,14 @@ fn parse_let(input: ParseStream, start: Cursor) -> syn::Result<Item> {
             e.span(),
             format!(
                 "expected the statement kind after `let {name} =`: one of {}",
-                vocabulary::KINDS.join(", ")
+                vocabulary::kinds_list()
             ),
         )
     })?;
     if !input.peek(syn::token::Paren) {
-        let usage = vocabulary::usage(&kind.to_string());
-        let usage = if usage.is_empty() {
-            String::new()
-        } else {
-            format!(": `{usage}`")
+        let usage = match vocabulary::KindWord::of(&kind) {
+            Some(word) => format!(": `{}`", word.spec().usage),
+            None => String::new(),
         };
         return Err(input.error(format!(
             "expected `(`: the arguments of `{kind}` go in parentheses{usage}"
@@ -179,6 +177,7 @@ fn parse_let(input: ParseStream, start: Cursor) -> syn::Result<Item> {
     Ok(Item::Let(Let {
         name,
         joints,
+        word: vocabulary::KindWord::of(&kind),
         kind,
         args,
         args_span: paren.span.join(),

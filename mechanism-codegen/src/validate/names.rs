@@ -4,8 +4,9 @@
 //! found, which the other rules share.
 
 use crate::diag::{did_you_mean, Diagnostics};
+use crate::kinds::word::KindWord;
 use crate::kinds::{self, Role};
-use crate::model::{Model, StmtId};
+use crate::model::{FailedKind, Model, StmtId};
 use std::collections::BTreeMap;
 use syn::Ident;
 
@@ -107,9 +108,9 @@ fn every_symbol(model: &Model) -> Vec<(String, Category, Ident)> {
         }
     }
     for f in &model.failed {
-        let cat = match f.kind.to_string().as_str() {
-            "guide" => Some(Category::Guide),
-            "rpr" => Some(Category::Slide),
+        let cat = match f.kind {
+            FailedKind::Let(Some(KindWord::Guide)) => Some(Category::Guide),
+            FailedKind::Let(Some(KindWord::Rpr)) => Some(Category::Slide),
             _ => f.names_point().then_some(Category::Point),
         };
         if let Some(cat) = cat {
@@ -277,7 +278,8 @@ fn unnamed_links_hint(model: &Model) -> String {
         .filter(|s| s.links_named.iter().any(|named| !named))
         .map(|s| {
             let kind = s.kind_token.to_string();
-            let names = crate::parse::vocabulary::usage(&kind)
+            let usage = KindWord::of(&s.kind_token).map_or("", |k| k.spec().usage);
+            let names = usage
                 .split_once(" as ")
                 .map(|(_, after)| after.split(" slide").next().unwrap_or(after))
                 .unwrap_or("LINK");

@@ -6,6 +6,7 @@
 
 use super::steps::{side, Axis, Frame, Step};
 use super::{Drawing, Joint, JointId, LinkId, Slider};
+use crate::parse::vocabulary::KindWord;
 use crate::parse::{Arg, Let};
 use proc_macro2::{Group, Span, TokenStream, TokenTree};
 use quote::quote;
@@ -15,13 +16,13 @@ use syn::{Expr, Ident};
 pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
     let j = |k: JointId| d.joint(k);
     let l = |k: LinkId| &d.link(k).name;
-    let (defines, kind, args, links): (&Joint, &str, Vec<Arg>, Vec<Ident>) = match *step {
+    let (defines, kind, args, links): (&Joint, KindWord, Vec<Arg>, Vec<Ident>) = match *step {
         Step::Ground(k) => {
             // The user's own coordinates, with their spans.
             let (x, y) = (j(k).x.clone(), j(k).y.clone());
             (
                 j(k),
-                "ground",
+                KindWord::Ground,
                 vec![Arg::Value(x, None), Arg::Value(y, None)],
                 vec![],
             )
@@ -45,7 +46,7 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
                     args.push(value(turn(d, c.frame, c.listed), input.span()));
                 }
             }
-            (tip, "crank", args, vec![l(link).clone()])
+            (tip, KindWord::Crank, args, vec![l(link).clone()])
         }
         Step::Rrr { a, la, b, lb, c } => {
             let (a, b, c) = (j(a), j(b), j(c));
@@ -62,7 +63,7 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
                 value(distance(b, c), c.name.span()),
                 name_arg(&mode),
             ];
-            (c, "rrr", args, vec![l(la).clone(), l(lb).clone()])
+            (c, KindWord::Rrr, args, vec![l(la).clone(), l(lb).clone()])
         }
         Step::Triad { .. } => return triad(d, step),
         Step::Rpr { .. } | Step::CarriedGuide { .. } | Step::Mark { .. } => {
@@ -80,16 +81,21 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
                 name_arg(&line_name(d, slider)),
                 name_arg(&d.input(input).name),
             ];
-            (j(s.at), "slider", args, vec![l(s.link).clone()])
+            (j(s.at), KindWord::Slider, args, vec![l(s.link).clone()])
         }
         Step::Rrp { a, la, c, slider } => {
             let s = &d.sliders[slider];
             let args = rrp_args(d, j(a), j(c), slider);
-            (j(c), "rrp", args, vec![l(la).clone(), l(s.link).clone()])
+            (
+                j(c),
+                KindWord::Rrp,
+                args,
+                vec![l(la).clone(), l(s.link).clone()],
+            )
         }
         Step::Target { joint, x, y } => {
             let args = vec![name_arg(&d.input(x).name), name_arg(&d.input(y).name)];
-            (j(joint), "target", args, vec![effector(j(joint))])
+            (j(joint), KindWord::Target, args, vec![effector(j(joint))])
         }
         Step::Point { link, frame, joint } => {
             let (x, y) = local(j(frame.origin), j(frame.toward), j(joint));
@@ -98,7 +104,7 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
                 Arg::From(j(frame.origin).name.clone()),
                 value(quote!((#x, #y)), j(joint).name.span()),
             ];
-            (j(joint), "point", args, vec![])
+            (j(joint), KindWord::Point, args, vec![])
         }
     };
     let span = defines.name.span();
@@ -106,7 +112,8 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
     Let {
         name: defines.name.clone(),
         joints: Vec::new(),
-        kind: Ident::new(kind, span),
+        word: Some(kind),
+        kind: kind.ident(span),
         args,
         args_span: span,
         links,
@@ -119,11 +126,11 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
 /// block along its line (its second link); a PRP's two blocks, each along
 /// its own line; an RPP's block along the slot, then the yoke along its
 /// line. Each is measured from its line's origin (`assembly-modes.md`).
-fn block_slides(kind: &str, links: &[Ident]) -> Vec<Ident> {
+fn block_slides(kind: KindWord, links: &[Ident]) -> Vec<Ident> {
     let slide = |l: &Ident| Ident::new(&format!("{l}_slide"), l.span());
     match kind {
-        "rrp" => links.get(1).map(slide).into_iter().collect(),
-        "prp" | "rpp" => links.iter().take(2).map(slide).collect(),
+        KindWord::Rrp => links.get(1).map(slide).into_iter().collect(),
+        KindWord::Prp | KindWord::Rpp => links.iter().take(2).map(slide).collect(),
         _ => Vec::new(),
     }
 }
@@ -136,7 +143,7 @@ pub(super) fn effector(j: &Joint) -> Ident {
 
 /// What a step of a block on a moving link or of a cylinder that defines a
 /// joint writes: the joint, its kind, its arguments, its links.
-fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<Arg>, Vec<Ident>) {
+fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, KindWord, Vec<Arg>, Vec<Ident>) {
     let j = |k: JointId| d.joint(k);
     let l = |k: LinkId| &d.link(k).name;
     match *step {
@@ -153,7 +160,7 @@ fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<
                 Arg::From(p.name.clone()),
                 value(quote!((#x, #y)), at.name.span()),
             ];
-            (at, "point", args, vec![])
+            (at, KindWord::Point, args, vec![])
         }
         Step::RrpCarried {
             a,
@@ -166,7 +173,12 @@ fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<
             let (a, c) = (j(a), j(c));
             let mut args = rrp_args(d, a, c, slider);
             args.push(value(offset(j(origin), s, c), c.name.span()));
-            (c, "rrp", args, vec![l(la).clone(), l(s.link).clone()])
+            (
+                c,
+                KindWord::Rrp,
+                args,
+                vec![l(la).clone(), l(s.link).clone()],
+            )
         }
         Step::Rpp {
             j: pin,
@@ -185,7 +197,7 @@ fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<
                 args.push(value(offset(j(o), y, j(y.at)), j(y.at).name.span()));
             }
             let links = vec![l(s.link).clone(), l(y.link).clone()];
-            (j(y.at), "rpp", args, links)
+            (j(y.at), KindWord::Rpp, args, links)
         }
         Step::Prp {
             c,
@@ -207,7 +219,7 @@ fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<
                 }
             }
             let links = sliders.iter().map(|&k| l(d.sliders[k].link).clone());
-            (c, "prp", args, links.collect())
+            (c, KindWord::Prp, args, links.collect())
         }
         Step::Actuator {
             a,
@@ -232,7 +244,7 @@ fn slot_joint<'d>(d: &'d Drawing, step: &Step) -> (&'d Joint, &'static str, Vec<
             ];
             let mut links = vec![l(link).clone()];
             links.extend(d.cylinders[cylinder].names.iter().cloned());
-            (c, "actuator", args, links)
+            (c, KindWord::Actuator, args, links)
         }
         _ => unreachable!("slot_joint() is called on the steps it matches"),
     }
@@ -273,7 +285,8 @@ fn guide(d: &Drawing, k: usize) -> Let {
     Let {
         name,
         joints: Vec::new(),
-        kind: Ident::new("guide", span),
+        word: Some(KindWord::Guide),
+        kind: KindWord::Guide.ident(span),
         args: vec![
             value(quote!((#x, #y)), d.joint(s.at).name.span()),
             Arg::Value(s.angle.clone(), s.unit.clone()),
@@ -322,7 +335,8 @@ fn triad(d: &Drawing, step: &Step) -> Let {
     Let {
         name: a.name.clone(),
         joints: vec![b.name.clone(), p.name.clone()],
-        kind: Ident::new("triad", span),
+        word: Some(KindWord::Triad),
+        kind: KindWord::Triad.ident(span),
         args,
         args_span: span,
         links: links.collect(),
@@ -473,7 +487,7 @@ fn slot_statement(d: &Drawing, step: &Step) -> Let {
                 value(offset(pivot, s, pin), pin.name.span()),
             ];
             let links = vec![d.link(s.link).name.clone(), d.link(link).name.clone()];
-            (suffixed(d, slider, "slide"), "rpr", args, links)
+            (suffixed(d, slider, "slide"), KindWord::Rpr, args, links)
         }
         Step::CarriedGuide { slider, axis, mark } => {
             let s = &d.sliders[slider];
@@ -490,7 +504,7 @@ fn slot_statement(d: &Drawing, step: &Step) -> Let {
                 name_arg(&on),
                 value(turn_to(d, axis, s), span),
             ];
-            (line_name(d, slider), "guide", args, vec![])
+            (line_name(d, slider), KindWord::Guide, args, vec![])
         }
         Step::Mark { slider, axis } => {
             let s = &d.sliders[slider];
@@ -502,7 +516,7 @@ fn slot_statement(d: &Drawing, step: &Step) -> Let {
                 Arg::From(j(axis.origin()).name.clone()),
                 value(quote!((#x, #y)), j(s.at).name.span()),
             ];
-            (suffixed(d, slider, "zero"), "point", args, vec![])
+            (suffixed(d, slider, "zero"), KindWord::Point, args, vec![])
         }
         _ => unreachable!("slot_statement() is called on an RPR, a carried guide or a mark"),
     };
@@ -510,7 +524,8 @@ fn slot_statement(d: &Drawing, step: &Step) -> Let {
     Let {
         name,
         joints: Vec::new(),
-        kind: Ident::new(kind, span),
+        word: Some(kind),
+        kind: kind.ident(span),
         args,
         args_span: span,
         links,

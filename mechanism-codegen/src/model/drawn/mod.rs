@@ -26,7 +26,7 @@ mod rules;
 mod steps;
 
 use super::args::NumberScope;
-use super::{Failed, Mode};
+use super::{Failed, FailedKind, Mode};
 use crate::diag::Diagnostics;
 use crate::parse::Item;
 use proc_macro2::Span;
@@ -221,17 +221,21 @@ pub(super) fn expand(
 /// The drawing's names as failed statements: its joints, its links, its
 /// inputs (each a driver).
 fn failed(d: &Drawing) -> Vec<Failed> {
-    let none = |name: &Ident, kind: &str| Failed {
+    let none = |name: &Ident, kind: FailedKind| Failed {
         name: name.clone(),
-        kind: Ident::new(kind, d.span),
+        kind,
         links: Vec::new(),
         slides: Vec::new(),
         inputs: Vec::new(),
     };
-    let mut out: Vec<Failed> = d.joints.iter().map(|j| none(&j.name, "joints")).collect();
+    let mut out: Vec<Failed> = d
+        .joints
+        .iter()
+        .map(|j| none(&j.name, FailedKind::DrawnJoint))
+        .collect();
     out.extend(d.links.iter().map(|l| Failed {
         links: vec![l.name.clone()],
-        ..none(&l.name, "links")
+        ..none(&l.name, FailedKind::DrawnLink)
     }));
     // A coordinate input's joint has its effector link (`J_effector`).
     let effectors = d.joints.iter().filter(|j| {
@@ -241,15 +245,15 @@ fn failed(d: &Drawing) -> Vec<Failed> {
     });
     out.extend(effectors.map(|j| Failed {
         links: vec![emit::effector(j)],
-        ..none(&emit::effector(j), "links")
+        ..none(&emit::effector(j), FailedKind::DrawnLink)
     }));
     out.extend(d.cylinders.iter().map(|c| Failed {
         links: c.names.clone(),
-        ..none(&c.names[0], "cylinder")
+        ..none(&c.names[0], FailedKind::DrawnCylinder)
     }));
     out.extend(d.inputs.iter().map(|i| Failed {
         inputs: vec![i.name.clone()],
-        ..none(&i.name, "input")
+        ..none(&i.name, FailedKind::DrawnInput)
     }));
     out
 }

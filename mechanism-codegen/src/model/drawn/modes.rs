@@ -11,6 +11,7 @@
 use super::super::modes::{mode_index, mode_word};
 use super::super::Mode;
 use crate::diag::{did_you_mean, Diagnostics};
+use crate::parse::vocabulary::KindWord;
 use crate::parse::{Arg, Let};
 use syn::{Expr, Ident};
 
@@ -25,7 +26,9 @@ pub(super) struct DrawnMode {
 /// joint `at`, or the RPR whose block (its first link) is `at`.
 fn group_of<'l>(lets: &'l mut [Let], at: &Ident) -> Option<&'l mut Let> {
     lets.iter_mut().find(|l| {
-        &l.name == at || l.joints.contains(at) || (l.kind == "rpr" && l.links.first() == Some(at))
+        &l.name == at
+            || l.joints.contains(at)
+            || (l.word == Some(KindWord::Rpr) && l.links.first() == Some(at))
     })
 }
 
@@ -67,7 +70,7 @@ pub(super) fn attach(
             continue;
         };
         let kind = group.kind.to_string();
-        let word = mode_index(&kind).and_then(|i| match group.args.get(i) {
+        let word = mode_index(group.word).and_then(|i| match group.args.get(i) {
             Some(Arg::Value(e @ Expr::Path(_), None)) => mode_word(e).map(|w| (i, w)),
             _ => None,
         });
