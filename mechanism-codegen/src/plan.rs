@@ -94,7 +94,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
         if kind.point_owner() == Some(None) {
             ground.push(stmt.name.to_string());
         }
-        if let Some(carrier) = kind.guide_carrier() {
+        if let Some(carrier) = kinds::guide_carrier(stmt) {
             guides.insert(
                 stmt.name.to_string(),
                 GuideInfo {
@@ -139,7 +139,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
         }
     }
     for stmt in &model.stmts {
-        if let Some(link) = kinds::of(stmt).on_link() {
+        if let Some(link) = kinds::on_link(stmt) {
             if let Some(info) = links.get_mut(&link.to_string()) {
                 info.points.push(stmt.name.to_string());
             }

@@ -112,7 +112,7 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
             carrier,
             through,
             angle,
-        }) = kinds::of(stmt).as_guide()
+        }) = kinds::as_guide(stmt)
         {
             let n = stmt.name.to_string();
             let carrier = option_str(carrier.map(|c| c.to_string()));

@@ -237,18 +237,30 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         ))
     }
 
-    /// The massless cylinder (none when it is a barrel and a rod).
-    fn cylinder(&self) -> Option<&'a Ident> {
-        match self.barrel_and_rod() {
-            None => self.stmt.links.get(1),
-            Some(_) => None,
-        }
-    }
-
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
         lane_steps(lane, s, self.a, self.l, self.b, self.input, &self.mode)
+    }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Joint")
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        true
+    }
+
+    fn input_is_angle(&self) -> bool {
+        false
     }
 }
 

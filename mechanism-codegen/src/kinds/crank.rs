@@ -248,10 +248,6 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         (1, 1)
     }
 
-    fn cos_sin_input(&self) -> Option<&'a Ident> {
-        self.cos_sin.then_some(self.input)
-    }
-
     /// It turns about a ground point, or about a point of its carrier.
     fn check_placed(&self, plan: &dyn Placed, errors: &mut Diagnostics) {
         let pivot = self.pivot;
@@ -286,10 +282,6 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         }
     }
 
-    fn crank_arm(&self) -> Option<(&'a Ident, &'a Value)> {
-        self.carrier.is_none().then_some((self.pivot, self.radius))
-    }
-
     fn reads_axis(&self) -> Option<&'a Ident> {
         self.carrier
     }
@@ -301,6 +293,30 @@ impl<'a> GroupKind<'a> for Crank<'a> {
             return None;
         }
         lane_steps(lane, s, self.pivot, self.radius, self.input)
+    }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    fn rate_system(&self) -> bool {
+        false
+    }
+
+    fn det_code(&self) -> TokenStream {
+        quote!(1.0)
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Joint")
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        true
     }
 }
 

@@ -219,7 +219,7 @@ impl FieldsOnly {
             if let Some(body) = kind.point_owner() {
                 cx.owner.insert(stmt.name.to_string(), body);
             }
-            if let Some(carrier) = kind.guide_carrier() {
+            if let Some(carrier) = super::guide_carrier(stmt) {
                 let carrier = carrier.map(ToString::to_string);
                 cx.carrier.insert(stmt.name.to_string(), carrier);
             }

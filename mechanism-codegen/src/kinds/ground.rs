@@ -6,6 +6,7 @@ use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
 use mechanism_core::Point2;
+use proc_macro2::TokenStream;
 use quote::quote;
 use syn::Ident;
 
@@ -79,19 +80,62 @@ impl<'a> GroupKind<'a> for Ground<'a> {
         self.stmt.name == *output
     }
 
-    fn literal_ground(&self) -> Option<(f64, f64)> {
-        Some((self.x.fold()?, self.y.fold()?))
-    }
-
-    fn ground_at(&self) -> Option<(f64, f64)> {
-        Some((num(self.x), num(self.y)))
-    }
-
     /// Its lane code in the batch kernel (`None`: an argument the kernel
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, _lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
         lane_steps(s, self.x, self.y);
         Some(())
+    }
+
+    fn link_shapes(&self) -> Vec<super::LinkShape> {
+        Vec::new()
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(())
+    }
+
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        (
+            quote!(::mechanism::Vector2::x()),
+            quote!(::mechanism::Vector2::x()),
+        )
+    }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    fn rate_system(&self) -> bool {
+        false
+    }
+
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        quote!([1.0, 0.0])
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        Vec::new()
+    }
+
+    fn primitive(&self) -> &'static str {
+        "LinkPoint"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        quote!(1.0)
+    }
+
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Bar"
+    }
+
+    fn input_is_angle(&self) -> bool {
+        false
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (0, 0)
     }
 }
 

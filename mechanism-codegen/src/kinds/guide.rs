@@ -6,7 +6,7 @@ use super::lane::{Lane, LaneGuide, Step, Vector};
 use super::lane_shapes::{carried, OriginMotion};
 use super::rates::RateCx;
 use super::tokens::{axis, local, unit_vector};
-use super::{GroupKind, GuideLine, Placed, Pose, Role, Solve};
+use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
 use crate::model::{Origin, Stmt};
@@ -174,17 +174,6 @@ impl<'a> GroupKind<'a> for Guide<'a> {
         self.carrier
     }
 
-    fn as_guide(&self) -> Option<GuideLine<'a>> {
-        Some(GuideLine {
-            carrier: self.carrier,
-            through: match self.origin {
-                Origin::Point(p) => Some(p),
-                Origin::Coords(..) => None,
-            },
-            angle: self.angle,
-        })
-    }
-
     fn describe(&self) -> String {
         let n = &self.stmt.name;
         match self.carrier {
@@ -238,6 +227,57 @@ impl<'a> GroupKind<'a> for Guide<'a> {
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
         lane_steps(lane, s, self.origin, self.angle, self.carrier)
+    }
+
+    fn link_shapes(&self) -> Vec<super::LinkShape> {
+        Vec::new()
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(())
+    }
+
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        (
+            quote!(::mechanism::Vector2::x()),
+            quote!(::mechanism::Vector2::x()),
+        )
+    }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    fn rate_system(&self) -> bool {
+        false
+    }
+
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        quote!([1.0, 0.0])
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        Vec::new()
+    }
+
+    fn primitive(&self) -> &'static str {
+        "LinkPoint"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        quote!(1.0)
+    }
+
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Bar"
+    }
+
+    fn input_is_angle(&self) -> bool {
+        false
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (0, 0)
     }
 }
 

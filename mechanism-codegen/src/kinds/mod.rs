@@ -38,7 +38,6 @@ use crate::model::{Kind, Stmt};
 use crate::value::Value;
 pub use pose::Pose;
 use proc_macro2::TokenStream;
-use quote::quote;
 use syn::Ident;
 
 /// How a link turns.
@@ -135,9 +134,7 @@ pub trait GroupKind<'a>: run::RunKind {
     fn references(&self) -> Vec<(&'a Ident, Role)>;
 
     /// The links the statement creates, in the order of `Stmt::links`.
-    fn link_shapes(&self) -> Vec<LinkShape> {
-        Vec::new()
-    }
+    fn link_shapes(&self) -> Vec<LinkShape>;
 
     /// The body the statement's point belongs to when another group is
     /// pinned there (`Some(None)`: the ground); `None` for statements that
@@ -157,9 +154,7 @@ pub trait GroupKind<'a>: run::RunKind {
     ) -> Result<Option<f64>, mechanism_core::Error<f64>>;
 
     /// The core type of its solved position state (`grp_NAME`), `()` for none.
-    fn position_type(&self) -> TokenStream {
-        quote!(())
-    }
+    fn position_type(&self) -> TokenStream;
 
     /// Its position code; `cos_sin`: emitting `position_cos_sin`.
     fn position(&self, cos_sin: bool) -> Solve;
@@ -172,17 +167,10 @@ pub trait GroupKind<'a>: run::RunKind {
     }
 
     /// Unit axis and raw direction of its link `index`, in position scope.
-    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
-        (
-            quote!(::mechanism::Vector2::x()),
-            quote!(::mechanism::Vector2::x()),
-        )
-    }
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream);
 
     /// The field of its position state holding its slide `slot`.
-    fn slide_field(&self, _slot: usize) -> TokenStream {
-        quote!(s)
-    }
+    fn slide_field(&self, _slot: usize) -> TokenStream;
 
     /// The angle output of its link, when not the angle of the link's
     /// direction (a crank's is its input). `cos_sin`: in `position_cos_sin`.
@@ -195,9 +183,7 @@ pub trait GroupKind<'a>: run::RunKind {
 
     /// `true` for the groups with a rate system (the dyads and the
     /// actuator): their velocity's `condition` joins the mechanism's.
-    fn rate_system(&self) -> bool {
-        false
-    }
+    fn rate_system(&self) -> bool;
 
     /// Its loop-closure residuals for `#[self_test]`; `link_axis` gives a
     /// link's unit axis from the solved points (code).
@@ -210,14 +196,10 @@ pub trait GroupKind<'a>: run::RunKind {
 
     /// The unit axis of its link `index` from the solved points (code of
     /// the self-test module).
-    fn closure_axis(&self, _index: usize) -> TokenStream {
-        quote!([1.0, 0.0])
-    }
+    fn closure_axis(&self, _index: usize) -> TokenStream;
 
     /// Its link lengths (for the shortest link of the self-test tolerances).
-    fn link_lengths(&self) -> Vec<&'a Value> {
-        Vec::new()
-    }
+    fn link_lengths(&self) -> Vec<&'a Value>;
 
     /// What a fault of its position means, in the user's words and numbers
     /// (`at`: where, as the user reads it); `None`: the fault's own text.
@@ -238,24 +220,18 @@ pub trait GroupKind<'a>: run::RunKind {
 
     /// The core's tag of the primitive it calls (`mechanism::Primitive`),
     /// for run-time errors.
-    fn primitive(&self) -> &'static str {
-        "LinkPoint"
-    }
+    fn primitive(&self) -> &'static str;
 
     /// Its scaled determinant (the same as its `eval`'s) from the generated
     /// position struct `pos` (code of `check()`); 1 without a rate system.
-    fn det_code(&self) -> TokenStream {
-        quote!(1.0)
-    }
+    fn det_code(&self) -> TokenStream;
 
     /// Its line in the structure listing of the generated type's doc comment.
     fn describe(&self) -> String;
 
     /// The kind of point it defines (`mechanism::structure::PointKind`),
     /// `None` when it defines none (a guide, an RPR's slide).
-    fn point_kind(&self) -> Option<&'static str> {
-        Some("Joint")
-    }
+    fn point_kind(&self) -> Option<&'static str>;
 
     /// Whether the point it defines moves, given which links turn and
     /// which points move before it.
@@ -263,20 +239,14 @@ pub trait GroupKind<'a>: run::RunKind {
         &self,
         _link_turns: &dyn Fn(&Ident) -> bool,
         _moves: &dyn Fn(&Ident) -> bool,
-    ) -> bool {
-        true
-    }
+    ) -> bool;
 
     /// The kind of its link `index` (`mechanism::structure::LinkKind`) when
     /// it does not slide on a guide.
-    fn link_kind(&self, _index: usize) -> &'static str {
-        "Bar"
-    }
+    fn link_kind(&self, _index: usize) -> &'static str;
 
     /// `true` when its input is an angle (rad), `false` a length.
-    fn input_is_angle(&self) -> bool {
-        false
-    }
+    fn input_is_angle(&self) -> bool;
 
     /// `true` for an output the batch leaves out because the caller has it
     /// already (a ground point, a crank's link).
@@ -292,24 +262,11 @@ pub trait GroupKind<'a>: run::RunKind {
 
     /// The bodies it adds and the lower pairs it closes, for the mobility
     /// count (Gruebler: `3 (n - 1) - 2 j`).
-    fn bodies_and_pairs(&self) -> (i64, i64) {
-        (0, 0)
-    }
+    fn bodies_and_pairs(&self) -> (i64, i64);
 
     /// For a group on two known places: the two and what they are, for the
     /// rule that they differ (`validate`).
     fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {
-        None
-    }
-
-    /// The link that is a massless two-force member carrying no load (an
-    /// actuator's cylinder).
-    fn cylinder(&self) -> Option<&'a Ident> {
-        None
-    }
-
-    /// For a crank marked `as cos_sin`: its input.
-    fn cos_sin_input(&self) -> Option<&'a Ident> {
         None
     }
 
@@ -331,21 +288,6 @@ pub trait GroupKind<'a>: run::RunKind {
     /// point: the four-bar's Grashof condition). `find` gives the statement
     /// that defines a name.
     fn full_turn_hint(&self, _find: &dyn Fn(&Ident) -> Option<&'a Stmt>) -> Option<String> {
-        None
-    }
-
-    /// For a crank: its pivot and radius.
-    fn crank_arm(&self) -> Option<(&'a Ident, &'a Value)> {
-        None
-    }
-
-    /// For a ground point: its coordinates (NaN where they do not fold).
-    fn ground_at(&self) -> Option<(f64, f64)> {
-        None
-    }
-
-    /// For a ground point with literal coordinates: where it is.
-    fn literal_ground(&self) -> Option<(f64, f64)> {
         None
     }
 
@@ -378,25 +320,94 @@ pub trait GroupKind<'a>: run::RunKind {
     /// its driving power.
     fn forces(&self, _cx: &mut dyn forces::ForceCx) {}
 
-    /// For a guide: its line as written. `None` for other kinds.
-    fn as_guide(&self) -> Option<GuideLine<'a>> {
-        None
-    }
-
-    /// For a guide: its carrier (`None`: fixed). `None` for other kinds.
-    fn guide_carrier(&self) -> Option<Option<&'a Ident>> {
-        self.as_guide().map(|g| g.carrier)
-    }
-
-    /// For a point on a link: the link.
-    fn on_link(&self) -> Option<&'a Ident> {
-        None
-    }
-
     /// The link whose unit axis its position reads (a link point's link, a
     /// carried guide's carrier).
     fn reads_axis(&self) -> Option<&'a Ident> {
         None
+    }
+}
+
+/// For a crank on the ground: its pivot and radius (`None` for other
+/// statements, and for a crank carried by a moving link).
+pub fn crank_arm(stmt: &Stmt) -> Option<(&Ident, &Value)> {
+    match &stmt.kind {
+        Kind::Crank {
+            pivot,
+            radius,
+            carrier: None,
+            ..
+        } => Some((pivot, radius)),
+        _ => None,
+    }
+}
+
+/// For a crank whose input is marked `as cos_sin`: its input.
+pub fn cos_sin_input(stmt: &Stmt) -> Option<&Ident> {
+    match &stmt.kind {
+        Kind::Crank {
+            input,
+            cos_sin: true,
+            ..
+        } => Some(input),
+        _ => None,
+    }
+}
+
+/// For a ground point: its coordinates (NaN where they do not fold).
+pub fn ground_at(stmt: &Stmt) -> Option<(f64, f64)> {
+    match &stmt.kind {
+        Kind::Ground { x, y } => Some((pose::num(x), pose::num(y))),
+        _ => None,
+    }
+}
+
+/// For a ground point with literal coordinates: where it is.
+pub fn literal_ground(stmt: &Stmt) -> Option<(f64, f64)> {
+    match &stmt.kind {
+        Kind::Ground { x, y } => Some((x.fold()?, y.fold()?)),
+        _ => None,
+    }
+}
+
+/// For a guide: its line as written.
+pub fn as_guide(stmt: &Stmt) -> Option<GuideLine<'_>> {
+    match &stmt.kind {
+        Kind::Guide {
+            origin,
+            angle,
+            carrier,
+        } => Some(GuideLine {
+            carrier: carrier.as_ref(),
+            through: match origin {
+                crate::model::Origin::Point(p) => Some(p),
+                crate::model::Origin::Coords(..) => None,
+            },
+            angle,
+        }),
+        _ => None,
+    }
+}
+
+/// For a guide: its carrier (`None`: fixed); `None` for other statements.
+pub fn guide_carrier(stmt: &Stmt) -> Option<Option<&Ident>> {
+    as_guide(stmt).map(|g| g.carrier)
+}
+
+/// The link that is a massless two-force member carrying no load: an
+/// actuator's cylinder named as one link (`as (LINK, CYLINDER)`; with a
+/// barrel and a rod the cylinder has mass).
+pub fn cylinder(stmt: &Stmt) -> Option<&Ident> {
+    match (&stmt.kind, stmt.links.as_slice()) {
+        (Kind::Actuator { .. }, [_, cylinder]) => Some(cylinder),
+        _ => None,
+    }
+}
+
+/// For a point on a link: the link.
+pub fn on_link(stmt: &Stmt) -> Option<&Ident> {
+    match &stmt.kind {
+        Kind::Point { link, .. } => Some(link),
+        _ => None,
     }
 }
 

@@ -142,10 +142,6 @@ impl<'a> GroupKind<'a> for Point<'a> {
         Some(self.link)
     }
 
-    fn on_link(&self) -> Option<&'a Ident> {
-        Some(self.link)
-    }
-
     fn describe(&self) -> String {
         let (n, link, from) = (&self.stmt.name, self.link, self.from);
         format!("point `{n}` on `{link}` (from `{from}`)")
@@ -190,6 +186,57 @@ impl<'a> GroupKind<'a> for Point<'a> {
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
         lane_steps(lane, s, self.link, self.from, self.local)
+    }
+
+    fn link_shapes(&self) -> Vec<super::LinkShape> {
+        Vec::new()
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(())
+    }
+
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        (
+            quote!(::mechanism::Vector2::x()),
+            quote!(::mechanism::Vector2::x()),
+        )
+    }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    fn rate_system(&self) -> bool {
+        false
+    }
+
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        quote!([1.0, 0.0])
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        Vec::new()
+    }
+
+    fn primitive(&self) -> &'static str {
+        "LinkPoint"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        quote!(1.0)
+    }
+
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Bar"
+    }
+
+    fn input_is_angle(&self) -> bool {
+        false
+    }
+
+    fn bodies_and_pairs(&self) -> (i64, i64) {
+        (0, 0)
     }
 }
 

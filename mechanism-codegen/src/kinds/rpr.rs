@@ -236,6 +236,18 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
         lane_steps(lane, s, self.a, self.b, &self.mode, self.offset)
     }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        Vec::new()
+    }
+
+    fn input_is_angle(&self) -> bool {
+        false
+    }
 }
 
 /// An RPR group: a slide through `a` and `b` at `offset` (length unit)

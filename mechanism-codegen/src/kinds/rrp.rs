@@ -203,6 +203,30 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
         lane_steps(lane, s, self.a, self.l, self.guide, &self.mode, self.offset)
     }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Joint")
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        true
+    }
+
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Bar"
+    }
+
+    fn input_is_angle(&self) -> bool {
+        false
+    }
 }
 
 /// An RRP group: the joint at distance `l` (length unit) from `a` and at

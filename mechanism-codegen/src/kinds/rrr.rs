@@ -213,8 +213,8 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
     /// Driven by a crank onto a ground point, it closes a four-bar: its
     /// Grashof condition, in numbers.
     fn full_turn_hint(&self, find: &dyn Fn(&Ident) -> Option<&'a Stmt>) -> Option<String> {
-        let arm = |n: &Ident| find(n).and_then(|s| super::of(s).crank_arm().map(|arm| (s, arm)));
-        let ground = |n: &Ident| find(n).and_then(|s| super::of(s).ground_at());
+        let arm = |n: &Ident| find(n).and_then(|s| super::crank_arm(s).map(|arm| (s, arm)));
+        let ground = |n: &Ident| find(n).and_then(|s| super::ground_at(s));
         let ((crank, (pivot, radius)), other) = match (arm(self.a), arm(self.b)) {
             (Some(c), _) => (c, self.b),
             (_, Some(c)) => (c, self.a),
@@ -235,6 +235,30 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
     /// does not know; the batch then takes the scalar path).
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
         lane_steps(lane, s, self.a, self.l1, self.b, self.l2, &self.mode)
+    }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Joint")
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        true
+    }
+
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Bar"
+    }
+
+    fn input_is_angle(&self) -> bool {
+        false
     }
 }
 

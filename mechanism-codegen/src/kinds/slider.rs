@@ -158,6 +158,42 @@ impl<'a> GroupKind<'a> for Slider<'a> {
     fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
         lane_steps(lane, s, self.guide, self.input, self.offset)
     }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    fn rate_system(&self) -> bool {
+        false
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        Vec::new()
+    }
+
+    fn det_code(&self) -> TokenStream {
+        quote!(1.0)
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Joint")
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        true
+    }
+
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Bar"
+    }
+
+    fn input_is_angle(&self) -> bool {
+        false
+    }
 }
 
 /// A slider on `guide` at the input displacement `in_INPUT[k]` (length

@@ -187,6 +187,53 @@ impl<'a> GroupKind<'a> for Target<'a> {
             },
         )
     }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(())
+    }
+
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        (
+            quote!(::mechanism::Vector2::x()),
+            quote!(::mechanism::Vector2::x()),
+        )
+    }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    fn rate_system(&self) -> bool {
+        false
+    }
+
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        quote!([1.0, 0.0])
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        Vec::new()
+    }
+
+    fn det_code(&self) -> TokenStream {
+        quote!(1.0)
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Joint")
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        true
+    }
+
+    fn input_is_angle(&self) -> bool {
+        false
+    }
 }
 
 /// The local holding the motors' torques (`mechanism::force::target::MotorTorques`).

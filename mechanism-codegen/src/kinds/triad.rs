@@ -545,6 +545,30 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
     fn lane(&self, _lane: &mut Lane, _s: &mut Step<'_>) -> Option<()> {
         None
     }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Joint")
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        true
+    }
+
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Bar"
+    }
+
+    fn input_is_angle(&self) -> bool {
+        false
+    }
 }
 
 /// The triad's reactions: the 12x12 system of `triad::reactions` from the

@@ -23,7 +23,7 @@ pub(super) fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Dia
     let cylinders: Vec<String> = model
         .stmts
         .iter()
-        .filter_map(|s| kinds::of(s).cylinder().map(Ident::to_string))
+        .filter_map(|s| kinds::cylinder(s).map(Ident::to_string))
         .collect();
     for stmt in &model.stmts {
         if stmt.kind.link_count() == 0 {
@@ -379,7 +379,7 @@ fn is_cylinder(model: &Model, link: &str) -> bool {
     model
         .stmts
         .iter()
-        .any(|s| kinds::of(s).cylinder().is_some_and(|l| l == link))
+        .any(|s| kinds::cylinder(s).is_some_and(|l| l == link))
 }
 
 /// Checks that `link` names a link that can carry loads; pushes an error otherwise.

@@ -89,7 +89,7 @@ fn every_symbol(model: &Model) -> Vec<(String, Category, Ident)> {
     }
     for stmt in &model.stmts {
         let kind = kinds::of(stmt);
-        let cat = if kind.guide_carrier().is_some() {
+        let cat = if kinds::guide_carrier(stmt).is_some() {
             Category::Guide
         } else if kind.names_slide() {
             Category::Slide
