@@ -225,8 +225,8 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
     }
 
     /// Cylinder = barrel + rod: three bodies, four lower pairs.
-    fn bodies_and_pairs(&self) -> (i64, i64) {
-        (3, 4)
+    fn bodies_and_pairs(&self) -> (i64, i64, i64) {
+        (3, 4, 0)
     }
 
     fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {

@@ -244,8 +244,8 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         cx.reaction(drive(&rx, input, "torque", Held::Torque, doc));
     }
 
-    fn bodies_and_pairs(&self) -> (i64, i64) {
-        (1, 1)
+    fn bodies_and_pairs(&self) -> (i64, i64, i64) {
+        (1, 1, 0)
     }
 
     /// It turns about a ground point, or about a point of its carrier.

@@ -14,6 +14,7 @@ mod actuator;
 pub mod closure;
 mod crank;
 pub mod forces;
+pub(crate) mod gear;
 mod ground;
 mod guide;
 pub mod lane;
@@ -260,9 +261,10 @@ pub trait GroupKind<'a>: run::RunKind {
         false
     }
 
-    /// The bodies it adds and the lower pairs it closes, for the mobility
-    /// count (Gruebler: `3 (n - 1) - 2 j`).
-    fn bodies_and_pairs(&self) -> (i64, i64);
+    /// The bodies it adds, the lower pairs and the higher pairs (a gear
+    /// mesh) it closes, for the mobility count (Gruebler: `3 (n - 1) - 2 j
+    /// - h`).
+    fn bodies_and_pairs(&self) -> (i64, i64, i64);
 
     /// For a group on two known places: the two and what they are, for the
     /// rule that they differ (`validate`).
@@ -448,6 +450,7 @@ enum Repr<'a> {
     Rpp(rpp::Rpp<'a>),
     Point(point::Point<'a>),
     Triad(triad::TriadKind<'a>),
+    Gear(gear::GearKind<'a>),
 }
 
 impl<'a> std::ops::Deref for View<'a> {
@@ -468,6 +471,7 @@ impl<'a> std::ops::Deref for View<'a> {
             Repr::Rpp(k) => k,
             Repr::Point(k) => k,
             Repr::Triad(k) => k,
+            Repr::Gear(k) => k,
         }
     }
 }
@@ -590,6 +594,7 @@ pub fn of(stmt: &Stmt) -> View<'_> {
             local,
         }),
         Kind::Triad(t) => Repr::Triad(triad::TriadKind { stmt, t }),
+        Kind::Gear(g) => Repr::Gear(gear::GearKind { stmt, g }),
     })
 }
 

@@ -235,8 +235,8 @@ impl<'a> GroupKind<'a> for Point<'a> {
         false
     }
 
-    fn bodies_and_pairs(&self) -> (i64, i64) {
-        (0, 0)
+    fn bodies_and_pairs(&self) -> (i64, i64, i64) {
+        (0, 0, 0)
     }
 }
 

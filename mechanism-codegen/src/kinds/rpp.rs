@@ -187,8 +187,8 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
         cx.condition(quote!(#rx.min_pivot_ratio));
     }
 
-    fn bodies_and_pairs(&self) -> (i64, i64) {
-        (2, 3)
+    fn bodies_and_pairs(&self) -> (i64, i64, i64) {
+        (2, 3, 0)
     }
 
     fn joint_at_infinity(&self) -> bool {

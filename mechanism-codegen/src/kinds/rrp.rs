@@ -194,8 +194,8 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
         cx.condition(quote!(#rx.min_pivot_ratio));
     }
 
-    fn bodies_and_pairs(&self) -> (i64, i64) {
-        (2, 3)
+    fn bodies_and_pairs(&self) -> (i64, i64, i64) {
+        (2, 3, 0)
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

@@ -202,8 +202,8 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
         cx.condition(quote!(#rx.min_pivot_ratio));
     }
 
-    fn bodies_and_pairs(&self) -> (i64, i64) {
-        (2, 3)
+    fn bodies_and_pairs(&self) -> (i64, i64, i64) {
+        (2, 3, 0)
     }
 
     fn distinct_pair(&self) -> Option<(&'a Ident, &'a Ident, &'static str)> {

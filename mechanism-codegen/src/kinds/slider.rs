@@ -149,8 +149,8 @@ impl<'a> GroupKind<'a> for Slider<'a> {
         cx.reaction(drive(&rx, input, "drive", Held::Push, doc));
     }
 
-    fn bodies_and_pairs(&self) -> (i64, i64) {
-        (1, 1)
+    fn bodies_and_pairs(&self) -> (i64, i64, i64) {
+        (1, 1, 0)
     }
 
     /// Its lane code in the batch kernel (`None`: an argument the kernel

@@ -139,8 +139,8 @@ impl<'a> GroupKind<'a> for Target<'a> {
     }
 
     /// A carriage and the effector, on two sliding pairs: two freedoms.
-    fn bodies_and_pairs(&self) -> (i64, i64) {
-        (2, 2)
+    fn bodies_and_pairs(&self) -> (i64, i64, i64) {
+        (2, 2, 0)
     }
 
     /// The point is its inputs `in_X[k]`, `in_Y[k]`; its motion their

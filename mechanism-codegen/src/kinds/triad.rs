@@ -538,8 +538,8 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         forces(self, cx);
     }
 
-    fn bodies_and_pairs(&self) -> (i64, i64) {
-        (4, 6)
+    fn bodies_and_pairs(&self) -> (i64, i64, i64) {
+        (4, 6, 0)
     }
 
     fn lane(&self, _lane: &mut Lane, _s: &mut Step<'_>) -> Option<()> {

@@ -38,6 +38,8 @@ pub enum KindWord {
     Point,
     /// `triad(..)`: the class III group.
     Triad,
+    /// `gear(..)`: a link geared to another.
+    Gear,
 }
 
 /// How many arguments a kind takes: the fewest (every optional argument
@@ -87,7 +89,7 @@ pub const SIGN_MODES: &[&str] = &["plus", "minus"];
 
 impl KindWord {
     /// Every kind, in the order the vocabulary lists them.
-    pub const ALL: [KindWord; 13] = [
+    pub const ALL: [KindWord; 14] = [
         KindWord::Ground,
         KindWord::Guide,
         KindWord::Crank,
@@ -101,6 +103,7 @@ impl KindWord {
         KindWord::Rpp,
         KindWord::Point,
         KindWord::Triad,
+        KindWord::Gear,
     ];
 
     /// Its descriptor, stated in its kind's file.
@@ -119,6 +122,7 @@ impl KindWord {
             KindWord::Rpp => &super::rpp::SPEC,
             KindWord::Point => &super::point::SPEC,
             KindWord::Triad => &super::triad::SPEC,
+            KindWord::Gear => &super::gear::SPEC,
         }
     }
 

@@ -3,7 +3,7 @@
 //! reading the arguments by role ([`Args`]).
 
 use super::args::{Args, NumberScope};
-use super::{Kind, Local, Origin, Triad};
+use super::{Gear, Kind, Local, Origin, Triad};
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::vocabulary::{kinds, kinds_list, unsupported_driver, KindWord};
 use crate::parse::{self, Arg};
@@ -83,6 +83,7 @@ pub(super) fn lower_kind(
         KindWord::Rpp => rpp(&mut a)?,
         KindWord::Point => point(&mut a, stmt)?,
         KindWord::Triad => triad(&mut a, stmt)?,
+        KindWord::Gear => gear(&mut a)?,
     };
     a.finish();
     if a.failed {
@@ -90,6 +91,67 @@ pub(super) fn lower_kind(
     } else {
         Some(k)
     }
+}
+
+/// A link name that may be the ground (`ground`: `None`).
+fn link_or_ground(a: &mut Args, role: &str) -> Option<Option<Ident>> {
+    let name = a.name(role)?;
+    Some((name != "ground").then_some(name))
+}
+
+/// `gear(PIVOT, radius, MESH, ratio[, phase[, CARRIER[, pressure_angle]]])`:
+/// the ratio neither 0 nor -1 (no gear, or an internal pair of equal
+/// gears), the pressure angle (20 deg when left out) in (0, 90) deg. Which
+/// cranks turn `MESH` and `CARRIER` is resolved after (`lower`).
+fn gear(a: &mut Args) -> Option<Kind> {
+    let pivot = a.name("pivot point")?;
+    let radius = a.length("radius to the point it defines")?;
+    let mesh = link_or_ground(a, "link it meshes with (or `ground`)")?;
+    let ratio = a.number("gear ratio", false)?;
+    if let Some(r) = ratio.fold() {
+        if r == 0.0 || r == -1.0 {
+            a.fail(
+                ratio.span,
+                format!("a gear ratio of {r} couples nothing (0: no gear; -1: an internal pair of equal gears, which has no center distance); the ratio is the pitch radius of the meshing gear over this one's, positive for external gears, negative for an internal pair, e.g. `2.0`"),
+            );
+            return None;
+        }
+    }
+    let phase = if a.args.len() > 0 {
+        a.number("phase angle", true)?
+    } else {
+        Value::lit(0.0, a.span)
+    };
+    let carrier = if a.args.len() > 0 {
+        link_or_ground(a, "common link both gears turn on (or `ground`)")?
+    } else {
+        None
+    };
+    let pressure = if a.args.len() > 0 {
+        a.number("pressure angle", true)?
+    } else {
+        Value::lit(20f64.to_radians(), a.span)
+    };
+    if let Some(p) = pressure.fold() {
+        if !(p > 0.0 && p < std::f64::consts::FRAC_PI_2) {
+            a.fail(
+                pressure.span,
+                format!("a pressure angle is between 0 and 90 deg, got {} deg; gears are commonly cut at `20 deg`", crate::diag::show_num(p.to_degrees())),
+            );
+            return None;
+        }
+    }
+    Some(Kind::Gear(Box::new(Gear {
+        pivot,
+        radius,
+        mesh,
+        ratio,
+        phase,
+        carrier,
+        pressure,
+        mesh_crank: None,
+        carrier_crank: None,
+    })))
 }
 
 /// `ground(x, y)`.

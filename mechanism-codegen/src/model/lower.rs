@@ -6,8 +6,8 @@
 use super::args::{literal_scope_for, NumberScope, MODE_PARAM};
 use super::kinds::lower_kind;
 use super::{
-    drawn, inputs, modes, Allowed, Failed, FailedKind, Kind, Kinetics, Level, Local, Mode, Model,
-    MotorSpec, Stmt,
+    drawn, inputs, modes, Allowed, Failed, FailedKind, GearCrank, Kind, Kinetics, Level, Local,
+    Mode, Model, MotorSpec, Stmt,
 };
 use crate::diag::{did_you_mean, Diagnostics};
 use crate::parse::vocabulary::KindWord;
@@ -394,7 +394,9 @@ impl<'a> Body<'a> {
     /// when its arguments are rejected, the names it meant to define.
     fn let_statement(&mut self, mut l: parse::Let, errors: &mut Diagnostics) {
         let mode_param = modes::take_mode_param(&mut l, &self.modes);
-        let Some(kind) = lower_kind(&l, self.scope, errors) else {
+        let kind = lower_kind(&l, self.scope, errors);
+        let kind = kind.and_then(|k| resolve_gear(k, &self.stmts, errors));
+        let Some(kind) = kind else {
             // A triad's other joints stay defined as well.
             let joints = l.joints.iter().map(|j| Failed {
                 name: j.clone(),
@@ -485,6 +487,73 @@ fn triad_joints(l: &parse::Let, kind: &Kind, links: &[Ident]) -> Vec<Stmt> {
         mode_param: None,
     })
     .collect()
+}
+
+/// A gear's meshing link and carrier resolved to the cranks on the ground
+/// that turn them (a gear reads their inputs: a link's angle over whole
+/// turns); `None` with an error when one is not such a crank's link.
+fn resolve_gear(kind: Kind, stmts: &[Stmt], errors: &mut Diagnostics) -> Option<Kind> {
+    let Kind::Gear(mut g) = kind else {
+        return Some(kind);
+    };
+    let crank_of = |link: &Ident, role: &str, errors: &mut Diagnostics| {
+        let found = stmts.iter().find(|s| s.links.first() == Some(link));
+        match found.map(|s| (&s.kind, s)) {
+            Some((
+                Kind::Crank {
+                    input,
+                    pivot,
+                    carrier: None,
+                    cos_sin: false,
+                    ..
+                },
+                _,
+            )) => Some(GearCrank {
+                input: input.clone(),
+                pivot: pivot.clone(),
+            }),
+            Some((
+                Kind::Crank {
+                    cos_sin: true,
+                    input,
+                    ..
+                },
+                _,
+            )) => {
+                errors.push(
+                    link.span(),
+                    format!("a gear reads the angle of `{link}` (its crank's input `{input}`), which is given as `(cos, sin)` here; drop `as cos_sin` from that crank"),
+                );
+                None
+            }
+            _ => {
+                errors.push(
+                    link.span(),
+                    format!("a gear's {role} is a link turned by a crank on the ground (the gear reads its angle, that crank's input, over whole turns) or `ground`, and `{link}` is not one defined before this statement; write its `crank(O, r, theta) as {link}` first, or gear to `ground`"),
+                );
+                None
+            }
+        }
+    };
+    if let Some(m) = &g.mesh {
+        g.mesh_crank = Some(crank_of(m, "meshing link", errors)?);
+    }
+    if let Some(c) = &g.carrier {
+        g.carrier_crank = Some(crank_of(c, "carrier", errors)?);
+    }
+    if g.mesh == g.carrier {
+        let span = g.mesh.as_ref().map_or(g.ratio.span, Ident::span);
+        let on = g
+            .mesh
+            .as_ref()
+            .map_or("ground".to_string(), ToString::to_string);
+        errors.push(
+            span,
+            format!("a gear meshing with `{on}` while turning on `{on}` never turns; mesh it with a crank's link, e.g. `gear({}, r, link2, 2.0)`, or carry it on one (its sixth argument)", g.pivot),
+        );
+        return None;
+    }
+    Some(Kind::Gear(g))
 }
 
 /// A `let` statement whose arguments were rejected: the names it meant to

@@ -365,6 +365,50 @@ pub enum Kind {
     /// The triad (class III group): the statement of its joint `A`; its
     /// joints `B` and `P` are lowered as points on the ternary link.
     Triad(Box<Triad>),
+    /// A gear pair: a link turning about `pivot`, geared to the link `mesh`
+    /// (`kinds::gear`).
+    Gear(Box<Gear>),
+}
+
+/// A `gear` statement's arguments (lengths in L, angles in rad).
+///
+/// Both gears turn about points of one common link, the carrier (the
+/// ground when `carrier` is `None`). Measured from the carrier, the new
+/// link's angle is `phase - ratio * (angle of mesh)`: `ratio` is the pitch
+/// radius of `mesh`'s gear over the new link's (positive: external gears,
+/// turning opposite ways; negative: an internal pair, turning the same way).
+pub struct Gear {
+    /// The point the new link turns about (on the carrier).
+    pub pivot: Ident,
+    /// The distance from the pivot to the point the statement defines.
+    pub radius: Value,
+    /// The link geared to it (`None`: the ground, a fixed gear).
+    pub mesh: Option<Ident>,
+    /// Pitch radius of `mesh`'s gear over the new link's, signed (never 0
+    /// or -1).
+    pub ratio: Value,
+    /// The new link's angle from the carrier when `mesh`'s is 0.
+    pub phase: Value,
+    /// The common link both turn on (`None`: the ground).
+    pub carrier: Option<Ident>,
+    /// The pressure angle of the teeth (rad, in (0, pi/2)): the tooth force
+    /// is along the line of action, this far from the common tangent.
+    pub pressure: Value,
+    /// The crank of `mesh` (its input is `mesh`'s angle, its pivot the
+    /// center of `mesh`'s gear), resolved when lowering.
+    pub mesh_crank: Option<GearCrank>,
+    /// The crank of `carrier`, resolved when lowering.
+    pub carrier_crank: Option<GearCrank>,
+}
+
+/// A crank on the ground as a gear reads it: the input that is its angle
+/// (rad) and its pivot.
+#[derive(Clone)]
+pub struct GearCrank {
+    /// The crank's input (its link's angle from +x, rad, unwrapped).
+    pub input: Ident,
+    /// Its pivot (a ground point).
+    pub pivot: Ident,
 }
 
 /// A `triad` statement's arguments (lengths in L, angles in rad).
@@ -407,7 +451,7 @@ impl Kind {
     pub fn link_count(&self) -> usize {
         match self {
             Kind::Ground { .. } | Kind::Guide { .. } | Kind::Point { .. } => 0,
-            Kind::Crank { .. } | Kind::Slider { .. } | Kind::Target { .. } => 1,
+            Kind::Crank { .. } | Kind::Slider { .. } | Kind::Target { .. } | Kind::Gear(_) => 1,
             Kind::Triad(_) => 4,
             _ => 2,
         }
@@ -457,6 +501,7 @@ pub fn group_kind(kind: &Kind) -> Option<&'static str> {
         Kind::Rpp { .. } => "RPP",
         Kind::Point { .. } => "link point",
         Kind::Triad(_) => "triad",
+        Kind::Gear(_) => "gear",
         Kind::Ground { .. } | Kind::Guide { .. } => return None,
     })
 }

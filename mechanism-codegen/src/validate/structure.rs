@@ -37,20 +37,26 @@ pub(super) fn dof_matches(model: &Model, errors: &mut Diagnostics) {
         errors.push(declared.span(), "`dof` takes a whole number");
         return;
     };
-    let (mut links, mut joints) = (1i64, 0i64);
+    let (mut links, mut joints, mut higher) = (1i64, 0i64, 0i64);
     let mut inputs = Vec::new();
     for stmt in &model.stmts {
-        let (bodies, pairs) = kinds::of(stmt).bodies_and_pairs();
+        let (bodies, pairs, meshes) = kinds::of(stmt).bodies_and_pairs();
         links += bodies;
         joints += pairs;
+        higher += meshes;
         inputs.extend(stmt.kind.inputs().iter().map(ToString::to_string));
     }
-    let mobility = 3 * (links - 1) - 2 * joints;
+    let mobility = 3 * (links - 1) - 2 * joints - higher;
+    let meshes = if higher > 0 {
+        format!(" - {higher}")
+    } else {
+        String::new()
+    };
     if mobility != n {
         errors.push(
             declared.span(),
             format!(
-                "the mechanism has {} (Gruebler: 3*({links}-1) - 2*{joints} = {mobility}) for {} [{}], but `dof {n}` is declared; add or remove a driver, or correct `dof`",
+                "the mechanism has {} (Gruebler: 3*({links}-1) - 2*{joints}{meshes} = {mobility}) for {} [{}], but `dof {n}` is declared; add or remove a driver, or correct `dof`",
                 crate::diag::counted(mobility, "degree of freedom", "degrees of freedom"),
                 crate::diag::counted(inputs.len() as i64, "input", "inputs"),
                 inputs.join(", ")

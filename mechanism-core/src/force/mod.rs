@@ -61,6 +61,7 @@
 pub mod actuator;
 pub mod body;
 pub mod crank;
+pub mod gear;
 pub mod group;
 pub mod prp;
 pub mod rpp;

@@ -1,0 +1,388 @@
+//! `gear(PIVOT, r, MESH, ratio[, phase[, CARRIER[, pressure_angle]]]) as
+//! LINK`: a link turning about `PIVOT` on the common link `CARRIER` (the
+//! ground when left out), geared to the link `MESH` (or to a fixed gear,
+//! `ground`). Measured from the carrier, its angle is
+//!
+//! ```text
+//! theta = phase - ratio * theta_mesh
+//! ```
+//!
+//! (rad, counter-clockwise): `ratio` is the pitch radius of `MESH`'s gear
+//! over this one's, positive for external gears (they turn opposite ways),
+//! negative for an internal pair (the same way). `MESH` and `CARRIER` are
+//! each the ground or a crank's link on the ground, whose angle is that
+//! crank's input (over whole turns), so the absolute angle is linear in the
+//! inputs, `theta = phase - ratio q_mesh + (1 + ratio) q_carrier`, and so
+//! are its rates. The statement defines the point at `r` from the pivot
+//! along the link's axis, which turns at `theta`: the crank primitive's
+//! position, velocity and acceleration at that angle.
+//!
+//! Forces (`mechanism::force::gear`): the tooth force along the line of
+//! action at the pressure angle (20 deg when left out) holds the link's
+//! load; it reacts on `MESH` at the pitch point, the pivot force on the
+//! carrier.
+
+use super::closure::{axis_between, f, Residuals};
+use super::forces::{body_name, revolute, rx, ForceCx, Held, Reaction};
+use super::lane::{Lane, Step};
+use super::rates::{vec_ty, RateCx};
+use super::tokens::{grp, local, tag, unit_field};
+use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
+use crate::diag::Diagnostics;
+use crate::kinds::pose::num;
+use crate::model::{Gear, Stmt};
+use crate::value::Value;
+use mechanism_core::{driver, geometry};
+use proc_macro2::TokenStream;
+use quote::{format_ident, quote};
+use syn::Ident;
+
+/// How `gear` is written: its word, usage, arity and links.
+pub(crate) const SPEC: super::word::Spec = super::word::Spec {
+    word: super::word::KindWord::Gear,
+    text: "gear",
+    usage: "gear(PIVOT, radius, MESH, ratio[, phase[, CARRIER[, pressure_angle]]]) as LINK",
+    arity: super::word::Arity::Range(4, 7),
+    links: "the gear's link, turning about its pivot",
+    inputs: &[],
+    mode_at: None,
+    mode_words: &[],
+};
+
+/// A `gear` statement.
+pub(super) struct GearKind<'a> {
+    pub stmt: &'a Stmt,
+    pub g: &'a Gear,
+}
+
+/// The inputs a gear's angle reads and their factors: the meshing link's
+/// crank's input times `-ratio`, the carrier's crank's input times
+/// `1 + ratio`.
+struct Terms<'a> {
+    mesh: Option<&'a Ident>,
+    carrier: Option<&'a Ident>,
+}
+
+impl<'a> GearKind<'a> {
+    fn terms(&self) -> Terms<'a> {
+        Terms {
+            mesh: self.g.mesh_crank.as_ref().map(|c| &c.input),
+            carrier: self.g.carrier_crank.as_ref().map(|c| &c.input),
+        }
+    }
+
+    /// `1 + ratio` (folded when literal).
+    fn one_plus_ratio(&self) -> TokenStream {
+        match self.g.ratio.fold() {
+            Some(r) => Value::lit(1.0 + r, self.g.ratio.span).emit(),
+            None => {
+                let r = self.g.ratio.emit();
+                quote!((<T as ::mechanism::Real>::lit(1.0) + #r))
+            }
+        }
+    }
+
+    /// Its angle (rad, from +x) or a rate of it (`phase` false: the rates,
+    /// whose phase term is 0), from the inputs' values or rates in the
+    /// struct `src` (`input`, `rates`, `accels`).
+    fn angle_code(&self, src: TokenStream, phase: bool) -> TokenStream {
+        let t = self.terms();
+        let ratio = self.g.ratio.emit();
+        let mut sum = if phase {
+            let p = self.g.phase.emit();
+            quote!(#p)
+        } else {
+            quote!(<T as ::mechanism::Real>::lit(0.0))
+        };
+        if let Some(q) = t.mesh {
+            sum = quote!(#sum - #ratio * #src.#q);
+        }
+        if let Some(q) = t.carrier {
+            let k = self.one_plus_ratio();
+            sum = quote!(#sum + #k * #src.#q);
+        }
+        sum
+    }
+
+    /// Its angle (rad) or rate from the inputs' `value`s (`f64`).
+    fn angle_f64(&self, value: &dyn Fn(&Ident) -> f64, phase: bool) -> f64 {
+        let t = self.terms();
+        let ratio = num(&self.g.ratio);
+        let mut sum = if phase { num(&self.g.phase) } else { 0.0 };
+        if let Some(q) = t.mesh {
+            sum -= ratio * value(q);
+        }
+        if let Some(q) = t.carrier {
+            sum += (1.0 + ratio) * value(q);
+        }
+        sum
+    }
+
+    /// The center of the meshing gear: its crank's pivot, or for a fixed
+    /// gear (`MESH` the ground) the carrier's crank's pivot.
+    fn mesh_center(&self) -> Option<&'a Ident> {
+        let g = self.g;
+        g.mesh_crank
+            .as_ref()
+            .or(g.carrier_crank.as_ref())
+            .map(|c| &c.pivot)
+    }
+}
+
+impl<'a> GroupKind<'a> for GearKind<'a> {
+    fn references(&self) -> Vec<(&'a Ident, Role)> {
+        let g = self.g;
+        let mut r = vec![(&g.pivot, Role::Point)];
+        r.extend(g.mesh.iter().map(|m| (m, Role::Link)));
+        r.extend(g.carrier.iter().map(|c| (c, Role::Link)));
+        r
+    }
+
+    fn link_shapes(&self) -> Vec<LinkShape> {
+        vec![LinkShape::new(
+            &[&self.g.pivot, &self.stmt.name],
+            Turn::Own,
+            None,
+        )]
+    }
+
+    fn point_owner(&self) -> Option<Option<String>> {
+        Some(Some(self.stmt.links[0].to_string()))
+    }
+
+    fn position_values(&self) -> Vec<Value> {
+        let g = self.g;
+        vec![g.radius.clone(), g.ratio.clone(), g.phase.clone()]
+    }
+
+    fn eval(
+        &self,
+        pose: &mut Pose,
+        input: &dyn Fn(&Ident) -> f64,
+    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let pivot = pose.point(&self.g.pivot);
+        let theta = self.angle_f64(input, true);
+        let c = driver::crank::position(&pivot, num(&self.g.radius), theta)?;
+        pose.found(self.stmt, Some(c.tip), &[c.axis]);
+        pose.keep(self.stmt, c);
+        Ok(None)
+    }
+
+    fn position_type(&self) -> TokenStream {
+        quote!(::mechanism::driver::crank::CrankPosition<T>)
+    }
+
+    fn position(&self, _cos_sin: bool) -> Solve {
+        let (r, pivot) = (self.g.radius.emit(), local(&self.g.pivot));
+        let theta = self.angle_code(quote!(input), true);
+        Solve::Group {
+            call: quote!(::mechanism::driver::crank::position(&#pivot, #r, #theta)),
+            joint: Some("tip"),
+        }
+    }
+
+    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
+        unit_field(self.stmt, "axis")
+    }
+
+    fn slide_field(&self, _slot: usize) -> TokenStream {
+        quote!(s)
+    }
+
+    /// Its angle from the inputs, reduced to (-pi, pi] (no atan2).
+    fn link_angle(&self, _cos_sin: bool) -> Option<TokenStream> {
+        let theta = self.angle_code(quote!(input), true);
+        Some(quote!(::mechanism::geometry::wrap_angle(#theta)))
+    }
+
+    fn rates(&self, cx: &mut dyn RateCx) {
+        let stmt = self.stmt;
+        let (g, pv, t) = (grp(stmt), cx.motion(stmt), tag(stmt));
+        let w = cx.own(stmt, 0);
+        let m = cx.point_arg(&self.g.pivot);
+        let omega = self.angle_code(quote!(rates), false);
+        cx.code(if cx.accel() {
+            let alpha = self.angle_code(quote!(accels), false);
+            quote! {
+                let #w = #alpha;
+                let #pv = ::mechanism::driver::crank::acceleration(&pos.#g, #m, #omega, #w) #t;
+            }
+        } else {
+            quote! {
+                let #w = #omega;
+                let #pv = ::mechanism::driver::crank::velocity(&pos.#g, #m, #w) #t;
+            }
+        });
+        cx.field(pv, vec_ty());
+        cx.field(w, quote!(T));
+    }
+
+    fn rate_system(&self) -> bool {
+        false
+    }
+
+    /// The point at its radius from the pivot.
+    fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
+        r.at_length("|tip - pivot| = radius", &self.g.pivot, f(&self.g.radius));
+    }
+
+    fn closure_axis(&self, _index: usize) -> TokenStream {
+        axis_between(&self.g.pivot, &self.stmt.name)
+    }
+
+    fn link_lengths(&self) -> Vec<&'a Value> {
+        vec![&self.g.radius]
+    }
+
+    /// No batch kernel: the batch takes the scalar path.
+    fn lane(&self, _lane: &mut Lane, _s: &mut Step<'_>) -> Option<()> {
+        None
+    }
+
+    fn primitive(&self) -> &'static str {
+        "Crank"
+    }
+
+    fn det_code(&self) -> TokenStream {
+        quote!(1.0)
+    }
+
+    fn describe(&self) -> String {
+        let g = self.g;
+        let (n, links, pivot) = (&self.stmt.name, links_text(self.stmt), &g.pivot);
+        let mesh = g.mesh.as_ref().map_or("ground".into(), ToString::to_string);
+        let on = g
+            .carrier
+            .as_ref()
+            .map_or("ground".into(), ToString::to_string);
+        let ratio = g.ratio.tokens.to_string();
+        format!("gear: `{links}` about `{pivot}` on `{on}`, geared to `{mesh}` at ratio {ratio}, point `{n}`")
+    }
+
+    fn point_kind(&self) -> Option<&'static str> {
+        Some("Joint")
+    }
+
+    fn point_moves(
+        &self,
+        _link_turns: &dyn Fn(&Ident) -> bool,
+        _moves: &dyn Fn(&Ident) -> bool,
+    ) -> bool {
+        true
+    }
+
+    fn link_kind(&self, _index: usize) -> &'static str {
+        "Crank"
+    }
+
+    fn input_is_angle(&self) -> bool {
+        false
+    }
+
+    /// One link, its pivot (a lower pair) and the mesh (a higher pair).
+    fn bodies_and_pairs(&self) -> (i64, i64, i64) {
+        (1, 1, 1)
+    }
+
+    /// It turns about a ground point, or a point of its carrier.
+    fn check_placed(&self, plan: &dyn Placed, errors: &mut Diagnostics) {
+        let pivot = &self.g.pivot;
+        let p = pivot.to_string();
+        if !plan.is_defined(&p) {
+            return;
+        }
+        match &self.g.carrier {
+            None if !plan.is_ground_point(&p) => errors.push(
+                pivot.span(),
+                format!("a gear on the ground turns about a ground point, and `{p}` moves; fix the pivot with `ground(x, y)`, or carry the gear on the crank's link that holds `{p}` (its sixth argument)"),
+            ),
+            Some(link) => {
+                if let Some(points) = plan.link_points(link) {
+                    if !points.contains(&p) {
+                        errors.push(
+                            pivot.span(),
+                            format!("a gear carried by `{link}` turns about one of its points, and `{p}` is not on it; its points: {}", points.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(", ")),
+                        );
+                    }
+                }
+            }
+            None => {}
+        }
+    }
+
+    fn forces(&self, cx: &mut dyn ForceCx) {
+        let (stmt, g) = (self.stmt, self.g);
+        let Some(center) = self.mesh_center() else {
+            return;
+        };
+        let (rx, link, pivot) = (rx(stmt), &stmt.links[0], &g.pivot);
+        let load = cx.load_about(link, pivot);
+        let (ratio, pressure) = (g.ratio.emit(), g.pressure.emit());
+        cx.solve(
+            stmt,
+            quote!(::mechanism::force::gear::reactions(&#load, &pos.#pivot, &pos.#center, #ratio, #pressure)),
+        );
+        // The pivot force reacts on the carrier (or the body the pivot is
+        // on), the tooth force on the meshing link at the pitch point.
+        let body = match &g.carrier {
+            Some(c) => Some(c.to_string()),
+            None => cx.body_of_point(pivot),
+        };
+        if let Some(b) = &body {
+            let r = cx.reference(b);
+            cx.add(
+                b,
+                quote!(::mechanism::force::Wrench::force_at(&(-#rx.pivot), &pos.#pivot, &pos.#r)),
+            );
+        }
+        if let Some(m) = &g.mesh {
+            let r = cx.reference(&m.to_string());
+            cx.add(
+                &m.to_string(),
+                quote!(::mechanism::force::Wrench::force_at(&(-#rx.tooth), &#rx.contact, &pos.#r)),
+            );
+        }
+        cx.reaction(revolute(&rx, &body, link, pivot, "pivot"));
+        let from = body_name(&g.mesh.as_ref().map(ToString::to_string));
+        cx.reaction(Reaction {
+            name: format_ident!("r_{}_{}", from, link),
+            ty: quote!(::mechanism::Vector2<T>),
+            value: quote!(#rx.tooth),
+            doc: format!("Tooth force of `{from}`'s gear on `{link}` at the pitch point, along the line of action (force units, global frame)."),
+            held: Held::Force,
+        });
+    }
+}
+
+impl super::run::RunKind for GearKind<'_> {
+    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let stmt = self.stmt;
+        let g = cx
+            .pose
+            .kept::<driver::crank::CrankPosition<f64>>(&stmt.name)
+            .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Crank))?;
+        let m = cx.point_arg(&self.g.pivot);
+        let omega = self.angle_f64(&|q| cx.rate(q), false);
+        let (pv, w) = if cx.accel() {
+            let alpha = self.angle_f64(&|q| cx.accel_of(q), false);
+            (
+                driver::crank::acceleration(g, m.as_ref(), omega, alpha)?,
+                alpha,
+            )
+        } else {
+            (driver::crank::velocity(g, m.as_ref(), omega)?, omega)
+        };
+        cx.set_motion(stmt, pv);
+        cx.set_own(stmt, 0, w);
+        Ok(())
+    }
+
+    fn run_link_dir(&self, _index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+        pose.kept::<driver::crank::CrankPosition<f64>>(&self.stmt.name)
+            .map_or(mechanism_core::Vector2::new(f64::NAN, f64::NAN), |c| c.axis)
+    }
+
+    fn run_link_angle(&self, value: &dyn Fn(&Ident) -> f64) -> Option<f64> {
+        Some(geometry::wrap_angle(self.angle_f64(value, true)))
+    }
+}
