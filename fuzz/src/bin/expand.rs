@@ -354,6 +354,7 @@ const WORDS: &[&str] = &[
     "rpr",
     "prp",
     "rpp",
+    "gear",
     "point",
     "params",
     "analysis",

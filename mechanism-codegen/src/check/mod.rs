@@ -1,4 +1,4 @@
-//! Stage 6, check: the declared input ranges, and the mechanism assembled over
+//! Stage 5, check: the declared input ranges, and the mechanism assembled over
 //! them at expansion time.
 //!
 //! The input ranges and the allowed singular positions are read by the model

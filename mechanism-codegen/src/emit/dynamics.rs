@@ -1,4 +1,4 @@
-//! Stage 5c, emit the forward dynamics (`analysis dynamics;`): the equations
+//! Stage 6c, emit the forward dynamics (`analysis dynamics;`): the equations
 //! of motion in the inputs' coordinates `q` (Eksergian's equation and its
 //! n-input form), from what the kinematics already generate.
 //!

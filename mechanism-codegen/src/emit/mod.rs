@@ -1,4 +1,4 @@
-//! Stage 5, emit: straight-line Rust for one mechanism. Only what the scene asks
+//! Stage 6, emit: straight-line Rust for one mechanism. Only what the scene asks
 //! for is generated: no velocity code in a position-only scene, no `atan2`
 //! unless a link angle is an output, and fixed points and guides pass `None`
 //! so that their terms vanish at compile time.

@@ -1,4 +1,4 @@
-//! Stage 5b, emit the force analysis: the known load of every link (inertia,
+//! Stage 6b, emit the force analysis: the known load of every link (inertia,
 //! weight, external forces and couples), then the groups and drivers in the
 //! reverse of the solve order, each through its fixed-size system in
 //! `mechanism::force`, passing its outer reactions (negated) to the bodies it
