@@ -328,7 +328,7 @@ fn marked_cranks(model: &Model) -> Vec<&Ident> {
     model
         .stmts
         .iter()
-        .filter_map(|s| kinds::cos_sin_input(s))
+        .filter_map(kinds::cos_sin_input)
         .collect()
 }
 

@@ -214,7 +214,7 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
     /// Grashof condition, in numbers.
     fn full_turn_hint(&self, find: &dyn Fn(&Ident) -> Option<&'a Stmt>) -> Option<String> {
         let arm = |n: &Ident| find(n).and_then(|s| super::crank_arm(s).map(|arm| (s, arm)));
-        let ground = |n: &Ident| find(n).and_then(|s| super::ground_at(s));
+        let ground = |n: &Ident| find(n).and_then(super::ground_at);
         let ((crank, (pivot, radius)), other) = match (arm(self.a), arm(self.b)) {
             (Some(c), _) => (c, self.b),
             (_, Some(c)) => (c, self.a),

@@ -14,7 +14,7 @@ fn literal_ground(model: &Model, name: &Ident) -> Option<(f64, f64)> {
         .stmts
         .iter()
         .filter(|s| s.name == *name)
-        .find_map(|s| kinds::literal_ground(s))
+        .find_map(kinds::literal_ground)
 }
 
 /// Rule: the two known joints of a group (or the two guides of a PRP) are two

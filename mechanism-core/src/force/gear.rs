@@ -75,7 +75,8 @@ pub fn reactions<T: Real>(
     let c = center - pivot;
     let d = (c.x * c.x + c.y * c.y).sqrt_kernel();
     let rho = d / (T::one() + ratio);
-    if !(d > T::zero()) || !rho.finite() || !(abs(rho) > T::zero()) {
+    let apart = d > T::zero() && rho.finite() && abs(rho) > T::zero();
+    if !apart {
         return non_finite("gear center distance");
     }
     let e = c / d;
@@ -86,7 +87,8 @@ pub fn reactions<T: Real>(
         let v = unit(pressure);
         (v.y / v.x, v.x)
     };
-    if !(cos_phi > T::zero()) || !tan_phi.finite() {
+    let acute = cos_phi > T::zero() && tan_phi.finite();
+    if !acute {
         return non_finite("gear pressure angle");
     }
     let tooth = t * tangential + u * (abs(tangential) * tan_phi);
