@@ -19,6 +19,7 @@ pub mod diag;
 pub mod emit;
 pub(crate) mod kinds;
 pub mod model;
+pub mod names;
 pub mod parse;
 pub mod plan;
 pub mod runtime;

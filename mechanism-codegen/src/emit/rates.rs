@@ -7,6 +7,7 @@ use super::reads::{Analysis, Reads};
 use crate::kinds;
 use crate::kinds::rates::{vec_ty, RateCx};
 use crate::model::{Model, StmtId};
+use crate::names::Family;
 use crate::plan::{Outputs, Plan};
 use crate::value::lit;
 use proc_macro2::TokenStream;
@@ -83,7 +84,7 @@ impl RateCx for RateEmitter<'_> {
         if !self.carried(g) {
             return none();
         }
-        let n = format_ident!("gvel_{}", g);
+        let n = Family::Gvel.of(g);
         if self.accel {
             quote!(::core::option::Option::Some(&vel.#n))
         } else {
@@ -95,7 +96,7 @@ impl RateCx for RateEmitter<'_> {
         if !self.carried(g) {
             return none();
         }
-        let n = format_ident!("gacc_{}", g);
+        let n = Family::Gacc.of(g);
         quote!(::core::option::Option::Some(&#n))
     }
 
@@ -107,7 +108,7 @@ impl RateCx for RateEmitter<'_> {
 
     fn link_omega_in_accel(&self, link: &Ident) -> Option<TokenStream> {
         self.plan.turning_link(&link.to_string()).map(|l| {
-            let w = format_ident!("omega_{}", l);
+            let w = Family::Omega.named(&l);
             quote!(vel.#w)
         })
     }

@@ -14,10 +14,11 @@ use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
 use crate::model::Stmt;
+use crate::names::Family;
 use crate::value::Value;
 use mechanism_core::{driver, geometry, link};
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::Ident;
 
 /// How `crank` is written: its word, usage, arity and links.
@@ -346,7 +347,7 @@ fn lane_steps(
     let g = s.g.clone();
     let (ppx, ppy) = (&p.px, &p.py);
     let r = radius.emit();
-    let th = format_ident!("in_{}", input);
+    let th = Family::In.of(input);
     let rates = s.rates(0)?;
     let (omega, alpha) = (&rates.omega, &rates.alpha);
     s.emit(quote! {
@@ -355,7 +356,7 @@ fn lane_steps(
         let #px = #g.x; let #py = #g.y;
     });
     if lane.vel {
-        let rate = format_ident!("rate_{}", input);
+        let rate = Family::Rate.of(input);
         let (pvx, pvy) = (&p.vx, &p.vy);
         s.emit(quote! {
             let #omega = #rate[k];
@@ -365,7 +366,7 @@ fn lane_steps(
         s.check([quote!(#omega)]);
     }
     if lane.acc {
-        let accel = format_ident!("accel_{}", input);
+        let accel = Family::Accel.of(input);
         let (pax, pay) = (&p.ax, &p.ay);
         s.emit(quote! {
             let #alpha = #accel[k];

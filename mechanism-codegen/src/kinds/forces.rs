@@ -4,6 +4,7 @@
 //! against [`FieldsOnly`] (the fields alone, for the stubs emitted on error).
 
 use crate::model::{Model, Stmt};
+use crate::names::Family;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use std::collections::BTreeMap;
@@ -114,7 +115,7 @@ pub trait ForceCx {
 
 /// `rx_NAME`: the local holding a statement's reactions.
 pub fn rx(stmt: &Stmt) -> Ident {
-    format_ident!("rx_{}", stmt.name)
+    Family::Rx.of(&stmt.name)
 }
 
 /// The name of the body on the far side of a joint, for field names.

@@ -4,6 +4,7 @@
 
 use super::lane::{Lane, LaneGuide, LaneLink, PointLocals, Step, Vector};
 use crate::model::{Local, Mode};
+use crate::names::Family;
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -50,7 +51,7 @@ pub(crate) fn dyad(
     let l2 = match second {
         SecondSide::Length(l2) => l2.emit(),
         SecondSide::Input(input) => {
-            let s_in = format_ident!("in_{}", input);
+            let s_in = Family::In.of(input);
             s.check([quote!(#s_in[k])]);
             quote!(#s_in[k])
         }
@@ -71,7 +72,7 @@ pub(crate) fn dyad(
                 quote!(::mechanism::__private::lane::rrr_rates(&#g, #bvx - #avx, #bvy - #avy))
             }
             SecondSide::Input(input) => {
-                let rate = format_ident!("rate_{}", input);
+                let rate = Family::Rate.of(input);
                 s.check([quote!(#rate[k])]);
                 quote!(::mechanism::__private::lane::actuator_rates(&#g, #bvx - #avx, #bvy - #avy, #l2, #rate[k]))
             }
@@ -91,10 +92,7 @@ pub(crate) fn dyad(
                 quote!(::mechanism::__private::lane::rrr_accels(&#g, #bax - #aax, #bay - #aay, #w1, #w2))
             }
             SecondSide::Input(input) => {
-                let (rate, accel) = (
-                    format_ident!("rate_{}", input),
-                    format_ident!("accel_{}", input),
-                );
+                let (rate, accel) = (Family::Rate.of(input), Family::Accel.of(input));
                 s.check([quote!(#accel[k])]);
                 quote!(::mechanism::__private::lane::actuator_accels(&#g, #bax - #aax, #bay - #aay, #l2, #rate[k], #accel[k], #w1, #w2))
             }

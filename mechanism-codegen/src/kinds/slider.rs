@@ -9,10 +9,11 @@ use super::tokens::{along, grp, local, tag};
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
+use crate::names::Family;
 use crate::value::Value;
 use mechanism_core::driver;
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::Ident;
 
 /// How `slider` is written: its word, usage, arity and links.
@@ -219,12 +220,12 @@ fn lane_steps(
     } = s.own.clone();
     let (line, gv, ga) = (&gd.line, &gd.gv, &gd.ga);
     let o = offset.emit();
-    let input_s = format_ident!("in_{}", input);
+    let input_s = Family::In.of(input);
     s.emit(quote! {
         let (#px, #py) = ::mechanism::__private::lane::slider(&#line, #o, #input_s[k]);
     });
     s.check([quote!(#input_s[k])]);
-    let rate = format_ident!("rate_{}", input);
+    let rate = Family::Rate.of(input);
     if lane.vel {
         s.emit(quote! {
             let (#vx, #vy) = ::mechanism::__private::lane::slider_velocity(&#line, #px, #py, #rate[k], #gv);
@@ -232,7 +233,7 @@ fn lane_steps(
         s.check([quote!(#rate[k])]);
     }
     if lane.acc {
-        let accel = format_ident!("accel_{}", input);
+        let accel = Family::Accel.of(input);
         s.emit(quote! {
             let (#ax, #ay) = ::mechanism::__private::lane::slider_acceleration(&#line, #px, #py, #rate[k], #accel[k], #gv, #ga);
         });

@@ -11,6 +11,7 @@ use super::rates::{vec_ty, RateCx};
 use super::tokens::tag;
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::model::{Kind, Model, Stmt};
+use crate::names::Family;
 use crate::value::Value;
 use mechanism_core::driver;
 use proc_macro2::TokenStream;
@@ -154,23 +155,20 @@ impl<'a> GroupKind<'a> for Target<'a> {
             ax,
             ay,
         } = s.own.clone();
-        let at = |prefix: &str| {
-            let (x, y) = (
-                format_ident!("{}_{}", prefix, self.x),
-                format_ident!("{}_{}", prefix, self.y),
-            );
+        let at = |family: Family| {
+            let (x, y) = (family.of(self.x), family.of(self.y));
             (quote!(#x[k]), quote!(#y[k]))
         };
-        let (x, y) = at("in");
+        let (x, y) = at(Family::In);
         s.emit(quote!(let #px = #x; let #py = #y;));
         s.check([x, y]);
         if lane.vel {
-            let (x, y) = at("rate");
+            let (x, y) = at(Family::Rate);
             s.emit(quote!(let #vx = #x; let #vy = #y;));
             s.check([x, y]);
         }
         if lane.acc {
-            let (x, y) = at("accel");
+            let (x, y) = at(Family::Accel);
             s.emit(quote!(let #ax = #x; let #ay = #y;));
             s.check([x, y]);
         }

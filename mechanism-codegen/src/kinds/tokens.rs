@@ -3,6 +3,7 @@
 //! unit vectors folded when literal.
 
 use crate::model::{Mode, Stmt};
+use crate::names::Family;
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -48,12 +49,12 @@ pub(crate) fn unit_vector(angle: &Value) -> TokenStream {
 /// beside a point `G`), and would not compile. The velocity and acceleration
 /// code already use `vel_NAME` and `acc_NAME`.
 pub(crate) fn local(name: &Ident) -> Ident {
-    format_ident!("pos_{}", name)
+    Family::Pos.of(name)
 }
 
 /// `grp_NAME`: the solved position state of a statement's group or driver.
 pub(crate) fn grp(stmt: &Stmt) -> Ident {
-    format_ident!("grp_{}", stmt.name)
+    Family::Grp.of(&stmt.name)
 }
 
 /// `.map_err(|e| e.in_group(NAME))?`: tags a core error with the statement's name.
@@ -64,7 +65,7 @@ pub(crate) fn tag(stmt: &Stmt) -> TokenStream {
 
 /// `axis_LINK`: the local (and hidden position field) holding a link's unit axis.
 pub(crate) fn axis(link: &Ident) -> Ident {
-    format_ident!("axis_{}", link)
+    Family::Axis.of(link)
 }
 
 /// `(unit, raw)` direction of a link along a guide: the guide's direction.

@@ -12,7 +12,7 @@ mod kinetics;
 mod names;
 mod structure;
 
-pub use names::{symbols, Category, RESERVED, RESERVED_PREFIXES};
+pub use names::{symbols, Category, RESERVED};
 
 use crate::diag::Diagnostics;
 use crate::model::{Level, Model};

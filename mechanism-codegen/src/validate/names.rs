@@ -43,10 +43,6 @@ impl Category {
     }
 }
 
-/// Prefixes of names the generated code uses for its own locals.
-pub const RESERVED_PREFIXES: &[&str] = &[
-    "vel_", "acc_", "grp_", "axis_", "omega_", "alpha_", "gvel_", "gacc_", "load_", "rx_", "pw_",
-];
 /// Names the generated methods use for their arguments.
 pub const RESERVED: &[&str] = &[
     "input",
@@ -341,7 +337,9 @@ pub(super) fn reserved_names(model: &Model, errors: &mut Diagnostics) {
                 ident.span(),
                 format!("`{name}` is reserved for the generated methods' arguments; choose another name"),
             );
-        } else if let Some(p) = RESERVED_PREFIXES.iter().find(|p| name.starts_with(*p)) {
+        } else if let Some(p) =
+            crate::names::reserved_prefixes().find(|p| name.starts_with(p.as_str()))
+        {
             errors.push(
                 ident.span(),
                 format!("names starting with `{p}` are reserved for the generated code's locals; rename `{name}`"),

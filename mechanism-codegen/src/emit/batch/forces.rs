@@ -34,6 +34,7 @@ use super::{element, Fields};
 use crate::emit::forces::ForceField;
 use crate::emit::names::TypeNames;
 use crate::model::Model;
+use crate::names::Family;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
@@ -78,7 +79,7 @@ pub(super) fn load_fields(model: &Model) -> Vec<(Ident, Ident)> {
         .kinetics
         .loads
         .iter()
-        .map(|(n, _)| (format_ident!("load_{}", n), n.clone()))
+        .map(|(n, _)| (Family::Load.of(n), n.clone()))
         .collect()
 }
 

@@ -37,6 +37,7 @@ mod tests;
 use crate::emit::forces::ForceField;
 use crate::kinds;
 use crate::model::{Level, Model};
+use crate::names::Family;
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -102,14 +103,9 @@ pub fn emit(
         return errors;
     }
     let fields = Fields {
-        inputs: ["in", "rate", "accel"][..levels]
+        inputs: Family::BATCH_INPUTS[..levels]
             .iter()
-            .map(|p| {
-                inputs
-                    .iter()
-                    .map(|i| format_ident!("{}_{}", p, i))
-                    .collect()
-            })
+            .map(|f| inputs.iter().map(|i| f.of(i)).collect())
             .collect(),
         outputs: out_slices(outputs, levels),
     };

@@ -16,6 +16,7 @@ use super::describe::{fields_impl, FieldEntry};
 use super::names::TypeNames;
 use crate::kinds::{self, forces::ForceCx};
 use crate::model::Model;
+use crate::names::Family;
 use crate::plan::Plan;
 use crate::value::lit;
 use proc_macro2::TokenStream;
@@ -92,7 +93,7 @@ impl ForceCx for ForceEmitter<'_> {
         if !self.loaded.contains(&l) {
             return quote!(::mechanism::force::Wrench::zero());
         }
-        let local = format_ident!("load_{}", l);
+        let local = Family::Load.named(&l);
         let r = self.reference(&l);
         if *point == r {
             quote!(#local)
@@ -103,7 +104,7 @@ impl ForceCx for ForceEmitter<'_> {
 
     /// Adds a wrench (given as code about the link's reference point) to a link's load.
     fn add(&mut self, link: &str, wrench: TokenStream) {
-        let local = format_ident!("load_{}", link);
+        let local = Family::Load.named(link);
         if self.loaded.insert(link.to_string()) {
             self.code.extend(quote!(let #local = #wrench;));
         } else {
@@ -200,7 +201,7 @@ impl ForceEmitter<'_> {
     /// Velocity of a point (code), `None` when it never moves.
     fn velocity(&self, point: &Ident) -> Option<TokenStream> {
         self.moving.contains(&point.to_string()).then(|| {
-            let v = format_ident!("vel_{}", point);
+            let v = Family::Vel.of(point);
             quote!(vel.#v)
         })
     }
@@ -209,7 +210,7 @@ impl ForceEmitter<'_> {
     /// does not turn.
     fn rates_of(&self, link: &Ident) -> Option<(TokenStream, TokenStream)> {
         self.plan.turning_link(&link.to_string()).map(|l| {
-            let (w, a) = (format_ident!("omega_{}", l), format_ident!("alpha_{}", l));
+            let (w, a) = (Family::Omega.named(&l), Family::Alpha.named(&l));
             (quote!(vel.#w), quote!(acc.#a))
         })
     }
