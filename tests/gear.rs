@@ -219,3 +219,91 @@ fn the_planet_turns_with_the_arm_and_its_couple_loads_the_motor() {
         close(fs.drive_theta, d(2.5 * 0.7), 1e-13, "drive_theta");
     }
 }
+
+/// The geared five-bar's body as text, for the run-time reader.
+const FIVE_BAR_TEXT: &str = "pub GearedFiveBar {
+    let O2 = ground(0.0, 0.0);
+    let O5 = ground(3.0, 0.0);
+    let A = crank(O2, 1.0, theta) as link2;
+    let C = gear(O5, 0.8, link2, 2.0, 30 deg, ground, 20 deg) as link5;
+    let B = rrr(A, 3.2, C, 2.6, left) as (link3, link4);
+}";
+
+#[test]
+fn the_run_time_reader_and_the_batch_agree_with_the_generated_gear() {
+    // Proves the gear's run-time path (`mechanism_codegen::runtime`: its
+    // `eval` and `RunKind`) and the batch (`solve_columns`, the scalar path
+    // for a gear) give the generated scalar code's numbers: the same core
+    // primitives with the same arguments, so to 1e-12 (a few roundings of
+    // numbers of size 10, the run-time path folding the same constants).
+    use mechanism_codegen::runtime::{Analysis, Mechanism};
+    let rt = Mechanism::new(FIVE_BAR_TEXT).unwrap_or_else(|e| panic!("{e}"));
+    let m = GearedFiveBar::<f64>::default();
+    let cols = |a| rt.columns(a);
+    let (pc, vc) = (cols(Analysis::Position), cols(Analysis::Velocity));
+    let at = |cols: &[mechanism_codegen::runtime::Column], values: &[f64], name: &str| {
+        let k = cols.iter().position(|c| c.name == name).expect(name);
+        values[k]
+    };
+    let mut b = GearedFiveBar::<f64>::batch(36);
+    b.in_theta = (0..36).map(|k| f64::to_radians(10.0 * k as f64)).collect();
+    b.rate_theta = vec![3.0; 36];
+    let _ = m.solve_columns(&mut b);
+    let mut checked = 0;
+    for k in 0..36 {
+        let q = b.in_theta[k];
+        let w = GearedFiveBarInput { theta: 3.0 };
+        let Ok(p) = m.position(&GearedFiveBarInput { theta: q }) else {
+            assert!(rt.position(&[q]).is_err());
+            assert_ne!(b.status[k], 0);
+            continue;
+        };
+        let v = m.velocity(&p, &w).unwrap();
+        let rp = rt.position(&[q]).unwrap();
+        let rv = rt.velocity(&rp, &[3.0]).unwrap();
+        for (got, name) in [
+            (p.C.x, "C.x"),
+            (p.C.y, "C.y"),
+            (p.B.x, "B.x"),
+            (p.link5, "link5"),
+        ] {
+            let want = at(&pc, &rp.values, name);
+            assert!((got - want).abs() <= 1e-12, "{name}: {got} vs {want}");
+        }
+        for (got, name) in [(v.C.x, "C.x"), (v.C.y, "C.y"), (v.link5, "link5")] {
+            let want = at(&vc, &rv.values, name);
+            assert!((got - want).abs() <= 1e-12, "v {name}: {got} vs {want}");
+        }
+        assert_eq!(b.status[k], 0);
+        assert!((b.pos_C_x[k] - p.C.x).abs() <= 1e-12);
+        assert!((b.vel_C_y[k] - v.C.y).abs() <= 1e-12);
+        checked += 1;
+    }
+    assert!(checked >= 18, "only {checked} poses closed");
+}
+
+mechanism! {
+    /// A planetary arm with its ratio a run-time parameter, a planet with
+    /// mass under gravity, and the generated self-test (loop closure,
+    /// finite differences, power balance) over a turn of the arm.
+    #[self_test]
+    pub PlanetSelfTest {
+        params { ratio = 1.5 }
+        let O = ground(0.0, 0.0);
+        let A = crank(O, 1.0, theta) as arm;
+        let P = gear(A, 0.3, ground, ratio, 10 deg, arm) as planet;
+        mass planet { m = 0.4, at = P, j = 0.002 };
+        gravity (0.0, -9.81);
+    }
+}
+
+#[test]
+fn a_run_time_ratio_changes_the_planet_s_rate() {
+    // Proves the ratio read at run time: the planet turns at `1 + ratio`
+    // times the arm (exact: one product and one sum of small numbers).
+    let mut m = PlanetSelfTest::<f64>::default();
+    m.ratio = 3.0;
+    let p = m.position(&PlanetSelfTestInput { theta: 0.4 }).unwrap();
+    let v = m.velocity(&p, &PlanetSelfTestInput { theta: 2.0 }).unwrap();
+    assert!((v.planet - 8.0).abs() <= 1e-14, "{}", v.planet);
+}
