@@ -301,8 +301,7 @@ mechanism! {
 fn a_run_time_ratio_changes_the_planet_s_rate() {
     // Proves the ratio read at run time: the planet turns at `1 + ratio`
     // times the arm (exact: one product and one sum of small numbers).
-    let mut m = PlanetSelfTest::<f64>::default();
-    m.ratio = 3.0;
+    let m = PlanetSelfTest::<f64> { ratio: 3.0 };
     let p = m.position(&PlanetSelfTestInput { theta: 0.4 }).unwrap();
     let v = m.velocity(&p, &PlanetSelfTestInput { theta: 2.0 }).unwrap();
     assert!((v.planet - 8.0).abs() <= 1e-14, "{}", v.planet);
