@@ -93,10 +93,12 @@ pub(super) fn lower_kind(
     }
 }
 
-/// A link name that may be the ground (`ground`: `None`).
-fn link_or_ground(a: &mut Args, role: &str) -> Option<Option<Ident>> {
+/// A link name that may be the ground (`ground`: `None`), and where it is
+/// written.
+fn link_or_ground(a: &mut Args, role: &str) -> Option<(Option<Ident>, proc_macro2::Span)> {
     let name = a.name(role)?;
-    Some((name != "ground").then_some(name))
+    let span = name.span();
+    Some(((name != "ground").then_some(name), span))
 }
 
 /// `gear(PIVOT, radius, MESH, ratio[, phase[, CARRIER[, pressure_angle]]])`:
@@ -106,7 +108,7 @@ fn link_or_ground(a: &mut Args, role: &str) -> Option<Option<Ident>> {
 fn gear(a: &mut Args) -> Option<Kind> {
     let pivot = a.name("pivot point")?;
     let radius = a.length("radius to the point it defines")?;
-    let mesh = link_or_ground(a, "link it meshes with (or `ground`)")?;
+    let (mesh, mesh_span) = link_or_ground(a, "link it meshes with (or `ground`)")?;
     let ratio = a.number("gear ratio", false)?;
     if let Some(r) = ratio.fold() {
         if r == 0.0 || r == -1.0 {
@@ -123,7 +125,7 @@ fn gear(a: &mut Args) -> Option<Kind> {
         Value::lit(0.0, a.span)
     };
     let carrier = if a.args.len() > 0 {
-        link_or_ground(a, "common link both gears turn on (or `ground`)")?
+        link_or_ground(a, "common link both gears turn on (or `ground`)")?.0
     } else {
         None
     };
@@ -145,6 +147,7 @@ fn gear(a: &mut Args) -> Option<Kind> {
         pivot,
         radius,
         mesh,
+        mesh_span,
         ratio,
         phase,
         carrier,

@@ -542,7 +542,7 @@ fn resolve_gear(kind: Kind, stmts: &[Stmt], errors: &mut Diagnostics) -> Option<
         g.carrier_crank = Some(crank_of(c, "carrier", errors)?);
     }
     if g.mesh == g.carrier {
-        let span = g.mesh.as_ref().map_or(g.ratio.span, Ident::span);
+        let span = g.mesh_span;
         let on = g
             .mesh
             .as_ref()

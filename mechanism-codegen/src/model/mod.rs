@@ -384,6 +384,8 @@ pub struct Gear {
     pub radius: Value,
     /// The link geared to it (`None`: the ground, a fixed gear).
     pub mesh: Option<Ident>,
+    /// Where `mesh` is written (the link's name or `ground`).
+    pub mesh_span: Span,
     /// Pitch radius of `mesh`'s gear over the new link's, signed (never 0
     /// or -1).
     pub ratio: Value,
