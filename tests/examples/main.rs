@@ -35,11 +35,11 @@ mod scenes;
 // unused here). Each mounts the examples' `common` as its own module, as it
 // does when built as an example: the copies are meant (clippy::duplicate_mod).
 #[allow(dead_code, unused_imports, unused_macros)]
-#[path = "../../examples/fourbar.rs"]
-mod example_fourbar;
-#[allow(dead_code, unused_imports, unused_macros)]
 #[path = "../../examples/five_bar.rs"]
 mod example_five_bar;
+#[allow(dead_code, unused_imports, unused_macros)]
+#[path = "../../examples/fourbar.rs"]
+mod example_fourbar;
 #[allow(dead_code, unused_imports, unused_macros)]
 #[path = "../../examples/shaper.rs"]
 mod example_shaper;

@@ -65,8 +65,8 @@ fn gathered(examples: &Path) -> String {
     let mut out = String::from(HEADER);
     for name in EXAMPLES {
         let path = examples.join(format!("{name}.rs"));
-        let text = std::fs::read_to_string(&path)
-            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let text =
+            std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let defs = definitions(&text);
         assert!(!defs.is_empty(), "{name}.rs shows no `mechanism!` item");
         for d in defs {
