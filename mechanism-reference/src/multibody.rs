@@ -485,6 +485,142 @@ fn applied(model: &Model, f: &Frames, inertia: &[Inertia]) -> Vec<Dd> {
     out
 }
 
+/// The starting coordinates: each body's centre from its frame's guessed
+/// origin and angle; an [`Input::Angle`]'s body at the input's value (in
+/// the order of the inputs, so a carried motor adds to its carrier).
+fn guess(model: &Model, q: &[f64], start: &[[f64; 3]], centres: &[V2]) -> Result<Vec<Dd>, Error> {
+    let mut z = vec![Dd::ZERO; 3 * start.len()];
+    for (k, s) in start.iter().enumerate() {
+        z[3 * k + 2] = Dd::from_f64(s[2]);
+    }
+    for (input, &value) in model.inputs.iter().zip(q) {
+        if let Input::Angle {
+            body,
+            carrier,
+            offset,
+        } = *input
+        {
+            let base = match carrier {
+                Some(c) => *z.get(3 * c + 2).ok_or(Error::BadIndex)?,
+                None => Dd::ZERO,
+            };
+            *z.get_mut(3 * body + 2).ok_or(Error::BadIndex)? = base + offset + Dd::from_f64(value);
+        }
+    }
+    for (k, (s, c)) in start.iter().zip(centres).enumerate() {
+        let (sn, cs) = z[3 * k + 2].sin_cos();
+        z[3 * k] = Dd::from_f64(s[0]) + cs * c.x - sn * c.y;
+        z[3 * k + 1] = Dd::from_f64(s[1]) + sn * c.x + cs * c.y;
+    }
+    Ok(z)
+}
+
+/// Newton on `[Phi(z); Psi(z) - q] = 0` from `z`; the iterations used.
+fn assemble(model: &Model, q: &[f64], z: &mut [Dd], centres: &[V2]) -> Result<usize, Error> {
+    let n = z.len();
+    let zero = vec![Dd::ZERO; n];
+    let mut iterations = 0;
+    loop {
+        let f = Frames {
+            z,
+            zd: &zero,
+            centres,
+        };
+        let (c, i) = rows(model, &f);
+        if c.len() + i.len() != n {
+            return Err(Error::NotSquare {
+                rows: c.len() + i.len(),
+                coordinates: n,
+            });
+        }
+        let residual: Vec<Dd> = c
+            .iter()
+            .map(|r| r.value)
+            .chain(i.iter().zip(q).map(|(r, &q)| r.value - Dd::from_f64(q)))
+            .collect();
+        let worst = residual.iter().map(|r| r.hi.abs()).fold(0.0, f64::max);
+        if worst <= POSITION_TOLERANCE {
+            return Ok(iterations);
+        }
+        if iterations == MAX_ITERATIONS {
+            return Err(Error::NotConverged { residual: worst });
+        }
+        let a = c.into_iter().chain(i).map(|r| r.grad).collect();
+        let step = solve(a, residual.iter().map(|&r| -r).collect())?;
+        for (zi, s) in z.iter_mut().zip(step) {
+            *zi += s;
+        }
+        iterations += 1;
+    }
+}
+
+/// The body rates `z'` at the input rates `qd`, and the generalized mass
+/// matrix `V^T M V` (`V`'s columns: the rates at a unit rate of each input).
+fn rates(jac: &[Vec<Dd>], qd: &[f64], diag: &[Dd]) -> Result<(Vec<Dd>, Vec<Vec<Dd>>), Error> {
+    let (n, ni) = (jac.len(), qd.len());
+    let mut rhs = vec![Dd::ZERO; n];
+    for (r, &v) in rhs[n - ni..].iter_mut().zip(qd) {
+        *r = Dd::from_f64(v);
+    }
+    let zd = solve(jac.to_vec(), rhs)?;
+    let mut columns = Vec::with_capacity(ni);
+    for k in 0..ni {
+        let mut e = vec![Dd::ZERO; n];
+        e[n - ni + k] = Dd::ONE;
+        columns.push(solve(jac.to_vec(), e)?);
+    }
+    let product = |a: &[Dd], b: &[Dd]| {
+        diag.iter()
+            .zip(a.iter().zip(b))
+            .fold(Dd::ZERO, |s, (&d, (&x, &y))| s + d * x * y)
+    };
+    let mass = columns
+        .iter()
+        .map(|a| columns.iter().map(|b| product(a, b)).collect())
+        .collect();
+    Ok((zd, mass))
+}
+
+/// The accelerations with the multipliers (the dense KKT system), then
+/// `q'' = Psi_z z'' + g_Psi`.
+fn accelerations(
+    constraints: &[Row],
+    inputs: &[Row],
+    diag: &[Dd],
+    applied: Vec<Dd>,
+    tau: &[f64],
+) -> Result<Vec<Dd>, Error> {
+    let (n, nc) = (diag.len(), constraints.len());
+    let mut kkt = vec![vec![Dd::ZERO; n + nc]; n + nc];
+    let mut b = applied;
+    b.resize(n + nc, Dd::ZERO);
+    for (k, &d) in diag.iter().enumerate() {
+        kkt[k][k] = d;
+    }
+    for (r, row) in constraints.iter().enumerate() {
+        for (k, &g) in row.grad.iter().enumerate() {
+            kkt[n + r][k] = g;
+            kkt[k][n + r] = g;
+        }
+        b[n + r] = -row.quad;
+    }
+    for (row, &t) in inputs.iter().zip(tau) {
+        for (bk, &g) in b.iter_mut().zip(&row.grad) {
+            *bk += g * Dd::from_f64(t);
+        }
+    }
+    let x = solve(kkt, b)?;
+    Ok(inputs
+        .iter()
+        .map(|row| {
+            row.grad
+                .iter()
+                .zip(&x)
+                .fold(row.quad, |s, (&g, &a)| s + g * a)
+        })
+        .collect())
+}
+
 /// Forward dynamics at inputs `q`, rates `qd` and efforts `tau` (one per
 /// input), from `start`: each body's frame origin (L) and angle (rad), the
 /// guess that selects the assembly. An [`Input::Angle`] sets its body's
@@ -501,71 +637,19 @@ pub fn forward(
     start: &[[f64; 3]],
 ) -> Result<Forward, Error> {
     let nb = model.bodies.len();
-    let n = 3 * nb;
     let ni = model.inputs.len();
     if q.len() != ni || qd.len() != ni || tau.len() != ni || start.len() != nb {
         return Err(Error::BadIndex);
     }
     let inertia: Vec<Inertia> = model.bodies.iter().map(|p| merge(p)).collect();
     let centres: Vec<V2> = inertia.iter().map(|b| b.centre).collect();
-    let mut z = vec![Dd::ZERO; n];
-    for (k, s) in start.iter().enumerate() {
-        z[3 * k + 2] = Dd::from_f64(s[2]);
-    }
-    for (i, input) in model.inputs.iter().enumerate() {
-        if let Input::Angle {
-            body,
-            carrier,
-            offset,
-        } = *input
-        {
-            let base = carrier.map_or(Dd::ZERO, |c| z[3 * c + 2]);
-            *z.get_mut(3 * body + 2).ok_or(Error::BadIndex)? = base + offset + Dd::from_f64(q[i]);
-        }
-    }
-    for (k, s) in start.iter().enumerate() {
-        let (sn, cs) = z[3 * k + 2].sin_cos();
-        let c = centres[k];
-        z[3 * k] = Dd::from_f64(s[0]) + cs * c.x - sn * c.y;
-        z[3 * k + 1] = Dd::from_f64(s[1]) + sn * c.x + cs * c.y;
-    }
-    let zero = vec![Dd::ZERO; n];
-    let qdd: Vec<Dd> = q.iter().map(|&x| Dd::from_f64(x)).collect();
-    let mut iterations = 0;
-    loop {
-        let f = Frames {
-            z: &z,
-            zd: &zero,
-            centres: &centres,
-        };
-        let (c, i) = rows(model, &f);
-        if c.len() + i.len() != n {
-            return Err(Error::NotSquare {
-                rows: c.len() + i.len(),
-                coordinates: n,
-            });
-        }
-        let residual: Vec<Dd> = c
-            .iter()
-            .map(|r| r.value)
-            .chain(i.iter().zip(&qdd).map(|(r, &q)| r.value - q))
-            .collect();
-        let worst = residual.iter().map(|r| r.hi.abs()).fold(0.0, f64::max);
-        if worst <= POSITION_TOLERANCE {
-            break;
-        }
-        if iterations == MAX_ITERATIONS {
-            return Err(Error::NotConverged { residual: worst });
-        }
-        let a = c.into_iter().chain(i).map(|r| r.grad).collect();
-        let step = solve(a, residual.iter().map(|&r| -r).collect())?;
-        for (zi, s) in z.iter_mut().zip(step) {
-            *zi += s;
-        }
-        iterations += 1;
-    }
-    // Velocities: [Phi_z; Psi_z] z' = [0; q'], and the rates at unit input
-    // rates (the columns of V).
+    let diag: Vec<Dd> = inertia
+        .iter()
+        .flat_map(|b| [b.mass, b.mass, b.inertia])
+        .collect();
+    let mut z = guess(model, q, start, &centres)?;
+    let iterations = assemble(model, q, &mut z, &centres)?;
+    let zero = vec![Dd::ZERO; z.len()];
     let f = Frames {
         z: &z,
         zd: &zero,
@@ -573,60 +657,14 @@ pub fn forward(
     };
     let (c, i) = rows(model, &f);
     let jac: Vec<Vec<Dd>> = c.iter().chain(&i).map(|r| r.grad.clone()).collect();
-    let mut rhs = vec![Dd::ZERO; n];
-    rhs[n - ni..]
-        .iter_mut()
-        .zip(qd)
-        .for_each(|(r, &v)| *r = Dd::from_f64(v));
-    let zd = solve(jac.clone(), rhs)?;
-    let mut columns = Vec::with_capacity(ni);
-    for k in 0..ni {
-        let mut e = vec![Dd::ZERO; n];
-        e[n - ni + k] = Dd::ONE;
-        columns.push(solve(jac.clone(), e)?);
-    }
-    let diag: Vec<Dd> = inertia
-        .iter()
-        .flat_map(|b| [b.mass, b.mass, b.inertia])
-        .collect();
-    let mass = (0..ni)
-        .map(|a| {
-            (0..ni)
-                .map(|b| (0..n).fold(Dd::ZERO, |s, k| s + diag[k] * columns[a][k] * columns[b][k]))
-                .collect()
-        })
-        .collect();
-    // Accelerations and multipliers.
+    let (zd, mass) = rates(&jac, qd, &diag)?;
     let f = Frames {
         z: &z,
         zd: &zd,
         centres: &centres,
     };
     let (c, i) = rows(model, &f);
-    let nc = c.len();
-    let mut kkt = vec![vec![Dd::ZERO; n + nc]; n + nc];
-    let mut b = applied(model, &f, &inertia);
-    b.resize(n + nc, Dd::ZERO);
-    for k in 0..n {
-        kkt[k][k] = diag[k];
-    }
-    for (r, row) in c.iter().enumerate() {
-        for k in 0..n {
-            kkt[n + r][k] = row.grad[k];
-            kkt[k][n + r] = row.grad[k];
-        }
-        b[n + r] = -row.quad;
-    }
-    for (row, &t) in i.iter().zip(tau) {
-        for k in 0..n {
-            b[k] += row.grad[k] * Dd::from_f64(t);
-        }
-    }
-    let x = solve(kkt, b)?;
-    let accels = i
-        .iter()
-        .map(|row| (0..n).fold(row.quad, |s, k| s + row.grad[k] * x[k]))
-        .collect();
+    let accels = accelerations(&c, &i, &diag, applied(model, &f, &inertia), tau)?;
     Ok(Forward {
         accels,
         mass,
