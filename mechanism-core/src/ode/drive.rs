@@ -52,10 +52,10 @@ impl<T: Real> DcMotor<T> {
 /// A linear spring and a viscous damper acting on an input coordinate:
 /// `effort = -stiffness (q - free) - damping q'`.
 ///
-/// `stiffness`: F L / rad (or F / L) >= 0; `free`: the input's value where
-/// the spring is relaxed (rad or L); `damping`: F L s / rad (or F s / L)
-/// >= 0. For a torsion spring on a crank, `q` is the crank angle and the
-/// effort a torque; on a slider or cylinder, a force along it.
+/// `stiffness` (F L / rad, or F / L) and `damping` (F L s / rad, or
+/// F s / L) are non-negative; `free` is the input's value where the spring
+/// is relaxed (rad or L). For a torsion spring on a crank, `q` is the crank
+/// angle and the effort a torque; on a slider or cylinder, a force along it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpringDamper<T> {
     /// Stiffness (F L / rad, or F / L).
