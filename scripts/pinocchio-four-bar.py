@@ -104,7 +104,9 @@ def main():
         return pin.constraintDynamics(model, data, q, v, tau, cms, cds, prox)
 
     states = []
-    for phi, omega in [(0.0, 0.0), (0.7, 12.0), (2.0, 30.0), (-1.3, 35.0), (4.0, 20.0)]:
+    # 100 states: crank angles over a turn, speeds 0..39.6 rad/s.
+    for k in range(100):
+        phi, omega = 2 * math.pi * k / 100 + 0.01, 0.4 * ((37 * k) % 100)
         q, v = state(phi, omega)
         tau = np.array([motor(omega), 0.0, 0.0])
         states.append({"phi": phi, "omega": omega, "tau": motor(omega),
