@@ -200,38 +200,22 @@ fn timings(dense: &Dense) -> Vec<(&'static str, (f64, f64, f64))> {
 }
 
 /// The section's markdown; `dir` is where `pinocchio.json` may be.
-pub fn section(dir: &std::path::Path) -> String {
-    let mut md = String::new();
-    let dense = Dense::new();
-    let t = timings(&dense);
-    let pin = pinocchio(dir);
-    let _ = writeln!(md, "## Dynamics\n");
-    let _ = writeln!(
-        md,
-        "The run-up four-bar of `examples/run_up.rs` (`examples/report/dynamics.rs`): \
-         ns per call, median and min-max over {} interleaved rounds of {STATES} states \
-         (crank angle over a turn, speed 0..40 rad/s, the motor's torque). The dense \
-         global formulation is what a user writes with nalgebra: nine coordinates (each \
-         link's centre of mass and angle), eight pin constraints, the accelerations and \
-         multipliers from one 17 x 17 `DMatrix` LU per evaluation. Pinocchio: \
-         `scripts/pinocchio-four-bar.py` (a tree of three revolute joints, the loop closed \
-         by a point constraint, `constraintDynamics` called from Python, best of 7 timeit runs).\n",
-        crate::ROUNDS
-    );
+/// The timing table: the generated code, the dense formulation, Pinocchio.
+fn timing_table(md: &mut String, t: &[(&str, (f64, f64, f64))], pin: Option<&serde_json::Value>) {
     let _ = writeln!(
         md,
         "| evaluation | ns median | min - max | x generated q'' |"
     );
     let _ = writeln!(md, "|---|---:|---:|---:|");
     let qdd = t[1].1 .0;
-    for (name, (med, lo, hi)) in &t {
+    for (name, (med, lo, hi)) in t {
         let _ = writeln!(
             md,
             "| {name} | {med:.1} | {lo:.1} - {hi:.1} | {:.2} |",
             med / qdd
         );
     }
-    if let Some(p) = &pin {
+    if let Some(p) = pin {
         let call = p["ns_call"].as_f64().unwrap_or(f64::NAN);
         let empty = p["ns_empty"].as_f64().unwrap_or(f64::NAN);
         let _ = writeln!(
@@ -254,6 +238,11 @@ pub fn section(dir: &std::path::Path) -> String {
             run / 1e4 * 1e9 / qdd
         );
     }
+}
+
+/// The loop drift after the 10 s run-up with RK4 at 1 ms: the generated
+/// run's and the dense run's (m), the table written.
+fn drift_table(md: &mut String, dense: &Dense, pin: Option<&serde_json::Value>) -> (f64, f64) {
     // The 10 s run-up with RK4 at 1 ms.
     let steps = (SECONDS / STEP).round() as u32;
     let m = RunUp::<f64>::default();
@@ -286,18 +275,13 @@ pub fn section(dir: &std::path::Path) -> String {
             w - converged
         );
     };
-    row(&mut md, "generated (state phi, omega)", ours, y[1]);
+    row(md, "generated (state phi, omega)", ours, y[1]);
     let theirs = dense.open(&yd);
-    row(
-        &mut md,
-        "dense global formulation (18 states)",
-        theirs,
-        yd[11],
-    );
-    if let Some(p) = &pin {
+    row(md, "dense global formulation (18 states)", theirs, yd[11]);
+    if let Some(p) = pin {
         let open = p["open_10s"].as_f64().unwrap_or(f64::NAN);
         let w = p["omega_10s"].as_f64().unwrap_or(f64::NAN);
-        row(&mut md, "Pinocchio (no corrector)", open, w);
+        row(md, "Pinocchio (no corrector)", open, w);
     }
     let _ = writeln!(
         md,
@@ -306,6 +290,14 @@ pub fn section(dir: &std::path::Path) -> String {
          in `tests/dynamics/run_up.rs`): {converged:.12} rad/s. The RK4 runs differ from it \
          by their truncation error at 1 ms, which depends on the coordinates integrated."
     );
+    (ours, theirs)
+}
+
+/// The errors of `q''` against the double-double reference: the generated
+/// code's relative to the largest and to each state's own `q''`, and the
+/// dense formulation's relative to each state's own; the table written.
+fn error_table(md: &mut String, dense: &Dense, pin: Option<&serde_json::Value>) -> (f64, f64, f64) {
+    let m = RunUp::<f64>::default();
     // Errors against the double-double reference: the largest error relative
     // to the largest |q''| of the draws (the report's column scale), and the
     // largest relative to each state's own |q''| (large where q'' crosses 0).
@@ -349,7 +341,7 @@ pub fn section(dir: &std::path::Path) -> String {
         md,
         "| dense global formulation (f64) | {dense_err:.1e} | {dense_own:.1e} |"
     );
-    if let Some(p) = &pin {
+    if let Some(p) = pin {
         let (mut e, mut own, mut col) = (0.0f64, 0.0f64, 0.0f64);
         let mut pairs = Vec::new();
         for s in p["states"].as_array().into_iter().flatten() {
@@ -368,6 +360,31 @@ pub fn section(dir: &std::path::Path) -> String {
         }
         let _ = writeln!(md, "| Pinocchio (its 100 states) | {e:.1e} | {own:.1e} |");
     }
+    (ours_err, ours_own, dense_own)
+}
+
+pub fn section(dir: &std::path::Path) -> String {
+    let mut md = String::new();
+    let dense = Dense::new();
+    let t = timings(&dense);
+    let pin = pinocchio(dir);
+    let _ = writeln!(md, "## Dynamics\n");
+    let _ = writeln!(
+        md,
+        "The run-up four-bar of `examples/run_up.rs` (`examples/report/dynamics.rs`): \
+         ns per call, median and min-max over {} interleaved rounds of {STATES} states \
+         (crank angle over a turn, speed 0..40 rad/s, the motor's torque). The dense \
+         global formulation is what a user writes with nalgebra: nine coordinates (each \
+         link's centre of mass and angle), eight pin constraints, the accelerations and \
+         multipliers from one 17 x 17 `DMatrix` LU per evaluation. Pinocchio: \
+         `scripts/pinocchio-four-bar.py` (a tree of three revolute joints, the loop closed \
+         by a point constraint, `constraintDynamics` called from Python, best of 7 timeit runs).\n",
+        crate::ROUNDS
+    );
+    timing_table(&mut md, &t, pin.as_ref());
+    let qdd = t[1].1 .0;
+    let (ours, theirs) = drift_table(&mut md, &dense, pin.as_ref());
+    let (ours_err, ours_own, dense_own) = error_table(&mut md, &dense, pin.as_ref());
     // Targets.
     let kin = t[0].1 .0;
     let dense_qdd = t[2].1 .0;
