@@ -42,11 +42,14 @@ enum Command {
 mechanism table fourbar.mech --input theta=0:360deg:73 --csv\n  \
 mechanism table fourbar.mech --input theta=0:360deg:73 --rate theta=10 --accel theta=0 --json\n  \
 mechanism table five_bar.mech --input a=0:90deg:10 --input b=90:180deg:10            (a grid)\n  \
-mechanism table five_bar.mech --input a=0,10deg --input b=90,100deg --paired          (pairs)\n\n\
+mechanism table five_bar.mech --input a=0,10deg --input b=90,100deg --paired          (pairs)\n  \
+mechanism table press.mech --input theta=0:360deg:73 --rate theta=10 --forces --load cut=250 --csv\n\n\
 Values: NAME=V (one), NAME=LO:HI:N (N values, ends included), NAME=A,B,C (a list); angles in rad, \
 or with a `deg` suffix. Columns: the inputs, then each output as the generated struct names it \
 (`B.x`, `link3`), with its unit in brackets; angles in rad. With --rate, `velocity.` columns; \
-with --accel, `acceleration.` columns too. A pose that fails: a `# ...` comment with its error, \
+with --accel, `acceleration.` columns too; with --forces, `forces.` columns: each reaction \
+`r_FROM_TO` (the force of FROM on TO, global frame) as `.x`, `.y`, a prismatic pair's as `.force.x`, \
+`.force.y`, `.moment`, each driving effort `drive_INPUT`, then `condition` and `power_residual`. A pose that fails: a `# ...` comment with its error, \
 then its row with the inputs and empty outputs.")]
     Table {
         /// The definition's file (`-`: standard input).
@@ -69,9 +72,13 @@ then its row with the inputs and empty outputs.")]
         /// A run-time assembly mode: NAME=left|right (plus|minus).
         #[arg(long = "mode", value_name = "NAME=left|right")]
         modes: Vec<String>,
-        /// The force analysis (not evaluated at run time yet: an error).
+        /// The force analysis too: joint reactions and driving efforts (`forces.` columns) at
+        /// the rates and accelerations given (others 0).
         #[arg(long)]
         forces: bool,
+        /// A `loads { .. }` value for the force analysis.
+        #[arg(long = "load", value_name = "NAME=V")]
+        loads: Vec<String>,
         /// CSV, every number with 17 significant digits.
         #[arg(long, conflicts_with = "json")]
         csv: bool,
@@ -127,6 +134,7 @@ fn main() -> ExitCode {
             params,
             modes,
             forces,
+            loads,
             csv,
             json,
         } => {
@@ -138,6 +146,7 @@ fn main() -> ExitCode {
                 params,
                 modes,
                 forces,
+                loads,
             };
             run_table(&file, &args, csv, json)
         }
@@ -184,6 +193,7 @@ struct TableArgs {
     params: Vec<String>,
     modes: Vec<String>,
     forces: bool,
+    loads: Vec<String>,
 }
 
 /// Reads `NAME=...` arguments.
@@ -199,6 +209,10 @@ fn configure(m: &mut Mechanism, args: &TableArgs) -> Result<(), Failure> {
     for s in specs(&args.params)? {
         let v = s.values.first().copied().unwrap_or(f64::NAN);
         m.set_param(&s.name, v).map_err(Failure::Usage)?;
+    }
+    for s in specs(&args.loads)? {
+        let v = s.values.first().copied().unwrap_or(f64::NAN);
+        m.set_load(&s.name, v).map_err(Failure::Usage)?;
     }
     for text in &args.modes {
         let (name, value) = text
@@ -220,14 +234,14 @@ fn configure(m: &mut Mechanism, args: &TableArgs) -> Result<(), Failure> {
 
 /// `table`.
 fn run_table(file: &Path, args: &TableArgs, csv: bool, json: bool) -> Result<(), Failure> {
-    if args.forces {
+    let mut m = load(file)?;
+    if args.forces && !m.has_forces() {
         return Err(Failure::Usage(
-            "--forces: the force analysis is not evaluated at run time yet; \
-             `mechanism emit` gives the source whose `forces()` computes it"
+            "--forces: the definition has no force analysis (no `mass`, `gravity`, `force`, \
+             `torque` or `loads`)"
                 .into(),
         ));
     }
-    let mut m = load(file)?;
     configure(&mut m, args)?;
     let req = table::Request {
         inputs: specs(&args.inputs)?,
@@ -238,6 +252,7 @@ fn run_table(file: &Path, args: &TableArgs, csv: bool, json: bool) -> Result<(),
         accels: (!args.accels.is_empty())
             .then(|| specs(&args.accels))
             .transpose()?,
+        forces: args.forces,
     };
     let n = table::points(&m, &req.inputs, req.paired)
         .map_err(Failure::Usage)?

@@ -23,12 +23,14 @@
 //! assert!((b_x - 2.1).abs() < 1.0);
 //! ```
 
+pub mod forces;
 pub mod text;
 
 use crate::diag::Diagnostics;
 use crate::kinds::{self, run::Motion, run::RunCx, Pose};
 use crate::model::{Mode, Model};
 use crate::plan::Plan;
+pub use forces::Forces;
 use mechanism_core::{geometry, Error, Vector2};
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::{Mutex, PoisonError};
@@ -96,6 +98,8 @@ pub struct Mechanism {
     params: BTreeMap<String, f64>,
     /// The modes set at run time ([`Mechanism::set_mode`]).
     current_modes: BTreeMap<String, Mode>,
+    /// The `loads { .. }` values ([`Mechanism::set_load`]).
+    loads: BTreeMap<String, f64>,
 }
 
 /// The name `s` with a `'static` lifetime (errors name their group so);
@@ -142,12 +146,19 @@ impl Mechanism {
             .iter()
             .map(|(n, v)| (n.to_string(), *v))
             .collect();
+        let loads = model
+            .kinetics
+            .loads
+            .iter()
+            .map(|(n, v)| (n.to_string(), *v))
+            .collect();
         Ok(Mechanism {
             model,
             plan,
             moving,
             params,
             current_modes: BTreeMap::new(),
+            loads,
         })
     }
 
