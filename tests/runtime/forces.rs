@@ -7,7 +7,8 @@
 //! call the same `mechanism::force` primitive per group, so nothing looser
 //! is expected. Covered: masses given by params and literals, several
 //! masses per link, gravity, external forces and couples from `loads`, a
-//! carried crank, a triad, a slider, and the motors of an inverse
+//! carried crank, a triad, an RPR, an RRP, an RPP, and (`force_kinds`) a
+//! slider, a PRP on a carried guide, both forms of the actuator; the motors of an inverse
 //! kinematics (the rate map from two velocity evaluations).
 
 use super::agreement::{field, Rng};
@@ -198,4 +199,64 @@ fn without_masses_there_is_no_force_analysis() {
     let v = m.velocity(&p, &[1.0]).unwrap();
     let a = m.acceleration(&p, &v, &[0.0]).unwrap();
     assert!(m.forces(&p, &v, &a).is_err());
+}
+
+#[test]
+fn slider_driver_and_an_external_couple() {
+    use super::force_kinds::{SliderRocker, SliderRockerInput};
+    let (solved, _) = compare_forces!(
+        "force_kinds.rs",
+        SliderRocker,
+        SliderRockerInput { s },
+        0.0,
+        1.0,
+        NoLoads {},
+        0.0
+    );
+    assert!(solved > POSES / 2, "{solved}");
+}
+
+#[test]
+fn prp_on_a_carried_guide() {
+    use super::force_kinds::{CrossForces, CrossForcesInput};
+    let (solved, _) = compare_forces!(
+        "force_kinds.rs",
+        CrossForces,
+        CrossForcesInput { theta },
+        0.0,
+        1.0,
+        NoLoads {},
+        0.0
+    );
+    assert!(solved > POSES / 2, "{solved}");
+}
+
+#[test]
+fn two_name_actuator() {
+    use super::force_kinds::{ArmForces, ArmForcesInput};
+    let (solved, _) = compare_forces!(
+        "force_kinds.rs",
+        ArmForces,
+        ArmForcesInput { len },
+        0.0,
+        1.0,
+        NoLoads {},
+        0.0
+    );
+    assert!(solved > POSES / 2, "{solved}");
+}
+
+#[test]
+fn cylinder_with_barrel_and_rod_masses() {
+    use super::force_kinds::{BoomForces, BoomForcesInput};
+    let (solved, _) = compare_forces!(
+        "force_kinds.rs",
+        BoomForces,
+        BoomForcesInput { len },
+        0.0,
+        1.0,
+        NoLoads {},
+        0.0
+    );
+    assert!(solved > POSES / 2, "{solved}");
 }

@@ -15,5 +15,6 @@
 
 mod agreement;
 mod diagnostics;
+mod force_kinds;
 mod forces;
 mod text;
