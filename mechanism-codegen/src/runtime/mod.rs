@@ -24,6 +24,7 @@
 //! ```
 
 pub mod forces;
+pub mod layout;
 pub mod text;
 
 use crate::diag::Diagnostics;
@@ -53,8 +54,10 @@ pub enum Analysis {
 pub struct Column {
     /// The field path in the generated struct of its analysis.
     pub name: String,
-    /// Its unit: `L` (the definition's length unit), `rad`, `L/s`, `rad/s`,
-    /// `L/s^2`, `rad/s^2`.
+    /// Its unit: `L` (the definition's length unit, as its `units`
+    /// statement names it: `mm`), `rad`, `L/s`, `rad/s`, `L/s^2`, `rad/s^2`
+    /// (`s` the time unit's name); force columns: the force unit `F` and
+    /// `F L` (`N mm`), `1` for a ratio.
     pub unit: &'static str,
 }
 
@@ -259,10 +262,14 @@ impl Mechanism {
     /// The output columns of `analysis`, in the order of the generated
     /// struct's fields: points (`.x`, `.y`), link angles, slides.
     pub fn columns(&self, analysis: Analysis) -> Vec<Column> {
+        let u = &self.model.units;
         let (l, a) = match analysis {
-            Analysis::Position => ("L", "rad"),
-            Analysis::Velocity => ("L/s", "rad/s"),
-            Analysis::Acceleration => ("L/s^2", "rad/s^2"),
+            Analysis::Position => (intern(u.length()), "rad"),
+            Analysis::Velocity => (intern(&u.per_time(u.length())), intern(&u.per_time("rad"))),
+            Analysis::Acceleration => (
+                intern(&u.per_time_squared(u.length())),
+                intern(&u.per_time_squared("rad")),
+            ),
         };
         let out = &self.plan.outputs;
         let mut cols = Vec::new();
