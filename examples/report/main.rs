@@ -22,6 +22,7 @@ mod inverse;
 mod methods;
 mod numpy;
 mod reference;
+mod runtime;
 #[path = "../common/scenes.rs"]
 mod scenes;
 /// The stability section: error against distance to each singularity.
@@ -293,6 +294,11 @@ fn main() {
         outln!("{}", triad::section(&out_dir));
         return;
     }
+    if std::env::var_os("REPORT_RUNTIME_ONLY").is_some() {
+        // The run-time mechanism's timing alone (development).
+        outln!("{}", runtime::section());
+        return;
+    }
     if std::env::var_os("REPORT_INVERSE_ONLY").is_some() {
         // The inverse-kinematics section alone (development).
         outln!("{}", inverse::section());
@@ -465,6 +471,8 @@ fn main() {
         let _ = writeln!(md, "- ({} in all)", all_problems.len());
     }
     md += &forces::section(&out_dir);
+    eprintln!("the run-time mechanism");
+    md += &runtime::section();
     md += &stability::section(&out_dir);
     std::fs::write(out_dir.join("summary.md"), &md).expect("write summary");
     outln!("{md}");

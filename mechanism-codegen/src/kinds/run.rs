@@ -353,7 +353,7 @@ impl ForceRunCx<'_> {
     /// Adds a wrench (about the link's reference point) to a link's load.
     pub fn add(&mut self, link: &str, wrench: mechanism_core::force::Wrench<f64>) {
         match self.loads.get_mut(link) {
-            Some(load) => *load = *load + wrench,
+            Some(load) => *load += wrench,
             None => {
                 self.loads.insert(link.to_string(), wrench);
             }
