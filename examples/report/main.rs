@@ -295,8 +295,8 @@ fn main() {
         return;
     }
     if std::env::var_os("REPORT_RUNTIME_ONLY").is_some() {
-        // The run-time mechanism's timing alone (development).
-        outln!("{}", runtime::section());
+        // The run-time mechanism's timing alone, with the machine it ran on.
+        outln!("{}\n\n{}", machine(), runtime::section());
         return;
     }
     if std::env::var_os("REPORT_INVERSE_ONLY").is_some() {
