@@ -28,6 +28,7 @@ mod numpy;
 mod reference;
 #[path = "../common/run_up.rs"]
 mod run_up;
+mod runtime;
 #[path = "../common/scenes.rs"]
 mod scenes;
 /// The stability section: error against distance to each singularity.
@@ -304,6 +305,11 @@ fn main() {
         outln!("{}", dynamics::section(&out_dir));
         return;
     }
+    if std::env::var_os("REPORT_RUNTIME_ONLY").is_some() {
+        // The run-time mechanism's timing alone, with the machine it ran on.
+        outln!("{}\n\n{}", machine(), runtime::section());
+        return;
+    }
     if std::env::var_os("REPORT_INVERSE_ONLY").is_some() {
         // The inverse-kinematics section alone (development).
         outln!("{}", inverse::section());
@@ -476,6 +482,8 @@ fn main() {
         let _ = writeln!(md, "- ({} in all)", all_problems.len());
     }
     md += &forces::section(&out_dir);
+    eprintln!("the run-time mechanism");
+    md += &runtime::section();
     md += &stability::section(&out_dir);
     md += &dynamics::section(&out_dir);
     std::fs::write(out_dir.join("summary.md"), &md).expect("write summary");
