@@ -355,6 +355,47 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
 }
 
 impl super::run::RunKind for GearKind<'_> {
+    /// What its `forces` emits, computed: the same call on the same loads.
+    fn run_forces(
+        &self,
+        cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        use mechanism_core::force::Wrench;
+        let (stmt, g) = (self.stmt, self.g);
+        let Some(center) = self.mesh_center() else {
+            return Ok(());
+        };
+        let (link, pivot) = (&stmt.links[0], &g.pivot);
+        let load = cx.load_about(link, pivot);
+        let rx = mechanism_core::force::gear::reactions(
+            &load,
+            &cx.at(pivot),
+            &cx.at(center),
+            num(&g.ratio),
+            num(&g.pressure),
+        )?;
+        let body = match &g.carrier {
+            Some(c) => Some(c.to_string()),
+            None => cx.body_of_point(pivot),
+        };
+        if let Some(b) = &body {
+            if let Some(r) = cx.reference(b) {
+                let w = Wrench::force_at(&(-rx.pivot), &cx.at(pivot), &cx.at(&r));
+                cx.add(b, w);
+            }
+        }
+        let mesh = g.mesh.as_ref().map(ToString::to_string);
+        if let Some(m) = &mesh {
+            if let Some(r) = cx.reference(m) {
+                let w = Wrench::force_at(&(-rx.tooth), &rx.contact, &cx.at(&r));
+                cx.add(m, w);
+            }
+        }
+        cx.revolute(&body, link, rx.pivot);
+        cx.revolute(&mesh, link, rx.tooth);
+        Ok(())
+    }
+
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let stmt = self.stmt;
         let g = cx
