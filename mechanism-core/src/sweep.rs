@@ -805,6 +805,47 @@ impl<const G: usize, const D: usize> Report<G, D> {
     }
 }
 
+/// One line for the ranges swept, then one per group: where it fails first
+/// (the interval, or the grid points' bounding box, with the fault) and its
+/// first singular position. Inputs print in their own units (rad for an
+/// angle, the definition's length for a slide), as the report holds them.
+impl<const G: usize, const D: usize> core::fmt::Display for Report<G, D> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "checked over")?;
+        for (k, (name, r)) in self.inputs.iter().zip(&self.ranges).enumerate() {
+            let sep = if k == 0 { " " } else { ", " };
+            write!(f, "{sep}{name} in [{}, {}]", r.lo, r.hi)?;
+        }
+        if self.is_clean() {
+            return write!(f, ": every group assembles, no singular position");
+        }
+        for g in &self.groups {
+            write!(f, "\n  {}: ", g.group)?;
+            match (g.failure, g.fault) {
+                (Some((lo, hi)), fault) => {
+                    write!(f, "fails ({} found), first over", g.failures)?;
+                    for (k, name) in self.inputs.iter().enumerate() {
+                        let sep = if k == 0 { " " } else { ", " };
+                        write!(f, "{sep}{name} in [{}, {}]", lo[k], hi[k])?;
+                    }
+                    if let Some(fault) = fault {
+                        write!(f, ": {fault}")?;
+                    }
+                }
+                (None, _) => write!(f, "assembles")?,
+            }
+            if let Some(at) = g.first_singular {
+                write!(f, "; {} singular, the first at", g.singular)?;
+                for (k, name) in self.inputs.iter().enumerate() {
+                    let sep = if k == 0 { " " } else { ", " };
+                    write!(f, "{sep}{name} = {}", at[k])?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
 /// `num / scale`, or 0 (singular) when the scale is zero or either is not finite.
 fn scaled<T: Real>(num: T, scale: T) -> f64 {
     let (n, s) = (num.as_f64(), scale.as_f64());
