@@ -4,14 +4,14 @@
 //! Levenberg-Marquardt on the exact Jacobian that dual numbers carry through
 //! the generated `FourBarPath` code, in both assembly modes.
 //!
-//! Run: `cargo run --release --example synthesis` (a table with the time and
+//! Run: `cargo run --release -p mechanism-synthesis --example synthesis` (a table with the time and
 //! the evaluations per case, and a picture of each design in
 //! `target/plots/synthesis/`), or with `-- --json` (one JSON object per case
 //! per line: `{"case", "objective", "design": [r1, r2, r3, r4, rcx, rcy,
 //! theta0, x0, y0, th2_1 ..]}`, 17 significant digits). `--seed N` changes the
 //! seed (default 1); the run is deterministic for a seed.
 #[macro_use]
-#[path = "common/cli.rs"]
+#[path = "../../examples/common/cli.rs"]
 mod cli;
 use std::f64::consts::TAU;
 use std::path::PathBuf;
