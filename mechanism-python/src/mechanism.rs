@@ -1,0 +1,484 @@
+//! The class `planar_mechanism.Mechanism`: a definition read at run time,
+//! its inputs, outputs, parameters and modes, and its solutions at one
+//! pose (dicts of floats) or over a sweep (dicts of numpy arrays).
+
+use crate::batch::{self, Depth};
+use crate::errors;
+use mechanism_codegen::runtime::{self, Analysis};
+use numpy::{PyArray1, PyReadonlyArray1};
+use pyo3::exceptions::{PyKeyError, PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString, PyTuple};
+
+/// A driver input of a definition.
+#[pyclass(frozen, get_all, module = "planar_mechanism")]
+#[derive(Clone)]
+pub struct Input {
+    /// Its name: the keyword of `position(...)` and `sweep(...)`.
+    name: String,
+    /// `"rad"` for an angle, `"L"` for a length (the definition's unit).
+    unit: &'static str,
+    /// The range the definition declares or implies (a crank's full turn,
+    /// `(0, 2*pi)`), `(lo, hi)` in `unit`; `None` when it has none.
+    range: Option<(f64, f64)>,
+}
+
+#[pymethods]
+impl Input {
+    fn __repr__(&self) -> String {
+        let range = match self.range {
+            Some((lo, hi)) => format!("({lo}, {hi})"),
+            None => "None".into(),
+        };
+        format!(
+            "Input(name={:?}, unit={:?}, range={range})",
+            self.name, self.unit
+        )
+    }
+}
+
+/// A planar mechanism read from the text of a definition.
+///
+/// `text` is what goes between the braces of `mechanism! { ... }` (or the
+/// whole `pub Name { ... }` item). Angles are in rad, counter-clockwise
+/// from +x; lengths in the definition's unit `L`; rates per second.
+/// A definition that does not read raises `MechanismError` with every
+/// diagnostic. Not shareable between threads (use one per thread).
+#[pyclass(unsendable, module = "planar_mechanism")]
+pub struct Mechanism {
+    inner: runtime::Mechanism,
+}
+
+/// The analysis named `name`.
+fn analysis(name: &str) -> PyResult<Analysis> {
+    match name {
+        "position" => Ok(Analysis::Position),
+        "velocity" => Ok(Analysis::Velocity),
+        "acceleration" => Ok(Analysis::Acceleration),
+        _ => Err(PyValueError::new_err(format!(
+            "no analysis `{name}`; the analyses are: `position`, `velocity`, `acceleration`"
+        ))),
+    }
+}
+
+/// The depth that `rates` and `accels` ask for.
+fn depth(rates: bool, accels: bool) -> PyResult<Depth> {
+    if accels && !rates {
+        return Err(PyTypeError::new_err(
+            "`accels` needs `rates` too (the acceleration is solved from the velocity)",
+        ));
+    }
+    Ok(Depth {
+        velocity: rates,
+        acceleration: accels,
+    })
+}
+
+impl Mechanism {
+    /// The input names, in the order of the generated input struct.
+    fn input_names(&self) -> Vec<String> {
+        self.inner.inputs().into_iter().map(|i| i.name).collect()
+    }
+
+    /// The value `given` holds for each input, in input order: a
+    /// `TypeError` naming a missing or unknown input (`what`: "value",
+    /// "rate", "acceleration").
+    fn ordered<'py>(
+        &self,
+        what: &str,
+        given: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Vec<Bound<'py, PyAny>>> {
+        let names = self.input_names();
+        let list = || {
+            let v: Vec<String> = names.iter().map(|n| format!("`{n}`")).collect();
+            v.join(", ")
+        };
+        let mut out = Vec::with_capacity(names.len());
+        for n in &names {
+            match given.map(|d| d.get_item(n)).transpose()?.flatten() {
+                Some(v) => out.push(v),
+                None => {
+                    return Err(PyTypeError::new_err(format!(
+                        "missing {what} for input `{n}`; the inputs are: {}",
+                        list()
+                    )))
+                }
+            }
+        }
+        if let Some(d) = given {
+            for k in d.keys() {
+                let k: String = k.extract()?;
+                if !names.contains(&k) {
+                    return Err(PyTypeError::new_err(format!(
+                        "no input `{k}`; the inputs are: {}",
+                        list()
+                    )));
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// The floats `given` holds for each input, in input order.
+    fn floats(&self, what: &str, given: Option<&Bound<'_, PyDict>>) -> PyResult<Vec<f64>> {
+        self.ordered(what, given)?
+            .iter()
+            .map(|v| v.extract::<f64>())
+            .collect()
+    }
+
+    /// The error of a pose that fails at inputs `q`.
+    fn pose_error(&self, py: Python<'_>, e: &mechanism_core::Error<f64>, q: &[f64]) -> PyErr {
+        let at: Vec<(String, f64)> = self
+            .input_names()
+            .into_iter()
+            .zip(q.iter().copied())
+            .collect();
+        errors::pose(py, e, &at)
+    }
+
+    /// `{name: value}` of `analysis`' columns and `values`.
+    fn named<'py>(
+        &self,
+        py: Python<'py>,
+        analysis: Analysis,
+        values: &[f64],
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (c, v) in self.inner.columns(analysis).iter().zip(values) {
+            d.set_item(&c.name, v)?;
+        }
+        Ok(d)
+    }
+
+    /// Position, then velocity and acceleration when asked, at one pose.
+    fn solve_one(
+        &self,
+        py: Python<'_>,
+        q: &[f64],
+        rates: &[f64],
+        accels: &[f64],
+        depth: Depth,
+    ) -> PyResult<Vec<f64>> {
+        let mut values = Vec::new();
+        batch::row(&self.inner, q, rates, accels, depth, &mut values)
+            .map_err(|e| self.pose_error(py, &e, q))?;
+        Ok(values)
+    }
+}
+
+#[pymethods]
+impl Mechanism {
+    #[new]
+    fn new(py: Python<'_>, text: &str) -> PyResult<Self> {
+        runtime::Mechanism::new(text)
+            .map(|inner| Mechanism { inner })
+            .map_err(|e| errors::definition(py, &e))
+    }
+
+    /// The type name of the definition (`"Mechanism"` for a body alone).
+    #[getter]
+    fn name(&self) -> String {
+        self.inner.name()
+    }
+
+    /// The driver inputs, in the order of the generated input struct.
+    #[getter]
+    fn inputs(&self) -> Vec<Input> {
+        self.inner
+            .inputs()
+            .into_iter()
+            .map(|i| Input {
+                name: i.name,
+                unit: if i.angle { "rad" } else { "L" },
+                range: i.range,
+            })
+            .collect()
+    }
+
+    /// The position outputs `{name: unit}`, in the order of the generated
+    /// struct's fields: points (`"B.x"`, `"B.y"`, unit `"L"`), link angles
+    /// (`"link3"`, `"rad"`), slides (`"s"`, `"L"`).
+    #[getter]
+    fn outputs<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        self.columns(py, "position")
+    }
+
+    /// The outputs `{name: unit}` of `analysis` (`"position"`,
+    /// `"velocity"`: `"L/s"`, `"rad/s"`, or `"acceleration"`: `"L/s^2"`,
+    /// `"rad/s^2"`), names as in the generated structs.
+    fn columns<'py>(&self, py: Python<'py>, analysis: &str) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for c in self.inner.columns(self::analysis(analysis)?) {
+            d.set_item(c.name, c.unit)?;
+        }
+        Ok(d)
+    }
+
+    /// The run-time parameters `{name: value}` (a copy; change them with
+    /// `set_param`).
+    #[getter]
+    fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (n, v) in self.inner.params() {
+            d.set_item(n, v)?;
+        }
+        Ok(d)
+    }
+
+    /// Sets the parameter `name` to `value` (finite; in the unit the
+    /// definition uses it in). `KeyError` for an unknown name,
+    /// `ValueError` for a value that is not finite.
+    fn set_param(&mut self, name: &str, value: f64) -> PyResult<()> {
+        let known = self.inner.params().iter().any(|(n, _)| n == name);
+        self.inner.set_param(name, value).map_err(|msg| {
+            if known {
+                PyValueError::new_err(msg)
+            } else {
+                PyKeyError::new_err(msg)
+            }
+        })
+    }
+
+    /// The run-time assembly modes `{name: "plus" | "minus"}` (`"plus"`
+    /// is `left`, `"minus"` is `right`; see docs/assembly-modes.md).
+    #[getter]
+    fn modes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (n, plus) in self.inner.modes() {
+            d.set_item(n, if plus { "plus" } else { "minus" })?;
+        }
+        Ok(d)
+    }
+
+    /// Sets the run-time mode `name` to `"left"`/`"plus"` or
+    /// `"right"`/`"minus"`. `KeyError` for an unknown name, `ValueError`
+    /// for another word.
+    fn set_mode(&mut self, name: &str, mode: &str) -> PyResult<()> {
+        let plus = match mode {
+            "left" | "plus" => true,
+            "right" | "minus" => false,
+            _ => return Err(PyValueError::new_err(format!(
+                "`{mode}` is not a mode; the modes are `left` (= `plus`) and `right` (= `minus`)"
+            ))),
+        };
+        self.inner.set_mode(name, plus).map_err(PyKeyError::new_err)
+    }
+
+    /// The position at the inputs given by name (`theta=0.5`; rad or L):
+    /// `{name: value}` as `outputs`. `PoseError` where it cannot be
+    /// assembled; `TypeError` for a missing or unknown input.
+    #[pyo3(signature = (**inputs))]
+    fn position<'py>(
+        &self,
+        py: Python<'py>,
+        inputs: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let q = self.floats("value", inputs)?;
+        let pos = self
+            .inner
+            .position(&q)
+            .map_err(|e| self.pose_error(py, &e, &q))?;
+        self.named(py, Analysis::Position, &pos.values)
+    }
+
+    /// The velocity at the inputs given by name, for the input rates
+    /// `rates` (`{name: rate}`, rad/s or L/s, one per input):
+    /// `{name: value}` as `columns("velocity")`, and `"condition"`: the
+    /// smallest scaled determinant of the groups' velocity systems, in
+    /// (0, 1] (near 0: near a singular pose).
+    #[pyo3(signature = (*, rates, **inputs))]
+    fn velocity<'py>(
+        &self,
+        py: Python<'py>,
+        rates: &Bound<'py, PyDict>,
+        inputs: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let q = self.floats("value", inputs)?;
+        let r = self.floats("rate", Some(rates))?;
+        let pos = self.inner.position(&q);
+        let vel = pos.and_then(|p| self.inner.velocity(&p, &r));
+        let vel = vel.map_err(|e| self.pose_error(py, &e, &q))?;
+        let d = self.named(py, Analysis::Velocity, &vel.values)?;
+        d.set_item("condition", vel.condition)?;
+        Ok(d)
+    }
+
+    /// The acceleration at the inputs given by name, for the input rates
+    /// `rates` and accelerations `accels` (rad/s^2 or L/s^2), each a
+    /// `{name: value}` with one entry per input: `{name: value}` as
+    /// `columns("acceleration")`.
+    #[pyo3(signature = (*, rates, accels, **inputs))]
+    fn acceleration<'py>(
+        &self,
+        py: Python<'py>,
+        rates: &Bound<'py, PyDict>,
+        accels: &Bound<'py, PyDict>,
+        inputs: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let q = self.floats("value", inputs)?;
+        let r = self.floats("rate", Some(rates))?;
+        let a = self.floats("acceleration", Some(accels))?;
+        let d = Depth {
+            velocity: true,
+            acceleration: true,
+        };
+        let values = self.solve_one(py, &q, &r, &a, d)?;
+        let skip = self.inner.columns(Analysis::Position).len()
+            + self.inner.columns(Analysis::Velocity).len()
+            + 1;
+        self.named(py, Analysis::Acceleration, &values[skip..])
+    }
+
+    /// Every analysis asked for at one pose, as one flat dict with the
+    /// keys of `sweep` (without the inputs, `ok` and `error`): position
+    /// names, then with `rates` `velocity.NAME` and `velocity.condition`,
+    /// then with `accels` `acceleration.NAME`.
+    #[pyo3(signature = (*, rates=None, accels=None, **inputs))]
+    fn solve<'py>(
+        &self,
+        py: Python<'py>,
+        rates: Option<&Bound<'py, PyDict>>,
+        accels: Option<&Bound<'py, PyDict>>,
+        inputs: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let depth = depth(rates.is_some(), accels.is_some())?;
+        let q = self.floats("value", inputs)?;
+        let r = match rates {
+            Some(_) => self.floats("rate", rates)?,
+            None => Vec::new(),
+        };
+        let a = match accels {
+            Some(_) => self.floats("acceleration", accels)?,
+            None => Vec::new(),
+        };
+        let values = self.solve_one(py, &q, &r, &a, depth)?;
+        let d = PyDict::new(py);
+        for ((k, _), v) in batch::keys(&self.inner, depth).iter().zip(&values) {
+            d.set_item(k, v)?;
+        }
+        Ok(d)
+    }
+
+    /// Solves every pose of a sweep in Rust and returns numpy arrays.
+    /// See the stub (`__init__.pyi`) for the full contract.
+    #[pyo3(signature = (*, rates=None, accels=None, **inputs))]
+    fn sweep<'py>(
+        &self,
+        py: Python<'py>,
+        rates: Option<&Bound<'py, PyDict>>,
+        accels: Option<&Bound<'py, PyDict>>,
+        inputs: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let depth = depth(rates.is_some(), accels.is_some())?;
+        let mut given = self.ordered("values", inputs)?;
+        let k = given.len();
+        if let Some(r) = rates {
+            given.extend(self.ordered("rate", Some(r))?);
+        }
+        if let Some(a) = accels {
+            given.extend(self.ordered("acceleration", Some(a))?);
+        }
+        let (shape, flat) = broadcast(py, &given)?;
+        let slices: Vec<&[f64]> = flat
+            .iter()
+            .map(|a| a.as_slice())
+            .collect::<Result<_, _>>()?;
+        let n = shape.iter().product();
+        let (q, rest) = slices.split_at(k);
+        let (r, a) = rest.split_at(if depth.velocity { k } else { 0 });
+        let batch = batch::sweep(&self.inner, q, r, a, depth, n);
+        self.sweep_dict(py, &shape, &flat[..k], batch, depth)
+    }
+
+    fn __repr__(&self) -> String {
+        let names: Vec<String> = self.input_names();
+        format!(
+            "<planar_mechanism.Mechanism {} inputs=[{}], {} outputs>",
+            self.inner.name(),
+            names.join(", "),
+            self.inner.columns(Analysis::Position).len()
+        )
+    }
+}
+
+/// The common shape of `given` (numpy broadcasting; scalars and arrays of
+/// any shape) and each one as a contiguous 1-D float64 array of that
+/// shape's size.
+fn broadcast<'py>(
+    py: Python<'py>,
+    given: &[Bound<'py, PyAny>],
+) -> PyResult<(Vec<usize>, Vec<PyReadonlyArray1<'py, f64>>)> {
+    let np = py.import("numpy")?;
+    let float64 = np.getattr("float64")?;
+    let arrays = given
+        .iter()
+        .map(|g| np.call_method1("asarray", (g, &float64)))
+        .collect::<PyResult<Vec<_>>>()?;
+    let broadcast = np.call_method1("broadcast_arrays", PyTuple::new(py, arrays)?)?;
+    let mut shape: Vec<usize> = Vec::new();
+    let mut flat = Vec::with_capacity(given.len());
+    for (j, b) in broadcast.try_iter()?.enumerate() {
+        let b = b?;
+        if j == 0 {
+            shape = b.getattr("shape")?.extract()?;
+        }
+        // `ravel` of a broadcast (strided) view copies into a new array.
+        let c = np
+            .call_method1("ascontiguousarray", (b,))?
+            .call_method0("ravel")?;
+        flat.push(c.extract::<PyReadonlyArray1<'py, f64>>()?);
+    }
+    Ok((shape, flat))
+}
+
+impl Mechanism {
+    /// The dict `sweep` returns: each input (a copy, broadcast to
+    /// `shape`), each key of [`batch::keys`], `ok` and `error`.
+    fn sweep_dict<'py>(
+        &self,
+        py: Python<'py>,
+        shape: &[usize],
+        inputs: &[PyReadonlyArray1<'py, f64>],
+        batch: batch::Batch,
+        depth: Depth,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        let reshape = |a: Bound<'py, PyAny>| a.call_method1("reshape", (shape.to_vec(),));
+        for (name, a) in self.input_names().into_iter().zip(inputs) {
+            d.set_item(name, reshape(a.as_any().call_method0("copy")?)?)?;
+        }
+        let keys = batch::keys(&self.inner, depth);
+        for ((key, _), col) in keys.into_iter().zip(batch.columns) {
+            if d.contains(&key)? {
+                return Err(clash(&key));
+            }
+            d.set_item(key, reshape(PyArray1::from_vec(py, col).into_any())?)?;
+        }
+        let ok: Vec<bool> = batch.errors.iter().map(Option::is_none).collect();
+        let error: Vec<Py<PyAny>> = batch
+            .errors
+            .into_iter()
+            .map(|e| match e {
+                Some(msg) => PyString::new(py, &msg).into_any().unbind(),
+                None => py.None(),
+            })
+            .collect();
+        for key in ["ok", "error"] {
+            if d.contains(key)? {
+                return Err(clash(key));
+            }
+        }
+        d.set_item("ok", reshape(PyArray1::from_vec(py, ok).into_any())?)?;
+        d.set_item("error", reshape(PyArray1::from_vec(py, error).into_any())?)?;
+        Ok(d)
+    }
+}
+
+/// Two entries of a sweep's dict would have the same key.
+fn clash(key: &str) -> PyErr {
+    PyValueError::new_err(format!(
+        "the sweep's result would hold `{key}` twice (an input or output named like \
+         another, or `ok`/`error`); rename it in the definition"
+    ))
+}
