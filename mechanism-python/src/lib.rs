@@ -11,6 +11,7 @@
 mod batch;
 mod errors;
 mod mechanism;
+mod shared;
 
 use pyo3::prelude::*;
 

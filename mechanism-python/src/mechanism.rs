@@ -4,9 +4,10 @@
 
 use crate::batch::{self, Depth};
 use crate::errors;
+use crate::shared::Shared;
 use mechanism_codegen::runtime::{self, Analysis};
 use numpy::{PyArray1, PyReadonlyArray1};
-use pyo3::exceptions::{PyKeyError, PyTypeError, PyValueError};
+use pyo3::exceptions::{PyKeyError, PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString, PyTuple};
 
@@ -43,10 +44,10 @@ impl Input {
 /// whole `pub Name { ... }` item). Angles are in rad, counter-clockwise
 /// from +x; lengths in the definition's unit `L`; rates per second.
 /// A definition that does not read raises `MechanismError` with every
-/// diagnostic. Not shareable between threads (use one per thread).
-#[pyclass(unsendable, module = "planar_mechanism")]
+/// diagnostic. Usable from any thread (each keeps its own solver copy).
+#[pyclass(frozen, module = "planar_mechanism")]
 pub struct Mechanism {
-    inner: runtime::Mechanism,
+    shared: Shared,
 }
 
 /// The analysis named `name`.
@@ -75,9 +76,14 @@ fn depth(rates: bool, accels: bool) -> PyResult<Depth> {
 }
 
 impl Mechanism {
+    /// `f` of this thread's run-time mechanism.
+    fn rt<R>(&self, f: impl FnOnce(&runtime::Mechanism) -> R) -> PyResult<R> {
+        self.shared.with(|m| f(m)).map_err(PyRuntimeError::new_err)
+    }
+
     /// The input names, in the order of the generated input struct.
-    fn input_names(&self) -> Vec<String> {
-        self.inner.inputs().into_iter().map(|i| i.name).collect()
+    fn input_names(&self) -> PyResult<Vec<String>> {
+        self.rt(|m| m.inputs().into_iter().map(|i| i.name).collect())
     }
 
     /// The value `given` holds for each input, in input order: a
@@ -88,7 +94,7 @@ impl Mechanism {
         what: &str,
         given: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Vec<Bound<'py, PyAny>>> {
-        let names = self.input_names();
+        let names = self.input_names()?;
         let list = || {
             let v: Vec<String> = names.iter().map(|n| format!("`{n}`")).collect();
             v.join(", ")
@@ -129,11 +135,8 @@ impl Mechanism {
 
     /// The error of a pose that fails at inputs `q`.
     fn pose_error(&self, py: Python<'_>, e: &mechanism_core::Error<f64>, q: &[f64]) -> PyErr {
-        let at: Vec<(String, f64)> = self
-            .input_names()
-            .into_iter()
-            .zip(q.iter().copied())
-            .collect();
+        let names = self.input_names().unwrap_or_default();
+        let at: Vec<(String, f64)> = names.into_iter().zip(q.iter().copied()).collect();
         errors::pose(py, e, &at)
     }
 
@@ -145,7 +148,7 @@ impl Mechanism {
         values: &[f64],
     ) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
-        for (c, v) in self.inner.columns(analysis).iter().zip(values) {
+        for (c, v) in self.rt(|m| m.columns(analysis))?.iter().zip(values) {
             d.set_item(&c.name, v)?;
         }
         Ok(d)
@@ -161,7 +164,7 @@ impl Mechanism {
         depth: Depth,
     ) -> PyResult<Vec<f64>> {
         let mut values = Vec::new();
-        batch::row(&self.inner, q, rates, accels, depth, &mut values)
+        self.rt(|m| batch::row(m, q, rates, accels, depth, &mut values))?
             .map_err(|e| self.pose_error(py, &e, q))?;
         Ok(values)
     }
@@ -171,29 +174,29 @@ impl Mechanism {
 impl Mechanism {
     #[new]
     fn new(py: Python<'_>, text: &str) -> PyResult<Self> {
-        runtime::Mechanism::new(text)
-            .map(|inner| Mechanism { inner })
+        Shared::new(text)
+            .map(|shared| Mechanism { shared })
             .map_err(|e| errors::definition(py, &e))
     }
 
     /// The type name of the definition (`"Mechanism"` for a body alone).
     #[getter]
-    fn name(&self) -> String {
-        self.inner.name()
+    fn name(&self) -> PyResult<String> {
+        self.rt(runtime::Mechanism::name)
     }
 
     /// The driver inputs, in the order of the generated input struct.
     #[getter]
-    fn inputs(&self) -> Vec<Input> {
-        self.inner
-            .inputs()
+    fn inputs(&self) -> PyResult<Vec<Input>> {
+        let inputs = self.rt(runtime::Mechanism::inputs)?;
+        Ok(inputs
             .into_iter()
             .map(|i| Input {
                 name: i.name,
                 unit: if i.angle { "rad" } else { "L" },
                 range: i.range,
             })
-            .collect()
+            .collect())
     }
 
     /// The position outputs `{name: unit}`, in the order of the generated
@@ -209,7 +212,8 @@ impl Mechanism {
     /// `"rad/s^2"`), names as in the generated structs.
     fn columns<'py>(&self, py: Python<'py>, analysis: &str) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
-        for c in self.inner.columns(self::analysis(analysis)?) {
+        let analysis = self::analysis(analysis)?;
+        for c in self.rt(|m| m.columns(analysis))? {
             d.set_item(c.name, c.unit)?;
         }
         Ok(d)
@@ -220,7 +224,7 @@ impl Mechanism {
     #[getter]
     fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
-        for (n, v) in self.inner.params() {
+        for (n, v) in self.rt(runtime::Mechanism::params)? {
             d.set_item(n, v)?;
         }
         Ok(d)
@@ -229,9 +233,9 @@ impl Mechanism {
     /// Sets the parameter `name` to `value` (finite; in the unit the
     /// definition uses it in). `KeyError` for an unknown name,
     /// `ValueError` for a value that is not finite.
-    fn set_param(&mut self, name: &str, value: f64) -> PyResult<()> {
-        let known = self.inner.params().iter().any(|(n, _)| n == name);
-        self.inner.set_param(name, value).map_err(|msg| {
+    fn set_param(&self, name: &str, value: f64) -> PyResult<()> {
+        let known = self.rt(|m| m.params().iter().any(|(n, _)| n == name))?;
+        self.shared.set_param(name, value).map_err(|msg| {
             if known {
                 PyValueError::new_err(msg)
             } else {
@@ -245,7 +249,7 @@ impl Mechanism {
     #[getter]
     fn modes<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
-        for (n, plus) in self.inner.modes() {
+        for (n, plus) in self.rt(runtime::Mechanism::modes)? {
             d.set_item(n, if plus { "plus" } else { "minus" })?;
         }
         Ok(d)
@@ -254,15 +258,19 @@ impl Mechanism {
     /// Sets the run-time mode `name` to `"left"`/`"plus"` or
     /// `"right"`/`"minus"`. `KeyError` for an unknown name, `ValueError`
     /// for another word.
-    fn set_mode(&mut self, name: &str, mode: &str) -> PyResult<()> {
+    fn set_mode(&self, name: &str, mode: &str) -> PyResult<()> {
         let plus = match mode {
             "left" | "plus" => true,
             "right" | "minus" => false,
-            _ => return Err(PyValueError::new_err(format!(
+            _ => {
+                return Err(PyValueError::new_err(format!(
                 "`{mode}` is not a mode; the modes are `left` (= `plus`) and `right` (= `minus`)"
-            ))),
+            )))
+            }
         };
-        self.inner.set_mode(name, plus).map_err(PyKeyError::new_err)
+        self.shared
+            .set_mode(name, plus)
+            .map_err(PyKeyError::new_err)
     }
 
     /// The position at the inputs given by name (`theta=0.5`; rad or L):
@@ -276,10 +284,9 @@ impl Mechanism {
     ) -> PyResult<Bound<'py, PyDict>> {
         let q = self.floats("value", inputs)?;
         let pos = self
-            .inner
-            .position(&q)
+            .rt(|m| m.position(&q).map(|p| p.values))?
             .map_err(|e| self.pose_error(py, &e, &q))?;
-        self.named(py, Analysis::Position, &pos.values)
+        self.named(py, Analysis::Position, &pos)
     }
 
     /// The velocity at the inputs given by name, for the input rates
@@ -296,11 +303,17 @@ impl Mechanism {
     ) -> PyResult<Bound<'py, PyDict>> {
         let q = self.floats("value", inputs)?;
         let r = self.floats("rate", Some(rates))?;
-        let pos = self.inner.position(&q);
-        let vel = pos.and_then(|p| self.inner.velocity(&p, &r));
-        let vel = vel.map_err(|e| self.pose_error(py, &e, &q))?;
-        let d = self.named(py, Analysis::Velocity, &vel.values)?;
-        d.set_item("condition", vel.condition)?;
+        let d = Depth {
+            velocity: true,
+            acceleration: false,
+        };
+        let values = self.solve_one(py, &q, &r, &[], d)?;
+        let (skip, width) = self.rt(|m| {
+            let p = m.columns(Analysis::Position).len();
+            (p, m.columns(Analysis::Velocity).len())
+        })?;
+        let d = self.named(py, Analysis::Velocity, &values[skip..skip + width])?;
+        d.set_item("condition", values[skip + width])?;
         Ok(d)
     }
 
@@ -324,9 +337,9 @@ impl Mechanism {
             acceleration: true,
         };
         let values = self.solve_one(py, &q, &r, &a, d)?;
-        let skip = self.inner.columns(Analysis::Position).len()
-            + self.inner.columns(Analysis::Velocity).len()
-            + 1;
+        let skip = self.rt(|m| {
+            m.columns(Analysis::Position).len() + m.columns(Analysis::Velocity).len() + 1
+        })?;
         self.named(py, Analysis::Acceleration, &values[skip..])
     }
 
@@ -354,7 +367,7 @@ impl Mechanism {
         };
         let values = self.solve_one(py, &q, &r, &a, depth)?;
         let d = PyDict::new(py);
-        for ((k, _), v) in batch::keys(&self.inner, depth).iter().zip(&values) {
+        for ((k, _), v) in self.rt(|m| batch::keys(m, depth))?.iter().zip(&values) {
             d.set_item(k, v)?;
         }
         Ok(d)
@@ -380,25 +393,31 @@ impl Mechanism {
             given.extend(self.ordered("acceleration", Some(a))?);
         }
         let (shape, flat) = broadcast(py, &given)?;
-        let slices: Vec<&[f64]> = flat
+        // Owned copies: another Python thread may write the caller's arrays
+        // (`ravel` can return a view of them) while this one solves.
+        let owned: Vec<Vec<f64>> = flat
             .iter()
-            .map(|a| a.as_slice())
+            .map(|a| a.as_slice().map(<[f64]>::to_vec))
             .collect::<Result<_, _>>()?;
+        let slices: Vec<&[f64]> = owned.iter().map(Vec::as_slice).collect();
         let n = shape.iter().product();
         let (q, rest) = slices.split_at(k);
         let (r, a) = rest.split_at(if depth.velocity { k } else { 0 });
-        let batch = batch::sweep(&self.inner, q, r, a, depth, n);
+        // The solve needs no Python object: other Python threads run meanwhile.
+        let batch = py.detach(|| self.rt(|m| batch::sweep(m, q, r, a, depth, n)))?;
         self.sweep_dict(py, &shape, &flat[..k], batch, depth)
     }
 
-    fn __repr__(&self) -> String {
-        let names: Vec<String> = self.input_names();
-        format!(
-            "<planar_mechanism.Mechanism {} inputs=[{}], {} outputs>",
-            self.inner.name(),
-            names.join(", "),
-            self.inner.columns(Analysis::Position).len()
-        )
+    fn __repr__(&self) -> PyResult<String> {
+        self.rt(|m| {
+            let names: Vec<String> = m.inputs().into_iter().map(|i| i.name).collect();
+            format!(
+                "<planar_mechanism.Mechanism {} inputs=[{}], {} outputs>",
+                m.name(),
+                names.join(", "),
+                m.columns(Analysis::Position).len()
+            )
+        })
     }
 }
 
@@ -445,10 +464,10 @@ impl Mechanism {
     ) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         let reshape = |a: Bound<'py, PyAny>| a.call_method1("reshape", (shape.to_vec(),));
-        for (name, a) in self.input_names().into_iter().zip(inputs) {
+        for (name, a) in self.input_names()?.into_iter().zip(inputs) {
             d.set_item(name, reshape(a.as_any().call_method0("copy")?)?)?;
         }
-        let keys = batch::keys(&self.inner, depth);
+        let keys = self.rt(|m| batch::keys(m, depth))?;
         for ((key, _), col) in keys.into_iter().zip(batch.columns) {
             if d.contains(&key)? {
                 return Err(clash(&key));
