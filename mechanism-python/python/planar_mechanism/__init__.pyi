@@ -79,7 +79,8 @@ class Mechanism:
     ``text`` is what goes between the braces of ``mechanism! { ... }`` (the
     drawn or the grouped form), or the whole ``pub Name { ... }`` item.
     Raises ``MechanismError`` carrying every diagnostic with its line and
-    column. An instance belongs to the thread that made it.
+    column. Usable from any thread; ``sweep`` releases the GIL while it
+    solves.
     """
 
     def __init__(self, text: str) -> None: ...
