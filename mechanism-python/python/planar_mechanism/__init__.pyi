@@ -5,13 +5,13 @@ lengths in the definition's own unit ``L``; rates per second (rad/s,
 L/s), accelerations per second squared.
 """
 
-from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
+from typing import Any, Dict, List, Mapping, Optional, Tuple, final
 
-import numpy as np
 import numpy.typing as npt
 
-ArrayLike = npt.ArrayLike
+__all__ = ["Diagnostic", "Input", "Mechanism", "MechanismError", "PoseError"]
 
+@final
 class Diagnostic:
     """One error of a definition, where the text says it.
 
@@ -59,6 +59,7 @@ class PoseError(ValueError):
     inputs: Dict[str, float]
     """The inputs at which it failed, by name."""
 
+@final
 class Input:
     """A driver input of a definition."""
 
@@ -73,6 +74,7 @@ class Input:
         """``(lo, hi)`` declared or implied (a crank's ``(0, 2*pi)``), in
         ``unit``; ``None`` when it has none."""
 
+@final
 class Mechanism:
     """A planar mechanism read from the text of a definition.
 
@@ -83,7 +85,7 @@ class Mechanism:
     solves.
     """
 
-    def __init__(self, text: str) -> None: ...
+    def __new__(cls, text: str) -> "Mechanism": ...
     @property
     def name(self) -> str:
         """The type name (``"Mechanism"`` for a body alone)."""
@@ -147,9 +149,9 @@ class Mechanism:
     def sweep(
         self,
         *,
-        rates: Optional[Mapping[str, ArrayLike]] = None,
-        accels: Optional[Mapping[str, ArrayLike]] = None,
-        **inputs: ArrayLike,
+        rates: Optional[Mapping[str, npt.ArrayLike]] = None,
+        accels: Optional[Mapping[str, npt.ArrayLike]] = None,
+        **inputs: npt.ArrayLike,
     ) -> Dict[str, npt.NDArray[Any]]:
         """Solves every pose of a sweep in Rust (no Python call per pose).
 
