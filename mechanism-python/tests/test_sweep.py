@@ -81,3 +81,38 @@ def test_sweep_arguments_are_checked(fourbar):
         fourbar.sweep(theta=[0.0], accels={"theta": 0.0})
     with pytest.raises(ValueError, match="broadcast"):
         fourbar.sweep(theta=[0.0, 1.0], rates={"theta": [1.0, 2.0, 3.0]})
+
+
+FIVE_BAR = """
+pub FiveBar {
+    params { base = 0.08, proximal = 0.1, distal = 0.16 }
+    dof 2;
+    let O1 = ground(0.0, 0.0);
+    let O2 = ground(base, 0.0);
+    let A = crank(O1, proximal, q1) as arm1;
+    let C = crank(O2, proximal, q2) as arm2;
+    let P = rrr(A, distal, C, distal, left) as (forearm1, forearm2);
+    range q1 = (60 deg, 150 deg);
+    range q2 = (0 deg, 90 deg);
+}
+"""
+
+
+def test_two_inputs_over_a_meshgrid():
+    """A whole item (`pub FiveBar { .. }`) with two inputs: a grid from
+    np.meshgrid sweeps every pair; each entry is the scalar solve's."""
+    m = pm.Mechanism(FIVE_BAR)
+    assert m.name == "FiveBar"
+    assert [i.name for i in m.inputs] == ["q1", "q2"]
+    q1, q2 = np.meshgrid(np.radians([70, 100, 140]), np.radians([0, 30, 60, 90]))
+    out = m.sweep(q1=q1, q2=q2)
+    assert out["P.x"].shape == (4, 3) and out["ok"].all()
+    for i in range(4):
+        for j in range(3):
+            one = m.position(q1=q1[i, j], q2=q2[i, j])
+            assert out["P.x"][i, j] == one["P.x"] and out["P.y"][i, j] == one["P.y"]
+
+
+def test_an_empty_sweep_is_empty(fourbar):
+    out = fourbar.sweep(theta=np.array([]))
+    assert out["B.x"].shape == (0,) and out["ok"].shape == (0,)
