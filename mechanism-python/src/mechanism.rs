@@ -48,6 +48,11 @@ impl Input {
 #[pyclass(frozen, module = "planar_mechanism")]
 pub struct Mechanism {
     shared: Shared,
+    /// The input names, in input order (fixed once read).
+    names: Vec<String>,
+    /// The columns of position, velocity and acceleration (fixed once read:
+    /// parameters and modes change values, not outputs).
+    columns: [Vec<runtime::Column>; 3],
 }
 
 /// The analysis named `name`.
@@ -83,7 +88,17 @@ impl Mechanism {
 
     /// The input names, in the order of the generated input struct.
     fn input_names(&self) -> PyResult<Vec<String>> {
-        self.rt(|m| m.inputs().into_iter().map(|i| i.name).collect())
+        Ok(self.names.clone())
+    }
+
+    /// The columns of `analysis`.
+    fn cols(&self, analysis: Analysis) -> &[runtime::Column] {
+        let k = match analysis {
+            Analysis::Position => 0,
+            Analysis::Velocity => 1,
+            Analysis::Acceleration => 2,
+        };
+        &self.columns[k]
     }
 
     /// The value `given` holds for each input, in input order: a
@@ -148,7 +163,7 @@ impl Mechanism {
         values: &[f64],
     ) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
-        for (c, v) in self.rt(|m| m.columns(analysis))?.iter().zip(values) {
+        for (c, v) in self.cols(analysis).iter().zip(values) {
             d.set_item(&c.name, v)?;
         }
         Ok(d)
@@ -174,9 +189,23 @@ impl Mechanism {
 impl Mechanism {
     #[new]
     fn new(py: Python<'_>, text: &str) -> PyResult<Self> {
-        Shared::new(text)
-            .map(|shared| Mechanism { shared })
-            .map_err(|e| errors::definition(py, &e))
+        let shared = Shared::new(text).map_err(|e| errors::definition(py, &e))?;
+        let (names, columns) = shared
+            .with(|m| {
+                let names = m.inputs().into_iter().map(|i| i.name).collect();
+                let columns = [
+                    m.columns(Analysis::Position),
+                    m.columns(Analysis::Velocity),
+                    m.columns(Analysis::Acceleration),
+                ];
+                (names, columns)
+            })
+            .map_err(PyRuntimeError::new_err)?;
+        Ok(Mechanism {
+            shared,
+            names,
+            columns,
+        })
     }
 
     /// The type name of the definition (`"Mechanism"` for a body alone).
@@ -213,8 +242,8 @@ impl Mechanism {
     fn columns<'py>(&self, py: Python<'py>, analysis: &str) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         let analysis = self::analysis(analysis)?;
-        for c in self.rt(|m| m.columns(analysis))? {
-            d.set_item(c.name, c.unit)?;
+        for c in self.cols(analysis) {
+            d.set_item(&c.name, c.unit)?;
         }
         Ok(d)
     }
@@ -308,10 +337,8 @@ impl Mechanism {
             acceleration: false,
         };
         let values = self.solve_one(py, &q, &r, &[], d)?;
-        let (skip, width) = self.rt(|m| {
-            let p = m.columns(Analysis::Position).len();
-            (p, m.columns(Analysis::Velocity).len())
-        })?;
+        let skip = self.cols(Analysis::Position).len();
+        let width = self.cols(Analysis::Velocity).len();
         let d = self.named(py, Analysis::Velocity, &values[skip..skip + width])?;
         d.set_item("condition", values[skip + width])?;
         Ok(d)
@@ -337,9 +364,7 @@ impl Mechanism {
             acceleration: true,
         };
         let values = self.solve_one(py, &q, &r, &a, d)?;
-        let skip = self.rt(|m| {
-            m.columns(Analysis::Position).len() + m.columns(Analysis::Velocity).len() + 1
-        })?;
+        let skip = self.cols(Analysis::Position).len() + self.cols(Analysis::Velocity).len() + 1;
         self.named(py, Analysis::Acceleration, &values[skip..])
     }
 
