@@ -398,8 +398,19 @@ impl Mechanism {
         Ok(d)
     }
 
-    /// Solves every pose of a sweep in Rust and returns numpy arrays.
-    /// See the stub (`__init__.pyi`) for the full contract.
+    /// Solves every pose of a sweep in Rust (no Python call per pose) and
+    /// returns numpy arrays.
+    ///
+    /// Every input by name, each a number or an array (rad or L); with
+    /// `rates` (`{name: rate}`, rad/s or L/s) the velocity, with `accels`
+    /// (needs `rates`) the acceleration too. Inputs, rates and accelerations
+    /// broadcast together as numpy broadcasts (`np.meshgrid` for a grid);
+    /// every returned array has that shape: each input (a copy), each
+    /// position output, `velocity.NAME` and `velocity.condition`,
+    /// `acceleration.NAME`, and `ok` (bool, False where the pose failed)
+    /// and `error` (object: None, or the message naming the failed group).
+    /// A failed pose has NaN in every output of its row and only there; a
+    /// solved pose never holds NaN. The GIL is released while it solves.
     #[pyo3(signature = (*, rates=None, accels=None, **inputs))]
     fn sweep<'py>(
         &self,
