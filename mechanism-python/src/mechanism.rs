@@ -87,8 +87,8 @@ impl Mechanism {
     }
 
     /// The input names, in the order of the generated input struct.
-    fn input_names(&self) -> PyResult<Vec<String>> {
-        Ok(self.names.clone())
+    fn input_names(&self) -> &[String] {
+        &self.names
     }
 
     /// The columns of `analysis`.
@@ -109,13 +109,13 @@ impl Mechanism {
         what: &str,
         given: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Vec<Bound<'py, PyAny>>> {
-        let names = self.input_names()?;
+        let names = self.input_names();
         let list = || {
             let v: Vec<String> = names.iter().map(|n| format!("`{n}`")).collect();
             v.join(", ")
         };
         let mut out = Vec::with_capacity(names.len());
-        for n in &names {
+        for n in names {
             match given.map(|d| d.get_item(n)).transpose()?.flatten() {
                 Some(v) => out.push(v),
                 None => {
@@ -150,8 +150,8 @@ impl Mechanism {
 
     /// The error of a pose that fails at inputs `q`.
     fn pose_error(&self, py: Python<'_>, e: &mechanism_core::Error<f64>, q: &[f64]) -> PyErr {
-        let names = self.input_names().unwrap_or_default();
-        let at: Vec<(String, f64)> = names.into_iter().zip(q.iter().copied()).collect();
+        let names = self.input_names().iter().cloned();
+        let at: Vec<(String, f64)> = names.zip(q.iter().copied()).collect();
         errors::pose(py, e, &at)
     }
 
@@ -500,7 +500,7 @@ impl Mechanism {
     ) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         let reshape = |a: Bound<'py, PyAny>| a.call_method1("reshape", (shape.to_vec(),));
-        for (name, a) in self.input_names()?.into_iter().zip(inputs) {
+        for (name, a) in self.input_names().iter().zip(inputs) {
             d.set_item(name, reshape(a.as_any().call_method0("copy")?)?)?;
         }
         let keys = self.rt(|m| batch::keys(m, depth))?;
