@@ -10,11 +10,31 @@
 #[path = "common/cli.rs"]
 mod cli;
 mod common;
-use common::scenes::{FourBar, FourBarInput};
+use common::plots::{degrees, grid, positions, save};
 use mechanism::geometry::angle_deg_0_360;
+use mechanism::mechanism;
+use mechanism_plot::any;
+use mechanism_plot::PlotError;
+use std::path::{Path, PathBuf};
 
 /// Crank speed (rad/s).
 const OMEGA2: f64 = 250.0;
+
+mechanism! {
+    /// Crank-rocker four-bar of seed 002 (mm). Ground O2-O4 = 304.8, crank
+    /// O2-A = 101.6, coupler A-B = 254.0, rocker O4-B = 177.8; the document's
+    /// branch has B above the line A-O4 (`left`).
+    #[self_test]
+    pub FourBar {
+        params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+        units { length = "mm" }
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(ground, 0.0);
+        let A = crank(O2, crank, theta2) as link2;
+        let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+    }
+}
 
 fn main() {
     let args = cli::parse(
@@ -69,5 +89,32 @@ fn main() {
             outln!("{}", common::table_row(&row, 14, 4));
         }
     }
-    common::plots::write_and_report("fourbar", common::plots::fourbar);
+    common::plots::write_and_report("fourbar", pictures);
+}
+
+/// Four-bar of seed 002 at 250 rad/s: the coupler's and the rocker's angles, rates and
+/// accelerations over a turn; the path of B.
+pub fn pictures(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
+    let m = FourBar::<f64>::default();
+    let rows: Vec<_> = grid(0.0, 360.0, 180)
+        .into_iter()
+        .map(|d| {
+            let s = m.solve(
+                &FourBarInput {
+                    theta2: d.to_radians(),
+                },
+                &FourBarInput { theta2: 250.0 },
+                &FourBarInput { theta2: 0.0 },
+            );
+            (d, s.ok().map(|s| (s.position, s.velocity, s.acceleration)))
+        })
+        .collect();
+    let title = "Four-bar of seed 002, crank at 250 rad/s";
+    let x = ("crank angle θ2", "deg");
+    let fig = any::kinematics_chart(title, x, &rows, &["link3", "link4"])?;
+    // Every other pose, 0..356 deg: 90 frames 4 deg apart.
+    let poses = &positions(&rows, 2)[..90];
+    let sk = any::sketch_with::<FourBar<f64>, _>(title, poses, &["B"], degrees("θ2"))?;
+    // The drawing: theta2 = 60 deg (frame 15).
+    save(dir, fig, &sk, 15)
 }

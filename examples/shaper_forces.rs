@@ -15,12 +15,48 @@
 #[path = "common/cli.rs"]
 mod cli;
 mod common;
-use common::scenes::{ShaperForces, ShaperForcesInput, ShaperForcesLoads};
+use common::plots::{degrees, grid, CYCLE_S};
+use mechanism::mechanism;
+use mechanism_plot::any;
+use mechanism_plot::PlotError;
+use std::f64::consts::PI;
+use std::path::{Path, PathBuf};
 
 /// Crank speed (rad/s): 60 rpm.
 const OMEGA: f64 = 2.0 * std::f64::consts::PI;
 /// Cutting force (N).
 const CUT: f64 = 5000.0;
+
+mechanism! {
+    /// The shaper of seed 001 with masses (m, kg, N): rocker 20 kg at its
+    /// midpoint S3 (J = m L^2 / 12 = 0.6 kg m^2), connecting rod 3 kg at its
+    /// midpoint S4 (J = 0.005625 kg m^2), ram 60 kg at E; crank and block
+    /// massless; gravity 9.81 m/s^2 down. The cutting force on the ram is a
+    /// per-evaluation load `cut` (N, along the ram guide's direction, which
+    /// points to -x), so the caller applies it on the working stroke only.
+    #[self_test]
+    pub ShaperForces {
+        params { m3 = 20.0, j3 = 0.6, m4 = 3.0, j4 = 0.005625, m5 = 60.0 }
+        units { length = "m", force = "N", mass = "kg" }
+        loads { cut = 0.0 }
+        dof 1;
+        let A = ground(0.0, 0.0);
+        let C = ground(0.0, -0.275);
+        let ram = guide((0.0, 0.3), 180 deg);
+        let B = crank(A, 0.125, crank) as link2;
+        let cb = rpr(B, C, plus) as (block, link3);
+        let D = point(link3, from C, 0.6, 0 deg);
+        let S3 = point(link3, from C, 0.3, 0 deg);
+        let E = rrp(D, 0.15, ram, plus) as (link4, ram_block) slide s_ram;
+        let S4 = point(link4, from D, 0.075, 0 deg);
+        mass link3 { m = m3, at = S3, j = j3 };
+        mass link4 { m = m4, at = S4, j = j4 };
+        mass ram_block { m = m5, at = E };
+        gravity (0.0, -9.81);
+        force at E on ram_block along ram = cut;
+        outputs { D, E, S3, S4, link3, link4, s_ram, A, C, B }
+    }
+}
 
 fn main() {
     let args = cli::parse(
@@ -114,5 +150,52 @@ fn main() {
             outln!("{line}");
         }
     }
-    common::plots::write_and_report("shaper_forces", common::plots::shaper_forces);
+    common::plots::write_and_report("shaper_forces", pictures);
+}
+
+/// The shaper with masses, gravity and a 5 kN cutting force on the forward stroke at
+/// 60 rpm: the driving torque and the reactions over a turn (`forces.svg`), a drawing
+/// at 60 deg and an animation of the turn.
+pub fn pictures(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
+    let m = ShaperForces::<f64>::default();
+    let solved: Vec<_> = grid(0.0, 360.0, 360)
+        .into_iter()
+        .map(|d| {
+            let p = m.position(&ShaperForcesInput {
+                crank: d.to_radians(),
+            });
+            let rates = ShaperForcesInput { crank: 2.0 * PI };
+            let f = p.and_then(|p| {
+                let v = m.velocity(&p, &rates)?;
+                let a = m.acceleration(&p, &v, &ShaperForcesInput { crank: 0.0 })?;
+                let cut = if v.s_ram > 0.0 { -5000.0 } else { 0.0 };
+                Ok((p, m.forces(&p, &v, &a, &ShaperForcesLoads { cut })?))
+            });
+            (d, f.ok())
+        })
+        .collect();
+    let forces: Vec<_> = solved
+        .iter()
+        .map(|(d, s)| (*d, s.as_ref().map(|s| s.1)))
+        .collect();
+    // Every fourth pose, 0..356 deg: 90 frames.
+    let poses: Vec<_> = solved
+        .iter()
+        .step_by(4)
+        .take(90)
+        .map(|(d, s)| (*d, s.as_ref().map(|s| s.0)))
+        .collect();
+    let title = "Shaper with masses and gravity, 60 rpm, 5 kN cut on the forward stroke";
+    let fig = any::force_chart(title, ("crank angle", "deg"), &forces)?;
+    let sk = any::sketch_with::<ShaperForces<f64>, _>(title, &poses, &["D"], degrees("crank"))?;
+    let files = [
+        dir.join("forces.svg"),
+        dir.join("drawing.svg"),
+        dir.join("animation.svg"),
+    ];
+    fig.write(&files[0])?;
+    // The drawing: 60 deg (frame 15).
+    sk.write_drawing(15, &files[1])?;
+    sk.write_animation(CYCLE_S, &files[2])?;
+    Ok(files.to_vec())
 }

@@ -24,7 +24,11 @@
 #[path = "common/cli.rs"]
 mod cli;
 mod common;
-use common::scenes::{SineMechanism, SineMechanismForces, SineMechanismInput};
+use common::plots::{degrees, grid, CYCLE_S};
+use mechanism::mechanism;
+use mechanism_plot::any;
+use mechanism_plot::PlotError;
+use std::path::{Path, PathBuf};
 
 /// Crank speed (rad/s, constant).
 const OMEGA1: f64 = 10.0;
@@ -89,6 +93,28 @@ fn table(g: f64) {
     }
 }
 
+mechanism! {
+    /// Sine mechanism of seed 000, problem 4-23 (m, kg, N): crank AB = 0.1
+    /// about A = (0, 0); block 2 pinned at B slides in the horizontal slot of
+    /// link 3, which slides vertically in the frame along x = 0. Masses
+    /// m2 = G2 / g and m3 = G3 / g at B and on x = 0 (the document's weights
+    /// G2 = 40 N, G3 = 100 N with g = 10); no weight loads, as in the document;
+    /// the resistance Fr = 400 N acts downward on link 3 along x = 0.
+    #[self_test]
+    pub SineMechanism {
+        params { crank = 0.1, m2 = 4.0, m3 = 10.0, fr = 400.0 }
+        units { length = "m", force = "N", mass = "kg" }
+        dof 1;
+        let A = ground(0.0, 0.0);
+        let frame = guide((0.0, 0.0), 90 deg);
+        let B = crank(A, crank, phi1) as link1;
+        let Q = rpp(B, frame, -90 deg) as (block2, link3) slide (s_slot, s_yoke);
+        mass block2 { m = m2, at = B };
+        mass link3 { m = m3, at = Q };
+        force at Q = (0.0, -fr);
+    }
+}
+
 fn main() {
     let args = cli::parse(
         "sine_mechanism",
@@ -102,7 +128,7 @@ fn main() {
         for step in 0..72 {
             outln!("{}", common::csv_row(&row(5.0 * step as f64, g)));
         }
-        common::plots::write_and_report("sine_mechanism", common::plots::sine_mechanism);
+        common::plots::write_and_report("sine_mechanism", pictures);
         return;
     }
     outln!(
@@ -112,5 +138,46 @@ fn main() {
     outln!("document: FR12x = -r12x (block on crank), FR4 = FR4' = -m43/h2");
     table(10.0);
     table(9.80665);
-    common::plots::write_and_report("sine_mechanism", common::plots::sine_mechanism);
+    common::plots::write_and_report("sine_mechanism", pictures);
+}
+
+/// Sine mechanism of seed 000, problem 4-23 (g = 10, as the document): the driving
+/// torque and the reactions over a turn (`forces.svg`), a drawing and an animation.
+pub fn pictures(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
+    let m = SineMechanism::<f64>::default();
+    let solved: Vec<_> = grid(0.0, 360.0, 180)
+        .into_iter()
+        .map(|d| {
+            let s = m.solve(
+                &SineMechanismInput {
+                    phi1: d.to_radians(),
+                },
+                &SineMechanismInput { phi1: 10.0 },
+                &SineMechanismInput { phi1: 0.0 },
+            );
+            (d, s.ok())
+        })
+        .collect();
+    let forces: Vec<_> = solved
+        .iter()
+        .map(|(d, s)| (*d, s.as_ref().map(|s| s.forces)))
+        .collect();
+    let poses: Vec<_> = solved
+        .iter()
+        .step_by(2)
+        .take(90)
+        .map(|(d, s)| (*d, s.as_ref().map(|s| s.position)))
+        .collect();
+    let title = "Sine mechanism of seed 000 (4-23): crank 10 rad/s, Fr = 400 N";
+    let fig = any::force_chart(title, ("crank angle φ1", "deg"), &forces)?;
+    let sk = any::sketch_with::<SineMechanism<f64>, _>(title, &poses, &["B"], degrees("φ1"))?;
+    let files = [
+        dir.join("forces.svg"),
+        dir.join("drawing.svg"),
+        dir.join("animation.svg"),
+    ];
+    fig.write(&files[0])?;
+    sk.write_drawing(15, &files[1])?;
+    sk.write_animation(CYCLE_S, &files[2])?;
+    Ok(files.to_vec())
 }

@@ -9,8 +9,29 @@
 #[path = "common/cli.rs"]
 mod cli;
 mod common;
-use common::scenes::{SliderCrank, SliderCrankInput};
+use common::plots::{degrees, grid, positions, save};
 use mechanism::geometry::{angle_deg_0_360, unit};
+use mechanism::mechanism;
+use mechanism_plot::any;
+use mechanism_plot::PlotError;
+use std::f64::consts::PI;
+use std::path::{Path, PathBuf};
+
+mechanism! {
+    /// Offset slider-crank (m): crank 0.1, connecting rod 0.4, slide line at
+    /// y = 0.02 along +x.
+    #[self_test]
+    pub SliderCrank {
+        params { crank = 0.1, rod = 0.4, offset = 0.02 }
+        units { length = "m" }
+        dof 1;
+        let O = ground(0.0, 0.0);
+        let line = guide((0.0, offset), 0 deg);
+        let A = crank(O, crank, theta) as link2;
+        let B = rrp(A, rod, line, plus) as (link3, slider) slide x;
+        outputs { B, link3, x, O, A }
+    }
+}
 
 fn main() {
     let args = cli::parse(
@@ -64,5 +85,31 @@ fn main() {
             outln!("{}", common::table_row(&row, 12, 5));
         }
     }
-    common::plots::write_and_report("slider_crank", common::plots::slider_crank);
+    common::plots::write_and_report("slider_crank", pictures);
+}
+
+/// Offset slider-crank at 3000 rpm over a turn: the slide x and the rod's angle, their
+/// rates and accelerations.
+pub fn pictures(dir: &Path) -> Result<Vec<PathBuf>, PlotError> {
+    let m = SliderCrank::<f64>::default();
+    let omega = 3000.0 * 2.0 * PI / 60.0;
+    let rows: Vec<_> = grid(0.0, 360.0, 180)
+        .into_iter()
+        .map(|d| {
+            let s = m.solve(
+                &SliderCrankInput {
+                    theta: d.to_radians(),
+                },
+                &SliderCrankInput { theta: omega },
+                &SliderCrankInput { theta: 0.0 },
+            );
+            (d, s.ok().map(|s| (s.position, s.velocity, s.acceleration)))
+        })
+        .collect();
+    let title = "Offset slider-crank at 3000 rpm";
+    let x = ("crank angle θ", "deg");
+    let fig = any::kinematics_chart(title, x, &rows, &["x", "link3"])?;
+    let poses = &positions(&rows, 2)[..90];
+    let sk = any::sketch_with::<SliderCrank<f64>, _>(title, poses, &[], degrees("θ"))?;
+    save(dir, fig, &sk, 15)
 }

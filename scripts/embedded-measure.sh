@@ -12,6 +12,7 @@
 # Needs: qemu-system-arm, binutils-arm-none-eabi (arm-none-eabi-nm/size),
 # rustup target thumbv7em-none-eabihf. Usage: scripts/embedded-measure.sh [--check]
 # --check exits non-zero if a target of docs/embedded.md is missed.
+# ONLY="base32 dyn32" measures those rows alone (a row needs its baseline).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 fw="$root/tests/firmware"
@@ -41,6 +42,8 @@ scenes=(
   "crank32|crank32|crank driver alone, from an angle|f32|"
   "cossin32|cossin32|crank driver alone, from (cos, sin)|f32|"
   "ik32|ik32|five-bar given its end point: motor angles, rates, accelerations and torques|f32|"
+  "dynkin32|dynkin32|run-up four-bar: position + velocity + acceleration (m, kg)|f32|"
+  "dyn32|dyn32|run-up four-bar: one q'' (position + dynamics, m, kg)|f32|"
   "base32s|base32||f32|s"
   "pos32s|pos32|position only, opt-level \"s\"|f32|s"
   "acc32s|acc32|position + velocity + acceleration, opt-level \"s\"|f32|s"
@@ -70,8 +73,10 @@ base_of() { # scalar opt -> baseline row name
 }
 
 declare -A T R M LO HI
+wanted() { [ -z "${ONLY:-}" ] || [[ " $ONLY " == *" $1 "* ]]; }
 for s in "${scenes[@]}"; do
   IFS='|' read -r name feat desc scalar opt <<< "$s"
+  wanted "$name" || continue
   read -r T[$name] R[$name] M[$name] LO[$name] HI[$name] < <(measure "$feat" "$opt" "$name")
 done
 
@@ -80,6 +85,7 @@ echo "|---|---|---:|---:|---|"
 for s in "${scenes[@]}"; do
   IFS='|' read -r name feat desc scalar opt <<< "$s"
   [ -z "$desc" ] && continue
+  wanted "$name" || continue
   b=$(base_of "$scalar" "$opt")
   awk -v d="$desc" -v sc="$scalar" -v t="${T[$name]}" -v r="${R[$name]}" -v m="${M[$name]}" -v lo="${LO[$name]}" -v hi="${HI[$name]}" \
       -v bt="${T[$b]}" -v br="${R[$b]}" -v bm="${M[$b]}" 'BEGIN {
@@ -87,6 +93,7 @@ for s in "${scenes[@]}"; do
 done
 echo
 for b in base64 base32 base32s; do
+  wanted "$b" || continue
   echo "Baseline $b: .text ${T[$b]} bytes, .rodata ${R[$b]} bytes, ${M[$b]} instructions around an empty call."
 done
 echo
@@ -94,6 +101,7 @@ echo "Where the instructions go (per evaluation, largest first; the inlined gene
 for s in "${scenes[@]}"; do
   IFS='|' read -r name feat desc scalar opt <<< "$s"
   [ -z "$desc" ] && continue
+  wanted "$name" || continue
   echo "- $desc, $scalar:"
   echo '```'
   cat "$work/top-$name.txt"

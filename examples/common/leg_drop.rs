@@ -5,6 +5,7 @@
 #![allow(dead_code)]
 
 use mechanism::mechanism;
+use mechanism::ode::drive::SpringDamper;
 use mechanism::ode::System;
 
 mechanism! {
@@ -49,9 +50,10 @@ impl Motors {
     pub fn torques(&self, y: &[f64; 4]) -> [f64; 2] {
         match *self {
             Motors::Off => [0.0, 0.0],
+            // A PD controller is a spring and damper on each input.
             Motors::Pd { target, kp, kd } => [
-                kp * (target[0] - y[0]) - kd * y[2],
-                kp * (target[1] - y[1]) - kd * y[3],
+                SpringDamper::new(kp, target[0], kd).effort(y[0], y[2]),
+                SpringDamper::new(kp, target[1], kd).effort(y[1], y[3]),
             ],
         }
     }

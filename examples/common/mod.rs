@@ -5,7 +5,6 @@
 pub mod leg_drop;
 pub mod plots;
 pub mod run_up;
-pub mod scenes;
 pub mod seed003;
 
 /// One CSV row, every number with 17 significant digits (round-trip exact for f64).

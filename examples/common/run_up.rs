@@ -6,6 +6,7 @@
 
 use mechanism::mechanism;
 use mechanism::ode::dopri5::{Dopri5, Options};
+use mechanism::ode::drive::DcMotor;
 use mechanism::ode::machine::{self, Steady};
 use mechanism::ode::{Halt, System};
 
@@ -30,9 +31,16 @@ mechanism! {
     }
 }
 
-/// The motor's torque (N m) at crank speed `omega` (rad/s).
+/// The DC motor on the crank: 1.2 N m at rest, no torque at 40 rad/s.
+pub const MOTOR: DcMotor<f64> = DcMotor {
+    stall: 1.2,
+    no_load_speed: 40.0,
+};
+
+/// The motor's torque (N m) at crank speed `omega` (rad/s):
+/// `1.2 (1 - omega / 40)`.
 pub fn motor(omega: f64) -> f64 {
-    1.2 * (1.0 - omega / 40.0)
+    MOTOR.torque(omega)
 }
 
 /// The machine as an ODE: state `(phi, omega)`.

@@ -1,9 +1,13 @@
-//! The mechanisms of the examples, defined once and shared by the examples,
-//! the tests (`tests/examples/` and others) and the benchmarks.
+//! The examples' definitions, gathered from `examples/<name>.rs` for what
+//! cannot mount an example (the firmware, the no-panic build, the
+//! benchmarks, the report and the tests). Generated: do not edit; change the
+//! example and run `MECHANISM_BLESS=1 cargo test -p mechanism-dev --test
+//! examples scenes_file` (the test fails while this file is out of date).
 #![allow(dead_code)]
 
 use mechanism::mechanism;
 
+// examples/fourbar.rs
 mechanism! {
     /// Crank-rocker four-bar of seed 002 (mm). Ground O2-O4 = 304.8, crank
     /// O2-A = 101.6, coupler A-B = 254.0, rocker O4-B = 177.8; the document's
@@ -20,6 +24,7 @@ mechanism! {
     }
 }
 
+// examples/sixbar.rs
 mechanism! {
     /// Six-bar of seed 000, problem 3-28 (mm): the crank turns about A; B is on
     /// the crank opposite its slide line; the block F slides along the crank's
@@ -44,6 +49,7 @@ mechanism! {
     }
 }
 
+// examples/shaper.rs
 mechanism! {
     /// Quick-return shaper of seed 001 (m): crank AB = 0.125 about A; the block
     /// at B slides on the rocker pivoted at C = (0, -0.275); D on the rocker at
@@ -64,6 +70,7 @@ mechanism! {
     }
 }
 
+// examples/slider_crank.rs
 mechanism! {
     /// Offset slider-crank (m): crank 0.1, connecting rod 0.4, slide line at
     /// y = 0.02 along +x.
@@ -80,6 +87,7 @@ mechanism! {
     }
 }
 
+// examples/five_bar.rs
 mechanism! {
     /// Two-input five-bar robot (m): cranks of 0.1 about O1 = (0, 0) and
     /// O2 = (0.08, 0), distal links of 0.16 meeting at the end point P above
@@ -100,6 +108,7 @@ mechanism! {
     }
 }
 
+// examples/sine_mechanism.rs
 mechanism! {
     /// Sine mechanism of seed 000, problem 4-23 (m, kg, N): crank AB = 0.1
     /// about A = (0, 0); block 2 pinned at B slides in the horizontal slot of
@@ -122,6 +131,7 @@ mechanism! {
     }
 }
 
+// examples/shaper_forces.rs
 mechanism! {
     /// The shaper of seed 001 with masses (m, kg, N): rocker 20 kg at its
     /// midpoint S3 (J = m L^2 / 12 = 0.6 kg m^2), connecting rod 3 kg at its
@@ -149,12 +159,13 @@ mechanism! {
         mass ram_block { m = m5, at = E };
         gravity (0.0, -9.81);
         force at E on ram_block along ram = cut;
-        outputs { D, E, S3, S4, link3, link4, s_ram }
+        outputs { D, E, S3, S4, link3, link4, s_ram, A, C, B }
     }
 }
 
+// examples/five_bar_ik.rs
 mechanism! {
-    /// The five-bar robot of `FiveBar` given its end point (m, kg, N):
+    /// The five-bar robot of the `five_bar` example given its end point (m, kg, N):
     /// inverse kinematics, written as drawn. The drawing is the robot at
     /// q1 = 100 deg, q2 = 45 deg (coordinates to 20 digits, so the lengths
     /// read from it are 0.1 and 0.16 to the last bit); the end point `P`

@@ -14,6 +14,10 @@ mod baselines;
 #[path = "../common/cli.rs"]
 mod cli;
 mod batch;
+/// The dynamics section: the run-up four-bar's q'' against its kinematics,
+/// the dense global formulation and Pinocchio.
+mod dynamics;
+mod dynamics_dense;
 /// The forces section: generated force analysis against the Newton-Euler reference.
 mod forces;
 mod generated;
@@ -22,6 +26,9 @@ mod inverse;
 mod methods;
 mod numpy;
 mod reference;
+#[path = "../common/run_up.rs"]
+mod run_up;
+mod runtime;
 #[path = "../common/scenes.rs"]
 mod scenes;
 /// The stability section: error against distance to each singularity.
@@ -293,6 +300,16 @@ fn main() {
         outln!("{}", triad::section(&out_dir));
         return;
     }
+    if std::env::var_os("REPORT_DYNAMICS_ONLY").is_some() {
+        // The dynamics section alone (development).
+        outln!("{}", dynamics::section(&out_dir));
+        return;
+    }
+    if std::env::var_os("REPORT_RUNTIME_ONLY").is_some() {
+        // The run-time mechanism's timing alone, with the machine it ran on.
+        outln!("{}\n\n{}", machine(), runtime::section());
+        return;
+    }
     if std::env::var_os("REPORT_INVERSE_ONLY").is_some() {
         // The inverse-kinematics section alone (development).
         outln!("{}", inverse::section());
@@ -465,7 +482,10 @@ fn main() {
         let _ = writeln!(md, "- ({} in all)", all_problems.len());
     }
     md += &forces::section(&out_dir);
+    eprintln!("the run-time mechanism");
+    md += &runtime::section();
     md += &stability::section(&out_dir);
+    md += &dynamics::section(&out_dir);
     std::fs::write(out_dir.join("summary.md"), &md).expect("write summary");
     outln!("{md}");
     eprintln!("wrote {}", out_dir.display());

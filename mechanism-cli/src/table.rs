@@ -18,6 +18,9 @@ pub struct Request {
     pub rates: Option<Vec<Spec>>,
     /// Input accelerations; unnamed inputs 0. `None`: no acceleration.
     pub accels: Option<Vec<Spec>>,
+    /// `true`: the force analysis too (at the rates and accelerations
+    /// given, 0 for the others).
+    pub forces: bool,
 }
 
 /// One pose: its inputs, and its outputs or why it failed.
@@ -138,6 +141,11 @@ fn header(m: &Mechanism, req: &Request) -> Vec<String> {
             h.push(format!("{prefix}{} [{}]", c.name, c.unit));
         }
     }
+    if req.forces {
+        for c in m.force_columns() {
+            h.push(format!("forces.{} [{}]", c.name, c.unit));
+        }
+    }
     h
 }
 
@@ -152,14 +160,22 @@ fn row(
     let pos = m.position(q).map_err(|e| e.to_string())?;
     let mut values = pos.values.clone();
     let want = analyses(req);
-    if want.contains(&Analysis::Velocity) {
+    if want.contains(&Analysis::Velocity) || req.forces {
         let vel = m.velocity(&pos, rates).map_err(|e| e.to_string())?;
-        values.extend(&vel.values);
-        if want.contains(&Analysis::Acceleration) {
+        if want.contains(&Analysis::Velocity) {
+            values.extend(&vel.values);
+        }
+        if want.contains(&Analysis::Acceleration) || req.forces {
             let acc = m
                 .acceleration(&pos, &vel, accels)
                 .map_err(|e| e.to_string())?;
-            values.extend(&acc.values);
+            if want.contains(&Analysis::Acceleration) {
+                values.extend(&acc.values);
+            }
+            if req.forces {
+                let f = m.forces(&pos, &vel, &acc).map_err(|e| e.to_string())?;
+                values.extend(&f.values);
+            }
         }
     }
     Ok(values)

@@ -15,6 +15,7 @@ pub mod four_bar_dynamics;
 pub mod groups;
 pub mod linear;
 pub mod loop_closure;
+pub mod multibody;
 pub mod newton_euler;
 pub mod triad;
 

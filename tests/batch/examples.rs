@@ -235,7 +235,7 @@ fn shaper() {
         ShaperForces::<f32>::default(),
         ShaperForces,
         crank,
-        [D, E, S3, S4],
+        [D, E, S3, S4, B],
         [link3, link4, s_ram],
         angles(2000),
         100,

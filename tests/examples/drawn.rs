@@ -5,7 +5,7 @@
 //! 18 digits (about 1e-16 relative), so every joint agrees to that times
 //! the growth through the groups.
 
-use crate::common::scenes::{
+use crate::scenes::{
     FiveBar, FiveBarInput, FourBar, FourBarInput, Shaper, ShaperForces, ShaperForcesInput,
     ShaperForcesLoads, ShaperInput, SineMechanism, SineMechanismInput, SixBar, SixBarInput,
     SliderCrank, SliderCrankInput,

@@ -15,8 +15,7 @@
 //! Seed 003 goes through the core primitive (`examples/assur_rrr.rs`); its
 //! test is `mechanism-core/tests/primitives/kinetostatics.rs`, which shares the data.
 
-use crate::common;
-use common::scenes::*;
+use crate::scenes::*;
 use mechanism::force::group::{assemble, Connection, Joint, Pair};
 use mechanism::force::Wrench;
 use mechanism::geometry::{cross, dot};

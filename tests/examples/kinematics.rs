@@ -17,8 +17,7 @@
 //! Every check prints its worst observed error (`cargo test --test examples kinematics --
 //! --nocapture`) and states in the assertion message what it observed.
 
-use crate::common;
-use common::scenes::*;
+use crate::scenes::*;
 use mechanism::{Error, Fault, Point2, Primitive, Real, Vector2};
 use std::f64::consts::PI;
 

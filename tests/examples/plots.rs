@@ -5,7 +5,6 @@
 //! exactly one pose visible at any time.
 
 use crate::check::*;
-use crate::common;
 use std::path::{Path, PathBuf};
 
 /// What a scene's pictures must hold, counted from its definition in
@@ -28,7 +27,7 @@ const SCENES: [Expect; 6] = [
     // O2, O4 ground; A, B moving; link3 a plate A-B-P.
     Expect {
         name: "fourbar",
-        make: common::plots::fourbar,
+        make: crate::example_fourbar::pictures,
         panels: 3,
         moving_joints: 2,
         ground_joints: 2,
@@ -40,7 +39,7 @@ const SCENES: [Expect; 6] = [
     // three levels; 31 poses there and 29 back.
     Expect {
         name: "sixbar",
-        make: common::plots::sixbar,
+        make: crate::example_sixbar::pictures,
         panels: 6,
         moving_joints: 5,
         ground_joints: 2,
@@ -51,7 +50,7 @@ const SCENES: [Expect; 6] = [
     // angles at three levels.
     Expect {
         name: "shaper",
-        make: common::plots::shaper,
+        make: crate::example_shaper::pictures,
         panels: 6,
         moving_joints: 3,
         ground_joints: 2,
@@ -61,7 +60,7 @@ const SCENES: [Expect; 6] = [
     // O ground; A, B moving; the slider.
     Expect {
         name: "slider_crank",
-        make: common::plots::slider_crank,
+        make: crate::example_slider_crank::pictures,
         panels: 6,
         moving_joints: 2,
         ground_joints: 1,
@@ -72,7 +71,7 @@ const SCENES: [Expect; 6] = [
     // comes first: driving torque, reactions, couples of the prismatic pairs).
     Expect {
         name: "sine_mechanism",
-        make: common::plots::sine_mechanism,
+        make: crate::example_sine_mechanism::pictures,
         panels: 3,
         moving_joints: 2,
         ground_joints: 1,
@@ -82,7 +81,7 @@ const SCENES: [Expect; 6] = [
     // O1, O2 ground; A, C, P moving; P at three levels.
     Expect {
         name: "five_bar",
-        make: common::plots::five_bar,
+        make: crate::example_five_bar::pictures,
         panels: 3,
         moving_joints: 3,
         ground_joints: 2,
@@ -255,7 +254,7 @@ fn every_example_picture_is_sound() {
 #[test]
 fn the_traced_point_rides_its_path() {
     let dir = out_dir("traced");
-    let files = common::plots::fourbar(&dir).unwrap();
+    let files = crate::example_fourbar::pictures(&dir).unwrap();
     let text = std::fs::read_to_string(&files[2]).unwrap();
     let (doc, _) = parse(&text);
     let root = doc.root_element();
@@ -285,17 +284,17 @@ fn the_traced_point_rides_its_path() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// The shaper's force figure (written after the shaper's own three pictures):
-/// well-formed, inside its view, three panels: the driving torque; the
+/// The shaper's force figure (the first of its pictures, before its drawing
+/// and animation): well-formed, inside its view, three panels: the driving torque; the
 /// magnitudes of the 7 reactions of its definition (revolutes at A, B, C, D, E
 /// and the prismatic pairs block-rocker and guide-ram); the 2 prismatic
 /// couples.
 #[test]
 fn the_shaper_force_figure_is_sound() {
     let dir = out_dir("shaper_forces");
-    let files = common::plots::shaper_forces(&dir).unwrap();
-    assert_eq!(files.len(), 4, "the shaper's pictures and forces.svg");
-    let text = std::fs::read_to_string(&files[3]).unwrap();
+    let files = crate::example_shaper_forces::pictures(&dir).unwrap();
+    assert_eq!(files.len(), 3, "forces.svg, a drawing and an animation");
+    let text = std::fs::read_to_string(&files[0]).unwrap();
     let (doc, vb) = parse(&text);
     assert_inside(&doc, vb);
     let ps = panels(&doc);

@@ -33,18 +33,16 @@ const fn example(name: &'static str, make: Make) -> Example {
 const EXAMPLES: [Example; 9] = [
     Example {
         docs: Some(("fourbar-kinematics.png", "fourbar-drawing.png")),
-        ..example("fourbar", common::plots::fourbar)
+        ..example("fourbar", crate::example_fourbar::pictures)
     },
-    example("sixbar", common::plots::sixbar),
-    example("shaper", common::plots::shaper),
-    example("slider_crank", common::plots::slider_crank),
-    example("five_bar", common::plots::five_bar),
-    example("sine_mechanism", common::plots::sine_mechanism),
-    // Its forces chart (after the shaper's three pictures) is the one of interest.
+    example("sixbar", crate::example_sixbar::pictures),
+    example("shaper", crate::example_shaper::pictures),
+    example("slider_crank", crate::example_slider_crank::pictures),
+    example("five_bar", crate::example_five_bar::pictures),
+    example("sine_mechanism", crate::example_sine_mechanism::pictures),
     Example {
-        chart: 3,
         docs: Some(("shaper-forces.png", "shaper-drawing.png")),
-        ..example("shaper_forces", common::plots::shaper_forces)
+        ..example("shaper_forces", crate::example_shaper_forces::pictures)
     },
     Example {
         docs: Some(("stephenson-kinematics.png", "stephenson.png")),

@@ -2,11 +2,11 @@
 //! bit, at random inputs; a failing pose fails with the same typed error.
 
 #[path = "../../examples/common/leg.rs"]
-mod leg;
+pub(super) mod leg;
 #[path = "../../examples/common/scenes.rs"]
-mod scenes;
+pub(super) mod scenes;
 #[path = "../../examples/common/stephenson.rs"]
-mod stephenson;
+pub(super) mod stephenson;
 
 use super::text::definition;
 use mechanism::structure::{Fields, Value};
@@ -16,7 +16,7 @@ use mechanism_codegen::runtime::{Analysis, Mechanism};
 const POSES: usize = 400;
 
 /// A small deterministic generator (SplitMix64), so a failure replays.
-struct Rng(u64);
+pub(super) struct Rng(pub(super) u64);
 
 impl Rng {
     fn next(&mut self) -> f64 {
@@ -29,13 +29,16 @@ impl Rng {
     }
 
     /// Uniform in `[lo, hi]`.
-    fn within(&mut self, lo: f64, hi: f64) -> f64 {
+    pub(super) fn within(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * self.next()
     }
 }
 
 /// The number of column `name` (`B.x`, `link3`) of a generated struct.
-fn field<S: Fields<f64>>(s: &S, name: &str) -> f64 {
+pub(super) fn field<S: Fields<f64>>(s: &S, name: &str) -> f64 {
+    if let Some(Value::Scalar(x)) = s.get(name) {
+        return x;
+    }
     let (base, part) = match name.rsplit_once('.') {
         Some((b, p)) => (b, Some(p)),
         None => (name, None),

@@ -8,9 +8,13 @@
 //!   failing pose fails with the same typed error (group, primitive, fault
 //!   and its numbers). Both walk the same plan calling the same core
 //!   primitives with the same arguments, so nothing looser is expected.
+//! - `forces`: the force analysis of the definitions with masses and
+//!   loads, bit for bit, with random load values.
 //! - `diagnostics`: every UI failure case (`tests/ui/*.rs` with its
 //!   `.stderr`) gives, read at run time, the messages rustc shows.
 
 mod agreement;
 mod diagnostics;
+mod force_kinds;
+mod forces;
 mod text;

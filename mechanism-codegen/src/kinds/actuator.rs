@@ -297,6 +297,48 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Actuator<'_> {
+    /// `force::actuator::reactions` (or `reactions_with_cylinder` for a
+    /// barrel and rod) on the links' loads; the pin reactions passed to
+    /// their bodies, the axial force along the actuator onto `B`'s body.
+    fn run_forces(
+        &self,
+        cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        use mechanism_core::force::actuator;
+        let (stmt, a, b, input) = (self.stmt, self.a, self.b, self.input);
+        let (links, name) = (&stmt.links, &stmt.name);
+        if self.barrel_and_rod().is_some() {
+            let arm = cx.load_about(&links[0], a);
+            let barrel = cx.load_about(&links[1], b);
+            let rod = cx.load_about(&links[2], name);
+            let (pa, pb, pc) = (cx.at(a), cx.at(b), cx.at(name));
+            let rx = actuator::reactions_with_cylinder(&pa, &pb, &pc, &arm, &rod, &barrel)?;
+            let body_a = cx.pass_revolute(a, rx.a);
+            let body_b = cx.pass_revolute(b, rx.b);
+            cx.revolute(&body_a, &links[0], rx.a);
+            cx.revolute(&Some(links[0].to_string()), &links[2], rx.c);
+            cx.revolute(&body_b, &links[1], rx.b);
+            cx.prismatic(&Some(links[1].to_string()), &links[2], rx.pair);
+            cx.power.push(rx.axial * (cx.rate)(input));
+            cx.conditions.push(rx.min_pivot_ratio);
+            cx.drive(input, Held::Push, rx.axial);
+            return Ok(());
+        }
+        let load = cx.load_about(&links[0], a);
+        let (pa, pb, pc) = (cx.at(a), cx.at(b), cx.at(name));
+        let rx = actuator::reactions(&pa, &pb, &pc, &load)?;
+        let body_a = cx.pass_revolute(a, rx.a);
+        if let Some(body) = cx.body_of_point(b) {
+            let axis = (pc - pb) / mechanism_core::geometry::length(&(pc - pb));
+            cx.force_on(&body, axis * (-rx.axial), b);
+        }
+        cx.revolute(&body_a, &links[0], rx.a);
+        cx.power.push(rx.axial * (cx.rate)(input));
+        cx.conditions.push(rx.min_pivot_ratio);
+        cx.drive(input, Held::Push, rx.axial);
+        Ok(())
+    }
+
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let stmt = self.stmt;
         let missing = || super::run::missing(mechanism_core::Primitive::Actuator);

@@ -361,6 +361,35 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Crank<'_> {
+    /// `force::crank::reactions` on its link's load about the pivot; the
+    /// motor's reaction (pivot force and torque) onto the carrier or the
+    /// pivot's body.
+    fn run_forces(
+        &self,
+        cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        use mechanism_core::force::Wrench;
+        let (stmt, pivot, input) = (self.stmt, self.pivot, self.input);
+        let link = &stmt.links[0];
+        let load = cx.load_about(link, pivot);
+        let rx = mechanism_core::force::crank::reactions(&load)?;
+        let body = match self.carrier {
+            Some(c) => Some(c.to_string()),
+            None => cx.body_of_point(pivot),
+        };
+        if let Some(b) = &body {
+            if let Some(r) = cx.reference(b) {
+                let w = Wrench::force_at(&(-rx.pivot), &cx.at(pivot), &cx.at(&r))
+                    .with_couple(-rx.torque);
+                cx.add(b, w);
+            }
+        }
+        cx.revolute(&body, link, rx.pivot);
+        cx.power.push(rx.torque * (cx.rate)(input));
+        cx.drive(input, Held::Torque, rx.torque);
+        Ok(())
+    }
+
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let stmt = self.stmt;
         let g = cx

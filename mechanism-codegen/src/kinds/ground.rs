@@ -105,6 +105,13 @@ fn lane_steps(s: &mut Step, x: &Value, y: &Value) {
 }
 
 impl super::run::RunKind for Ground<'_> {
+    fn run_forces(
+        &self,
+        _cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        Ok(())
+    }
+
     fn run_rates(&self, _cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         Ok(())
     }

@@ -272,6 +272,13 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Guide<'_> {
+    fn run_forces(
+        &self,
+        _cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        Ok(())
+    }
+
     /// A carried guide's motion: its origin's and its carrier's rate.
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let Some(link) = self.carrier else {

@@ -244,6 +244,13 @@ fn lane_steps(lane: &Lane, s: &mut Step, link: &Ident, from: &Ident, local: &Loc
 }
 
 impl super::run::RunKind for Point<'_> {
+    fn run_forces(
+        &self,
+        _cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        Ok(())
+    }
+
     /// The motion of a point on a link: its base's plus the motion about
     /// the base, checked as the generated code checks it.
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {

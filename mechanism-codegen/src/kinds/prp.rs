@@ -246,6 +246,27 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Prp<'_> {
+    /// `force::prp::reactions` on the links' loads about the joint.
+    fn run_forces(
+        &self,
+        cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        let (stmt, g1, g2) = (self.stmt, self.g1, self.g2);
+        let (links, name) = (&stmt.links, &stmt.name);
+        let (l1, l2) = cx.loads_about(stmt, name);
+        let (d1, d2) = (cx.pose.line(g1).dir, cx.pose.line(g2).dir);
+        let rx = mechanism_core::force::prp::reactions(&cx.at(name), &d1, &d2, &l1, &l2)?;
+        let c1 = cx.body_of_guide(g1);
+        let c2 = cx.body_of_guide(g2);
+        cx.prismatic_on(c1.clone(), &rx.guide1, name);
+        cx.prismatic_on(c2.clone(), &rx.guide2, name);
+        cx.prismatic(&c1, &links[0], rx.guide1);
+        cx.prismatic(&c2, &links[1], rx.guide2);
+        cx.inner(links, super::run::ForceValue::Force(rx.c));
+        cx.conditions.push(rx.min_pivot_ratio);
+        Ok(())
+    }
+
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let stmt = self.stmt;
         let missing = || super::run::missing(mechanism_core::Primitive::Prp);

@@ -278,6 +278,31 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Rpp<'_> {
+    /// `force::rpp::reactions` on the links' loads about `A`.
+    fn run_forces(
+        &self,
+        cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        let (stmt, a, guide) = (self.stmt, self.a, self.guide);
+        let links = &stmt.links;
+        let slot = cx
+            .pose
+            .kept::<dyad::rpp::RppPosition<f64>>(&stmt.name)
+            .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Rpp))?
+            .slot;
+        let (l1, l2) = cx.loads_about(stmt, a);
+        let dir = cx.pose.line(guide).dir;
+        let rx = mechanism_core::force::rpp::reactions(&cx.at(a), &slot, &dir, &l1, &l2)?;
+        let ba = cx.pass_revolute(a, rx.a);
+        let bg = cx.body_of_guide(guide);
+        cx.prismatic_on(bg.clone(), &rx.guide, a);
+        cx.revolute(&ba, &links[0], rx.a);
+        cx.inner(links, super::run::ForceValue::Prismatic(rx.slot));
+        cx.prismatic(&bg, &links[1], rx.guide);
+        cx.conditions.push(rx.min_pivot_ratio);
+        Ok(())
+    }
+
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let stmt = self.stmt;
         let missing = || super::run::missing(mechanism_core::Primitive::Rpp);

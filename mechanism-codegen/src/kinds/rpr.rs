@@ -281,6 +281,29 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Rpr<'_> {
+    /// `force::rpr::reactions` on the links' loads about `A`.
+    fn run_forces(
+        &self,
+        cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        let (stmt, a, b) = (self.stmt, self.a, self.b);
+        let links = &stmt.links;
+        let axis = cx
+            .pose
+            .kept::<dyad::rpr::RprPosition<f64>>(&stmt.name)
+            .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Rpr))?
+            .axis;
+        let (l1, l2) = cx.loads_about(stmt, a);
+        let rx = mechanism_core::force::rpr::reactions(&cx.at(a), &cx.at(b), &axis, &l1, &l2)?;
+        let ba = cx.pass_revolute(a, rx.a);
+        let bb = cx.pass_revolute(b, rx.b);
+        cx.revolute(&ba, &links[0], rx.a);
+        cx.revolute(&bb, &links[1], rx.b);
+        cx.inner(links, super::run::ForceValue::Prismatic(rx.slide));
+        cx.conditions.push(rx.min_pivot_ratio);
+        Ok(())
+    }
+
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let stmt = self.stmt;
         let missing = || super::run::missing(mechanism_core::Primitive::Rpr);

@@ -255,6 +255,26 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Rrp<'_> {
+    /// `force::rrp::reactions` on the links' loads about the joint.
+    fn run_forces(
+        &self,
+        cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        let (stmt, a, guide) = (self.stmt, self.a, self.guide);
+        let (links, name) = (&stmt.links, &stmt.name);
+        let (l1, l2) = cx.loads_about(stmt, name);
+        let dir = cx.pose.line(guide).dir;
+        let rx = mechanism_core::force::rrp::reactions(&cx.at(a), &cx.at(name), &dir, &l1, &l2)?;
+        let ba = cx.pass_revolute(a, rx.a);
+        let bg = cx.body_of_guide(guide);
+        cx.prismatic_on(bg.clone(), &rx.guide, name);
+        cx.revolute(&ba, &links[0], rx.a);
+        cx.inner(links, super::run::ForceValue::Force(rx.c));
+        cx.prismatic(&bg, &links[1], rx.guide);
+        cx.conditions.push(rx.min_pivot_ratio);
+        Ok(())
+    }
+
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let stmt = self.stmt;
         let missing = || super::run::missing(mechanism_core::Primitive::Rrp);

@@ -285,6 +285,25 @@ impl FourBar<'_> {
 }
 
 impl super::run::RunKind for Rrr<'_> {
+    /// `force::rrr::reactions` on the links' loads about the joint.
+    fn run_forces(
+        &self,
+        cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        let (stmt, a, b) = (self.stmt, self.a, self.b);
+        let (links, name) = (&stmt.links, &stmt.name);
+        let (l1, l2) = cx.loads_about(stmt, name);
+        let rx =
+            mechanism_core::force::rrr::reactions(&cx.at(a), &cx.at(b), &cx.at(name), &l1, &l2)?;
+        let ba = cx.pass_revolute(a, rx.a);
+        let bb = cx.pass_revolute(b, rx.b);
+        cx.revolute(&ba, &links[0], rx.a);
+        cx.revolute(&bb, &links[1], rx.b);
+        cx.inner(links, super::run::ForceValue::Force(rx.c));
+        cx.conditions.push(rx.min_pivot_ratio);
+        Ok(())
+    }
+
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let stmt = self.stmt;
         let missing = || super::run::missing(mechanism_core::Primitive::Rrr);

@@ -195,6 +195,13 @@ pub trait RunKind {
     /// emits, computed. A kind without rates (a ground point) does nothing.
     fn run_rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>>;
 
+    /// Its joint reactions and driving efforts in the force analysis: what
+    /// its `GroupKind::forces` emits, computed with the same core call on
+    /// the same loads, passing the same reactions to the same bodies. A
+    /// kind without forces (a ground point, a guide, a point on a link)
+    /// does nothing.
+    fn run_forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>>;
+
     /// The raw direction of its link `index` (the second of
     /// `GroupKind::link_direction`), from the position.
     fn run_link_dir(&self, index: usize, pose: &Pose) -> Vector2<f64>;
@@ -209,5 +216,237 @@ pub trait RunKind {
     /// without slides.
     fn run_slide(&self, _slot: usize, _pose: &Pose) -> Option<f64> {
         None
+    }
+}
+
+/// A reaction or driving effort the run-time force walk found: the value
+/// of one field of the generated forces struct.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ForceValue {
+    /// A revolute joint's force (force units, global frame).
+    Force(Vector2<f64>),
+    /// A prismatic pair's reaction (normal force, couple about its point).
+    Prismatic(mechanism_core::force::PrismaticReaction<f64>),
+    /// A driving torque (force x length) or a push along a line (force).
+    Scalar(f64),
+}
+
+/// One field of the forces struct, as the run-time walk finds it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RunReaction {
+    /// The field's name (`r_ground_link2`, `drive_theta`), before the
+    /// numbering of repeated names.
+    pub name: String,
+    /// What it holds.
+    pub held: super::forces::Held,
+    /// Its value.
+    pub value: ForceValue,
+}
+
+/// What a kind's run-time force step reads and where it writes: the `f64`
+/// twin of [`super::forces::ForceCx`]. Loads are accumulated per link as a
+/// wrench about the link's reference point (its first point), in the order
+/// and with the operations the emitted `forces()` uses.
+pub struct ForceRunCx<'r> {
+    /// The position.
+    pub pose: &'r Pose,
+    /// The velocity level.
+    pub vel: &'r Motion,
+    /// The acceleration level.
+    pub acc: &'r Motion,
+    /// The plan (bodies of points and guides, links' points and rates).
+    pub plan: &'r crate::plan::Plan,
+    /// The points that move.
+    pub moving: &'r BTreeSet<String>,
+    /// The inputs' rates (rad/s, L/s), by input name.
+    pub rate: &'r dyn Fn(&Ident) -> f64,
+    /// The load of each loaded link, about its reference point.
+    pub loads: BTreeMap<String, mechanism_core::force::Wrench<f64>>,
+    /// The fields found, in order.
+    pub reactions: Vec<RunReaction>,
+    /// The power terms of the balance, in order.
+    pub power: Vec<f64>,
+    /// The groups' force-system conditioning, in order.
+    pub conditions: Vec<f64>,
+}
+
+/// An identifier for a name the plan holds as text.
+fn ident(name: &str) -> Ident {
+    Ident::new(name, proc_macro2::Span::call_site())
+}
+
+impl ForceRunCx<'_> {
+    /// Point `p` of the position.
+    pub fn at(&self, p: &Ident) -> mechanism_core::Point2<f64> {
+        self.pose.point(p)
+    }
+
+    /// The body owning a point (`None`: the ground).
+    pub fn body_of_point(&self, point: &Ident) -> Option<String> {
+        self.plan.body_of_point(&point.to_string())
+    }
+
+    /// The body carrying a guide (`None`: the ground).
+    pub fn body_of_guide(&self, guide: &Ident) -> Option<String> {
+        self.plan.body_of_guide(&guide.to_string())
+    }
+
+    /// The reference point of `link`'s load: its first point.
+    pub fn reference(&self, link: &str) -> Option<Ident> {
+        let info = self.plan.links.get(link)?;
+        info.points.first().map(|p| ident(p))
+    }
+
+    /// The velocity of point `p` (`None`: it never moves).
+    pub fn velocity_of(&self, p: &Ident) -> Option<Vector2<f64>> {
+        let name = p.to_string();
+        self.moving.contains(&name).then(|| {
+            let nan = Vector2::new(f64::NAN, f64::NAN);
+            self.vel.points.get(&name).copied().unwrap_or(nan)
+        })
+    }
+
+    /// The acceleration of point `p` (NaN when unknown).
+    pub fn acceleration_of(&self, p: &Ident) -> Vector2<f64> {
+        let nan = Vector2::new(f64::NAN, f64::NAN);
+        self.acc.points.get(&p.to_string()).copied().unwrap_or(nan)
+    }
+
+    /// The angular velocity and acceleration of `link` (`None`: it does
+    /// not turn).
+    pub fn rates_of(&self, link: &Ident) -> Option<(f64, f64)> {
+        let l = self.plan.turning_link(&link.to_string())?;
+        let w = self.vel.links.get(&l).copied().unwrap_or(f64::NAN);
+        let a = self.acc.links.get(&l).copied().unwrap_or(f64::NAN);
+        Some((w, a))
+    }
+
+    /// The load of `link` as a wrench about `point` (zero when it carries
+    /// none yet).
+    pub fn load_about(&self, link: &Ident, point: &Ident) -> mechanism_core::force::Wrench<f64> {
+        let l = link.to_string();
+        let (Some(load), Some(r)) = (self.loads.get(&l), self.reference(&l)) else {
+            return mechanism_core::force::Wrench::zero();
+        };
+        if *point == r {
+            *load
+        } else {
+            load.moved(&self.at(&r), &self.at(point))
+        }
+    }
+
+    /// The loads of a group's two links about `point`.
+    pub fn loads_about(
+        &self,
+        stmt: &Stmt,
+        point: &Ident,
+    ) -> (
+        mechanism_core::force::Wrench<f64>,
+        mechanism_core::force::Wrench<f64>,
+    ) {
+        (
+            self.load_about(&stmt.links[0], point),
+            self.load_about(&stmt.links[1], point),
+        )
+    }
+
+    /// Adds a wrench (about the link's reference point) to a link's load.
+    pub fn add(&mut self, link: &str, wrench: mechanism_core::force::Wrench<f64>) {
+        match self.loads.get_mut(link) {
+            Some(load) => *load += wrench,
+            None => {
+                self.loads.insert(link.to_string(), wrench);
+            }
+        }
+    }
+
+    /// A force acting on `link` at point `at`, added to its load.
+    pub fn force_on(&mut self, link: &str, force: Vector2<f64>, at: &Ident) {
+        use mechanism_core::force::Wrench;
+        let Some(r) = self.reference(link) else {
+            return;
+        };
+        let wrench = if *at == r {
+            Wrench::new(force, 0.0)
+        } else {
+            Wrench::force_at(&force, &self.at(at), &self.at(&r))
+        };
+        self.add(link, wrench);
+    }
+
+    /// A prismatic reaction (about point `about`) negated onto `body`.
+    pub fn prismatic_on(
+        &mut self,
+        body: Option<String>,
+        rx: &mechanism_core::force::PrismaticReaction<f64>,
+        about: &Ident,
+    ) {
+        let Some(body) = body else {
+            return;
+        };
+        let Some(r) = self.reference(&body) else {
+            return;
+        };
+        let wrench = if *about == r {
+            -rx.wrench()
+        } else {
+            -rx.wrench_about(&self.at(about), &self.at(&r))
+        };
+        self.add(&body, wrench);
+    }
+
+    /// An outer revolute joint at `point` whose reaction on the group is
+    /// `force`: passes it, negated, to the body owning the point (nothing
+    /// for the ground) and returns that body.
+    pub fn pass_revolute(&mut self, point: &Ident, force: Vector2<f64>) -> Option<String> {
+        let body = self.body_of_point(point);
+        if let Some(b) = &body {
+            self.force_on(b, -force, point);
+        }
+        body
+    }
+
+    /// A revolute reaction: the force of `from` (a body or the ground) on
+    /// `to`.
+    pub fn revolute(&mut self, from: &Option<String>, to: &Ident, force: Vector2<f64>) {
+        self.field(
+            format!("r_{}_{to}", super::forces::body_name(from)),
+            super::forces::Held::Force,
+            ForceValue::Force(force),
+        );
+    }
+
+    /// A prismatic pair's reaction of `from` on `to`.
+    pub fn prismatic(
+        &mut self,
+        from: &Option<String>,
+        to: &Ident,
+        rx: mechanism_core::force::PrismaticReaction<f64>,
+    ) {
+        self.field(
+            format!("r_{}_{to}", super::forces::body_name(from)),
+            super::forces::Held::Prismatic,
+            ForceValue::Prismatic(rx),
+        );
+    }
+
+    /// The joint between a group's two links (the force of the first on
+    /// the second).
+    pub fn inner(&mut self, links: &[Ident], value: ForceValue) {
+        let held = match value {
+            ForceValue::Prismatic(_) => super::forces::Held::Prismatic,
+            _ => super::forces::Held::Force,
+        };
+        self.field(format!("r_{}_{}", links[0], links[1]), held, value);
+    }
+
+    /// A driving effort of `input` (`drive_INPUT`).
+    pub fn drive(&mut self, input: &Ident, held: super::forces::Held, value: f64) {
+        self.field(format!("drive_{input}"), held, ForceValue::Scalar(value));
+    }
+
+    /// A field of the forces struct.
+    pub fn field(&mut self, name: String, held: super::forces::Held, value: ForceValue) {
+        self.reactions.push(RunReaction { name, held, value });
     }
 }

@@ -205,6 +205,36 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Slider<'_> {
+    /// `force::slider::reactions` on its block's load about its point; the
+    /// guide's reaction and the drive onto the guide's carrier.
+    fn run_forces(
+        &self,
+        cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        use mechanism_core::force::Wrench;
+        let (stmt, guide, input) = (self.stmt, self.guide, self.input);
+        let (link, name) = (&stmt.links[0], &stmt.name);
+        let load = cx.load_about(link, name);
+        let dir = cx.pose.line(guide).dir;
+        let rx = mechanism_core::force::slider::reactions(&dir, &load)?;
+        let body = cx.body_of_guide(guide);
+        if let Some(b) = &body {
+            if let Some(r) = cx.reference(b) {
+                let w = Wrench::force_at(
+                    &(-(rx.guide.force + dir * rx.drive)),
+                    &cx.at(name),
+                    &cx.at(&r),
+                )
+                .with_couple(-rx.guide.moment);
+                cx.add(b, w);
+            }
+        }
+        cx.prismatic(&body, link, rx.guide);
+        cx.power.push(rx.drive * (cx.rate)(input));
+        cx.drive(input, Held::Push, rx.drive);
+        Ok(())
+    }
+
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let g = cx
             .pose

@@ -232,6 +232,29 @@ pub fn motor_reactions(model: &Model) -> Vec<Reaction> {
 }
 
 impl super::run::RunKind for Target<'_> {
+    /// `force::target::reactions` on the effector's load about its point:
+    /// the positioner's force components and couple.
+    fn run_forces(
+        &self,
+        cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        let (stmt, x, y) = (self.stmt, self.x, self.y);
+        let (link, name) = (&stmt.links[0], &stmt.name);
+        let load = cx.load_about(link, name);
+        let rx = mechanism_core::force::target::reactions(&load)?;
+        cx.power
+            .push(rx.drive.x * (cx.rate)(x) + rx.drive.y * (cx.rate)(y));
+        cx.drive(x, Held::Push, rx.drive.x);
+        cx.drive(y, Held::Push, rx.drive.y);
+        let ground = body_name(&None);
+        cx.field(
+            format!("m_{ground}_{link}"),
+            Held::Torque,
+            super::run::ForceValue::Scalar(rx.couple),
+        );
+        Ok(())
+    }
+
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let v = if cx.accel() {
             driver::target::acceleration(cx.accel_of(self.x), cx.accel_of(self.y))?

@@ -645,6 +645,37 @@ fn why(fault: &Fault) -> String {
 }
 
 impl super::run::RunKind for TriadKind<'_> {
+    /// `triad::reactions` on the loads of its four links; the legs'
+    /// reactions at `K1`, `K2`, `K3` passed to their bodies.
+    fn run_forces(
+        &self,
+        cx: &mut super::run::ForceRunCx<'_>,
+    ) -> Result<(), mechanism_core::Error<f64>> {
+        let (stmt, t) = (self.stmt, self.t);
+        let (links, a) = (&stmt.links, &stmt.name);
+        let loads = triad::TriadLoads {
+            leg1: cx.load_about(&links[0], a),
+            leg2: cx.load_about(&links[1], &t.b),
+            leg3: cx.load_about(&links[2], &t.p),
+            ternary: cx.load_about(&links[3], a),
+        };
+        let g = cx
+            .pose
+            .kept::<TriadPosition<f64>>(&stmt.name)
+            .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Triad))?;
+        let rx = triad::reactions(g, &loads)?;
+        for (i, force) in [rx.k1, rx.k2, rx.k3].into_iter().enumerate() {
+            let body = cx.pass_revolute(&t.k[i], force);
+            cx.revolute(&body, &links[i], force);
+        }
+        for (i, force) in [rx.a, rx.b, rx.p].into_iter().enumerate() {
+            let from = Some(links[i].to_string());
+            cx.revolute(&from, &links[3], force);
+        }
+        cx.conditions.push(rx.min_pivot_ratio);
+        Ok(())
+    }
+
     fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let stmt = self.stmt;
         let missing = || super::run::missing(mechanism_core::Primitive::Triad);

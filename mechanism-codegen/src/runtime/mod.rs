@@ -23,12 +23,15 @@
 //! assert!((b_x - 2.1).abs() < 1.0);
 //! ```
 
+pub mod forces;
+pub mod layout;
 pub mod text;
 
 use crate::diag::Diagnostics;
 use crate::kinds::{self, run::Motion, run::RunCx, Pose};
 use crate::model::{Mode, Model};
 use crate::plan::Plan;
+pub use forces::Forces;
 use mechanism_core::{geometry, Error, Vector2};
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::{Mutex, PoisonError};
@@ -51,8 +54,10 @@ pub enum Analysis {
 pub struct Column {
     /// The field path in the generated struct of its analysis.
     pub name: String,
-    /// Its unit: `L` (the definition's length unit), `rad`, `L/s`, `rad/s`,
-    /// `L/s^2`, `rad/s^2`.
+    /// Its unit: `L` (the definition's length unit, as its `units`
+    /// statement names it: `mm`), `rad`, `L/s`, `rad/s`, `L/s^2`, `rad/s^2`
+    /// (`s` the time unit's name); force columns: the force unit `F` and
+    /// `F L` (`N mm`), `1` for a ratio.
     pub unit: &'static str,
 }
 
@@ -96,6 +101,8 @@ pub struct Mechanism {
     params: BTreeMap<String, f64>,
     /// The modes set at run time ([`Mechanism::set_mode`]).
     current_modes: BTreeMap<String, Mode>,
+    /// The `loads { .. }` values ([`Mechanism::set_load`]).
+    loads: BTreeMap<String, f64>,
 }
 
 /// The name `s` with a `'static` lifetime (errors name their group so);
@@ -142,12 +149,19 @@ impl Mechanism {
             .iter()
             .map(|(n, v)| (n.to_string(), *v))
             .collect();
+        let loads = model
+            .kinetics
+            .loads
+            .iter()
+            .map(|(n, v)| (n.to_string(), *v))
+            .collect();
         Ok(Mechanism {
             model,
             plan,
             moving,
             params,
             current_modes: BTreeMap::new(),
+            loads,
         })
     }
 
@@ -248,10 +262,14 @@ impl Mechanism {
     /// The output columns of `analysis`, in the order of the generated
     /// struct's fields: points (`.x`, `.y`), link angles, slides.
     pub fn columns(&self, analysis: Analysis) -> Vec<Column> {
+        let u = &self.model.units;
         let (l, a) = match analysis {
-            Analysis::Position => ("L", "rad"),
-            Analysis::Velocity => ("L/s", "rad/s"),
-            Analysis::Acceleration => ("L/s^2", "rad/s^2"),
+            Analysis::Position => (intern(u.length()), "rad"),
+            Analysis::Velocity => (intern(&u.per_time(u.length())), intern(&u.per_time("rad"))),
+            Analysis::Acceleration => (
+                intern(&u.per_time_squared(u.length())),
+                intern(&u.per_time_squared("rad")),
+            ),
         };
         let out = &self.plan.outputs;
         let mut cols = Vec::new();

@@ -12,6 +12,8 @@
 //!   of order 4 for dense output, stepping exactly onto requested times and
 //!   events located on the dense output (an input reaching a value, a full
 //!   turn, an extremum of the speed).
+//! - [`drive`]: efforts as functions of the state: a DC motor's
+//!   torque-speed line, a linear spring and viscous damper on an input.
 //!
 //! Why hand-written: the well-kept Rust crates need `std` and the heap and
 //! fix the scalar type. `ode_solvers` (DOPRI5, DOP853, RK4) stores its
@@ -27,6 +29,7 @@
 //! a non-finite state.
 
 pub mod dopri5;
+pub mod drive;
 pub mod machine;
 pub mod rk4;
 

@@ -18,7 +18,10 @@
 //! and acceleration (`FourBarAcc`, `solve`); `forces*` that plus the
 //! generated `forces()` (the same four-bar in metres with masses,
 //! `FourBarForces` below); `crank32` / `cossin32` the crank driver alone from
-//! an angle or from `(cos, sin)`.
+//! an angle or from `(cos, sin)`; `dyn32` one `q''` of the `run_up` four-bar
+//! (`examples/common/run_up.rs`, `RunUp` below): `position` then `dynamics`
+//! under the DC motor's torque; `dynkin32` the same definition's position,
+//! velocity and acceleration (`solve`), for the ratio.
 #![no_std]
 #![no_main]
 #![allow(dead_code, unused_imports)]
@@ -128,6 +131,26 @@ mechanism::mechanism! {
     }
 }
 
+#[cfg(any(feature = "dyn32", feature = "dynkin32"))]
+mechanism::mechanism! {
+    /// The `run_up` four-bar (m, kg, s) with its flywheel (0.02 kg m^2).
+    pub RunUp {
+        analysis dynamics;
+        let O2 = ground(0.0, 0.0);
+        let O4 = ground(0.30, 0.0);
+        let A = crank(O2, 0.10, phi) as crank;
+        let B = rrr(A, 0.25, O4, 0.18, left) as (coupler, rocker);
+        let G2 = point(crank, from O2, 0.05, 0 deg);
+        let G3 = point(coupler, from A, 0.125, 0 deg);
+        let G4 = point(rocker, from O4, 0.09, 0 deg);
+        mass crank { m = 0.5, at = G2, j = 4.0e-4 };
+        mass crank { m = 2.0, at = O2, j = 0.02 };
+        mass coupler { m = 1.2, at = G3, j = 6.5e-3 };
+        mass rocker { m = 0.9, at = G4, j = 2.5e-3 };
+        gravity (0.0, -9.81);
+    }
+}
+
 /// Marks the start of one evaluation (the trace counts from its entry).
 #[no_mangle]
 #[inline(never)]
@@ -152,7 +175,9 @@ pub extern "C" fn probe_end() {
     feature = "forces32",
     feature = "crank32",
     feature = "cossin32",
-    feature = "ik32"
+    feature = "ik32",
+    feature = "dyn32",
+    feature = "dynkin32"
 ))]
 type T = f32;
 #[cfg(not(any(
@@ -163,7 +188,9 @@ type T = f32;
     feature = "forces32",
     feature = "crank32",
     feature = "cossin32",
-    feature = "ik32"
+    feature = "ik32",
+    feature = "dyn32",
+    feature = "dynkin32"
 )))]
 type T = f64;
 
@@ -240,6 +267,31 @@ fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
     Ok::<_, mechanism::Error<T>>((s.position.arm1, s.position.arm2, f.drive_q1, f.drive_q2))
 }
 
+/// One `q''` of the run-up: the pose at the crank angle, then the
+/// equations of motion at 20 rad/s under the motor's torque
+/// `1.2 (1 - omega / 40)` N m.
+#[cfg(feature = "dyn32")]
+fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
+    let m = black_box(RunUp::<T>::default());
+    let omega = T::lit(20.0);
+    let tau = mechanism::ode::drive::DcMotor::new(T::lit(1.2), T::lit(40.0)).torque(omega);
+    let p = m.position(&RunUpInput { phi: q })?;
+    let d = m.dynamics(&p, &RunUpInput { phi: omega }, &RunUpInput { phi: tau })?;
+    Ok::<_, mechanism::Error<T>>(d.accels.phi)
+}
+
+/// The run-up four-bar's position, velocity and acceleration at 20 rad/s
+/// and 10 rad/s^2 (the kinematics `q''` is compared with; `solve` would add
+/// the forces of this definition with masses).
+#[cfg(feature = "dynkin32")]
+fn scene(_m: &FourBar<T>, q: T) -> impl Sized {
+    let m = black_box(RunUp::<T>::default());
+    let p = m.position(&RunUpInput { phi: q })?;
+    let v = m.velocity(&p, &RunUpInput { phi: T::lit(20.0) })?;
+    let a = m.acceleration(&p, &v, &RunUpInput { phi: T::lit(10.0) })?;
+    Ok::<_, mechanism::Error<T>>((p, v, a))
+}
+
 #[cfg(feature = "crank32")]
 fn scene(m: &FourBar<T>, q: T) -> impl Sized {
     mechanism::driver::crank::position(&Point2::origin(), m.crank, q)
@@ -260,6 +312,8 @@ fn scene(m: &FourBar<T>, cs: (T, T)) -> impl Sized {
     feature = "crank32",
     feature = "cossin32",
     feature = "ik32",
+    feature = "dyn32",
+    feature = "dynkin32",
     feature = "pos64",
     feature = "vel64",
     feature = "acc64",
