@@ -14,6 +14,9 @@ pub struct Depth {
     pub velocity: bool,
     /// Acceleration analysis (needs input rates and accelerations).
     pub acceleration: bool,
+    /// Force analysis (needs the acceleration; the definition's masses and
+    /// loads at their current values).
+    pub forces: bool,
 }
 
 /// The key of the velocity's condition number in a combined result.
@@ -22,7 +25,8 @@ pub const CONDITION: &str = "velocity.condition";
 /// The keys of one row's values, in order: the position columns by their
 /// names in the generated structs (`B.x`, `link3`, `s`), then
 /// `velocity.NAME` for each velocity column and [`CONDITION`], then
-/// `acceleration.NAME` (the fields of the generated `Solution`).
+/// `acceleration.NAME`, then `forces.NAME` (the fields of the generated
+/// `Solution`).
 pub fn keys(m: &Mechanism, depth: Depth) -> Vec<(String, &'static str)> {
     let mut keys: Vec<(String, &'static str)> = m
         .columns(Analysis::Position)
@@ -37,6 +41,10 @@ pub fn keys(m: &Mechanism, depth: Depth) -> Vec<(String, &'static str)> {
     if depth.acceleration {
         let cols = m.columns(Analysis::Acceleration).into_iter();
         keys.extend(cols.map(|c| (format!("acceleration.{}", c.name), c.unit)));
+    }
+    if depth.forces {
+        let cols = m.force_columns().into_iter();
+        keys.extend(cols.map(|c| (format!("forces.{}", c.name), c.unit)));
     }
     keys
 }
@@ -64,11 +72,18 @@ pub fn row(
     } else {
         None
     };
+    let forces = match (&acc, depth.forces) {
+        (Some(acc), true) => Some(m.forces(&pos, &vel, acc)?),
+        _ => None,
+    };
     out.extend(&pos.values);
     out.extend(&vel.values);
     out.push(vel.condition);
     if let Some(acc) = acc {
         out.extend(&acc.values);
+    }
+    if let Some(f) = forces {
+        out.extend(&f.values);
     }
     Ok(())
 }

@@ -62,21 +62,27 @@ fn analysis(name: &str) -> PyResult<Analysis> {
         "velocity" => Ok(Analysis::Velocity),
         "acceleration" => Ok(Analysis::Acceleration),
         _ => Err(PyValueError::new_err(format!(
-            "no analysis `{name}`; the analyses are: `position`, `velocity`, `acceleration`"
+            "no analysis `{name}`; the analyses are: `position`, `velocity`, `acceleration`, `forces`"
         ))),
     }
 }
 
 /// The depth that `rates` and `accels` ask for.
-fn depth(rates: bool, accels: bool) -> PyResult<Depth> {
+fn depth(rates: bool, accels: bool, forces: bool) -> PyResult<Depth> {
     if accels && !rates {
         return Err(PyTypeError::new_err(
             "`accels` needs `rates` too (the acceleration is solved from the velocity)",
         ));
     }
+    if forces && !accels {
+        return Err(PyTypeError::new_err(
+            "`forces=True` needs `rates` and `accels` (the force analysis is solved from the acceleration)",
+        ));
+    }
     Ok(Depth {
         velocity: rates,
         acceleration: accels,
+        forces,
     })
 }
 
@@ -146,6 +152,17 @@ impl Mechanism {
             .iter()
             .map(|v| v.extract::<f64>())
             .collect()
+    }
+
+    /// A `ValueError` when `forces` is asked of a definition without a
+    /// force analysis.
+    fn need_forces(&self, forces: bool) -> PyResult<()> {
+        if forces && !self.rt(runtime::Mechanism::has_forces)? {
+            return Err(PyValueError::new_err(
+                "the definition has no force analysis: give it masses, loads or `analysis forces;`",
+            ));
+        }
+        Ok(())
     }
 
     /// The error of a pose that fails at inputs `q`.
@@ -241,6 +258,12 @@ impl Mechanism {
     /// `"rad/s^2"`), names as in the generated structs.
     fn columns<'py>(&self, py: Python<'py>, analysis: &str) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
+        if analysis == "forces" {
+            for c in self.rt(runtime::Mechanism::force_columns)? {
+                d.set_item(c.name, c.unit)?;
+            }
+            return Ok(d);
+        }
         let analysis = self::analysis(analysis)?;
         for c in self.cols(analysis) {
             d.set_item(&c.name, c.unit)?;
@@ -302,6 +325,72 @@ impl Mechanism {
             .map_err(PyKeyError::new_err)
     }
 
+    /// `True` when the definition has a force analysis (masses, loads or
+    /// `analysis forces;`): `forces`, `solve(forces=True)`,
+    /// `sweep(forces=True)`.
+    #[getter]
+    fn has_forces(&self) -> PyResult<bool> {
+        self.rt(runtime::Mechanism::has_forces)
+    }
+
+    /// The loads `{name: value}` of the definition's `loads { .. }` (a
+    /// copy; change them with `set_load`).
+    #[getter]
+    fn loads<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        for (n, v) in self.rt(runtime::Mechanism::loads)? {
+            d.set_item(n, v)?;
+        }
+        Ok(d)
+    }
+
+    /// Sets the load `name` to `value` (finite; in the units the definition
+    /// uses it in). `KeyError` for an unknown name, `ValueError` for a value
+    /// that is not finite.
+    fn set_load(&self, name: &str, value: f64) -> PyResult<()> {
+        let known = self.rt(|m| m.loads().iter().any(|(n, _)| n == name))?;
+        self.shared.set_load(name, value).map_err(|msg| {
+            if known {
+                PyValueError::new_err(msg)
+            } else {
+                PyKeyError::new_err(msg)
+            }
+        })
+    }
+
+    /// The force analysis at the inputs given by name, for the input rates
+    /// `rates` and accelerations `accels` (one per input each), with the
+    /// current loads: `{name: value}` as `columns("forces")`: each joint
+    /// reaction `r_FROM_TO.x`, `.y` (force on TO from FROM), prismatic ones
+    /// `.force.x`, `.force.y`, `.moment`, each driving torque or force by
+    /// its name, `condition` and `power_residual`. Signs and units:
+    /// docs/dynamics.md. `ValueError` without a force analysis.
+    #[pyo3(signature = (*, rates, accels, **inputs))]
+    fn forces<'py>(
+        &self,
+        py: Python<'py>,
+        rates: &Bound<'py, PyDict>,
+        accels: &Bound<'py, PyDict>,
+        inputs: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        self.need_forces(true)?;
+        let q = self.floats("value", inputs)?;
+        let r = self.floats("rate", Some(rates))?;
+        let a = self.floats("acceleration", Some(accels))?;
+        let d = depth(true, true, true)?;
+        let values = self.solve_one(py, &q, &r, &a, d)?;
+        let skip = self.cols(Analysis::Position).len()
+            + self.cols(Analysis::Velocity).len()
+            + 1
+            + self.cols(Analysis::Acceleration).len();
+        let out = PyDict::new(py);
+        let cols = self.rt(runtime::Mechanism::force_columns)?;
+        for (c, v) in cols.iter().zip(&values[skip..]) {
+            out.set_item(&c.name, v)?;
+        }
+        Ok(out)
+    }
+
     /// The position at the inputs given by name (`theta=0.5`; rad or L):
     /// `{name: value}` as `outputs`. `PoseError` where it cannot be
     /// assembled; `TypeError` for a missing or unknown input.
@@ -335,6 +424,7 @@ impl Mechanism {
         let d = Depth {
             velocity: true,
             acceleration: false,
+            forces: false,
         };
         let values = self.solve_one(py, &q, &r, &[], d)?;
         let skip = self.cols(Analysis::Position).len();
@@ -362,6 +452,7 @@ impl Mechanism {
         let d = Depth {
             velocity: true,
             acceleration: true,
+            forces: false,
         };
         let values = self.solve_one(py, &q, &r, &a, d)?;
         let skip = self.cols(Analysis::Position).len() + self.cols(Analysis::Velocity).len() + 1;
@@ -371,16 +462,19 @@ impl Mechanism {
     /// Every analysis asked for at one pose, as one flat dict with the
     /// keys of `sweep` (without the inputs, `ok` and `error`): position
     /// names, then with `rates` `velocity.NAME` and `velocity.condition`,
-    /// then with `accels` `acceleration.NAME`.
-    #[pyo3(signature = (*, rates=None, accels=None, **inputs))]
+    /// then with `accels` `acceleration.NAME`, then with `forces=True`
+    /// `forces.NAME` (the keys of `columns("forces")`).
+    #[pyo3(signature = (*, rates=None, accels=None, forces=false, **inputs))]
     fn solve<'py>(
         &self,
         py: Python<'py>,
         rates: Option<&Bound<'py, PyDict>>,
         accels: Option<&Bound<'py, PyDict>>,
+        forces: bool,
         inputs: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let depth = depth(rates.is_some(), accels.is_some())?;
+        let depth = depth(rates.is_some(), accels.is_some(), forces)?;
+        self.need_forces(forces)?;
         let q = self.floats("value", inputs)?;
         let r = match rates {
             Some(_) => self.floats("rate", rates)?,
@@ -407,19 +501,22 @@ impl Mechanism {
     /// broadcast together as numpy broadcasts (`np.meshgrid` for a grid);
     /// every returned array has that shape: each input (a copy), each
     /// position output, `velocity.NAME` and `velocity.condition`,
-    /// `acceleration.NAME`, and `ok` (bool, False where the pose failed)
+    /// `acceleration.NAME`, with `forces=True` (needs `accels`)
+    /// `forces.NAME`, and `ok` (bool, False where the pose failed)
     /// and `error` (object: None, or the message naming the failed group).
     /// A failed pose has NaN in every output of its row and only there; a
     /// solved pose never holds NaN. The GIL is released while it solves.
-    #[pyo3(signature = (*, rates=None, accels=None, **inputs))]
+    #[pyo3(signature = (*, rates=None, accels=None, forces=false, **inputs))]
     fn sweep<'py>(
         &self,
         py: Python<'py>,
         rates: Option<&Bound<'py, PyDict>>,
         accels: Option<&Bound<'py, PyDict>>,
+        forces: bool,
         inputs: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let depth = depth(rates.is_some(), accels.is_some())?;
+        let depth = depth(rates.is_some(), accels.is_some(), forces)?;
+        self.need_forces(forces)?;
         let mut given = self.ordered("values", inputs)?;
         let k = given.len();
         if let Some(r) = rates {

@@ -2,7 +2,7 @@
 //! holds the parser's tokens, which may not cross threads; so each thread
 //! that uses a `planar_mechanism.Mechanism` keeps its own copy, read from
 //! the same text, in a thread-local table, and the settings (parameters,
-//! modes) live here, behind a lock, with a version number: a copy that is
+//! modes, loads) live here, behind a lock, with a version number: a copy that is
 //! behind takes them all again before it is used.
 
 use mechanism_codegen::runtime;
@@ -21,6 +21,8 @@ struct Settings {
     params: BTreeMap<String, f64>,
     /// Modes set at run time, by name (`true`: `left`/`plus`).
     modes: BTreeMap<String, bool>,
+    /// Load values set at run time, by name.
+    loads: BTreeMap<String, f64>,
 }
 
 /// A thread's copy of a definition and the settings version it follows.
@@ -78,14 +80,20 @@ impl Shared {
             };
             let behind = {
                 let s = self.settings.lock().unwrap_or_else(PoisonError::into_inner);
-                (copy.version != s.version).then(|| (s.version, s.params.clone(), s.modes.clone()))
+                (copy.version != s.version).then(|| {
+                    let (p, m, l) = (s.params.clone(), s.modes.clone(), s.loads.clone());
+                    (s.version, p, m, l)
+                })
             };
-            if let Some((version, params, modes)) = behind {
+            if let Some((version, params, modes, loads)) = behind {
                 for (name, value) in &params {
                     copy.mechanism.set_param(name, *value)?;
                 }
                 for (name, left) in &modes {
                     copy.mechanism.set_mode(name, *left)?;
+                }
+                for (name, value) in &loads {
+                    copy.mechanism.set_load(name, *value)?;
                 }
                 copy.version = version;
             }
@@ -107,6 +115,15 @@ impl Shared {
         self.with(|m| m.set_mode(name, left))??;
         self.record(|s| {
             s.modes.insert(name.to_string(), left);
+        });
+        Ok(())
+    }
+
+    /// Sets load `name` (checked by this thread's copy first).
+    pub fn set_load(&self, name: &str, value: f64) -> Result<(), String> {
+        self.with(|m| m.set_load(name, value))??;
+        self.record(|s| {
+            s.loads.insert(name.to_string(), value);
         });
         Ok(())
     }

@@ -100,8 +100,9 @@ class Mechanism:
         counter-clockwise), slides ``"s"`` (``"L"``)."""
     def columns(self, analysis: str) -> Dict[str, str]:
         """Outputs ``{name: unit}`` of ``"position"``, ``"velocity"``
-        (``"L/s"``, ``"rad/s"``) or ``"acceleration"`` (``"L/s^2"``,
-        ``"rad/s^2"``). ``ValueError`` for another word."""
+        (``"L/s"``, ``"rad/s"``), ``"acceleration"`` (``"L/s^2"``,
+        ``"rad/s^2"``) or ``"forces"`` (forces ``F``, torques ``F L``, or
+        the definition's ``units``). ``ValueError`` for another word."""
     @property
     def params(self) -> Dict[str, float]:
         """Run-time parameters ``{name: value}`` (a copy)."""
@@ -115,6 +116,29 @@ class Mechanism:
     def set_mode(self, name: str, mode: str) -> None:
         """Sets a mode to ``"left"``/``"plus"`` or ``"right"``/``"minus"``.
         ``KeyError``: unknown name; ``ValueError``: another word."""
+    @property
+    def has_forces(self) -> bool:
+        """Whether the definition has a force analysis (masses, loads or
+        ``analysis forces;``)."""
+    @property
+    def loads(self) -> Dict[str, float]:
+        """The ``loads { .. }`` values ``{name: value}`` (a copy)."""
+    def set_load(self, name: str, value: float) -> None:
+        """Sets a load (finite). ``KeyError``: unknown name; ``ValueError``:
+        not finite."""
+    def forces(
+        self,
+        *,
+        rates: Mapping[str, float],
+        accels: Mapping[str, float],
+        **inputs: float,
+    ) -> Dict[str, float]:
+        """The force analysis at one pose with the current loads: the keys
+        of ``columns("forces")``: joint reactions ``r_FROM_TO.x``, ``.y``
+        (on TO from FROM), prismatic ``.force.x``, ``.force.y``,
+        ``.moment``, driving efforts by name, ``condition``,
+        ``power_residual``. Signs: docs/dynamics.md. ``ValueError``
+        without a force analysis."""
     def position(self, **inputs: float) -> Dict[str, float]:
         """The position at one pose, every input by name (``theta=0.5``):
         ``{name: value}`` with the keys of ``outputs``.
@@ -141,16 +165,18 @@ class Mechanism:
         *,
         rates: Optional[Mapping[str, float]] = None,
         accels: Optional[Mapping[str, float]] = None,
+        forces: bool = False,
         **inputs: float,
     ) -> Dict[str, float]:
         """Every analysis asked for at one pose, as one flat dict with the
         keys of ``sweep`` (without the inputs, ``ok``, ``error``). ``accels``
-        needs ``rates``."""
+        needs ``rates``; ``forces=True`` needs ``accels``."""
     def sweep(
         self,
         *,
         rates: Optional[Mapping[str, npt.ArrayLike]] = None,
         accels: Optional[Mapping[str, npt.ArrayLike]] = None,
+        forces: bool = False,
         **inputs: npt.ArrayLike,
     ) -> Dict[str, npt.NDArray[Any]]:
         """Solves every pose of a sweep in Rust (no Python call per pose).
@@ -165,6 +191,7 @@ class Mechanism:
         - with ``rates``: ``"velocity.NAME"`` for each velocity output and
           ``"velocity.condition"``;
         - with ``accels`` (needs ``rates``): ``"acceleration.NAME"``;
+        - with ``forces=True`` (needs ``accels``): ``"forces.NAME"``;
 
         and the per-pose status:
 
