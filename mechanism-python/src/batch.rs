@@ -1,0 +1,144 @@
+//! The evaluation behind `solve` and `sweep`, in plain Rust: one row of
+//! every asked analysis, and a sweep of rows into columns (one `Vec<f64>`
+//! per output), with a per-row error instead of numbers for a pose that
+//! fails. No Python object is touched here.
+
+use mechanism_codegen::runtime::{Analysis, Mechanism};
+use mechanism_core::Error;
+
+/// How deep a solve goes: position always, velocity and acceleration
+/// when asked (acceleration needs the velocity).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Depth {
+    /// Velocity analysis (needs input rates).
+    pub velocity: bool,
+    /// Acceleration analysis (needs input rates and accelerations).
+    pub acceleration: bool,
+    /// Force analysis (needs the acceleration; the definition's masses and
+    /// loads at their current values).
+    pub forces: bool,
+}
+
+/// The key of the velocity's condition number in a combined result.
+pub const CONDITION: &str = "velocity.condition";
+
+/// The keys of one row's values, in order: the position columns by their
+/// names in the generated structs (`B.x`, `link3`, `s`), then
+/// `velocity.NAME` for each velocity column and [`CONDITION`], then
+/// `acceleration.NAME`, then `forces.NAME` (the fields of the generated
+/// `Solution`).
+pub fn keys(m: &Mechanism, depth: Depth) -> Vec<(String, &'static str)> {
+    let mut keys: Vec<(String, &'static str)> = m
+        .columns(Analysis::Position)
+        .into_iter()
+        .map(|c| (c.name, c.unit))
+        .collect();
+    if depth.velocity {
+        let cols = m.columns(Analysis::Velocity).into_iter();
+        keys.extend(cols.map(|c| (format!("velocity.{}", c.name), c.unit)));
+        keys.push((CONDITION.to_string(), "1"));
+    }
+    if depth.acceleration {
+        let cols = m.columns(Analysis::Acceleration).into_iter();
+        keys.extend(cols.map(|c| (format!("acceleration.{}", c.name), c.unit)));
+    }
+    if depth.forces {
+        let cols = m.force_columns().into_iter();
+        keys.extend(cols.map(|c| (format!("forces.{}", c.name), c.unit)));
+    }
+    keys
+}
+
+/// Appends one row's values (in [`keys`] order) to `out` for inputs `q`,
+/// input rates `rates` and accelerations `accels` (each one value per
+/// input, in the order of `Mechanism::inputs`; unused by a shallower
+/// `depth`). On an error nothing is appended.
+pub fn row(
+    m: &Mechanism,
+    q: &[f64],
+    rates: &[f64],
+    accels: &[f64],
+    depth: Depth,
+    out: &mut Vec<f64>,
+) -> Result<(), Error<f64>> {
+    let pos = m.position(q)?;
+    if !depth.velocity {
+        out.extend(&pos.values);
+        return Ok(());
+    }
+    let vel = m.velocity(&pos, rates)?;
+    let acc = if depth.acceleration {
+        Some(m.acceleration(&pos, &vel, accels)?)
+    } else {
+        None
+    };
+    let forces = match (&acc, depth.forces) {
+        (Some(acc), true) => Some(m.forces(&pos, &vel, acc)?),
+        _ => None,
+    };
+    out.extend(&pos.values);
+    out.extend(&vel.values);
+    out.push(vel.condition);
+    if let Some(acc) = acc {
+        out.extend(&acc.values);
+    }
+    if let Some(f) = forces {
+        out.extend(&f.values);
+    }
+    Ok(())
+}
+
+/// A sweep's results: one column per key, one entry per row.
+pub struct Batch {
+    /// `columns[k][i]`: key `k` at row `i`; NaN where row `i` failed.
+    pub columns: Vec<Vec<f64>>,
+    /// `errors[i]`: why row `i` failed (the typed error's message, naming
+    /// its group), `None` where it was solved.
+    pub errors: Vec<Option<String>>,
+}
+
+/// The values of one input (or rate, or acceleration) at every row.
+pub type Column<'a> = &'a [f64];
+
+/// Every row `i < n` of a sweep: inputs `inputs[j][i]` (one column per
+/// input, in `Mechanism::inputs` order, each at least `n` long), rates and
+/// accelerations likewise (empty when `depth` does not need them).
+pub fn sweep(
+    m: &Mechanism,
+    inputs: &[Column<'_>],
+    rates: &[Column<'_>],
+    accels: &[Column<'_>],
+    depth: Depth,
+    n: usize,
+) -> Batch {
+    let width = keys(m, depth).len();
+    let mut columns = vec![Vec::with_capacity(n); width];
+    let mut errors = Vec::with_capacity(n);
+    let (mut q, mut r, mut a) = (Vec::new(), Vec::new(), Vec::new());
+    let mut values = Vec::with_capacity(width);
+    let at = |cols: &[Column<'_>], i: usize, into: &mut Vec<f64>| {
+        into.clear();
+        into.extend(cols.iter().map(|c| c[i]));
+    };
+    for i in 0..n {
+        at(inputs, i, &mut q);
+        at(rates, i, &mut r);
+        at(accels, i, &mut a);
+        values.clear();
+        match row(m, &q, &r, &a, depth, &mut values) {
+            Ok(()) => {
+                for (col, v) in columns.iter_mut().zip(&values) {
+                    col.push(*v);
+                }
+                errors.push(None);
+            }
+            Err(e) => {
+                for col in &mut columns {
+                    col.push(f64::NAN);
+                }
+                errors.push(Some(e.to_string()));
+            }
+        }
+    }
+    Batch { columns, errors }
+}
