@@ -229,56 +229,7 @@ impl<'a> GroupKind<'a> for Guide<'a> {
         lane_steps(lane, s, self.origin, self.angle, self.carrier)
     }
 
-    fn link_shapes(&self) -> Vec<super::LinkShape> {
-        Vec::new()
-    }
-
-    fn position_type(&self) -> TokenStream {
-        quote!(())
-    }
-
-    fn link_direction(&self, _index: usize) -> (TokenStream, TokenStream) {
-        (
-            quote!(::mechanism::Vector2::x()),
-            quote!(::mechanism::Vector2::x()),
-        )
-    }
-
-    fn slide_field(&self, _slot: usize) -> TokenStream {
-        quote!(s)
-    }
-
-    fn rate_system(&self) -> bool {
-        false
-    }
-
-    fn closure_axis(&self, _index: usize) -> TokenStream {
-        quote!([1.0, 0.0])
-    }
-
-    fn link_lengths(&self) -> Vec<&'a Value> {
-        Vec::new()
-    }
-
-    fn primitive(&self) -> &'static str {
-        "LinkPoint"
-    }
-
-    fn det_code(&self) -> TokenStream {
-        quote!(1.0)
-    }
-
-    fn link_kind(&self, _index: usize) -> &'static str {
-        "Bar"
-    }
-
-    fn input_is_angle(&self) -> bool {
-        false
-    }
-
-    fn bodies_and_pairs(&self) -> (i64, i64, i64) {
-        (0, 0, 0)
-    }
+    linkless_facets!('a);
 }
 
 /// A guide line through `origin` at `angle` (radians): fixed, a

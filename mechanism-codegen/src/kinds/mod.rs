@@ -10,6 +10,70 @@
 //! This stage reads `model` and `value` only; `validate`, `plan`, `check`
 //! and `emit` read it.
 
+/// The structure facets of a statement that creates no link and solves no
+/// group of its own (`ground`, `guide`, `point`): no link shapes, lengths or
+/// directions, no position type, no rate system, no determinant (1), no
+/// mobility (0 bodies, 0 pairs). Written once here; each such kind invokes
+/// it inside its `GroupKind` impl (with the impl's lifetime), so that the
+/// trait itself has no default for any of them.
+macro_rules! linkless_facets {
+    ($l:lifetime) => {
+        fn link_shapes(&self) -> Vec<super::LinkShape> {
+            Vec::new()
+        }
+
+        fn position_type(&self) -> ::proc_macro2::TokenStream {
+            ::quote::quote!(())
+        }
+
+        fn link_direction(
+            &self,
+            _index: usize,
+        ) -> (::proc_macro2::TokenStream, ::proc_macro2::TokenStream) {
+            (
+                ::quote::quote!(::mechanism::Vector2::x()),
+                ::quote::quote!(::mechanism::Vector2::x()),
+            )
+        }
+
+        fn slide_field(&self, _slot: usize) -> ::proc_macro2::TokenStream {
+            ::quote::quote!(s)
+        }
+
+        fn rate_system(&self) -> bool {
+            false
+        }
+
+        fn closure_axis(&self, _index: usize) -> ::proc_macro2::TokenStream {
+            ::quote::quote!([1.0, 0.0])
+        }
+
+        fn link_lengths(&self) -> Vec<&$l crate::value::Value> {
+            Vec::new()
+        }
+
+        fn primitive(&self) -> &'static str {
+            "LinkPoint"
+        }
+
+        fn det_code(&self) -> ::proc_macro2::TokenStream {
+            ::quote::quote!(1.0)
+        }
+
+        fn link_kind(&self, _index: usize) -> &'static str {
+            "Bar"
+        }
+
+        fn input_is_angle(&self) -> bool {
+            false
+        }
+
+        fn bodies_and_pairs(&self) -> (i64, i64, i64) {
+            (0, 0, 0)
+        }
+    };
+}
+
 mod actuator;
 pub mod closure;
 mod crank;
