@@ -74,6 +74,34 @@ macro_rules! linkless_facets {
     };
 }
 
+/// The point facets of a group whose point is a joint that always moves and
+/// whose links are bars, with no input of its own read as an angle (the
+/// dyads, the slider, the triad). Stated once here and invoked inside each
+/// such kind's `GroupKind` impl, so that the trait has no default for them.
+macro_rules! moving_joint_facets {
+    () => {
+        fn point_kind(&self) -> Option<&'static str> {
+            Some("Joint")
+        }
+
+        fn point_moves(
+            &self,
+            _link_turns: &dyn Fn(&::syn::Ident) -> bool,
+            _moves: &dyn Fn(&::syn::Ident) -> bool,
+        ) -> bool {
+            true
+        }
+
+        fn link_kind(&self, _index: usize) -> &'static str {
+            "Bar"
+        }
+
+        fn input_is_angle(&self) -> bool {
+            false
+        }
+    };
+}
+
 mod actuator;
 pub mod closure;
 mod crank;

@@ -203,25 +203,7 @@ impl<'a> GroupKind<'a> for Prp<'a> {
         Vec::new()
     }
 
-    fn point_kind(&self) -> Option<&'static str> {
-        Some("Joint")
-    }
-
-    fn point_moves(
-        &self,
-        _link_turns: &dyn Fn(&Ident) -> bool,
-        _moves: &dyn Fn(&Ident) -> bool,
-    ) -> bool {
-        true
-    }
-
-    fn link_kind(&self, _index: usize) -> &'static str {
-        "Bar"
-    }
-
-    fn input_is_angle(&self) -> bool {
-        false
-    }
+    moving_joint_facets!();
 }
 
 /// A PRP group: the joint of two blocks, on `g1` at `offset1` and on `g2`

@@ -231,25 +231,7 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
         Vec::new()
     }
 
-    fn point_kind(&self) -> Option<&'static str> {
-        Some("Joint")
-    }
-
-    fn point_moves(
-        &self,
-        _link_turns: &dyn Fn(&Ident) -> bool,
-        _moves: &dyn Fn(&Ident) -> bool,
-    ) -> bool {
-        true
-    }
-
-    fn link_kind(&self, _index: usize) -> &'static str {
-        "Bar"
-    }
-
-    fn input_is_angle(&self) -> bool {
-        false
-    }
+    moving_joint_facets!();
 }
 
 /// An RPP group: a block sliding on `guide` (at `offset`, length unit)

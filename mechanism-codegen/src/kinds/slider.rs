@@ -176,25 +176,7 @@ impl<'a> GroupKind<'a> for Slider<'a> {
         quote!(1.0)
     }
 
-    fn point_kind(&self) -> Option<&'static str> {
-        Some("Joint")
-    }
-
-    fn point_moves(
-        &self,
-        _link_turns: &dyn Fn(&Ident) -> bool,
-        _moves: &dyn Fn(&Ident) -> bool,
-    ) -> bool {
-        true
-    }
-
-    fn link_kind(&self, _index: usize) -> &'static str {
-        "Bar"
-    }
-
-    fn input_is_angle(&self) -> bool {
-        false
-    }
+    moving_joint_facets!();
 }
 
 /// A slider on `guide` at the input displacement `in_INPUT[k]` (length

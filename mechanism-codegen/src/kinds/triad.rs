@@ -550,25 +550,7 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         quote!(s)
     }
 
-    fn point_kind(&self) -> Option<&'static str> {
-        Some("Joint")
-    }
-
-    fn point_moves(
-        &self,
-        _link_turns: &dyn Fn(&Ident) -> bool,
-        _moves: &dyn Fn(&Ident) -> bool,
-    ) -> bool {
-        true
-    }
-
-    fn link_kind(&self, _index: usize) -> &'static str {
-        "Bar"
-    }
-
-    fn input_is_angle(&self) -> bool {
-        false
-    }
+    moving_joint_facets!();
 }
 
 /// The triad's reactions: the 12x12 system of `triad::reactions` from the
