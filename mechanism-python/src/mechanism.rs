@@ -275,11 +275,7 @@ impl Mechanism {
     /// `set_param`).
     #[getter]
     fn params<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let d = PyDict::new(py);
-        for (n, v) in self.rt(runtime::Mechanism::params)? {
-            d.set_item(n, v)?;
-        }
-        Ok(d)
+        number_dict(py, self.rt(runtime::Mechanism::params)?)
     }
 
     /// Sets the parameter `name` to `value` (finite; in the unit the
@@ -287,13 +283,9 @@ impl Mechanism {
     /// `ValueError` for a value that is not finite.
     fn set_param(&self, name: &str, value: f64) -> PyResult<()> {
         let known = self.rt(|m| m.params().iter().any(|(n, _)| n == name))?;
-        self.shared.set_param(name, value).map_err(|msg| {
-            if known {
-                PyValueError::new_err(msg)
-            } else {
-                PyKeyError::new_err(msg)
-            }
-        })
+        self.shared
+            .set_param(name, value)
+            .map_err(|msg| value_or_key_error(known, msg))
     }
 
     /// The run-time assembly modes `{name: "plus" | "minus"}` (`"plus"`
@@ -337,11 +329,7 @@ impl Mechanism {
     /// copy; change them with `set_load`).
     #[getter]
     fn loads<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let d = PyDict::new(py);
-        for (n, v) in self.rt(runtime::Mechanism::loads)? {
-            d.set_item(n, v)?;
-        }
-        Ok(d)
+        number_dict(py, self.rt(runtime::Mechanism::loads)?)
     }
 
     /// Sets the load `name` to `value` (finite; in the units the definition
@@ -349,13 +337,9 @@ impl Mechanism {
     /// that is not finite.
     fn set_load(&self, name: &str, value: f64) -> PyResult<()> {
         let known = self.rt(|m| m.loads().iter().any(|(n, _)| n == name))?;
-        self.shared.set_load(name, value).map_err(|msg| {
-            if known {
-                PyValueError::new_err(msg)
-            } else {
-                PyKeyError::new_err(msg)
-            }
-        })
+        self.shared
+            .set_load(name, value)
+            .map_err(|msg| value_or_key_error(known, msg))
     }
 
     /// The force analysis at the inputs given by name, for the input rates
@@ -633,4 +617,23 @@ fn clash(key: &str) -> PyErr {
         "the sweep's result would hold `{key}` twice (an input or output named like \
          another, or `ok`/`error`); rename it in the definition"
     ))
+}
+
+/// `{name: value}` of named numbers (parameters, loads) as a new dict.
+fn number_dict(py: Python<'_>, pairs: Vec<(String, f64)>) -> PyResult<Bound<'_, PyDict>> {
+    let d = PyDict::new(py);
+    for (n, v) in pairs {
+        d.set_item(n, v)?;
+    }
+    Ok(d)
+}
+
+/// A refused setting: `ValueError` when the name is `known` (the value was
+/// bad), `KeyError` when it is not.
+fn value_or_key_error(known: bool, msg: String) -> PyErr {
+    if known {
+        PyValueError::new_err(msg)
+    } else {
+        PyKeyError::new_err(msg)
+    }
 }
