@@ -67,6 +67,42 @@ fn rot(th: f64, s: f64) -> V {
 
 /// The link angles `(th2, th3, th4)` at crank angle `phi` (rad).
 impl FourBar {
+    /// The four-bar of the `run_up` example (SI units): ground 0.30, crank
+    /// 0.10, coupler 0.25, rocker 0.18, B on the left of A -> O4; the crank
+    /// (0.5 kg at 0.05 m, 4e-4 kg m^2) and its flywheel (2.0 kg at O2,
+    /// 0.02 kg m^2) merged: 2.5 kg at 0.01 m from O2, and
+    /// J = 4e-4 + 0.5 * 0.04^2 + 0.02 + 2.0 * 0.01^2 = 0.0214 kg m^2 about
+    /// the merged centre; coupler
+    /// 1.2 kg, 6.5e-3 kg m^2 at its midpoint; rocker 0.9 kg, 2.5e-3 kg m^2 at
+    /// its midpoint; gravity 9.81 m/s^2 along -y.
+    pub fn run_up() -> Self {
+        FourBar {
+            ground: 0.30,
+            crank: 0.10,
+            coupler: 0.25,
+            rocker: 0.18,
+            sign: 1.0,
+            bodies: [
+                Body {
+                    m: 2.5,
+                    j: 0.0214,
+                    g: 0.01,
+                },
+                Body {
+                    m: 1.2,
+                    j: 6.5e-3,
+                    g: 0.125,
+                },
+                Body {
+                    m: 0.9,
+                    j: 2.5e-3,
+                    g: 0.09,
+                },
+            ],
+            gravity: (0.0, -9.81),
+        }
+    }
+
     /// The angles of the crank, coupler and rocker at crank angle `phi`.
     pub fn angles(&self, phi: f64) -> (f64, f64, f64) {
         let a = rot(phi, self.crank);

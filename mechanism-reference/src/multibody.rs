@@ -768,32 +768,8 @@ mod tests {
     // about 1e-14).
     #[test]
     fn agrees_with_the_four_bar_module() {
-        use crate::four_bar_dynamics::{Body, FourBar};
-        let fb = FourBar {
-            ground: 0.30,
-            crank: 0.10,
-            coupler: 0.25,
-            rocker: 0.18,
-            sign: 1.0,
-            bodies: [
-                Body {
-                    m: 2.5,
-                    j: 0.0214,
-                    g: 0.01,
-                },
-                Body {
-                    m: 1.2,
-                    j: 6.5e-3,
-                    g: 0.125,
-                },
-                Body {
-                    m: 0.9,
-                    j: 2.5e-3,
-                    g: 0.09,
-                },
-            ],
-            gravity: (0.0, -9.81),
-        };
+        use crate::four_bar_dynamics::FourBar;
+        let fb = FourBar::run_up();
         let part = |mass, x, inertia| Part {
             mass,
             at: V2::new(x, 0.0),

@@ -6,38 +6,12 @@
 //! Richardson extrapolation). Nothing is shared with the generated code or
 //! `mechanism::ode` but the problem's data.
 use super::run_up_scene::*;
-use mechanism_reference::four_bar_dynamics::{Body, FourBar};
+use mechanism_reference::four_bar_dynamics::FourBar;
 
-/// The reference four-bar: the crank (0.5 kg at 0.05 m, 4e-4 kg m^2) and
-/// the flywheel (2.0 kg at O2, 0.02 kg m^2) merged: 2.5 kg at 0.01 m from
-/// O2, J = 4e-4 + 0.5 * 0.04^2 + 0.02 + 2.0 * 0.01^2 = 0.0214 kg m^2 about
-/// the merged centre. B on the left of A -> O4 (above the x axis at 0).
+/// The reference four-bar ([`FourBar::run_up`]: crank and flywheel merged
+/// into one body, B on the left of A -> O4, above the x axis at 0).
 fn reference() -> FourBar {
-    FourBar {
-        ground: 0.30,
-        crank: 0.10,
-        coupler: 0.25,
-        rocker: 0.18,
-        sign: 1.0,
-        bodies: [
-            Body {
-                m: 2.5,
-                j: 0.0214,
-                g: 0.01,
-            },
-            Body {
-                m: 1.2,
-                j: 6.5e-3,
-                g: 0.125,
-            },
-            Body {
-                m: 0.9,
-                j: 2.5e-3,
-                g: 0.09,
-            },
-        ],
-        gravity: (0.0, -9.81),
-    }
+    FourBar::run_up()
 }
 
 /// Steps per second of the reference's coarse run (the fine run has twice
