@@ -397,6 +397,20 @@ impl Problem for PathProblem {
     fn upper(&self) -> &[f64] {
         &self.hi
     }
+    /// The bounds, with `theta0` in `[0, 2 pi]` and the angle variables `v`
+    /// in `[0, 1]` (scale-free: every gap ratio is reachable there).
+    fn search_box(&self) -> (Vec<f64>, Vec<f64>) {
+        let (mut lo, mut hi) = (self.lo.clone(), self.hi.clone());
+        if self.frame.is_none() {
+            (lo[6], hi[6]) = (0.0, TAU);
+        }
+        if matches!(self.timing, Timing::Free) {
+            for j in self.angle_base()..lo.len() {
+                (lo[j], hi[j]) = (0.0, 1.0);
+            }
+        }
+        (lo, hi)
+    }
     fn residuals<T: Real>(&self, x: &[T], out: &mut [T]) -> bool {
         let n = self.targets.len();
         let mut th = [T::zero(); 64];

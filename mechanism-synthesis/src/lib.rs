@@ -8,10 +8,14 @@
 //! - [`lm`]: a bounded Levenberg-Marquardt on those residuals and that Jacobian.
 //! - [`multistart`]: the global strategy: quasi-random starts, each polished by
 //!   the bounded LM, the best kept.
+//! - [`de`]: plain differential evolution (DE/rand/1/bin), the literature's
+//!   family of global methods, as the baseline the report measures against.
 //! - [`fourbar`]: path generation by a four-bar (`fourbar::FourBarPath`, a
 //!   `mechanism!` definition evaluated in either assembly mode), with prescribed
 //!   or free timing, Grashof crank-rocker by construction; [`cases`]: the five
 //!   benchmark cases of the literature.
+//! - [`jansen`]: foot-path synthesis of Jansen's leg, a definition of three
+//!   dyads on a crank, through the same machinery.
 //!
 //! Why a crate of its own (std, nalgebra's dynamic matrices) and not a module
 //! of the facade: the facade and the core are `no_std`; synthesis needs
@@ -19,8 +23,10 @@
 //! desktop users run it.
 
 pub mod cases;
+pub mod de;
 pub mod fourbar;
 pub mod jacobian;
+pub mod jansen;
 pub mod lm;
 pub mod multistart;
 pub mod problem;
