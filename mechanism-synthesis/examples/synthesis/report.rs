@@ -66,7 +66,7 @@ pub fn load() -> String {
 /// 15 rounds of the time of 200 Jacobians over that of 200 objectives, at a
 /// start the problem's sampler draws (the residual code is the same at any
 /// design; only the branch taken differs).
-fn jacobian_ratio(p: &PathProblem) -> f64 {
+pub fn jacobian_ratio(p: &PathProblem) -> f64 {
     let mut rng = Rng::new(7);
     let mut x = vec![0.0; p.dim()];
     let mut buf = vec![0.0; p.residual_count()];
@@ -133,6 +133,16 @@ fn run_case(case: &Case, budget: (usize, usize, usize, usize), runs: u64) -> Cas
     }
 }
 
+/// An objective that counts as an exact fit: 1e-20 is a miss of 1e-10 per
+/// coordinate, while rounding leaves 1e-26 to 1e-29 on these cases (see the
+/// line6_free rows), so 1 % of such a best is noise.
+const EXACT: f64 = 1e-20;
+
+/// Whether objective `o` is within 1 % of `best`, or both are exact fits.
+fn close(o: f64, best: f64) -> bool {
+    o <= 1.01 * best || (best <= EXACT && o <= EXACT)
+}
+
 /// The literature's figure for a case, as issue 37 states it.
 fn literature(id: &str) -> &'static str {
     match id {
@@ -169,7 +179,8 @@ pub fn section(runs: u64) -> String {
          run's objective evaluations plus its Jacobians, each counted as the measured cost of a \
          Jacobian in objective evaluations (column `J/f`). Both methods run the two assembly \
          modes in two threads, half the budget each. \"Within 1 %\": the runs whose objective is \
-         at most 1.01 x the best either method found on the case. Evaluations and wall time: \
+         at most 1.01 x the best either method found on the case, or below 1e-20 where that \
+         best is (an exact fit: 1e-10 per coordinate; rounding leaves 1e-26 to 1e-29). Evaluations and wall time: \
          medians per run. Objective: the sum over the targets of the squared distance.\n",
         load()
     );
@@ -190,7 +201,7 @@ pub fn section(runs: u64) -> String {
             let within = m
                 .objective
                 .iter()
-                .filter(|&&o| o <= 1.01 * best)
+                .filter(|&&o| close(o, best))
                 .count();
             let lit = if name == "DE/rand/1/bin" {
                 ""
@@ -249,7 +260,7 @@ fn targets(md: &mut String, results: &[CaseRuns], extra: &crate::extra::Extra) {
                 .chain(&r.de.objective)
                 .copied()
                 .fold(f64::INFINITY, f64::min);
-            let k = r.ours.objective.iter().filter(|&&o| o <= 1.01 * best).count();
+            let k = r.ours.objective.iter().filter(|&&o| close(o, best)).count();
             all &= 4 * k >= 3 * r.ours.objective.len();
             format!("{} {k}/{}", r.id, r.ours.objective.len())
         })
