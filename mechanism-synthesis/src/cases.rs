@@ -9,9 +9,9 @@ use mechanism::Mode;
 
 use crate::de;
 use crate::fourbar::{Design, PathProblem, Timing};
-use crate::problem::Problem;
 use crate::lm::Options;
 use crate::multistart::{self, Settings};
+use crate::problem::Problem;
 
 /// A benchmark case.
 #[derive(Clone, Debug)]

@@ -107,7 +107,9 @@ pub fn run<P: Problem>(p: &P, s: &Settings) -> Best {
             }
         }
     }
-    let k = (0..np).min_by(|&a, &b| cost[a].total_cmp(&cost[b])).unwrap_or(0);
+    let k = (0..np)
+        .min_by(|&a, &b| cost[a].total_cmp(&cost[b]))
+        .unwrap_or(0);
     Best {
         x: pop.swap_remove(k),
         cost: cost[k],

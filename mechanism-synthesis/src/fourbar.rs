@@ -450,7 +450,10 @@ impl Problem for PathProblem {
     }
     fn residual_count(&self) -> usize {
         let n = self.targets.len();
-        2 * n + 1 + 2 * usize::from(self.transmission.is_some()) + 2 * self.orientations.as_ref().map_or(0, |_| n)
+        2 * n
+            + 1
+            + 2 * usize::from(self.transmission.is_some())
+            + 2 * self.orientations.as_ref().map_or(0, |_| n)
     }
     fn lower(&self) -> &[f64] {
         &self.lo
@@ -511,7 +514,11 @@ impl Problem for PathProblem {
             let [c0, cpi] = Self::transmission_cosines(&p);
             let w = T::lit(TRANSMISSION_WEIGHT);
             out[at] = if c0 > lim { w * (c0 - lim) } else { T::zero() };
-            out[at + 1] = if cpi < -lim { w * (-lim - cpi) } else { T::zero() };
+            out[at + 1] = if cpi < -lim {
+                w * (-lim - cpi)
+            } else {
+                T::zero()
+            };
         }
         true
     }

@@ -171,7 +171,11 @@ fn motion_generation_recovers_a_known_coupler_motion() {
     let m = sign_of(&d, &targets, path_only);
     for ((&th, t), &a) in ths.iter().zip(&targets).zip(&angles) {
         let q = pose(&d, th, m).expect("assembles");
-        assert!((q.p[0] - t[0]).hypot(q.p[1] - t[1]) < 1e-8, "{:?} vs {t:?}", q.p);
+        assert!(
+            (q.p[0] - t[0]).hypot(q.p[1] - t[1]) < 1e-8,
+            "{:?} vs {t:?}",
+            q.p
+        );
         assert!(wrap(angle(q.a, q.b) - a).abs() < 1e-8);
     }
 }
@@ -187,12 +191,21 @@ fn arc5_least_squares() -> (PathProblem, Vec<f64>, f64) {
     let f = cases::solve(&c, 20, 10, 30, 0, 1);
     let d = &f.design.0;
     let (r1, r3, r4) = (d[0], d[2], d[3]);
-    let m = r1.min(r3).min(r4).min(r3 + r4 - r1).min(r1 + r4 - r3).min(r1 + r3 - r4);
+    let m = r1
+        .min(r3)
+        .min(r4)
+        .min(r3 + r4 - r1)
+        .min(r1 + r4 - r3)
+        .min(r1 + r3 - r4);
     let x = vec![r1, d[1] / m, r3, r4, d[4], d[5]];
     let p = c.problem(f.mode);
     let mut buf = vec![0.0; p.residual_count()];
     let again = objective(&p, &x, &mut buf);
-    assert!((again - f.objective).abs() <= 1e-9 * f.objective, "{again} vs {}", f.objective);
+    assert!(
+        (again - f.objective).abs() <= 1e-9 * f.objective,
+        "{again} vs {}",
+        f.objective
+    );
     (p, x, f.objective)
 }
 
@@ -223,7 +236,10 @@ fn the_max_error_objective_lowers_the_largest_error() {
     let e_mm = mm.max_error(&out.x);
     let mut buf = vec![0.0; p.residual_count()];
     let ls_of_mm = objective(&p, &out.x, &mut buf);
-    assert!(e_mm < 0.95 * e_ls, "max error {e_mm} vs least squares' {e_ls}");
+    assert!(
+        e_mm < 0.95 * e_ls,
+        "max error {e_mm} vs least squares' {e_ls}"
+    );
     assert!(ls_of_mm > ls, "{ls_of_mm} vs {ls}");
     let d = p.design(&out.x).0;
     let closed = |m: f64| {
@@ -268,7 +284,10 @@ fn the_transmission_angle_bound_holds_over_the_turn() {
     let d = p.design(&x).0;
     let mu_ls = least_transmission(&d, 1.0).min(least_transmission(&d, -1.0));
     let bound = mu_ls + 10f64.to_radians();
-    assert!(bound < 60f64.to_radians(), "a bound a crank-rocker can meet: {bound}");
+    assert!(
+        bound < 60f64.to_radians(),
+        "a bound a crank-rocker can meet: {bound}"
+    );
     let c = cases::all()
         .into_iter()
         .find(|c| c.id == "arc5_timed")
@@ -279,7 +298,12 @@ fn the_transmission_angle_bound_holds_over_the_turn() {
     let path = objective(&c.problem(q.mode), &out.x, &mut buf);
     let m = sign_of(&dq, &q.targets, path);
     let mu = least_transmission(&dq, m);
-    assert!(mu >= bound - 2e-5, "{} deg vs {} deg", mu.to_degrees(), bound.to_degrees());
+    assert!(
+        mu >= bound - 2e-5,
+        "{} deg vs {} deg",
+        mu.to_degrees(),
+        bound.to_degrees()
+    );
     assert!(path >= ls, "{path} vs {ls}");
     assert!(out.cost.is_finite() && path < 1e-2, "{path}");
 }
