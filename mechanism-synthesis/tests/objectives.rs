@@ -213,7 +213,8 @@ fn arc5_least_squares() -> (PathProblem, Vec<f64>, f64) {
 fn the_max_error_objective_lowers_the_largest_error() {
     // From the least-squares optimum of arc5_timed, the bounded LM on the
     // p = 16 power of the point errors lowers the largest point error by
-    // more than 5 % (the least-squares errors are unequal) and, the sum of
+    // more than 10 % (5.74e-4 to 5.07e-4: the least-squares errors are
+    // unequal) and, the sum of
     // squares being minimal there, raises the sum of squares. The largest
     // error is measured by the closed form too (1e-9 relative).
     let (p, x, ls) = arc5_least_squares();
@@ -237,7 +238,7 @@ fn the_max_error_objective_lowers_the_largest_error() {
     let mut buf = vec![0.0; p.residual_count()];
     let ls_of_mm = objective(&p, &out.x, &mut buf);
     assert!(
-        e_mm < 0.95 * e_ls,
+        e_mm < 0.9 * e_ls,
         "max error {e_mm} vs least squares' {e_ls}"
     );
     assert!(ls_of_mm > ls, "{ls_of_mm} vs {ls}");
@@ -277,9 +278,12 @@ fn the_transmission_angle_bound_holds_over_the_turn() {
     // The least-squares optimum of arc5_timed has a least transmission
     // angle mu_ls; asking for 10 deg more binds. The constrained synthesis
     // keeps the whole turn at or above the bound, to the penalty's slack:
-    // 1e-5 in the cosine is 2e-5 rad at these angles, and the sampling of
-    // the turn (0.1 deg) only raises the sampled minimum; its objective is
-    // no better than the unconstrained one's.
+    // where the bound holds the path's pull on the cosine (its objective
+    // is 1e-4 here, its slope in the cosine at most about 1e-3) against
+    // the penalty's 2 W^2 = 2e6 leaves under 1e-9 in the cosine, 2e-9 rad
+    // (9e-11 rad measured); 1e-6 rad leaves room. The sampling of the turn
+    // (0.1 deg) only raises the sampled minimum. Its objective is no better
+    // than the unconstrained one's.
     let (p, x, ls) = arc5_least_squares();
     let d = p.design(&x).0;
     let mu_ls = least_transmission(&d, 1.0).min(least_transmission(&d, -1.0));
@@ -299,7 +303,7 @@ fn the_transmission_angle_bound_holds_over_the_turn() {
     let m = sign_of(&dq, &q.targets, path);
     let mu = least_transmission(&dq, m);
     assert!(
-        mu >= bound - 2e-5,
+        mu >= bound - 1e-6,
         "{} deg vs {} deg",
         mu.to_degrees(),
         bound.to_degrees()
