@@ -10,6 +10,12 @@
 //! per line: `{"case", "objective", "design": [r1, r2, r3, r4, rcx, rcy,
 //! theta0, x0, y0, th2_1 ..]}`, 17 significant digits). `--seed N` changes the
 //! seed (default 1); the run is deterministic for a seed.
+//!
+//! `-- --report [--runs N]` prints the `## Synthesis` section of
+//! `docs/report.md` (markdown; progress on stderr): N seeded runs per case
+//! (default 20) beside plain differential evolution at the same budget, the
+//! local solver against its alternatives, and Jansen's leg (`report.rs`,
+//! `extra.rs`); about 20 minutes on two free cores.
 #[macro_use]
 #[path = "../../../examples/common/cli.rs"]
 mod cli;
