@@ -111,6 +111,7 @@ mod ground;
 mod guide;
 pub mod lane;
 mod lane_shapes;
+pub mod motors;
 mod point;
 pub mod pose;
 mod prp;
@@ -121,7 +122,7 @@ mod rrp;
 mod rrr;
 pub mod run;
 mod slider;
-pub mod target;
+mod target;
 pub(crate) mod tokens;
 pub mod triad;
 pub mod word;
@@ -388,6 +389,18 @@ pub trait GroupKind<'a>: run::RunKind {
 
     /// Its own rules on its arguments as written (`validate::model`).
     fn check(&self, _errors: &mut Diagnostics) {}
+
+    /// For a dependency cycle `cycle` that starts at this statement: what
+    /// the cycle is and what to write instead, when the kind knows (three
+    /// RRR pinned outside the cycle: a triad); `None` otherwise.
+    fn cycle_hint(&self, _cycle: &[&Stmt]) -> Option<String> {
+        None
+    }
+
+    /// Its own rules on the inputs it names beside its driven one, against
+    /// the definition's `inputs` (`validate::model`): a triad's pose is
+    /// given at a value of one of them.
+    fn check_inputs(&self, _inputs: &[crate::model::Input], _errors: &mut Diagnostics) {}
 
     /// Its own rules that need the plan (`validate::planned`): where its
     /// points lie.

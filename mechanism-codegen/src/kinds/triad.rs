@@ -464,6 +464,29 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         })
     }
 
+    /// The rule that the approximate pose is given at a value of one of
+    /// the definition's inputs (`INPUT = value` names a driver's input).
+    fn check_inputs(&self, inputs: &[crate::model::Input], errors: &mut Diagnostics) {
+        let at = &self.t.at.0;
+        let inputs: Vec<String> = inputs.iter().map(|i| i.name.to_string()).collect();
+        let name = at.to_string();
+        if inputs.contains(&name) {
+            return;
+        }
+        errors.push(
+            at.span(),
+            format!(
+                "`{name}` is not an input: the triad's pose is given at a value of a driver's input ({}){}",
+                inputs
+                    .iter()
+                    .map(|i| format!("`{i}`"))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                crate::diag::did_you_mean(&name, inputs.iter().map(String::as_str))
+            ),
+        );
+    }
+
     fn singular_meaning(&self) -> Option<String> {
         Some("the triad is at a branch point (two of its assemblies meet)".into())
     }
@@ -603,7 +626,7 @@ fn forces(kind: &TriadKind<'_>, cx: &mut dyn ForceCx) {
 /// known point outside the cycle (a class III group written as three
 /// dyads): what it is and the `triad` statement to write instead, with the
 /// names and lengths the statements give. `None` for any other cycle.
-pub fn cycle_hint(cycle: &[&Stmt]) -> Option<String> {
+pub(super) fn cycle_hint(cycle: &[&Stmt]) -> Option<String> {
     let [j1, j2, j3] = cycle else {
         return None;
     };
@@ -634,33 +657,6 @@ pub fn cycle_hint(cycle: &[&Stmt]) -> Option<String> {
         known.join(", "),
         args.join(", ")
     ))
-}
-
-/// The rule that a triad's approximate pose is given at a value of one of
-/// the definition's inputs (`INPUT = value` names a driver's input).
-pub fn pose_input(model: &crate::model::Model, errors: &mut crate::diag::Diagnostics) {
-    let inputs: Vec<String> = model.inputs.iter().map(|i| i.name.to_string()).collect();
-    for stmt in &model.stmts {
-        let crate::model::Kind::Triad(t) = &stmt.kind else {
-            continue;
-        };
-        let name = t.at.0.to_string();
-        if inputs.contains(&name) {
-            continue;
-        }
-        errors.push(
-            t.at.0.span(),
-            format!(
-                "`{name}` is not an input: the triad's pose is given at a value of a driver's input ({}){}",
-                inputs
-                    .iter()
-                    .map(|i| format!("`{i}`"))
-                    .collect::<Vec<_>>()
-                    .join(", "),
-                crate::diag::did_you_mean(&name, inputs.iter().map(String::as_str))
-            ),
-        );
-    }
 }
 
 /// Why a triad's stated pose selects no assembly, in numbers.

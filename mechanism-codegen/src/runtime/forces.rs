@@ -433,10 +433,10 @@ impl Mechanism {
     /// `force::target::motor_torques` on the target's driving force.
     fn motors(&self, pos: &Position, cx: &mut ForceRunCx<'_>) -> Result<(), Error<f64>> {
         let model = &self.model;
-        let Some((target, x, y)) = kinds::target::held_target(model) else {
+        let Some((target, x, y)) = kinds::motors::held_target(model) else {
             return Ok(());
         };
-        if kinds::target::motor_reactions(model).is_empty() {
+        if kinds::motors::reactions(model).is_empty() {
             return Ok(());
         }
         let unit = |axis: &Ident| -> Vec<f64> {
