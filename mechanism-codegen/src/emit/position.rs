@@ -4,7 +4,7 @@
 
 use super::names::{debug_impl, grp, local, marker, output_docs, tag, Generated, TypeNames};
 use super::reads::{Analysis, Reads};
-use crate::kinds::{self, tokens::axis, Known, Solve};
+use crate::kinds::{self, lane::OutputShape, tokens::axis, Known, Solve};
 use crate::model::{Model, StmtId};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
@@ -40,7 +40,7 @@ pub(super) struct PositionCode {
     /// The output locals: link angles and slides.
     pub out_code: TokenStream,
     /// The struct's output fields (name, type): points, links, slides.
-    pub outputs: Vec<(Ident, TokenStream)>,
+    pub outputs: Vec<(Ident, OutputShape)>,
 }
 
 /// Emits the position code of every statement (and, for `velocity` and
@@ -91,15 +91,15 @@ impl<'a> Emitter<'a> {
             stored.extend(fields);
         }
         let out = &self.plan.outputs;
-        let mut outputs: Vec<(Ident, TokenStream)> = Vec::new();
+        let mut outputs: Vec<(Ident, OutputShape)> = Vec::new();
         for p in &out.points {
-            outputs.push((p.clone(), quote!(::mechanism::Point2<T>)));
+            outputs.push((p.clone(), OutputShape::Point));
         }
         for link in &out.links {
-            outputs.push((link.clone(), quote!(T)));
+            outputs.push((link.clone(), OutputShape::Scalar));
         }
         for slide in out.slides.iter().map(|s| &s.name) {
-            outputs.push((slide.clone(), quote!(T)));
+            outputs.push((slide.clone(), OutputShape::Scalar));
         }
         PositionCode {
             code,
@@ -244,8 +244,11 @@ pub(super) fn items(
         (&names.name, &model.vis, &names.position, &names.input);
     let layout = PositionStruct::new(code, reads);
     let (input_field, input_init) = layout.input(input_ty);
-    let (out_names, out_types): (Vec<Ident>, Vec<TokenStream>) =
-        code.outputs.iter().cloned().unzip();
+    let (out_names, out_types): (Vec<Ident>, Vec<TokenStream>) = code
+        .outputs
+        .iter()
+        .map(|(n, s)| (n.clone(), s.ty()))
+        .unzip();
     let hidden: Vec<&Ident> = layout.hidden.iter().map(|f| &f.field).collect();
     let hidden_locals: Vec<&Ident> = layout.hidden.iter().map(|f| &f.local).collect();
     let hidden_types: Vec<&TokenStream> = layout.hidden.iter().map(|f| &f.ty).collect();

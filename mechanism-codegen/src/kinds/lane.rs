@@ -255,7 +255,7 @@ impl Lane {
 
     /// The writes of the outputs into their slices, per level: `None` when
     /// an output is not known to the kernel.
-    pub(crate) fn writes(&self, outputs: &[(Ident, TokenStream)], levels: usize) -> Option<Writes> {
+    pub(crate) fn writes(&self, outputs: &[(Ident, OutputShape)], levels: usize) -> Option<Writes> {
         let mut w = Writes {
             slices: Vec::new(),
             code: TokenStream::new(),
@@ -263,8 +263,8 @@ impl Lane {
         let prefixes = ["pos", "vel", "acc"];
         let lanes = ["p", "v", "a"];
         for li in 0..levels {
-            for (o, ty) in outputs {
-                if ty.to_string().contains("Point2") {
+            for (o, shape) in outputs {
+                if *shape == OutputShape::Point {
                     if !self.points.contains(&o.to_string()) {
                         return None;
                     }
@@ -283,6 +283,26 @@ impl Lane {
             }
         }
         Some(w)
+    }
+}
+
+/// What an output of the position struct is (the velocity and
+/// acceleration structs' outputs have the same names and shapes).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OutputShape {
+    /// A point: two coordinates (`Point2<T>`, L).
+    Point,
+    /// A link angle (rad) or a slide displacement (L): one scalar `T`.
+    Scalar,
+}
+
+impl OutputShape {
+    /// The output's type in the generated structs.
+    pub fn ty(self) -> TokenStream {
+        match self {
+            OutputShape::Point => quote!(::mechanism::Point2<T>),
+            OutputShape::Scalar => quote!(T),
+        }
     }
 }
 
