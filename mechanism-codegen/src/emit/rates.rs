@@ -260,7 +260,7 @@ fn condition(model: &Model, plan: &Plan) -> TokenStream {
         .iter()
         .map(|&i| &model.stmts[i])
         .filter(|s| kinds::of(s).rate_system())
-        .map(|s| format_ident!("grp_v_{}", s.name))
+        .map(|s| Family::GrpVel.of(&s.name))
         .collect();
     match conditions.split_first() {
         None => {

@@ -10,6 +10,7 @@ use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
 use crate::model::{Origin, Stmt};
+use crate::names::Family;
 use crate::value::{lit, Value};
 use mechanism_core::guide::Line;
 use mechanism_core::{geometry, link, Point2};
@@ -247,7 +248,7 @@ fn lane_steps(
     carrier: Option<&Ident>,
 ) -> Option<()> {
     s.defines_no_point();
-    let line = format_ident!("ln_{}", s.name);
+    let line = Family::LaneLine.of(s.name);
     let origin = match origin {
         Origin::Point(p) => OriginMotion::point(lane.point(p)?),
         Origin::Coords(x, y) => OriginMotion::fixed(x, y),

@@ -14,6 +14,7 @@
 //! mode, `m_NAME`) are computed once before the loop.
 
 use crate::model::{Mode, Stmt};
+use crate::names::Family;
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -351,7 +352,7 @@ impl<'s> Step<'s> {
     pub(crate) fn sign(&mut self, mode: &Mode) -> TokenStream {
         match &self.stmt.mode_param {
             Some(param) => {
-                let local = format_ident!("m_{}", self.name);
+                let local = Family::LaneSign.of(self.name);
                 self.pre
                     .extend(quote!(let #local: T = ::mechanism::Mode::sign::<T>(self.#param);));
                 quote!(#local)
@@ -365,7 +366,7 @@ impl<'s> Step<'s> {
             stmt,
             name: &stmt.name,
             own: PointLocals::of(&stmt.name),
-            g: format_ident!("g_{}", stmt.name),
+            g: Family::LaneGroup.of(&stmt.name),
             pre: TokenStream::new(),
             body: TokenStream::new(),
             defines_point: true,
@@ -401,8 +402,8 @@ impl<'s> Step<'s> {
     pub fn rates(&self, k: usize) -> Option<Rates> {
         let l = self.stmt.links.get(k)?;
         Some(Rates {
-            omega: format_ident!("w_{}", l),
-            alpha: format_ident!("al_{}", l),
+            omega: Family::LaneOmega.of(l),
+            alpha: Family::LaneAlpha.of(l),
         })
     }
 
@@ -448,7 +449,7 @@ impl<'s> Step<'s> {
     /// literal, else the local `u_NAME` computed once before the loop with
     /// the scalar `geometry::unit`, as the scalar path does.
     pub fn unit(&mut self, angle: &Value) -> Vector {
-        unit(angle, format_ident!("u_{}", self.name), &mut self.pre)
+        unit(angle, Family::LaneUnit.of(self.name), &mut self.pre)
     }
 
     /// Appends code run once before the loop.

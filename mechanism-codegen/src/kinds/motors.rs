@@ -5,6 +5,7 @@
 
 use super::forces::{Held, Reaction};
 use crate::model::{Kind, Model, Stmt};
+use crate::names::Family;
 use quote::{format_ident, quote};
 use syn::Ident;
 
@@ -52,7 +53,7 @@ pub fn reactions(model: &Model) -> Vec<Reaction> {
         .map(|(k, m)| {
             let on = m.carrier.as_ref().map_or("the ground".to_string(), |c| format!("`{c}`"));
             Reaction {
-                name: format_ident!("drive_{}", m.name),
+                name: Family::Drive.of(&m.name),
                 ty: quote!(T),
                 value: quote!(#local.torque[#k]),
                 doc: format!("Torque of the motor `{}` on `{}` (reacting on {on}; force x length units, counter-clockwise positive) that holds `{}` on its path: the target's driving force mapped to the motors by virtual work, `tau = J^T D`.", m.name, m.link, target.name),

@@ -5,6 +5,7 @@
 
 use super::tokens::{grp, tag};
 use crate::model::Stmt;
+use crate::names::Family;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
@@ -123,7 +124,7 @@ impl Pieces {
 /// `(grp_NAME, grp_v_NAME)`: the position state and the velocity state a
 /// group's rate calls read.
 pub fn states(stmt: &Stmt) -> (Ident, Ident) {
-    (grp(stmt), format_ident!("grp_v_{}", stmt.name))
+    (grp(stmt), Family::GrpVel.of(&stmt.name))
 }
 
 /// The point motion and two link rates of a group shaped like the RRR (the

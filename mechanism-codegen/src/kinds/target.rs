@@ -122,7 +122,7 @@ impl<'a> GroupKind<'a> for Target<'a> {
         for (input, axis) in [(x, "x"), (y, "y")] {
             let a = format_ident!("{}", axis);
             cx.reaction(Reaction {
-                name: format_ident!("drive_{}", input),
+                name: Family::Drive.of(input),
                 ty: quote!(T),
                 value: quote!(#rx.drive.#a),
                 doc: format!("Driving force on `{link}` along +{axis} (input `{input}`; force units): the {axis} component of the force a positioner applies at `{name}` to hold it on its path."),
@@ -131,7 +131,7 @@ impl<'a> GroupKind<'a> for Target<'a> {
         }
         let ground = body_name(&None);
         cx.reaction(Reaction {
-            name: format_ident!("m_{}_{}", ground, link),
+            name: Family::Mount.pair(ground, link),
             ty: quote!(T),
             value: quote!(#rx.couple),
             doc: format!("Couple of the positioner on `{link}` (force x length units, counter-clockwise positive): zero unless loads act on `{link}` away from `{name}`."),
@@ -251,7 +251,7 @@ impl super::run::RunKind for Target<'_> {
         cx.drive(y, Held::Push, rx.drive.y);
         let ground = body_name(&None);
         cx.field(
-            format!("m_{ground}_{link}"),
+            Family::Mount.pair_text(ground, link),
             Held::Torque,
             super::run::ForceValue::Scalar(rx.couple),
         );

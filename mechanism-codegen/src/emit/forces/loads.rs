@@ -8,6 +8,7 @@ use super::ForceEmitter;
 use crate::emit::tag;
 use crate::kinds::{self, forces::ForceCx};
 use crate::model::{ForceSpec, ForceSpecValue, Kind, Local, MassSpec, Model, Stmt, TorqueSpec};
+use crate::names::Family;
 use crate::value::Value;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -44,7 +45,7 @@ impl ForceEmitter<'_> {
         let couple = match (&m.inertia, self.rates_of(&m.link)) {
             (Some(j), Some((w, alpha))) if j.fold() != Some(0.0) => {
                 let j = self.checked(j, &link, Quantity::Inertia);
-                let c = format_ident!("pw_inertia_couple_{}", link);
+                let c = Family::PwInertiaCouple.of(&link);
                 self.code.extend(quote!(let #c = -(#j * #alpha);));
                 self.power.push(quote!(#c * #w));
                 Some(quote!(#c))
@@ -95,7 +96,7 @@ impl ForceEmitter<'_> {
                 sum(&terms).expect("at least one part has a moment of inertia")
             }
         };
-        let c = format_ident!("pw_inertia_couple_{}", link);
+        let c = Family::PwInertiaCouple.of(&link);
         self.code.extend(quote!(let #c = -((#j) * #alpha);));
         self.power.push(quote!(#c * #w));
         self.add(link, quote!(::mechanism::force::Wrench::couple(#c)));
@@ -112,14 +113,14 @@ impl ForceEmitter<'_> {
         let mut out = PartForces::default();
         if v_g.is_some() {
             let (f, a) = (
-                format_ident!("pw_inertia_force_{}", part.suffix()),
-                format_ident!("acc_{}", m.at),
+                Family::PwInertiaForce.of(part.suffix()),
+                Family::Acc.of(&m.at),
             );
             self.code.extend(quote!(let #f = acc.#a * (-#mass);));
             out.terms.push(quote!(#f));
         }
         if gravity {
-            let w = format_ident!("pw_weight_{}", part.suffix());
+            let w = Family::PwWeight.of(part.suffix());
             self.code.extend(quote!(let #w = gravity * #mass;));
             out.terms.push(quote!(#w));
         }
@@ -148,7 +149,7 @@ impl ForceEmitter<'_> {
             Some(l) => l.to_string(),
             None => self.plan.links_with_point(&f.at.to_string())[0].clone(),
         };
-        let local = format_ident!("pw_force_{}", n);
+        let local = Family::PwForce.of(n);
         let value = match &f.value {
             ForceSpecValue::Components(x, y) => {
                 let (x, y) = (x.emit(), y.emit());
@@ -169,7 +170,7 @@ impl ForceEmitter<'_> {
 
     /// External couple number `n` and its power.
     fn torque(&mut self, n: usize, t: &TorqueSpec) {
-        let local = format_ident!("pw_torque_{}", n);
+        let local = Family::PwTorque.of(n);
         let value = t.value.emit();
         self.code.extend(quote!(let #local = #value;));
         if let Some((w, _)) = self.rates_of(&t.on) {
@@ -210,12 +211,12 @@ impl ForceEmitter<'_> {
         let t = tag(stmt);
         let (local, check, what) = match quantity {
             Quantity::Mass => (
-                format_ident!("pw_m_{}", part.suffix()),
+                Family::PwMass.of(part.suffix()),
                 quote!(positive),
                 format!("mass of `{link}`{}", part.text()),
             ),
             Quantity::Inertia => (
-                format_ident!("pw_j_{}", part.suffix()),
+                Family::PwInertia.of(part.suffix()),
                 quote!(non_negative),
                 format!("moment of inertia of `{link}`{}", part.text()),
             ),

@@ -295,9 +295,7 @@ fn condition_code(conditions: &[TokenStream]) -> TokenStream {
 
 /// The power-balance residual from the power terms (0 without any).
 fn power_code(power_terms: &[TokenStream]) -> TokenStream {
-    let terms: Vec<Ident> = (0..power_terms.len())
-        .map(|k| format_ident!("pw_{}", k))
-        .collect();
+    let terms: Vec<Ident> = (0..power_terms.len()).map(|k| Family::Pw.of(k)).collect();
     if terms.is_empty() {
         return lit(0.0);
     }
