@@ -45,6 +45,8 @@ pub enum Family {
     Accel,
     /// `grp_v_NAME`: a statement's solved velocity state.
     GrpVel,
+    /// `grp_a_NAME`: a statement's solved acceleration state.
+    GrpAcc,
     /// `rx_axis_NAME`: an actuator's axis in the force code.
     RxAxis,
     /// `pw_inertia_couple_LINK`: a link's inertia couple.
@@ -96,11 +98,20 @@ pub enum Family {
     LaneLinkPoint,
     /// `ln_NAME`: the batch kernel's guide line.
     LaneLine,
+    /// `p_NAME_x`, `p_NAME_y`: the batch kernel's point position.
+    LanePos,
+    /// `v_NAME_x`, `v_NAME_y`: the batch kernel's point velocity.
+    LaneVel,
+    /// `a_NAME_x`, `a_NAME_y`: the batch kernel's point acceleration.
+    LaneAcc,
+    /// `o_NAME_x`, `o_NAME_y`: the batch kernel's link point offset from
+    /// its reference point.
+    LaneOffset,
 }
 
 impl Family {
     /// Every family.
-    pub const ALL: [Family; 39] = [
+    pub const ALL: [Family; 44] = [
         Family::Pos,
         Family::Vel,
         Family::Acc,
@@ -117,6 +128,7 @@ impl Family {
         Family::Rate,
         Family::Accel,
         Family::GrpVel,
+        Family::GrpAcc,
         Family::RxAxis,
         Family::PwInertiaCouple,
         Family::PwInertiaForce,
@@ -140,6 +152,10 @@ impl Family {
         Family::LaneGuideAcc,
         Family::LaneLinkPoint,
         Family::LaneLine,
+        Family::LanePos,
+        Family::LaneVel,
+        Family::LaneAcc,
+        Family::LaneOffset,
     ];
 
     /// The batch's input columns by level (value, rate, acceleration).
@@ -164,6 +180,7 @@ impl Family {
             Family::Rate => "rate",
             Family::Accel => "accel",
             Family::GrpVel => "grp_v",
+            Family::GrpAcc => "grp_a",
             Family::RxAxis => "rx_axis",
             Family::PwInertiaCouple => "pw_inertia_couple",
             Family::PwInertiaForce => "pw_inertia_force",
@@ -187,6 +204,10 @@ impl Family {
             Family::LaneGuideAcc => "ga",
             Family::LaneLinkPoint => "lp",
             Family::LaneLine => "ln",
+            Family::LanePos => "p",
+            Family::LaneVel => "v",
+            Family::LaneAcc => "a",
+            Family::LaneOffset => "o",
         }
     }
 
@@ -231,6 +252,31 @@ impl Family {
     /// entry's indices), on `a`'s span when it is an identifier.
     pub fn pair(self, a: impl IdentFragment, b: impl IdentFragment) -> Ident {
         quote::format_ident!("{}_{}_{}", self.stem(), a, b)
+    }
+
+    /// `PREFIX_name_axis`: one coordinate (`axis` `x` or `y`) of a point's
+    /// name, on `name`'s span when it is an identifier.
+    pub fn coord(self, name: impl IdentFragment, axis: &str) -> Ident {
+        quote::format_ident!("{}_{}_{}", self.stem(), name, axis)
+    }
+
+    /// The family of a rate level's motions: `vel_` in velocity (`accel`
+    /// false), `acc_` in acceleration.
+    pub const fn motion(accel: bool) -> Family {
+        if accel {
+            Family::Acc
+        } else {
+            Family::Vel
+        }
+    }
+
+    /// The family of a rate level's link rates: `omega_` or `alpha_`.
+    pub const fn link_rate(accel: bool) -> Family {
+        if accel {
+            Family::Alpha
+        } else {
+            Family::Omega
+        }
     }
 
     /// `PREFIX_name` as text (the run-time evaluator's field names).

@@ -31,10 +31,10 @@ pub(crate) struct Pair {
 /// Per-statement names of the lane code: `PREFIX_NAME_x` and `PREFIX_NAME_y`
 /// (`p`, `v`, `a` for a point's position, velocity and acceleration, `o` for
 /// a link point's offset from its reference point).
-pub(crate) fn pv(prefix: &str, name: &Ident) -> Pair {
+pub(crate) fn pv(family: Family, name: &Ident) -> Pair {
     Pair {
-        x: format_ident!("{}_{}_x", prefix, name),
-        y: format_ident!("{}_{}_y", prefix, name),
+        x: family.coord(name, "x"),
+        y: family.coord(name, "y"),
     }
 }
 
@@ -55,7 +55,11 @@ pub(crate) struct PointLocals {
 impl PointLocals {
     /// The locals of the point `name` (`p_NAME_x` ... `a_NAME_y`).
     pub fn of(name: &Ident) -> PointLocals {
-        let (p, v, a) = (pv("p", name), pv("v", name), pv("a", name));
+        let (p, v, a) = (
+            pv(Family::LanePos, name),
+            pv(Family::LaneVel, name),
+            pv(Family::LaneAcc, name),
+        );
         PointLocals {
             px: p.x,
             py: p.y,
@@ -261,8 +265,8 @@ impl Lane {
             slices: Vec::new(),
             code: TokenStream::new(),
         };
-        let prefixes = ["pos", "vel", "acc"];
-        let lanes = ["p", "v", "a"];
+        let prefixes = [Family::Pos, Family::Vel, Family::Acc];
+        let lanes = [Family::LanePos, Family::LaneVel, Family::LaneAcc];
         for li in 0..levels {
             for (o, shape) in outputs {
                 if *shape == OutputShape::Point {
@@ -270,8 +274,8 @@ impl Lane {
                         return None;
                     }
                     let Pair { x, y } = pv(lanes[li], o);
-                    w.push(format_ident!("{}_{}_x", prefixes[li], o), quote!(#x));
-                    w.push(format_ident!("{}_{}_y", prefixes[li], o), quote!(#y));
+                    w.push(prefixes[li].coord(o, "x"), quote!(#x));
+                    w.push(prefixes[li].coord(o, "y"), quote!(#y));
                 } else {
                     let key = o.to_string();
                     let v = match (self.links.get(&key), self.slides.get(&key)) {
@@ -279,7 +283,7 @@ impl Lane {
                         (None, Some(Slide(s))) => s[li].clone(),
                         (None, None) => return None,
                     };
-                    w.push(format_ident!("{}_{}", prefixes[li], o), v);
+                    w.push(prefixes[li].of(o), v);
                 }
             }
         }

@@ -44,7 +44,7 @@ use quote::{format_ident, quote};
 use syn::Ident;
 
 /// The slice prefixes of the levels: `pos`, `vel`, `acc`.
-const PREFIXES: [&str; 3] = ["pos", "vel", "acc"];
+const PREFIXES: [Family; 3] = [Family::Pos, Family::Vel, Family::Acc];
 
 /// One output slice of the batch: its field (`pos_B_x`), the expression
 /// reading it from the scalar result of its level (`B.x` on `p`, `v` or
@@ -133,10 +133,10 @@ fn out_slices(outputs: &[(Ident, OutputShape)], levels: usize) -> Vec<OutSlice> 
                 })
             };
             if *shape == OutputShape::Point {
-                push(format_ident!("{}_{}_x", prefix, o), quote!(#o.x));
-                push(format_ident!("{}_{}_y", prefix, o), quote!(#o.y));
+                push(prefix.coord(o, "x"), quote!(#o.x));
+                push(prefix.coord(o, "y"), quote!(#o.y));
             } else {
-                push(format_ident!("{}_{}", prefix, o), quote!(#o));
+                push(prefix.of(o), quote!(#o));
             }
         }
     }
