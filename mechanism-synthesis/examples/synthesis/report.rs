@@ -271,18 +271,20 @@ fn targets(md: &mut String, results: &[CaseRuns], extra: &crate::extra::Extra) {
     let cpu1: f64 = results.iter().map(|r| r.ours.cpu[0]).sum();
     let _ = writeln!(
         md,
-        "- every case's best objective (multi-start LM, over the runs): {}",
+        "- every case's best objective (multi-start LM, over the runs; DE's beside it where \
+         lower): {}",
         results
             .iter()
-            .map(|r| format!(
-                "{} {:.6e}",
-                r.id,
-                r.ours
-                    .objective
-                    .iter()
-                    .copied()
-                    .fold(f64::INFINITY, f64::min)
-            ))
+            .map(|r| {
+                let min = |v: &[f64]| v.iter().copied().fold(f64::INFINITY, f64::min);
+                let (ours, de) = (min(&r.ours.objective), min(&r.de.objective));
+                let lower = if de < ours {
+                    format!(" (DE lower: {de:.6e})")
+                } else {
+                    String::new()
+                };
+                format!("{} {ours:.6e}{lower}", r.id)
+            })
             .collect::<Vec<_>>()
             .join(", ")
     );
