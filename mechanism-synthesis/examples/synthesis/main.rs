@@ -15,7 +15,7 @@
 //! `docs/report.md` (markdown; progress on stderr): N seeded runs per case
 //! (default 20) beside plain differential evolution at the same budget, the
 //! local solver against its alternatives, and Jansen's leg (`report.rs`,
-//! `extra.rs`); about 20 minutes on two free cores.
+//! `extra.rs`); 28.8 minutes on two cores shared at a load average of 5 to 8.
 #[macro_use]
 #[path = "../../../examples/common/cli.rs"]
 mod cli;
