@@ -20,6 +20,7 @@
 
 use super::{intern, Column, Mechanism, Position, Rates};
 use crate::emit::forces::ForceField;
+use crate::kinds::forces::Held;
 use crate::kinds::run::{ForceRunCx, GuideSlot, Layout, LinkSlot, PointSlot};
 use crate::model::{ForceSpecValue, Level, MassSpec};
 use crate::value::{Value, ValueKind};
@@ -442,6 +443,19 @@ impl Mechanism {
         acc: &Rates,
         out: &mut Forces,
     ) -> Result<(), Error<f64>> {
+        self.force_walk(pos, vel, acc, out, None)
+    }
+
+    /// The walk of [`Mechanism::forces_into`]; with `names`, each field's
+    /// name and kind as the walk writes it.
+    fn force_walk(
+        &self,
+        pos: &Position,
+        vel: &Rates,
+        acc: &Rates,
+        out: &mut Forces,
+        names: Option<&mut Vec<(String, Held)>>,
+    ) -> Result<(), Error<f64>> {
         if !self.has_forces() {
             return Err(Error::new(
                 Primitive::LinkPoint,
@@ -485,7 +499,7 @@ impl Mechanism {
             values: &mut out.values,
             power,
             conditions,
-            names: None,
+            names,
         };
         let c = &self.compiled;
         c.forces.known_loads(&mut cx)?;
@@ -683,7 +697,56 @@ impl Mechanism {
 }
 #[cfg(test)]
 mod tests {
-    use super::power_residual;
+    use super::{power_residual, Held, Mechanism};
+
+    /// A block slid along a ground line drives a rocker through a rod,
+    /// with masses, gravity and a couple: a push, a prismatic reaction,
+    /// revolute ones.
+    const PRESS: &str = "let O = ground(0.0, 0.0);
+        let O4 = ground(0.5, 0.4);
+        let line = guide(O, 0 deg);
+        let P = slider(line, s) as block;
+        let B = rrr(P, 0.5, O4, 0.3, left) as (rod, rocker);
+        let G = point(rod, from P, 0.25, 0 deg);
+        mass block { m = 2.0, at = P };
+        mass rod { m = 1.0, at = G, j = 0.02 };
+        mass rocker { m = 0.5, at = B, j = 0.01 };
+        gravity (0.0, -9.81);
+        torque on rocker = 3.0;
+        range s = (0.0, 0.6);";
+
+    // Proves the run-time force walk writes its fields under the names and
+    // with the kinds of the generated forces struct, in its order: the
+    // names the walk gives (`r_FROM_TO`, `drive_INPUT`) are the columns
+    // `force_columns` reads from the emitter, one value per column.
+    #[test]
+    fn the_walk_names_its_fields_as_the_generated_struct() {
+        let m = Mechanism::new(PRESS).unwrap();
+        let p = m.position(&[0.3]).unwrap();
+        assert!(m.has_forces());
+        let v = m.velocity(&p, &[2.0]).unwrap();
+        let a = m.acceleration(&p, &v, &[0.5]).unwrap();
+        let mut out = m.new_forces();
+        let mut names = Vec::new();
+        m.force_walk(&p, &v, &a, &mut out, Some(&mut names))
+            .unwrap();
+        let mut cols = Vec::new();
+        for (n, held) in &names {
+            match held {
+                Held::Force => cols.extend([format!("{n}.x"), format!("{n}.y")]),
+                Held::Prismatic => cols.extend([
+                    format!("{n}.force.x"),
+                    format!("{n}.force.y"),
+                    format!("{n}.moment"),
+                ]),
+                Held::Torque | Held::Push => cols.push(n.clone()),
+            }
+        }
+        cols.extend(["condition".into(), "power_residual".into()]);
+        let want: Vec<String> = m.force_columns().into_iter().map(|c| c.name).collect();
+        assert_eq!(cols, want);
+        assert_eq!(out.values.len(), want.len());
+    }
 
     // Proves the power residual's edge cases match the generated code's: no
     // term gives 0, all-zero terms 0, an overflowing sum 1, else |sum|/max.
