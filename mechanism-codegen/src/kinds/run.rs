@@ -11,6 +11,7 @@
 
 use super::forces::Held;
 use crate::model::{Model, Stmt};
+use crate::names::Family;
 use crate::plan::Plan;
 use crate::value::Value;
 use mechanism_core::force::{PrismaticReaction, Wrench};
@@ -886,7 +887,7 @@ impl ForceRunCx<'_> {
     /// `to` (`r_FROM_TO`).
     pub fn revolute(&mut self, from: Option<LinkSlot>, to: LinkSlot, force: Vector2<f64>) {
         self.name(
-            |l| format!("r_{}_{}", l.link_name(from), l.link_name(Some(to))),
+            |l| Family::Reaction.pair_text(l.link_name(from), l.link_name(Some(to))),
             Held::Force,
         );
         self.values.extend([force.x, force.y]);
@@ -895,7 +896,7 @@ impl ForceRunCx<'_> {
     /// A prismatic pair's reaction of `from` on `to`.
     pub fn prismatic(&mut self, from: Option<LinkSlot>, to: LinkSlot, rx: PrismaticReaction<f64>) {
         self.name(
-            |l| format!("r_{}_{}", l.link_name(from), l.link_name(Some(to))),
+            |l| Family::Reaction.pair_text(l.link_name(from), l.link_name(Some(to))),
             Held::Prismatic,
         );
         self.values.extend([rx.force.x, rx.force.y, rx.moment]);
@@ -913,7 +914,7 @@ impl ForceRunCx<'_> {
 
     /// A driving effort of `input` (`drive_INPUT`), named `name`.
     pub fn drive(&mut self, input: &'static str, held: Held, value: f64) {
-        self.scalar(|_| format!("drive_{input}"), held, value);
+        self.scalar(|_| Family::Drive.text(input), held, value);
     }
 
     /// A scalar field named by `name` (called only when compiling).

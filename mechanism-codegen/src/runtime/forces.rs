@@ -23,6 +23,7 @@ use crate::emit::forces::ForceField;
 use crate::kinds::forces::Held;
 use crate::kinds::run::{ForceRunCx, GuideSlot, Layout, LinkSlot, PointSlot};
 use crate::model::{ForceSpecValue, Level, MassSpec};
+use crate::names::Family;
 use crate::value::{Value, ValueKind};
 use mechanism_core::force::Wrench;
 use mechanism_core::{geometry, Error, Primitive, Vector2};
@@ -615,8 +616,8 @@ impl Mechanism {
     /// not one, or no motors).
     fn motor_plan(&self) -> Option<Motors> {
         let model = &self.model;
-        let (target, x, y) = crate::kinds::target::held_target(model)?;
-        if crate::kinds::target::motor_reactions(model).is_empty() {
+        let (target, x, y) = crate::kinds::motors::held_target(model)?;
+        if crate::kinds::motors::reactions(model).is_empty() {
             return None;
         }
         let unit = |axis: &Ident| -> Vec<f64> {
@@ -640,7 +641,7 @@ impl Mechanism {
             .collect();
         let cols = self.force_columns();
         let drive = |input: &Ident| {
-            let name = format!("drive_{input}");
+            let name = Family::Drive.text(input);
             cols.iter().position(|c| c.name == name)
         };
         Some(Motors {

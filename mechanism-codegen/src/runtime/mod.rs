@@ -32,7 +32,7 @@ use crate::kinds;
 use crate::kinds::run::{
     self, Compile, LinkSlot, Motion, PointSlot, RunCx, RunPose, Step, StepSlot,
 };
-use crate::model::{Mode, Model};
+use crate::model::{Mode, Model, StmtId};
 use crate::plan::Plan;
 pub use forces::Forces;
 use mechanism_core::{geometry, Error};
@@ -146,8 +146,10 @@ pub struct Mechanism {
     plan: Plan,
     slots: Arc<run::Layout>,
     params: BTreeMap<String, f64>,
-    /// The modes set at run time ([`Mechanism::set_mode`]).
-    current_modes: BTreeMap<String, Mode>,
+    /// What the check found (the triads' tracked assemblies) and the
+    /// modes set at run time ([`Mechanism::set_mode`]), which the position
+    /// reads in place of the defaults.
+    known: kinds::Known,
     /// The `loads { .. }` values ([`Mechanism::set_load`]).
     loads: BTreeMap<String, f64>,
     compiled: Compiled,
@@ -167,7 +169,7 @@ impl Mechanism {
         let definition =
             crate::parse::definition(tokens).map_err(|e| Errors::new(text, vec![e]))?;
         let mut diag = Diagnostics::new();
-        let mut model = crate::model::lower(definition, &mut diag);
+        let model = crate::model::lower(definition, &mut diag);
         crate::validate::model(&model, &mut diag);
         let plan = crate::plan::plan(&model, &mut diag);
         if let Some(plan) = &plan {
@@ -177,8 +179,8 @@ impl Mechanism {
             Some(plan) if diag.is_empty() => plan,
             _ => return Err(Errors::new(text, diag.finish())),
         };
-        crate::check::expansion_check(&model, &plan, &mut diag);
-        crate::check::modes::other_modes(&mut model, &plan, &mut diag);
+        let findings = crate::check::expansion_check(&model, &plan, &mut diag);
+        crate::check::modes::other_modes(&model, &plan, &mut diag);
         let errors = diag.finish();
         if !errors.is_empty() {
             return Err(Errors::new(text, errors));
@@ -200,7 +202,7 @@ impl Mechanism {
             plan,
             slots,
             params,
-            current_modes: BTreeMap::new(),
+            known: findings.known,
             loads,
             compiled: Compiled {
                 steps: Vec::new(),
@@ -221,11 +223,9 @@ impl Mechanism {
             layout: &self.slots,
             params: &self.params,
         };
-        let steps = self
-            .model
-            .stmts
-            .iter()
-            .map(|s| kinds::of(s).compile(&cx))
+        let stmts = &self.model.stmts;
+        let steps = StmtId::all(stmts)
+            .map(|i| kinds::of_known(stmts, i, &self.known).compile(&cx))
             .collect();
         let out = &self.plan.outputs;
         let mut pos_out = Vec::new();
@@ -340,7 +340,7 @@ impl Mechanism {
             .modes
             .iter()
             .map(|(n, default)| {
-                let current = self.current_modes.get(&n.to_string()).copied();
+                let current = self.known.modes.get(&n.to_string()).copied();
                 (n.to_string(), current.unwrap_or(*default) == Mode::Plus)
             })
             .collect()
@@ -356,14 +356,7 @@ impl Mechanism {
             ));
         }
         let mode = if left { Mode::Plus } else { Mode::Minus };
-        self.current_modes.insert(name.to_string(), mode);
-        for stmt in &mut self.model.stmts {
-            if stmt.mode_param.as_ref().is_some_and(|p| p == name) {
-                if let Some(m) = crate::model::modes::mode_mut(&mut stmt.kind) {
-                    *m = mode;
-                }
-            }
-        }
+        self.known.modes.insert(name.to_string(), mode);
         self.compile();
         Ok(())
     }
