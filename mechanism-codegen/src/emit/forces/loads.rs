@@ -96,7 +96,7 @@ impl ForceEmitter<'_> {
                 sum(&terms).expect("at least one part has a moment of inertia")
             }
         };
-        let c = Family::PwInertiaCouple.of(&link);
+        let c = Family::PwInertiaCouple.of(link);
         self.code.extend(quote!(let #c = -((#j) * #alpha);));
         self.power.push(quote!(#c * #w));
         self.add(link, quote!(::mechanism::force::Wrench::couple(#c)));
