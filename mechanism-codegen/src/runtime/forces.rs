@@ -505,7 +505,7 @@ impl Mechanism {
         let c = &self.compiled;
         c.forces.known_loads(&mut cx)?;
         for &i in c.solve.iter().rev() {
-            let step = &c.steps[i];
+            let step = &c.steps[i.0];
             step.forces(&mut cx).map_err(|e| e.in_group(step.group()))?;
         }
         self.motors(pos, &mut cx, unit)?;

@@ -110,9 +110,9 @@ enum PosOut {
     /// A point's coordinates.
     Point(PointSlot),
     /// The angle of link `index` of statement `stmt`.
-    Angle { stmt: usize, index: usize },
+    Angle { stmt: StmtId, index: usize },
     /// Slide `k` of statement `stmt`.
-    Slide { stmt: usize, k: usize },
+    Slide { stmt: StmtId, k: usize },
 }
 
 /// Where a rate output comes from.
@@ -133,7 +133,7 @@ enum RateOut {
 /// statements `position()` solves, in order, and where each output is.
 struct Compiled {
     steps: Vec<Box<dyn Step>>,
-    solve: Vec<usize>,
+    solve: Vec<StmtId>,
     pos_out: Vec<PosOut>,
     rate_out: Vec<RateOut>,
     /// The force analysis' loads and motors ([`forces::ForcePlan`]).
@@ -243,7 +243,7 @@ impl Mechanism {
             let name = link.to_string();
             if let Some(info) = self.plan.links.get(&name) {
                 pos_out.push(PosOut::Angle {
-                    stmt: info.stmt.0,
+                    stmt: info.stmt,
                     index: info.index,
                 });
             }
@@ -254,7 +254,7 @@ impl Mechanism {
         }
         for s in &out.slides {
             pos_out.push(PosOut::Slide {
-                stmt: s.stmt.0,
+                stmt: s.stmt,
                 k: s.slot,
             });
             let step = self
@@ -265,7 +265,7 @@ impl Mechanism {
         let forces = forces::ForcePlan::new(self);
         self.compiled = Compiled {
             steps,
-            solve: self.plan.solve.iter().map(|i| i.0).collect(),
+            solve: self.plan.solve.clone(),
             pos_out,
             rate_out,
             forces,
@@ -453,7 +453,7 @@ impl Mechanism {
         pos.pose.q[..q.len()].copy_from_slice(q);
         let c = &self.compiled;
         for &i in &c.solve {
-            let step = &c.steps[i];
+            let step = &c.steps[i.0];
             step.position(&mut pos.pose)
                 .map_err(|e| e.in_group(step.group()))?;
         }
@@ -466,14 +466,14 @@ impl Mechanism {
                     values.extend([pt.x, pt.y]);
                 }
                 PosOut::Angle { stmt, index } => {
-                    let step = &c.steps[stmt];
+                    let step = &c.steps[stmt.0];
                     let angle = step
                         .link_angle(&pos.pose)
                         .unwrap_or_else(|| geometry::angle(&step.link_dir(index, &pos.pose)));
                     values.push(angle);
                 }
                 PosOut::Slide { stmt, k } => {
-                    values.push(c.steps[stmt].slide(k, &pos.pose).unwrap_or(f64::NAN));
+                    values.push(c.steps[stmt.0].slide(k, &pos.pose).unwrap_or(f64::NAN));
                 }
             }
         }
@@ -567,7 +567,7 @@ impl Mechanism {
             layout: &self.slots,
         };
         for &i in &c.solve {
-            let step = &c.steps[i];
+            let step = &c.steps[i.0];
             step.rates(&mut cx).map_err(|e| e.in_group(step.group()))?;
         }
         let (values, motion) = (&mut out.values, &out.motion);
