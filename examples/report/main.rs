@@ -21,6 +21,8 @@ mod dynamics_dense;
 /// The forces section: generated force analysis against the Newton-Euler reference.
 mod forces;
 mod generated;
+/// The global Newton-Euler method, the timed baseline of the forces section.
+mod global_forces;
 /// The inverse-kinematics section: the five-bar given its end point.
 mod inverse;
 mod methods;
