@@ -80,7 +80,8 @@ fn solve3<T: Real>(m: [[T; 3]; 3], rhs: [T; 3]) -> Result<[T; 3], Error<T>> {
 /// The rotation rate of a leg `r` of length `l` whose ends move at `v_end`
 /// and `v_base`: `cross(r, v_end - v_base) / l^2`.
 fn leg_rate<T: Real>(r: &Vector2<T>, l: T, dv: &Vector2<T>) -> T {
-    cross(&(r / l), dv) / l
+    let inv = T::one() / l;
+    cross(&(r * inv), dv) * inv
 }
 
 /// Rates of the triad from the known points' velocities (L/s; `None`: fixed).
