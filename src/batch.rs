@@ -207,7 +207,8 @@ where
 fn pieces_for(m: usize, per_element: f64, min_len: usize, threads: usize) -> usize {
     let work = m as f64 * per_element;
     let most = (m / min_len.max(1)).clamp(1, threads);
-    let cost = |p: usize| work / p as f64 + PAR_TASK_NS * f64::from(usize::BITS - (p - 1).leading_zeros());
+    let cost =
+        |p: usize| work / p as f64 + PAR_TASK_NS * f64::from(usize::BITS - (p - 1).leading_zeros());
     (1..=most).fold(1, |best, p| if cost(p) < cost(best) { p } else { best })
 }
 

@@ -12,10 +12,10 @@
 //! once per grid point from the reference's motion and handed to both the
 //! generated code and the reference, so both solve the same problem.
 
+use crate::global_forces as gf;
 use crate::scenes::{
     ShaperForces, ShaperForcesInput, ShaperForcesLoads, SineMechanism, SineMechanismInput,
 };
-use crate::global_forces as gf;
 use crate::timing::{self, Sweep};
 use crate::{sci, MIN_SAMPLE_NS, ROUNDS};
 use mechanism::{mechanism, Real, Vector2};
@@ -532,7 +532,10 @@ fn global(name: &str, q: f64, w: f64, a: f64, load: f64, heap: bool) -> GenSampl
         ($pose:expr, $n:literal) => {{
             let ps = $pose?;
             let cols = if heap {
-                gf::columns(&ps.joints, &gf::solve_heap(&ps.links, &ps.joints, ps.driven)?)
+                gf::columns(
+                    &ps.joints,
+                    &gf::solve_heap(&ps.links, &ps.joints, ps.driven)?,
+                )
             } else {
                 gf::columns(
                     &ps.joints,
@@ -579,7 +582,12 @@ fn kinematics_sweep<'a>(name: &str, grid: &[f64], rate: f64, accel: f64) -> Swee
     match name {
         "SineMechanism" => run!(SineMechanism::<f64>::default(), SineMechanismInput, phi1, Q),
         "ShaperForces" => run!(ShaperForces::<f64>::default(), ShaperForcesInput, crank, E),
-        _ => run!(FourBarForces::<f64>::default(), FourBarForcesInput, theta2, G3),
+        _ => run!(
+            FourBarForces::<f64>::default(),
+            FourBarForcesInput,
+            theta2,
+            G3
+        ),
     }
 }
 
@@ -898,10 +906,22 @@ pub fn section(out_dir: &Path) -> String {
         );
         let none = ForceErrors::default();
         let rows = [
-            ("generated f64 `solve` (kinematics and forces)", &e64, &ns[0]),
-            ("generated f32 `solve` (kinematics and forces)", &e32, &ns[1]),
+            (
+                "generated f64 `solve` (kinematics and forces)",
+                &e64,
+                &ns[0],
+            ),
+            (
+                "generated f32 `solve` (kinematics and forces)",
+                &e32,
+                &ns[1],
+            ),
             ("generated f64 kinematics alone", &none, &ns[2]),
-            ("global Newton-Euler, nalgebra SMatrix LU f64", &e_fixed, &ns[3]),
+            (
+                "global Newton-Euler, nalgebra SMatrix LU f64",
+                &e_fixed,
+                &ns[3],
+            ),
             ("global Newton-Euler, heap DMatrix LU f64", &e_heap, &ns[4]),
         ];
         for (k, &(name, e, ns)) in rows.iter().enumerate() {

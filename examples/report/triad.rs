@@ -681,9 +681,7 @@ fn targets(ms: &[Method], errs: &[Vec<Vec<f64>>]) -> String {
     let worst = |e: &[Vec<f64>], ks: std::ops::Range<usize>| {
         ks.map(|k| max_med(&e[k]).0).fold(0.0f64, f64::max)
     };
-    let figures = |e: &[Vec<f64>]| {
-        [worst(e, 6..10), worst(e, 0..6), worst(e, 10..30)].map(sci)
-    };
+    let figures = |e: &[Vec<f64>]| [worst(e, 6..10), worst(e, 0..6), worst(e, 10..30)].map(sci);
     let ([a, p, r], [an, pn, rn]) = (figures(&errs[1]), figures(&errs[2]));
     format!(
         "\nTargets (issue 35, this run):\n\n\

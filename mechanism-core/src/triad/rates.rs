@@ -87,7 +87,15 @@ fn solve3<T: Real>(m: [[T; 3]; 3], rhs: [T; 3]) -> Result<[T; 3], Error<T>> {
         (2, 1)
     };
     let pivot = m[p][2];
-    let singular = |det: T| Error::new(PRIM, Fault::Singular { det, scale: T::one() });
+    let singular = |det: T| {
+        Error::new(
+            PRIM,
+            Fault::Singular {
+                det,
+                scale: T::one(),
+            },
+        )
+    };
     let input_finite = || m.iter().flatten().chain(rhs.iter()).all(|v| v.finite());
     let non_finite = || {
         Error::new(
