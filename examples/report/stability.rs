@@ -13,9 +13,9 @@
 use mechanism::dyad::{rpr, rrp, rrr};
 use mechanism::force::{self, group, inertia_and_gravity, Wrench};
 use mechanism::guide::Line;
-use mechanism::linsolve::solve_unpivoted_unscaled;
 use mechanism::{Mode, Point2, Vector2};
 use mechanism_reference::groups as refg;
+use mechanism_reference::naive::solve_unpivoted_unscaled;
 use mechanism_reference::Dd;
 use std::fmt::Write as _;
 use std::hint::black_box;

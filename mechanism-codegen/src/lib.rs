@@ -46,7 +46,7 @@ pub fn expand(input: TokenStream) -> TokenStream {
 /// `::mechanism`.
 fn expand_definition(definition: parse::Definition) -> TokenStream {
     let mut diag = diag::Diagnostics::new();
-    let mut model = model::lower(definition, &mut diag);
+    let model = model::lower(definition, &mut diag);
     validate::model(&model, &mut diag);
     let plan = plan::plan(&model, &mut diag);
     if let Some(plan) = &plan {
@@ -57,7 +57,7 @@ fn expand_definition(definition: parse::Definition) -> TokenStream {
         _ => return emit::stub::emit(&model, diag.finish()),
     };
     let findings = check::expansion_check(&model, &plan, &mut diag);
-    check::modes::other_modes(&mut model, &plan, &mut diag);
+    check::modes::other_modes(&model, &plan, &mut diag);
     if !diag.is_empty() {
         return emit::stub::emit(&model, diag.finish());
     }

@@ -192,7 +192,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
                     .collect();
                 let first = &model.stmts[cycle[0]];
                 let stmts: Vec<&Stmt> = cycle.iter().map(|&i| &model.stmts[i]).collect();
-                let fix = kinds::triad::cycle_hint(&stmts).unwrap_or_else(|| {
+                let fix = kinds::of(first).cycle_hint(&stmts).unwrap_or_else(|| {
                     "each statement may use only names that do not, in turn, need it: break the cycle by fixing one of them to the ground or to a driver".into()
                 });
                 errors.error(syn::Error::new(

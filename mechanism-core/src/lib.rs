@@ -16,7 +16,7 @@
 //! angles in radians from +x, counter-clockwise positive; rates per second.
 //! Every function returns `Result`; none panics; no `Ok` holds NaN or infinity.
 #![no_std]
-// `deny`, not `forbid`: `trig::hw` (the FPU's square root on ARM, inline
+// `deny`, not `forbid`: `trig::sqrt::hw` (the FPU's square root on ARM, inline
 // assembly) is the one module allowed `unsafe`.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
@@ -45,7 +45,8 @@ pub mod structure;
 pub mod sweep;
 pub mod triad;
 pub mod trig;
-pub mod trig64;
+#[doc(inline)]
+pub use trig::atan2_f64 as trig64;
 
 #[doc(hidden)]
 pub mod __private;

@@ -21,9 +21,8 @@
 //! entry is largest in magnitude, subtract multiples of it from the rows below,
 //! then back-substitute.
 //!
-//! [`solve_unpivoted_unscaled`] is the naive elimination without pivoting or
-//! scaling. It exists only so that tests and the report can show how it fails;
-//! do not use it.
+//! The naive elimination without pivoting or scaling, which the tests and
+//! the report show failing, is `mechanism_reference::naive`.
 
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::abs;
@@ -79,21 +78,6 @@ fn check_input<T: Real, const N: usize>(a: &[[T; N]; N], b: &[T; N]) -> Result<(
     }
 }
 
-/// `Ok(x)` unless some entry of `x` is not finite (overflow in elimination).
-#[inline]
-fn check_output<T: Real, const N: usize>(x: [T; N]) -> Result<[T; N], Error<T>> {
-    if x.iter().all(|v| v.finite()) {
-        Ok(x)
-    } else {
-        Err(Error::new(
-            P,
-            Fault::NonFinite {
-                what: "linear system solution",
-            },
-        ))
-    }
-}
-
 /// Largest absolute entry of a row (0 for an empty row).
 #[inline]
 fn row_max<T: Real>(row: &[T]) -> T {
@@ -108,16 +92,8 @@ fn row_max<T: Real>(row: &[T]) -> T {
 }
 
 /// Back substitution on an upper-triangular `u` (entries below the diagonal
-/// are ignored): `x_k = (y_k - sum_{j>k} u_kj x_j) / u_kk`.
-#[inline]
-fn back_substitute<T: Real, const N: usize>(u: &[[T; N]; N], y: &[T; N]) -> [T; N] {
-    let mut x = *y;
-    back_substitute_in_place(u, &mut x);
-    x
-}
-
-/// [`back_substitute`] overwriting `y` with `x` (the same operations in the
-/// same order: `x_k` needs only `y_k` and the `x_j`, `j > k`, already stored).
+/// are ignored): `x_k = (y_k - sum_{j>k} u_kj x_j) / u_kk`, overwriting `y`
+/// with `x` (`x_k` needs only `y_k` and the `x_j`, `j > k`, already stored).
 #[inline]
 fn back_substitute_in_place<T: Real, const N: usize>(u: &[[T; N]; N], y: &mut [T; N]) {
     // Index loops (every index is below `N` by its range): the iterator form
@@ -282,47 +258,6 @@ pub fn solve_in_place<T: Real, const N: usize>(
             },
         ))
     }
-}
-
-/// REFERENCE ONLY, DO NOT USE: naive Gaussian elimination with neither
-/// pivoting nor scaling (row `k` is always the pivot row at step `k`).
-///
-/// It is here so that tests and the report can show what [`solve`] guards
-/// against: a zero leading pivot stops it, and a pivot that is small relative
-/// to its row (typical of force/moment mixes and of poses near a singularity)
-/// produces multipliers that swamp the other rows, losing most digits without
-/// any warning.
-///
-/// Errors: `NonFinite` for non-finite input or output; `Singular` (with
-/// `det = 0`, `scale = 0`) only when a pivot is exactly zero.
-pub fn solve_unpivoted_unscaled<T: Real, const N: usize>(
-    mut a: [[T; N]; N],
-    mut b: [T; N],
-) -> Result<[T; N], Error<T>> {
-    check_input(&a, &b)?;
-    for k in 0..N {
-        let pivot = a[k][k];
-        if pivot == T::zero() {
-            return Err(Error::new(
-                P,
-                Fault::Singular {
-                    det: T::zero(),
-                    scale: T::zero(),
-                },
-            ));
-        }
-        let pivot_row = a[k];
-        let bk = b[k];
-        for (row, bi) in a.iter_mut().zip(b.iter_mut()).skip(k + 1) {
-            let m = row[k] / pivot;
-            for (v, &pv) in row.iter_mut().zip(pivot_row.iter()).skip(k + 1) {
-                *v -= m * pv;
-            }
-            *bi -= m * bk;
-            row[k] = T::zero();
-        }
-    }
-    check_output(back_substitute(&a, &b))
 }
 
 #[cfg(test)]

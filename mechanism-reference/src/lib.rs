@@ -16,6 +16,7 @@ pub mod groups;
 pub mod linear;
 pub mod loop_closure;
 pub mod multibody;
+pub mod naive;
 pub mod newton_euler;
 pub mod triad;
 

@@ -19,8 +19,9 @@ use crate::scenes::*;
 use mechanism::force::group::{assemble, Connection, Joint, Pair};
 use mechanism::force::Wrench;
 use mechanism::geometry::{cross, dot};
-use mechanism::linsolve::{solve, solve_unpivoted_unscaled};
+use mechanism::linsolve::solve;
 use mechanism::{mechanism, Point2, Vector2};
+use mechanism_reference::naive::solve_unpivoted_unscaled;
 use std::f64::consts::PI;
 
 const DOC_FR23: [f64; 36] = [

@@ -10,9 +10,10 @@
 
 use crate::common::EPS;
 use mechanism::force::{self, group, inertia_and_gravity, Wrench};
-use mechanism::linsolve::{solve, solve_unpivoted_unscaled};
+use mechanism::linsolve::solve;
 use mechanism::{Point2, Real, Vector2};
 use mechanism_reference::groups as refg;
+use mechanism_reference::naive::solve_unpivoted_unscaled;
 use mechanism_reference::Dd;
 
 type P = Point2<f64>;

@@ -2,7 +2,7 @@
 //! plan's solve order and calling the same `mechanism-core` primitives, with
 //! the same arguments, as the generated `position()`.
 
-use crate::kinds::{self, Pose};
+use crate::kinds::{self, Known, Pose, Tracking};
 use crate::model::{Model, StmtId};
 use crate::plan::Checked;
 use crate::value::Value;
@@ -29,12 +29,15 @@ pub struct Evaluator<'a> {
     group: BTreeMap<StmtId, usize>,
     /// Input index by name.
     input: BTreeMap<String, usize>,
+    /// The assumed modes, and the assemblies tracked so far.
+    pub known: Known,
 }
 
 impl<'a> Evaluator<'a> {
     /// The evaluator of the statements `checked` solves, with the inputs in
-    /// the order of the model's input struct.
-    pub fn new(model: &'a Model, checked: &'a Checked) -> Self {
+    /// the order of the model's input struct; `known.modes` are the run-time
+    /// modes assumed in place of their defaults.
+    pub fn new(model: &'a Model, checked: &'a Checked, known: Known) -> Self {
         Evaluator {
             model,
             order: &checked.order,
@@ -50,6 +53,7 @@ impl<'a> Evaluator<'a> {
                 .enumerate()
                 .map(|(k, i)| (i.name.to_string(), k))
                 .collect(),
+            known,
         }
     }
 
@@ -62,7 +66,7 @@ impl<'a> Evaluator<'a> {
                 return Some(pose);
             }
             let input = |n: &Ident| self.input_value(q, n);
-            kinds::of(&self.model.stmts[i])
+            kinds::of_known(&self.model.stmts, i, &self.known)
                 .eval(&mut pose, &input)
                 .ok()?;
         }
@@ -84,7 +88,6 @@ impl<'a> Evaluator<'a> {
         let mut pose = Pose::default();
         let mut dets = [1.0; MAX_GROUPS];
         for &i in self.order {
-            let stmt = &self.model.stmts[i];
             let g = self.group.get(&i).copied().unwrap_or(0);
             let input = |n: &Ident| {
                 self.input
@@ -93,7 +96,7 @@ impl<'a> Evaluator<'a> {
                     .copied()
                     .unwrap_or(f64::NAN)
             };
-            if let Some(det) = kinds::of(stmt)
+            if let Some(det) = kinds::of_known(&self.model.stmts, i, &self.known)
                 .eval(&mut pose, &input)
                 .map_err(|e| (g, e.fault))?
             {
@@ -106,11 +109,13 @@ impl<'a> Evaluator<'a> {
 
 /// Lets every statement that follows its assembly over the input range at
 /// expansion time do so (a triad: `GroupKind::track`), in solve order, with
-/// the pose of the statements before it. Only with one input and its range.
-/// `false` when one reported an error (the rest of the check is then moot).
+/// the pose of the statements before it (which reads the assemblies tracked
+/// before); what each finds goes to `ev.known`. Only with one input and its
+/// range. `false` when one reported an error (the rest of the check is then
+/// moot).
 pub fn track_assemblies(
     model: &Model,
-    ev: &Evaluator<'_>,
+    ev: &mut Evaluator<'_>,
     ranges: &[mechanism_core::sweep::Range],
     errors: &mut crate::diag::Diagnostics,
 ) -> bool {
@@ -121,7 +126,14 @@ pub fn track_assemblies(
     let mut ok = true;
     for &i in ev.order {
         let before = |q: f64| ev.pose_before(&[q], i);
-        ok &= kinds::of(&model.stmts[i]).track(&before, (range.lo, range.hi), angle, errors);
+        let found = kinds::of(&model.stmts[i]).track(&before, (range.lo, range.hi), angle, errors);
+        match found {
+            Tracking::Nothing => {}
+            Tracking::Tracked(tracked) => {
+                ev.known.tracked.insert(i, tracked);
+            }
+            Tracking::Failed => ok = false,
+        }
     }
     ok
 }

@@ -40,9 +40,15 @@ pub fn suggest(input: &Input, lo: f64, hi: f64) -> Option<String> {
 }
 
 /// What the failing group's fault means, in the user's words (as its kind
-/// says, or the fault's own text).
-pub fn explain(model: &Model, stmt_index: StmtId, fault: &Fault, at: &str) -> String {
-    kinds::of(&model.stmts[stmt_index])
+/// says, or the fault's own text), with what the check knows of it.
+pub fn explain(
+    model: &Model,
+    known: &kinds::Known,
+    stmt_index: StmtId,
+    fault: &Fault,
+    at: &str,
+) -> String {
+    kinds::of_known(&model.stmts, stmt_index, known)
         .explain_fault(fault, at)
         .unwrap_or_else(|| format!("at {at}: {fault}"))
 }

@@ -63,11 +63,19 @@ fn one_input(s: &Sweep<'_>, stmt_index: StmtId, list: &[&Found]) -> (Span, Strin
     let mid = 0.5 * (worst.lo[0] + worst.hi[0]);
     let mid_show = format!("{name} = {}", show_value(mid, input.angle));
     let why = match s.ev.solve(&[mid]) {
-        Err((_, fault)) => explain(model, stmt_index, &fault, &mid_show),
+        Err((_, fault)) => explain(model, &s.ev.known, stmt_index, &fault, &mid_show),
         // A failure at one input (a joint at infinity between two
         // samples) is explained where it was found.
-        Ok(_) if worst.hi[0] == worst.lo[0] => explain(model, stmt_index, &worst.fault, &mid_show),
-        Ok(_) => explain(model, stmt_index, &worst.fault, "the first failing sample"),
+        Ok(_) if worst.hi[0] == worst.lo[0] => {
+            explain(model, &s.ev.known, stmt_index, &worst.fault, &mid_show)
+        }
+        Ok(_) => explain(
+            model,
+            &s.ev.known,
+            stmt_index,
+            &worst.fault,
+            "the first failing sample",
+        ),
     };
     let best = widest_assembling(s, input);
     let mut span = stmt.name.span();
@@ -235,6 +243,6 @@ fn two_inputs(s: &Sweep<'_>, stmt_index: StmtId, list: &[&Found]) -> String {
         show_interval(ranges[1].lo, ranges[1].hi, inputs[1].angle),
         inputs[0].name, v(0, e.lo[0]), v(0, e.hi[0]), unit(0),
         inputs[1].name, v(1, e.lo[1]), v(1, e.hi[1]), unit(1),
-        explain(model, stmt_index, &e.fault, "the first failing grid point"),
+        explain(model, &s.ev.known, stmt_index, &e.fault, "the first failing grid point"),
     )
 }

@@ -32,12 +32,13 @@ mod singular;
 
 use crate::diag::{show_interval, Diagnostics};
 use crate::kinds;
-use crate::model::{Input, Model};
+use crate::model::{Input, Mode, Model};
 use crate::plan::{checked, Checked, Plan};
 use eval::{position_values, Evaluator, MAX_GROUPS};
 use mechanism_core::sweep::{self, Event, Range, Tolerances};
 use mechanism_core::Fault;
 use proc_macro2::TokenStream;
+use std::collections::BTreeMap;
 
 /// One sweep finding for a checked group: a failure to assemble over an
 /// interval (one input) or at grid points (two), or a singular position.
@@ -68,6 +69,9 @@ pub struct Findings {
     pub singular: Vec<(usize, Vec<f64>)>,
     /// `true` when the check ran at expansion time.
     pub ran: bool,
+    /// What the check found of each statement that its code reads (the
+    /// triads' tracked assemblies), passed forward to emit.
+    pub known: kinds::Known,
 }
 
 /// Everything the reports of one sweep read.
@@ -218,6 +222,17 @@ fn run(ev: &Evaluator<'_>, at_infinity: &[bool], ranges: &[Range]) -> Vec<Found>
 /// Runs the expansion-time check (see the module documentation): failures
 /// to assemble go to `errors`, singular positions become warnings.
 pub fn expansion_check(model: &Model, plan: &Plan, errors: &mut Diagnostics) -> Findings {
+    check_assuming(model, plan, BTreeMap::new(), errors)
+}
+
+/// The expansion-time check with the run-time mode parameters valued as in
+/// `modes` (by name; those absent at their defaults).
+fn check_assuming(
+    model: &Model,
+    plan: &Plan,
+    modes: BTreeMap<String, Mode>,
+    errors: &mut Diagnostics,
+) -> Findings {
     let mut findings = Findings::default();
     let checked = checked(model, plan);
     let ranges = match sweepable(model, &checked) {
@@ -228,10 +243,15 @@ pub fn expansion_check(model: &Model, plan: &Plan, errors: &mut Diagnostics) -> 
         }
     };
     findings.ran = true;
-    let ev = Evaluator::new(model, &checked);
-    if !eval::track_assemblies(model, &ev, &ranges, errors) {
+    let known = kinds::Known {
+        modes,
+        ..kinds::Known::default()
+    };
+    let mut ev = Evaluator::new(model, &checked, known);
+    if !eval::track_assemblies(model, &mut ev, &ranges, errors) {
         return findings;
     }
+    findings.known.tracked.clone_from(&ev.known.tracked);
     let events = run(&ev, &joints_at_infinity(model, &checked), &ranges);
     findings.summary = format!(
         "Checked at expansion time over {} ({}): every group assembles.",

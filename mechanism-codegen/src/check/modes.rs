@@ -5,20 +5,21 @@
 //! combination of their values, so a circuit that cannot be assembled over
 //! the input range is a compile error whichever value the program picks.
 
-use super::expansion_check;
+use super::check_assuming;
 use crate::diag::Diagnostics;
-use crate::model::modes::{flipped, mode_mut};
+use crate::model::modes::flipped;
 use crate::model::{Mode, Model};
 use crate::plan::Plan;
+use std::collections::BTreeMap;
 
 /// Most mode parameters whose combinations are all checked (2^6 - 1 more
 /// sweeps); beyond, each one is checked flipped alone.
 const MAX_COMBINED: usize = 6;
 
 /// Checks the combinations of the mode parameters' values other than the
-/// defaults; errors get the combination appended. The model's modes are
-/// back at their defaults on return.
-pub fn other_modes(model: &mut Model, plan: &Plan, errors: &mut Diagnostics) {
+/// defaults, each passed to the evaluator (the model keeps its defaults);
+/// errors get the combination appended.
+pub fn other_modes(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
     // The mode parameters some group reads, in the order declared.
     let used: Vec<(String, Mode)> = model
         .modes
@@ -40,11 +41,11 @@ pub fn other_modes(model: &mut Model, plan: &Plan, errors: &mut Diagnostics) {
                 d
             }
         };
-        set_modes(model, &|param: &str| {
-            used.iter().position(|(m, _)| m == param).map(value)
-        });
+        let modes: BTreeMap<String, Mode> = (0..used.len())
+            .map(|j| (used[j].0.clone(), value(j)))
+            .collect();
         let mut sub = Diagnostics::new();
-        expansion_check(model, plan, &mut sub);
+        check_assuming(model, plan, modes, &mut sub);
         let with: Vec<String> = (0..used.len())
             .map(|j| format!("`{} = {}`", used[j].0, word(value(j))))
             .collect();
@@ -53,21 +54,6 @@ pub fn other_modes(model: &mut Model, plan: &Plan, errors: &mut Diagnostics) {
                 e.span(),
                 format!("with the run-time mode {}: {e}", with.join(", ")),
             );
-        }
-    }
-    set_modes(model, &|param: &str| {
-        used.iter().find(|(m, _)| m == param).map(|(_, d)| *d)
-    });
-}
-
-/// Sets the mode of every group that reads a mode parameter to `value(param)`.
-fn set_modes(model: &mut Model, value: &dyn Fn(&str) -> Option<Mode>) {
-    for stmt in &mut model.stmts {
-        let Some(param) = &stmt.mode_param else {
-            continue;
-        };
-        if let (Some(v), Some(mode)) = (value(&param.to_string()), mode_mut(&mut stmt.kind)) {
-            *mode = v;
         }
     }
 }

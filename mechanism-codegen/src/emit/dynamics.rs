@@ -21,6 +21,7 @@
 use super::forces::masses_by_link;
 use super::names::TypeNames;
 use crate::model::{ForceSpecValue, MassSpec, Model};
+use crate::names::Family;
 use crate::plan::Plan;
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
@@ -49,8 +50,8 @@ impl Coefficient {
     /// The field of the velocity struct.
     fn field(&self) -> Ident {
         match self {
-            Coefficient::Point(p) => format_ident!("vel_{}", p),
-            Coefficient::Link(l) => format_ident!("omega_{}", l),
+            Coefficient::Point(p) => Family::Vel.named(p),
+            Coefficient::Link(l) => Family::Omega.named(l),
         }
     }
 }
@@ -101,10 +102,10 @@ impl Terms<'_> {
         let name = format_ident!("{}", crate::kinds::of(stmt).primitive());
         let t = crate::emit::tag(stmt);
         let (local, check, what) = if mass {
-            (format_ident!("dyn_m_{}", part), quote!(positive), "mass")
+            (Family::DynMass.of(part), quote!(positive), "mass")
         } else {
             (
-                format_ident!("dyn_j_{}", part),
+                Family::DynInertia.of(part),
                 quote!(non_negative),
                 "moment of inertia",
             )
@@ -207,7 +208,7 @@ fn sum(terms: Vec<TokenStream>) -> TokenStream {
 /// velocity coefficients `c_I_K` (coefficient `K` at a unit rate of input `I`).
 fn equations(cx: &Terms<'_>, coefficients: &[Coefficient], n: usize) -> TokenStream {
     let index = |c: &Coefficient| coefficients.iter().position(|x| x == c).unwrap_or(0);
-    let c = |i: usize, k: usize| format_ident!("c_{}_{}", i, k);
+    let c = |i: usize, k: usize| Family::Coef.pair(i, k);
     let gravity = cx.model.kinetics.gravity.is_some();
     let mut code = TokenStream::new();
     let mut mass_entries = Vec::new();
@@ -240,14 +241,14 @@ fn equations(cx: &Terms<'_>, coefficients: &[Coefficient], n: usize) -> TokenStr
             Term::Translation { mass, at } => {
                 let (ci, a) = (
                     c(i, index(&Coefficient::Point(at.clone()))),
-                    format_ident!("acc_{}", at),
+                    Family::Acc.of(at),
                 );
                 Some(quote!(#mass * ::mechanism::geometry::dot(&#ci, &acc.#a)))
             }
             Term::Rotation { inertia, link } => {
                 let (ci, a) = (
                     c(i, index(&Coefficient::Link(link.clone()))),
-                    format_ident!("alpha_{}", link),
+                    Family::Alpha.of(link),
                 );
                 Some(quote!(#inertia * (#ci * acc.#a)))
             }
@@ -343,7 +344,7 @@ pub fn emit(
     let n = inputs.len();
     let coefficients = cx.coefficients();
     // c_I_K: coefficient K at a unit rate of input I.
-    let c = |i: usize, k: usize| format_ident!("c_{}_{}", i, k);
+    let c = |i: usize, k: usize| Family::Coef.pair(i, k);
     let input_ty = &names.input;
     let unit = |i: usize| {
         let fields = inputs.iter().enumerate().map(|(k, name)| {

@@ -25,7 +25,7 @@ mod solution;
 pub mod stub;
 
 use crate::check::Findings;
-use crate::kinds;
+use crate::kinds::{self, Known};
 use crate::model::{Level, Model};
 use crate::plan::Plan;
 pub(crate) use names::{allow_literal_lints, tag};
@@ -51,7 +51,7 @@ pub fn mechanism(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream
     if let Some(tests) = &self_tests {
         readers.scan(tests);
     }
-    let mut out = items(model, plan, readers);
+    let mut out = items(model, plan, &findings.known, readers);
     let name = &model.name;
     let allow_lints = allow_literal_lints();
     let (check_items, check) = (check.items, check.method);
@@ -85,9 +85,9 @@ pub(crate) fn moving_points(model: &Model, plan: &Plan) -> BTreeSet<String> {
 /// generated code that reads position fields (the run-time `check()` and the
 /// `#[self_test]` tests); with the later analyses' own reads they decide
 /// which fields the position, velocity and acceleration structs keep
-/// ([`reads`]).
-fn items(model: &Model, plan: &Plan, readers: Reads) -> TokenStream {
-    let em = position::Emitter::new(model, plan, false);
+/// ([`reads`]). `known`: what the check found that the position code reads.
+fn items(model: &Model, plan: &Plan, known: &Known, readers: Reads) -> TokenStream {
+    let em = position::Emitter::new(model, plan, known, false);
     let moving = moving_points(model, plan);
     let inputs = names::input_names(model);
     let position = em.code();

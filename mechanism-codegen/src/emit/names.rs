@@ -2,6 +2,7 @@
 //! names, the locals of the position code, the error tag of a statement.
 
 use crate::model::Model;
+use crate::names::Family;
 use crate::plan::Outputs;
 use crate::value::lit;
 use proc_macro2::TokenStream;
@@ -81,11 +82,11 @@ pub(crate) use crate::kinds::tokens::{grp, local, tag};
 pub(super) fn opt_point(
     point: &Ident,
     moving: &BTreeSet<String>,
-    prefix: &str,
+    family: Family,
     scope: &TokenStream,
 ) -> TokenStream {
     if moving.contains(&point.to_string()) {
-        let v = format_ident!("{}_{}", prefix, point);
+        let v = family.of(point);
         quote!(::core::option::Option::Some(&#scope #v))
     } else {
         quote!(::core::option::Option::None)

@@ -4,8 +4,8 @@
 
 use super::names::{debug_impl, grp, local, marker, output_docs, tag, Generated, TypeNames};
 use super::reads::{Analysis, Reads};
-use crate::kinds::{self, tokens::axis, Solve};
-use crate::model::{Model, Stmt};
+use crate::kinds::{self, lane::OutputShape, tokens::axis, Known, Solve};
+use crate::model::{Model, StmtId};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -40,7 +40,7 @@ pub(super) struct PositionCode {
     /// The output locals: link angles and slides.
     pub out_code: TokenStream,
     /// The struct's output fields (name, type): points, links, slides.
-    pub outputs: Vec<(Ident, TokenStream)>,
+    pub outputs: Vec<(Ident, OutputShape)>,
 }
 
 /// Emits the position code of every statement (and, for `velocity` and
@@ -48,6 +48,9 @@ pub(super) struct PositionCode {
 pub(super) struct Emitter<'a> {
     pub model: &'a Model,
     pub plan: &'a Plan,
+    /// What the check found that the position code reads (the triads'
+    /// tracked assemblies).
+    pub known: &'a Known,
     /// Links whose unit axis is needed in position (points on them, carried guides).
     axes: BTreeSet<String>,
     /// Emitting `position_cos_sin`: cranks marked `as cos_sin` read
@@ -60,7 +63,7 @@ pub(super) struct Emitter<'a> {
 
 impl<'a> Emitter<'a> {
     /// The emitter of `position` (`cos_sin` false) or `position_cos_sin`.
-    pub fn new(model: &'a Model, plan: &'a Plan, cos_sin: bool) -> Self {
+    pub fn new(model: &'a Model, plan: &'a Plan, known: &'a Known, cos_sin: bool) -> Self {
         // Which link axes are needed in position.
         let mut axes = BTreeSet::new();
         for stmt in plan.solve.iter().map(|&i| &model.stmts[i]) {
@@ -71,6 +74,7 @@ impl<'a> Emitter<'a> {
         Emitter {
             model,
             plan,
+            known,
             axes,
             cos_sin,
             tracking: false,
@@ -82,20 +86,20 @@ impl<'a> Emitter<'a> {
         let mut code = TokenStream::new();
         let mut stored = Vec::new();
         for &i in &self.plan.solve {
-            let (c, fields) = self.position(&self.model.stmts[i]);
+            let (c, fields) = self.position(i);
             code.extend(c);
             stored.extend(fields);
         }
         let out = &self.plan.outputs;
-        let mut outputs: Vec<(Ident, TokenStream)> = Vec::new();
+        let mut outputs: Vec<(Ident, OutputShape)> = Vec::new();
         for p in &out.points {
-            outputs.push((p.clone(), quote!(::mechanism::Point2<T>)));
+            outputs.push((p.clone(), OutputShape::Point));
         }
         for link in &out.links {
-            outputs.push((link.clone(), quote!(T)));
+            outputs.push((link.clone(), OutputShape::Scalar));
         }
         for slide in out.slides.iter().map(|s| &s.name) {
-            outputs.push((slide.clone(), quote!(T)));
+            outputs.push((slide.clone(), OutputShape::Scalar));
         }
         PositionCode {
             code,
@@ -107,9 +111,10 @@ impl<'a> Emitter<'a> {
 
     /// Position statements for one statement; returns the code and the values
     /// the position struct may keep (those a later reader reads).
-    fn position(&self, stmt: &Stmt) -> (TokenStream, Vec<Stored>) {
+    fn position(&self, id: StmtId) -> (TokenStream, Vec<Stored>) {
+        let stmt = &self.model.stmts[id];
         let (name, g, t) = (&local(&stmt.name), grp(stmt), tag(stmt));
-        let kind = kinds::of(stmt);
+        let kind = kinds::of_known(&self.model.stmts, id, self.known);
         let solve = match self.tracking.then(|| kind.position_tracking()).flatten() {
             Some(solve) => solve,
             None => kind.position(self.cos_sin),
@@ -239,8 +244,11 @@ pub(super) fn items(
         (&names.name, &model.vis, &names.position, &names.input);
     let layout = PositionStruct::new(code, reads);
     let (input_field, input_init) = layout.input(input_ty);
-    let (out_names, out_types): (Vec<Ident>, Vec<TokenStream>) =
-        code.outputs.iter().cloned().unzip();
+    let (out_names, out_types): (Vec<Ident>, Vec<TokenStream>) = code
+        .outputs
+        .iter()
+        .map(|(n, s)| (n.clone(), s.ty()))
+        .unzip();
     let hidden: Vec<&Ident> = layout.hidden.iter().map(|f| &f.field).collect();
     let hidden_locals: Vec<&Ident> = layout.hidden.iter().map(|f| &f.local).collect();
     let hidden_types: Vec<&TokenStream> = layout.hidden.iter().map(|f| &f.ty).collect();
@@ -317,7 +325,7 @@ pub(super) fn tracking_code(em: &Emitter<'_>) -> Option<TokenStream> {
         .iter()
         .any(|&i| kinds::of(&model.stmts[i]).position_tracking().is_some())
         .then(|| {
-            let mut tr = Emitter::new(model, plan, false);
+            let mut tr = Emitter::new(model, plan, em.known, false);
             tr.tracking = true;
             tr.code().code
         })
@@ -347,10 +355,10 @@ fn cos_sin_items(
     if marked.is_empty() {
         return out;
     }
-    let em_cs = Emitter::new(model, plan, true);
+    let em_cs = Emitter::new(model, plan, em.known, true);
     let mut cs_code = TokenStream::new();
     for &i in &plan.solve {
-        cs_code.extend(em_cs.position(&model.stmts[i]).0);
+        cs_code.extend(em_cs.position(i).0);
     }
     let cs_out = em.outputs_code(true);
     let (name, vis, cs_ty, input_ty, position_ty) = (
@@ -421,8 +429,8 @@ mod tests {
     use std::str::FromStr;
 
     /// The statement named `name`.
-    fn stmt<'m>(model: &'m Model, name: &str) -> &'m Stmt {
-        model.stmts.iter().find(|s| s.name == name).unwrap()
+    fn stmt(model: &Model, name: &str) -> StmtId {
+        StmtId(model.stmts.iter().position(|s| s.name == name).unwrap())
     }
 
     // Proves a crank marked `as cos_sin` reads `input_cs.NAME.cos/.sin` only in
@@ -432,8 +440,16 @@ mod tests {
         let src = four_bar("").replace("theta2) as link2", "theta2 as cos_sin) as link2");
         let (model, plan) = planned(&src);
         let crank = stmt(&model, "A");
-        let plain = flat(&Emitter::new(&model, &plan, false).position(crank).0);
-        let cs = flat(&Emitter::new(&model, &plan, true).position(crank).0);
+        let plain = flat(
+            &Emitter::new(&model, &plan, &Known::default(), false)
+                .position(crank)
+                .0,
+        );
+        let cs = flat(
+            &Emitter::new(&model, &plan, &Known::default(), true)
+                .position(crank)
+                .0,
+        );
         assert!(
             plain.contains("crank::position(&pos_O2,self.crank,input.theta2)"),
             "{plain}"
@@ -452,7 +468,11 @@ mod tests {
     #[test]
     fn link_axes_only_where_a_point_or_guide_needs_them() {
         let (model, plan) = planned(&four_bar(""));
-        let code = flat(&Emitter::new(&model, &plan, false).code().code);
+        let code = flat(
+            &Emitter::new(&model, &plan, &Known::default(), false)
+                .code()
+                .code,
+        );
         assert!(
             code.contains("letaxis_link3=grp_B.r1/self.coupler;"),
             "{code}"
@@ -460,7 +480,11 @@ mod tests {
         assert!(!code.contains("axis_link4"), "{code}");
         let no_point = four_bar("").replace("let P = point(link3, from A, 120.0, 30 deg);", "");
         let (model, plan) = planned(&no_point);
-        let code = flat(&Emitter::new(&model, &plan, false).code().code);
+        let code = flat(
+            &Emitter::new(&model, &plan, &Known::default(), false)
+                .code()
+                .code,
+        );
         assert!(!code.contains("axis_"), "{code}");
     }
 
@@ -470,7 +494,8 @@ mod tests {
     #[test]
     fn the_struct_keeps_only_the_values_read() {
         let (model, plan) = planned(&four_bar("analysis position; outputs { B }"));
-        let em = Emitter::new(&model, &plan, false);
+        let known = Known::default();
+        let em = Emitter::new(&model, &plan, &known, false);
         let code = em.code();
         let inputs = crate::emit::names::input_names(&model);
         let none = flat(&items(&em, &code, &Reads::default(), &inputs).items);

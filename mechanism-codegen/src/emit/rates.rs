@@ -11,7 +11,7 @@ use crate::names::Family;
 use crate::plan::{Outputs, Plan};
 use crate::value::lit;
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use std::collections::BTreeSet;
 use syn::Ident;
 
@@ -51,10 +51,10 @@ struct RateEmitter<'a> {
     plan: &'a Plan,
     moving: &'a BTreeSet<String>,
     accel: bool,
-    /// `vel` or `acc`: prefix of point motions.
-    pfx: &'static str,
-    /// `omega` or `alpha`: prefix of link rates.
-    wpfx: &'static str,
+    /// `vel_` or `acc_`: the family of point motions.
+    pfx: Family,
+    /// `omega_` or `alpha_`: the family of link rates.
+    wpfx: Family,
     /// The statement being emitted (its slides' rates are keyed by it).
     current: StmtId,
     code: TokenStream,
@@ -103,7 +103,7 @@ impl RateCx for RateEmitter<'_> {
     fn link_rate(&self, link: &Ident) -> Option<Ident> {
         self.plan
             .turning_link(&link.to_string())
-            .map(|l| format_ident!("{}_{}", self.wpfx, l))
+            .map(|l| self.wpfx.of(l))
     }
 
     fn link_omega_in_accel(&self, link: &Ident) -> Option<TokenStream> {
@@ -139,7 +139,7 @@ impl RateEmitter<'_> {
         let mut outs = Vec::new();
         for p in &out.points {
             let value = if self.moving.contains(&p.to_string()) {
-                let v = format_ident!("{}_{}", self.pfx, p);
+                let v = self.pfx.of(p);
                 quote!(#v)
             } else {
                 quote!(::mechanism::Vector2::zeros())
@@ -191,8 +191,8 @@ pub(super) fn code(model: &Model, plan: &Plan, moving: &BTreeSet<String>, rate: 
         plan,
         moving,
         accel,
-        pfx: if accel { "acc" } else { "vel" },
-        wpfx: if accel { "alpha" } else { "omega" },
+        pfx: Family::motion(accel),
+        wpfx: Family::link_rate(accel),
         current: StmtId(0),
         code: TokenStream::new(),
         fields: Vec::new(),
@@ -260,7 +260,7 @@ fn condition(model: &Model, plan: &Plan) -> TokenStream {
         .iter()
         .map(|&i| &model.stmts[i])
         .filter(|s| kinds::of(s).rate_system())
-        .map(|s| format_ident!("grp_v_{}", s.name))
+        .map(|s| Family::GrpVel.of(&s.name))
         .collect();
     match conditions.split_first() {
         None => {

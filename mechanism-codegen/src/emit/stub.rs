@@ -102,7 +102,7 @@ pub fn emit(model: &Model, errors: Vec<syn::Error>) -> TokenStream {
             )
         };
         let mut reactions = FieldsOnly::of(model);
-        reactions.extend(kinds::target::motor_reactions(model));
+        reactions.extend(kinds::motors::reactions(model));
         super::forces::unique_names(&mut reactions);
         let fields = reactions.iter().map(|r| &r.name);
         let types = reactions.iter().map(|r| &r.ty);

@@ -17,10 +17,11 @@ use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn
 use crate::diag::show_num;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
+use crate::names::Family;
 use crate::value::Value;
 use mechanism_core::{driver, sweep, Fault};
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::Ident;
 
 /// How `actuator` is written: its word, usage, arity and links.
@@ -213,7 +214,7 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         );
         let body_a = cx.pass_revolute(a, &rx, "a");
         if let Some(body) = cx.body_of_point(b) {
-            let axis = format_ident!("rx_axis_{}", name);
+            let axis = Family::RxAxis.of(name);
             cx.code(quote!(let #axis = (pos.#name - pos.#b) / ::mechanism::geometry::length(&(pos.#name - pos.#b));));
             cx.force_on(&body, quote!(#axis * (-#rx.axial)), b);
         }

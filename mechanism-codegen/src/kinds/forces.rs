@@ -135,7 +135,7 @@ pub fn revolute(
     let from = body_name(from);
     let field = format_ident!("{}", field);
     Reaction {
-        name: format_ident!("r_{}_{}", from, to),
+        name: Family::Reaction.pair(&from, to),
         ty: quote!(::mechanism::Vector2<T>),
         value: quote!(#rx.#field),
         doc: format!("Force of `{from}` on `{to}` at `{at}` (force units, global frame)."),
@@ -155,7 +155,7 @@ pub fn prismatic(
     let from = body_name(from);
     let field = format_ident!("{}", field);
     Reaction {
-        name: format_ident!("r_{}_{}", from, to),
+        name: Family::Reaction.pair(&from, to),
         ty: quote!(::mechanism::force::PrismaticReaction<T>),
         value: quote!(#rx.#field),
         doc: format!(
@@ -170,7 +170,7 @@ pub fn prismatic(
 pub fn drive(rx: &Ident, input: &Ident, field: &str, held: Held, doc: String) -> Reaction {
     let field = format_ident!("{}", field);
     Reaction {
-        name: format_ident!("drive_{}", input),
+        name: Family::Drive.of(input),
         ty: quote!(T),
         value: quote!(#rx.#field),
         doc,

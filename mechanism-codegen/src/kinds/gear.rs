@@ -31,10 +31,11 @@ use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
 use crate::model::{Gear, Stmt};
+use crate::names::Family;
 use crate::value::Value;
 use mechanism_core::{driver, geometry};
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::Ident;
 
 /// How `gear` is written: its word, usage, arity and links.
@@ -345,7 +346,7 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
         cx.reaction(revolute(&rx, &body, link, pivot, "pivot"));
         let from = body_name(&g.mesh.as_ref().map(ToString::to_string));
         cx.reaction(Reaction {
-            name: format_ident!("r_{}_{}", from, link),
+            name: Family::Reaction.pair(&from, link),
             ty: quote!(::mechanism::Vector2<T>),
             value: quote!(#rx.tooth),
             doc: format!("Tooth force of `{from}`'s gear on `{link}` at the pitch point, along the line of action (force units, global frame)."),

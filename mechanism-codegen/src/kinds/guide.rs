@@ -10,11 +10,12 @@ use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
 use crate::model::{Origin, Stmt};
+use crate::names::Family;
 use crate::value::{lit, Value};
 use mechanism_core::guide::Line;
 use mechanism_core::{geometry, link, Point2};
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::Ident;
 
 /// How `guide` is written: its word, usage, arity and links.
@@ -115,11 +116,10 @@ impl<'a> GroupKind<'a> for Guide<'a> {
             return;
         };
         let accel = cx.accel();
-        let gpfx = if accel { "gacc" } else { "gvel" };
-        let n = format_ident!("{}_{}", gpfx, self.stmt.name);
+        let n = if accel { Family::Gacc } else { Family::Gvel }.of(&self.stmt.name);
         let origin_motion = match self.origin {
             Origin::Point(p) if cx.moves(p) => {
-                let v = format_ident!("{}_{}", cx.pfx(), p);
+                let v = cx.pfx().of(p);
                 quote!(#v)
             }
             _ => quote!(::mechanism::Vector2::zeros()),
@@ -247,7 +247,7 @@ fn lane_steps(
     carrier: Option<&Ident>,
 ) -> Option<()> {
     s.defines_no_point();
-    let line = format_ident!("ln_{}", s.name);
+    let line = Family::LaneLine.of(s.name);
     let origin = match origin {
         Origin::Point(p) => OriginMotion::point(lane.point(p)?),
         Origin::Coords(x, y) => OriginMotion::fixed(x, y),

@@ -14,6 +14,7 @@
 //! mode, `m_NAME`) are computed once before the loop.
 
 use crate::model::{Mode, Stmt};
+use crate::names::Family;
 use crate::value::{lit, Value};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -30,10 +31,10 @@ pub(crate) struct Pair {
 /// Per-statement names of the lane code: `PREFIX_NAME_x` and `PREFIX_NAME_y`
 /// (`p`, `v`, `a` for a point's position, velocity and acceleration, `o` for
 /// a link point's offset from its reference point).
-pub(crate) fn pv(prefix: &str, name: &Ident) -> Pair {
+pub(crate) fn pv(family: Family, name: &Ident) -> Pair {
     Pair {
-        x: format_ident!("{}_{}_x", prefix, name),
-        y: format_ident!("{}_{}_y", prefix, name),
+        x: family.coord(name, "x"),
+        y: family.coord(name, "y"),
     }
 }
 
@@ -54,7 +55,11 @@ pub(crate) struct PointLocals {
 impl PointLocals {
     /// The locals of the point `name` (`p_NAME_x` ... `a_NAME_y`).
     pub fn of(name: &Ident) -> PointLocals {
-        let (p, v, a) = (pv("p", name), pv("v", name), pv("a", name));
+        let (p, v, a) = (
+            pv(Family::LanePos, name),
+            pv(Family::LaneVel, name),
+            pv(Family::LaneAcc, name),
+        );
         PointLocals {
             px: p.x,
             py: p.y,
@@ -255,22 +260,22 @@ impl Lane {
 
     /// The writes of the outputs into their slices, per level: `None` when
     /// an output is not known to the kernel.
-    pub(crate) fn writes(&self, outputs: &[(Ident, TokenStream)], levels: usize) -> Option<Writes> {
+    pub(crate) fn writes(&self, outputs: &[(Ident, OutputShape)], levels: usize) -> Option<Writes> {
         let mut w = Writes {
             slices: Vec::new(),
             code: TokenStream::new(),
         };
-        let prefixes = ["pos", "vel", "acc"];
-        let lanes = ["p", "v", "a"];
+        let prefixes = [Family::Pos, Family::Vel, Family::Acc];
+        let lanes = [Family::LanePos, Family::LaneVel, Family::LaneAcc];
         for li in 0..levels {
-            for (o, ty) in outputs {
-                if ty.to_string().contains("Point2") {
+            for (o, shape) in outputs {
+                if *shape == OutputShape::Point {
                     if !self.points.contains(&o.to_string()) {
                         return None;
                     }
                     let Pair { x, y } = pv(lanes[li], o);
-                    w.push(format_ident!("{}_{}_x", prefixes[li], o), quote!(#x));
-                    w.push(format_ident!("{}_{}_y", prefixes[li], o), quote!(#y));
+                    w.push(prefixes[li].coord(o, "x"), quote!(#x));
+                    w.push(prefixes[li].coord(o, "y"), quote!(#y));
                 } else {
                     let key = o.to_string();
                     let v = match (self.links.get(&key), self.slides.get(&key)) {
@@ -278,11 +283,31 @@ impl Lane {
                         (None, Some(Slide(s))) => s[li].clone(),
                         (None, None) => return None,
                     };
-                    w.push(format_ident!("{}_{}", prefixes[li], o), v);
+                    w.push(prefixes[li].of(o), v);
                 }
             }
         }
         Some(w)
+    }
+}
+
+/// What an output of the position struct is (the velocity and
+/// acceleration structs' outputs have the same names and shapes).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OutputShape {
+    /// A point: two coordinates (`Point2<T>`, L).
+    Point,
+    /// A link angle (rad) or a slide displacement (L): one scalar `T`.
+    Scalar,
+}
+
+impl OutputShape {
+    /// The output's type in the generated structs.
+    pub fn ty(self) -> TokenStream {
+        match self {
+            OutputShape::Point => quote!(::mechanism::Point2<T>),
+            OutputShape::Scalar => quote!(T),
+        }
     }
 }
 
@@ -331,7 +356,7 @@ impl<'s> Step<'s> {
     pub(crate) fn sign(&mut self, mode: &Mode) -> TokenStream {
         match &self.stmt.mode_param {
             Some(param) => {
-                let local = format_ident!("m_{}", self.name);
+                let local = Family::LaneSign.of(self.name);
                 self.pre
                     .extend(quote!(let #local: T = ::mechanism::Mode::sign::<T>(self.#param);));
                 quote!(#local)
@@ -345,7 +370,7 @@ impl<'s> Step<'s> {
             stmt,
             name: &stmt.name,
             own: PointLocals::of(&stmt.name),
-            g: format_ident!("g_{}", stmt.name),
+            g: Family::LaneGroup.of(&stmt.name),
             pre: TokenStream::new(),
             body: TokenStream::new(),
             defines_point: true,
@@ -381,8 +406,8 @@ impl<'s> Step<'s> {
     pub fn rates(&self, k: usize) -> Option<Rates> {
         let l = self.stmt.links.get(k)?;
         Some(Rates {
-            omega: format_ident!("w_{}", l),
-            alpha: format_ident!("al_{}", l),
+            omega: Family::LaneOmega.of(l),
+            alpha: Family::LaneAlpha.of(l),
         })
     }
 
@@ -428,7 +453,7 @@ impl<'s> Step<'s> {
     /// literal, else the local `u_NAME` computed once before the loop with
     /// the scalar `geometry::unit`, as the scalar path does.
     pub fn unit(&mut self, angle: &Value) -> Vector {
-        unit(angle, format_ident!("u_{}", self.name), &mut self.pre)
+        unit(angle, Family::LaneUnit.of(self.name), &mut self.pre)
     }
 
     /// Appends code run once before the loop.

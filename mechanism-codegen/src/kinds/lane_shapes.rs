@@ -192,8 +192,8 @@ pub(crate) fn carried(
         });
     }
     let (gv, ga) = (
-        format_ident!("gv_{}", s.name),
-        format_ident!("ga_{}", s.name),
+        Family::LaneGuideVel.of(s.name),
+        Family::LaneGuideAcc.of(s.name),
     );
     let (omega, alpha) = (l.omega.clone(), l.alpha.clone());
     if lane.vel {
@@ -232,7 +232,7 @@ pub(crate) fn local_vector(s: &mut Step, local: &Local) -> Vector {
             _ => {
                 let Vector { x: ux, y: uy } = s.unit(a);
                 let d = d.emit();
-                let lp = format_ident!("lp_{}", s.name);
+                let lp = Family::LaneLinkPoint.of(s.name);
                 s.before_loop(quote!(let #lp = (#ux * #d, #uy * #d);));
                 (quote!(#lp.0), quote!(#lp.1))
             }

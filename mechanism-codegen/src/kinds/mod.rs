@@ -111,6 +111,7 @@ mod ground;
 mod guide;
 pub mod lane;
 mod lane_shapes;
+pub mod motors;
 mod point;
 pub mod pose;
 mod prp;
@@ -121,16 +122,17 @@ mod rrp;
 mod rrr;
 pub mod run;
 mod slider;
-pub mod target;
+mod target;
 pub(crate) mod tokens;
 pub mod triad;
 pub mod word;
 
 use crate::diag::Diagnostics;
-use crate::model::{Kind, Stmt};
+use crate::model::{Kind, Mode, Stmt, StmtId};
 use crate::value::Value;
 pub use pose::Pose;
 use proc_macro2::TokenStream;
+use std::collections::BTreeMap;
 use syn::Ident;
 
 /// How a link turns.
@@ -388,6 +390,18 @@ pub trait GroupKind<'a>: run::RunKind {
     /// Its own rules on its arguments as written (`validate::model`).
     fn check(&self, _errors: &mut Diagnostics) {}
 
+    /// For a dependency cycle `cycle` that starts at this statement: what
+    /// the cycle is and what to write instead, when the kind knows (three
+    /// RRR pinned outside the cycle: a triad); `None` otherwise.
+    fn cycle_hint(&self, _cycle: &[&Stmt]) -> Option<String> {
+        None
+    }
+
+    /// Its own rules on the inputs it names beside its driven one, against
+    /// the definition's `inputs` (`validate::model`): a triad's pose is
+    /// given at a value of one of them.
+    fn check_inputs(&self, _inputs: &[crate::model::Input], _errors: &mut Diagnostics) {}
+
     /// Its own rules that need the plan (`validate::planned`): where its
     /// points lie.
     fn check_placed(&self, _plan: &dyn Placed, _errors: &mut Diagnostics) {}
@@ -396,16 +410,16 @@ pub trait GroupKind<'a>: run::RunKind {
     /// triad): follows it over the single input's `range` (`(lo, hi)`, rad
     /// when `angle`, else length units), `before(q)` giving the pose of the
     /// statements solved before it at input `q`, and keeps what the emitted
-    /// code reads. `false` with an error reported when the stated assembly
-    /// cannot be followed. Others have nothing to follow.
+    /// code reads. [`Tracking::Failed`] with an error reported when the
+    /// stated assembly cannot be followed. Others have nothing to follow.
     fn track(
         &self,
         _before: &dyn Fn(f64) -> Option<Pose>,
         _range: (f64, f64),
         _angle: bool,
         _errors: &mut Diagnostics,
-    ) -> bool {
-        true
+    ) -> Tracking {
+        Tracking::Nothing
     }
 
     /// Its part of the force analysis (drivers and groups): its reactions
@@ -523,6 +537,45 @@ fn mode_text(stmt: &Stmt, m: crate::model::Mode) -> String {
     }
 }
 
+/// What following a statement's assembly over the input range found
+/// ([`GroupKind::track`]).
+pub enum Tracking {
+    /// The kind has one assembly per mode: nothing to follow.
+    Nothing,
+    /// The tracked poses (a finding of the check, `Known::tracked`).
+    Tracked(triad::Tracked),
+    /// The stated assembly cannot be followed (an error was reported).
+    Failed,
+}
+
+/// What the later stages know of the statements beside the model: the
+/// findings of the check that a statement's evaluation and code read, and
+/// the run-time modes assumed in place of their defaults. Passed forward
+/// (the check to the sweep, to emit and to the run-time evaluator), never
+/// written into the model.
+#[derive(Clone, Default)]
+pub struct Known {
+    /// Each triad's assembly tracked over the input's range, by statement.
+    pub tracked: BTreeMap<StmtId, triad::Tracked>,
+    /// The value of each run-time mode parameter (by name) in place of its
+    /// default, when checking the other modes (`check::modes`); empty: the
+    /// defaults.
+    pub modes: BTreeMap<String, Mode>,
+}
+
+/// The statement `id` of `stmts` as its kind, with what `known` says of it
+/// (its tracked assembly, its assumed mode): the view the evaluator and
+/// the position code read.
+pub fn of_known<'a>(stmts: &'a [Stmt], id: StmtId, known: &'a Known) -> View<'a> {
+    let stmt = &stmts[id];
+    let mode = stmt
+        .mode_param
+        .as_ref()
+        .and_then(|p| known.modes.get(&p.to_string()))
+        .copied();
+    view(stmt, mode, known.tracked.get(&id))
+}
+
 /// A statement seen as its kind: the kind's view of it, held by value (no
 /// allocation), used through [`GroupKind`] (`View` derefs to it).
 pub struct View<'a>(Repr<'a>);
@@ -573,6 +626,12 @@ impl<'a> std::ops::Deref for View<'a> {
 /// on the stack (a few references), so a walker may call it per statement
 /// and per sample.
 pub fn of(stmt: &Stmt) -> View<'_> {
+    view(stmt, None, None)
+}
+
+/// The view of `stmt` with the mode `given` in place of the written one
+/// (when it has one) and its tracked assembly.
+fn view<'a>(stmt: &'a Stmt, given: Option<Mode>, tracked: Option<&'a triad::Tracked>) -> View<'a> {
     View(match &stmt.kind {
         Kind::Ground { x, y } => Repr::Ground(ground::Ground { stmt, x, y }),
         Kind::Guide {
@@ -623,7 +682,7 @@ pub fn of(stmt: &Stmt) -> View<'_> {
             l,
             b,
             input,
-            mode: *mode,
+            mode: given.unwrap_or(*mode),
         }),
         Kind::Target { x, y } => Repr::Target(target::Target { stmt, x, y }),
         Kind::Rrr { a, l1, b, l2, mode } => Repr::Rrr(rrr::Rrr {
@@ -632,7 +691,7 @@ pub fn of(stmt: &Stmt) -> View<'_> {
             l1,
             b,
             l2,
-            mode: *mode,
+            mode: given.unwrap_or(*mode),
         }),
         Kind::Rrp {
             a,
@@ -645,14 +704,14 @@ pub fn of(stmt: &Stmt) -> View<'_> {
             a,
             l,
             guide,
-            mode: *mode,
+            mode: given.unwrap_or(*mode),
             offset,
         }),
         Kind::Rpr { a, b, mode, offset } => Repr::Rpr(rpr::Rpr {
             stmt,
             a,
             b,
-            mode: *mode,
+            mode: given.unwrap_or(*mode),
             offset,
         }),
         Kind::Prp {
@@ -685,7 +744,7 @@ pub fn of(stmt: &Stmt) -> View<'_> {
             from,
             local,
         }),
-        Kind::Triad(t) => Repr::Triad(triad::TriadKind { stmt, t }),
+        Kind::Triad(t) => Repr::Triad(triad::TriadKind { stmt, t, tracked }),
         Kind::Gear(g) => Repr::Gear(gear::GearKind { stmt, g }),
     })
 }

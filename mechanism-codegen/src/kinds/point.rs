@@ -10,10 +10,11 @@ use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
 use crate::kinds::pose::num;
 use crate::model::{Local, Stmt};
+use crate::names::Family;
 use crate::value::{lit, Value};
 use mechanism_core::{geometry, link, Vector2};
 use proc_macro2::TokenStream;
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::Ident;
 
 /// How `point` is written: its word, usage, arity and links.
@@ -87,7 +88,7 @@ impl<'a> GroupKind<'a> for Point<'a> {
         }
         let (pv, t) = (cx.motion(stmt), tag(stmt));
         let base = cx.moves(from).then(|| {
-            let b = format_ident!("{}_{}", cx.pfx(), from);
+            let b = cx.pfx().of(from);
             quote!(#b)
         });
         // The motion about `from`, as (unchecked, checked) calls.
@@ -231,7 +232,7 @@ fn lane_steps(lane: &Lane, s: &mut Step, link: &Ident, from: &Ident, local: &Loc
     } = s.own.clone();
     let Vector { x: ux, y: uy } = &l.axis;
     let (fpx, fpy) = (&f.px, &f.py);
-    let o = super::lane::pv("o", s.name);
+    let o = super::lane::pv(Family::LaneOffset, s.name);
     let (ox, oy) = (&o.x, &o.y);
     s.emit(quote! {
         let (lx, ly) = (#lx, #ly);

@@ -5,6 +5,7 @@
 
 use super::tokens::{grp, tag};
 use crate::model::Stmt;
+use crate::names::Family;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::Ident;
@@ -32,13 +33,9 @@ pub trait RateCx {
     /// The rate of the current statement's slide `slot`.
     fn slide(&mut self, slot: usize, value: TokenStream);
 
-    /// `vel` or `acc`: prefix of point motions.
-    fn pfx(&self) -> &'static str {
-        if self.accel() {
-            "acc"
-        } else {
-            "vel"
-        }
+    /// `vel_` or `acc_`: the family of point motions.
+    fn pfx(&self) -> Family {
+        Family::motion(self.accel())
     }
 
     /// `let LOCAL = VALUE;`, and LOCAL may be stored with type `ty`.
@@ -49,13 +46,12 @@ pub trait RateCx {
 
     /// The rate of link `k` of `stmt` (`omega_LINK` or `alpha_LINK`).
     fn own(&self, stmt: &Stmt, k: usize) -> Ident {
-        let wpfx = if self.accel() { "alpha" } else { "omega" };
-        format_ident!("{}_{}", wpfx, stmt.links[k])
+        Family::link_rate(self.accel()).of(&stmt.links[k])
     }
 
     /// The motion of point `stmt` (`vel_NAME` or `acc_NAME`).
     fn motion(&self, stmt: &Stmt) -> Ident {
-        format_ident!("{}_{}", self.pfx(), stmt.name)
+        self.pfx().of(&stmt.name)
     }
 
     /// A group's (or the actuator's) rate call: `let grp_v_NAME = CALL TAG;`
@@ -64,7 +60,12 @@ pub trait RateCx {
     /// Returns the local.
     fn group(&mut self, stmt: &Stmt, call: TokenStream, module: TokenStream, ty: &str) -> Ident {
         let accel = self.accel();
-        let gr = format_ident!("{}_{}", if accel { "grp_a" } else { "grp_v" }, stmt.name);
+        let gr = if accel {
+            Family::GrpAcc
+        } else {
+            Family::GrpVel
+        }
+        .of(&stmt.name);
         let t = tag(stmt);
         self.code(quote!(let #gr = #call #t;));
         let ty = format_ident!("{}{}", ty, if accel { "Acceleration" } else { "Velocity" });
@@ -123,7 +124,7 @@ impl Pieces {
 /// `(grp_NAME, grp_v_NAME)`: the position state and the velocity state a
 /// group's rate calls read.
 pub fn states(stmt: &Stmt) -> (Ident, Ident) {
-    (grp(stmt), format_ident!("grp_v_{}", stmt.name))
+    (grp(stmt), Family::GrpVel.of(&stmt.name))
 }
 
 /// The point motion and two link rates of a group shaped like the RRR (the

@@ -161,6 +161,12 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
         )
     }
 
+    /// Three RRR pinned outside their cycle: the class III group, written
+    /// as one `triad` statement.
+    fn cycle_hint(&self, cycle: &[&Stmt]) -> Option<String> {
+        super::triad::cycle_hint(cycle)
+    }
+
     fn singular_meaning(&self) -> Option<String> {
         let l = &self.stmt.links;
         Some(format!(

@@ -7,6 +7,7 @@
 
 use super::Pose;
 use crate::model::Stmt;
+use crate::names::Family;
 use mechanism_core::guide::{LineAcceleration, LineVelocity};
 use mechanism_core::Vector2;
 use std::any::Any;
@@ -410,7 +411,7 @@ impl ForceRunCx<'_> {
     /// `to`.
     pub fn revolute(&mut self, from: &Option<String>, to: &Ident, force: Vector2<f64>) {
         self.field(
-            format!("r_{}_{to}", super::forces::body_name(from)),
+            Family::Reaction.pair_text(super::forces::body_name(from), to),
             super::forces::Held::Force,
             ForceValue::Force(force),
         );
@@ -424,7 +425,7 @@ impl ForceRunCx<'_> {
         rx: mechanism_core::force::PrismaticReaction<f64>,
     ) {
         self.field(
-            format!("r_{}_{to}", super::forces::body_name(from)),
+            Family::Reaction.pair_text(super::forces::body_name(from), to),
             super::forces::Held::Prismatic,
             ForceValue::Prismatic(rx),
         );
@@ -437,12 +438,16 @@ impl ForceRunCx<'_> {
             ForceValue::Prismatic(_) => super::forces::Held::Prismatic,
             _ => super::forces::Held::Force,
         };
-        self.field(format!("r_{}_{}", links[0], links[1]), held, value);
+        self.field(
+            Family::Reaction.pair_text(&links[0], &links[1]),
+            held,
+            value,
+        );
     }
 
     /// A driving effort of `input` (`drive_INPUT`).
     pub fn drive(&mut self, input: &Ident, held: super::forces::Held, value: f64) {
-        self.field(format!("drive_{input}"), held, ForceValue::Scalar(value));
+        self.field(Family::Drive.text(input), held, ForceValue::Scalar(value));
     }
 
     /// A field of the forces struct.

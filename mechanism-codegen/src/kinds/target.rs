@@ -10,7 +10,7 @@ use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
 use super::tokens::tag;
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
-use crate::model::{Kind, Model, Stmt};
+use crate::model::Stmt;
 use crate::names::Family;
 use crate::value::Value;
 use mechanism_core::driver;
@@ -122,7 +122,7 @@ impl<'a> GroupKind<'a> for Target<'a> {
         for (input, axis) in [(x, "x"), (y, "y")] {
             let a = format_ident!("{}", axis);
             cx.reaction(Reaction {
-                name: format_ident!("drive_{}", input),
+                name: Family::Drive.of(input),
                 ty: quote!(T),
                 value: quote!(#rx.drive.#a),
                 doc: format!("Driving force on `{link}` along +{axis} (input `{input}`; force units): the {axis} component of the force a positioner applies at `{name}` to hold it on its path."),
@@ -131,7 +131,7 @@ impl<'a> GroupKind<'a> for Target<'a> {
         }
         let ground = body_name(&None);
         cx.reaction(Reaction {
-            name: format_ident!("m_{}_{}", ground, link),
+            name: Family::Mount.pair(ground, link),
             ty: quote!(T),
             value: quote!(#rx.couple),
             doc: format!("Couple of the positioner on `{link}` (force x length units, counter-clockwise positive): zero unless loads act on `{link}` away from `{name}`."),
@@ -234,60 +234,6 @@ impl<'a> GroupKind<'a> for Target<'a> {
     }
 }
 
-/// The local holding the motors' torques (`mechanism::force::target::MotorTorques`).
-pub fn motors_local() -> Ident {
-    format_ident!("rx_motors")
-}
-
-/// The target statements of `model`, each with its `x` and `y` inputs.
-pub fn targets(model: &Model) -> Vec<(&Stmt, &Ident, &Ident)> {
-    model
-        .stmts
-        .iter()
-        .filter_map(|s| match &s.kind {
-            Kind::Target { x, y } => Some((s, x, y)),
-            _ => None,
-        })
-        .collect()
-}
-
-/// The one target statement the motors of `model` hold, with its inputs
-/// (`None` unless there is exactly one).
-pub fn held_target(model: &Model) -> Option<(&Stmt, &Ident, &Ident)> {
-    match targets(model)[..] {
-        [one] => Some(one),
-        _ => None,
-    }
-}
-
-/// The motors' torque fields of the forces struct (`drive_NAME`), read from
-/// [`motors_local`]; none unless the definition has one target and two
-/// motors.
-pub fn motor_reactions(model: &Model) -> Vec<Reaction> {
-    let motors = &model.kinetics.motors;
-    let Some((target, _, _)) = held_target(model) else {
-        return Vec::new();
-    };
-    if motors.len() != 2 {
-        return Vec::new();
-    }
-    let local = motors_local();
-    motors
-        .iter()
-        .enumerate()
-        .map(|(k, m)| {
-            let on = m.carrier.as_ref().map_or("the ground".to_string(), |c| format!("`{c}`"));
-            Reaction {
-                name: format_ident!("drive_{}", m.name),
-                ty: quote!(T),
-                value: quote!(#local.torque[#k]),
-                doc: format!("Torque of the motor `{}` on `{}` (reacting on {on}; force x length units, counter-clockwise positive) that holds `{}` on its path: the target's driving force mapped to the motors by virtual work, `tau = J^T D`.", m.name, m.link, target.name),
-                held: Held::Torque,
-            }
-        })
-        .collect()
-}
-
 impl super::run::RunKind for Target<'_> {
     /// `force::target::reactions` on the effector's load about its point:
     /// the positioner's force components and couple.
@@ -305,7 +251,7 @@ impl super::run::RunKind for Target<'_> {
         cx.drive(y, Held::Push, rx.drive.y);
         let ground = body_name(&None);
         cx.field(
-            format!("m_{ground}_{link}"),
+            Family::Mount.pair_text(ground, link),
             Held::Torque,
             super::run::ForceValue::Scalar(rx.couple),
         );

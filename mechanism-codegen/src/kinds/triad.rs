@@ -26,10 +26,10 @@ use super::forces::{revolute, rx, ForceCx};
 use super::lane::{Lane, Step};
 use super::rates::{states, vec_ty, RateCx};
 use super::tokens::{arm, grp, local, tag, unit_field};
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Tracking, Turn};
 use crate::diag::{show_num, Diagnostics};
 use crate::kinds::pose::num;
-use crate::model::{Local, Stmt, Tracked, Triad as Args};
+use crate::model::{Local, Stmt, Triad as Args};
 use crate::value::Value;
 use mechanism_core::triad::{self, Near, TriadPosition};
 use mechanism_core::{geometry, Fault, Point2, Vector2};
@@ -60,6 +60,24 @@ const SUB: usize = 16;
 pub(super) struct TriadKind<'a> {
     pub stmt: &'a Stmt,
     pub t: &'a Args,
+    /// The assembly the check tracked over the input's range (its
+    /// findings, `check::Findings::known`); `None` where the check did not
+    /// track it: the stated pose is the hint at every input.
+    pub tracked: Option<&'a Tracked>,
+}
+
+/// What tracking a triad's stated assembly over its input's range found
+/// (the check's finding for the statement, read by the sweep, the
+/// generated `position()` and the messages).
+#[derive(Clone, Debug, Default)]
+pub struct Tracked {
+    /// The pose at evenly spaced inputs: `[input, ax, ay, bx, by, px, py]`.
+    pub rows: Vec<[f64; 7]>,
+    /// Where the tracked assembly stops existing: the last input it was
+    /// found at and the first it was not, below and above the stated one.
+    pub ends: Vec<(f64, f64)>,
+    /// `true` when the input is an angle (rad; messages show deg).
+    pub angle: bool,
 }
 
 /// `P`'s offset in the ternary's frame (L), folded.
@@ -211,10 +229,10 @@ impl TriadKind<'_> {
     /// The hint the position uses at `q`: the table's pose, or the stated
     /// one when there is no table.
     fn hint(&self, q: f64) -> Result<Near<f64>, mechanism_core::Error<f64>> {
-        let rows = self.t.table.borrow();
-        if rows.rows.is_empty() {
-            Ok(stated(self.t))
-        } else if rows.angle {
+        let Some(rows) = self.tracked.filter(|t| !t.rows.is_empty()) else {
+            return Ok(stated(self.t));
+        };
+        if rows.angle {
             triad::near_from_table_turning(&rows.rows, q)
         } else {
             triad::near_from_table(&rows.rows, q)
@@ -223,15 +241,14 @@ impl TriadKind<'_> {
 
     /// The hint's code: the table as `const` data, or the stated pose.
     fn hint_code(&self) -> TokenStream {
-        let rows = self.t.table.borrow();
-        if rows.rows.is_empty() {
+        let Some(rows) = self.tracked.filter(|t| !t.rows.is_empty()) else {
             let p = |k: usize| {
                 let (x, y) = (self.t.near[k].0.emit(), self.t.near[k].1.emit());
                 quote!(::mechanism::Point2::new(#x, #y))
             };
             let (a, b, p) = (p(0), p(1), p(2));
             return quote!(::mechanism::triad::Near::new(#a, #b, #p));
-        }
+        };
         let n = rows.rows.len();
         let body = rows.rows.iter().map(|r| {
             let v = r.iter().map(|x| proc_macro2::Literal::f64_suffixed(*x));
@@ -412,7 +429,8 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
 
     fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
         let input = &self.t.at.0;
-        let tracked = self.t.table.borrow();
+        let none = Tracked::default();
+        let tracked = self.tracked.unwrap_or(&none);
         let show = |x: f64| {
             if tracked.angle {
                 format!("{} deg", show_num(x.to_degrees()))
@@ -446,32 +464,51 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         })
     }
 
+    /// The rule that the approximate pose is given at a value of one of
+    /// the definition's inputs (`INPUT = value` names a driver's input).
+    fn check_inputs(&self, inputs: &[crate::model::Input], errors: &mut Diagnostics) {
+        let at = &self.t.at.0;
+        let inputs: Vec<String> = inputs.iter().map(|i| i.name.to_string()).collect();
+        let name = at.to_string();
+        if inputs.contains(&name) {
+            return;
+        }
+        errors.push(
+            at.span(),
+            format!(
+                "`{name}` is not an input: the triad's pose is given at a value of a driver's input ({}){}",
+                inputs
+                    .iter()
+                    .map(|i| format!("`{i}`"))
+                    .collect::<Vec<_>>()
+                    .join(", "),
+                crate::diag::did_you_mean(&name, inputs.iter().map(String::as_str))
+            ),
+        );
+    }
+
     fn singular_meaning(&self) -> Option<String> {
         Some("the triad is at a branch point (two of its assemblies meet)".into())
     }
 
-    /// Follows the stated assembly over the input's range and stores the
-    /// tracked poses in the statement ([`track`]), which the sweep and the
-    /// generated `position()` then read. A stated input outside the range,
-    /// or a stated pose that selects no assembly, is an error on the
-    /// statement.
+    /// Follows the stated assembly over the input's range ([`track`]): the
+    /// tracked poses, which the sweep and the generated `position()` then
+    /// read. A stated input outside the range, or a stated pose that
+    /// selects no assembly, is an error on the statement.
     fn track(
         &self,
         before: &dyn Fn(f64) -> Option<Pose>,
         (lo, hi): (f64, f64),
         angle: bool,
         errors: &mut Diagnostics,
-    ) -> bool {
+    ) -> Tracking {
         let t = self.t;
         let ks = |q: f64| {
             let pose = before(q)?;
             Some(t.k.each_ref().map(|k| pose.point(k)))
         };
         let e = match track(t, (lo, hi), angle, &ks) {
-            Ok(tracked) => {
-                *t.table.borrow_mut() = Tracked { angle, ..tracked };
-                return true;
-            }
+            Ok(tracked) => return Tracking::Tracked(Tracked { angle, ..tracked }),
             Err(e) => e,
         };
         let q =
@@ -508,7 +545,7 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
                 ),
             );
         }
-        false
+        Tracking::Failed
     }
 
     fn primitive(&self) -> &'static str {
@@ -589,7 +626,7 @@ fn forces(kind: &TriadKind<'_>, cx: &mut dyn ForceCx) {
 /// known point outside the cycle (a class III group written as three
 /// dyads): what it is and the `triad` statement to write instead, with the
 /// names and lengths the statements give. `None` for any other cycle.
-pub fn cycle_hint(cycle: &[&Stmt]) -> Option<String> {
+pub(super) fn cycle_hint(cycle: &[&Stmt]) -> Option<String> {
     let [j1, j2, j3] = cycle else {
         return None;
     };
@@ -620,33 +657,6 @@ pub fn cycle_hint(cycle: &[&Stmt]) -> Option<String> {
         known.join(", "),
         args.join(", ")
     ))
-}
-
-/// The rule that a triad's approximate pose is given at a value of one of
-/// the definition's inputs (`INPUT = value` names a driver's input).
-pub fn pose_input(model: &crate::model::Model, errors: &mut crate::diag::Diagnostics) {
-    let inputs: Vec<String> = model.inputs.iter().map(|i| i.name.to_string()).collect();
-    for stmt in &model.stmts {
-        let crate::model::Kind::Triad(t) = &stmt.kind else {
-            continue;
-        };
-        let name = t.at.0.to_string();
-        if inputs.contains(&name) {
-            continue;
-        }
-        errors.push(
-            t.at.0.span(),
-            format!(
-                "`{name}` is not an input: the triad's pose is given at a value of a driver's input ({}){}",
-                inputs
-                    .iter()
-                    .map(|i| format!("`{i}`"))
-                    .collect::<Vec<_>>()
-                    .join(", "),
-                crate::diag::did_you_mean(&name, inputs.iter().map(String::as_str))
-            ),
-        );
-    }
 }
 
 /// Why a triad's stated pose selects no assembly, in numbers.

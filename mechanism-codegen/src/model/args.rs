@@ -29,6 +29,9 @@ pub(super) struct NumberScope<'a> {
     /// Per-evaluation load values, and whether this place may use them.
     pub(super) loads: &'a [(Ident, f64)],
     pub(super) allow_loads: bool,
+    /// Appended to the message on a name that is nothing known: what this
+    /// place may use (`""`: nothing more to say).
+    pub(super) unknown_note: &'static str,
 }
 
 impl Scope for NumberScope<'_> {
@@ -72,8 +75,9 @@ impl Scope for NumberScope<'_> {
         syn::Error::new(
             name.span(),
             format!(
-                "cannot find parameter or constant `{s}`{}",
-                did_you_mean(&s, all.iter().map(String::as_str))
+                "cannot find parameter or constant `{s}`{}{}",
+                did_you_mean(&s, all.iter().map(String::as_str)),
+                self.unknown_note
             ),
         )
     }
@@ -312,11 +316,13 @@ impl<'a> Args<'a> {
     }
 }
 
-/// The scope of a parameter's or load's default: the constants (and the
-/// other names, for messages).
+/// The scope of a value known at expansion time: the constants (and the
+/// other names, for messages); `unknown_note` says, on a name that is
+/// nothing known, what the place may use.
 pub(super) fn literal_scope_for<'a>(
     consts: &'a BTreeMap<String, (Ident, f64)>,
     names: &'a [(String, &'static str)],
+    unknown_note: &'static str,
 ) -> NumberScope<'a> {
     NumberScope {
         consts,
@@ -324,5 +330,6 @@ pub(super) fn literal_scope_for<'a>(
         names,
         loads: &[],
         allow_loads: false,
+        unknown_note,
     }
 }

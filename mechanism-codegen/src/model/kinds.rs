@@ -515,6 +515,5 @@ fn triad(a: &mut Args, stmt: &parse::Let) -> Option<Kind> {
         p,
         at,
         near,
-        table: Default::default(),
     })))
 }

@@ -37,6 +37,7 @@ pub fn lower(def: Definition, errors: &mut Diagnostics) -> Model {
         names: &names,
         loads: &loads,
         allow_loads: false,
+        unknown_note: "",
     };
     let load_scope = NumberScope {
         allow_loads: true,
@@ -202,24 +203,15 @@ fn constant(
     names: &[(String, &'static str)],
     errors: &mut Diagnostics,
 ) -> f64 {
-    let earlier = NumberScope {
+    let earlier = literal_scope_for(
         consts,
-        params: &[],
         names,
-        loads: &[],
-        allow_loads: false,
-    };
+        " (a `const` may use literals and constants defined before it)",
+    );
     match convert(&c.value, &earlier).map(|v| (v.fold(), v.span)) {
         Ok((Some(x), _)) => x,
         Ok((None, span)) => {
             errors.push(span, "a `const` must be a number known at compile time: a literal, or arithmetic on literals and earlier constants");
-            0.0
-        }
-        Err(e) if e.to_string().starts_with("cannot find") => {
-            errors.error(syn::Error::new(
-                e.span(),
-                format!("{e} (a `const` may use literals and constants defined before it)"),
-            ));
             0.0
         }
         Err(e) => {
@@ -237,17 +229,15 @@ fn default_value(
     names: &[(String, &'static str)],
     errors: &mut Diagnostics,
 ) -> f64 {
-    match convert(&p.value, &literal_scope_for(consts, names)).map(|v| (v.fold(), v.span)) {
+    let scope = literal_scope_for(
+        consts,
+        names,
+        " (a parameter's default may use literals and constants only)",
+    );
+    match convert(&p.value, &scope).map(|v| (v.fold(), v.span)) {
         Ok((Some(x), _)) => x,
         Ok((None, span)) => {
             errors.push(span, "a parameter's default must be a literal number (or arithmetic on literals and constants)");
-            0.0
-        }
-        Err(e) if e.to_string().starts_with("cannot find") => {
-            errors.error(syn::Error::new(
-                e.span(),
-                format!("{e} (a parameter's default may use literals and constants only)"),
-            ));
             0.0
         }
         Err(e) => {

@@ -431,21 +431,6 @@ pub struct Triad {
     pub at: (Ident, Value),
     /// The approximate `A`, `B`, `P` at `at` (L).
     pub near: [(Value, Value); 3],
-    /// The assembly tracked over the input's range at expansion time
-    /// (filled by the check when every dimension folds; empty otherwise).
-    pub table: std::cell::RefCell<Tracked>,
-}
-
-/// What tracking a triad's stated assembly over its input's range found.
-#[derive(Clone, Debug, Default)]
-pub struct Tracked {
-    /// The pose at evenly spaced inputs: `[input, ax, ay, bx, by, px, py]`.
-    pub rows: Vec<[f64; 7]>,
-    /// Where the tracked assembly stops existing: the last input it was
-    /// found at and the first it was not, below and above the stated one.
-    pub ends: Vec<(f64, f64)>,
-    /// `true` when the input is an angle (rad; messages show deg).
-    pub angle: bool,
 }
 
 impl Kind {

@@ -5,7 +5,7 @@
 //! that evaluates the definition at expansion time sees the default, and
 //! `expand` runs the expansion-time check once more per other value.
 
-use super::{Kind, Mode};
+use super::Mode;
 use crate::parse::vocabulary::KindWord;
 use crate::parse::{self, Arg};
 use syn::{Expr, Ident};
@@ -57,17 +57,6 @@ pub fn flipped(mode: Mode) -> Mode {
     match mode {
         Mode::Plus => Mode::Minus,
         Mode::Minus => Mode::Plus,
-    }
-}
-
-/// The assembly mode of a statement kind that has one.
-pub fn mode_mut(kind: &mut Kind) -> Option<&mut Mode> {
-    match kind {
-        Kind::Actuator { mode, .. }
-        | Kind::Rrr { mode, .. }
-        | Kind::Rrp { mode, .. }
-        | Kind::Rpr { mode, .. } => Some(mode),
-        _ => None,
     }
 }
 

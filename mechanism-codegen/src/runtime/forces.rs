@@ -26,6 +26,7 @@ use crate::kinds::{
     run::{ForceRunCx, ForceValue, RunReaction},
 };
 use crate::model::{ForceSpecValue, Level, MassSpec};
+use crate::names::Family;
 use crate::value::{Value, ValueKind};
 use mechanism_core::force::Wrench;
 use mechanism_core::{geometry, Error, Primitive, Vector2};
@@ -433,10 +434,10 @@ impl Mechanism {
     /// `force::target::motor_torques` on the target's driving force.
     fn motors(&self, pos: &Position, cx: &mut ForceRunCx<'_>) -> Result<(), Error<f64>> {
         let model = &self.model;
-        let Some((target, x, y)) = kinds::target::held_target(model) else {
+        let Some((target, x, y)) = kinds::motors::held_target(model) else {
             return Ok(());
         };
-        if kinds::target::motor_reactions(model).is_empty() {
+        if kinds::motors::reactions(model).is_empty() {
             return Ok(());
         }
         let unit = |axis: &Ident| -> Vec<f64> {
@@ -465,7 +466,7 @@ impl Mechanism {
         let k_x = motor_rates(&self.velocity(pos, &unit(x))?);
         let k_y = motor_rates(&self.velocity(pos, &unit(y))?);
         let drive_of = |input: &Ident| {
-            let name = format!("drive_{input}");
+            let name = Family::Drive.text(input);
             cx.reactions
                 .iter()
                 .find(|r| r.name == name)
@@ -480,7 +481,7 @@ impl Mechanism {
         cx.conditions.push(rx.min_pivot_ratio);
         for (k, m) in model.kinetics.motors.iter().enumerate() {
             cx.field(
-                format!("drive_{}", m.name),
+                Family::Drive.text(&m.name),
                 Held::Torque,
                 ForceValue::Scalar(rx.torque[k]),
             );

@@ -99,8 +99,10 @@ pub struct Mechanism {
     plan: Plan,
     moving: BTreeSet<String>,
     params: BTreeMap<String, f64>,
-    /// The modes set at run time ([`Mechanism::set_mode`]).
-    current_modes: BTreeMap<String, Mode>,
+    /// What the check found (the triads' tracked assemblies) and the
+    /// modes set at run time ([`Mechanism::set_mode`]), which the position
+    /// reads in place of the defaults.
+    known: kinds::Known,
     /// The `loads { .. }` values ([`Mechanism::set_load`]).
     loads: BTreeMap<String, f64>,
 }
@@ -127,7 +129,7 @@ impl Mechanism {
         let definition =
             crate::parse::definition(tokens).map_err(|e| Errors::new(text, vec![e]))?;
         let mut diag = Diagnostics::new();
-        let mut model = crate::model::lower(definition, &mut diag);
+        let model = crate::model::lower(definition, &mut diag);
         crate::validate::model(&model, &mut diag);
         let plan = crate::plan::plan(&model, &mut diag);
         if let Some(plan) = &plan {
@@ -137,8 +139,8 @@ impl Mechanism {
             Some(plan) if diag.is_empty() => plan,
             _ => return Err(Errors::new(text, diag.finish())),
         };
-        crate::check::expansion_check(&model, &plan, &mut diag);
-        crate::check::modes::other_modes(&mut model, &plan, &mut diag);
+        let findings = crate::check::expansion_check(&model, &plan, &mut diag);
+        crate::check::modes::other_modes(&model, &plan, &mut diag);
         let errors = diag.finish();
         if !errors.is_empty() {
             return Err(Errors::new(text, errors));
@@ -160,7 +162,7 @@ impl Mechanism {
             plan,
             moving,
             params,
-            current_modes: BTreeMap::new(),
+            known: findings.known,
             loads,
         })
     }
@@ -232,7 +234,7 @@ impl Mechanism {
             .modes
             .iter()
             .map(|(n, default)| {
-                let current = self.current_modes.get(&n.to_string()).copied();
+                let current = self.known.modes.get(&n.to_string()).copied();
                 (n.to_string(), current.unwrap_or(*default) == Mode::Plus)
             })
             .collect()
@@ -248,14 +250,7 @@ impl Mechanism {
             ));
         }
         let mode = if left { Mode::Plus } else { Mode::Minus };
-        self.current_modes.insert(name.to_string(), mode);
-        for stmt in &mut self.model.stmts {
-            if stmt.mode_param.as_ref().is_some_and(|p| p == name) {
-                if let Some(m) = crate::model::modes::mode_mut(&mut stmt.kind) {
-                    *m = mode;
-                }
-            }
-        }
+        self.known.modes.insert(name.to_string(), mode);
         Ok(())
     }
 
@@ -324,7 +319,7 @@ impl Mechanism {
         let input = |n: &syn::Ident| self.input_index(n).map_or(f64::NAN, |k| q[k]);
         kinds::pose::with_params(&self.params, || {
             for &i in &self.plan.solve {
-                kinds::of(&self.model.stmts[i])
+                kinds::of_known(&self.model.stmts, i, &self.known)
                     .eval(&mut pose, &input)
                     .map_err(|e| e.in_group(intern(&self.model.stmts[i].name.to_string())))?;
             }

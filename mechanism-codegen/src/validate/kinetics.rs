@@ -260,7 +260,7 @@ pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Di
     let Some(first) = motors.first() else {
         return;
     };
-    let targets = kinds::target::targets(model);
+    let targets = kinds::motors::targets(model);
     if targets.len() != 1 {
         let found = if targets.is_empty() {
             "this definition has none".to_string()

@@ -40,8 +40,9 @@ pub fn model(model: &Model, errors: &mut Diagnostics) {
     // Each kind's own rules on its arguments (an RPP's slot crosses its
     // guide).
     structure::kind_rules(model, errors);
-    // A triad's pose is given at a value of one of the inputs.
-    crate::kinds::triad::pose_input(model, errors);
+    // Each kind's own rules on the inputs it names (a triad's pose is given
+    // at a value of one of them).
+    structure::kind_input_rules(model, errors);
     // `#[self_test]` has a range to sweep for every input, and at most two.
     structure::self_test_sweepable(model, errors);
 }

@@ -120,6 +120,14 @@ pub(super) fn kind_rules(model: &Model, errors: &mut Diagnostics) {
     }
 }
 
+/// Rule: each kind's own rules on the inputs it names (a triad's pose is
+/// given at a value of one of the inputs).
+pub(super) fn kind_input_rules(model: &Model, errors: &mut Diagnostics) {
+    for stmt in &model.stmts {
+        kinds::of(stmt).check_inputs(&model.inputs, errors);
+    }
+}
+
 /// `#[self_test]` sweeps the input range: every input needs one, and there
 /// are at most two inputs.
 pub(super) fn self_test_sweepable(model: &Model, errors: &mut Diagnostics) {

@@ -3,7 +3,7 @@
 //! state of `kinds::lane`.
 
 use crate::kinds;
-use crate::kinds::lane::{Lane, Step, Writes};
+use crate::kinds::lane::{Lane, OutputShape, Step, Writes};
 use crate::model::{Model, Stmt};
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
@@ -38,7 +38,7 @@ pub(super) fn kernel(
     model: &Model,
     plan: &Plan,
     all_in: &[&Ident],
-    outputs: &[(Ident, TokenStream)],
+    outputs: &[(Ident, OutputShape)],
     levels: usize,
 ) -> Option<Kernel> {
     let mut lane = Lane::new(levels);

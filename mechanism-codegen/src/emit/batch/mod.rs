@@ -35,7 +35,7 @@ mod kernel;
 mod tests;
 
 use crate::emit::forces::ForceField;
-use crate::kinds;
+use crate::kinds::{self, lane::OutputShape};
 use crate::model::{Level, Model};
 use crate::names::Family;
 use crate::plan::Plan;
@@ -44,7 +44,7 @@ use quote::{format_ident, quote};
 use syn::Ident;
 
 /// The slice prefixes of the levels: `pos`, `vel`, `acc`.
-const PREFIXES: [&str; 3] = ["pos", "vel", "acc"];
+const PREFIXES: [Family; 3] = [Family::Pos, Family::Vel, Family::Acc];
 
 /// One output slice of the batch: its field (`pos_B_x`), the expression
 /// reading it from the scalar result of its level (`B.x` on `p`, `v` or
@@ -84,12 +84,12 @@ pub fn emit(
     model: &Model,
     plan: &Plan,
     inputs: &[Ident],
-    outputs: &[(Ident, TokenStream)],
+    outputs: &[(Ident, OutputShape)],
     force_fields: Option<&[(Ident, ForceField)]>,
 ) -> TokenStream {
-    let kept: Vec<(Ident, TokenStream)> = outputs
+    let kept: Vec<(Ident, OutputShape)> = outputs
         .iter()
-        .filter(|(o, ty)| !given(model, o) && !constant(model, plan, o, ty))
+        .filter(|(o, shape)| !given(model, o) && !constant(model, plan, o, *shape))
         .cloned()
         .collect();
     let outputs = &kept[..];
@@ -121,10 +121,10 @@ pub fn emit(
 
 /// The output slices, level by level: a point `P` gives `pos_P_x` and
 /// `pos_P_y`, a link angle or slide `s` gives `pos_s`.
-fn out_slices(outputs: &[(Ident, TokenStream)], levels: usize) -> Vec<OutSlice> {
+fn out_slices(outputs: &[(Ident, OutputShape)], levels: usize) -> Vec<OutSlice> {
     let mut out = Vec::new();
     for (level, prefix) in PREFIXES.iter().take(levels).enumerate() {
-        for (o, ty) in outputs {
+        for (o, shape) in outputs {
             let mut push = |field: Ident, source: TokenStream| {
                 out.push(OutSlice {
                     field,
@@ -132,11 +132,11 @@ fn out_slices(outputs: &[(Ident, TokenStream)], levels: usize) -> Vec<OutSlice> 
                     level,
                 })
             };
-            if ty.to_string().contains("Point2") {
-                push(format_ident!("{}_{}_x", prefix, o), quote!(#o.x));
-                push(format_ident!("{}_{}_y", prefix, o), quote!(#o.y));
+            if *shape == OutputShape::Point {
+                push(prefix.coord(o, "x"), quote!(#o.x));
+                push(prefix.coord(o, "y"), quote!(#o.y));
             } else {
-                push(format_ident!("{}_{}", prefix, o), quote!(#o));
+                push(prefix.of(o), quote!(#o));
             }
         }
     }
@@ -148,16 +148,16 @@ fn out_slices(outputs: &[(Ident, TokenStream)], levels: usize) -> Vec<OutSlice> 
 /// beside a point output `P` would declare a field twice (rustc's errors
 /// then point into the macro). Says which names meet instead: one
 /// `compile_error!` per clash, on the scalar's name (empty when none).
-fn clashes(model: &Model, outputs: &[(Ident, TokenStream)]) -> TokenStream {
+fn clashes(model: &Model, outputs: &[(Ident, OutputShape)]) -> TokenStream {
     let name = &model.name;
     let mut errors = TokenStream::new();
-    for (o, ty) in outputs {
-        if ty.to_string().contains("Point2") {
+    for (o, shape) in outputs {
+        if *shape == OutputShape::Point {
             continue;
         }
         let s = o.to_string();
         let point = outputs.iter().find(|(p, t)| {
-            t.to_string().contains("Point2") && [format!("{p}_x"), format!("{p}_y")].contains(&s)
+            *t == OutputShape::Point && [format!("{p}_x"), format!("{p}_y")].contains(&s)
         });
         if let Some((p, _)) = point {
             errors.extend(
@@ -578,9 +578,9 @@ fn solve_batch(
 /// scalar `position`'s at any element (and its rates zero); a column would
 /// repeat it per element.
 /// `ty`: the output's type (`Point2<T>` for a point).
-fn constant(model: &Model, plan: &Plan, output: &Ident, ty: &TokenStream) -> bool {
+fn constant(model: &Model, plan: &Plan, output: &Ident, shape: OutputShape) -> bool {
     let o = output.to_string();
-    if ty.to_string().contains("Point2") {
+    if shape == OutputShape::Point {
         return !crate::emit::moving_points(model, plan).contains(&o);
     }
     plan.links.contains_key(&o) && plan.turning_link(&o).is_none()

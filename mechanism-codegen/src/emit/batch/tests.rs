@@ -24,7 +24,7 @@ fn scalar_named_like_a_point_coordinate() {
 
 use super::kernel::{kernel, statement};
 use crate::diag::Diagnostics;
-use crate::kinds::lane::{tree_sum, Lane};
+use crate::kinds::lane::{tree_sum, Lane, OutputShape};
 use crate::model::Model;
 use crate::plan::Plan;
 use proc_macro2::TokenStream;
@@ -62,7 +62,7 @@ fn kernel_text(model: &Model, plan: &Plan, levels: usize) -> Option<String> {
         .map(|p| format_ident!("{}_theta2", p))
         .collect();
     let ins: Vec<_> = ins.iter().collect();
-    let outputs = [(format_ident!("B"), quote!(::mechanism::Point2<T>))];
+    let outputs = [(format_ident!("B"), OutputShape::Point)];
     let k = kernel(model, plan, &ins, &outputs, levels)?;
     Some(k.method.to_string().replace(' ', ""))
 }
@@ -121,7 +121,7 @@ fn a_position_only_kernel_has_no_rate_terms() {
 fn an_output_the_kernel_lacks_falls_back() {
     let (model, plan) = four_bar(quote! { analysis position; });
     let ins = [&format_ident!("in_theta2")];
-    let outputs = [(format_ident!("Q"), quote!(::mechanism::Point2<T>))];
+    let outputs = [(format_ident!("Q"), OutputShape::Point)];
     assert!(kernel(&model, &plan, &ins, &outputs, 1).is_none());
     assert!(kernel_text(&model, &plan, 1).is_some());
 }

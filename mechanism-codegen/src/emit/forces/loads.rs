@@ -8,6 +8,7 @@ use super::ForceEmitter;
 use crate::emit::tag;
 use crate::kinds::{self, forces::ForceCx};
 use crate::model::{ForceSpec, ForceSpecValue, Kind, Local, MassSpec, Model, Stmt, TorqueSpec};
+use crate::names::Family;
 use crate::value::Value;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -40,11 +41,11 @@ impl ForceEmitter<'_> {
     /// their powers.
     fn mass(&mut self, m: &MassSpec) {
         let link = m.link.to_string();
-        let forces = self.part_forces(m, &link);
+        let forces = self.part_forces(m, Part::whole(&link));
         let couple = match (&m.inertia, self.rates_of(&m.link)) {
             (Some(j), Some((w, alpha))) if j.fold() != Some(0.0) => {
                 let j = self.checked(j, &link, Quantity::Inertia);
-                let c = format_ident!("pw_inertia_couple_{}", link);
+                let c = Family::PwInertiaCouple.of(&link);
                 self.code.extend(quote!(let #c = -(#j * #alpha);));
                 self.power.push(quote!(#c * #w));
                 Some(quote!(#c))
@@ -68,8 +69,11 @@ impl ForceEmitter<'_> {
     fn mass_parts(&mut self, link: &str, parts: &[&MassSpec]) {
         let mut inertias = Vec::new();
         for (k, m) in parts.iter().enumerate() {
-            let part = format!("{link}_{}", k + 1);
-            let forces = self.part_forces(m, &part);
+            let part = Part {
+                link,
+                number: Some(k + 1),
+            };
+            let forces = self.part_forces(m, part);
             self.place_part(link, m, forces);
             if let Some(j) = m.inertia.as_ref().filter(|j| j.fold() != Some(0.0)) {
                 inertias.push((part, j));
@@ -87,12 +91,12 @@ impl ForceEmitter<'_> {
             None => {
                 let terms: Vec<TokenStream> = inertias
                     .iter()
-                    .map(|(part, j)| self.checked_as(j, link, part, Quantity::Inertia))
+                    .map(|(part, j)| self.checked_as(j, *part, Quantity::Inertia))
                     .collect();
                 sum(&terms).expect("at least one part has a moment of inertia")
             }
         };
-        let c = format_ident!("pw_inertia_couple_{}", link);
+        let c = Family::PwInertiaCouple.of(link);
         self.code.extend(quote!(let #c = -((#j) * #alpha);));
         self.power.push(quote!(#c * #w));
         self.add(link, quote!(::mechanism::force::Wrench::couple(#c)));
@@ -102,21 +106,21 @@ impl ForceEmitter<'_> {
     /// its centre moves) and weight (`pw_weight_PART = m g`, with gravity):
     /// their code emitted (the mass checked first when not literal), the
     /// forces and their powers returned for [`Self::place_part`].
-    fn part_forces(&mut self, m: &MassSpec, part: &str) -> PartForces {
+    fn part_forces(&mut self, m: &MassSpec, part: Part<'_>) -> PartForces {
         let gravity = self.model.kinetics.gravity.is_some();
-        let mass = self.checked_as(&m.mass, &m.link.to_string(), part, Quantity::Mass);
+        let mass = self.checked_as(&m.mass, part, Quantity::Mass);
         let v_g = self.velocity(&m.at);
         let mut out = PartForces::default();
         if v_g.is_some() {
             let (f, a) = (
-                format_ident!("pw_inertia_force_{}", part),
-                format_ident!("acc_{}", m.at),
+                Family::PwInertiaForce.of(part.suffix()),
+                Family::Acc.of(&m.at),
             );
             self.code.extend(quote!(let #f = acc.#a * (-#mass);));
             out.terms.push(quote!(#f));
         }
         if gravity {
-            let w = format_ident!("pw_weight_{}", part);
+            let w = Family::PwWeight.of(part.suffix());
             self.code.extend(quote!(let #w = gravity * #mass;));
             out.terms.push(quote!(#w));
         }
@@ -145,7 +149,7 @@ impl ForceEmitter<'_> {
             Some(l) => l.to_string(),
             None => self.plan.links_with_point(&f.at.to_string())[0].clone(),
         };
-        let local = format_ident!("pw_force_{}", n);
+        let local = Family::PwForce.of(n);
         let value = match &f.value {
             ForceSpecValue::Components(x, y) => {
                 let (x, y) = (x.emit(), y.emit());
@@ -166,7 +170,7 @@ impl ForceEmitter<'_> {
 
     /// External couple number `n` and its power.
     fn torque(&mut self, n: usize, t: &TorqueSpec) {
-        let local = format_ident!("pw_torque_{}", n);
+        let local = Family::PwTorque.of(n);
         let value = t.value.emit();
         self.code.extend(quote!(let #local = #value;));
         if let Some((w, _)) = self.rates_of(&t.on) {
@@ -185,18 +189,12 @@ impl ForceEmitter<'_> {
     /// negative, else a typed error naming the group that creates the link
     /// (a negative mass would give finite, consistent and wrong reactions).
     fn checked(&mut self, value: &Value, link: &str, quantity: Quantity) -> TokenStream {
-        self.checked_as(value, link, link, quantity)
+        self.checked_as(value, Part::whole(link), quantity)
     }
 
-    /// [`Self::checked`] into the local named after `part` (`LINK` for a
-    /// link's only mass, `LINK_k` for its part `k`).
-    fn checked_as(
-        &mut self,
-        value: &Value,
-        link: &str,
-        part: &str,
-        quantity: Quantity,
-    ) -> TokenStream {
+    /// [`Self::checked`] into the local named after `part`.
+    fn checked_as(&mut self, value: &Value, part: Part<'_>, quantity: Quantity) -> TokenStream {
+        let link = part.link;
         if value.fold().is_some() {
             return value.emit();
         }
@@ -213,14 +211,14 @@ impl ForceEmitter<'_> {
         let t = tag(stmt);
         let (local, check, what) = match quantity {
             Quantity::Mass => (
-                format_ident!("pw_m_{}", part),
+                Family::PwMass.of(part.suffix()),
                 quote!(positive),
-                format!("mass of `{link}`{}", part_text(link, part)),
+                format!("mass of `{link}`{}", part.text()),
             ),
             Quantity::Inertia => (
-                format_ident!("pw_j_{}", part),
+                Family::PwInertia.of(part.suffix()),
                 quote!(non_negative),
-                format!("moment of inertia of `{link}`{}", part_text(link, part)),
+                format!("moment of inertia of `{link}`{}", part.text()),
             ),
         };
         self.code.extend(quote!(
@@ -244,12 +242,35 @@ pub(crate) fn masses_by_link(masses: &[MassSpec]) -> Vec<(String, Vec<&MassSpec>
     out
 }
 
-/// ` (part k)` for the local `part` = `LINK_k` of a link's part, empty for
-/// a link's only mass (`part` = `LINK`).
-fn part_text(link: &str, part: &str) -> String {
-    match part.strip_prefix(link).and_then(|k| k.strip_prefix('_')) {
-        Some(k) => format!(" (part {k})"),
-        None => String::new(),
+/// A mass of a link as the force code names its locals: the link's only
+/// mass (locals named after `LINK`) or its part `k` (from 1, in the order
+/// written; locals named after `LINK_k`).
+#[derive(Clone, Copy)]
+struct Part<'a> {
+    link: &'a str,
+    number: Option<usize>,
+}
+
+impl<'a> Part<'a> {
+    /// The link's only mass.
+    fn whole(link: &'a str) -> Self {
+        Part { link, number: None }
+    }
+
+    /// What the locals are named after: `LINK` or `LINK_k`.
+    fn suffix(self) -> String {
+        match self.number {
+            Some(k) => format!("{}_{k}", self.link),
+            None => self.link.to_string(),
+        }
+    }
+
+    /// ` (part k)` in messages, empty for a link's only mass.
+    fn text(self) -> String {
+        match self.number {
+            Some(k) => format!(" (part {k})"),
+            None => String::new(),
+        }
     }
 }
 

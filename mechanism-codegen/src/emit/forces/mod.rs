@@ -138,8 +138,8 @@ impl ForceEmitter<'_> {
     /// Nothing without motors.
     fn motors(&mut self, names: &TypeNames) {
         let model = self.model;
-        let reactions = kinds::target::motor_reactions(model);
-        let Some((target, x, y)) = kinds::target::held_target(model) else {
+        let reactions = kinds::motors::reactions(model);
+        let Some((target, x, y)) = kinds::motors::held_target(model) else {
             return;
         };
         if reactions.is_empty() {
@@ -169,7 +169,7 @@ impl ForceEmitter<'_> {
         let (ux, uy) = (unit(x), unit(y));
         let (rx, local, t) = (
             kinds::forces::rx(target),
-            kinds::target::motors_local(),
+            kinds::motors::local(),
             kinds::tokens::tag(target),
         );
         let position_ty = &names.position;
@@ -295,9 +295,7 @@ fn condition_code(conditions: &[TokenStream]) -> TokenStream {
 
 /// The power-balance residual from the power terms (0 without any).
 fn power_code(power_terms: &[TokenStream]) -> TokenStream {
-    let terms: Vec<Ident> = (0..power_terms.len())
-        .map(|k| format_ident!("pw_{}", k))
-        .collect();
+    let terms: Vec<Ident> = (0..power_terms.len()).map(|k| Family::Pw.of(k)).collect();
     if terms.is_empty() {
         return lit(0.0);
     }
