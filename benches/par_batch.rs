@@ -1,5 +1,5 @@
 //! `par_solve` against the single-thread batch, from 10^3 to 10^6 elements:
-//! the measurement behind `mechanism::PAR_MIN_PIECE` (`docs/performance.md`,
+//! the measurement behind `mechanism::PAR_TASK_NS` (`docs/performance.md`,
 //! "Over many cores"). A four-bar (outputs A, B, link3, link4 at three
 //! levels: 18 output columns), f64 and f32; per size, nanoseconds per element
 //! of each method, the minimum and the median over interleaved rounds of at

@@ -106,30 +106,41 @@ pub trait BatchSplit: Sized + Send {
     fn split_at(self, mid: usize) -> (Self, Self);
 }
 
-/// The smallest piece `par_solve` hands to a thread, in elements.
+/// What handing work to the other threads of rayon's pool costs per level of
+/// `rayon::join` (waking a sleeping worker, its steal and the join), in ns:
+/// the latency `par_solve` weighs a piece's cost against.
 ///
-/// Chosen from `benches/par_batch.rs` (the table is in
-/// `docs/performance.md`, "Over many cores"): on the four-bar's batch (18
-/// output columns) two pieces beat one thread from about 2000 elements per
-/// piece in `f64` and 2000 to 4000 in `f32` (the cheaper elements), and
-/// smaller pieces lose up to 25 % to waking and joining a worker. 4096 is
-/// twice the `f32` break-even piece: below 8192 elements `par_solve` runs on
-/// the calling thread. A mechanism whose elements are cheaper than the
-/// four-bar's (fewer groups or outputs) passes a larger `min_len`.
+/// Stated, not measured at run time (a measurement would wake the pool
+/// itself): from `benches/par_batch.rs` (`docs/performance.md`, "Over many
+/// cores"), where one piece per thread loses to one thread by this much on
+/// small batches: about 10 us on the 2-core machine the table was made on
+/// (loaded), 5 to 10 us on a quiet 16-core Xeon (issue 35's figures). An
+/// overestimate only keeps a batch of tens of microseconds on one thread.
 #[cfg(feature = "rayon")]
-pub const PAR_MIN_PIECE: usize = 4096;
+pub const PAR_TASK_NS: f64 = 10_000.0;
+
+/// The first elements `par_solve` solves on the calling thread, timed: the
+/// per-element cost its split is decided from (no wasted work: they are
+/// part of the batch). 256 four-bar elements take 2 to 10 us, well above
+/// the timer's resolution (tens of ns).
+#[cfg(feature = "rayon")]
+pub const PAR_PROBE: usize = 256;
 
 /// Solves `batch` with `solve` over rayon's thread pool and returns the sum
 /// of what `solve` returns (with `solve_batch`: the number of failed
 /// elements). Feature `rayon` (needs `std`).
 ///
-/// The batch is cut into at most one piece per thread of the pool, each of
-/// at least `max(min_len, PAR_MIN_PIECE)` elements, and of equal size (to
-/// one element); a batch too small for two such pieces, or a pool of one
-/// thread, is solved on the calling thread, so that the call is never much
-/// slower than `solve(batch)` (see [`PAR_MIN_PIECE`]). `min_len` can only
-/// raise the piece size (for a mechanism whose elements are cheaper than
-/// the four-bar's); pass 0 for the default.
+/// The split is decided by what a piece costs against what a task costs:
+/// the first [`PAR_PROBE`] elements are solved on the calling thread and
+/// timed, which gives the cost `c` of one element of this mechanism on
+/// this machine; the rest, `m` elements, goes in `p` pieces of equal size
+/// (to one element), `p` the number up to the pool's threads that
+/// minimizes `m c / p + PAR_TASK_NS * ceil(log2 p)` (the work of one piece
+/// plus one task latency per level of `rayon::join`), each of at least
+/// `min_len` elements (pass 0 for no floor). A batch whose rest is cheaper
+/// than about two task latencies, or a pool of one thread, stays on the
+/// calling thread, so the call is never much slower than `solve(batch)`;
+/// a batch worth splitting at all is usually split one piece per thread.
 ///
 /// # Errors
 ///
@@ -174,10 +185,31 @@ where
     B: BatchSplit,
     F: Fn(B) -> Result<usize, BatchError> + Sync,
 {
-    batch.check()?;
-    let piece = min_len.max(PAR_MIN_PIECE);
-    let pieces = (batch.len() / piece).min(rayon::current_num_threads());
-    solve_in_pieces(batch, pieces.max(1), solve)
+    let n = batch.check()?;
+    let threads = rayon::current_num_threads();
+    if threads <= 1 || n <= PAR_PROBE {
+        return solve(batch);
+    }
+    extern crate std;
+    let (probe, rest) = batch.split_at(PAR_PROBE);
+    let start = std::time::Instant::now();
+    let failed = solve(probe)?;
+    let per_element = start.elapsed().as_nanos() as f64 / PAR_PROBE as f64;
+    let pieces = pieces_for(rest.len(), per_element, min_len, threads);
+    Ok(failed + solve_in_pieces(rest, pieces, solve)?)
+}
+
+/// The number of pieces, 1 to `threads`, that minimizes the estimated time
+/// of `m` elements at `per_element` ns each: the work of one piece plus
+/// [`PAR_TASK_NS`] per level of `rayon::join` (`ceil(log2 p)` levels), each
+/// piece at least `min_len` elements.
+#[cfg(feature = "rayon")]
+fn pieces_for(m: usize, per_element: f64, min_len: usize, threads: usize) -> usize {
+    let work = m as f64 * per_element;
+    let most = (m / min_len.max(1)).clamp(1, threads);
+    let cost =
+        |p: usize| work / p as f64 + PAR_TASK_NS * f64::from(usize::BITS - (p - 1).leading_zeros());
+    (1..=most).fold(1, |best, p| if cost(p) < cost(best) { p } else { best })
 }
 
 /// Solves `batch` in `pieces` pieces of equal size (to one element), in
@@ -219,4 +251,29 @@ macro_rules! __with_alloc {
 #[macro_export]
 macro_rules! __with_alloc {
     ($($item:tt)*) => {};
+}
+
+#[cfg(all(test, feature = "rayon"))]
+mod tests {
+    use super::{pieces_for, PAR_TASK_NS};
+
+    /// The split weighs the work against the task latency: a batch cheaper
+    /// than about two latencies stays whole, one worth splitting goes one
+    /// piece per thread, and `min_len` caps the pieces.
+    #[test]
+    fn pieces_follow_the_cost_of_the_work() {
+        // 1000 elements of 10 ns: 10 us of work, one latency: whole.
+        assert_eq!(pieces_for(1000, 10.0, 0, 16), 1);
+        // Work of 4 latencies on 2 threads: halves (2 + 1 < 4).
+        let m = (4.0 * PAR_TASK_NS / 10.0) as usize;
+        assert_eq!(pieces_for(m, 10.0, 0, 2), 2);
+        // Work of 100 latencies on 16 threads: 16 pieces (6.25 + 4 levels).
+        let m = (100.0 * PAR_TASK_NS / 10.0) as usize;
+        assert_eq!(pieces_for(m, 10.0, 0, 16), 16);
+        // The same with pieces of at least m / 3 elements: 3.
+        assert_eq!(pieces_for(m, 10.0, m / 3, 16), 3);
+        // A zero or NaN cost (a timer that did not advance): whole.
+        assert_eq!(pieces_for(m, 0.0, 0, 16), 1);
+        assert_eq!(pieces_for(m, f64::NAN, 0, 16), 1);
+    }
 }

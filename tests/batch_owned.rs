@@ -312,18 +312,18 @@ mod par_solve {
         assert_eq!((e.slice, e.len, e.expected), ("vel_B_y", 9_999, 10_000));
         assert_eq!(calls.load(Ordering::Relaxed), 0);
         assert!(c.status.iter().all(|s| *s == 9));
-        // Equal lengths: every piece runs. The documented split: one piece
-        // per pool thread, each of at least max(512, PAR_MIN_PIECE) elements.
-        let pieces = (10_000 / mechanism::PAR_MIN_PIECE.max(512))
-            .min(rayon::current_num_threads())
-            .max(1);
+        // Equal lengths: every piece runs. The documented split: the timed
+        // probe on the calling thread, then at most one piece per pool
+        // thread (how many depends on the time the probe took).
+        let most = 1 + rayon::current_num_threads();
         c.vel_B_y.push(0.0);
         let r = mechanism::par_solve(c.as_batch(), 512, &|mut b| {
             calls.fetch_add(1, Ordering::Relaxed);
             m.solve_batch(&mut b)
         });
         assert_eq!(r, Ok(0));
-        assert_eq!(calls.load(Ordering::Relaxed), pieces);
+        let calls = calls.load(Ordering::Relaxed);
+        assert!((1..=most).contains(&calls), "{calls} calls");
         assert!(c.status.iter().all(|s| *s == 0));
     }
 }

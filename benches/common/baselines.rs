@@ -102,6 +102,60 @@ pub fn closed_form<T: F>(t2: T, w2: T, al2: T) -> FourBarOut<T> {
     }
 }
 
+/// Dimensions (m) of the offset slider-crank of `scenes::SliderCrank`: crank
+/// about O = (0, 0), connecting rod, slide line `y = SLIDER_OFFSET` along +x.
+pub const SLIDER_CRANK: f64 = 0.1;
+/// Connecting rod length (m).
+pub const SLIDER_ROD: f64 = 0.4;
+/// Height of the slide line (m).
+pub const SLIDER_OFFSET: f64 = 0.02;
+
+/// The offset slider-crank's outputs: the slider pin B (m), its velocity
+/// (m/s) and acceleration (m/s^2), the rod's angle `t3` (rad, from +x,
+/// counter-clockwise), rate `w3` (rad/s) and acceleration `al3` (rad/s^2).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SliderCrankOut<T> {
+    pub b: (T, T),
+    pub vb: (T, T),
+    pub ab: (T, T),
+    pub t3: T,
+    pub w3: T,
+    pub al3: T,
+}
+
+/// The offset slider-crank in closed form as one would write it by hand
+/// for this one mechanism (B ahead of A along +x): A from the crank angle,
+/// the rod's rise `dy = e - A.y` fixed by the line, its run
+/// `dx = sqrt(L^2 - dy^2)`; the line holds B's vertical velocity and
+/// acceleration at zero, so `w3 = -vA.y / dx` and
+/// `al3 = (w3^2 dy - aA.y) / dx`; one `sin_cos`, one `sqrt`, one `atan2`,
+/// one division; no error checks (NaN when the rod cannot reach the line).
+#[inline(always)]
+pub fn slider_crank_closed_form<T: F>(t2: T, w2: T, al2: T) -> SliderCrankOut<T> {
+    let (r, l, e) = (T::c(SLIDER_CRANK), T::c(SLIDER_ROD), T::c(SLIDER_OFFSET));
+    let (s2, c2) = t2.sin_cos();
+    let (ax, ay) = (r * c2, r * s2);
+    let dy = e - ay;
+    let dx = (l * l - dy * dy).sqrt();
+    let idx = T::one() / dx;
+    // vA = w2 perp(A); vB = vA + w3 perp(B - A), vB.y = 0.
+    let (vax, vay) = (-w2 * ay, w2 * ax);
+    let w3 = -vay * idx;
+    // aA = al2 perp(A) - w2^2 A; aB = aA + al3 perp(B - A) - w3^2 (B - A), aB.y = 0.
+    let w22 = w2 * w2;
+    let (aax, aay) = (-al2 * ay - w22 * ax, al2 * ax - w22 * ay);
+    let w32 = w3 * w3;
+    let al3 = (w32 * dy - aay) * idx;
+    SliderCrankOut {
+        b: (ax + dx, e),
+        vb: (vax - w3 * dy, T::zero()),
+        ab: (aax - al3 * dy - w32 * dx, T::zero()),
+        t3: dy.atan2(dx),
+        w3,
+        al3,
+    }
+}
+
 /// Residual, Jacobian, (sin, cos) of t3 and of t4.
 type LoopEq<T> = (Vector2<T>, Matrix2<T>, (T, T), (T, T));
 

@@ -12,6 +12,7 @@
 //! once per grid point from the reference's motion and handed to both the
 //! generated code and the reference, so both solve the same problem.
 
+use crate::global_forces as gf;
 use crate::scenes::{
     ShaperForces, ShaperForcesInput, ShaperForcesLoads, SineMechanism, SineMechanismInput,
 };
@@ -524,6 +525,121 @@ fn sweep<'a, T: Real + 'static>(
     }
 }
 
+/// The global Newton-Euler method's answer at one grid point (f64; `heap`:
+/// `DMatrix`, else `SMatrix`); its power residual is not computed (0).
+fn global(name: &str, q: f64, w: f64, a: f64, load: f64, heap: bool) -> GenSample {
+    macro_rules! solve {
+        ($pose:expr, $n:literal) => {{
+            let ps = $pose?;
+            let cols = if heap {
+                gf::columns(
+                    &ps.joints,
+                    &gf::solve_heap(&ps.links, &ps.joints, ps.driven)?,
+                )
+            } else {
+                gf::columns(
+                    &ps.joints,
+                    &gf::solve_fixed::<$n>(&ps.links, &ps.joints, ps.driven)?,
+                )
+            };
+            Some((cols, 0.0))
+        }};
+    }
+    match name {
+        "SineMechanism" => solve!(gf::sine(&SineMechanism::default(), q, w, a), 9),
+        "ShaperForces" => solve!(gf::shaper(&ShaperForces::default(), q, w, a, load), 15),
+        _ => solve!(gf::four_bar(&FourBarForces::default(), q, w, a), 9),
+    }
+}
+
+/// Timed sweep of the generated kinematics alone (`position`, `velocity`,
+/// `acceleration` of the same definition, f64); the checksum sums one
+/// acceleration component.
+fn kinematics_sweep<'a>(name: &str, grid: &[f64], rate: f64, accel: f64) -> Sweep<'a> {
+    let qs = grid.to_vec();
+    macro_rules! run {
+        ($m:expr, $input:ident, $field:ident, $point:ident) => {{
+            let m = $m;
+            let (wi, ai) = ($input { $field: rate }, $input { $field: accel });
+            Box::new(move || {
+                let mut acc = 0.0;
+                for &q in &qs {
+                    let m = black_box(&m);
+                    let Ok(pos) = m.position(&$input { $field: q }) else {
+                        continue;
+                    };
+                    let Ok(vel) = m.velocity(&pos, &wi) else {
+                        continue;
+                    };
+                    if let Ok(a) = m.acceleration(&pos, &vel, &ai) {
+                        acc += a.$point.x;
+                    }
+                }
+                acc
+            })
+        }};
+    }
+    match name {
+        "SineMechanism" => run!(SineMechanism::<f64>::default(), SineMechanismInput, phi1, Q),
+        "ShaperForces" => run!(ShaperForces::<f64>::default(), ShaperForcesInput, crank, E),
+        _ => run!(
+            FourBarForces::<f64>::default(),
+            FourBarForcesInput,
+            theta2,
+            G3
+        ),
+    }
+}
+
+/// Timed sweep of the global method (f64): the generated kinematics, the
+/// system assembled, then solved by fixed-size (`heap`: heap) LU; the
+/// checksum sums the driving torque and one reaction component.
+fn global_sweep<'a>(
+    name: &str,
+    grid: &[f64],
+    rate: f64,
+    accel: f64,
+    loads: &[f64],
+    heap: bool,
+) -> Sweep<'a> {
+    let qs = grid.to_vec();
+    let ls = loads.to_vec();
+    macro_rules! run {
+        ($m:expr, $pose:expr, $n:literal) => {{
+            let m = $m;
+            Box::new(move || {
+                let mut acc = 0.0;
+                for (&q, &l) in qs.iter().zip(&ls) {
+                    let Some(ps) = $pose(black_box(&m), q, rate, accel, l) else {
+                        continue;
+                    };
+                    acc += if heap {
+                        gf::solve_heap(&ps.links, &ps.joints, ps.driven)
+                            .map_or(0.0, |x| x[$n - 1] + x[0])
+                    } else {
+                        gf::solve_fixed::<$n>(&ps.links, &ps.joints, ps.driven)
+                            .map_or(0.0, |x| x[$n - 1] + x[0])
+                    };
+                }
+                acc
+            })
+        }};
+    }
+    match name {
+        "SineMechanism" => run!(
+            SineMechanism::<f64>::default(),
+            |m, q, w, a, _| gf::sine(m, q, w, a),
+            9
+        ),
+        "ShaperForces" => run!(ShaperForces::<f64>::default(), gf::shaper, 15),
+        _ => run!(
+            FourBarForces::<f64>::default(),
+            |m, q, w, a, _| gf::four_bar(m, q, w, a),
+            9
+        ),
+    }
+}
+
 /// Error figures of one method on one scene.
 #[derive(Default)]
 struct ForceErrors {
@@ -631,6 +747,31 @@ fn references(
     out
 }
 
+/// The target lines of one scene from its medians (rows in the order of the
+/// table: generated f64 `solve`, f32, kinematics alone, global fixed, global
+/// heap). The force analysis alone is a row's time less the kinematics'.
+fn force_targets(name: &str, ns: &[Vec<f64>]) -> Vec<String> {
+    let med = |k: usize| timing::stats(&ns[k]).0;
+    let (solve, kin, fixed) = (med(0), med(2), med(3));
+    let (gen_f, fixed_f) = (solve - kin, fixed - kin);
+    let met = |b: bool| if b { "**met**" } else { "**not met**" };
+    let speedup = fixed_f / gen_f;
+    let ratio = solve / kin;
+    vec![
+        format!(
+            "{name}: generated force analysis {gen_f:.1} ns (`solve` {solve:.1} less kinematics \
+             {kin:.1}) vs the fixed-size global solve {fixed_f:.1} ns ({fixed:.1} less the same \
+             kinematics): {speedup:.2}x faster (target >= 3): {}",
+            met(speedup >= 3.0)
+        ),
+        format!(
+            "{name}: whole `solve` with forces {solve:.1} ns = {ratio:.2}x its kinematics alone \
+             {kin:.1} ns (target <= 2): {}",
+            met(ratio <= 2.0)
+        ),
+    ]
+}
+
 /// The forces section of the report (markdown), and one CSV per scene in
 /// `out_dir`.
 pub fn section(out_dir: &Path) -> String {
@@ -652,10 +793,18 @@ pub fn section(out_dir: &Path) -> String {
          column's largest value (columns that are zero in exact arithmetic: over the largest \
          column of their unit). f32 methods are compared with the reference at their \
          f32-rounded inputs (the loads are decided once per grid point from the f64 \
-         reference's motion). `power_residual`: the largest the generated code reports.\n",
+         reference's motion). `power_residual`: the largest the generated code reports. \
+         Beside it, timed in the same rounds: the same definition's kinematics alone \
+         (`position`, `velocity`, `acceleration`), and the global method a user would write \
+         (`examples/report/global_forces.rs`): after those kinematics, all links' Newton-Euler \
+         equations with every reaction and the driving torque as unknowns, assembled per pose \
+         into one square system (3 rows per moving link) and solved by nalgebra's LU with \
+         partial pivoting, fixed-size (`SMatrix`) or heap (`DMatrix`); its errors are against \
+         the same reference. The force analysis alone is a row's time less the kinematics'.\n",
         mechanism_reference::newton_euler::RESIDUAL_TOLERANCE
     );
     let mut problems = Vec::new();
+    let mut targets = Vec::new();
     for sc in scenes() {
         eprintln!("forces {}", sc.name);
         let ref64 = references(&sc, &sc.grid, sc.rate, sc.accel, None, &mut problems);
@@ -695,10 +844,33 @@ pub fn section(out_dir: &Path) -> String {
             .collect();
         let e64 = compare(&sc, &ref64, &scale, &s64);
         let e32 = compare(&sc, &ref32, &scale, &s32);
+        let global_of = |heap| {
+            let s: Vec<GenSample> = sc
+                .grid
+                .iter()
+                .zip(&loads)
+                .map(|(&q, &l)| global(sc.name, q, sc.rate, sc.accel, l, heap))
+                .collect();
+            compare(&sc, &ref64, &scale, &s)
+        };
+        let (e_fixed, e_heap) = (global_of(false), global_of(true));
         let sw64 = sweep::<f64>(sc.name, &sc.grid, sc.rate, sc.accel, &loads);
         let sw32 = sweep::<f32>(sc.name, &sc.grid, sc.rate, sc.accel, &loads);
+        let sw_kin = kinematics_sweep(sc.name, &sc.grid, sc.rate, sc.accel);
+        let sw_fixed = global_sweep(sc.name, &sc.grid, sc.rate, sc.accel, &loads, false);
+        let sw_heap = global_sweep(sc.name, &sc.grid, sc.rate, sc.accel, &loads, true);
         let n = sc.grid.len();
-        let ns = timing::interleaved(&[(&sw64, n), (&sw32, n)], ROUNDS, MIN_SAMPLE_NS);
+        let ns = timing::interleaved(
+            &[
+                (&sw64, n),
+                (&sw32, n),
+                (&sw_kin, n),
+                (&sw_fixed, n),
+                (&sw_heap, n),
+            ],
+            ROUNDS,
+            MIN_SAMPLE_NS,
+        );
         let _ = writeln!(md, "### {}\n", sc.name);
         let f_scale = sc
             .columns
@@ -732,21 +904,42 @@ pub fn section(out_dir: &Path) -> String {
         let mut csv = String::from(
             "method,ns_median,ns_min,ns_max,force_abs,moment_abs,rel,worst,power_residual,failures\n",
         );
-        for (name, e, ns) in [
-            ("generated f64 forces", &e64, &ns[0]),
-            ("generated f32 forces", &e32, &ns[1]),
-        ] {
+        let none = ForceErrors::default();
+        let rows = [
+            (
+                "generated f64 `solve` (kinematics and forces)",
+                &e64,
+                &ns[0],
+            ),
+            (
+                "generated f32 `solve` (kinematics and forces)",
+                &e32,
+                &ns[1],
+            ),
+            ("generated f64 kinematics alone", &none, &ns[2]),
+            (
+                "global Newton-Euler, nalgebra SMatrix LU f64",
+                &e_fixed,
+                &ns[3],
+            ),
+            ("global Newton-Euler, heap DMatrix LU f64", &e_heap, &ns[4]),
+        ];
+        for (k, &(name, e, ns)) in rows.iter().enumerate() {
             let (med, lo, hi) = timing::stats(ns);
-            let _ = writeln!(
-                md,
-                "| {name} | {med:.1} | {lo:.1} - {hi:.1} | {} | {} | {} | {} | {} | {} |",
-                sci(e.force_abs),
-                sci(e.moment_abs),
-                sci(e.rel),
-                e.worst,
-                sci(e.power),
-                e.failures
-            );
+            let errs = if k == 2 {
+                "- | - | - | - | - | -".to_string()
+            } else {
+                format!(
+                    "{} | {} | {} | {} | {} | {}",
+                    sci(e.force_abs),
+                    sci(e.moment_abs),
+                    sci(e.rel),
+                    e.worst,
+                    if k >= 3 { "-".into() } else { sci(e.power) },
+                    e.failures
+                )
+            };
+            let _ = writeln!(md, "| {name} | {med:.1} | {lo:.1} - {hi:.1} | {errs} |");
             let _ = writeln!(
                 csv,
                 "{name},{med},{lo},{hi},{},{},{},{},{},{}",
@@ -754,12 +947,18 @@ pub fn section(out_dir: &Path) -> String {
             );
         }
         let _ = writeln!(md);
+        targets.push(force_targets(sc.name, &ns));
         std::fs::write(
             out_dir.join(format!("forces_{}.csv", sc.name.to_lowercase())),
             csv,
         )
         .expect("write forces csv");
     }
+    let _ = writeln!(md, "### Targets (forces, issue 35)\n");
+    for t in targets.iter().flatten() {
+        let _ = writeln!(md, "- {t}");
+    }
+    let _ = writeln!(md);
     if !problems.is_empty() {
         let _ = writeln!(md, "Reference failures (forces):\n");
         for p in problems.iter().take(20) {

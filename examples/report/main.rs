@@ -21,6 +21,8 @@ mod dynamics_dense;
 /// The forces section: generated force analysis against the Newton-Euler reference.
 mod forces;
 mod generated;
+/// The global Newton-Euler method, the timed baseline of the forces section.
+mod global_forces;
 /// The inverse-kinematics section: the five-bar given its end point.
 mod inverse;
 mod methods;
@@ -333,7 +335,11 @@ fn main() {
     );
     let mut all_problems = Vec::new();
     let mut target_lines = Vec::new();
-    for scene in reference::scenes() {
+    // One kinematic scene's table and target lines alone (development):
+    // `REPORT_SCENE_ONLY=SliderCrank`; not written to summary.md.
+    let only_scene = std::env::var("REPORT_SCENE_ONLY").ok();
+    let wanted = |name: &str| only_scene.as_deref().is_none_or(|n| n == name);
+    for scene in reference::scenes().into_iter().filter(|s| wanted(s.name)) {
         eprintln!("scene {}", scene.name);
         let grid64 = scene.grid.clone();
         let r32 = |v: &[f64]| v.iter().map(|&x| x as f32 as f64).collect::<Vec<_>>();
@@ -465,6 +471,13 @@ fn main() {
         );
         let _ = writeln!(md, "Plot: `target/report/{file}`.\n");
         target_lines.extend(methods::targets(&scene, &ms, floor));
+    }
+    if only_scene.is_some() {
+        for l in &target_lines {
+            let _ = writeln!(md, "- {l}");
+        }
+        outln!("{md}");
+        return;
     }
     eprintln!("scene Stephenson (triad)");
     md += &triad::section(&out_dir);

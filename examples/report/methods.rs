@@ -2,7 +2,7 @@
 //! four-bar also without angle outputs) and, for the four-bar, the baselines
 //! of `benches/common/baselines.rs` and numpy.
 
-use crate::baselines::{self, FourBarOut, COUPLER, CRANK};
+use crate::baselines::{self, FourBarOut, SliderCrankOut, COUPLER, CRANK};
 use crate::generated::{self, Sample};
 use crate::reference::Scene;
 use crate::scenes::*;
@@ -171,6 +171,86 @@ fn newton_method<'a>(
         samples,
         Some(sweep),
     )
+}
+
+/// A sample of the hand-written slider-crank (the generated scene's columns:
+/// B, the rod's angle, their rates and accelerations).
+fn slider_crank_sample(q: f64, o: &SliderCrankOut<f64>) -> Sample {
+    let a = (
+        baselines::SLIDER_CRANK * q.cos(),
+        baselines::SLIDER_CRANK * q.sin(),
+    );
+    let e = baselines::SLIDER_OFFSET;
+    Sample {
+        cols: [
+            o.b.0, o.b.1, o.t3, o.vb.0, o.vb.1, o.w3, o.ab.0, o.ab.1, o.al3,
+        ]
+        .map(Some)
+        .to_vec(),
+        points: vec![(0.0, 0.0), (0.0, e), (1.0, e), a, o.b],
+    }
+}
+
+/// The hand-written closed form of the slider-crank, f64 and f32
+/// (`baselines::slider_crank_closed_form`); the checksum sums the same
+/// outputs as the generated rows'.
+fn slider_crank_closed_forms(scene: &Scene) -> Vec<Method<'_>> {
+    use baselines::slider_crank_closed_form as cf;
+    let (w, a) = (scene.rates[0], scene.accels[0]);
+    let grid = &scene.grid;
+    let samples = grid
+        .iter()
+        .map(|q| Some(slider_crank_sample(q[0], &cf(q[0], w, a))))
+        .collect();
+    let sweep: Sweep = Box::new(move || {
+        let mut acc = 0.0;
+        for q in grid {
+            let o = cf(black_box(q[0]), w, a);
+            acc += o.b.0 + o.t3 + o.vb.0 + o.w3 + o.ab.0 + o.al3;
+        }
+        black_box(acc)
+    });
+    let m64 = method(
+        "hand-written closed form",
+        "hand-written closed form f64",
+        Precision::F64,
+        samples,
+        Some(sweep),
+    );
+    let g32: Vec<f32> = grid.iter().map(|q| q[0] as f32).collect();
+    let (w32, a32) = (w as f32, a as f32);
+    let samples = g32
+        .iter()
+        .map(|&q| {
+            let o = cf(q, w32, a32);
+            let f = |x: f32| x as f64;
+            let o = SliderCrankOut {
+                b: (f(o.b.0), f(o.b.1)),
+                vb: (f(o.vb.0), f(o.vb.1)),
+                ab: (f(o.ab.0), f(o.ab.1)),
+                t3: f(o.t3),
+                w3: f(o.w3),
+                al3: f(o.al3),
+            };
+            Some(slider_crank_sample(q as f64, &o))
+        })
+        .collect();
+    let sweep: Sweep = Box::new(move || {
+        let mut acc = 0.0f32;
+        for &q in &g32 {
+            let o = cf(black_box(q), w32, a32);
+            acc += o.b.0 + o.t3 + o.vb.0 + o.w3 + o.ab.0 + o.al3;
+        }
+        black_box(acc) as f64
+    });
+    let m32 = method(
+        "hand-written closed form",
+        "hand-written closed form f32",
+        Precision::F32,
+        samples,
+        Some(sweep),
+    );
+    vec![m64, m32]
 }
 
 /// Every method of a scene.
@@ -369,6 +449,7 @@ pub fn for_scene<'a>(scene: &'a Scene, out_dir: &Path) -> Vec<Method<'a>> {
                     + s.acceleration.B.x
                     + s.acceleration.link3
             );
+            v.extend(slider_crank_closed_forms(scene));
         }
         "FiveBar" => {
             gen_pair!(
@@ -493,6 +574,22 @@ pub fn targets(scene: &Scene, ms: &[Method], floor: (f64, f64)) -> Vec<String> {
             na / g,
             ok(na / g <= 0.6)
         ));
+    }
+    if scene.name == "SliderCrank" {
+        for (p, target) in [("f64", 1.2), ("f32", 1.5)] {
+            let g = find(&format!("generated {p}"))
+                .map(median)
+                .unwrap_or(f64::NAN);
+            let cf = find(&format!("hand-written closed form {p}"))
+                .map(median)
+                .unwrap_or(f64::NAN);
+            out.push(format!(
+                "SliderCrank generated {p} {g:.1} ns vs hand-written closed form {cf:.1} ns \
+                 (ratio {:.2}, target <= {target}, issue 35): {}",
+                g / cf,
+                ok(g / cf <= target)
+            ));
+        }
     }
     out
 }

@@ -650,6 +650,7 @@ pub fn section(out_dir: &Path) -> String {
             med / near
         );
     }
+    md += &targets(&ms, &errs);
     let _ = writeln!(
         md,
         "\nScales above (the columns' largest |reference| values): A.x {:.3}, B.x {:.3}, P.x \
@@ -669,6 +670,32 @@ pub fn section(out_dir: &Path) -> String {
     )
     .expect("write stephenson.svg");
     md
+}
+
+/// The issue-35 target lines (rows in the order of the table: `position()`,
+/// `position_near`, Newton SMatrix, ...; `errs`: each method's column errors).
+fn targets(ms: &[Method], errs: &[Vec<Vec<f64>>]) -> String {
+    let med = |k: usize| timing::stats(&ms[k].ns).0;
+    let (full, near, newton) = (med(0), med(1), med(2));
+    let met = |b: bool| if b { "**met**" } else { "**not met**" };
+    let worst = |e: &[Vec<f64>], ks: std::ops::Range<usize>| {
+        ks.map(|k| max_med(&e[k]).0).fold(0.0f64, f64::max)
+    };
+    let figures = |e: &[Vec<f64>]| [worst(e, 6..10), worst(e, 0..6), worst(e, 10..30)].map(sci);
+    let ([a, p, r], [an, pn, rn]) = (figures(&errs[1]), figures(&errs[2]));
+    format!(
+        "\nTargets (issue 35, this run):\n\n\
+         - `position()` with rates and accelerations {full:.1} ns = {:.2}x `position_near` \
+         {near:.1} ns (target <= 5): {}\n\
+         - `position_near` with rates and accelerations {near:.1} ns = {:.2}x the warm-started \
+         SMatrix Newton {newton:.1} ns (target <= 0.5): {}\n\
+         - accuracy of `position_near` over the swing: angles {a} rad, positions {p}, rates and \
+         accelerations {r} relative (the SMatrix Newton's: {an} rad, {pn}, {rn})\n",
+        full / near,
+        met(full / near <= 5.0),
+        near / newton,
+        met(near / newton <= 0.5),
+    )
 }
 
 fn col_name(k: usize) -> String {

@@ -169,10 +169,14 @@ pub fn solve_in_place<T: Real, const N: usize>(
                 },
             ));
         }
+        // One division per row: the scaling only equilibrates, so the
+        // rounding of `1 / s` (at most half an ulp per entry) is immaterial,
+        // and a power-of-two `s` still scales exactly.
+        let inv = T::one() / s;
         for v in row.iter_mut() {
-            *v /= s;
+            *v *= inv;
         }
-        *bi /= s;
+        *bi *= inv;
         *si = s;
     }
 
@@ -230,10 +234,11 @@ pub fn solve_in_place<T: Real, const N: usize>(
         let (Some(pivot_row), Some(&bk)) = (upper.last(), b_upper.last()) else {
             continue;
         };
+        let inv_pivot = T::one() / pivot;
         for (row, bi) in lower.iter_mut().zip(b_lower.iter_mut()) {
             let e = row[k];
             if e != T::zero() {
-                let m = e / pivot;
+                let m = e * inv_pivot;
                 for j in k + 1..N {
                     row[j] -= m * pivot_row[j];
                 }
