@@ -52,6 +52,16 @@ mechanism! {
     }
 }
 
+/// Gap between free crank angles (rad) below which [`Problem::snap`] tries
+/// the gap closed: 1e-3 rad moves a coupler point of the benchmark cases by
+/// a few hundredths of a percent of its path, well inside a local solve's
+/// reach, and no optimum found on the cases has a gap between 1e-9 and 1e-3.
+const SNAP_GAP: f64 = 1e-3;
+
+/// Most small gaps whose closings [`Problem::faces`] combines (`2^3 - 1 = 7`
+/// designs to polish at most).
+const SNAP_MOST: usize = 3;
+
 /// Weight of the triangle residual (per unit length of violation): large
 /// against the path residuals, so a start that violates it is pulled back first.
 const TRIANGLE_WEIGHT: f64 = 1e3;
@@ -535,6 +545,35 @@ impl Problem for PathProblem {
             }
         }
     }
+    /// Free timing: the gaps before the first, between two, or after the
+    /// last crank angle that are below [`SNAP_GAP`] rad (the angles' order
+    /// bound nearly active: two targets at one crank angle, or an end angle
+    /// near 0 or `2 pi`), closed in every combination (the smallest
+    /// [`SNAP_MOST`] of them: an optimum may close one and keep its neighbour
+    /// small but open). Prescribed timing: none.
+    fn faces(&self, x: &[f64]) -> Vec<Vec<f64>> {
+        if !matches!(self.timing, Timing::Free) {
+            return Vec::new();
+        }
+        let b = self.angle_base();
+        let total: f64 = x[b..].iter().map(|v| v * v).sum();
+        let mut small: Vec<usize> = (b..x.len())
+            .filter(|&j| x[j] != 0.0 && TAU * x[j] * x[j] <= SNAP_GAP * total)
+            .collect();
+        small.sort_by(|&i, &j| x[i].abs().total_cmp(&x[j].abs()));
+        small.truncate(SNAP_MOST);
+        (1..1usize << small.len())
+            .map(|set| {
+                let mut y = x.to_vec();
+                for (k, &j) in small.iter().enumerate() {
+                    if set & (1 << k) != 0 {
+                        y[j] = 0.0;
+                    }
+                }
+                y
+            })
+            .collect()
+    }
     fn canonical(&self, x: &mut [f64]) {
         if self.frame.is_none() {
             x[6] = x[6].rem_euclid(TAU);
@@ -548,5 +587,57 @@ impl Problem for PathProblem {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! What `faces` offers: the small gaps of a free-timing design closed in
+    //! every combination, everything else unchanged; nothing for prescribed
+    //! timing or a design with no small gap.
+    use super::*;
+    use crate::cases;
+
+    fn case(id: &str) -> PathProblem {
+        let c = cases::all().into_iter().find(|c| c.id == id);
+        c.map(|c| c.problem(Mode::Plus))
+            .unwrap_or_else(|| panic!("{id}"))
+    }
+
+    #[test]
+    fn faces_close_the_small_gaps_in_every_combination() {
+        let p = case("ellipse10_free");
+        let b = p.angle_base();
+        // Eleven gap variables: two small (gaps of about 7e-7 and 6e-6
+        // rad), the rest equal.
+        let mut x = vec![30.0, 0.5, 30.0, 30.0, 1.0, 1.0, 0.5, 1.0, 1.0];
+        x.extend(std::iter::repeat_n(1.0, p.dim() - b));
+        x[b] = 1e-3;
+        x[p.dim() - 1] = 3e-3;
+        let faces = p.faces(&x);
+        assert_eq!(faces.len(), 3);
+        let closed: Vec<(bool, bool)> = faces
+            .iter()
+            .map(|y| (y[b] == 0.0, y[p.dim() - 1] == 0.0))
+            .collect();
+        assert!(closed.contains(&(true, false)));
+        assert!(closed.contains(&(false, true)));
+        assert!(closed.contains(&(true, true)));
+        for y in &faces {
+            for j in (0..p.dim()).filter(|&j| j != b && j != p.dim() - 1) {
+                assert_eq!(y[j], x[j], "variable {j} moved");
+            }
+        }
+        // No small gap: no face.
+        x[b] = 1.0;
+        x[p.dim() - 1] = 1.0;
+        assert!(p.faces(&x).is_empty());
+    }
+
+    #[test]
+    fn prescribed_timing_has_no_faces() {
+        let p = case("arc5_timed");
+        let x: Vec<f64> = (0..p.dim()).map(|_| 1e-9).collect();
+        assert!(p.faces(&x).is_empty());
     }
 }

@@ -101,4 +101,7 @@ impl<P: Problem> Problem for MaxError<P> {
     fn reseat(&self, x: &mut [f64]) {
         self.inner.reseat(x);
     }
+    fn faces(&self, x: &[f64]) -> Vec<Vec<f64>> {
+        self.inner.faces(x)
+    }
 }

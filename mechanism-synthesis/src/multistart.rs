@@ -135,6 +135,27 @@ pub fn run<P: Problem>(
         if out.cost < b.cost {
             *b = out;
         }
+        // Variables crawling towards a face their parametrization reaches
+        // only in the limit: the designs on those faces, each polished, the
+        // best kept when better (`Problem::faces`).
+        for face in p.faces(&b.x) {
+            let mut from = face;
+            let mut last = f64::INFINITY;
+            for _ in 0..POLISH_ROUNDS {
+                let out = solver.minimize(p, &from, &settings.polish);
+                evaluations += out.evaluations;
+                jacobians += out.jacobians;
+                let gain = last - out.cost;
+                last = out.cost;
+                from.copy_from_slice(&out.x);
+                if out.cost < b.cost {
+                    *b = out;
+                }
+                if gain <= POLISH_GAIN * last {
+                    break;
+                }
+            }
+        }
     }
     let outcome = best.unwrap_or(Outcome {
         x: start,

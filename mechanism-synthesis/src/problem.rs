@@ -39,6 +39,15 @@ pub trait Problem {
     /// local solve with them in their best basin. The default leaves `x`
     /// unchanged.
     fn reseat(&self, _x: &mut [f64]) {}
+    /// Designs near `x` on the faces of the feasible set that the
+    /// parametrization reaches only in the limit (a squared gap `v^2` that
+    /// tends to zero: its Jacobian column vanishes with it, so a local solve
+    /// approaches such a face linearly and crawls): each is `x` with some of
+    /// those variables put on their face. The solvers polish each and keep
+    /// the best when it is better than `x`. The default offers none.
+    fn faces(&self, _x: &[f64]) -> Vec<Vec<f64>> {
+        Vec::new()
+    }
 }
 
 /// The objective: the sum of squared residuals, or `+inf` when the design
