@@ -265,11 +265,14 @@ impl super::run::RunKind for Point<'_> {
             Local::Cartesian(x, y) => Vector2::new(cx.num(x), cx.num(y)),
             Local::Polar(d, a) => geometry::unit(cx.num(a)) * cx.num(d),
         };
+        let (me, from) = (cx.me(self.stmt), cx.point(self.from));
         Box::new(PointRun {
-            me: cx.me(self.stmt),
+            me,
             link: cx.link(self.link),
-            from: cx.point(self.from),
+            from,
             offset,
+            moves: cx.moves(me.point),
+            from_moves: cx.moves(from),
         })
     }
 }
@@ -281,6 +284,11 @@ struct PointRun {
     link: LinkSlot,
     from: PointSlot,
     offset: Vector2<f64>,
+    /// Whether the point moves (its rates are written) and whether `from`
+    /// does (its motion is the base of the point's), read once from the
+    /// layout when compiled.
+    moves: bool,
+    from_moves: bool,
 }
 
 impl super::run::Step for PointRun {
@@ -295,33 +303,33 @@ impl super::run::Step for PointRun {
     }
 
     /// The motion of a point on a link: its base's plus the motion about
-    /// the base, checked as the generated code checks it.
+    /// the base, checked as the generated code checks it: the sum alone
+    /// when the base moves, the motion about the base otherwise (only the
+    /// one used is computed).
     fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
-        let (link, from) = (self.link, self.from);
-        if !cx.moves(self.me.point) {
+        if !self.moves {
             return Ok(());
         }
-        let base = cx.moves(from).then(|| cx.motion_of(from));
-        let offset = cx.pose.point(self.me.point) - cx.pose.point(from);
-        let relative = match (cx.link_rate(link), cx.accel()) {
-            (None, _) => None,
-            (Some(w), false) => Some((
+        let link = self.link;
+        let offset = cx.pose.point(self.me.point) - cx.pose.point(self.from);
+        let rate = cx.link_rate(link);
+        let value = match (self.from_moves, rate, cx.accel()) {
+            (true, None, _) => cx.motion_of(self.from),
+            (true, Some(w), false) => link::point_sum(
+                &cx.motion_of(self.from),
                 link::relative_velocity(&offset, w),
-                link::point_velocity(&offset, w),
-            )),
-            (Some(alpha), true) => {
+            )?,
+            (true, Some(alpha), true) => {
                 let w = cx.link_omega_in_accel(link).unwrap_or(0.0);
-                Some((
-                    link::relative_acceleration(&offset, w, alpha),
-                    link::point_acceleration(&offset, w, alpha),
-                ))
+                let r = link::relative_acceleration(&offset, w, alpha);
+                link::point_sum(&cx.motion_of(self.from), r)?
             }
-        };
-        let value = match (base, relative) {
-            (Some(b), Some((r, _))) => link::point_sum(&b, r)?,
-            (Some(b), None) => b,
-            (None, Some((_, checked))) => checked?,
-            (None, None) => Vector2::zeros(),
+            (false, None, _) => Vector2::zeros(),
+            (false, Some(w), false) => link::point_velocity(&offset, w)?,
+            (false, Some(alpha), true) => {
+                let w = cx.link_omega_in_accel(link).unwrap_or(0.0);
+                link::point_acceleration(&offset, w, alpha)?
+            }
         };
         cx.set_motion(&self.me, value);
         Ok(())

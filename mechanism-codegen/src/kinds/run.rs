@@ -228,6 +228,11 @@ impl Compile<'_> {
         self.layout.link_named(&n.to_string())
     }
 
+    /// `true` when point `p` moves (its rates are computed).
+    pub fn moves(&self, p: PointSlot) -> bool {
+        self.layout.moving.get(p.index()).copied().unwrap_or(false)
+    }
+
     /// The slot of input `n`.
     pub fn input(&self, n: &Ident) -> InputSlot {
         self.layout.input_named(&n.to_string())

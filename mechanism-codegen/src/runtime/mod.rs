@@ -115,18 +115,24 @@ enum PosOut {
     Slide { stmt: StmtId, k: usize },
 }
 
-/// Where a rate output comes from.
-#[derive(Clone, Copy, Debug)]
-enum RateOut {
-    /// A moving point's motion.
-    Point(PointSlot),
-    /// A turning link's rate.
-    Link(LinkSlot),
-    /// A slide's rate.
-    Slide(StepSlot, usize),
-    /// A point that does not move or a link that does not turn: zero (one
-    /// value per point coordinate).
-    Zero(usize),
+/// Where the rate outputs come from, by kind, in the order of the values
+/// (every point's two, then every link's, then every slide's): each kind
+/// read in its own loop, without a dispatch per output.
+#[derive(Clone, Debug, Default)]
+struct RateOut {
+    /// Each output point's slot (`None`: it does not move; zero).
+    points: Vec<Option<PointSlot>>,
+    /// Each output link's rate slot (`None`: it does not turn; zero).
+    links: Vec<Option<LinkSlot>>,
+    /// Each output slide: its statement and its slide.
+    slides: Vec<(StepSlot, usize)>,
+}
+
+impl RateOut {
+    /// The number of values.
+    fn len(&self) -> usize {
+        2 * self.points.len() + self.links.len() + self.slides.len()
+    }
 }
 
 /// The plan compiled: one step per statement (by statement index), the
@@ -135,7 +141,7 @@ struct Compiled {
     steps: Vec<Box<dyn Step>>,
     solve: Vec<StmtId>,
     pos_out: Vec<PosOut>,
-    rate_out: Vec<RateOut>,
+    rate_out: RateOut,
     /// The force analysis' loads and motors ([`forces::ForcePlan`]).
     forces: forces::ForcePlan,
 }
@@ -208,7 +214,7 @@ impl Mechanism {
                 steps: Vec::new(),
                 solve: Vec::new(),
                 pos_out: Vec::new(),
-                rate_out: Vec::new(),
+                rate_out: RateOut::default(),
                 forces: forces::ForcePlan::default(),
             },
         };
@@ -229,15 +235,12 @@ impl Mechanism {
             .collect();
         let out = &self.plan.outputs;
         let mut pos_out = Vec::new();
-        let mut rate_out = Vec::new();
+        let mut rate_out = RateOut::default();
         for p in &out.points {
             let slot = self.slots.point_named(&p.to_string());
             pos_out.push(PosOut::Point(slot));
-            rate_out.push(if self.slots.moving[slot.index()] {
-                RateOut::Point(slot)
-            } else {
-                RateOut::Zero(2)
-            });
+            let moving = self.slots.moving[slot.index()];
+            rate_out.points.push(moving.then_some(slot));
         }
         for link in &out.links {
             let name = link.to_string();
@@ -247,10 +250,10 @@ impl Mechanism {
                     index: info.index,
                 });
             }
-            rate_out.push(match self.plan.turning_link(&name) {
-                Some(l) => RateOut::Link(self.slots.link_named(&l)),
-                None => RateOut::Zero(1),
-            });
+            let turning = self.plan.turning_link(&name);
+            rate_out
+                .links
+                .push(turning.map(|l| self.slots.link_named(&l)));
         }
         for s in &out.slides {
             pos_out.push(PosOut::Slide {
@@ -260,7 +263,7 @@ impl Mechanism {
             let step = self
                 .slots
                 .point_named(&self.model.stmts[s.stmt].name.to_string());
-            rate_out.push(RateOut::Slide(StepSlot::of(step), s.slot));
+            rate_out.slides.push((StepSlot::of(step), s.slot));
         }
         let forces = forces::ForcePlan::new(self);
         self.compiled = Compiled {
@@ -427,7 +430,7 @@ impl Mechanism {
     /// [`Mechanism::acceleration_into`].
     pub fn new_rates(&self) -> Rates {
         Rates {
-            values: Vec::with_capacity(self.compiled.rate_out.len() + 2),
+            values: Vec::with_capacity(self.compiled.rate_out.len()),
             condition: f64::NAN,
             motion: Motion::new(&self.slots, self.model.inputs.len()),
             solved: false,
@@ -477,8 +480,8 @@ impl Mechanism {
                 }
             }
         }
-        if let Some(bad) = values.iter().find(|v| !v.is_finite()) {
-            return Err(non_finite(*bad));
+        if let Some(bad) = first_non_finite(values) {
+            return Err(non_finite(bad));
         }
         pos.solved = true;
         Ok(())
@@ -572,19 +575,15 @@ impl Mechanism {
         }
         let (values, motion) = (&mut out.values, &out.motion);
         values.clear();
-        for o in &c.rate_out {
-            match *o {
-                RateOut::Point(p) => {
-                    let v = motion.point(p);
-                    values.extend([v.x, v.y]);
-                }
-                RateOut::Link(l) => values.push(motion.link(l)),
-                RateOut::Slide(s, k) => values.push(motion.slide(s, k)),
-                RateOut::Zero(k) => values.extend(std::iter::repeat_n(0.0, k)),
-            }
-        }
-        if let Some(bad) = values.iter().find(|v| !v.is_finite()) {
-            return Err(non_finite(*bad));
+        let o = &c.rate_out;
+        values.extend(o.points.iter().flat_map(|p| {
+            let v = p.map_or_else(mechanism_core::Vector2::zeros, |p| motion.point(p));
+            [v.x, v.y]
+        }));
+        values.extend(o.links.iter().map(|l| l.map_or(0.0, |l| motion.link(l))));
+        values.extend(o.slides.iter().map(|&(s, k)| motion.slide(s, k)));
+        if let Some(bad) = first_non_finite(values) {
+            return Err(non_finite(bad));
         }
         // As the generated `__condition`: the first group's, then `min`.
         out.condition = match motion.conditions.split_first() {
@@ -594,6 +593,16 @@ impl Mechanism {
         out.solved = true;
         Ok(())
     }
+}
+
+/// The first value of `values` that is not finite, if any: one pass
+/// without a branch per value (`&` of every `is_finite`, which the
+/// compiler vectorizes), then a search only when one is found.
+fn first_non_finite(values: &[f64]) -> Option<f64> {
+    if values.iter().fold(true, |ok, v| ok & v.is_finite()) {
+        return None;
+    }
+    values.iter().copied().find(|v| !v.is_finite())
 }
 
 /// The error of an output that is not finite (none of the primitives let
