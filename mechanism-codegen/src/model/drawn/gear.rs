@@ -117,14 +117,20 @@ pub(super) fn gears_hold(d: &Drawing, errors: &mut Diagnostics) -> bool {
             .carrier
             .clone()
             .unwrap_or_else(|| Ident::new(GROUND, n.link.span()));
-        for (l, what, name) in [
-            (g.mesh, "meshes with", &n.mesh),
-            (g.carrier, "turns on", &on),
-        ] {
+        let roles = [
+            (
+                g.mesh,
+                &n.mesh,
+                "mesh with",
+                "meshes with `ground` (a fixed gear)",
+            ),
+            (g.carrier, &on, "turn on", "turns on `ground`"),
+        ];
+        for (l, name, verb, or_ground) in roles {
             if l.is_some_and(|l| !crank_on_ground(d, l)) {
                 errors.push(
                     name.span(),
-                    format!("`{name}` is not a crank on the ground, so the gear `{}` {what} has no fixed center: a drawn gear meshes with, and turns on, `ground` or a link an input turns about a joint of the ground (`input q = angle({name});`)", n.link),
+                    format!("`{name}` is not a crank on the ground, so `{}` cannot {verb} it (the gears' center distance would change): a drawn gear {or_ground} or a link with a joint on the ground that an input turns from the ground (`input q = angle({name});`)", n.link),
                 );
             }
         }
