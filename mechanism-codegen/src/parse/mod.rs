@@ -753,8 +753,15 @@ mod tests {
         let (message, _, column) = error("pub M { forse at E = (1.0, 0.0); }");
         assert_eq!(
             message,
-            "unknown statement `forse`; expected `let`, `const`, `params`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `motor`, `range`, `allow`, `joints`, `links`, `input`, `slider`, `cylinder`, `units` or `mode`; did you mean `force`?"
+            "unknown statement `forse`; expected `let`, `const`, `params`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `motor`, `range`, `allow`, `joints`, `links`, `input`, `slider`, `cylinder`, `gear`, `units` or `mode`; did you mean `force`?"
         );
         assert_eq!(column, 8);
+        // A drawn gear without `ratio`: the message names both links.
+        let (message, _, column) = error("pub M { gear link5 to link2 2.0; }");
+        assert_eq!(
+            message,
+            "expected `ratio` and the pitch radius of `link2`'s gear over `link5`'s: `gear link5 to link2 ratio 2.0;` or `gear planet to ground ratio 1.5 on arm pressure 20 deg;`"
+        );
+        assert_eq!(column, 28);
     }
 }
