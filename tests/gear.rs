@@ -95,6 +95,40 @@ mechanism! {
     }
 }
 
+mechanism! {
+    /// A planet carried by the arm meshing with a driven sun (two motors on
+    /// the ground at `O`): the planet turns at
+    /// `10 deg - 1.5 sun + 2.5 theta`.
+    pub DrivenSun {
+        let O = ground(0.0, 0.0);
+        let S = crank(O, 0.5, sun_q) as sun;
+        let A = crank(O, 1.0, theta) as arm;
+        let P = gear(A, 0.3, sun, 1.5, 10 deg, arm) as planet;
+        torque on planet = -0.7;
+    }
+}
+
+mechanism! {
+    /// `DrivenSun` as drawn with the arm at 30 deg and the sun at 50 deg, so
+    /// the planet at `10 deg - 1.5 x 50 deg + 2.5 x 30 deg = 10 deg`.
+    pub DrawnDrivenSun {
+        joints {
+            O = (0.0, 0.0),
+            S = (0.5 * cos(0.8726646259971648), 0.5 * sin(0.8726646259971648)),
+            A = (cos(0.5235987755982988), sin(0.5235987755982988)),
+            P = (
+                cos(0.5235987755982988) + 0.3 * cos(0.17453292519943295),
+                sin(0.5235987755982988) + 0.3 * sin(0.17453292519943295),
+            ),
+        }
+        links { ground = [O], sun = [O, S], arm = [O, A], planet = [A, P] }
+        input sun_q = angle(sun);
+        input theta = angle(arm);
+        gear planet to sun ratio 1.5 on arm;
+        torque on planet = -0.7;
+    }
+}
+
 fn d(x: f64) -> Dd {
     Dd::from_f64(x)
 }
@@ -454,5 +488,54 @@ fn the_drawn_planetary_arm_is_the_grouped_one() {
         near(got.position.planet, want.position.planet, "planet");
         assert_eq!(got.velocity.planet, want.velocity.planet, "omega planet");
         assert_eq!(got.forces.drive_theta, want.forces.drive_theta);
+    }
+}
+
+#[test]
+fn the_drawn_planet_on_a_driven_sun_is_the_grouped_one() {
+    // Proves the phase of a gear whose mesh and carrier both turn,
+    // `(planet - arm) + ratio (sun - arm)` as drawn: the drawn planet's
+    // point and angle equal the grouped form's over a grid of both inputs,
+    // to 2e-15 (the drawn radius and phase within an ulp or two of 0.3 and
+    // 10 deg, carried into an angle of size up to pi and a point of size 1),
+    // and its rates, which do not read them, exactly.
+    let (g, m) = (
+        DrivenSun::<f64>::default(),
+        DrawnDrivenSun::<f64>::default(),
+    );
+    for k in 0..12 {
+        for n in 0..12 {
+            let (q, s) = (
+                f64::to_radians(30.0 * k as f64),
+                f64::to_radians(-30.0 * n as f64),
+            );
+            let (want_in, got_in) = (
+                DrivenSunInput { sun_q: s, theta: q },
+                DrawnDrivenSunInput { sun_q: s, theta: q },
+            );
+            let (want_w, got_w) = (
+                DrivenSunInput {
+                    sun_q: -1.0,
+                    theta: 4.0,
+                },
+                DrawnDrivenSunInput {
+                    sun_q: -1.0,
+                    theta: 4.0,
+                },
+            );
+            let want = g.position(&want_in).unwrap();
+            let got = m.position(&got_in).unwrap();
+            let near = |a: f64, b: f64, what: &str| {
+                assert!((a - b).abs() <= 2e-15, "{what} at {q}, {s}: {a} vs {b}");
+            };
+            near(got.P.x, want.P.x, "P");
+            near(got.P.y, want.P.y, "P");
+            near(got.planet, want.planet, "planet");
+            let (wv, gv) = (
+                g.velocity(&want, &want_w).unwrap(),
+                m.velocity(&got, &got_w).unwrap(),
+            );
+            assert_eq!(gv.planet, wv.planet, "omega planet");
+        }
     }
 }
