@@ -2,7 +2,9 @@
 //!
 //! The modules: [`any`] (any generated mechanism, from its description),
 //! [`Plot`] / [`Figure`] (line plots), [`Sketch`] / [`Frame`] (drawings),
-//! and with the feature `dxf` the module `dxf` (`Sketch::dxf`, `Sketch::write_dxf`).
+//! with the feature `dxf` the module `dxf` (`Sketch::dxf`, `Sketch::write_dxf`),
+//! and with the feature `runtime` the module `runtime` (drawings of a
+//! mechanism read at run time).
 #![forbid(unsafe_code)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 
@@ -12,6 +14,9 @@ pub mod any;
 pub mod dxf;
 mod labels;
 mod plot;
+#[cfg(feature = "runtime")]
+#[cfg_attr(docsrs, doc(cfg(feature = "runtime")))]
+pub mod runtime;
 mod sketch;
 mod svg;
 mod ticks;

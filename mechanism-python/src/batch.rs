@@ -3,7 +3,7 @@
 //! per output), with a per-row error instead of numbers for a pose that
 //! fails. No Python object is touched here.
 
-use mechanism_codegen::runtime::{Analysis, Mechanism};
+use mechanism_codegen::runtime::{Analysis, Forces, Mechanism, Position, Rates};
 use mechanism_core::Error;
 
 /// How deep a solve goes: position always, velocity and acceleration
@@ -49,41 +49,67 @@ pub fn keys(m: &Mechanism, depth: Depth) -> Vec<(String, &'static str)> {
     keys
 }
 
+/// The storage one row is solved in, made once per sweep (the run-time
+/// mechanism's `*_into` methods then allocate nothing per row).
+pub struct Store {
+    pos: Position,
+    vel: Rates,
+    acc: Rates,
+    forces: Forces,
+}
+
+impl Store {
+    /// Storage for `m`'s rows.
+    pub fn new(m: &Mechanism) -> Self {
+        Store {
+            pos: m.new_position(),
+            vel: m.new_rates(),
+            acc: m.new_rates(),
+            forces: m.new_forces(),
+        }
+    }
+}
+
 /// Appends one row's values (in [`keys`] order) to `out` for inputs `q`,
 /// input rates `rates` and accelerations `accels` (each one value per
 /// input, in the order of `Mechanism::inputs`; unused by a shallower
-/// `depth`). On an error nothing is appended.
+/// `depth`), solved in `store` (from [`Store::new`] of the same `m`). On
+/// an error nothing is appended.
 pub fn row(
     m: &Mechanism,
     q: &[f64],
     rates: &[f64],
     accels: &[f64],
     depth: Depth,
+    store: &mut Store,
     out: &mut Vec<f64>,
 ) -> Result<(), Error<f64>> {
-    let pos = m.position(q)?;
+    let Store {
+        pos,
+        vel,
+        acc,
+        forces,
+    } = store;
+    m.position_into(q, pos)?;
     if !depth.velocity {
         out.extend(&pos.values);
         return Ok(());
     }
-    let vel = m.velocity(&pos, rates)?;
-    let acc = if depth.acceleration {
-        Some(m.acceleration(&pos, &vel, accels)?)
-    } else {
-        None
-    };
-    let forces = match (&acc, depth.forces) {
-        (Some(acc), true) => Some(m.forces(&pos, &vel, acc)?),
-        _ => None,
-    };
+    m.velocity_into(pos, rates, vel)?;
+    if depth.acceleration {
+        m.acceleration_into(pos, vel, accels, acc)?;
+        if depth.forces {
+            m.forces_into(pos, vel, acc, forces)?;
+        }
+    }
     out.extend(&pos.values);
     out.extend(&vel.values);
     out.push(vel.condition);
-    if let Some(acc) = acc {
+    if depth.acceleration {
         out.extend(&acc.values);
-    }
-    if let Some(f) = forces {
-        out.extend(&f.values);
+        if depth.forces {
+            out.extend(&forces.values);
+        }
     }
     Ok(())
 }
@@ -116,6 +142,7 @@ pub fn sweep(
     let mut errors = Vec::with_capacity(n);
     let (mut q, mut r, mut a) = (Vec::new(), Vec::new(), Vec::new());
     let mut values = Vec::with_capacity(width);
+    let mut store = Store::new(m);
     let at = |cols: &[Column<'_>], i: usize, into: &mut Vec<f64>| {
         into.clear();
         into.extend(cols.iter().map(|c| c[i]));
@@ -125,7 +152,7 @@ pub fn sweep(
         at(rates, i, &mut r);
         at(accels, i, &mut a);
         values.clear();
-        match row(m, &q, &r, &a, depth, &mut values) {
+        match row(m, &q, &r, &a, depth, &mut store, &mut values) {
             Ok(()) => {
                 for (col, v) in columns.iter_mut().zip(&values) {
                     col.push(*v);

@@ -6,6 +6,7 @@ use crate::batch::{self, Depth};
 use crate::errors;
 use crate::shared::Shared;
 use mechanism_codegen::runtime::{self, Analysis};
+use mechanism_plot::runtime as picture;
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::exceptions::{PyKeyError, PyRuntimeError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
@@ -196,8 +197,11 @@ impl Mechanism {
         depth: Depth,
     ) -> PyResult<Vec<f64>> {
         let mut values = Vec::new();
-        self.rt(|m| batch::row(m, q, rates, accels, depth, &mut values))?
-            .map_err(|e| self.pose_error(py, &e, q))?;
+        self.rt(|m| {
+            let mut store = batch::Store::new(m);
+            batch::row(m, q, rates, accels, depth, &mut store, &mut values)
+        })?
+        .map_err(|e| self.pose_error(py, &e, q))?;
         Ok(values)
     }
 }
@@ -389,6 +393,70 @@ impl Mechanism {
             .rt(|m| m.position(&q).map(|p| p.values))?
             .map_err(|e| self.pose_error(py, &e, &q))?;
         self.named(py, Analysis::Position, &pos)
+    }
+
+    /// The drawing of the pose at the inputs given by name (`theta=0.5`;
+    /// rad or L), as SVG text: ground pivots with hatching, links as bars
+    /// or plates, blocks on their guides, joints as circles, in the
+    /// definition's length unit with y up. `title`: its title (default the
+    /// definition's name); `trace`: points to mark. `PoseError` where the
+    /// pose cannot be assembled; `TypeError` for a missing or unknown input;
+    /// `ValueError` for a point to trace that does not exist.
+    #[pyo3(signature = (*, title = None, trace = Vec::new(), **inputs))]
+    fn draw<'py>(
+        &self,
+        py: Python<'py>,
+        title: Option<String>,
+        trace: Vec<String>,
+        inputs: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<String> {
+        let q = self.floats("value", inputs)?;
+        self.rt(|m| {
+            let pos = m.position(&q).map_err(|e| self.pose_error(py, &e, &q))?;
+            let title = title.unwrap_or_else(|| m.name());
+            let poses = vec![(picture::caption(m, &q), Some(pos))];
+            let sketch =
+                picture::sketch(m, &title, &poses, &trace).map_err(PyValueError::new_err)?;
+            sketch
+                .drawing(0)
+                .map_err(|e| PyValueError::new_err(e.to_string()))
+        })?
+    }
+
+    /// The animation of the poses at the inputs given by name, each a
+    /// number or a 1-d array (broadcast together as numpy does), as SVG
+    /// text that plays once in `seconds` and repeats: the drawing of
+    /// `draw` at each pose that assembles (the others are left out), the
+    /// `trace`d points' paths. `ValueError` when no pose assembles or a
+    /// point to trace does not exist.
+    #[pyo3(signature = (*, seconds = 4.0, title = None, trace = Vec::new(), **inputs))]
+    fn animate<'py>(
+        &self,
+        py: Python<'py>,
+        seconds: f64,
+        title: Option<String>,
+        trace: Vec<String>,
+        inputs: Option<&Bound<'py, PyDict>>,
+    ) -> PyResult<String> {
+        let given = self.ordered("values", inputs)?;
+        let (_, flat) = broadcast(py, &given)?;
+        let columns: Vec<&[f64]> = flat
+            .iter()
+            .map(|a| a.as_slice())
+            .collect::<Result<_, _>>()?;
+        let n = columns.first().map_or(1, |c| c.len());
+        let points: Vec<Vec<f64>> = (0..n)
+            .map(|i| columns.iter().map(|c| c[i]).collect())
+            .collect();
+        self.rt(|m| {
+            let poses = picture::poses(m, &points, &|| {});
+            let title = title.unwrap_or_else(|| m.name());
+            let sketch =
+                picture::sketch(m, &title, &poses, &trace).map_err(PyValueError::new_err)?;
+            sketch
+                .animation(seconds)
+                .map_err(|e| PyValueError::new_err(e.to_string()))
+        })?
     }
 
     /// The velocity at the inputs given by name, for the input rates

@@ -7,9 +7,11 @@ use std::f64::consts::{PI, TAU};
 
 use mechanism::Mode;
 
+use crate::de;
 use crate::fourbar::{Design, PathProblem, Timing};
 use crate::lm::Options;
 use crate::multistart::{self, Settings};
+use crate::problem::Problem;
 
 /// A benchmark case.
 #[derive(Clone, Debug)]
@@ -192,8 +194,54 @@ pub fn solve(
     let best = runs
         .iter()
         .filter(|r| r.2.outcome.cost.is_finite())
-        .min_by(|a, b| a.2.outcome.cost.total_cmp(&b.2.outcome.cost));
-    let Some((mode, p, b)) = best else {
+        .min_by(|a, b| a.2.outcome.cost.total_cmp(&b.2.outcome.cost))
+        .map(|(mode, p, b)| (*mode, p, b.outcome.x.as_slice()));
+    found(case, best, evaluations, jacobians)
+}
+
+/// Runs plain differential evolution ([`crate::de`], the usual settings) on
+/// `case` with `budget` objective evaluations in all, half in each assembly
+/// mode (one thread each, as [`solve`]), from `seed`, and returns the better
+/// design, its objective evaluated again as [`solve`]'s.
+pub fn solve_de(case: &Case, budget: usize, seed: u64) -> Found {
+    let runs: Vec<(Mode, PathProblem, de::Best)> = std::thread::scope(|sc| {
+        let handles: Vec<_> = [Mode::Plus, Mode::Minus]
+            .into_iter()
+            .enumerate()
+            .map(|(k, mode)| {
+                sc.spawn(move || {
+                    let p = case.problem(mode);
+                    let s = de::Settings::usual(
+                        p.dim(),
+                        budget / 2,
+                        seed.wrapping_mul(2).wrapping_add(k as u64),
+                    );
+                    let b = de::run(&p, &s);
+                    (mode, p, b)
+                })
+            })
+            .collect();
+        handles.into_iter().filter_map(|h| h.join().ok()).collect()
+    });
+    let evaluations = runs.iter().map(|r| r.2.evaluations).sum();
+    let best = runs
+        .iter()
+        .filter(|r| r.2.cost.is_finite())
+        .min_by(|a, b| a.2.cost.total_cmp(&b.2.cost))
+        .map(|(mode, p, b)| (*mode, p, b.x.as_slice()));
+    found(case, best, evaluations, 0)
+}
+
+/// The [`Found`] of the best `(mode, problem, variables)` of a run (`None`:
+/// no design assembled), its crank angles clamped into `[0, 2 pi]` and its
+/// objective evaluated again from the design.
+fn found(
+    case: &Case,
+    best: Option<(Mode, &PathProblem, &[f64])>,
+    evaluations: usize,
+    jacobians: usize,
+) -> Found {
+    let Some((mode, p, x)) = best else {
         return Found {
             design: Design(vec![f64::NAN; 9 + case.targets.len()]),
             objective: f64::INFINITY,
@@ -202,15 +250,15 @@ pub fn solve(
             jacobians,
         };
     };
-    let mut design = p.design(&b.outcome.x);
+    let mut design = p.design(x);
     for t in &mut design.0[9..] {
         *t = t.clamp(0.0, TAU);
     }
-    let objective = path_objective(&design, *mode, &case.targets);
+    let objective = path_objective(&design, mode, &case.targets);
     Found {
         design,
         objective,
-        mode: *mode,
+        mode,
         evaluations,
         jacobians,
     }

@@ -56,6 +56,11 @@ mechanism! {
 /// against the path residuals, so a start that violates it is pulled back first.
 const TRIANGLE_WEIGHT: f64 = 1e3;
 
+/// Weight of the transmission angle residuals (per unit of cosine past the
+/// bound): a violation of `1e-3` in the cosine costs as much as a path error
+/// of one unit.
+const TRANSMISSION_WEIGHT: f64 = 1e3;
+
 /// A physical design: `[r1, r2, r3, r4, rcx, rcy, theta0, x0, y0, th2_1 ..]`
 /// (lengths in the targets' units, angles in radians).
 #[derive(Clone, Debug, PartialEq)]
@@ -108,6 +113,13 @@ pub struct PathProblem {
     pub coords: (f64, f64),
     /// The assembly mode.
     pub mode: Mode,
+    /// Motion generation: the coupler's target angle at each target (rad,
+    /// the direction of `A -> B` from +x) and the length that weighs an
+    /// angle error against a distance (see [`PathProblem::with_orientations`]).
+    pub orientations: Option<(Vec<f64>, f64)>,
+    /// The least transmission angle allowed (rad, in `(0, pi/2)`; see
+    /// [`PathProblem::with_transmission`]).
+    pub transmission: Option<f64>,
     lo: Vec<f64>,
     hi: Vec<f64>,
 }
@@ -139,9 +151,45 @@ impl PathProblem {
             links,
             coords,
             mode,
+            orientations: None,
+            transmission: None,
             lo,
             hi,
         }
+    }
+
+    /// Motion generation: the coupler link also turns to `angles` (rad, the
+    /// direction of `A -> B` from +x, one per target). Each target adds two
+    /// residuals, `scale (cos a - cos a_t)` and `scale (sin a - sin a_t)`:
+    /// the chord between the two directions on a circle of radius `scale`
+    /// (a length in the targets' units), so an angle error `e` weighs as a
+    /// distance of about `scale e`, with no jump at the wrap of the angle.
+    pub fn with_orientations(mut self, angles: Vec<f64>, scale: f64) -> Self {
+        self.orientations = Some((angles, scale));
+        self
+    }
+
+    /// Transmission angle bounds: the angle between coupler and rocker stays
+    /// in `[mu_min, pi - mu_min]` (rad) over the whole turn. For a
+    /// crank-rocker its extremes are at crank angles 0 and pi (the diagonal
+    /// `A -> O4` shortest and longest), where `cos mu = (r3^2 + r4^2 -
+    /// (r1 -+ r2)^2) / (2 r3 r4)`; two residuals, each `W` times how far that
+    /// cosine passes `+-cos mu_min` (zero inside), hold them: a penalty, so
+    /// a design at the bound may pass it by a few `1e-6` in the cosine (the
+    /// path residuals' pull over `W`'s weight).
+    pub fn with_transmission(mut self, mu_min: f64) -> Self {
+        self.transmission = Some(mu_min);
+        self
+    }
+
+    /// The transmission angle's cosine at crank angles 0 and pi of the
+    /// physical parameters `[r1, r2, r3, r4, ..]`.
+    pub fn transmission_cosines<T: Real>(p: &[T]) -> [T; 2] {
+        let (r1, r2, r3, r4) = (p[0], p[1], p[2], p[3]);
+        let two = T::lit(2.0) * r3 * r4;
+        let base = r3 * r3 + r4 * r4;
+        let (d0, dpi) = (r1 - r2, r1 + r2);
+        [(base - d0 * d0) / two, (base - dpi * dpi) / two]
     }
 
     /// Index of the first angle variable `v_0` (free timing).
@@ -210,6 +258,18 @@ impl PathProblem {
             })
             .ok()?;
         Some([pos.P.x, pos.P.y])
+    }
+
+    /// The coupler point and the unit direction of `A -> B` at crank angle
+    /// `th2` from the ground link.
+    pub fn coupler_pose<T: Real>(fb: &FourBarPath<T>, th2: T) -> Option<([T; 2], [T; 2])> {
+        let pos = fb
+            .position(&FourBarPathInput {
+                phi: fb.theta0 + th2,
+            })
+            .ok()?;
+        let (u, v) = ((pos.B.x - pos.A.x) / fb.r3, (pos.B.y - pos.A.y) / fb.r3);
+        Some(([pos.P.x, pos.P.y], [u, v]))
     }
 
     /// A start: a random shape (links, coupler point), placed on the targets
@@ -389,13 +449,31 @@ impl Problem for PathProblem {
         self.lo.len()
     }
     fn residual_count(&self) -> usize {
-        2 * self.targets.len() + 1
+        let n = self.targets.len();
+        2 * n
+            + 1
+            + 2 * usize::from(self.transmission.is_some())
+            + 2 * self.orientations.as_ref().map_or(0, |_| n)
     }
     fn lower(&self) -> &[f64] {
         &self.lo
     }
     fn upper(&self) -> &[f64] {
         &self.hi
+    }
+    /// The bounds, with `theta0` in `[0, 2 pi]` and the angle variables `v`
+    /// in `[0, 1]` (scale-free: every gap ratio is reachable there).
+    fn search_box(&self) -> (Vec<f64>, Vec<f64>) {
+        let (mut lo, mut hi) = (self.lo.clone(), self.hi.clone());
+        if self.frame.is_none() {
+            (lo[6], hi[6]) = (0.0, TAU);
+        }
+        if matches!(self.timing, Timing::Free) {
+            for j in self.angle_base()..lo.len() {
+                (lo[j], hi[j]) = (0.0, 1.0);
+            }
+        }
+        (lo, hi)
     }
     fn residuals<T: Real>(&self, x: &[T], out: &mut [T]) -> bool {
         let n = self.targets.len();
@@ -417,13 +495,31 @@ impl Problem for PathProblem {
             circuit: self.mode,
         };
         for (k, t) in self.targets.iter().enumerate() {
-            let Some(c) = Self::coupler(&fb, th[k]) else {
+            let Some((c, u)) = Self::coupler_pose(&fb, th[k]) else {
                 return false;
             };
             out[2 * k] = c[0] - T::lit(t[0]);
             out[2 * k + 1] = c[1] - T::lit(t[1]);
+            if let Some((angles, scale)) = &self.orientations {
+                let (sa, ca) = angles[k].sin_cos();
+                let at = 2 * n + 1 + 2 * k;
+                out[at] = T::lit(*scale) * (u[0] - T::lit(ca));
+                out[at + 1] = T::lit(*scale) * (u[1] - T::lit(sa));
+            }
         }
         out[2 * n] = tri;
+        if let Some(mu) = self.transmission {
+            let at = out.len() - 2;
+            let lim = T::lit(mu.cos());
+            let [c0, cpi] = Self::transmission_cosines(&p);
+            let w = T::lit(TRANSMISSION_WEIGHT);
+            out[at] = if c0 > lim { w * (c0 - lim) } else { T::zero() };
+            out[at + 1] = if cpi < -lim {
+                w * (-lim - cpi)
+            } else {
+                T::zero()
+            };
+        }
         true
     }
     /// `theta0` into `[0, 2 pi)`, the angle variables `|v|` with `sum v^2 = 1`.

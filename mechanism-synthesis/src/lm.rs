@@ -17,7 +17,7 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::jacobian::{jacobian, Workspace};
+use crate::jacobian::{forward_difference, jacobian, Workspace};
 use crate::problem::{objective, Problem};
 
 /// Stopping rules.
@@ -30,6 +30,19 @@ pub struct Options {
     pub rel_tol: f64,
     /// Stop when the objective is below this (an exact fit).
     pub abs_tol: f64,
+    /// Where the Jacobian comes from.
+    pub jacobian: JacobianKind,
+}
+
+/// The Jacobian the solver uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JacobianKind {
+    /// Exact, from dual numbers ([`jacobian`]).
+    Exact,
+    /// Forward differences ([`forward_difference`]; `n` more objective
+    /// evaluations each, counted in [`Outcome::evaluations`]): the
+    /// alternative the exact one is measured against.
+    ForwardDifference,
 }
 
 impl Default for Options {
@@ -38,6 +51,7 @@ impl Default for Options {
             max_iterations: 200,
             rel_tol: 1e-13,
             abs_tol: 1e-28,
+            jacobian: JacobianKind::Exact,
         }
     }
 }
@@ -102,7 +116,16 @@ impl Solver {
         for _ in 0..opt.max_iterations {
             if fresh {
                 out.jacobians += 1;
-                if !jacobian(p, &x, &mut self.ws, &mut self.r, &mut self.jac) {
+                let ok = match opt.jacobian {
+                    JacobianKind::Exact => {
+                        jacobian(p, &x, &mut self.ws, &mut self.r, &mut self.jac)
+                    }
+                    JacobianKind::ForwardDifference => {
+                        out.evaluations += n + 1;
+                        forward_difference(p, &x, &mut self.r, &mut self.jac, &mut self.buf)
+                    }
+                };
+                if !ok {
                     break;
                 }
                 a = self.jac.tr_mul(&self.jac);

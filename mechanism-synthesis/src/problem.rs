@@ -19,6 +19,13 @@ pub trait Problem {
     fn lower(&self) -> &[f64];
     /// Upper bounds of the design variables (`dim()` of them; `+inf` for none).
     fn upper(&self) -> &[f64];
+    /// A finite box that holds the designs worth sampling (for a population
+    /// method that draws uniformly): `(lower, upper)`. The default is the
+    /// problem's bounds, which must then be finite; a problem with unbounded
+    /// variables (a periodic angle, a scale-free group) states its own.
+    fn search_box(&self) -> (Vec<f64>, Vec<f64>) {
+        (self.lower().to_vec(), self.upper().to_vec())
+    }
     /// Writes the residuals of design `x` (`dim()` values) into `out`
     /// (`residual_count()` values); `false` if the design cannot be evaluated.
     fn residuals<T: Real>(&self, x: &[T], out: &mut [T]) -> bool;

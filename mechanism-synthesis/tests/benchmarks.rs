@@ -1,7 +1,7 @@
 //! The benchmark cases with small budgets: every design the solver returns is
-//! re-evaluated by an independent closed-form four-bar (this file's own
-//! circle intersection, both assembly modes), its reported objective is one of
-//! the two, its bounds and constraints hold (Grashof crank-rocker with the
+//! re-evaluated by an independent closed-form four-bar (the tests' own
+//! circle intersection, `common`, both assembly modes), its reported
+//! objective is one of the two, its bounds and constraints hold (Grashof crank-rocker with the
 //! crank shortest, free crank angles ascending in [0, 2 pi]), and it is at
 //! least as good as the figures the metaheuristics of the literature report.
 
@@ -10,31 +10,8 @@ use std::f64::consts::TAU;
 use mechanism_synthesis::cases::{self, Case, Found};
 use mechanism_synthesis::fourbar::Timing;
 
-/// The coupler point of design `d` at crank angle `th` (from the ground
-/// link) in mode `m` (+1: B left of A -> O4), by intersecting the circles
-/// about A (radius r3) and O4 (radius r4); `None` when they do not meet.
-fn coupler(d: &[f64], th: f64, m: f64) -> Option<[f64; 2]> {
-    let (r1, r2, r3, r4, rcx, rcy, t0, x0, y0) =
-        (d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7], d[8]);
-    let o4 = [x0 + r1 * t0.cos(), y0 + r1 * t0.sin()];
-    let a = [x0 + r2 * (t0 + th).cos(), y0 + r2 * (t0 + th).sin()];
-    let (dx, dy) = (o4[0] - a[0], o4[1] - a[1]);
-    let l2 = dx * dx + dy * dy;
-    let l = l2.sqrt();
-    let along = (r3 * r3 - r4 * r4 + l2) / (2.0 * l);
-    let h2 = r3 * r3 - along * along;
-    if h2 < -1e-9 * r3 * r3 {
-        return None;
-    }
-    let h = h2.max(0.0).sqrt();
-    let (ux, uy) = (dx / l, dy / l);
-    let b = [
-        a[0] + along * ux - m * h * uy,
-        a[1] + along * uy + m * h * ux,
-    ];
-    let (ex, ey) = ((b[0] - a[0]) / r3, (b[1] - a[1]) / r3);
-    Some([a[0] + rcx * ex - rcy * ey, a[1] + rcx * ey + rcy * ex])
-}
+mod common;
+use common::coupler;
 
 /// The objective of design `d` in mode `m` by [`coupler`].
 fn objective(case: &Case, d: &[f64], m: f64) -> f64 {

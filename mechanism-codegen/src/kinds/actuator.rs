@@ -12,6 +12,7 @@ use super::forces::{drive, prismatic, revolute, rx, ForceCx, Held};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
 use super::rates::{states, two_links, RateCx};
+use super::run::{Compile, ForceRunCx, InputSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, mode_arg};
 use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
@@ -84,7 +85,6 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         let p = driver::actuator::position(&pa, num(self.l), &pb, len, mode(self.mode))?;
         let (arm, cylinder) = (p.r1 / num(self.l), p.r2 / len);
         pose.found(self.stmt, Some(p.c), &[arm, cylinder, cylinder]);
-        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_rrr(&p)))
     }
 
@@ -322,80 +322,119 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Actuator<'_> {
-    /// `force::actuator::reactions` (or `reactions_with_cylinder` for a
-    /// barrel and rod) on the links' loads; the pin reactions passed to
-    /// their bodies, the axial force along the actuator onto `B`'s body.
-    fn run_forces(
-        &self,
-        cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        use mechanism_core::force::actuator;
-        let (stmt, a, b, input) = (self.stmt, self.a, self.b, self.input);
-        let (links, name) = (&stmt.links, &stmt.name);
-        if self.barrel_and_rod().is_some() {
-            let arm = cx.load_about(&links[0], a);
-            let barrel = cx.load_about(&links[1], b);
-            let rod = cx.load_about(&links[2], name);
-            let (pa, pb, pc) = (cx.at(a), cx.at(b), cx.at(name));
-            let rx = actuator::reactions_with_cylinder(&pa, &pb, &pc, &arm, &rod, &barrel)?;
-            let body_a = cx.pass_revolute(a, rx.a);
-            let body_b = cx.pass_revolute(b, rx.b);
-            cx.revolute(&body_a, &links[0], rx.a);
-            cx.revolute(&Some(links[0].to_string()), &links[2], rx.c);
-            cx.revolute(&body_b, &links[1], rx.b);
-            cx.prismatic(&Some(links[1].to_string()), &links[2], rx.pair);
-            cx.power.push(rx.axial * (cx.rate)(input));
-            cx.conditions.push(rx.min_pivot_ratio);
-            cx.drive(input, Held::Push, rx.axial);
-            return Ok(());
-        }
-        let load = cx.load_about(&links[0], a);
-        let (pa, pb, pc) = (cx.at(a), cx.at(b), cx.at(name));
-        let rx = actuator::reactions(&pa, &pb, &pc, &load)?;
-        let body_a = cx.pass_revolute(a, rx.a);
-        if let Some(body) = cx.body_of_point(b) {
-            let axis = (pc - pb) / mechanism_core::geometry::length(&(pc - pb));
-            cx.force_on(&body, axis * (-rx.axial), b);
-        }
-        cx.revolute(&body_a, &links[0], rx.a);
-        cx.power.push(rx.axial * (cx.rate)(input));
-        cx.conditions.push(rx.min_pivot_ratio);
-        cx.drive(input, Held::Push, rx.axial);
-        Ok(())
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        Box::new(ActuatorRun {
+            me: cx.me(self.stmt),
+            a: cx.point(self.a),
+            l: cx.num(self.l),
+            b: cx.point(self.b),
+            input: cx.input(self.input),
+            input_name: super::run::intern(&self.input.to_string()),
+            mode: mode(self.mode),
+            cylinder: self.barrel_and_rod().is_some(),
+        })
+    }
+}
+
+/// An actuator, compiled: its arm's pivot `A` and length (L), the
+/// cylinder's pivot `B`, its input, mode, and whether its cylinder is a
+/// barrel and a rod of its own.
+struct ActuatorRun {
+    me: Me,
+    a: PointSlot,
+    l: f64,
+    b: PointSlot,
+    input: InputSlot,
+    input_name: &'static str,
+    mode: mechanism_core::Mode,
+    cylinder: bool,
+}
+
+impl super::run::Step for ActuatorRun {
+    fn group(&self) -> &'static str {
+        self.me.group
     }
 
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
-        let stmt = self.stmt;
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let len = pose.input(self.input);
+        let (pa, pb) = (pose.point(self.a), pose.point(self.b));
+        let p = driver::actuator::position(&pa, self.l, &pb, len, self.mode)?;
+        let (arm, cylinder) = (p.r1 / self.l, p.r2 / len);
+        pose.found(&self.me, p.c, &[arm, cylinder, cylinder]);
+        pose.keep(&self.me, p);
+        Ok(Some(sweep::det_rrr(&p)))
+    }
+
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let me = &self.me;
         let missing = || super::run::missing(mechanism_core::Primitive::Actuator);
         let g = cx
             .pose
-            .kept::<driver::actuator::ActuatorPosition<f64>>(&stmt.name)
+            .kept::<driver::actuator::ActuatorPosition<f64>>(me)
             .ok_or_else(missing)?;
         let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
         let rate = cx.rate(self.input);
         if cx.accel() {
             let gv = cx
-                .vel_group::<driver::actuator::ActuatorVelocity<f64>>(&stmt.name)
+                .vel_group::<driver::actuator::ActuatorVelocity<f64>>(me)
                 .ok_or_else(missing)?;
             let acc = cx.accel_of(self.input);
             let r = driver::actuator::acceleration(g, gv, ma.as_ref(), mb.as_ref(), rate, acc)?;
-            cx.set_motion(stmt, r.ac);
-            cx.set_own(stmt, 0, r.alpha1);
-            cx.set_own(stmt, 1, r.alpha2);
-            cx.keep(stmt, r, None);
+            cx.set_motion(me, r.ac);
+            cx.set_own(me, 0, r.alpha1);
+            cx.set_own(me, 1, r.alpha2);
         } else {
             let r = driver::actuator::velocity(g, ma.as_ref(), mb.as_ref(), rate)?;
-            cx.set_motion(stmt, r.vc);
-            cx.set_own(stmt, 0, r.omega1);
-            cx.set_own(stmt, 1, r.omega2);
-            cx.keep(stmt, r, Some(r.condition));
+            cx.set_motion(me, r.vc);
+            cx.set_own(me, 0, r.omega1);
+            cx.set_own(me, 1, r.omega2);
+            cx.keep(me, r, Some(r.condition));
         }
         Ok(())
     }
 
-    fn run_link_dir(&self, index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+    /// `force::actuator::reactions` (or `reactions_with_cylinder` for a
+    /// barrel and rod) on the links' loads; the pin reactions passed to
+    /// their bodies, the axial force along the actuator onto `B`'s body.
+    fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        use mechanism_core::force::actuator;
+        let (me, a, b) = (&self.me, self.a, self.b);
+        let links = me.links;
+        if self.cylinder {
+            let arm = cx.load_about(links[0], a);
+            let barrel = cx.load_about(links[1], b);
+            let rod = cx.load_about(links[2], me.point);
+            let (pa, pb, pc) = (cx.at(a), cx.at(b), cx.at(me.point));
+            let rx = actuator::reactions_with_cylinder(&pa, &pb, &pc, &arm, &rod, &barrel)?;
+            let body_a = cx.pass_revolute(a, rx.a);
+            let body_b = cx.pass_revolute(b, rx.b);
+            cx.revolute(body_a, links[0], rx.a);
+            cx.revolute(Some(links[0]), links[2], rx.c);
+            cx.revolute(body_b, links[1], rx.b);
+            cx.prismatic(Some(links[1]), links[2], rx.pair);
+            cx.power.push(rx.axial * cx.rate(self.input));
+            cx.conditions.push(rx.min_pivot_ratio);
+            cx.drive(self.input_name, Held::Push, rx.axial);
+            return Ok(());
+        }
+        let load = cx.load_about(links[0], a);
+        let (pa, pb, pc) = (cx.at(a), cx.at(b), cx.at(me.point));
+        let rx = actuator::reactions(&pa, &pb, &pc, &load)?;
+        let body_a = cx.pass_revolute(a, rx.a);
+        if let Some(body) = cx.body_of_point(b) {
+            let axis = (pc - pb) / mechanism_core::geometry::length(&(pc - pb));
+            cx.force_on(body, axis * (-rx.axial), b);
+        }
+        cx.revolute(body_a, links[0], rx.a);
+        cx.power.push(rx.axial * cx.rate(self.input));
+        cx.conditions.push(rx.min_pivot_ratio);
+        cx.drive(self.input_name, Held::Push, rx.axial);
+        Ok(())
+    }
+
+    fn link_dir(&self, index: usize, pose: &RunPose) -> mechanism_core::Vector2<f64> {
         let nan = mechanism_core::Vector2::new(f64::NAN, f64::NAN);
-        pose.kept::<driver::actuator::ActuatorPosition<f64>>(&self.stmt.name)
+        pose.kept::<driver::actuator::ActuatorPosition<f64>>(&self.me)
             .map_or(nan, |p| if index == 0 { p.r1 } else { p.r2 })
     }
 }

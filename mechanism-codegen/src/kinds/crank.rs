@@ -9,6 +9,7 @@ use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
+use super::run::{Compile, ForceRunCx, InputSlot, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, grp, local, tag, unit_field, unit_vector};
 use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
@@ -101,7 +102,6 @@ impl<'a> GroupKind<'a> for Crank<'a> {
             }
         };
         pose.found(self.stmt, Some(c.tip), &[c.axis]);
-        pose.keep(self.stmt, c);
         Ok(None)
     }
 
@@ -390,40 +390,55 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Crank<'_> {
-    /// `force::crank::reactions` on its link's load about the pivot; the
-    /// motor's reaction (pivot force and torque) onto the carrier or the
-    /// pivot's body.
-    fn run_forces(
-        &self,
-        cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        use mechanism_core::force::Wrench;
-        let (stmt, pivot, input) = (self.stmt, self.pivot, self.input);
-        let link = &stmt.links[0];
-        let load = cx.load_about(link, pivot);
-        let rx = mechanism_core::force::crank::reactions(&load)?;
-        let body = match self.carrier {
-            Some(c) => Some(c.to_string()),
-            None => cx.body_of_point(pivot),
-        };
-        if let Some(b) = &body {
-            if let Some(r) = cx.reference(b) {
-                let w = Wrench::force_at(&(-rx.pivot), &cx.at(pivot), &cx.at(&r))
-                    .with_couple(-rx.torque);
-                cx.add(b, w);
-            }
-        }
-        cx.revolute(&body, link, rx.pivot);
-        cx.power.push(rx.torque * (cx.rate)(input));
-        cx.drive(input, Held::Torque, rx.torque);
-        Ok(())
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        Box::new(CrankRun {
+            me: cx.me(self.stmt),
+            pivot: cx.point(self.pivot),
+            radius: cx.num(self.radius),
+            input: cx.input(self.input),
+            input_name: super::run::intern(&self.input.to_string()),
+            carrier: self.carrier.map(|l| cx.link(l)),
+            zero: geometry::unit(cx.num(self.zero)),
+        })
+    }
+}
+
+/// A crank, compiled: its pivot, radius (L), input, carrier and the unit
+/// direction its input is measured from in the carrier's frame.
+struct CrankRun {
+    me: Me,
+    pivot: PointSlot,
+    radius: f64,
+    input: InputSlot,
+    input_name: &'static str,
+    carrier: Option<LinkSlot>,
+    zero: mechanism_core::Vector2<f64>,
+}
+
+impl super::run::Step for CrankRun {
+    fn group(&self) -> &'static str {
+        self.me.group
     }
 
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
-        let stmt = self.stmt;
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let pivot = pose.point(self.pivot);
+        let (r, q) = (self.radius, pose.input(self.input));
+        let c = match self.carrier {
+            None => driver::crank::position(&pivot, r, q)?,
+            Some(l) => {
+                let axis = link::local_offset(&pose.axis(l), &self.zero);
+                driver::crank::position_on(&pivot, r, &axis, q)?
+            }
+        };
+        pose.found(&self.me, c.tip, &[c.axis]);
+        pose.keep(&self.me, c);
+        Ok(None)
+    }
+
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let g = cx
             .pose
-            .kept::<driver::crank::CrankPosition<f64>>(&stmt.name)
+            .kept::<driver::crank::CrankPosition<f64>>(&self.me)
             .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Crank))?;
         let m = cx.point_arg(self.pivot);
         let (rate, acc) = (cx.rate(self.input), cx.accel_of(self.input));
@@ -444,19 +459,34 @@ impl super::run::RunKind for Crank<'_> {
                 (driver::crank::velocity(g, m.as_ref(), w)?, w)
             }
         };
-        cx.set_motion(stmt, pv);
-        cx.set_own(stmt, 0, w);
+        cx.set_motion(&self.me, pv);
+        cx.set_own(&self.me, 0, w);
         Ok(())
     }
 
-    fn run_link_dir(&self, _index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
-        pose.kept::<driver::crank::CrankPosition<f64>>(&self.stmt.name)
+    /// `force::crank::reactions` on its link's load about the pivot; the
+    /// motor's reaction (pivot force and torque) onto the carrier or the
+    /// pivot's body.
+    fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let (pivot, link) = (self.pivot, self.me.links[0]);
+        let load = cx.load_about(link, pivot);
+        let rx = mechanism_core::force::crank::reactions(&load)?;
+        let body = self.carrier.or_else(|| cx.body_of_point(pivot));
+        cx.react_on(body, rx.pivot, cx.at(pivot), Some(rx.torque));
+        cx.revolute(body, link, rx.pivot);
+        cx.power.push(rx.torque * cx.rate(self.input));
+        cx.drive(self.input_name, Held::Torque, rx.torque);
+        Ok(())
+    }
+
+    fn link_dir(&self, _index: usize, pose: &RunPose) -> mechanism_core::Vector2<f64> {
+        pose.kept::<driver::crank::CrankPosition<f64>>(&self.me)
             .map_or(mechanism_core::Vector2::new(f64::NAN, f64::NAN), |c| c.axis)
     }
 
-    fn run_link_angle(&self, value: &dyn Fn(&Ident) -> f64) -> Option<f64> {
+    fn link_angle(&self, pose: &RunPose) -> Option<f64> {
         self.carrier
             .is_none()
-            .then(|| geometry::wrap_angle(value(self.input)))
+            .then(|| geometry::wrap_angle(pose.input(self.input)))
     }
 }

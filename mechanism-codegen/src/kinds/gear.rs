@@ -26,6 +26,7 @@ use super::closure::{axis_between, f, Residuals};
 use super::forces::{body_name, revolute, rx, ForceCx, Held, Reaction};
 use super::lane::{Lane, Step};
 use super::rates::{vec_ty, RateCx};
+use super::run::{Compile, ForceRunCx, InputSlot, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{grp, local, tag, unit_field};
 use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
@@ -165,7 +166,6 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
         let theta = self.angle_f64(input, true);
         let c = driver::crank::position(&pivot, num(&self.g.radius), theta)?;
         pose.found(self.stmt, Some(c.tip), &[c.axis]);
-        pose.keep(self.stmt, c);
         Ok(None)
     }
 
@@ -356,57 +356,79 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
 }
 
 impl super::run::RunKind for GearKind<'_> {
-    /// What its `forces` emits, computed: the same call on the same loads.
-    fn run_forces(
-        &self,
-        cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        use mechanism_core::force::Wrench;
-        let (stmt, g) = (self.stmt, self.g);
-        let Some(center) = self.mesh_center() else {
-            return Ok(());
-        };
-        let (link, pivot) = (&stmt.links[0], &g.pivot);
-        let load = cx.load_about(link, pivot);
-        let rx = mechanism_core::force::gear::reactions(
-            &load,
-            &cx.at(pivot),
-            &cx.at(center),
-            num(&g.ratio),
-            num(&g.pressure),
-        )?;
-        let body = match &g.carrier {
-            Some(c) => Some(c.to_string()),
-            None => cx.body_of_point(pivot),
-        };
-        if let Some(b) = &body {
-            if let Some(r) = cx.reference(b) {
-                let w = Wrench::force_at(&(-rx.pivot), &cx.at(pivot), &cx.at(&r));
-                cx.add(b, w);
-            }
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        let (g, t) = (self.g, self.terms());
+        Box::new(GearRun {
+            me: cx.me(self.stmt),
+            pivot: cx.point(&g.pivot),
+            radius: cx.num(&g.radius),
+            ratio: cx.num(&g.ratio),
+            phase: cx.num(&g.phase),
+            pressure: cx.num(&g.pressure),
+            mesh_input: t.mesh.map(|q| cx.input(q)),
+            carrier_input: t.carrier.map(|q| cx.input(q)),
+            center: self.mesh_center().map(|c| cx.point(c)),
+            carrier: g.carrier.as_ref().map(|c| cx.link(c)),
+            mesh: g.mesh.as_ref().map(|m| cx.link(m)),
+        })
+    }
+}
+
+/// A gear, compiled: its pivot, radius (L), ratio, phase and pressure
+/// angle (rad), the inputs its angle reads, the meshing gear's center, its
+/// carrier and the meshing link.
+struct GearRun {
+    me: Me,
+    pivot: PointSlot,
+    radius: f64,
+    ratio: f64,
+    phase: f64,
+    pressure: f64,
+    mesh_input: Option<InputSlot>,
+    carrier_input: Option<InputSlot>,
+    center: Option<PointSlot>,
+    carrier: Option<LinkSlot>,
+    mesh: Option<LinkSlot>,
+}
+
+impl GearRun {
+    /// Its angle (rad) or a rate of it (`phase` false) from the inputs'
+    /// values or rates `value`, as `GearKind::angle_f64`.
+    fn angle(&self, value: &dyn Fn(InputSlot) -> f64, phase: bool) -> f64 {
+        let mut sum = if phase { self.phase } else { 0.0 };
+        if let Some(q) = self.mesh_input {
+            sum -= self.ratio * value(q);
         }
-        let mesh = g.mesh.as_ref().map(ToString::to_string);
-        if let Some(m) = &mesh {
-            if let Some(r) = cx.reference(m) {
-                let w = Wrench::force_at(&(-rx.tooth), &rx.contact, &cx.at(&r));
-                cx.add(m, w);
-            }
+        if let Some(q) = self.carrier_input {
+            sum += (1.0 + self.ratio) * value(q);
         }
-        cx.revolute(&body, link, rx.pivot);
-        cx.revolute(&mesh, link, rx.tooth);
-        Ok(())
+        sum
+    }
+}
+
+impl super::run::Step for GearRun {
+    fn group(&self) -> &'static str {
+        self.me.group
     }
 
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
-        let stmt = self.stmt;
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let pivot = pose.point(self.pivot);
+        let theta = self.angle(&|q| pose.input(q), true);
+        let c = driver::crank::position(&pivot, self.radius, theta)?;
+        pose.found(&self.me, c.tip, &[c.axis]);
+        pose.keep(&self.me, c);
+        Ok(None)
+    }
+
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let g = cx
             .pose
-            .kept::<driver::crank::CrankPosition<f64>>(&stmt.name)
+            .kept::<driver::crank::CrankPosition<f64>>(&self.me)
             .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Crank))?;
-        let m = cx.point_arg(&self.g.pivot);
-        let omega = self.angle_f64(&|q| cx.rate(q), false);
+        let m = cx.point_arg(self.pivot);
+        let omega = self.angle(&|q| cx.rate(q), false);
         let (pv, w) = if cx.accel() {
-            let alpha = self.angle_f64(&|q| cx.accel_of(q), false);
+            let alpha = self.angle(&|q| cx.accel_of(q), false);
             (
                 driver::crank::acceleration(g, m.as_ref(), omega, alpha)?,
                 alpha,
@@ -414,17 +436,39 @@ impl super::run::RunKind for GearKind<'_> {
         } else {
             (driver::crank::velocity(g, m.as_ref(), omega)?, omega)
         };
-        cx.set_motion(stmt, pv);
-        cx.set_own(stmt, 0, w);
+        cx.set_motion(&self.me, pv);
+        cx.set_own(&self.me, 0, w);
         Ok(())
     }
 
-    fn run_link_dir(&self, _index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
-        pose.kept::<driver::crank::CrankPosition<f64>>(&self.stmt.name)
+    /// What its `forces` emits, computed: the same call on the same loads.
+    fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let Some(center) = self.center else {
+            return Ok(());
+        };
+        let (link, pivot) = (self.me.links[0], self.pivot);
+        let load = cx.load_about(link, pivot);
+        let rx = mechanism_core::force::gear::reactions(
+            &load,
+            &cx.at(pivot),
+            &cx.at(center),
+            self.ratio,
+            self.pressure,
+        )?;
+        let body = self.carrier.or_else(|| cx.body_of_point(pivot));
+        cx.react_on(body, rx.pivot, cx.at(pivot), None);
+        cx.react_on(self.mesh, rx.tooth, rx.contact, None);
+        cx.revolute(body, link, rx.pivot);
+        cx.revolute(self.mesh, link, rx.tooth);
+        Ok(())
+    }
+
+    fn link_dir(&self, _index: usize, pose: &RunPose) -> mechanism_core::Vector2<f64> {
+        pose.kept::<driver::crank::CrankPosition<f64>>(&self.me)
             .map_or(mechanism_core::Vector2::new(f64::NAN, f64::NAN), |c| c.axis)
     }
 
-    fn run_link_angle(&self, value: &dyn Fn(&Ident) -> f64) -> Option<f64> {
-        Some(geometry::wrap_angle(self.angle_f64(value, true)))
+    fn link_angle(&self, pose: &RunPose) -> Option<f64> {
+        Some(geometry::wrap_angle(self.angle(&|q| pose.input(q), true)))
     }
 }

@@ -1,6 +1,7 @@
 //! `ground(x, y)`: a fixed point.
 
 use super::lane::{Lane, PointLocals, Step};
+use super::run::{Compile, ForceRunCx, Me, RunCx, RunPose};
 use super::{GroupKind, Pose, Role, Solve};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
@@ -111,18 +112,39 @@ fn lane_steps(s: &mut Step, x: &Value, y: &Value) {
 }
 
 impl super::run::RunKind for Ground<'_> {
-    fn run_forces(
-        &self,
-        _cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        Box::new(GroundRun {
+            me: cx.me(self.stmt),
+            at: Point2::new(cx.num(self.x), cx.num(self.y)),
+        })
+    }
+}
+
+/// A ground point, compiled: its slots and its place (L).
+struct GroundRun {
+    me: Me,
+    at: Point2<f64>,
+}
+
+impl super::run::Step for GroundRun {
+    fn group(&self) -> &'static str {
+        self.me.group
+    }
+
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        pose.found(&self.me, self.at, &[]);
+        Ok(None)
+    }
+
+    fn rates(&self, _cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         Ok(())
     }
 
-    fn run_rates(&self, _cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+    fn forces(&self, _cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         Ok(())
     }
 
-    fn run_link_dir(&self, _index: usize, _pose: &Pose) -> mechanism_core::Vector2<f64> {
+    fn link_dir(&self, _index: usize, _pose: &RunPose) -> mechanism_core::Vector2<f64> {
         mechanism_core::Vector2::x()
     }
 }

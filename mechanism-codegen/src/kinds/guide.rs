@@ -5,6 +5,7 @@ use super::closure::{f, Residuals, Scale};
 use super::lane::{Lane, LaneGuide, Step, Vector};
 use super::lane_shapes::{carried, OriginMotion};
 use super::rates::RateCx;
+use super::run::{Compile, ForceRunCx, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, local, unit_vector};
 use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
@@ -275,41 +276,86 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Guide<'_> {
-    fn run_forces(
-        &self,
-        _cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        Ok(())
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        let origin = match self.origin {
+            Origin::Point(p) => GuideOrigin::Point(cx.point(p)),
+            Origin::Coords(x, y) => GuideOrigin::At(Point2::new(cx.num(x), cx.num(y))),
+        };
+        Box::new(GuideRun {
+            me: cx.me(self.stmt),
+            origin,
+            unit: geometry::unit(cx.num(self.angle)),
+            carrier: self.carrier.map(|l| cx.link(l)),
+        })
+    }
+}
+
+/// Where a compiled guide's line passes.
+enum GuideOrigin {
+    /// A solved point.
+    Point(PointSlot),
+    /// Fixed coordinates (L).
+    At(Point2<f64>),
+}
+
+/// A guide, compiled: its origin, its unit direction (in the carrier's
+/// frame when carried) and its carrier.
+struct GuideRun {
+    me: Me,
+    origin: GuideOrigin,
+    unit: mechanism_core::Vector2<f64>,
+    carrier: Option<LinkSlot>,
+}
+
+impl super::run::Step for GuideRun {
+    fn group(&self) -> &'static str {
+        self.me.group
+    }
+
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let origin = match self.origin {
+            GuideOrigin::Point(p) => pose.point(p),
+            GuideOrigin::At(p) => p,
+        };
+        let dir = match self.carrier {
+            None => self.unit,
+            Some(l) => link::local_offset(&pose.axis(l), &self.unit),
+        };
+        pose.found_line(&self.me, Line { origin, dir });
+        Ok(None)
     }
 
     /// A carried guide's motion: its origin's and its carrier's rate.
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let Some(link) = self.carrier else {
             return Ok(());
         };
         let origin_motion = match self.origin {
-            Origin::Point(p) if cx.moves(p) => cx.motion_of(p),
+            GuideOrigin::Point(p) if cx.moves(p) => cx.motion_of(p),
             _ => mechanism_core::Vector2::zeros(),
         };
         let w = cx.link_rate(link).unwrap_or(0.0);
-        let name = self.stmt.name.to_string();
         if cx.accel() {
             let a = mechanism_core::guide::LineAcceleration {
                 a_origin: origin_motion,
                 alpha: w,
             };
-            cx.out.guide_acc.insert(name, a);
+            cx.set_guide_acc(&self.me, a);
         } else {
             let v = mechanism_core::guide::LineVelocity {
                 v_origin: origin_motion,
                 omega: w,
             };
-            cx.out.guide_vel.insert(name, v);
+            cx.set_guide_vel(&self.me, v);
         }
         Ok(())
     }
 
-    fn run_link_dir(&self, _index: usize, _pose: &Pose) -> mechanism_core::Vector2<f64> {
+    fn forces(&self, _cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        Ok(())
+    }
+
+    fn link_dir(&self, _index: usize, _pose: &RunPose) -> mechanism_core::Vector2<f64> {
         mechanism_core::Vector2::x()
     }
 }

@@ -5,6 +5,7 @@ use super::closure::{f, Residuals};
 use super::lane::{Lane, PointLocals, Step, Vector};
 use super::lane_shapes::local_vector;
 use super::rates::{vec_ty, RateCx};
+use super::run::{Compile, ForceRunCx, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, local, tag, unit_vector};
 use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
@@ -259,22 +260,49 @@ fn lane_steps(lane: &Lane, s: &mut Step, link: &Ident, from: &Ident, local: &Loc
 }
 
 impl super::run::RunKind for Point<'_> {
-    fn run_forces(
-        &self,
-        _cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        Ok(())
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        let offset = match self.local {
+            Local::Cartesian(x, y) => Vector2::new(cx.num(x), cx.num(y)),
+            Local::Polar(d, a) => geometry::unit(cx.num(a)) * cx.num(d),
+        };
+        Box::new(PointRun {
+            me: cx.me(self.stmt),
+            link: cx.link(self.link),
+            from: cx.point(self.from),
+            offset,
+        })
+    }
+}
+
+/// A point on a link, compiled: the link, the point its offset is from
+/// and the offset in the link's frame (L).
+struct PointRun {
+    me: Me,
+    link: LinkSlot,
+    from: PointSlot,
+    offset: Vector2<f64>,
+}
+
+impl super::run::Step for PointRun {
+    fn group(&self) -> &'static str {
+        self.me.group
+    }
+
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let p = link::point_position(&pose.point(self.from), &pose.axis(self.link), &self.offset)?;
+        pose.found(&self.me, p, &[]);
+        Ok(None)
     }
 
     /// The motion of a point on a link: its base's plus the motion about
     /// the base, checked as the generated code checks it.
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
-        let (stmt, link, from) = (self.stmt, self.link, self.from);
-        if !cx.moves(&stmt.name) {
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let (link, from) = (self.link, self.from);
+        if !cx.moves(self.me.point) {
             return Ok(());
         }
         let base = cx.moves(from).then(|| cx.motion_of(from));
-        let offset = cx.pose.point(&stmt.name) - cx.pose.point(from);
+        let offset = cx.pose.point(self.me.point) - cx.pose.point(from);
         let relative = match (cx.link_rate(link), cx.accel()) {
             (None, _) => None,
             (Some(w), false) => Some((
@@ -295,11 +323,15 @@ impl super::run::RunKind for Point<'_> {
             (None, Some((_, checked))) => checked?,
             (None, None) => Vector2::zeros(),
         };
-        cx.set_motion(stmt, value);
+        cx.set_motion(&self.me, value);
         Ok(())
     }
 
-    fn run_link_dir(&self, _index: usize, _pose: &Pose) -> Vector2<f64> {
+    fn forces(&self, _cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        Ok(())
+    }
+
+    fn link_dir(&self, _index: usize, _pose: &RunPose) -> Vector2<f64> {
         Vector2::x()
     }
 }

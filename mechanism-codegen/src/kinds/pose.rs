@@ -5,8 +5,6 @@ use crate::model::{Mode, Stmt};
 use crate::value::Value;
 use mechanism_core::guide::Line;
 use mechanism_core::{Point2, Vector2};
-use std::any::Any;
-use std::cell::RefCell;
 use std::collections::BTreeMap;
 use syn::Ident;
 
@@ -18,35 +16,9 @@ pub struct Pose {
     points: BTreeMap<String, Point2<f64>>,
     guides: BTreeMap<String, Line<f64>>,
     axes: BTreeMap<String, Vector2<f64>>,
-    /// The core's position state of each group (`grp_NAME` of the generated
-    /// code), kept only by the run-time evaluator ([`Pose::keeping`]): its
-    /// rates, link angles and slides read them.
-    kept: Option<BTreeMap<String, Box<dyn Any>>>,
 }
 
 impl Pose {
-    /// An empty pose that keeps each group's position state (the run-time
-    /// evaluator's; the expansion-time check keeps none).
-    pub fn keeping() -> Self {
-        Pose {
-            kept: Some(BTreeMap::new()),
-            ..Pose::default()
-        }
-    }
-
-    /// Keeps `state`, the core's position state of `stmt`'s group, when
-    /// this pose keeps states.
-    pub fn keep<S: Any>(&mut self, stmt: &Stmt, state: S) {
-        if let Some(kept) = &mut self.kept {
-            kept.insert(stmt.name.to_string(), Box::new(state));
-        }
-    }
-
-    /// The position state kept for the statement named `name`.
-    pub fn kept<S: Any>(&self, name: &Ident) -> Option<&S> {
-        self.kept.as_ref()?.get(&name.to_string())?.downcast_ref()
-    }
-
     /// The point `n` (NaN when unknown).
     pub fn point(&self, n: &Ident) -> Point2<f64> {
         let nan = Point2::new(f64::NAN, f64::NAN);
@@ -84,37 +56,12 @@ impl Pose {
     }
 }
 
-thread_local! {
-    /// The run-time parameters' values while the run-time evaluator walks
-    /// the plan ([`with_params`]); empty otherwise, so that at expansion
-    /// time a parameter reads as unknown.
-    static PARAMS: RefCell<BTreeMap<String, f64>> = const { RefCell::new(BTreeMap::new()) };
-}
-
-/// Runs `f` with the run-time parameters valued as in `params` (what
-/// [`num`] reads), then forgets them.
-pub fn with_params<R>(params: &BTreeMap<String, f64>, f: impl FnOnce() -> R) -> R {
-    PARAMS.with(|p| p.borrow_mut().clone_from(params));
-    let r = f();
-    PARAMS.with(|p| p.borrow_mut().clear());
-    r
-}
-
-/// A dimension's value: folded, with the run-time parameters valued when
-/// the run-time evaluator runs ([`with_params`]); NaN for one that does
-/// not fold (the expansion-time check runs only when every value the
-/// position analysis uses folds).
+/// A dimension's value, folded; NaN for one that does not fold (the
+/// expansion-time check runs only when every value the position analysis
+/// uses folds; the run-time mechanism values parameters when it compiles
+/// its plan, `run::Compile::num`).
 pub fn num(v: &Value) -> f64 {
-    PARAMS
-        .with(|p| {
-            let p = p.borrow();
-            if p.is_empty() {
-                v.fold()
-            } else {
-                v.eval_with(&|n| p.get(&n.to_string()).copied())
-            }
-        })
-        .unwrap_or(f64::NAN)
+    v.fold().unwrap_or(f64::NAN)
 }
 
 /// The core's assembly mode of a written one.

@@ -6,6 +6,7 @@ use super::forces::{inner, prismatic, rx, ForceCx};
 use super::lane::{Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::line_axis;
 use super::rates::{states, vec_ty, Pieces, RateCx};
+use super::run::{Compile, ForceRunCx, GuideSlot, Me, RunCx, RunPose};
 use super::tokens::{along, local};
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::kinds::pose::num;
@@ -66,7 +67,6 @@ impl<'a> GroupKind<'a> for Prp<'a> {
         let (l1, l2) = (pose.line(self.g1), pose.line(self.g2));
         let p = dyad::prp::position(&l1, num(self.offset1), &l2, num(self.offset2))?;
         pose.found(self.stmt, Some(p.c), &[l1.dir, l2.dir]);
-        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_prp(&l1, &l2)))
     }
 
@@ -264,39 +264,51 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Prp<'_> {
-    /// `force::prp::reactions` on the links' loads about the joint.
-    fn run_forces(
-        &self,
-        cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        let (stmt, g1, g2) = (self.stmt, self.g1, self.g2);
-        let (links, name) = (&stmt.links, &stmt.name);
-        let (l1, l2) = cx.loads_about(stmt, name);
-        let (d1, d2) = (cx.pose.line(g1).dir, cx.pose.line(g2).dir);
-        let rx = mechanism_core::force::prp::reactions(&cx.at(name), &d1, &d2, &l1, &l2)?;
-        let c1 = cx.body_of_guide(g1);
-        let c2 = cx.body_of_guide(g2);
-        cx.prismatic_on(c1.clone(), &rx.guide1, name);
-        cx.prismatic_on(c2.clone(), &rx.guide2, name);
-        cx.prismatic(&c1, &links[0], rx.guide1);
-        cx.prismatic(&c2, &links[1], rx.guide2);
-        cx.inner(links, super::run::ForceValue::Force(rx.c));
-        cx.conditions.push(rx.min_pivot_ratio);
-        Ok(())
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        Box::new(PrpRun {
+            me: cx.me(self.stmt),
+            g1: cx.guide(self.g1),
+            g2: cx.guide(self.g2),
+            offset1: cx.num(self.offset1),
+            offset2: cx.num(self.offset2),
+        })
+    }
+}
+
+/// A PRP group, compiled: its two guides and the blocks' offsets (L).
+struct PrpRun {
+    me: Me,
+    g1: GuideSlot,
+    g2: GuideSlot,
+    offset1: f64,
+    offset2: f64,
+}
+
+impl super::run::Step for PrpRun {
+    fn group(&self) -> &'static str {
+        self.me.group
     }
 
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
-        let stmt = self.stmt;
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (l1, l2) = (pose.line(self.g1), pose.line(self.g2));
+        let p = dyad::prp::position(&l1, self.offset1, &l2, self.offset2)?;
+        pose.found(&self.me, p.c, &[l1.dir, l2.dir]);
+        pose.keep(&self.me, p);
+        Ok(Some(sweep::det_prp(&l1, &l2)))
+    }
+
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let me = &self.me;
         let missing = || super::run::missing(mechanism_core::Primitive::Prp);
         let g = cx
             .pose
-            .kept::<dyad::prp::PrpPosition<f64>>(&stmt.name)
+            .kept::<dyad::prp::PrpPosition<f64>>(me)
             .ok_or_else(missing)?;
         let (l1, l2) = (cx.pose.line(self.g1), cx.pose.line(self.g2));
         let (v1, v2) = (cx.guide_vel(self.g1), cx.guide_vel(self.g2));
         if cx.accel() {
             let gv = cx
-                .vel_group::<dyad::prp::PrpVelocity<f64>>(&stmt.name)
+                .vel_group::<dyad::prp::PrpVelocity<f64>>(me)
                 .ok_or_else(missing)?;
             let (a1, a2) = (cx.guide_acc(self.g1), cx.guide_acc(self.g2));
             let r = dyad::prp::acceleration(
@@ -309,29 +321,45 @@ impl super::run::RunKind for Prp<'_> {
                 v2.as_ref(),
                 a2.as_ref(),
             )?;
-            cx.set_motion(stmt, r.ac);
-            cx.set_slide(stmt, 0, r.s1_ddot);
-            cx.set_slide(stmt, 1, r.s2_ddot);
-            cx.keep(stmt, r, None);
+            cx.set_motion(me, r.ac);
+            cx.set_slide(me, 0, r.s1_ddot);
+            cx.set_slide(me, 1, r.s2_ddot);
         } else {
             let r = dyad::prp::velocity(g, &l1, &l2, v1.as_ref(), v2.as_ref())?;
-            cx.set_motion(stmt, r.vc);
-            cx.set_slide(stmt, 0, r.s1_dot);
-            cx.set_slide(stmt, 1, r.s2_dot);
-            cx.keep(stmt, r, Some(r.condition));
+            cx.set_motion(me, r.vc);
+            cx.set_slide(me, 0, r.s1_dot);
+            cx.set_slide(me, 1, r.s2_dot);
+            cx.keep(me, r, Some(r.condition));
         }
         Ok(())
     }
 
-    fn run_link_dir(&self, index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+    /// `force::prp::reactions` on the links' loads about the joint.
+    fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let (me, g1, g2) = (&self.me, self.g1, self.g2);
+        let (l1, l2) = cx.loads_about(me, me.point);
+        let (d1, d2) = (cx.pose.line(g1).dir, cx.pose.line(g2).dir);
+        let rx = mechanism_core::force::prp::reactions(&cx.at(me.point), &d1, &d2, &l1, &l2)?;
+        let c1 = cx.body_of_guide(g1);
+        let c2 = cx.body_of_guide(g2);
+        cx.prismatic_on(c1, &rx.guide1, me.point);
+        cx.prismatic_on(c2, &rx.guide2, me.point);
+        cx.prismatic(c1, me.links[0], rx.guide1);
+        cx.prismatic(c2, me.links[1], rx.guide2);
+        cx.inner(me, super::run::ForceValue::Force(rx.c));
+        cx.conditions.push(rx.min_pivot_ratio);
+        Ok(())
+    }
+
+    fn link_dir(&self, index: usize, pose: &RunPose) -> mechanism_core::Vector2<f64> {
         match index {
             0 => pose.line(self.g1).dir,
             _ => pose.line(self.g2).dir,
         }
     }
 
-    fn run_slide(&self, slot: usize, pose: &Pose) -> Option<f64> {
-        pose.kept::<dyad::prp::PrpPosition<f64>>(&self.stmt.name)
-            .map(|p| if slot == 0 { p.s1 } else { p.s2 })
+    fn slide(&self, k: usize, pose: &RunPose) -> Option<f64> {
+        pose.kept::<dyad::prp::PrpPosition<f64>>(&self.me)
+            .map(|p| if k == 0 { p.s1 } else { p.s2 })
     }
 }

@@ -7,6 +7,7 @@ use super::forces::{inner, prismatic, revolute, rx, ForceCx};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::lane_shapes::{along_line, line_axis};
 use super::rates::{states, vec_ty, Pieces, RateCx};
+use super::run::{Compile, ForceRunCx, GuideSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{along, grp, local, unit_field, unit_vector};
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
@@ -69,7 +70,6 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
         let u = geometry::unit(num(self.slot));
         let p = dyad::rpp::position(&pa, &gl, num(self.offset), &u)?;
         pose.found(self.stmt, Some(p.q), &[p.slot, gl.dir]);
-        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_rpp(&p, &gl)))
     }
 
@@ -296,43 +296,52 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Rpp<'_> {
-    /// `force::rpp::reactions` on the links' loads about `A`.
-    fn run_forces(
-        &self,
-        cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        let (stmt, a, guide) = (self.stmt, self.a, self.guide);
-        let links = &stmt.links;
-        let slot = cx
-            .pose
-            .kept::<dyad::rpp::RppPosition<f64>>(&stmt.name)
-            .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Rpp))?
-            .slot;
-        let (l1, l2) = cx.loads_about(stmt, a);
-        let dir = cx.pose.line(guide).dir;
-        let rx = mechanism_core::force::rpp::reactions(&cx.at(a), &slot, &dir, &l1, &l2)?;
-        let ba = cx.pass_revolute(a, rx.a);
-        let bg = cx.body_of_guide(guide);
-        cx.prismatic_on(bg.clone(), &rx.guide, a);
-        cx.revolute(&ba, &links[0], rx.a);
-        cx.inner(links, super::run::ForceValue::Prismatic(rx.slot));
-        cx.prismatic(&bg, &links[1], rx.guide);
-        cx.conditions.push(rx.min_pivot_ratio);
-        Ok(())
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        Box::new(RppRun {
+            me: cx.me(self.stmt),
+            a: cx.point(self.a),
+            guide: cx.guide(self.guide),
+            slot: geometry::unit(cx.num(self.slot)),
+            offset: cx.num(self.offset),
+        })
+    }
+}
+
+/// An RPP group, compiled: its known joint, its guide, the slot's unit
+/// direction in the yoke's frame and the block's offset (L).
+struct RppRun {
+    me: Me,
+    a: PointSlot,
+    guide: GuideSlot,
+    slot: mechanism_core::Vector2<f64>,
+    offset: f64,
+}
+
+impl super::run::Step for RppRun {
+    fn group(&self) -> &'static str {
+        self.me.group
     }
 
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
-        let stmt = self.stmt;
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (pa, gl) = (pose.point(self.a), pose.line(self.guide));
+        let p = dyad::rpp::position(&pa, &gl, self.offset, &self.slot)?;
+        pose.found(&self.me, p.q, &[p.slot, gl.dir]);
+        pose.keep(&self.me, p);
+        Ok(Some(sweep::det_rpp(&p, &gl)))
+    }
+
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let me = &self.me;
         let missing = || super::run::missing(mechanism_core::Primitive::Rpp);
         let g = cx
             .pose
-            .kept::<dyad::rpp::RppPosition<f64>>(&stmt.name)
+            .kept::<dyad::rpp::RppPosition<f64>>(me)
             .ok_or_else(missing)?;
         let (pa, line) = (cx.pose.point(self.a), cx.pose.line(self.guide));
         let (ma, gvel) = (cx.point_arg(self.a), cx.guide_vel(self.guide));
         if cx.accel() {
             let gv = cx
-                .vel_group::<dyad::rpp::RppVelocity<f64>>(&stmt.name)
+                .vel_group::<dyad::rpp::RppVelocity<f64>>(me)
                 .ok_or_else(missing)?;
             let gacc = cx.guide_acc(self.guide);
             let r = dyad::rpp::acceleration(
@@ -344,32 +353,52 @@ impl super::run::RunKind for Rpp<'_> {
                 gvel.as_ref(),
                 gacc.as_ref(),
             )?;
-            cx.set_motion(stmt, r.aq);
-            cx.set_slide(stmt, 0, r.s1_ddot);
-            cx.set_slide(stmt, 1, r.s2_ddot);
-            cx.keep(stmt, r, None);
+            cx.set_motion(me, r.aq);
+            cx.set_slide(me, 0, r.s1_ddot);
+            cx.set_slide(me, 1, r.s2_ddot);
         } else {
             let r = dyad::rpp::velocity(g, &pa, &line, ma.as_ref(), gvel.as_ref())?;
-            cx.set_motion(stmt, r.vq);
-            cx.set_slide(stmt, 0, r.s1_dot);
-            cx.set_slide(stmt, 1, r.s2_dot);
-            cx.keep(stmt, r, Some(r.condition));
+            cx.set_motion(me, r.vq);
+            cx.set_slide(me, 0, r.s1_dot);
+            cx.set_slide(me, 1, r.s2_dot);
+            cx.keep(me, r, Some(r.condition));
         }
         Ok(())
     }
 
-    fn run_link_dir(&self, index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+    /// `force::rpp::reactions` on the links' loads about `A`.
+    fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let (me, a, guide) = (&self.me, self.a, self.guide);
+        let slot = cx
+            .pose
+            .kept::<dyad::rpp::RppPosition<f64>>(me)
+            .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Rpp))?
+            .slot;
+        let (l1, l2) = cx.loads_about(me, a);
+        let dir = cx.pose.line(guide).dir;
+        let rx = mechanism_core::force::rpp::reactions(&cx.at(a), &slot, &dir, &l1, &l2)?;
+        let ba = cx.pass_revolute(a, rx.a);
+        let bg = cx.body_of_guide(guide);
+        cx.prismatic_on(bg, &rx.guide, a);
+        cx.revolute(ba, me.links[0], rx.a);
+        cx.inner(me, super::run::ForceValue::Prismatic(rx.slot));
+        cx.prismatic(bg, me.links[1], rx.guide);
+        cx.conditions.push(rx.min_pivot_ratio);
+        Ok(())
+    }
+
+    fn link_dir(&self, index: usize, pose: &RunPose) -> mechanism_core::Vector2<f64> {
         let nan = mechanism_core::Vector2::new(f64::NAN, f64::NAN);
         match index {
             1 => pose.line(self.guide).dir,
             _ => pose
-                .kept::<dyad::rpp::RppPosition<f64>>(&self.stmt.name)
+                .kept::<dyad::rpp::RppPosition<f64>>(&self.me)
                 .map_or(nan, |p| p.slot),
         }
     }
 
-    fn run_slide(&self, slot: usize, pose: &Pose) -> Option<f64> {
-        pose.kept::<dyad::rpp::RppPosition<f64>>(&self.stmt.name)
-            .map(|p| if slot == 0 { p.s1 } else { p.s2 })
+    fn slide(&self, k: usize, pose: &RunPose) -> Option<f64> {
+        pose.kept::<dyad::rpp::RppPosition<f64>>(&self.me)
+            .map(|p| if k == 0 { p.s1 } else { p.s2 })
     }
 }

@@ -6,6 +6,7 @@ use super::forces::{inner, revolute, rx, ForceCx};
 use super::lane::{Lane, LaneLink, Step};
 use super::lane_shapes::along_line;
 use super::rates::{states, Pieces, RateCx};
+use super::run::{Compile, ForceRunCx, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{grp, local, mode_arg, unit_field};
 use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
@@ -66,7 +67,6 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
         let (pa, pb) = (pose.point(self.a), pose.point(self.b));
         let p = dyad::rpr::position(&pa, &pb, num(self.offset), mode(self.mode))?;
         pose.found(self.stmt, None, &[p.axis, p.axis]);
-        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_rpr(&p, &pa, &pb)))
     }
 
@@ -305,65 +305,94 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Rpr<'_> {
-    /// `force::rpr::reactions` on the links' loads about `A`.
-    fn run_forces(
-        &self,
-        cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        let (stmt, a, b) = (self.stmt, self.a, self.b);
-        let links = &stmt.links;
-        let axis = cx
-            .pose
-            .kept::<dyad::rpr::RprPosition<f64>>(&stmt.name)
-            .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Rpr))?
-            .axis;
-        let (l1, l2) = cx.loads_about(stmt, a);
-        let rx = mechanism_core::force::rpr::reactions(&cx.at(a), &cx.at(b), &axis, &l1, &l2)?;
-        let ba = cx.pass_revolute(a, rx.a);
-        let bb = cx.pass_revolute(b, rx.b);
-        cx.revolute(&ba, &links[0], rx.a);
-        cx.revolute(&bb, &links[1], rx.b);
-        cx.inner(links, super::run::ForceValue::Prismatic(rx.slide));
-        cx.conditions.push(rx.min_pivot_ratio);
-        Ok(())
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        Box::new(RprRun {
+            me: cx.me(self.stmt),
+            a: cx.point(self.a),
+            b: cx.point(self.b),
+            mode: mode(self.mode),
+            offset: cx.num(self.offset),
+        })
+    }
+}
+
+/// An RPR group, compiled: its known joints, mode and the slide's offset
+/// from `B` (L).
+struct RprRun {
+    me: Me,
+    a: PointSlot,
+    b: PointSlot,
+    mode: mechanism_core::Mode,
+    offset: f64,
+}
+
+impl super::run::Step for RprRun {
+    fn group(&self) -> &'static str {
+        self.me.group
     }
 
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
-        let stmt = self.stmt;
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (pa, pb) = (pose.point(self.a), pose.point(self.b));
+        let p = dyad::rpr::position(&pa, &pb, self.offset, self.mode)?;
+        pose.found_axes(&self.me, &[p.axis, p.axis]);
+        pose.keep(&self.me, p);
+        Ok(Some(sweep::det_rpr(&p, &pa, &pb)))
+    }
+
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let me = &self.me;
         let missing = || super::run::missing(mechanism_core::Primitive::Rpr);
         let g = cx
             .pose
-            .kept::<dyad::rpr::RprPosition<f64>>(&stmt.name)
+            .kept::<dyad::rpr::RprPosition<f64>>(me)
             .ok_or_else(missing)?;
         let (pa, pb) = (cx.pose.point(self.a), cx.pose.point(self.b));
         let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
         if cx.accel() {
             let gv = cx
-                .vel_group::<dyad::rpr::RprVelocity<f64>>(&stmt.name)
+                .vel_group::<dyad::rpr::RprVelocity<f64>>(me)
                 .ok_or_else(missing)?;
             let r = dyad::rpr::acceleration(g, &pa, &pb, gv, ma.as_ref(), mb.as_ref())?;
-            cx.set_own(stmt, 0, r.alpha);
-            cx.set_own(stmt, 1, r.alpha);
-            cx.set_slide(stmt, 0, r.s_ddot);
-            cx.keep(stmt, r, None);
+            cx.set_own(me, 0, r.alpha);
+            cx.set_own(me, 1, r.alpha);
+            cx.set_slide(me, 0, r.s_ddot);
         } else {
             let r = dyad::rpr::velocity(g, &pa, &pb, ma.as_ref(), mb.as_ref())?;
-            cx.set_own(stmt, 0, r.omega);
-            cx.set_own(stmt, 1, r.omega);
-            cx.set_slide(stmt, 0, r.s_dot);
-            cx.keep(stmt, r, Some(r.condition));
+            cx.set_own(me, 0, r.omega);
+            cx.set_own(me, 1, r.omega);
+            cx.set_slide(me, 0, r.s_dot);
+            cx.keep(me, r, Some(r.condition));
         }
         Ok(())
     }
 
-    fn run_link_dir(&self, _index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+    /// `force::rpr::reactions` on the links' loads about `A`.
+    fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let (me, a, b) = (&self.me, self.a, self.b);
+        let axis = cx
+            .pose
+            .kept::<dyad::rpr::RprPosition<f64>>(me)
+            .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Rpr))?
+            .axis;
+        let (l1, l2) = cx.loads_about(me, a);
+        let rx = mechanism_core::force::rpr::reactions(&cx.at(a), &cx.at(b), &axis, &l1, &l2)?;
+        let ba = cx.pass_revolute(a, rx.a);
+        let bb = cx.pass_revolute(b, rx.b);
+        cx.revolute(ba, me.links[0], rx.a);
+        cx.revolute(bb, me.links[1], rx.b);
+        cx.inner(me, super::run::ForceValue::Prismatic(rx.slide));
+        cx.conditions.push(rx.min_pivot_ratio);
+        Ok(())
+    }
+
+    fn link_dir(&self, _index: usize, pose: &RunPose) -> mechanism_core::Vector2<f64> {
         let nan = mechanism_core::Vector2::new(f64::NAN, f64::NAN);
-        pose.kept::<dyad::rpr::RprPosition<f64>>(&self.stmt.name)
+        pose.kept::<dyad::rpr::RprPosition<f64>>(&self.me)
             .map_or(nan, |p| p.axis)
     }
 
-    fn run_slide(&self, _slot: usize, pose: &Pose) -> Option<f64> {
-        pose.kept::<dyad::rpr::RprPosition<f64>>(&self.stmt.name)
+    fn slide(&self, _k: usize, pose: &RunPose) -> Option<f64> {
+        pose.kept::<dyad::rpr::RprPosition<f64>>(&self.me)
             .map(|p| p.s)
     }
 }

@@ -6,6 +6,7 @@ use super::forces::{inner, prismatic, revolute, rx, ForceCx};
 use super::lane::{Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::{along_line, line_axis};
 use super::rates::{states, vec_ty, Pieces, RateCx};
+use super::run::{Compile, ForceRunCx, GuideSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{along, arm, grp, local, mode_arg};
 use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
@@ -68,7 +69,6 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
         let (pa, gl, l) = (pose.point(self.a), pose.line(self.guide), num(self.l));
         let p = dyad::rrp::position(&pa, l, &gl, num(self.offset), mode(self.mode))?;
         pose.found(self.stmt, Some(p.c), &[p.r1 / l, gl.dir]);
-        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_rrp(&p, &gl)))
     }
 
@@ -273,68 +273,100 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Rrp<'_> {
-    /// `force::rrp::reactions` on the links' loads about the joint.
-    fn run_forces(
-        &self,
-        cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        let (stmt, a, guide) = (self.stmt, self.a, self.guide);
-        let (links, name) = (&stmt.links, &stmt.name);
-        let (l1, l2) = cx.loads_about(stmt, name);
-        let dir = cx.pose.line(guide).dir;
-        let rx = mechanism_core::force::rrp::reactions(&cx.at(a), &cx.at(name), &dir, &l1, &l2)?;
-        let ba = cx.pass_revolute(a, rx.a);
-        let bg = cx.body_of_guide(guide);
-        cx.prismatic_on(bg.clone(), &rx.guide, name);
-        cx.revolute(&ba, &links[0], rx.a);
-        cx.inner(links, super::run::ForceValue::Force(rx.c));
-        cx.prismatic(&bg, &links[1], rx.guide);
-        cx.conditions.push(rx.min_pivot_ratio);
-        Ok(())
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        Box::new(RrpRun {
+            me: cx.me(self.stmt),
+            a: cx.point(self.a),
+            l: cx.num(self.l),
+            guide: cx.guide(self.guide),
+            mode: mode(self.mode),
+            offset: cx.num(self.offset),
+        })
+    }
+}
+
+/// An RRP group, compiled: its known joint, link length (L), guide, mode
+/// and the block's offset from the guide (L).
+struct RrpRun {
+    me: Me,
+    a: PointSlot,
+    l: f64,
+    guide: GuideSlot,
+    mode: mechanism_core::Mode,
+    offset: f64,
+}
+
+impl super::run::Step for RrpRun {
+    fn group(&self) -> &'static str {
+        self.me.group
     }
 
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
-        let stmt = self.stmt;
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (pa, gl, l) = (pose.point(self.a), pose.line(self.guide), self.l);
+        let p = dyad::rrp::position(&pa, l, &gl, self.offset, self.mode)?;
+        pose.found(&self.me, p.c, &[p.r1 / l, gl.dir]);
+        pose.keep(&self.me, p);
+        Ok(Some(sweep::det_rrp(&p, &gl)))
+    }
+
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let me = &self.me;
         let missing = || super::run::missing(mechanism_core::Primitive::Rrp);
         let g = cx
             .pose
-            .kept::<dyad::rrp::RrpPosition<f64>>(&stmt.name)
+            .kept::<dyad::rrp::RrpPosition<f64>>(me)
             .ok_or_else(missing)?;
         let line = cx.pose.line(self.guide);
         let (ma, gvel) = (cx.point_arg(self.a), cx.guide_vel(self.guide));
         if cx.accel() {
             let gv = cx
-                .vel_group::<dyad::rrp::RrpVelocity<f64>>(&stmt.name)
+                .vel_group::<dyad::rrp::RrpVelocity<f64>>(me)
                 .ok_or_else(missing)?;
             let gacc = cx.guide_acc(self.guide);
             let r =
                 dyad::rrp::acceleration(g, &line, gv, ma.as_ref(), gvel.as_ref(), gacc.as_ref())?;
-            cx.set_motion(stmt, r.ac);
-            cx.set_own(stmt, 0, r.alpha1);
-            cx.set_slide(stmt, 0, r.s_ddot);
-            cx.keep(stmt, r, None);
+            cx.set_motion(me, r.ac);
+            cx.set_own(me, 0, r.alpha1);
+            cx.set_slide(me, 0, r.s_ddot);
         } else {
             let r = dyad::rrp::velocity(g, &line, ma.as_ref(), gvel.as_ref())?;
-            cx.set_motion(stmt, r.vc);
-            cx.set_own(stmt, 0, r.omega1);
-            cx.set_slide(stmt, 0, r.s_dot);
-            cx.keep(stmt, r, Some(r.condition));
+            cx.set_motion(me, r.vc);
+            cx.set_own(me, 0, r.omega1);
+            cx.set_slide(me, 0, r.s_dot);
+            cx.keep(me, r, Some(r.condition));
         }
         Ok(())
     }
 
-    fn run_link_dir(&self, index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+    /// `force::rrp::reactions` on the links' loads about the joint.
+    fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let (me, a, guide) = (&self.me, self.a, self.guide);
+        let (l1, l2) = cx.loads_about(me, me.point);
+        let dir = cx.pose.line(guide).dir;
+        let rx =
+            mechanism_core::force::rrp::reactions(&cx.at(a), &cx.at(me.point), &dir, &l1, &l2)?;
+        let ba = cx.pass_revolute(a, rx.a);
+        let bg = cx.body_of_guide(guide);
+        cx.prismatic_on(bg, &rx.guide, me.point);
+        cx.revolute(ba, me.links[0], rx.a);
+        cx.inner(me, super::run::ForceValue::Force(rx.c));
+        cx.prismatic(bg, me.links[1], rx.guide);
+        cx.conditions.push(rx.min_pivot_ratio);
+        Ok(())
+    }
+
+    fn link_dir(&self, index: usize, pose: &RunPose) -> mechanism_core::Vector2<f64> {
         let nan = mechanism_core::Vector2::new(f64::NAN, f64::NAN);
         match index {
             0 => pose
-                .kept::<dyad::rrp::RrpPosition<f64>>(&self.stmt.name)
+                .kept::<dyad::rrp::RrpPosition<f64>>(&self.me)
                 .map_or(nan, |p| p.r1),
             _ => pose.line(self.guide).dir,
         }
     }
 
-    fn run_slide(&self, _slot: usize, pose: &Pose) -> Option<f64> {
-        pose.kept::<dyad::rrp::RrpPosition<f64>>(&self.stmt.name)
+    fn slide(&self, _k: usize, pose: &RunPose) -> Option<f64> {
+        pose.kept::<dyad::rrp::RrpPosition<f64>>(&self.me)
             .map(|p| p.s)
     }
 }

@@ -6,6 +6,7 @@ use super::forces::{inner, revolute, rx, ForceCx};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
 use super::rates::{states, two_links, RateCx};
+use super::run::{Compile, ForceRunCx, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, mode_arg};
 use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
@@ -69,7 +70,6 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
         let (l1, l2) = (num(self.l1), num(self.l2));
         let p = dyad::rrr::position(&pa, l1, &pb, l2, mode(self.mode))?;
         pose.found(self.stmt, Some(p.c), &[p.r1 / l1, p.r2 / l2]);
-        pose.keep(self.stmt, p);
         Ok(Some(sweep::det_rrr(&p)))
     }
 
@@ -309,57 +309,92 @@ impl FourBar<'_> {
 }
 
 impl super::run::RunKind for Rrr<'_> {
-    /// `force::rrr::reactions` on the links' loads about the joint.
-    fn run_forces(
-        &self,
-        cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        let (stmt, a, b) = (self.stmt, self.a, self.b);
-        let (links, name) = (&stmt.links, &stmt.name);
-        let (l1, l2) = cx.loads_about(stmt, name);
-        let rx =
-            mechanism_core::force::rrr::reactions(&cx.at(a), &cx.at(b), &cx.at(name), &l1, &l2)?;
-        let ba = cx.pass_revolute(a, rx.a);
-        let bb = cx.pass_revolute(b, rx.b);
-        cx.revolute(&ba, &links[0], rx.a);
-        cx.revolute(&bb, &links[1], rx.b);
-        cx.inner(links, super::run::ForceValue::Force(rx.c));
-        cx.conditions.push(rx.min_pivot_ratio);
-        Ok(())
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        Box::new(RrrRun {
+            me: cx.me(self.stmt),
+            a: cx.point(self.a),
+            b: cx.point(self.b),
+            l1: cx.num(self.l1),
+            l2: cx.num(self.l2),
+            mode: mode(self.mode),
+        })
+    }
+}
+
+/// An RRR group, compiled: its known joints, link lengths (L) and mode.
+struct RrrRun {
+    me: Me,
+    a: PointSlot,
+    b: PointSlot,
+    l1: f64,
+    l2: f64,
+    mode: mechanism_core::Mode,
+}
+
+impl super::run::Step for RrrRun {
+    fn group(&self) -> &'static str {
+        self.me.group
     }
 
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
-        let stmt = self.stmt;
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let (pa, pb) = (pose.point(self.a), pose.point(self.b));
+        let (l1, l2) = (self.l1, self.l2);
+        let p = dyad::rrr::position(&pa, l1, &pb, l2, self.mode)?;
+        pose.found(&self.me, p.c, &[p.r1 / l1, p.r2 / l2]);
+        pose.keep(&self.me, p);
+        Ok(Some(sweep::det_rrr(&p)))
+    }
+
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let me = &self.me;
         let missing = || super::run::missing(mechanism_core::Primitive::Rrr);
         let g = cx
             .pose
-            .kept::<dyad::rrr::RrrPosition<f64>>(&stmt.name)
+            .kept::<dyad::rrr::RrrPosition<f64>>(me)
             .ok_or_else(missing)?;
         let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
         if cx.accel() {
             let gv = cx
-                .vel_group::<dyad::rrr::RrrVelocity<f64>>(&stmt.name)
+                .vel_group::<dyad::rrr::RrrVelocity<f64>>(me)
                 .ok_or_else(missing)?;
             let r = dyad::rrr::acceleration(g, gv, ma.as_ref(), mb.as_ref())?;
-            cx.set_motion(stmt, r.ac);
-            cx.set_own(stmt, 0, r.alpha1);
-            cx.set_own(stmt, 1, r.alpha2);
-            cx.keep(stmt, r, None);
+            cx.set_motion(me, r.ac);
+            cx.set_own(me, 0, r.alpha1);
+            cx.set_own(me, 1, r.alpha2);
         } else {
             // The link lengths are the determinant's scale, as emitted.
-            let (l1, l2) = (num(self.l1), num(self.l2));
-            let r = dyad::rrr::velocity_lengths(g, l1, l2, ma.as_ref(), mb.as_ref())?;
-            cx.set_motion(stmt, r.vc);
-            cx.set_own(stmt, 0, r.omega1);
-            cx.set_own(stmt, 1, r.omega2);
-            cx.keep(stmt, r, Some(r.condition));
+            let r = dyad::rrr::velocity_lengths(g, self.l1, self.l2, ma.as_ref(), mb.as_ref())?;
+            cx.set_motion(me, r.vc);
+            cx.set_own(me, 0, r.omega1);
+            cx.set_own(me, 1, r.omega2);
+            cx.keep(me, r, Some(r.condition));
         }
         Ok(())
     }
 
-    fn run_link_dir(&self, index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+    /// `force::rrr::reactions` on the links' loads about the joint.
+    fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let (me, a, b) = (&self.me, self.a, self.b);
+        let (l1, l2) = cx.loads_about(me, me.point);
+        let rx = mechanism_core::force::rrr::reactions(
+            &cx.at(a),
+            &cx.at(b),
+            &cx.at(me.point),
+            &l1,
+            &l2,
+        )?;
+        let ba = cx.pass_revolute(a, rx.a);
+        let bb = cx.pass_revolute(b, rx.b);
+        cx.revolute(ba, me.links[0], rx.a);
+        cx.revolute(bb, me.links[1], rx.b);
+        cx.inner(me, super::run::ForceValue::Force(rx.c));
+        cx.conditions.push(rx.min_pivot_ratio);
+        Ok(())
+    }
+
+    fn link_dir(&self, index: usize, pose: &RunPose) -> mechanism_core::Vector2<f64> {
         let nan = mechanism_core::Vector2::new(f64::NAN, f64::NAN);
-        pose.kept::<dyad::rrr::RrrPosition<f64>>(&self.stmt.name)
+        pose.kept::<dyad::rrr::RrrPosition<f64>>(&self.me)
             .map_or(nan, |p| if index == 0 { p.r1 } else { p.r2 })
     }
 }

@@ -5,6 +5,7 @@ use super::closure::{guide_axis, Residuals};
 use super::forces::{drive, prismatic, rx, ForceCx, Held};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
+use super::run::{Compile, ForceRunCx, GuideSlot, InputSlot, Me, RunCx, RunPose};
 use super::tokens::{along, grp, local, tag};
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::kinds::pose::num;
@@ -65,7 +66,6 @@ impl<'a> GroupKind<'a> for Slider<'a> {
         let g = pose.line(self.guide);
         let s = driver::slider::position(&g, num(self.offset), input(self.input))?;
         pose.found(self.stmt, Some(s.p), &[g.dir]);
-        pose.keep(self.stmt, s);
         Ok(None)
     }
 
@@ -236,40 +236,43 @@ fn lane_steps(
 }
 
 impl super::run::RunKind for Slider<'_> {
-    /// `force::slider::reactions` on its block's load about its point; the
-    /// guide's reaction and the drive onto the guide's carrier.
-    fn run_forces(
-        &self,
-        cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        use mechanism_core::force::Wrench;
-        let (stmt, guide, input) = (self.stmt, self.guide, self.input);
-        let (link, name) = (&stmt.links[0], &stmt.name);
-        let load = cx.load_about(link, name);
-        let dir = cx.pose.line(guide).dir;
-        let rx = mechanism_core::force::slider::reactions(&dir, &load)?;
-        let body = cx.body_of_guide(guide);
-        if let Some(b) = &body {
-            if let Some(r) = cx.reference(b) {
-                let w = Wrench::force_at(
-                    &(-(rx.guide.force + dir * rx.drive)),
-                    &cx.at(name),
-                    &cx.at(&r),
-                )
-                .with_couple(-rx.guide.moment);
-                cx.add(b, w);
-            }
-        }
-        cx.prismatic(&body, link, rx.guide);
-        cx.power.push(rx.drive * (cx.rate)(input));
-        cx.drive(input, Held::Push, rx.drive);
-        Ok(())
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        Box::new(SliderRun {
+            me: cx.me(self.stmt),
+            guide: cx.guide(self.guide),
+            input: cx.input(self.input),
+            input_name: super::run::intern(&self.input.to_string()),
+            offset: cx.num(self.offset),
+        })
+    }
+}
+
+/// A slider, compiled: its guide, input and the block's offset (L).
+struct SliderRun {
+    me: Me,
+    guide: GuideSlot,
+    input: InputSlot,
+    input_name: &'static str,
+    offset: f64,
+}
+
+impl super::run::Step for SliderRun {
+    fn group(&self) -> &'static str {
+        self.me.group
     }
 
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let g = pose.line(self.guide);
+        let s = driver::slider::position(&g, self.offset, pose.input(self.input))?;
+        pose.found(&self.me, s.p, &[g.dir]);
+        pose.keep(&self.me, s);
+        Ok(None)
+    }
+
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let g = cx
             .pose
-            .kept::<driver::slider::SliderPosition<f64>>(&self.stmt.name)
+            .kept::<driver::slider::SliderPosition<f64>>(&self.me)
             .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Slider))?;
         let line = cx.pose.line(self.guide);
         let (s, rate) = (cx.value(self.input), cx.rate(self.input));
@@ -281,11 +284,28 @@ impl super::run::RunKind for Slider<'_> {
         } else {
             driver::slider::velocity(g, &line, s, rate, gvel.as_ref())?
         };
-        cx.set_motion(self.stmt, pv);
+        cx.set_motion(&self.me, pv);
         Ok(())
     }
 
-    fn run_link_dir(&self, _index: usize, pose: &Pose) -> mechanism_core::Vector2<f64> {
+    /// `force::slider::reactions` on its block's load about its point; the
+    /// guide's reaction and the drive onto the guide's carrier.
+    fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let (me, guide) = (&self.me, self.guide);
+        let link = me.links[0];
+        let load = cx.load_about(link, me.point);
+        let dir = cx.pose.line(guide).dir;
+        let rx = mechanism_core::force::slider::reactions(&dir, &load)?;
+        let body = cx.body_of_guide(guide);
+        let push = rx.guide.force + dir * rx.drive;
+        cx.react_on(body, push, cx.at(me.point), Some(rx.guide.moment));
+        cx.prismatic(body, link, rx.guide);
+        cx.power.push(rx.drive * cx.rate(self.input));
+        cx.drive(self.input_name, Held::Push, rx.drive);
+        Ok(())
+    }
+
+    fn link_dir(&self, _index: usize, pose: &RunPose) -> mechanism_core::Vector2<f64> {
         pose.line(self.guide).dir
     }
 }

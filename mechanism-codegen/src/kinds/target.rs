@@ -8,6 +8,7 @@
 use super::forces::{body_name, rx, ForceCx, Held, Reaction};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::rates::{vec_ty, RateCx};
+use super::run::{Compile, ForceRunCx, InputSlot, Me, RunCx, RunPose};
 use super::tokens::tag;
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::model::Stmt;
@@ -235,40 +236,68 @@ impl<'a> GroupKind<'a> for Target<'a> {
 }
 
 impl super::run::RunKind for Target<'_> {
-    /// `force::target::reactions` on the effector's load about its point:
-    /// the positioner's force components and couple.
-    fn run_forces(
-        &self,
-        cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        let (stmt, x, y) = (self.stmt, self.x, self.y);
-        let (link, name) = (&stmt.links[0], &stmt.name);
-        let load = cx.load_about(link, name);
-        let rx = mechanism_core::force::target::reactions(&load)?;
-        cx.power
-            .push(rx.drive.x * (cx.rate)(x) + rx.drive.y * (cx.rate)(y));
-        cx.drive(x, Held::Push, rx.drive.x);
-        cx.drive(y, Held::Push, rx.drive.y);
-        let ground = body_name(&None);
-        cx.field(
-            Family::Mount.pair_text(ground, link),
-            Held::Torque,
-            super::run::ForceValue::Scalar(rx.couple),
-        );
-        Ok(())
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        Box::new(TargetRun {
+            me: cx.me(self.stmt),
+            x: cx.input(self.x),
+            y: cx.input(self.y),
+            names: [
+                super::run::intern(&self.x.to_string()),
+                super::run::intern(&self.y.to_string()),
+            ],
+        })
+    }
+}
+
+/// A target, compiled: its two inputs (L) and their names.
+struct TargetRun {
+    me: Me,
+    x: InputSlot,
+    y: InputSlot,
+    names: [&'static str; 2],
+}
+
+impl super::run::Step for TargetRun {
+    fn group(&self) -> &'static str {
+        self.me.group
     }
 
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let p = driver::target::position(pose.input(self.x), pose.input(self.y))?;
+        pose.found(&self.me, p, &[mechanism_core::Vector2::x()]);
+        Ok(None)
+    }
+
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
         let v = if cx.accel() {
             driver::target::acceleration(cx.accel_of(self.x), cx.accel_of(self.y))?
         } else {
             driver::target::velocity(cx.rate(self.x), cx.rate(self.y))?
         };
-        cx.set_motion(self.stmt, v);
+        cx.set_motion(&self.me, v);
         Ok(())
     }
 
-    fn run_link_dir(&self, _index: usize, _pose: &Pose) -> mechanism_core::Vector2<f64> {
+    /// `force::target::reactions` on the effector's load about its point:
+    /// the positioner's force components and couple.
+    fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let link = self.me.links[0];
+        let load = cx.load_about(link, self.me.point);
+        let rx = mechanism_core::force::target::reactions(&load)?;
+        cx.power
+            .push(rx.drive.x * cx.rate(self.x) + rx.drive.y * cx.rate(self.y));
+        cx.drive(self.names[0], Held::Push, rx.drive.x);
+        cx.drive(self.names[1], Held::Push, rx.drive.y);
+        let ground = body_name(&None);
+        cx.scalar(
+            |l| Family::Mount.pair_text(ground, l.link_name(Some(link))),
+            Held::Torque,
+            rx.couple,
+        );
+        Ok(())
+    }
+
+    fn link_dir(&self, _index: usize, _pose: &RunPose) -> mechanism_core::Vector2<f64> {
         mechanism_core::Vector2::x()
     }
 }

@@ -25,6 +25,7 @@ use super::closure::{f, Residuals};
 use super::forces::{revolute, rx, ForceCx};
 use super::lane::{Lane, Step};
 use super::rates::{states, vec_ty, RateCx};
+use super::run::{Compile, ForceRunCx, InputSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, tag, unit_field};
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Tracking, Turn};
 use crate::diag::{show_num, Diagnostics};
@@ -80,27 +81,27 @@ pub struct Tracked {
     pub angle: bool,
 }
 
-/// `P`'s offset in the ternary's frame (L), folded.
-fn p_local(t: &Args) -> Vector2<f64> {
+/// `P`'s offset in the ternary's frame (L), its dimensions valued by `num`.
+fn p_local(t: &Args, num: &dyn Fn(&Value) -> f64) -> Vector2<f64> {
     match &t.p_local {
         Local::Cartesian(x, y) => Vector2::new(num(x), num(y)),
         Local::Polar(d, a) => geometry::unit(num(a)) * num(d),
     }
 }
 
-/// The core's dimensions, folded.
-fn dims(t: &Args) -> triad::Triad<f64> {
+/// The core's dimensions, valued by `num` (folded: `pose::num`).
+fn dims(t: &Args, num: &dyn Fn(&Value) -> f64) -> triad::Triad<f64> {
     triad::Triad {
         l1: num(&t.l[0]),
         l2: num(&t.l[1]),
         l3: num(&t.l[2]),
         ab: num(&t.ab),
-        p_local: p_local(t),
+        p_local: p_local(t, num),
     }
 }
 
-/// The stated pose, folded.
-fn stated(t: &Args) -> Near<f64> {
+/// The stated pose, valued by `num`.
+fn stated(t: &Args, num: &dyn Fn(&Value) -> f64) -> Near<f64> {
     let p = |k: usize| Point2::new(num(&t.near[k].0), num(&t.near[k].1));
     Near::new(p(0), p(1), p(2))
 }
@@ -156,9 +157,9 @@ pub fn track(
             lo + h * i as f64
         }
     };
-    let dims = dims(t);
+    let dims = dims(t, &num);
     let k0 = ks(q0).ok_or(not_near)?;
-    let start = triad::position(&dims, &k0, &stated(t))?;
+    let start = triad::position(&dims, &k0, &stated(t, &num))?;
     // The grid index at or below the stated input.
     let i0 = (((q0 - lo) / h).floor() as usize).min(steps);
     let mut poses: Vec<Option<TriadPosition<f64>>> = vec![None; steps + 1];
@@ -230,7 +231,7 @@ impl TriadKind<'_> {
     /// one when there is no table.
     fn hint(&self, q: f64) -> Result<Near<f64>, mechanism_core::Error<f64>> {
         let Some(rows) = self.tracked.filter(|t| !t.rows.is_empty()) else {
-            return Ok(stated(self.t));
+            return Ok(stated(self.t, &num));
         };
         if rows.angle {
             triad::near_from_table_turning(&rows.rows, q)
@@ -309,11 +310,10 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
     ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let k = self.t.k.each_ref().map(|k| pose.point(k));
         let near = self.hint(input(&self.t.at.0))?;
-        let dims = dims(self.t);
+        let dims = dims(self.t, &num);
         let p = triad::position(&dims, &k, &near)?;
         let axes = [p.r1 / dims.l1, p.r2 / dims.l2, p.r3 / dims.l3, p.axis];
         pose.found(self.stmt, Some(p.a), &axes);
-        pose.keep(self.stmt, p);
         Ok(Some(p.jacobian))
     }
 
@@ -673,76 +673,133 @@ fn why(fault: &Fault) -> String {
 }
 
 impl super::run::RunKind for TriadKind<'_> {
+    fn compile(&self, cx: &Compile<'_>) -> Box<dyn super::run::Step> {
+        let t = self.t;
+        let num = |v: &Value| cx.num(v);
+        let none = Tracked::default();
+        let table = self.tracked.unwrap_or(&none);
+        Box::new(TriadRun {
+            me: cx.me(self.stmt),
+            k: t.k.each_ref().map(|k| cx.point(k)),
+            b: cx.point(&t.b),
+            p: cx.point(&t.p),
+            at: cx.input(&t.at.0),
+            dims: dims(t, &num),
+            stated: stated(t, &num),
+            rows: table.rows.clone(),
+            turning: table.angle,
+        })
+    }
+}
+
+/// A triad, compiled: its legs' known points, its joints `B` and `P`, the
+/// input its hint follows, its dimensions, the stated pose and the
+/// tracked table (empty: the stated pose is the hint).
+struct TriadRun {
+    me: Me,
+    k: [PointSlot; 3],
+    b: PointSlot,
+    p: PointSlot,
+    at: InputSlot,
+    dims: triad::Triad<f64>,
+    stated: Near<f64>,
+    rows: Vec<[f64; 7]>,
+    turning: bool,
+}
+
+impl TriadRun {
+    /// The hint the position uses at `q`, as `TriadKind::hint`.
+    fn hint(&self, q: f64) -> Result<Near<f64>, mechanism_core::Error<f64>> {
+        if self.rows.is_empty() {
+            Ok(self.stated)
+        } else if self.turning {
+            triad::near_from_table_turning(&self.rows, q)
+        } else {
+            triad::near_from_table(&self.rows, q)
+        }
+    }
+}
+
+impl super::run::Step for TriadRun {
+    fn group(&self) -> &'static str {
+        self.me.group
+    }
+
+    fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
+        let k = self.k.map(|k| pose.point(k));
+        let near = self.hint(pose.input(self.at))?;
+        let d = &self.dims;
+        let p = triad::position(d, &k, &near)?;
+        let axes = [p.r1 / d.l1, p.r2 / d.l2, p.r3 / d.l3, p.axis];
+        pose.found(&self.me, p.a, &axes);
+        pose.keep(&self.me, p);
+        Ok(Some(p.jacobian))
+    }
+
+    fn rates(&self, cx: &mut RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let me = &self.me;
+        let missing = || super::run::missing(mechanism_core::Primitive::Triad);
+        let g = cx
+            .pose
+            .kept::<triad::TriadPosition<f64>>(me)
+            .ok_or_else(missing)?;
+        let d = &self.dims;
+        let [m1, m2, m3] = self.k.map(|k| cx.point_arg(k));
+        if cx.accel() {
+            let gv = cx
+                .vel_group::<triad::TriadVelocity<f64>>(me)
+                .ok_or_else(missing)?;
+            let r = triad::acceleration(d, g, gv, m1.as_ref(), m2.as_ref(), m3.as_ref())?;
+            cx.set_motion(me, r.aa);
+            for (i, w) in [r.alpha1, r.alpha2, r.alpha3, r.alpha]
+                .into_iter()
+                .enumerate()
+            {
+                cx.set_own(me, i, w);
+            }
+        } else {
+            let r = triad::velocity(d, g, m1.as_ref(), m2.as_ref(), m3.as_ref())?;
+            cx.set_motion(me, r.va);
+            for (i, w) in [r.omega1, r.omega2, r.omega3, r.omega]
+                .into_iter()
+                .enumerate()
+            {
+                cx.set_own(me, i, w);
+            }
+            cx.keep(me, r, Some(r.condition));
+        }
+        Ok(())
+    }
+
     /// `triad::reactions` on the loads of its four links; the legs'
     /// reactions at `K1`, `K2`, `K3` passed to their bodies.
-    fn run_forces(
-        &self,
-        cx: &mut super::run::ForceRunCx<'_>,
-    ) -> Result<(), mechanism_core::Error<f64>> {
-        let (stmt, t) = (self.stmt, self.t);
-        let (links, a) = (&stmt.links, &stmt.name);
+    fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
+        let (me, links) = (&self.me, self.me.links);
         let loads = triad::TriadLoads {
-            leg1: cx.load_about(&links[0], a),
-            leg2: cx.load_about(&links[1], &t.b),
-            leg3: cx.load_about(&links[2], &t.p),
-            ternary: cx.load_about(&links[3], a),
+            leg1: cx.load_about(links[0], me.point),
+            leg2: cx.load_about(links[1], self.b),
+            leg3: cx.load_about(links[2], self.p),
+            ternary: cx.load_about(links[3], me.point),
         };
         let g = cx
             .pose
-            .kept::<TriadPosition<f64>>(&stmt.name)
+            .kept::<TriadPosition<f64>>(me)
             .ok_or_else(|| super::run::missing(mechanism_core::Primitive::Triad))?;
         let rx = triad::reactions(g, &loads)?;
         for (i, force) in [rx.k1, rx.k2, rx.k3].into_iter().enumerate() {
-            let body = cx.pass_revolute(&t.k[i], force);
-            cx.revolute(&body, &links[i], force);
+            let body = cx.pass_revolute(self.k[i], force);
+            cx.revolute(body, links[i], force);
         }
         for (i, force) in [rx.a, rx.b, rx.p].into_iter().enumerate() {
-            let from = Some(links[i].to_string());
-            cx.revolute(&from, &links[3], force);
+            cx.revolute(Some(links[i]), links[3], force);
         }
         cx.conditions.push(rx.min_pivot_ratio);
         Ok(())
     }
 
-    fn run_rates(&self, cx: &mut super::run::RunCx<'_>) -> Result<(), mechanism_core::Error<f64>> {
-        let stmt = self.stmt;
-        let missing = || super::run::missing(mechanism_core::Primitive::Triad);
-        let g = cx
-            .pose
-            .kept::<triad::TriadPosition<f64>>(&stmt.name)
-            .ok_or_else(missing)?;
-        let d = dims(self.t);
-        let [m1, m2, m3] = self.t.k.each_ref().map(|k| cx.point_arg(k));
-        if cx.accel() {
-            let gv = cx
-                .vel_group::<triad::TriadVelocity<f64>>(&stmt.name)
-                .ok_or_else(missing)?;
-            let r = triad::acceleration(&d, g, gv, m1.as_ref(), m2.as_ref(), m3.as_ref())?;
-            cx.set_motion(stmt, r.aa);
-            for (i, w) in [r.alpha1, r.alpha2, r.alpha3, r.alpha]
-                .into_iter()
-                .enumerate()
-            {
-                cx.set_own(stmt, i, w);
-            }
-            cx.keep(stmt, r, None);
-        } else {
-            let r = triad::velocity(&d, g, m1.as_ref(), m2.as_ref(), m3.as_ref())?;
-            cx.set_motion(stmt, r.va);
-            for (i, w) in [r.omega1, r.omega2, r.omega3, r.omega]
-                .into_iter()
-                .enumerate()
-            {
-                cx.set_own(stmt, i, w);
-            }
-            cx.keep(stmt, r, Some(r.condition));
-        }
-        Ok(())
-    }
-
-    fn run_link_dir(&self, index: usize, pose: &Pose) -> Vector2<f64> {
+    fn link_dir(&self, index: usize, pose: &RunPose) -> Vector2<f64> {
         let nan = Vector2::new(f64::NAN, f64::NAN);
-        pose.kept::<triad::TriadPosition<f64>>(&self.stmt.name)
+        pose.kept::<triad::TriadPosition<f64>>(&self.me)
             .map_or(nan, |p| match index {
                 0 => p.r1,
                 1 => p.r2,

@@ -20,11 +20,8 @@
 
 use super::{intern, Column, Mechanism, Position, Rates};
 use crate::emit::forces::ForceField;
-use crate::kinds::{
-    self,
-    forces::Held,
-    run::{ForceRunCx, ForceValue, RunReaction},
-};
+use crate::kinds::forces::Held;
+use crate::kinds::run::{ForceRunCx, GuideSlot, Layout, LinkSlot, PointSlot};
 use crate::model::{ForceSpecValue, Level, MassSpec};
 use crate::names::Family;
 use crate::value::{Value, ValueKind};
@@ -47,6 +44,25 @@ pub struct Forces {
     /// |sum of the powers of drives, loads, weights and inertia| over the
     /// largest of them (0 when all vanish; a few eps when consistent).
     pub power_residual: f64,
+    scratch: Scratch,
+}
+
+/// What one force evaluation works in, kept between evaluations: each
+/// link's load, the power terms, the groups' conditioning, and the
+/// velocities at unit rates of an inverse-kinematics definition's motors.
+#[derive(Clone, Debug, Default)]
+struct Scratch {
+    loads: Vec<Option<Wrench<f64>>>,
+    power: Vec<f64>,
+    conditions: Vec<f64>,
+    unit: Vec<Rates>,
+}
+
+impl PartialEq for Scratch {
+    /// Scratch space compares equal: only the results count.
+    fn eq(&self, _other: &Self) -> bool {
+        true
+    }
 }
 
 /// `v` with every `loads.NAME` replaced by its value.
@@ -92,21 +108,6 @@ fn primitive_named(name: &str) -> Primitive {
     .unwrap_or(Primitive::LinkPoint)
 }
 
-/// Field names unique as the emitter makes them: a repeated name gets
-/// `_2`, `_3`, ...
-fn unique_names(reactions: &mut [RunReaction]) {
-    let mut seen = std::collections::BTreeSet::new();
-    for r in reactions {
-        let mut candidate = r.name.clone();
-        let mut k = 2;
-        while !seen.insert(candidate.clone()) {
-            candidate = format!("{}_{k}", r.name);
-            k += 1;
-        }
-        r.name = candidate;
-    }
-}
-
 /// The power residual of the terms, as the generated code computes it.
 fn power_residual(terms: &[f64]) -> f64 {
     let Some((&first, rest)) = terms.split_first() else {
@@ -124,6 +125,198 @@ fn power_residual(terms: &[f64]) -> f64 {
     } else {
         0.0
     }
+}
+
+/// One part of a link's mass, compiled: its centre, its mass (or the
+/// error the generated code's check gives) and, for a link's only part,
+/// its moment of inertia (likewise).
+#[derive(Clone, Debug)]
+struct MassPart {
+    at: PointSlot,
+    mass: Result<f64, Error<f64>>,
+    j: Option<Result<f64, Error<f64>>>,
+}
+
+/// A link's masses, compiled: the link, the link whose rates its inertia
+/// couple reads, its parts and, for several parts, their moments of
+/// inertia summed (`None`: none has one).
+#[derive(Clone, Debug)]
+struct LinkMasses {
+    link: LinkSlot,
+    turning: LinkSlot,
+    one: bool,
+    parts: Vec<MassPart>,
+    inertia: Option<Result<f64, Error<f64>>>,
+}
+
+/// An external force's value: components (force units), or a magnitude
+/// along a guide's direction.
+#[derive(Clone, Copy, Debug)]
+enum ForceVal {
+    Components(Vector2<f64>),
+    Along(GuideSlot, f64),
+}
+
+/// An external force, compiled: the link it acts on, its point, its value.
+#[derive(Clone, Copy, Debug)]
+struct ExtForce {
+    link: LinkSlot,
+    at: PointSlot,
+    value: ForceVal,
+}
+
+/// The motors of an inverse-kinematics definition, compiled: the target's
+/// group name, the unit rates of its two inputs, each motor's link and
+/// carrier (the links whose rates they share), the places of the target's
+/// two driving forces among the values.
+#[derive(Clone, Debug)]
+struct Motors {
+    group: &'static str,
+    unit: [Vec<f64>; 2],
+    links: Vec<(Option<LinkSlot>, Option<LinkSlot>)>,
+    drive: [Option<usize>; 2],
+}
+
+/// The force analysis compiled with the current loads and parameters: the
+/// known loads in the order `emit::forces::loads` writes them (masses by
+/// link, then forces, then couples), and the motors.
+#[derive(Clone, Debug, Default)]
+pub(super) struct ForcePlan {
+    gravity: Option<Vector2<f64>>,
+    masses: Vec<LinkMasses>,
+    forces: Vec<ExtForce>,
+    torques: Vec<(LinkSlot, f64)>,
+    motors: Option<Motors>,
+}
+
+impl ForcePlan {
+    /// The plan of `m`'s force analysis (empty without one).
+    pub(super) fn new(m: &Mechanism) -> Self {
+        if !m.has_forces() {
+            return ForcePlan::default();
+        }
+        let k = &m.model.kinetics;
+        let slots: &Layout = &m.slots;
+        let gravity = k
+            .gravity
+            .as_ref()
+            .map(|(_, gx, gy)| Vector2::new(m.value(gx), m.value(gy)));
+        let masses = crate::emit::forces::masses_by_link(&k.masses)
+            .into_iter()
+            .map(|(link, parts)| m.link_masses(&link, &parts))
+            .collect();
+        let forces = k
+            .forces
+            .iter()
+            .filter_map(|f| {
+                let link = match &f.on {
+                    Some(l) => l.to_string(),
+                    None => m.plan.links_with_point(&f.at.to_string()).first()?.clone(),
+                };
+                let value = match &f.value {
+                    ForceSpecValue::Components(x, y) => {
+                        ForceVal::Components(Vector2::new(m.value(x), m.value(y)))
+                    }
+                    ForceSpecValue::Along(guide, v) => {
+                        ForceVal::Along(slots.guide_named(&guide.to_string()), m.value(v))
+                    }
+                };
+                Some(ExtForce {
+                    link: slots.link_named(&link),
+                    at: slots.point_named(&f.at.to_string()),
+                    value,
+                })
+            })
+            .collect();
+        let torques = k
+            .torques
+            .iter()
+            .map(|t| (slots.link_named(&t.on.to_string()), m.value(&t.value)))
+            .collect();
+        ForcePlan {
+            gravity,
+            masses,
+            forces,
+            torques,
+            motors: m.motor_plan(),
+        }
+    }
+
+    /// The known loads onto the links' loads, their powers in order.
+    fn known_loads(&self, cx: &mut ForceRunCx<'_>) -> Result<(), Error<f64>> {
+        for lm in &self.masses {
+            masses(cx, lm, self.gravity)?;
+        }
+        for f in &self.forces {
+            let value = match f.value {
+                ForceVal::Components(v) => v,
+                ForceVal::Along(guide, v) => cx.pose.line(guide).dir * v,
+            };
+            if let Some(v) = cx.velocity_of(f.at) {
+                cx.power.push(geometry::dot(&value, &v));
+            }
+            cx.force_on(f.link, value, f.at);
+        }
+        for &(on, value) in &self.torques {
+            if let Some((w, _)) = cx.rates_of(on) {
+                cx.power.push(value * w);
+            }
+            cx.add(on, Wrench::couple(value));
+        }
+        Ok(())
+    }
+}
+
+/// The masses of one link (`loads::mass`, `loads::mass_parts`): each
+/// part's inertia force and weight at its centre; the inertia couple (the
+/// parts' `j` summed) when the link turns. Checks, powers and loads in
+/// the generated order.
+fn masses(
+    cx: &mut ForceRunCx<'_>,
+    lm: &LinkMasses,
+    gravity: Option<Vector2<f64>>,
+) -> Result<(), Error<f64>> {
+    let turning = cx.rates_of(lm.turning);
+    for part in &lm.parts {
+        let mass = part.mass?;
+        let v_g = cx.velocity_of(part.at);
+        let mut terms = [Vector2::zeros(); 2];
+        let mut n = 0;
+        if v_g.is_some() {
+            terms[n] = cx.acceleration_of(part.at) * (-mass);
+            n += 1;
+        }
+        if let Some(g) = gravity {
+            terms[n] = g * mass;
+            n += 1;
+        }
+        // A link's only mass: its couple comes before its forces.
+        let mut couple = None;
+        if let (true, Some(j), Some((w, alpha))) = (lm.one, part.j, turning) {
+            let c = -(j? * alpha);
+            cx.power.push(c * w);
+            couple = Some(c);
+        }
+        if let Some(v) = v_g {
+            for t in &terms[..n] {
+                cx.power.push(geometry::dot(t, &v));
+            }
+        }
+        if let Some((first, rest)) = terms[..n].split_first() {
+            let total = rest.iter().fold(*first, |acc, t| acc + t);
+            cx.force_on(lm.link, total, part.at);
+        }
+        if let Some(c) = couple {
+            cx.add(lm.link, Wrench::couple(c));
+        }
+    }
+    let (Some((w, alpha)), Some(j)) = (turning, lm.inertia) else {
+        return Ok(());
+    };
+    let c = -(j? * alpha);
+    cx.power.push(c * w);
+    cx.add(lm.link, Wrench::couple(c));
+    Ok(())
 }
 
 impl Mechanism {
@@ -156,6 +349,7 @@ impl Mechanism {
         match self.loads.get_mut(name) {
             Some(v) => {
                 *v = value;
+                self.compiled.forces = ForcePlan::new(self);
                 Ok(())
             }
             None => Err(format!(
@@ -179,7 +373,8 @@ impl Mechanism {
         }
         let units = &self.model.units;
         let (f, m) = (intern(&units.force), intern(&units.moment()));
-        let code = crate::emit::forces::emit(&self.model, &self.plan, &self.moving);
+        let moving = crate::emit::moving_points(&self.model, &self.plan);
+        let code = crate::emit::forces::emit(&self.model, &self.plan, &moving);
         let mut cols = Vec::new();
         let mut push = |name: String, unit| cols.push(Column { name, unit });
         for (n, held) in &code.fields {
@@ -202,6 +397,25 @@ impl Mechanism {
         cols
     }
 
+    /// Storage for [`Mechanism::forces_into`].
+    pub fn new_forces(&self) -> Forces {
+        let unit = match &self.compiled.forces.motors {
+            Some(_) => vec![self.new_rates(), self.new_rates()],
+            None => Vec::new(),
+        };
+        Forces {
+            values: Vec::new(),
+            condition: f64::NAN,
+            power_residual: f64::NAN,
+            scratch: Scratch {
+                loads: vec![None; self.slots.link_names.len() + 1],
+                power: Vec::new(),
+                conditions: Vec::new(),
+                unit,
+            },
+        }
+    }
+
     /// The force analysis at a solved pose `pos`, its velocity `vel` and
     /// acceleration `acc` (from [`Mechanism::velocity`] and
     /// [`Mechanism::acceleration`]), with the current load values
@@ -214,6 +428,35 @@ impl Mechanism {
     /// (`NonFinite`, "force analysis (the definition has no masses or
     /// loads)").
     pub fn forces(&self, pos: &Position, vel: &Rates, acc: &Rates) -> Result<Forces, Error<f64>> {
+        let mut out = self.new_forces();
+        self.forces_into(pos, vel, acc, &mut out)?;
+        Ok(out)
+    }
+
+    /// [`Mechanism::forces`] into `out` (from [`Mechanism::new_forces`]),
+    /// allocating nothing once its buffers have grown to their size: the
+    /// known loads, each solved step's `forces` in the reverse of the solve
+    /// order, then the motors.
+    pub fn forces_into(
+        &self,
+        pos: &Position,
+        vel: &Rates,
+        acc: &Rates,
+        out: &mut Forces,
+    ) -> Result<(), Error<f64>> {
+        self.force_walk(pos, vel, acc, out, None)
+    }
+
+    /// The walk of [`Mechanism::forces_into`]; with `names`, each field's
+    /// name and kind as the walk writes it.
+    fn force_walk(
+        &self,
+        pos: &Position,
+        vel: &Rates,
+        acc: &Rates,
+        out: &mut Forces,
+        names: Option<&mut Vec<(String, Held)>>,
+    ) -> Result<(), Error<f64>> {
         if !self.has_forces() {
             return Err(Error::new(
                 Primitive::LinkPoint,
@@ -222,57 +465,62 @@ impl Mechanism {
                 },
             ));
         }
-        let rate = |n: &Ident| {
-            self.input_index(n)
-                .map_or(f64::NAN, |k| vel.rates.get(k).copied().unwrap_or(f64::NAN))
-        };
+        let n = self.model.inputs.len();
+        let Scratch {
+            loads,
+            power,
+            conditions,
+            unit,
+        } = &mut out.scratch;
+        self.fits(
+            pos.solved
+                && vel.solved
+                && acc.solved
+                && pos.pose.fits(&self.slots, n)
+                && vel.motion.fits(&self.slots, n)
+                && acc.motion.fits(&self.slots, n)
+                && loads.len() == self.slots.link_names.len() + 1
+                && unit.len()
+                    == if self.compiled.forces.motors.is_some() {
+                        2
+                    } else {
+                        0
+                    },
+        )?;
+        loads.fill(None);
+        power.clear();
+        conditions.clear();
+        out.values.clear();
         let mut cx = ForceRunCx {
             pose: &pos.pose,
             vel: &vel.motion,
             acc: &acc.motion,
-            plan: &self.plan,
-            moving: &self.moving,
-            rate: &rate,
-            loads: BTreeMap::new(),
-            reactions: Vec::new(),
-            power: Vec::new(),
-            conditions: Vec::new(),
+            layout: &self.slots,
+            loads,
+            values: &mut out.values,
+            power,
+            conditions,
+            names,
         };
-        self.known_loads(&mut cx)?;
-        kinds::pose::with_params(&self.params, || {
-            for &i in self.plan.solve.iter().rev() {
-                let stmt = &self.model.stmts[i];
-                kinds::of(stmt)
-                    .run_forces(&mut cx)
-                    .map_err(|e| e.in_group(intern(&stmt.name.to_string())))?;
-            }
-            Ok::<(), Error<f64>>(())
-        })?;
-        self.motors(pos, &mut cx)?;
-        let mut reactions = std::mem::take(&mut cx.reactions);
-        unique_names(&mut reactions);
+        let c = &self.compiled;
+        c.forces.known_loads(&mut cx)?;
+        for &i in c.solve.iter().rev() {
+            let step = &c.steps[i.0];
+            step.forces(&mut cx).map_err(|e| e.in_group(step.group()))?;
+        }
+        self.motors(pos, &mut cx, unit)?;
         let condition = cx
             .conditions
             .iter()
             .fold(vel.condition, |c, &x| geometry::min(c, x));
-        let power_residual = power_residual(&cx.power);
-        let mut values = Vec::new();
-        for r in &reactions {
-            match r.value {
-                ForceValue::Force(v) => values.extend([v.x, v.y]),
-                ForceValue::Prismatic(p) => values.extend([p.force.x, p.force.y, p.moment]),
-                ForceValue::Scalar(x) => values.push(x),
-            }
-        }
-        values.extend([condition, power_residual]);
-        if let Some(bad) = values.iter().find(|v| !v.is_finite()) {
+        let power_residual = power_residual(cx.power);
+        out.values.extend([condition, power_residual]);
+        if let Some(bad) = out.values.iter().find(|v| !v.is_finite()) {
             return Err(super::non_finite(*bad));
         }
-        Ok(Forces {
-            values,
-            condition,
-            power_residual,
-        })
+        out.condition = condition;
+        out.power_residual = power_residual;
+        Ok(())
     }
 
     /// A load value (`Value`) with the current parameters and loads.
@@ -302,7 +550,7 @@ impl Mechanism {
         else {
             return Ok(x);
         };
-        let primitive = primitive_named(kinds::of(stmt).primitive());
+        let primitive = primitive_named(crate::kinds::of(stmt).primitive());
         let group = intern(&stmt.name.to_string());
         if mass {
             let what = intern(&format!("mass of `{link}`{part}"));
@@ -313,57 +561,13 @@ impl Mechanism {
         }
     }
 
-    /// The known loads (`emit::forces::loads`): each link's masses, then
-    /// the external forces, then the external couples.
-    fn known_loads(&self, cx: &mut ForceRunCx<'_>) -> Result<(), Error<f64>> {
-        let k = &self.model.kinetics;
-        let gravity = k
-            .gravity
-            .as_ref()
-            .map(|(_, gx, gy)| Vector2::new(self.value(gx), self.value(gy)));
-        for (link, parts) in crate::emit::forces::masses_by_link(&k.masses) {
-            self.masses(cx, &link, &parts, gravity)?;
-        }
-        for f in &k.forces {
-            let link = match &f.on {
-                Some(l) => l.to_string(),
-                None => match self.plan.links_with_point(&f.at.to_string()).first() {
-                    Some(l) => l.clone(),
-                    None => continue,
-                },
-            };
-            let value = match &f.value {
-                ForceSpecValue::Components(x, y) => Vector2::new(self.value(x), self.value(y)),
-                ForceSpecValue::Along(guide, v) => cx.pose.line(guide).dir * self.value(v),
-            };
-            if let Some(v) = cx.velocity_of(&f.at) {
-                cx.power.push(geometry::dot(&value, &v));
-            }
-            cx.force_on(&link, value, &f.at);
-        }
-        for t in &k.torques {
-            let value = self.value(&t.value);
-            if let Some((w, _)) = cx.rates_of(&t.on) {
-                cx.power.push(value * w);
-            }
-            cx.add(&t.on.to_string(), Wrench::couple(value));
-        }
-        Ok(())
-    }
-
-    /// The masses of one link (`loads::mass`, `loads::mass_parts`): each
-    /// part's inertia force and weight at its centre; the inertia couple
-    /// (the parts' `j` summed) when the link turns. Checks, powers and
-    /// loads in the generated order.
-    fn masses(
-        &self,
-        cx: &mut ForceRunCx<'_>,
-        link: &str,
-        parts: &[&MassSpec],
-        gravity: Option<Vector2<f64>>,
-    ) -> Result<(), Error<f64>> {
+    /// The masses of `link`, compiled: each part's checked mass and (for
+    /// a link's only part) moment of inertia, and the parts' moments of
+    /// inertia summed as the generated code sums them (folded when every
+    /// one is literal, else each checked).
+    fn link_masses(&self, link: &str, parts: &[&MassSpec]) -> LinkMasses {
         let one = parts.len() == 1;
-        let turning = cx.rates_of(&parts[0].link);
+        let mut out = Vec::new();
         let mut inertias = Vec::new();
         for (k, m) in parts.iter().enumerate() {
             let part = if one {
@@ -371,74 +575,50 @@ impl Mechanism {
             } else {
                 format!(" (part {})", k + 1)
             };
-            let mass = self.checked(&m.mass, link, &part, true)?;
-            let v_g = cx.velocity_of(&m.at);
-            let mut terms = Vec::new();
-            if v_g.is_some() {
-                terms.push(cx.acceleration_of(&m.at) * (-mass));
-            }
-            if let Some(g) = gravity {
-                terms.push(g * mass);
-            }
             let j = m.inertia.as_ref().filter(|j| j.fold() != Some(0.0));
-            // A link's only mass: its couple comes before its forces.
-            let mut couple = None;
-            if let (true, Some(j), Some((w, alpha))) = (one, j, turning) {
-                let c = -(self.checked(j, link, "", false)? * alpha);
-                cx.power.push(c * w);
-                couple = Some(c);
-            }
-            if let Some(v) = v_g {
-                for t in &terms {
-                    cx.power.push(geometry::dot(t, &v));
-                }
-            }
-            if let Some((first, rest)) = terms.split_first() {
-                let total = rest.iter().fold(*first, |acc, t| acc + t);
-                cx.force_on(link, total, &m.at);
-            }
-            if let Some(c) = couple {
-                cx.add(link, Wrench::couple(c));
-            }
+            out.push(MassPart {
+                at: self.slots.point_named(&m.at.to_string()),
+                mass: self.checked(&m.mass, link, &part, true),
+                j: j.filter(|_| one).map(|j| self.checked(j, link, "", false)),
+            });
             if let (false, Some(j)) = (one, j) {
                 inertias.push((part, j));
             }
         }
-        let Some((w, alpha)) = turning else {
-            return Ok(());
-        };
-        if inertias.is_empty() {
-            return Ok(());
-        }
-        let folded: Option<f64> = inertias.iter().map(|(_, j)| j.fold()).sum();
-        let j = match folded {
-            Some(sum) => sum,
-            None => {
-                let mut total: Option<f64> = None;
-                for (part, j) in &inertias {
-                    let x = self.checked(j, link, part, false)?;
-                    total = Some(total.map_or(x, |t| t + x));
+        let inertia = (!inertias.is_empty()).then(|| {
+            let folded: Option<f64> = inertias.iter().map(|(_, j)| j.fold()).sum();
+            match folded {
+                Some(sum) => Ok(sum),
+                None => {
+                    let mut total: Option<f64> = None;
+                    for (part, j) in &inertias {
+                        let x = self.checked(j, link, part, false)?;
+                        total = Some(total.map_or(x, |t| t + x));
+                    }
+                    Ok(total.unwrap_or(f64::NAN))
                 }
-                total.unwrap_or(f64::NAN)
             }
-        };
-        let c = -(j * alpha);
-        cx.power.push(c * w);
-        cx.add(link, Wrench::couple(c));
-        Ok(())
+        });
+        LinkMasses {
+            link: self.slots.link_named(link),
+            turning: self.slots.link_named(
+                &parts
+                    .first()
+                    .map_or_else(String::new, |p| p.link.to_string()),
+            ),
+            one,
+            parts: out,
+            inertia,
+        }
     }
 
-    /// The motors' torques of an inverse-kinematics definition
-    /// (`ForceEmitter::motors`): the rate map from two velocity
-    /// evaluations at unit rates of the target's inputs, then
-    /// `force::target::motor_torques` on the target's driving force.
-    fn motors(&self, pos: &Position, cx: &mut ForceRunCx<'_>) -> Result<(), Error<f64>> {
+    /// The motors of an inverse-kinematics definition, compiled (`None`:
+    /// not one, or no motors).
+    fn motor_plan(&self) -> Option<Motors> {
         let model = &self.model;
-        let Some((target, x, y)) = kinds::motors::held_target(model) else {
-            return Ok(());
-        };
-        if kinds::motors::reactions(model).is_empty() {
-            return Ok(());
+        let (target, x, y) = crate::kinds::motors::held_target(model)?;
+        if crate::kinds::motors::reactions(model).is_empty() {
+            return None;
         }
         let unit = |axis: &Ident| -> Vec<f64> {
             model
@@ -447,53 +627,127 @@ impl Mechanism {
                 .map(|i| if i.name == *axis { 1.0 } else { 0.0 })
                 .collect()
         };
+        let turning = |link: &Ident| {
+            self.plan
+                .turning_link(&link.to_string())
+                .map(|l| self.slots.link_named(&l))
+        };
+        let links = model
+            .kinetics
+            .motors
+            .iter()
+            .take(2)
+            .map(|m| (turning(&m.link), m.carrier.as_ref().and_then(turning)))
+            .collect();
+        let cols = self.force_columns();
+        let drive = |input: &Ident| {
+            let name = Family::Drive.text(input);
+            cols.iter().position(|c| c.name == name)
+        };
+        Some(Motors {
+            group: intern(&target.name.to_string()),
+            unit: [unit(x), unit(y)],
+            links,
+            drive: [drive(x), drive(y)],
+        })
+    }
+
+    /// The motors' torques of an inverse-kinematics definition
+    /// (`ForceEmitter::motors`): the rate map from two velocity
+    /// evaluations at unit rates of the target's inputs (into `unit`),
+    /// then `force::target::motor_torques` on the target's driving force.
+    fn motors(
+        &self,
+        pos: &Position,
+        cx: &mut ForceRunCx<'_>,
+        unit: &mut [Rates],
+    ) -> Result<(), Error<f64>> {
+        let Some(m) = &self.compiled.forces.motors else {
+            return Ok(());
+        };
+        let [ux, uy] = unit else {
+            return Ok(());
+        };
+        self.velocity_into(pos, &m.unit[0], ux)?;
+        self.velocity_into(pos, &m.unit[1], uy)?;
         let motor_rates = |vel: &Rates| -> [f64; 2] {
-            let rate = |link: &Ident| {
-                self.plan
-                    .turning_link(&link.to_string())
-                    .map(|l| vel.motion.links.get(&l).copied().unwrap_or(f64::NAN))
-            };
             let mut out = [0.0; 2];
-            for (o, m) in out.iter_mut().zip(&model.kinetics.motors) {
-                let own = rate(&m.link).unwrap_or(0.0);
-                *o = match m.carrier.as_ref().and_then(rate) {
-                    Some(c) => own - c,
+            for (o, (link, carrier)) in out.iter_mut().zip(&m.links) {
+                let own = link.map_or(0.0, |l| vel.motion.link(l));
+                *o = match carrier {
+                    Some(c) => own - vel.motion.link(*c),
                     None => own,
                 };
             }
             out
         };
-        let k_x = motor_rates(&self.velocity(pos, &unit(x))?);
-        let k_y = motor_rates(&self.velocity(pos, &unit(y))?);
-        let drive_of = |input: &Ident| {
-            let name = Family::Drive.text(input);
-            cx.reactions
-                .iter()
-                .find(|r| r.name == name)
-                .map_or(f64::NAN, |r| match r.value {
-                    ForceValue::Scalar(v) => v,
-                    _ => f64::NAN,
-                })
-        };
-        let drive = Vector2::new(drive_of(x), drive_of(y));
+        let (k_x, k_y) = (motor_rates(ux), motor_rates(uy));
+        let drive_of = |at: Option<usize>| at.and_then(|k| cx.values.get(k).copied());
+        let drive = Vector2::new(
+            drive_of(m.drive[0]).unwrap_or(f64::NAN),
+            drive_of(m.drive[1]).unwrap_or(f64::NAN),
+        );
         let rx = mechanism_core::force::target::motor_torques(k_x, k_y, &drive)
-            .map_err(|e| e.in_group(intern(&target.name.to_string())))?;
+            .map_err(|e| e.in_group(m.group))?;
         cx.conditions.push(rx.min_pivot_ratio);
-        for (k, m) in model.kinetics.motors.iter().enumerate() {
-            cx.field(
-                Family::Drive.text(&m.name),
-                Held::Torque,
-                ForceValue::Scalar(rx.torque[k]),
-            );
+        for t in rx.torque.iter().take(m.links.len()) {
+            cx.values.push(*t);
         }
         Ok(())
     }
 }
-
 #[cfg(test)]
 mod tests {
-    use super::{power_residual, unique_names};
-    use crate::kinds::{forces::Held, run::ForceValue, run::RunReaction};
+    use super::{power_residual, Held, Mechanism};
+
+    /// A block slid along a ground line drives a rocker through a rod,
+    /// with masses, gravity and a couple: a push, a prismatic reaction,
+    /// revolute ones.
+    const PRESS: &str = "let O = ground(0.0, 0.0);
+        let O4 = ground(0.5, 0.4);
+        let line = guide(O, 0 deg);
+        let P = slider(line, s) as block;
+        let B = rrr(P, 0.5, O4, 0.3, left) as (rod, rocker);
+        let G = point(rod, from P, 0.25, 0 deg);
+        mass block { m = 2.0, at = P };
+        mass rod { m = 1.0, at = G, j = 0.02 };
+        mass rocker { m = 0.5, at = B, j = 0.01 };
+        gravity (0.0, -9.81);
+        torque on rocker = 3.0;
+        range s = (0.0, 0.6);";
+
+    // Proves the run-time force walk writes its fields under the names and
+    // with the kinds of the generated forces struct, in its order: the
+    // names the walk gives (`r_FROM_TO`, `drive_INPUT`) are the columns
+    // `force_columns` reads from the emitter, one value per column.
+    #[test]
+    fn the_walk_names_its_fields_as_the_generated_struct() {
+        let m = Mechanism::new(PRESS).unwrap();
+        let p = m.position(&[0.3]).unwrap();
+        assert!(m.has_forces());
+        let v = m.velocity(&p, &[2.0]).unwrap();
+        let a = m.acceleration(&p, &v, &[0.5]).unwrap();
+        let mut out = m.new_forces();
+        let mut names = Vec::new();
+        m.force_walk(&p, &v, &a, &mut out, Some(&mut names))
+            .unwrap();
+        let mut cols = Vec::new();
+        for (n, held) in &names {
+            match held {
+                Held::Force => cols.extend([format!("{n}.x"), format!("{n}.y")]),
+                Held::Prismatic => cols.extend([
+                    format!("{n}.force.x"),
+                    format!("{n}.force.y"),
+                    format!("{n}.moment"),
+                ]),
+                Held::Torque | Held::Push => cols.push(n.clone()),
+            }
+        }
+        cols.extend(["condition".into(), "power_residual".into()]);
+        let want: Vec<String> = m.force_columns().into_iter().map(|c| c.name).collect();
+        assert_eq!(cols, want);
+        assert_eq!(out.values.len(), want.len());
+    }
 
     // Proves the power residual's edge cases match the generated code's: no
     // term gives 0, all-zero terms 0, an overflowing sum 1, else |sum|/max.
@@ -503,19 +757,5 @@ mod tests {
         assert_eq!(power_residual(&[0.0, 0.0]), 0.0);
         assert_eq!(power_residual(&[f64::MAX, f64::MAX]), 1.0);
         assert_eq!(power_residual(&[2.0, -1.5]), 0.25);
-    }
-
-    // Proves repeated field names are numbered from 2, others kept.
-    #[test]
-    fn repeated_names_are_numbered() {
-        let r = |n: &str| RunReaction {
-            name: n.into(),
-            held: Held::Force,
-            value: ForceValue::Scalar(0.0),
-        };
-        let mut v = vec![r("a"), r("b"), r("a"), r("a")];
-        unique_names(&mut v);
-        let names: Vec<&str> = v.iter().map(|r| r.name.as_str()).collect();
-        assert_eq!(names, ["a", "b", "a_2", "a_3"]);
     }
 }

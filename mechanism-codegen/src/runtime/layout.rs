@@ -121,29 +121,24 @@ impl Mechanism {
     /// +x): its axis, a block's along its guide. `None`: no such link.
     pub fn link_direction(&self, pos: &Position, link: &str) -> Option<f64> {
         let info = self.plan.links.get(link)?;
-        let kind = kinds::of(&self.model.stmts[info.stmt]);
-        let d = kind.run_link_dir(info.index, &pos.pose);
+        let step = self.compiled.steps.get(info.stmt.0)?;
+        let d = step.link_dir(info.index, &pos.pose);
         let a = geometry::angle(&d);
         a.is_finite().then_some(a)
     }
 }
 
-/// `name` as an identifier (`None`: not one, so no such point).
-fn ident(name: &str) -> Option<syn::Ident> {
-    syn::parse_str(name).ok()
-}
-
 impl Position {
     /// Point `name` (L); `None` when the definition has no such point.
     pub fn point(&self, name: &str) -> Option<[f64; 2]> {
-        let p = self.pose.point(&ident(name)?);
+        let p = self.pose.point(self.slots.point_named(name));
         (p.x.is_finite() && p.y.is_finite()).then_some([p.x, p.y])
     }
 
     /// Guide `name`: a point of its line (L) and its direction (rad);
     /// `None` when the definition has no such guide.
     pub fn guide(&self, name: &str) -> Option<([f64; 2], f64)> {
-        let line = self.pose.line(&ident(name)?);
+        let line = self.pose.line(self.slots.guide_named(name));
         let a = line.dir.y.atan2(line.dir.x);
         let ok = line.origin.x.is_finite() && line.origin.y.is_finite() && a.is_finite();
         ok.then_some(([line.origin.x, line.origin.y], a))
@@ -151,6 +146,7 @@ impl Position {
 
     /// The input values this pose was solved at (rad, L).
     pub fn inputs(&self) -> &[f64] {
-        &self.inputs
+        let n = self.pose.q.len().saturating_sub(1);
+        &self.pose.q[..n]
     }
 }

@@ -28,13 +28,16 @@ pub mod layout;
 pub mod text;
 
 use crate::diag::Diagnostics;
-use crate::kinds::{self, run::Motion, run::RunCx, Pose};
-use crate::model::{Mode, Model};
+use crate::kinds;
+use crate::kinds::run::{
+    self, Compile, LinkSlot, Motion, PointSlot, RunCx, RunPose, Step, StepSlot,
+};
+use crate::model::{Mode, Model, StmtId};
 use crate::plan::Plan;
 pub use forces::Forces;
-use mechanism_core::{geometry, Error, Vector2};
-use std::collections::{BTreeMap, BTreeSet};
-use std::sync::{Mutex, PoisonError};
+use mechanism_core::{geometry, Error};
+use std::collections::BTreeMap;
+use std::sync::Arc;
 pub use text::{Diagnostic, Errors};
 
 /// Which analysis a column belongs to.
@@ -74,30 +77,74 @@ pub struct InputInfo {
 }
 
 /// The position at one input: the outputs in [`Mechanism::columns`] order
-/// and the state the rates read.
+/// and the state the rates read, in storage made once
+/// ([`Mechanism::new_position`]) and filled by each
+/// [`Mechanism::position_into`].
+#[derive(Clone, Debug)]
 pub struct Position {
     /// The output values, as `columns(Analysis::Position)`.
     pub values: Vec<f64>,
-    inputs: Vec<f64>,
-    pose: Pose,
+    pose: RunPose,
+    slots: Arc<run::Layout>,
+    /// `true` once solved; `false` after a failed solve.
+    solved: bool,
 }
 
-/// The velocity or acceleration at one input.
+/// The velocity or acceleration at one input, in storage made once
+/// ([`Mechanism::new_rates`]).
+#[derive(Clone, Debug)]
 pub struct Rates {
     /// The output values, as `columns` of its analysis.
     pub values: Vec<f64>,
     /// The smallest scaled determinant of the groups' velocity systems, in
     /// (0, 1] (the generated struct's `condition`); 1 in an acceleration.
     pub condition: f64,
-    rates: Vec<f64>,
     motion: Motion,
+    /// `true` once computed; `false` after a failure.
+    solved: bool,
+}
+
+/// Where a position output comes from.
+#[derive(Clone, Copy, Debug)]
+enum PosOut {
+    /// A point's coordinates.
+    Point(PointSlot),
+    /// The angle of link `index` of statement `stmt`.
+    Angle { stmt: StmtId, index: usize },
+    /// Slide `k` of statement `stmt`.
+    Slide { stmt: StmtId, k: usize },
+}
+
+/// Where a rate output comes from.
+#[derive(Clone, Copy, Debug)]
+enum RateOut {
+    /// A moving point's motion.
+    Point(PointSlot),
+    /// A turning link's rate.
+    Link(LinkSlot),
+    /// A slide's rate.
+    Slide(StepSlot, usize),
+    /// A point that does not move or a link that does not turn: zero (one
+    /// value per point coordinate).
+    Zero(usize),
+}
+
+/// The plan compiled: one step per statement (by statement index), the
+/// statements `position()` solves, in order, and where each output is.
+struct Compiled {
+    steps: Vec<Box<dyn Step>>,
+    solve: Vec<StmtId>,
+    pos_out: Vec<PosOut>,
+    rate_out: Vec<RateOut>,
+    /// The force analysis' loads and motors ([`forces::ForcePlan`]).
+    forces: forces::ForcePlan,
 }
 
 /// A mechanism read from text at run time.
 pub struct Mechanism {
     model: Model,
     plan: Plan,
-    moving: BTreeSet<String>,
+    slots: Arc<run::Layout>,
     params: BTreeMap<String, f64>,
     /// What the check found (the triads' tracked assemblies) and the
     /// modes set at run time ([`Mechanism::set_mode`]), which the position
@@ -105,19 +152,12 @@ pub struct Mechanism {
     known: kinds::Known,
     /// The `loads { .. }` values ([`Mechanism::set_load`]).
     loads: BTreeMap<String, f64>,
+    compiled: Compiled,
 }
 
-/// The name `s` with a `'static` lifetime (errors name their group so);
-/// each distinct name is kept once for the life of the program.
+/// The name `s` with a `'static` lifetime (errors name their group so).
 fn intern(s: &str) -> &'static str {
-    static NAMES: Mutex<BTreeSet<&'static str>> = Mutex::new(BTreeSet::new());
-    let mut names = NAMES.lock().unwrap_or_else(PoisonError::into_inner);
-    if let Some(n) = names.get(s) {
-        return n;
-    }
-    let n: &'static str = Box::leak(s.to_owned().into_boxed_str());
-    names.insert(n);
-    n
+    run::intern(s)
 }
 
 impl Mechanism {
@@ -145,7 +185,6 @@ impl Mechanism {
         if !errors.is_empty() {
             return Err(Errors::new(text, errors));
         }
-        let moving = crate::emit::moving_points(&model, &plan);
         let params = model
             .params
             .iter()
@@ -157,14 +196,80 @@ impl Mechanism {
             .iter()
             .map(|(n, v)| (n.to_string(), *v))
             .collect();
-        Ok(Mechanism {
+        let slots = Arc::new(run::Layout::new(&model, &plan));
+        let mut m = Mechanism {
             model,
             plan,
-            moving,
+            slots,
             params,
             known: findings.known,
             loads,
-        })
+            compiled: Compiled {
+                steps: Vec::new(),
+                solve: Vec::new(),
+                pos_out: Vec::new(),
+                rate_out: Vec::new(),
+                forces: forces::ForcePlan::default(),
+            },
+        };
+        m.compile();
+        Ok(m)
+    }
+
+    /// Compiles the plan with the current parameters, modes and loads:
+    /// every name resolved to its slot, every dimension valued.
+    fn compile(&mut self) {
+        let cx = Compile {
+            layout: &self.slots,
+            params: &self.params,
+        };
+        let stmts = &self.model.stmts;
+        let steps = StmtId::all(stmts)
+            .map(|i| kinds::of_known(stmts, i, &self.known).compile(&cx))
+            .collect();
+        let out = &self.plan.outputs;
+        let mut pos_out = Vec::new();
+        let mut rate_out = Vec::new();
+        for p in &out.points {
+            let slot = self.slots.point_named(&p.to_string());
+            pos_out.push(PosOut::Point(slot));
+            rate_out.push(if self.slots.moving[slot.index()] {
+                RateOut::Point(slot)
+            } else {
+                RateOut::Zero(2)
+            });
+        }
+        for link in &out.links {
+            let name = link.to_string();
+            if let Some(info) = self.plan.links.get(&name) {
+                pos_out.push(PosOut::Angle {
+                    stmt: info.stmt,
+                    index: info.index,
+                });
+            }
+            rate_out.push(match self.plan.turning_link(&name) {
+                Some(l) => RateOut::Link(self.slots.link_named(&l)),
+                None => RateOut::Zero(1),
+            });
+        }
+        for s in &out.slides {
+            pos_out.push(PosOut::Slide {
+                stmt: s.stmt,
+                k: s.slot,
+            });
+            let step = self
+                .slots
+                .point_named(&self.model.stmts[s.stmt].name.to_string());
+            rate_out.push(RateOut::Slide(StepSlot::of(step), s.slot));
+        }
+        let forces = forces::ForcePlan::new(self);
+        self.compiled = Compiled {
+            steps,
+            solve: self.plan.solve.clone(),
+            pos_out,
+            rate_out,
+            forces,
+        };
     }
 
     /// The type name of the definition (`Mechanism` for a body alone).
@@ -218,6 +323,7 @@ impl Mechanism {
         match self.params.get_mut(name) {
             Some(v) => {
                 *v = value;
+                self.compile();
                 Ok(())
             }
             None => Err(format!(
@@ -251,6 +357,7 @@ impl Mechanism {
         }
         let mode = if left { Mode::Plus } else { Mode::Minus };
         self.known.modes.insert(name.to_string(), mode);
+        self.compile();
         Ok(())
     }
 
@@ -291,12 +398,7 @@ impl Mechanism {
         cols
     }
 
-    /// The input struct's value of each input, by name.
-    fn input_index(&self, n: &syn::Ident) -> Option<usize> {
-        self.model.inputs.iter().position(|i| i.name == *n)
-    }
-
-    /// Checks that `q` has one value per input.
+    /// The error of a slice that does not hold one value per input.
     fn arity(&self, q: &[f64]) -> Result<(), Error<f64>> {
         if q.len() == self.model.inputs.len() {
             Ok(())
@@ -310,53 +412,110 @@ impl Mechanism {
         }
     }
 
+    /// Storage for [`Mechanism::position_into`] (every value NaN until
+    /// solved).
+    pub fn new_position(&self) -> Position {
+        Position {
+            values: Vec::with_capacity(self.compiled.pos_out.len() + 2),
+            pose: RunPose::new(&self.slots, self.model.inputs.len()),
+            slots: Arc::clone(&self.slots),
+            solved: false,
+        }
+    }
+
+    /// Storage for [`Mechanism::velocity_into`] and
+    /// [`Mechanism::acceleration_into`].
+    pub fn new_rates(&self) -> Rates {
+        Rates {
+            values: Vec::with_capacity(self.compiled.rate_out.len() + 2),
+            condition: f64::NAN,
+            motion: Motion::new(&self.slots, self.model.inputs.len()),
+            solved: false,
+        }
+    }
+
     /// The position at inputs `q` (in the order of [`Mechanism::inputs`]:
     /// rad for angles, L for lengths); the typed error of the first group
     /// that fails, naming it.
     pub fn position(&self, q: &[f64]) -> Result<Position, Error<f64>> {
+        let mut pos = self.new_position();
+        self.position_into(q, &mut pos)?;
+        Ok(pos)
+    }
+
+    /// [`Mechanism::position`] into `pos` (from
+    /// [`Mechanism::new_position`]), allocating nothing: each compiled
+    /// step in solve order, then the outputs.
+    pub fn position_into(&self, q: &[f64], pos: &mut Position) -> Result<(), Error<f64>> {
+        pos.solved = false;
         self.arity(q)?;
-        let mut pose = Pose::keeping();
-        let input = |n: &syn::Ident| self.input_index(n).map_or(f64::NAN, |k| q[k]);
-        kinds::pose::with_params(&self.params, || {
-            for &i in &self.plan.solve {
-                kinds::of_known(&self.model.stmts, i, &self.known)
-                    .eval(&mut pose, &input)
-                    .map_err(|e| e.in_group(intern(&self.model.stmts[i].name.to_string())))?;
+        self.fits(pos.pose.fits(&self.slots, q.len()))?;
+        pos.pose.q[..q.len()].copy_from_slice(q);
+        let c = &self.compiled;
+        for &i in &c.solve {
+            let step = &c.steps[i.0];
+            step.position(&mut pos.pose)
+                .map_err(|e| e.in_group(step.group()))?;
+        }
+        let values = &mut pos.values;
+        values.clear();
+        for out in &c.pos_out {
+            match *out {
+                PosOut::Point(p) => {
+                    let pt = pos.pose.point(p);
+                    values.extend([pt.x, pt.y]);
+                }
+                PosOut::Angle { stmt, index } => {
+                    let step = &c.steps[stmt.0];
+                    let angle = step
+                        .link_angle(&pos.pose)
+                        .unwrap_or_else(|| geometry::angle(&step.link_dir(index, &pos.pose)));
+                    values.push(angle);
+                }
+                PosOut::Slide { stmt, k } => {
+                    values.push(c.steps[stmt.0].slide(k, &pos.pose).unwrap_or(f64::NAN));
+                }
             }
-            Ok::<(), Error<f64>>(())
-        })?;
-        let out = &self.plan.outputs;
-        let mut values = Vec::new();
-        for p in &out.points {
-            let pt = pose.point(p);
-            values.extend([pt.x, pt.y]);
-        }
-        for link in &out.links {
-            let info = &self.plan.links[&link.to_string()];
-            let kind = kinds::of(&self.model.stmts[info.stmt]);
-            let angle = kind
-                .run_link_angle(&input)
-                .unwrap_or_else(|| geometry::angle(&kind.run_link_dir(info.index, &pose)));
-            values.push(angle);
-        }
-        for s in &out.slides {
-            let kind = kinds::of(&self.model.stmts[s.stmt]);
-            values.push(kind.run_slide(s.slot, &pose).unwrap_or(f64::NAN));
         }
         if let Some(bad) = values.iter().find(|v| !v.is_finite()) {
             return Err(non_finite(*bad));
         }
-        Ok(Position {
-            values,
-            inputs: q.to_vec(),
-            pose,
-        })
+        pos.solved = true;
+        Ok(())
+    }
+
+    /// `Ok` when storage fits this mechanism; the typed error otherwise.
+    fn fits(&self, fits: bool) -> Result<(), Error<f64>> {
+        if fits {
+            Ok(())
+        } else {
+            Err(Error::new(
+                mechanism_core::Primitive::LinkPoint,
+                mechanism_core::Fault::NonFinite {
+                    what: "a pose or rates of another mechanism, or not solved",
+                },
+            ))
+        }
     }
 
     /// The velocity at `pos` for the input rates `rates` (rad/s, L/s).
     pub fn velocity(&self, pos: &Position, rates: &[f64]) -> Result<Rates, Error<f64>> {
+        let mut vel = self.new_rates();
+        self.velocity_into(pos, rates, &mut vel)?;
+        Ok(vel)
+    }
+
+    /// [`Mechanism::velocity`] into `vel` (from [`Mechanism::new_rates`]),
+    /// allocating nothing.
+    pub fn velocity_into(
+        &self,
+        pos: &Position,
+        rates: &[f64],
+        vel: &mut Rates,
+    ) -> Result<(), Error<f64>> {
+        vel.solved = false;
         self.arity(rates)?;
-        self.rates(pos, None, rates, &[])
+        self.rates(pos, None, rates, vel)
     }
 
     /// The acceleration at `pos`, `vel` for the input accelerations
@@ -367,92 +526,73 @@ impl Mechanism {
         vel: &Rates,
         accels: &[f64],
     ) -> Result<Rates, Error<f64>> {
-        self.arity(accels)?;
-        self.rates(pos, Some(vel), &vel.rates, accels)
+        let mut acc = self.new_rates();
+        self.acceleration_into(pos, vel, accels, &mut acc)?;
+        Ok(acc)
     }
 
-    /// One rate level: every solved statement's `run_rates`, in solve order.
+    /// [`Mechanism::acceleration`] into `acc` (from
+    /// [`Mechanism::new_rates`]), allocating nothing.
+    pub fn acceleration_into(
+        &self,
+        pos: &Position,
+        vel: &Rates,
+        accels: &[f64],
+        acc: &mut Rates,
+    ) -> Result<(), Error<f64>> {
+        acc.solved = false;
+        self.arity(accels)?;
+        self.fits(vel.solved && vel.motion.fits(&self.slots, accels.len()))?;
+        self.rates(pos, Some(vel), accels, acc)
+    }
+
+    /// One rate level: every solved step's `rates`, in solve order.
+    /// `level`: the input rates (velocity) or accelerations.
     fn rates(
         &self,
         pos: &Position,
         vel: Option<&Rates>,
-        rates: &[f64],
-        accels: &[f64],
-    ) -> Result<Rates, Error<f64>> {
-        let mut motion = Motion::default();
-        let turning = |l: &str| self.plan.turning_link(l);
-        let carried = |g: &str| self.plan.guides.get(g).is_some_and(|i| i.carrier.is_some());
-        let inputs = |n: &syn::Ident| {
-            self.input_index(n).map_or([f64::NAN; 3], |k| {
-                [
-                    pos.inputs[k],
-                    rates[k],
-                    accels.get(k).copied().unwrap_or(f64::NAN),
-                ]
-            })
+        level: &[f64],
+        out: &mut Rates,
+    ) -> Result<(), Error<f64>> {
+        let n = level.len();
+        self.fits(pos.solved && pos.pose.fits(&self.slots, n) && out.motion.fits(&self.slots, n))?;
+        out.motion.q[..n].copy_from_slice(level);
+        out.motion.conditions.clear();
+        let c = &self.compiled;
+        let mut cx = RunCx {
+            pose: &pos.pose,
+            vel: vel.map(|v| &v.motion),
+            out: &mut out.motion,
+            layout: &self.slots,
         };
-        kinds::pose::with_params(&self.params, || {
-            let mut cx = RunCx {
-                pose: &pos.pose,
-                vel: vel.map(|v| &v.motion),
-                out: &mut motion,
-                moving: &self.moving,
-                turning: &turning,
-                carried: &carried,
-                inputs: &inputs,
-            };
-            for &i in &self.plan.solve {
-                kinds::of(&self.model.stmts[i])
-                    .run_rates(&mut cx)
-                    .map_err(|e| e.in_group(intern(&self.model.stmts[i].name.to_string())))?;
+        for &i in &c.solve {
+            let step = &c.steps[i.0];
+            step.rates(&mut cx).map_err(|e| e.in_group(step.group()))?;
+        }
+        let (values, motion) = (&mut out.values, &out.motion);
+        values.clear();
+        for o in &c.rate_out {
+            match *o {
+                RateOut::Point(p) => {
+                    let v = motion.point(p);
+                    values.extend([v.x, v.y]);
+                }
+                RateOut::Link(l) => values.push(motion.link(l)),
+                RateOut::Slide(s, k) => values.push(motion.slide(s, k)),
+                RateOut::Zero(k) => values.extend(std::iter::repeat_n(0.0, k)),
             }
-            Ok::<(), Error<f64>>(())
-        })?;
-        let values = self.rate_values(&motion);
+        }
         if let Some(bad) = values.iter().find(|v| !v.is_finite()) {
             return Err(non_finite(*bad));
         }
         // As the generated `__condition`: the first group's, then `min`.
-        let condition = match motion.conditions.split_first() {
+        out.condition = match motion.conditions.split_first() {
             Some((&first, rest)) => rest.iter().fold(first, |c, &x| geometry::min(c, x)),
             None => 1.0,
         };
-        Ok(Rates {
-            values,
-            condition,
-            rates: rates.to_vec(),
-            motion,
-        })
-    }
-
-    /// The rate outputs of one level, in column order.
-    fn rate_values(&self, motion: &Motion) -> Vec<f64> {
-        let out = &self.plan.outputs;
-        let mut values = Vec::new();
-        for p in &out.points {
-            let v = if self.moving.contains(&p.to_string()) {
-                motion
-                    .points
-                    .get(&p.to_string())
-                    .copied()
-                    .unwrap_or(Vector2::new(f64::NAN, f64::NAN))
-            } else {
-                Vector2::zeros()
-            };
-            values.extend([v.x, v.y]);
-        }
-        for link in &out.links {
-            let w = match self.plan.turning_link(&link.to_string()) {
-                Some(l) => motion.links.get(&l).copied().unwrap_or(f64::NAN),
-                None => 0.0,
-            };
-            values.push(w);
-        }
-        for s in &out.slides {
-            let name = self.model.stmts[s.stmt].name.to_string();
-            values.push(motion.slides.get(&(name, s.slot)).copied().unwrap_or(0.0));
-        }
-        values
+        out.solved = true;
+        Ok(())
     }
 }
 

@@ -5,7 +5,7 @@ lengths in the definition's own unit ``L``; rates per second (rad/s,
 L/s), accelerations per second squared.
 """
 
-from typing import Any, Dict, List, Mapping, Optional, Tuple, final
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, final
 
 import numpy.typing as npt
 
@@ -145,6 +145,37 @@ class Mechanism:
 
         ``PoseError`` where it cannot be assembled; ``TypeError`` for a
         missing or unknown input."""
+    def draw(
+        self,
+        *,
+        title: Optional[str] = None,
+        trace: Sequence[str] = ...,
+        **inputs: float,
+    ) -> str:
+        """The drawing of one pose, every input by name (``theta=0.5``), as
+        SVG text: ground pivots with hatching, links as bars or plates,
+        blocks on their guides, joints as circles; world coordinates in the
+        definition's unit, y up. ``title`` defaults to the definition's
+        name; ``trace`` names points to mark.
+
+        ``PoseError`` where the pose cannot be assembled; ``TypeError`` for
+        a missing or unknown input; ``ValueError`` for a point to trace
+        that does not exist."""
+    def animate(
+        self,
+        *,
+        seconds: float = 4.0,
+        title: Optional[str] = None,
+        trace: Sequence[str] = ...,
+        **inputs: npt.ArrayLike,
+    ) -> str:
+        """The animation of a sweep, every input by name (a number or a 1-d
+        array, broadcast together), as SVG text playing in ``seconds`` and
+        repeating: ``draw``'s picture at each pose that assembles (the
+        others are left out) and the paths of the ``trace``d points.
+
+        ``ValueError`` when no pose assembles or a point to trace does not
+        exist."""
     def velocity(self, *, rates: Mapping[str, float], **inputs: float) -> Dict[str, float]:
         """The velocity at one pose for the input rates ``rates`` (one per
         input, rad/s or L/s): the keys of ``columns("velocity")`` and

@@ -10,9 +10,17 @@
 //! per line: `{"case", "objective", "design": [r1, r2, r3, r4, rcx, rcy,
 //! theta0, x0, y0, th2_1 ..]}`, 17 significant digits). `--seed N` changes the
 //! seed (default 1); the run is deterministic for a seed.
+//!
+//! `-- --report [--runs N]` prints the `## Synthesis` section of
+//! `docs/report.md` (markdown; progress on stderr): N seeded runs per case
+//! (default 20) beside plain differential evolution at the same budget, the
+//! local solver against its alternatives, and Jansen's leg (`report.rs`,
+//! `extra.rs`); 28.8 minutes on two cores shared at a load average of 5 to 8.
 #[macro_use]
-#[path = "../../examples/common/cli.rs"]
+#[path = "../../../examples/common/cli.rs"]
 mod cli;
+mod extra;
+mod report;
 use std::f64::consts::TAU;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -25,7 +33,7 @@ use mechanism_synthesis::fourbar::{FourBarPath, FourBarPathInput, FourBarPathPos
 /// Starts per assembly mode, candidates screened per start, LM iterations per
 /// start, basin hops, for each case (in `cases::all()` order). Sized so that the five
 /// cases take well under 60 s in release on two cores.
-const BUDGET: [(usize, usize, usize, usize); 5] = [
+pub const BUDGET: [(usize, usize, usize, usize); 5] = [
     (12000, 50, 30, 0),
     (300, 20, 30, 300),
     (300, 20, 30, 600),
@@ -39,6 +47,15 @@ fn main() {
         "Four-bar path synthesis on the five benchmark cases: best objective, design, time and evaluations per case.",
         &[
             cli::flag("--json", "one JSON object per case per line (17 significant digits)"),
+            cli::flag(
+                "--report",
+                "the docs/report.md section: seeded runs beside differential evolution (markdown)",
+            ),
+            cli::Opt {
+                name: "--runs",
+                value: Some("N"),
+                help: "seeded runs per case and method for --report (default 20)",
+            },
             cli::Opt {
                 name: "--seed",
                 value: Some("N"),
@@ -47,14 +64,12 @@ fn main() {
         ],
     );
     let json = args.flag("--json");
-    let seed: u64 = match args.value("--seed").map(str::parse) {
-        None => 1,
-        Some(Ok(s)) => s,
-        Some(Err(_)) => {
-            eprintln!("error: --seed takes a non-negative integer");
-            std::process::exit(2);
-        }
-    };
+    let seed = number(args.value("--seed"), 1, "--seed");
+    if args.flag("--report") {
+        let runs = number(args.value("--runs"), 20, "--runs").max(1);
+        out!("{}", report::section(runs));
+        return;
+    }
     if !json {
         outln!(
             "{:<16} {:>24} {:>5} {:>10} {:>10} {:>8}",
@@ -101,6 +116,19 @@ fn main() {
                 Ok(p) => eprintln!("wrote {}", p.display()),
                 Err(e) => eprintln!("no picture of {}: {e}", case.id),
             }
+        }
+    }
+}
+
+/// The value of option `name` as a non-negative integer, `default` when
+/// absent; exits with code 2 on anything else.
+fn number(v: Option<&str>, default: u64, name: &str) -> u64 {
+    match v.map(str::parse) {
+        None => default,
+        Some(Ok(s)) => s,
+        Some(Err(_)) => {
+            eprintln!("error: {name} takes a non-negative integer");
+            std::process::exit(2);
         }
     }
 }
