@@ -48,6 +48,87 @@ mechanism! {
     }
 }
 
+mechanism! {
+    /// The geared five-bar of `GearedFiveBar` as drawn at `theta = 20 deg`:
+    /// `C` where the gear law puts it (`30 deg - 2 * 20 deg` from `O5`, at
+    /// 0.8), `B` where the RRR closes on the left of `A -> C` (3.2 from `A`,
+    /// 2.6 from `C`, to the last digit written). The gear's pivot `O5`,
+    /// pitch-circle radius 0.8 and phase 30 deg are read from the drawing.
+    pub DrawnGearedFiveBar {
+        joints {
+            O2 = (0.0, 0.0),
+            O5 = (3.0, 0.0),
+            A = (cos(0.3490658503988659), sin(0.3490658503988659)),
+            C = (3.0 + 0.8 * cos(-0.17453292519943295), 0.8 * sin(-0.17453292519943295)),
+            B = (3.3673413602541498, 2.4268514549089972),
+        }
+        links {
+            ground = [O2, O5],
+            link2 = [O2, A],
+            link5 = [O5, C],
+            link3 = [A, B],
+            link4 = [C, B],
+        }
+        input theta = angle(link2);
+        gear link5 to link2 ratio 2.0 pressure 20 deg;
+        force at B on link3 = (3.0, -5.0);
+        torque on link4 = 2.0;
+    }
+}
+
+mechanism! {
+    /// The planetary arm of `PlanetaryArm` as drawn at `theta = 30 deg`: the
+    /// planet's point 0.3 from the arm's tip at `10 deg + 2.5 * 30 deg`.
+    pub DrawnPlanetaryArm {
+        joints {
+            O = (0.0, 0.0),
+            A = (cos(0.5235987755982988), sin(0.5235987755982988)),
+            P = (
+                cos(0.5235987755982988) + 0.3 * cos(1.4835298641951802),
+                sin(0.5235987755982988) + 0.3 * sin(1.4835298641951802),
+            ),
+        }
+        links { ground = [O], arm = [O, A], planet = [A, P] }
+        input theta = angle(arm);
+        gear planet to ground ratio 1.5 on arm;
+        torque on planet = -0.7;
+    }
+}
+
+mechanism! {
+    /// A planet carried by the arm meshing with a driven sun (two motors on
+    /// the ground at `O`): the planet turns at
+    /// `10 deg - 1.5 sun + 2.5 theta`.
+    pub DrivenSun {
+        let O = ground(0.0, 0.0);
+        let S = crank(O, 0.5, sun_q) as sun;
+        let A = crank(O, 1.0, theta) as arm;
+        let P = gear(A, 0.3, sun, 1.5, 10 deg, arm) as planet;
+        torque on planet = -0.7;
+    }
+}
+
+mechanism! {
+    /// `DrivenSun` as drawn with the arm at 30 deg and the sun at 50 deg, so
+    /// the planet at `10 deg - 1.5 x 50 deg + 2.5 x 30 deg = 10 deg`.
+    pub DrawnDrivenSun {
+        joints {
+            O = (0.0, 0.0),
+            S = (0.5 * cos(0.8726646259971648), 0.5 * sin(0.8726646259971648)),
+            A = (cos(0.5235987755982988), sin(0.5235987755982988)),
+            P = (
+                cos(0.5235987755982988) + 0.3 * cos(0.17453292519943295),
+                sin(0.5235987755982988) + 0.3 * sin(0.17453292519943295),
+            ),
+        }
+        links { ground = [O], sun = [O, S], arm = [O, A], planet = [A, P] }
+        input sun_q = angle(sun);
+        input theta = angle(arm);
+        gear planet to sun ratio 1.5 on arm;
+        torque on planet = -0.7;
+    }
+}
+
 fn d(x: f64) -> Dd {
     Dd::from_f64(x)
 }
@@ -305,4 +386,156 @@ fn a_run_time_ratio_changes_the_planet_s_rate() {
     let p = m.position(&PlanetSelfTestInput { theta: 0.4 }).unwrap();
     let v = m.velocity(&p, &PlanetSelfTestInput { theta: 2.0 }).unwrap();
     assert!((v.planet - 8.0).abs() <= 1e-14, "{}", v.planet);
+}
+
+#[test]
+fn the_drawn_geared_five_bar_is_the_grouped_one() {
+    // Proves `gear link5 to link2 ratio 2.0` lowers to the grouped
+    // `gear(O5, 0.8, link2, 2.0, 30 deg, ground, 20 deg)`: positions,
+    // rates, the motor's torque and the tooth force equal the grouped
+    // form's over a turn. Not bit for bit: the drawing's lengths and phase
+    // are computed from its coordinates (|O5 C| = 0.8 - 2.2e-16, the phase
+    // 30 deg + 1.1e-16, |A B| = 3.2 + 4.4e-16, |C B| = 2.6 + 4.4e-16, each
+    // an ulp or two of the decimal written), which the solve carries with
+    // the loop's conditioning: positions (size 4) to 4e-15, velocities
+    // (size 10) to 2e-14, accelerations (size 300) to 5e-13, the torque and
+    // the tooth force (size 10) to 3e-14, about four times the largest
+    // differences over the turn (8.9e-16, 3.6e-15, 4.3e-14, 5.3e-15,
+    // 2.7e-15); the gear's rate is linear in the input's, so exact. Drawn
+    // at 20 deg, so the phase's term `ratio * (angle of link2 as drawn)`
+    // counts.
+    let (g, m) = (
+        GearedFiveBar::<f64>::default(),
+        DrawnGearedFiveBar::<f64>::default(),
+    );
+    let (w, al) = (3.0, -20.0);
+    let mut checked = 0;
+    for k in 0..36 {
+        let q = f64::to_radians(10.0 * k as f64 + 5.0);
+        let want = g.solve(
+            &GearedFiveBarInput { theta: q },
+            &GearedFiveBarInput { theta: w },
+            &GearedFiveBarInput { theta: al },
+        );
+        let got = m.solve(
+            &DrawnGearedFiveBarInput { theta: q },
+            &DrawnGearedFiveBarInput { theta: w },
+            &DrawnGearedFiveBarInput { theta: al },
+        );
+        let (Ok(want), Ok(got)) = (want, got) else {
+            continue;
+        };
+        let near = |a: f64, b: f64, tol: f64, what: &str| {
+            assert!((a - b).abs() <= tol, "{what} at {q}: {a} vs {b}");
+        };
+        let (p, wp) = (&got.position, &want.position);
+        for (a, b, what) in [(p.A, wp.A, "A"), (p.B, wp.B, "B"), (p.C, wp.C, "C")] {
+            near(a.x, b.x, 4e-15, what);
+            near(a.y, b.y, 4e-15, what);
+        }
+        near(p.link5, wp.link5, 4e-15, "link5");
+        let (v, wv) = (&got.velocity, &want.velocity);
+        near(v.B.x, wv.B.x, 2e-14, "vB");
+        near(v.B.y, wv.B.y, 2e-14, "vB");
+        near(v.link5, wv.link5, 0.0, "omega5");
+        let (a, wa) = (&got.acceleration, &want.acceleration);
+        near(a.B.x, wa.B.x, 5e-13, "aB");
+        near(a.B.y, wa.B.y, 5e-13, "aB");
+        let (f, wf) = (&got.forces, &want.forces);
+        near(f.drive_theta, wf.drive_theta, 3e-14, "drive_theta");
+        near(f.r_link2_link5.x, wf.r_link2_link5.x, 3e-14, "tooth force");
+        near(f.r_link2_link5.y, wf.r_link2_link5.y, 3e-14, "tooth force");
+        checked += 1;
+    }
+    assert!(checked >= 18, "only {checked} poses closed");
+}
+
+#[test]
+fn the_drawn_planetary_arm_is_the_grouped_one() {
+    // Proves `gear planet to ground ratio 1.5 on arm` lowers to the grouped
+    // `gear(A, 0.3, ground, 1.5, 10 deg, arm)`: the planet's point, its
+    // rate and the motor's torque equal the grouped form's over a turn: the
+    // point and angle to 1e-15 (the drawn radius and phase are computed
+    // from the drawn coordinates, within an ulp of 0.3 and 10 deg; the
+    // largest difference is 8.9e-16, two ulps of an angle near pi), the
+    // rate and the torque, which do not read them, exactly. Drawn at 30
+    // deg, so the phase's term `-ratio * (angle of arm as drawn)` counts.
+    let (g, m) = (
+        PlanetaryArm::<f64>::default(),
+        DrawnPlanetaryArm::<f64>::default(),
+    );
+    for k in 0..24 {
+        let q = f64::to_radians(15.0 * k as f64);
+        let want = g
+            .solve(
+                &PlanetaryArmInput { theta: q },
+                &PlanetaryArmInput { theta: 4.0 },
+                &PlanetaryArmInput { theta: 0.0 },
+            )
+            .unwrap();
+        let got = m
+            .solve(
+                &DrawnPlanetaryArmInput { theta: q },
+                &DrawnPlanetaryArmInput { theta: 4.0 },
+                &DrawnPlanetaryArmInput { theta: 0.0 },
+            )
+            .unwrap();
+        let near = |a: f64, b: f64, what: &str| {
+            assert!((a - b).abs() <= 1e-15, "{what} at {q}: {a} vs {b}");
+        };
+        near(got.position.P.x, want.position.P.x, "P");
+        near(got.position.P.y, want.position.P.y, "P");
+        near(got.position.planet, want.position.planet, "planet");
+        assert_eq!(got.velocity.planet, want.velocity.planet, "omega planet");
+        assert_eq!(got.forces.drive_theta, want.forces.drive_theta);
+    }
+}
+
+#[test]
+fn the_drawn_planet_on_a_driven_sun_is_the_grouped_one() {
+    // Proves the phase of a gear whose mesh and carrier both turn,
+    // `(planet - arm) + ratio (sun - arm)` as drawn: the drawn planet's
+    // point and angle equal the grouped form's over a grid of both inputs,
+    // to 2e-15 (the drawn radius and phase within an ulp or two of 0.3 and
+    // 10 deg, carried into an angle of size up to pi and a point of size 1),
+    // and its rates, which do not read them, exactly.
+    let (g, m) = (
+        DrivenSun::<f64>::default(),
+        DrawnDrivenSun::<f64>::default(),
+    );
+    for k in 0..12 {
+        for n in 0..12 {
+            let (q, s) = (
+                f64::to_radians(30.0 * k as f64),
+                f64::to_radians(-30.0 * n as f64),
+            );
+            let (want_in, got_in) = (
+                DrivenSunInput { sun_q: s, theta: q },
+                DrawnDrivenSunInput { sun_q: s, theta: q },
+            );
+            let (want_w, got_w) = (
+                DrivenSunInput {
+                    sun_q: -1.0,
+                    theta: 4.0,
+                },
+                DrawnDrivenSunInput {
+                    sun_q: -1.0,
+                    theta: 4.0,
+                },
+            );
+            let want = g.position(&want_in).unwrap();
+            let got = m.position(&got_in).unwrap();
+            let near = |a: f64, b: f64, what: &str| {
+                assert!((a - b).abs() <= 2e-15, "{what} at {q}, {s}: {a} vs {b}");
+            };
+            near(got.P.x, want.P.x, "P");
+            near(got.P.y, want.P.y, "P");
+            near(got.planet, want.planet, "planet");
+            let (wv, gv) = (
+                g.velocity(&want, &want_w).unwrap(),
+                m.velocity(&got, &got_w).unwrap(),
+            );
+            assert_eq!(gv.planet, wv.planet, "omega planet");
+        }
+    }
 }

@@ -332,6 +332,7 @@ impl<'a> Body<'a> {
             | Item::Input(..)
             | Item::Slider(..)
             | Item::Cylinder(..)
+            | Item::Gear(..)
             | Item::Mode(..) => {}
         }
     }

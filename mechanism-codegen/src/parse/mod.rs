@@ -111,6 +111,10 @@ pub enum Item {
     /// The drawn form: `cylinder CYL from B to C;` (or `cylinder (BARREL,
     /// ROD) from B to C;`), a linear actuator pinned at joints `B` and `C`.
     Cylinder(DrawnCylinder),
+    /// The drawn form: `gear LINK to MESH ratio R;` (optionally `on
+    /// CARRIER`, `pressure ANGLE`), a gear pair between two links pivoted
+    /// on a common link, its phase read from the drawing.
+    Gear(DrawnGear),
     /// The drawn form: `mode elbow = assembly(C);`, a run-time assembly
     /// mode parameter (`elbow`) read by the group that places the joint (or
     /// slides the block) `C`, its default the drawing's assembly.
@@ -129,6 +133,21 @@ pub struct DrawnCylinder {
     pub from: Ident,
     /// The joint its rod is pinned at.
     pub to: Ident,
+}
+
+/// `gear LINK to MESH ratio R [on CARRIER] [pressure ANGLE];` of the drawn
+/// form.
+pub struct DrawnGear {
+    /// The gear's link, turning about its joint on the carrier.
+    pub link: Ident,
+    /// The link it meshes with (`ground`: a fixed gear).
+    pub mesh: Ident,
+    /// `MESH`'s pitch radius over `LINK`'s (negative: an internal pair).
+    pub ratio: Expr,
+    /// The common link both gears turn on (`None`: the ground).
+    pub carrier: Option<Ident>,
+    /// The pressure angle with its unit (`None`: the kind's default).
+    pub pressure: Option<(Expr, Option<Ident>)>,
 }
 
 /// `slider BLOCK at J on CARRIER along angle;` of the drawn form.
@@ -227,7 +246,7 @@ pub enum ForceValue {
 /// The words that begin a statement (besides `let` and `const`).
 const STATEMENTS: &[&str] = &[
     "params", "analysis", "outputs", "dof", "loads", "mass", "gravity", "force", "torque", "motor",
-    "range", "allow", "joints", "links", "input", "slider", "cylinder", "units", "mode",
+    "range", "allow", "joints", "links", "input", "slider", "cylinder", "gear", "units", "mode",
 ];
 
 /// Unit words a user may write after a value where none is taken (in a
@@ -734,8 +753,15 @@ mod tests {
         let (message, _, column) = error("pub M { forse at E = (1.0, 0.0); }");
         assert_eq!(
             message,
-            "unknown statement `forse`; expected `let`, `const`, `params`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `motor`, `range`, `allow`, `joints`, `links`, `input`, `slider`, `cylinder`, `units` or `mode`; did you mean `force`?"
+            "unknown statement `forse`; expected `let`, `const`, `params`, `analysis`, `outputs`, `dof`, `loads`, `mass`, `gravity`, `force`, `torque`, `motor`, `range`, `allow`, `joints`, `links`, `input`, `slider`, `cylinder`, `gear`, `units` or `mode`; did you mean `force`?"
         );
         assert_eq!(column, 8);
+        // A drawn gear without `ratio`: the message names both links.
+        let (message, _, column) = error("pub M { gear link5 to link2 2.0; }");
+        assert_eq!(
+            message,
+            "expected `ratio` and the pitch radius of `link2`'s gear over `link5`'s: `gear link5 to link2 ratio 2.0;` or `gear planet to ground ratio 1.5 on arm pressure 20 deg;`"
+        );
+        assert_eq!(column, 28);
     }
 }

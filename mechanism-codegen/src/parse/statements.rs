@@ -8,7 +8,7 @@
 
 use super::{
     end, kw, last_token, list, next_text, starts_arg, starts_assign, starts_statement, text,
-    unit_message, unit_word, vocabulary, Arg, Assign, DrawnCylinder, DrawnSlider, Force,
+    unit_message, unit_word, vocabulary, Arg, Assign, DrawnCylinder, DrawnGear, DrawnSlider, Force,
     ForceValue, Item, Let, Mass, RangeDecl, Valued, STATEMENTS,
 };
 use syn::buffer::Cursor;
@@ -64,6 +64,7 @@ impl Parse for Item {
             "input" => parse_input(input, start),
             "slider" => parse_slider(input, start),
             "cylinder" => parse_cylinder(input, start),
+            "gear" => parse_gear(input, start),
             "mode" => parse_mode(input, start),
             "units" => Ok(Item::Units(word.span(), units_list(input)?)),
             other => Err(syn::Error::new(
@@ -785,6 +786,61 @@ fn parse_cylinder(input: ParseStream, start: Cursor) -> syn::Result<Item> {
         Valued::Nothing,
     )?;
     Ok(Item::Cylinder(DrawnCylinder { names, from, to }))
+}
+
+/// `gear LINK to MESH ratio R [on CARRIER] [pressure ANGLE];`, after `gear`.
+fn parse_gear(input: ParseStream, start: Cursor) -> syn::Result<Item> {
+    let usage = "`gear link5 to link2 ratio 2.0;` or `gear planet to ground ratio 1.5 on arm pressure 20 deg;`";
+    let link = name_after(input, "gear", "the gear's link", usage)?;
+    if !kw(input, "to") {
+        return Err(input.error(format!(
+            "expected `to` and the link it meshes with: {usage}"
+        )));
+    }
+    let _: Ident = input.parse()?;
+    let mesh = name_after(input, "to", "the link it meshes with", usage)?;
+    if !kw(input, "ratio") {
+        return Err(input.error(format!(
+            "expected `ratio` and the pitch radius of `{mesh}`'s gear over `{link}`'s: {usage}"
+        )));
+    }
+    let _: Ident = input.parse()?;
+    let ratio: Expr = input.parse()?;
+    let carrier = if kw(input, "on") {
+        let _: Ident = input.parse()?;
+        Some(name_after(
+            input,
+            "on",
+            "the link both gears turn on",
+            usage,
+        )?)
+    } else {
+        None
+    };
+    let pressure = if kw(input, "pressure") {
+        let _: Ident = input.parse()?;
+        let angle: Expr = input.parse()?;
+        let unit = unit_word(input);
+        if unit.is_some() {
+            let _: Ident = input.parse()?;
+        }
+        Some((angle, unit))
+    } else {
+        None
+    };
+    end(
+        input,
+        start,
+        &format!("the `gear {link} ..` statement"),
+        Valued::Nothing,
+    )?;
+    Ok(Item::Gear(DrawnGear {
+        link,
+        mesh,
+        ratio,
+        carrier,
+        pressure,
+    }))
 }
 
 /// `input NAME = angle(LINK);` or `input NAME = angle(LINK, FROM_LINK);`,

@@ -31,7 +31,10 @@ struct Outcome {
 /// cannot be decomposed (naming the links left, or the dyad drawn at a dead
 /// centre).
 pub(super) fn decompose(d: &Drawing, errors: &mut Diagnostics) -> Option<Vec<Step>> {
-    if !structure_holds(d, errors) || !freedoms_match(d, errors) {
+    if !structure_holds(d, errors)
+        || !super::gear::gears_hold(d, errors)
+        || !freedoms_match(d, errors)
+    {
         return None;
     }
     let out = solve_order(d)?;
@@ -125,13 +128,19 @@ fn freedoms_match(d: &Drawing, errors: &mut Diagnostics) -> bool {
     // joints and sliding in each other (three lower pairs).
     let moving = moving + 2 * d.cylinders.len() as i64;
     let pairs = pairs + d.sliders.len() as i64 + 3 * d.cylinders.len() as i64;
-    let dof = 3 * moving - 2 * pairs;
+    // A gear pair: a higher pair, one constraint.
+    let gears = d.gears.len() as i64;
+    let dof = 3 * moving - 2 * pairs - gears;
     let inputs = d.inputs.len() as i64;
     if dof == inputs {
         return true;
     }
+    let geared = match gears {
+        0 => String::new(),
+        n => format!(" - {}", counted(n, "gear pair", "gear pairs")),
+    };
     let count = format!(
-        "Gruebler: 3 x {moving} moving links - 2 x {pairs} lower pairs = {}",
+        "Gruebler: 3 x {moving} moving links - 2 x {pairs} lower pairs{geared} = {}",
         counted(dof, "degree of freedom", "degrees of freedom")
     );
     let message = if dof > inputs {
@@ -224,7 +233,10 @@ fn solve_order(d: &Drawing) -> Option<Outcome> {
     loop {
         let before = pending.len();
         pending.retain(|&k| !place_driver(d, k, ground, &mut placed, &mut steps));
-        let drove = pending.len() < before;
+        let geared = (0..d.gears.len())
+            .filter(|&k| super::gear::place(d, k, &mut placed, &mut steps))
+            .count();
+        let drove = pending.len() < before || geared > 0;
         if place_points(d, &mut placed, &mut steps) || drove {
             continue;
         }

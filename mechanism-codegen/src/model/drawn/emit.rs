@@ -97,6 +97,16 @@ pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
             let args = vec![name_arg(&d.input(x).name), name_arg(&d.input(y).name)];
             (j(joint), KindWord::Target, args, vec![effector(j(joint))])
         }
+        Step::Gear {
+            gear,
+            frame,
+            mesh,
+            carrier,
+        } => {
+            let args = super::gear::args(d, gear, frame, mesh, carrier);
+            let link = l(d.gears[gear].link).clone();
+            (j(frame.toward), KindWord::Gear, args, vec![link])
+        }
         Step::Point { link, frame, joint } => {
             let (x, y) = local(j(frame.origin), j(frame.toward), j(joint));
             let args = vec![
@@ -399,7 +409,7 @@ fn drawn_input(d: &Drawing) -> TokenStream {
 /// A generated expression as an argument, every token of it spanned on
 /// `at` (the user's name it is computed for), so that a message about it
 /// (an overflow, a value outside a range) points into the definition.
-fn value(t: TokenStream, at: Span) -> Arg {
+pub(super) fn value(t: TokenStream, at: Span) -> Arg {
     Arg::Value(
         syn::parse2(respan(t, at)).expect("a generated expression parses"),
         None,
@@ -424,17 +434,17 @@ fn respan(t: TokenStream, at: Span) -> TokenStream {
 }
 
 /// A joint's name as an argument.
-fn name(j: &Joint) -> Arg {
+pub(super) fn name(j: &Joint) -> Arg {
     name_arg(&j.name)
 }
 
 /// A name as an argument.
-fn name_arg(i: &Ident) -> Arg {
+pub(super) fn name_arg(i: &Ident) -> Arg {
     Arg::Value(Expr::Path(syn::parse_quote!(#i)), None)
 }
 
 /// `hypot(xb - xa, yb - ya)`.
-fn distance(a: &Joint, b: &Joint) -> TokenStream {
+pub(super) fn distance(a: &Joint, b: &Joint) -> TokenStream {
     let (ax, ay, bx, by) = (&a.x, &a.y, &b.x, &b.y);
     quote!(hypot((#bx) - (#ax), (#by) - (#ay)))
 }
@@ -452,9 +462,17 @@ fn local(from: &Joint, toward: &Joint, j: &Joint) -> (TokenStream, TokenStream) 
     )
 }
 
+/// The drawn angle of frame `f`'s axis (rad, counter-clockwise from +x, in
+/// (-pi, pi]): `atan2(ty - oy, tx - ox)`.
+pub(super) fn angle_of(d: &Drawing, f: Frame) -> TokenStream {
+    let (o, t) = (d.joint(f.origin), d.joint(f.toward));
+    let (ox, oy, tx, ty) = (&o.x, &o.y, &t.x, &t.y);
+    quote!(atan2((#ty) - (#oy), (#tx) - (#ox)))
+}
+
 /// The angle (rad, counter-clockwise) from the direction of frame `a` to
 /// that of frame `b`: `atan2(a x b, a . b)`.
-fn turn(d: &Drawing, a: Frame, b: Frame) -> TokenStream {
+pub(super) fn turn(d: &Drawing, a: Frame, b: Frame) -> TokenStream {
     let v = |f: Frame| {
         let (o, t) = (d.joint(f.origin), d.joint(f.toward));
         let (ox, oy, tx, ty) = (&o.x, &o.y, &t.x, &t.y);

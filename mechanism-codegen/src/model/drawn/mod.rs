@@ -3,10 +3,10 @@
 //! `ground`) and the inputs (a link's angle from the ground, or from the link
 //! that carries its motor, a block's slide, a cylinder's length), the blocks
 //! sliding on the ground or in slots of moving links (`slider B at J on LINK
-//! along angle`) and the cylinders (`cylinder C from J1 to J2`). It is
-//! decomposed into the group statements (`ground`, `guide`, `crank`,
-//! `slider`, `actuator`, `target`, `rrr`, `rrp`, `rpr`, `rpp`, `prp`,
-//! `triad`, `point`)
+//! along angle`), the cylinders (`cylinder C from J1 to J2`) and the gear
+//! pairs (`gear L to MESH ratio R`). It is decomposed into the group
+//! statements (`ground`, `guide`, `crank`, `slider`, `actuator`, `target`,
+//! `gear`, `rrr`, `rrp`, `rpr`, `rpp`, `prp`, `triad`, `point`)
 //! a user would write by hand,
 //! in solve order, every length, offset and assembly mode read from the
 //! drawing; the rest of the macro sees only those statements.
@@ -19,6 +19,7 @@
 
 mod decompose;
 mod emit;
+mod gear;
 mod groups;
 mod modes;
 mod read;
@@ -113,6 +114,7 @@ struct Drawing {
     inputs: Vec<Input>,
     sliders: Vec<Slider>,
     cylinders: Vec<Cylinder>,
+    gears: Vec<gear::Gear>,
     /// Where to point a message about the whole drawing (the `links` keyword).
     span: Span,
 }
@@ -189,6 +191,7 @@ pub(super) fn expand(
                 | Item::Input(..)
                 | Item::Slider(..)
                 | Item::Cylinder(..)
+                | Item::Gear(..)
         )
     };
     let Some(first) = items.iter().position(drawn) else {

@@ -19,11 +19,13 @@ pub(super) fn read(items: Vec<Item>, scope: &NumberScope<'_>, errors: &mut Diagn
         inputs: Vec::new(),
         sliders: Vec::new(),
         cylinders: Vec::new(),
+        gears: Vec::new(),
         span: Span::call_site(),
     };
     let mut cylinders = Vec::new();
     let mut link_lists = Vec::new();
     let mut sliders = Vec::new();
+    let mut gears = Vec::new();
     // Every joint written, drawn well or not (a malformed one is reported
     // once, where it is drawn, not again in each link that lists it).
     let mut all_joints = Vec::new();
@@ -48,6 +50,7 @@ pub(super) fn read(items: Vec<Item>, scope: &NumberScope<'_>, errors: &mut Diagn
             }
             Item::Slider(s) => sliders.push(s),
             Item::Cylinder(c) => cylinders.push(c),
+            Item::Gear(g) => gears.push(g),
             _ => {}
         }
     }
@@ -69,6 +72,11 @@ pub(super) fn read(items: Vec<Item>, scope: &NumberScope<'_>, errors: &mut Diagn
     }
     for c in cylinders {
         read_cylinder(&mut drawing, c, errors);
+    }
+    for g in gears {
+        if let Some(g) = super::gear::read(&drawing, g, scope, errors) {
+            drawing.gears.push(g);
+        }
     }
     drawing
 }

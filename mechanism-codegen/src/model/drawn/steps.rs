@@ -52,6 +52,16 @@ pub(super) enum Step {
         input: InputId,
         carrier: Option<Carrier>,
     },
+    /// A gear pair: the link of `gears[gear]` turns about `frame.origin`,
+    /// its axis pointing to `frame.toward` (the joint it places), geared to
+    /// the link placed in `mesh` and pivoted on the one placed in `carrier`
+    /// (`None`: the ground).
+    Gear {
+        gear: usize,
+        frame: Frame,
+        mesh: Option<Frame>,
+        carrier: Option<Frame>,
+    },
     /// An RRR dyad: joint `c` at its drawn distances from `a` on link `la`
     /// and from `b` on link `lb`.
     Rrr {
