@@ -657,8 +657,7 @@ mod performance_batch {
         // The owned form, as the doc writes it.
         let mut b = FourBar::<f64>::batch(n);
         b.in_theta2 = theta;
-        let failed =
-            mechanism::par_solve(b.as_batch(), 4096, &|mut chunk| m.solve_batch(&mut chunk))?;
+        let failed = mechanism::par_solve(b.as_batch(), 0, &|mut chunk| m.solve_batch(&mut chunk))?;
         assert_eq!(failed, 0);
         assert_eq!(b.pos_B_x, out[2]);
         Ok(())
@@ -830,7 +829,7 @@ const SCHEMATIC: &[(&str, &str, &str)] = &[
     ),
     (
         "docs/performance.md",
-        "let failed = mechanism::par_solve(b.as_batch(), 4096, &|mut chunk| m.solve_batch(&mut chunk))?;",
+        "let failed = mechanism::par_solve(b.as_batch(), 0, &|mut chunk| m.solve_batch(&mut chunk))?;",
         "needs the feature `rayon`; `performance_batch::par_solve_sample` runs it with the feature",
     ),
 ];

@@ -4,6 +4,7 @@
 use super::{Triad, TriadPosition, PRIM};
 use crate::error::{Error, Fault};
 use crate::geometry::{abs, all_finite, check_det, cross, dot, perp};
+use crate::linsolve;
 use crate::scalar::Real;
 use nalgebra::Vector2;
 
@@ -69,67 +70,11 @@ fn rate_matrix<T: Real>(triad: &Triad<T>, pos: &TriadPosition<T>) -> Result<[[T;
     ])
 }
 
-/// Solves the rate system by its structure: the first row has no third
-/// column, so Gaussian elimination pivots on the larger of the other two
-/// rows' third entries (partial pivoting in that column), eliminates it
-/// from the remaining row, solves the 2x2 system left in the first two
-/// unknowns by Cramer's rule (forward stable for two unknowns: Higham,
-/// *Accuracy and Stability of Numerical Algorithms*, 2nd ed., sec. 1.10.1)
-/// and the third unknown from the pivot row: three divisions. A zero
-/// pivot column, a zero 2x2 determinant or a non-finite solution (the
-/// determinant check before it excludes them for a finite pose) is
-/// `NonFinite` when an entry or a right-hand side is not finite, else
-/// `Singular`.
+/// Solves the rate system and maps its error to the triad.
 fn solve3<T: Real>(m: [[T; 3]; 3], rhs: [T; 3]) -> Result<[T; 3], Error<T>> {
-    let (p, o) = if abs(m[1][2]) >= abs(m[2][2]) {
-        (1, 2)
-    } else {
-        (2, 1)
-    };
-    let pivot = m[p][2];
-    let singular = |det: T| {
-        Error::new(
-            PRIM,
-            Fault::Singular {
-                det,
-                scale: T::one(),
-            },
-        )
-    };
-    let input_finite = || m.iter().flatten().chain(rhs.iter()).all(|v| v.finite());
-    let non_finite = || {
-        Error::new(
-            PRIM,
-            Fault::NonFinite {
-                what: "triad rate system input",
-            },
-        )
-    };
-    if pivot == T::zero() {
-        return Err(if input_finite() {
-            singular(T::zero())
-        } else {
-            non_finite()
-        });
-    }
-    let f = m[o][2] / pivot;
-    let (qx, qy, bq) = (
-        m[o][0] - f * m[p][0],
-        m[o][1] - f * m[p][1],
-        rhs[o] - f * rhs[p],
-    );
-    let det = m[0][0] * qy - m[0][1] * qx;
-    let inv = T::one() / det;
-    let x = (rhs[0] * qy - m[0][1] * bq) * inv;
-    let y = (m[0][0] * bq - rhs[0] * qx) * inv;
-    let z = (rhs[p] - m[p][0] * x - m[p][1] * y) / pivot;
-    if all_finite([x, y, z]) {
-        Ok([x, y, z])
-    } else if input_finite() {
-        Err(singular(det))
-    } else {
-        Err(non_finite())
-    }
+    linsolve::solve(m, rhs)
+        .map(|s| s.x)
+        .map_err(|e| Error::new(PRIM, e.fault))
 }
 
 /// The rotation rate of a leg `r` of length `l` whose ends move at `v_end`
