@@ -159,3 +159,27 @@ impl Problem for FootPath {
         true
     }
 }
+
+/// The multi-start budget that fits the leg from uniform starts in a
+/// [`FootPath`]'s box (the example's Jansen line and `tests/jansen.rs`): 12
+/// starts, each the best of 10 draws, 40 LM iterations each, 4 basin hops
+/// at 0.2 of the box, a polish of at most 500 iterations; `seed` seeds the
+/// draws.
+pub fn settings(seed: u64) -> crate::multistart::Settings {
+    use crate::lm::Options;
+    crate::multistart::Settings {
+        starts: 12,
+        screen: 10,
+        local: Options {
+            max_iterations: 40,
+            ..Options::default()
+        },
+        polish: Options {
+            max_iterations: 500,
+            ..Options::default()
+        },
+        hops: 4,
+        hop_scale: 0.2,
+        seed,
+    }
+}

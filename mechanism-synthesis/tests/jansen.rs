@@ -10,7 +10,7 @@ use std::f64::consts::TAU;
 
 use mechanism_synthesis::jansen::{self, FootPath, JansenFootInput, HOLY};
 use mechanism_synthesis::lm::{Options, Solver};
-use mechanism_synthesis::multistart::{self, Settings};
+use mechanism_synthesis::multistart;
 use mechanism_synthesis::problem::Problem;
 
 /// The free numbers: `e, f, g, h, j, k` (indices into `HOLY`).
@@ -130,21 +130,7 @@ fn the_multi_start_finds_the_fit_from_random_starts() {
     // the targets is the holy leg's to 1e-9.
     let p = problem();
     let (lo, hi) = (p.lower().to_vec(), p.upper().to_vec());
-    let settings = Settings {
-        starts: 12,
-        screen: 10,
-        local: Options {
-            max_iterations: 40,
-            ..Options::default()
-        },
-        polish: Options {
-            max_iterations: 500,
-            ..Options::default()
-        },
-        hops: 4,
-        hop_scale: 0.2,
-        seed: 5,
-    };
+    let settings = jansen::settings(5);
     let best = multistart::run(&p, &settings, |rng, x| {
         for (j, v) in x.iter_mut().enumerate() {
             *v = rng.range(lo[j], hi[j]);

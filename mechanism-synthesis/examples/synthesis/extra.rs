@@ -11,7 +11,7 @@ use mechanism_synthesis::cases;
 use mechanism_synthesis::fourbar::PathProblem;
 use mechanism_synthesis::jansen::{self, FootPath, HOLY};
 use mechanism_synthesis::lm::{JacobianKind, Options, Solver};
-use mechanism_synthesis::multistart::{self, Settings};
+use mechanism_synthesis::multistart;
 use mechanism_synthesis::problem::{objective, Problem};
 use mechanism_synthesis::rng::Rng;
 
@@ -244,21 +244,7 @@ fn jansen_leg(md: &mut String) -> String {
     let free = vec![4, 5, 6, 7, 9, 10];
     let p = FootPath::new(free.clone(), th, targets, 0.2);
     let (lo, hi) = (p.lower().to_vec(), p.upper().to_vec());
-    let settings = Settings {
-        starts: 12,
-        screen: 10,
-        local: Options {
-            max_iterations: 40,
-            ..Options::default()
-        },
-        polish: Options {
-            max_iterations: 500,
-            ..Options::default()
-        },
-        hops: 4,
-        hop_scale: 0.2,
-        seed: 5,
-    };
+    let settings = jansen::settings(5);
     let t = Instant::now();
     let best = multistart::run(&p, &settings, |rng, x| {
         for (j, v) in x.iter_mut().enumerate() {
