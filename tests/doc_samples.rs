@@ -939,11 +939,13 @@ fn named_targets_and_paths_exist() {
                         exists(&format!("tests/{name}.rs"))
                             || exists(&format!("tests/{name}/main.rs"))
                     }
-                    "--example" => {
-                        exists(&format!("examples/{name}.rs"))
-                            || exists(&format!("examples/{name}/main.rs"))
-                            || exists(&format!("mechanism-codegen/examples/{name}.rs"))
-                    }
+                    // An example of the root package or of any member crate.
+                    "--example" => ["", "mechanism-codegen/", "mechanism-synthesis/"]
+                        .iter()
+                        .any(|dir| {
+                            exists(&format!("{dir}examples/{name}.rs"))
+                                || exists(&format!("{dir}examples/{name}/main.rs"))
+                        }),
                     "--bench" => exists(&format!("benches/{name}.rs")),
                     "-p" => exists(&format!("{name}/Cargo.toml")),
                     "--features" => ["rayon", "no-panic"].contains(&name),
@@ -983,6 +985,9 @@ fn named_targets_and_paths_exist() {
                 "mechanism-macros",
                 "mechanism-reference",
                 "mechanism-plot",
+                "mechanism-synthesis",
+                "mechanism-cli",
+                "mechanism-python",
             ];
             // The README's `src/main.rs` is the user's new crate's.
             let users = doc == &"README.md" && p == "src/main.rs";
