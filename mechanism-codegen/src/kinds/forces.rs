@@ -58,7 +58,8 @@ pub trait ForceCx {
     fn reaction(&mut self, reaction: Reaction);
     /// Adds a driver's power term to the balance.
     fn power(&mut self, term: TokenStream);
-    /// Adds a group's conditioning (its relative pivot) to `condition`.
+    /// Adds a group's conditioning (its force indicator, `min_pivot_ratio`)
+    /// to `condition`.
     fn condition(&mut self, term: TokenStream);
 
     /// A force `force` (code) acting on `link` at point `at`, as a wrench

@@ -37,9 +37,9 @@ use syn::Ident;
 pub struct Forces {
     /// The values, as `force_columns()`.
     pub values: Vec<f64>,
-    /// Conditioning in (0, 1]: the velocity's `condition` and the groups'
-    /// force systems' smallest relative pivot (tends to 0 at a toggle or a
-    /// dead centre).
+    /// Conditioning in (0, 1]: the smaller of the velocity's `condition` and
+    /// the groups' force indicators (`min_pivot_ratio`; tends to 0 at a
+    /// toggle or a dead centre).
     pub condition: f64,
     /// |sum of the powers of drives, loads, weights and inertia| over the
     /// largest of them (0 when all vanish; a few eps when consistent).

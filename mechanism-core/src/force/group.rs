@@ -23,9 +23,11 @@
 //!
 //! This is the textbook formulation (Artobolevsky; seed 003 writes the same
 //! equations for an RRR group, though it eliminates the inner joint by hand and
-//! keeps four); here the elimination is left to [`crate::linsolve`]: all of it
-//! in [`solve`], all but the inner joint's exact step in
-//! [`solve_inner_revolute`].
+//! keeps four); here the elimination is left to [`crate::linsolve`] in
+//! [`solve`]. The five groups of [`crate::force`] solve the same equations in
+//! closed form (each group's file derives it); [`solve`] is the general path,
+//! for any three joints, and the independent check of those closed forms in
+//! the tests.
 
 use crate::error::{Error, Fault, Primitive};
 use crate::force::body::Wrench;
@@ -284,8 +286,8 @@ fn finish<T: Real>(
 
 /// Solves a group: assembles with [`assemble`] and solves with
 /// [`linsolve::solve_in_place`] (row equilibration and partial pivoting). The
-/// general path, for any three joints; the groups whose inner joint is a
-/// revolute use [`solve_inner_revolute`], a quarter of the work.
+/// general path, for any three joints; the five groups of [`crate::force`]
+/// use their closed forms, a fraction of the work.
 ///
 /// Errors, tagged with `primitive`: `NonFinite` when a load, a joint's
 /// geometry or the result is not finite; `Singular` when the pose admits no
@@ -316,93 +318,6 @@ pub fn solve<T: Real>(
     finish(
         [[x0, x1], [x2, x3], [x4, x5]],
         [&j0.pair, &j1.pair, &j2.pair],
-        couple_scale,
-        min_pivot_ratio,
-        primitive,
-    )
-}
-
-/// Solves a group whose inner joint (link 1 -> link 2) is a revolute at
-/// `about`, with moments about it: the RRR, RRP and PRP groups. `outer1` is
-/// the pair from the outside to link 1, `outer2` from the outside to link 2.
-/// Returns the unknowns in the order `[outer1, outer2, inner]` (inner:
-/// `[Fx, Fy]`, the force of link 1 on link 2).
-///
-/// The same equations as [`solve`], with the inner joint eliminated exactly
-/// before any rounding can matter. With moments about the inner joint's centre
-/// its force `F_c` appears only in the force rows, with coefficient `-1` in
-/// link 1's and `+1` in link 2's. Those two `+1` are pivots of relative size
-/// 1 (the largest entry of their equilibrated rows) and the first choice of
-/// scaled partial pivoting; eliminating them adds link 1's force rows to link
-/// 2's (multipliers `±1`, exact on the matrix since the two rows share no other
-/// column) and leaves the 4x4 system of the outer unknowns
-///
-/// ```text
-/// [ E1f  E2f ] [u1]   [-(F1 + F2)]     group force balance (2 rows)
-/// [ E1m   0  ] [u2] = [ -M1      ]     link 1 moment about the inner joint
-/// [  0   E2m ]        [ -M2      ]     link 2 moment about the inner joint
-/// ```
-///
-/// (`Eif`, `Eim`: the force and moment rows of outer pair `i`'s effects, as in
-/// [`assemble`]), solved by [`linsolve::solve_in_place`] with its own row
-/// equilibration and partial pivoting; then `F_c = -F2 - E2f u2` (link 2's
-/// force balance). `min_pivot_ratio` is that 4x4 solve's (the two eliminated
-/// pivots are 1): the smallest pivot, relative to the largest entry of its
-/// row of the reduced system. It tends to 0 at the same singular poses as the
-/// 6x6 system's (toggle, link perpendicular to a guide, parallel guides); at a
-/// given pose it need not equal the 6x6 elimination's, whose pivot order can
-/// differ.
-///
-/// Cost: about a quarter of [`solve`]'s (a 4x4 instead of a 6x6 elimination,
-/// and no square root when both outer pairs are revolutes).
-///
-/// Errors, tagged with `primitive`: `NonFinite` when a load, a pair's geometry
-/// or the result is not finite; `Singular` when the pose admits no unique
-/// reactions (a relative pivot `<= 4 eps` in the 4x4 system).
-#[inline]
-pub fn solve_inner_revolute<T: Real>(
-    outer1: &Pair<T>,
-    outer2: &Pair<T>,
-    about: &Point2<T>,
-    load1: &Wrench<T>,
-    load2: &Wrench<T>,
-    primitive: Primitive,
-) -> Result<GroupSolution<T>, Error<T>> {
-    check_finite(&[outer1, outer2], about, load1, load2, primitive)?;
-    let any_prismatic =
-        matches!(outer1, Pair::Prismatic { .. }) || matches!(outer2, Pair::Prismatic { .. });
-    // The same `L` as `assemble` (the inner joint is at `about`, distance 0);
-    // revolutes have no couple column and need none.
-    let couple_scale = if any_prismatic {
-        couple_scale_of(&[point_of(outer1), point_of(outer2)], about)
-    } else {
-        T::one()
-    };
-    let [e1u, e1v] = effects(outer1, about, couple_scale);
-    let [e2u, e2v] = effects(outer2, about, couple_scale);
-    let zero = T::zero();
-    let mut matrix = [
-        [e1u[0], e1v[0], e2u[0], e2v[0]],
-        [e1u[1], e1v[1], e2u[1], e2v[1]],
-        [e1u[2], e1v[2], zero, zero],
-        [zero, zero, e2u[2], e2v[2]],
-    ];
-    let mut rhs = [
-        -(load1.force.x + load2.force.x),
-        -(load1.force.y + load2.force.y),
-        -load1.moment,
-        -load2.moment,
-    ];
-    let min_pivot_ratio = linsolve::solve_in_place(&mut matrix, &mut rhs)
-        .map_err(|e| Error::new(primitive, e.fault))?;
-    let [u1a, u1b, u2a, u2b] = rhs;
-    // Link 2's force balance: E2f u2 + F_c = -F2.
-    let cx = -load2.force.x - (e2u[0] * u2a + e2v[0] * u2b);
-    let cy = -load2.force.y - (e2u[1] * u2a + e2v[1] * u2b);
-    let inner = Pair::Revolute { point: *about };
-    finish(
-        [[u1a, u1b], [u2a, u2b], [cx, cy]],
-        [outer1, outer2, &inner],
         couple_scale,
         min_pivot_ratio,
         primitive,

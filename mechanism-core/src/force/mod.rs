@@ -6,12 +6,16 @@
 //! (`-m a_G` through the centre of mass `G`, couple `-J alpha`) plus the weight
 //! (`m g` through `G`) plus the unknown joint reactions are in equilibrium
 //! (three equations: `Fx`, `Fy`, moment). A class II group has two links and
-//! three pairs of two unknowns each: a 6x6 system ([`group`]; the RRR, RRP
-//! and PRP groups, whose inner joint is a revolute, eliminate its force exactly
-//! and solve the remaining 4x4, see [`group::solve_inner_revolute`]); a driver link
-//! adds its driving effort to its pivot's two unknowns: 3x3. Groups are solved
-//! in the reverse of the kinematic order (the last group first), each passing
-//! its outer reactions, negated, to the links it is attached to.
+//! three pairs of two unknowns each: a 6x6 system ([`group`] assembles it and
+//! solves it by pivoted elimination, for any three joints). With moments
+//! taken about one of its joints, each of the five groups' systems decouples
+//! into couples read off directly and at most two unknowns from a 2x2 system
+//! with a determinant of the group's geometry, so each group's file solves it
+//! in closed form (derived there; [`group::solve`] stays the independent
+//! check of the tests); a driver link adds its driving effort to its pivot's
+//! two unknowns: 3x3, solved exactly. Groups are solved in the reverse of the
+//! kinematic order (the last group first), each passing its outer reactions,
+//! negated, to the links it is attached to.
 //!
 //! # Units and signs
 //!
@@ -48,18 +52,25 @@
 //! point it names (a joint of the group, so that moment rows stay well scaled),
 //! built with [`Wrench::force_at`], [`body::inertia_and_gravity`] and the
 //! arithmetic operators, and returns the named reactions plus
-//! `min_pivot_ratio`, the conditioning indicator of
-//! [`crate::linsolve::Solution`] (1 for the drivers whose equations are
-//! orthogonal; small near a singular pose: toggle, dead centre).
+//! `min_pivot_ratio`, a conditioning indicator in `(0, 1]`: small near a
+//! singular pose (toggle, dead centre, parallel guides), where the
+//! reactions' relative error may grow as `eps / min_pivot_ratio`. For the
+//! five groups it is the determinant of their reduced system relative to
+//! its Hadamard bound, `|sin|` or `|cos|` of an angle of the group (each
+//! group's file says which); for the actuator, the smallest relative pivot
+//! of [`crate::linsolve::Solution`]; 1 for the crank and slider drivers,
+//! whose equations are orthogonal.
 //!
 //! Errors: `NonFinite` for non-finite loads or geometry, `NonPositive` for a
 //! zero guide direction, `Singular` when the pose admits no unique reactions
-//! (relative pivot below `6 eps` for the RPR and RPP groups, `4 eps` for the
-//! others, `3 eps` for the actuator), each
-//! tagged with the group's [`crate::Primitive`].
+//! (relative determinant below `6 eps` for the groups, the level at which
+//! [`group::solve`] refuses a relative pivot of the same equations; relative
+//! pivot below `3 eps` for the actuator), each tagged with the group's
+//! [`crate::Primitive`].
 
 pub mod actuator;
 pub mod body;
+mod closed;
 pub mod crank;
 pub mod gear;
 pub mod group;

@@ -10,15 +10,39 @@
 //!                                      link 1 -> link 2 at C
 //! ```
 //!
-//! Moments about `C`: each link's moment equation gives its guide couple
-//! (`M_i = -M_load_i`); the force balances give the two normal forces and the
-//! pin force. Singular when the guides are parallel (nothing balances a load
-//! along them).
+//! # The closed form
+//!
+//! Unknowns: each guide's reaction on its link, the normal force `N_i n_i`
+//! through `C` (`d_i` = `dir_i` normalized, `n_i = perp(d_i)`) and the couple
+//! `G_i` about `C`, and `F_C` (link 1 on link 2). Known loads `(F1, M1)` and
+//! `(F2, M2)`, moments about `C`:
+//!
+//! ```text
+//! link 1:  N1 n1 - F_C + F1 = 0          G1 + M1 = 0
+//! link 2:  N2 n2 + F_C + F2 = 0          G2 + M2 = 0
+//! ```
+//!
+//! The moments give the couples, `G_i = -M_i`. The sum of the force balances,
+//!
+//! ```text
+//! N1 n1 + N2 n2 = -(F1 + F2)
+//! ```
+//!
+//! is a 2x2 system (its `x` and `y` rows) with unit columns and determinant
+//! `cross(n1, n2) = cross(d1, d2)`, solved by elimination with scaled partial
+//! pivoting (see `force::closed`); link 2's force balance then gives
+//! `F_C = -F2 - N2 n2`. Singular when the
+//! guides are parallel (nothing balances a load along them).
+//! `min_pivot_ratio` is `|cross(d1, d2)|`, `|sin|` of the angle between the
+//! guides: the 2x2 system's 2-norm condition lies between
+//! `1 / min_pivot_ratio` and `2 / min_pivot_ratio`.
 
 use crate::error::{Error, Primitive};
 use crate::force::body::Wrench;
-use crate::force::group::{self, unit_direction, Pair};
+use crate::force::closed;
+use crate::force::group::unit_direction;
 use crate::force::PrismaticReaction;
+use crate::geometry::{cross, perp};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
 
@@ -36,17 +60,19 @@ pub struct PrpReactions<T: Real> {
     pub guide2: PrismaticReaction<T>,
     /// Force of link 1 on link 2 at `C` (link 1 receives `-c`).
     pub c: Vector2<T>,
-    /// Conditioning indicator: [`crate::linsolve::Solution::min_pivot_ratio`] of
-    /// the reduced 4x4 system of [`crate::force::group::solve_inner_revolute`].
+    /// Conditioning indicator in `(6 eps, 1]`: `|sin|` of the angle between
+    /// the guides (see the module documentation); tends to 0 as they turn
+    /// parallel.
     pub min_pivot_ratio: T,
 }
 
 /// Reactions of a PRP group from the pin `C`, the guide directions (any
 /// length; normalized here) and the known loads on links 1 and 2 as wrenches
-/// about `C`.
+/// about `C`. The closed form of the module documentation.
 ///
 /// Errors ([`Primitive::Prp`]): `NonFinite`; `NonPositive` for a zero
-/// direction; `Singular` for parallel guides.
+/// direction; `Singular { det: cross(d1, d2), scale: 1 }` for guides parallel
+/// to within `|det| <= 6 eps`.
 #[inline]
 pub fn reactions<T: Real>(
     c: &Point2<T>,
@@ -57,25 +83,19 @@ pub fn reactions<T: Real>(
 ) -> Result<PrpReactions<T>, Error<T>> {
     let dir1 = unit_direction(dir1, P, "PRP guide 1 direction")?;
     let dir2 = unit_direction(dir2, P, "PRP guide 2 direction")?;
-    let s = group::solve_inner_revolute(
-        &Pair::Prismatic {
-            point: *c,
-            dir: dir1,
-        },
-        &Pair::Prismatic {
-            point: *c,
-            dir: dir2,
-        },
-        c,
-        load1,
-        load2,
-        P,
-    )?;
-    let [[n1, m1], [n2, m2], [cx, cy]] = s.unknowns;
+    closed::check_loads(load1, load2, P)?;
+    closed::check_points([c], P)?;
+    let det = cross(&dir1, &dir2);
+    let min_pivot_ratio = closed::relative_det(det, T::one(), P)?;
+    let (n1, n2) = (perp(&dir1), perp(&dir2));
+    let total = load1.force + load2.force;
+    let (normal1, normal2) = closed::solve2([n1.x, n2.x, -total.x], [n1.y, n2.y, -total.y]);
+    let fc = -load2.force - n2 * normal2;
+    closed::check_result([normal1, normal2, fc.x, fc.y], P)?;
     Ok(PrpReactions {
-        guide1: PrismaticReaction::new(n1, m1, &dir1),
-        guide2: PrismaticReaction::new(n2, m2, &dir2),
-        c: Vector2::new(cx, cy),
-        min_pivot_ratio: s.min_pivot_ratio,
+        guide1: PrismaticReaction::new(normal1, -load1.moment, &dir1),
+        guide2: PrismaticReaction::new(normal2, -load2.moment, &dir2),
+        c: fc,
+        min_pivot_ratio,
     })
 }

@@ -12,15 +12,43 @@
 //!                                              both about A
 //! ```
 //!
-//! Moments about `A`: the block's moment equation gives the slot couple
-//! (`M_slot = M1`); link 2's gives the guide couple; the force balances give
-//! the pin force and the two normal forces. Singular when the slot is parallel
-//! to the guide.
+//! # The closed form
+//!
+//! Unknowns: `F_A` (outside on the block, through `A`); the slot's reaction
+//! of the block on link 2, normal force `Ns ns` through `A` (`ds` =
+//! `slot_dir` normalized, `ns = perp(ds)`) and couple `Ms` about `A` (the
+//! block receives the opposite); the guide's reaction on link 2, `Ng ng`
+//! through `A` (`dg`, `ng = perp(dg)` likewise) and couple `Mg` about `A`.
+//! Known loads `(F1, M1)` on the block and `(F2, M2)` on link 2, moments
+//! about `A`:
+//!
+//! ```text
+//! block:   F_A - Ns ns + F1 = 0              -Ms + M1 = 0
+//! link 2:  Ns ns + Ng ng + F2 = 0            Ms + Mg + M2 = 0
+//! ```
+//!
+//! The block's moment gives the slot couple `Ms = M1`, then link 2's the
+//! guide couple `Mg = -(M1 + M2)`. Link 2's force balance,
+//!
+//! ```text
+//! Ns ns + Ng ng = -F2
+//! ```
+//!
+//! is a 2x2 system (its `x` and `y` rows) with unit columns and determinant
+//! `cross(ns, ng) = cross(ds, dg)`, solved by elimination with scaled partial
+//! pivoting (see `force::closed`; with the slot and the guide along the axes,
+//! as in the sine mechanism, each normal force is one component of `F2`);
+//! the block's force balance then gives `F_A = Ns ns - F1`. Singular when the
+//! slot is parallel to the guide. `min_pivot_ratio` is `|cross(ds, dg)|`,
+//! `|sin|` of the angle between slot and guide: the 2x2 system's 2-norm
+//! condition lies between `1 / min_pivot_ratio` and `2 / min_pivot_ratio`.
 
 use crate::error::{Error, Primitive};
 use crate::force::body::Wrench;
-use crate::force::group::{self, unit_direction, Connection, Joint, Pair};
+use crate::force::closed;
+use crate::force::group::unit_direction;
 use crate::force::PrismaticReaction;
+use crate::geometry::{cross, perp};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
 
@@ -40,16 +68,19 @@ pub struct RppReactions<T: Real> {
     /// `perp(guide_dir)` through `A`, couple about `A` (use
     /// [`PrismaticReaction::wrench_about`] for another point).
     pub guide: PrismaticReaction<T>,
-    /// Conditioning indicator, see [`crate::linsolve::Solution::min_pivot_ratio`].
+    /// Conditioning indicator in `(6 eps, 1]`: `|sin|` of the angle between
+    /// the slot and the guide (see the module documentation); 1 when they are
+    /// perpendicular (the sine mechanism), tending to 0 as they turn parallel.
     pub min_pivot_ratio: T,
 }
 
 /// Reactions of an RPP group from the pin `A`, the slot and guide directions
 /// (any length; normalized here) and the known loads on the block and on link
-/// 2 as wrenches about `A`.
+/// 2 as wrenches about `A`. The closed form of the module documentation.
 ///
 /// Errors ([`Primitive::Rpp`]): `NonFinite`; `NonPositive` for a zero
-/// direction; `Singular` when the slot is parallel to the guide.
+/// direction; `Singular { det: cross(ds, dg), scale: 1 }` when the slot is
+/// parallel to the guide to within `|det| <= 6 eps`.
 #[inline]
 pub fn reactions<T: Real>(
     a: &Point2<T>,
@@ -60,32 +91,19 @@ pub fn reactions<T: Real>(
 ) -> Result<RppReactions<T>, Error<T>> {
     let slot_dir = unit_direction(slot_dir, P, "RPP slot direction")?;
     let guide_dir = unit_direction(guide_dir, P, "RPP guide direction")?;
-    let joints = [
-        Joint {
-            pair: Pair::Revolute { point: *a },
-            connection: Connection::OutsideToLink1,
-        },
-        Joint {
-            pair: Pair::Prismatic {
-                point: *a,
-                dir: slot_dir,
-            },
-            connection: Connection::Link1ToLink2,
-        },
-        Joint {
-            pair: Pair::Prismatic {
-                point: *a,
-                dir: guide_dir,
-            },
-            connection: Connection::OutsideToLink2,
-        },
-    ];
-    let s = group::solve(&joints, a, load1, load2, P)?;
-    let [[ax, ay], [ns, ms], [ng, mg]] = s.unknowns;
+    closed::check_loads(load1, load2, P)?;
+    closed::check_points([a], P)?;
+    let det = cross(&slot_dir, &guide_dir);
+    let min_pivot_ratio = closed::relative_det(det, T::one(), P)?;
+    let (ns, ng) = (perp(&slot_dir), perp(&guide_dir));
+    let f2 = load2.force;
+    let (slot, guide) = closed::solve2([ns.x, ng.x, -f2.x], [ns.y, ng.y, -f2.y]);
+    let fa = ns * slot - load1.force;
+    closed::check_result([fa.x, fa.y, slot, guide], P)?;
     Ok(RppReactions {
-        a: Vector2::new(ax, ay),
-        slot: PrismaticReaction::new(ns, ms, &slot_dir),
-        guide: PrismaticReaction::new(ng, mg, &guide_dir),
-        min_pivot_ratio: s.min_pivot_ratio,
+        a: fa,
+        slot: PrismaticReaction::new(slot, load1.moment, &slot_dir),
+        guide: PrismaticReaction::new(guide, -(load1.moment + load2.moment), &guide_dir),
+        min_pivot_ratio,
     })
 }

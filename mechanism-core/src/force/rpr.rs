@@ -11,16 +11,40 @@
 //!                                      block -> rocker (slide), about A
 //! ```
 //!
-//! Moments about `A`: the block's moment equation fixes the slide couple
-//! (`M = M1`, the couple the block passes on); the rocker's fixes `F_B` across
-//! `AB`; force balances fix the rest. Singular when `A` coincides with `B`
-//! or, with an offset slide line, when the slide direction is perpendicular to
-//! `AB` (the rate system of the dyad is singular there too).
+//! # The closed form
+//!
+//! Unknowns: `F_A` (outside on the block, through `A`), `F_B` (outside on the
+//! rocker, through `B`), and the slide's reaction of the block on the rocker:
+//! the normal force `N n` through `A` (`d` = `dir` normalized, `n = perp(d)`)
+//! and the couple `M` about `A` (the block receives the opposite). Known loads
+//! `(F1, M1)` on the block and `(F2, M2)` on the rocker, moments about `A`.
+//! With `b = B - A`:
+//!
+//! ```text
+//! block:   F_A - N n + F1 = 0           -M + M1 = 0
+//! rocker:  F_B + N n + F2 = 0           cross(b, F_B) + M + M2 = 0
+//! ```
+//!
+//! The block's moment gives `M = M1` (the couple the block passes on). The
+//! rocker's force balance gives `F_B = -F2 - N n`; in its moment, with
+//! `cross(b, n) = dot(b, d)`:
+//!
+//! ```text
+//! N = (M1 + M2 - cross(b, F2)) / dot(b, d),    F_A = N n - F1
+//! ```
+//!
+//! One unknown, one division: singular when `A` coincides with `B` or, with
+//! an offset slide line, when the slide direction is perpendicular to `AB`
+//! (the rate system of the dyad is singular there too). `min_pivot_ratio` is
+//! `|dot(b, d)| / |b|`, `|cos|` of the angle between `AB` and the slide: the
+//! coefficient of `N` relative to its largest possible size `|b|`.
 
 use crate::error::{Error, Primitive};
 use crate::force::body::Wrench;
-use crate::force::group::{self, unit_direction, Connection, Joint, Pair};
+use crate::force::closed;
+use crate::force::group::unit_direction;
 use crate::force::PrismaticReaction;
+use crate::geometry::{cross, dot, length, perp};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
 
@@ -38,16 +62,20 @@ pub struct RprReactions<T: Real> {
     /// normal force along `perp(dir)` through `A`, couple about `A`. The block
     /// receives the opposite.
     pub slide: PrismaticReaction<T>,
-    /// Conditioning indicator, see [`crate::linsolve::Solution::min_pivot_ratio`].
+    /// Conditioning indicator in `(6 eps, 1]`: `|cos|` of the angle between
+    /// `B - A` and the slide, `|dot(B - A, dir)| / (|B - A| |dir|)` (see the
+    /// module documentation); 1 when the slide line passes through `B`.
     pub min_pivot_ratio: T,
 }
 
 /// Reactions of an RPR group from the pins `A` (block) and `B` (rocker), the
 /// slide direction `dir` along the rocker (any length; normalized here) and the
-/// known loads on the block and on the rocker as wrenches about `A`.
+/// known loads on the block and on the rocker as wrenches about `A`. The
+/// closed form of the module documentation.
 ///
 /// Errors ([`Primitive::Rpr`]): `NonFinite`; `NonPositive` for a zero `dir`;
-/// `Singular` (see the module documentation).
+/// `Singular { det: dot(B - A, d), scale: |B - A| }` when
+/// `|det| <= 6 eps scale` (see the module documentation).
 #[inline]
 pub fn reactions<T: Real>(
     a: &Point2<T>,
@@ -57,26 +85,20 @@ pub fn reactions<T: Real>(
     load2: &Wrench<T>,
 ) -> Result<RprReactions<T>, Error<T>> {
     let dir = unit_direction(dir, P, "RPR slide direction")?;
-    let joints = [
-        Joint {
-            pair: Pair::Revolute { point: *a },
-            connection: Connection::OutsideToLink1,
-        },
-        Joint {
-            pair: Pair::Revolute { point: *b },
-            connection: Connection::OutsideToLink2,
-        },
-        Joint {
-            pair: Pair::Prismatic { point: *a, dir },
-            connection: Connection::Link1ToLink2,
-        },
-    ];
-    let s = group::solve(&joints, a, load1, load2, P)?;
-    let [[ax, ay], [bx, by], [n, m]] = s.unknowns;
+    closed::check_loads(load1, load2, P)?;
+    closed::check_points([a, b], P)?;
+    let rb = b - a;
+    let det = dot(&rb, &dir);
+    let min_pivot_ratio = closed::relative_det(det, length(&rb), P)?;
+    let n = perp(&dir);
+    let normal = (load1.moment + load2.moment - cross(&rb, &load2.force)) / det;
+    let fa = n * normal - load1.force;
+    let fb = -load2.force - n * normal;
+    closed::check_result([fa.x, fa.y, fb.x, fb.y, normal], P)?;
     Ok(RprReactions {
-        a: Vector2::new(ax, ay),
-        b: Vector2::new(bx, by),
-        slide: PrismaticReaction::new(n, m, &dir),
-        min_pivot_ratio: s.min_pivot_ratio,
+        a: fa,
+        b: fb,
+        slide: PrismaticReaction::new(normal, load1.moment, &dir),
+        min_pivot_ratio,
     })
 }

@@ -10,16 +10,40 @@
 //!                               guide (outside) -> block, about C
 //! ```
 //!
-//! Moments about `C`: link 1's moment equation fixes `F_A` across link 1; the
-//! block's fixes the guide couple (`M = -M2`); the force balance of the group
-//! fixes `F_A` along link 1 and the normal force. Singular when link 1 is
-//! perpendicular to the guide (its axial force then has no component that the
-//! guide cannot take, and nothing balances a load along the guide).
+//! # The closed form
+//!
+//! Unknowns: `F_A` (outside on link 1, through `A`), `F_C` (link 1 on the
+//! block, through `C`), and the guide's reaction on the block: the normal
+//! force `N n` through `C` (`d` = `dir` normalized, `n = perp(d)`) and the
+//! couple `M` about `C`. Known loads `(F1, M1)` on link 1 and `(F2, M2)` on
+//! the block, moments about `C`. With `a = A - C`, each link's equilibrium:
+//!
+//! ```text
+//! link 1:  F_A - F_C + F1 = 0           cross(a, F_A) + M1 = 0
+//! block:   N n + F_C + F2 = 0           M + M2 = 0
+//! ```
+//!
+//! The block's moment gives `M = -M2`. The sum of the force balances gives
+//! `F_A = -(F1 + F2) - N n`; in link 1's moment, with
+//! `cross(a, n) = dot(a, d)`:
+//!
+//! ```text
+//! N = (M1 - cross(a, F1 + F2)) / dot(a, d),    F_C = -F2 - N n
+//! ```
+//!
+//! One unknown, one division: singular when link 1 is perpendicular to the
+//! guide (its axial force then has no component that the guide cannot take,
+//! and nothing balances a load along the guide), or when `A = C`.
+//! `min_pivot_ratio` is `|dot(a, d)| / |a|`, `|cos|` of the angle between
+//! link 1 and the guide: the coefficient of `N` relative to its largest
+//! possible size `|a|`.
 
 use crate::error::{Error, Primitive};
 use crate::force::body::Wrench;
-use crate::force::group::{self, unit_direction, Pair};
+use crate::force::closed;
+use crate::force::group::unit_direction;
 use crate::force::PrismaticReaction;
+use crate::geometry::{cross, dot, length, perp};
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
 
@@ -36,17 +60,20 @@ pub struct RrpReactions<T: Real> {
     /// Reaction of the guide (outside body) on the block: normal force along
     /// `perp(dir)` through `C`, couple about `C`.
     pub guide: PrismaticReaction<T>,
-    /// Conditioning indicator: [`crate::linsolve::Solution::min_pivot_ratio`] of
-    /// the reduced 4x4 system of [`crate::force::group::solve_inner_revolute`].
+    /// Conditioning indicator in `(6 eps, 1]`: `|cos|` of the angle between
+    /// link 1 and the guide, `|dot(A - C, dir)| / (|A - C| |dir|)` (see the
+    /// module documentation); tends to 0 as link 1 turns perpendicular to
+    /// the guide.
     pub min_pivot_ratio: T,
 }
 
 /// Reactions of an RRP group from the joints `A`, `C`, the guide direction
 /// `dir` (any length; normalized here) and the known loads on link 1 and on the
-/// block as wrenches about `C`.
+/// block as wrenches about `C`. The closed form of the module documentation.
 ///
 /// Errors ([`Primitive::Rrp`]): `NonFinite`; `NonPositive` for a zero `dir`;
-/// `Singular` when link 1 is perpendicular to the guide or `A = C`.
+/// `Singular { det: dot(A - C, d), scale: |A - C| }` when
+/// `|det| <= 6 eps scale` (link 1 perpendicular to the guide, or `A = C`).
 #[inline]
 pub fn reactions<T: Real>(
     a: &Point2<T>,
@@ -56,19 +83,22 @@ pub fn reactions<T: Real>(
     load2: &Wrench<T>,
 ) -> Result<RrpReactions<T>, Error<T>> {
     let dir = unit_direction(dir, P, "RRP guide direction")?;
-    let s = group::solve_inner_revolute(
-        &Pair::Revolute { point: *a },
-        &Pair::Prismatic { point: *c, dir },
-        c,
-        load1,
-        load2,
-        P,
-    )?;
-    let [[ax, ay], [n, m], [cx, cy]] = s.unknowns;
+    closed::check_loads(load1, load2, P)?;
+    closed::check_points([a, c], P)?;
+    let ra = a - c;
+    let det = dot(&ra, &dir);
+    let min_pivot_ratio = closed::relative_det(det, length(&ra), P)?;
+    let n = perp(&dir);
+    let total = load1.force + load2.force;
+    let normal = (load1.moment - cross(&ra, &total)) / det;
+    let fa = -total - n * normal;
+    let fc = -load2.force - n * normal;
+    let moment = -load2.moment;
+    closed::check_result([fa.x, fa.y, fc.x, fc.y, normal], P)?;
     Ok(RrpReactions {
-        a: Vector2::new(ax, ay),
-        c: Vector2::new(cx, cy),
-        guide: PrismaticReaction::new(n, m, &dir),
-        min_pivot_ratio: s.min_pivot_ratio,
+        a: fa,
+        c: fc,
+        guide: PrismaticReaction::new(normal, moment, &dir),
+        min_pivot_ratio,
     })
 }

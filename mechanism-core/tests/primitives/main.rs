@@ -1,6 +1,9 @@
 //! The core primitives (drivers, groups, link points, kinetostatics, the
 //! linear solver) against facts they do not compute themselves:
 //!
+//! - [`closed_forms`]: the five groups' closed-form kinetostatics against the
+//!   general elimination of the same equations and, near singular poses,
+//!   a double-double solution;
 //! - [`exact_configurations`]: hand-derivable configurations compared exactly
 //!   or to 2 ulp, the error variants with their numbers, and a fuzz test
 //!   (no input panics or gives a non-finite `Ok`);
@@ -11,6 +14,7 @@
 //! - [`linsolve`]: the scaled, pivoted solver against nalgebra's LU and on
 //!   the failure cases of naive elimination.
 
+mod closed_forms;
 mod exact_configurations;
 mod kinematics_fd;
 mod kinetostatics;

@@ -67,7 +67,7 @@ struct ForceEmitter<'a> {
     power: Vec<TokenStream>,
     /// The forces struct's reaction and effort fields, in the order found.
     reactions: Vec<Reaction>,
-    /// The groups' force-system conditioning (relative pivots).
+    /// The groups' force-system conditioning (`min_pivot_ratio`).
     conditions: Vec<TokenStream>,
     /// Methods beside `forces` (the motors' rate map).
     extra_methods: TokenStream,
@@ -280,12 +280,13 @@ pub(crate) fn unique_names(reactions: &mut [Reaction]) {
 }
 
 /// The forces' conditioning indicator: the velocity's first, then each
-/// group's relative pivot. A group's force system is the transpose of its
-/// rate system (virtual work), so it is singular at the same poses, and the
-/// scaled determinants see that in any frame. The force solves' relative
-/// pivots are row-equilibrated and can miss it: a PRP with its guides along
-/// the x axis has a row (the x balance) whose entries all vanish together,
-/// and the scaling lifts it back to 1.
+/// group's force indicator (`min_pivot_ratio`). A group's force system is the
+/// transpose of its rate system (virtual work), so it is singular at the same
+/// poses, and the scaled determinants see that in any frame; the class II
+/// groups' force indicators are the same relative determinants, the
+/// actuator's and the triad's the relative pivots of a row-equilibrated
+/// elimination, which can miss a singular pose in some frames (a row whose
+/// entries all vanish together is lifted back to 1 by the scaling).
 fn condition_code(conditions: &[TokenStream]) -> TokenStream {
     conditions.iter().fold(
         quote!(vel.condition),
@@ -398,8 +399,8 @@ fn forces_struct(
             #(#[doc = #field_docs] pub #field_names: #field_types,)*
             /// Conditioning indicator: the smaller of the velocity's
             /// `condition` (the groups' scaled determinants, singular at the
-            /// same poses as their force systems) and the smallest relative
-            /// pivot over the groups' force systems; 1 for a well-conditioned
+            /// same poses as their force systems) and the groups' force
+            /// indicators (`min_pivot_ratio`); 1 for a well-conditioned
             /// pose, tending to 0 towards a singular one (toggle, dead centre,
             /// parallel guides).
             pub condition: T,
