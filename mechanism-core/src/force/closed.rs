@@ -138,7 +138,9 @@ pub(crate) fn check_result<T: Real, const N: usize>(
 /// pivot row is the one whose `|u|` is the larger fraction of its row's
 /// largest coefficient (compared by cross-multiplying, without dividing),
 /// the other row loses its `u` by one multiplier, `y` comes from what is
-/// left and `x` by back substitution. Three divisions.
+/// left and `x` by back substitution. Two divisions: the pivot's reciprocal
+/// (for the multiplier and the back substitution) and the reduced
+/// coefficient.
 ///
 /// The caller has checked the determinant (`u1 v2 - u2 v1`) against its
 /// scale with [`relative_det`], so the pivot and the reduced coefficient are
@@ -150,8 +152,9 @@ pub(crate) fn solve2<T: Real>(row1: [T; 3], row2: [T; 3]) -> (T, T) {
     // |u2| / max2 > |u1| / max1, without the divisions.
     let swap = abs(u2) * max(abs(u1), abs(v1)) > abs(u1) * max(abs(u2), abs(v2));
     let ([u, v, p], [w, z, q]) = if swap { (row2, row1) } else { (row1, row2) };
-    let l = w / u;
+    let inv = T::one() / u;
+    let l = w * inv;
     let y = (q - l * p) / (z - l * v);
-    let x = (p - v * y) / u;
+    let x = (p - v * y) * inv;
     (x, y)
 }

@@ -31,7 +31,7 @@
 
 use crate::error::{Error, Fault, Primitive};
 use crate::force::body::Wrench;
-use crate::geometry::{cross, length, perp};
+use crate::geometry::{abs, cross, length, perp};
 use crate::linsolve;
 use crate::scalar::Real;
 use nalgebra::{Point2, Vector2};
@@ -109,15 +109,26 @@ pub struct GroupSolution<T: Real> {
     pub min_pivot_ratio: T,
 }
 
-/// `dir / |dir|`. Errors: `NonFinite` for a non-finite `dir`, `NonPositive`
-/// for a zero one (both tagged with `primitive`).
-#[inline]
+/// `dir / |dir|`. A `dir` whose computed squared length is within `4 eps`
+/// of 1 (the guide, slot and link directions the kinematics hand over are
+/// unit to rounding) is returned as it is: its length is then within about
+/// `3 eps` of 1, as close as the square root and the division of a
+/// normalization would leave it, and the two (the costliest operations of a
+/// group's force analysis after its one or two divisions) are skipped.
+///
+/// Errors: `NonFinite` for a non-finite `dir`, `NonPositive` for a zero one
+/// (both tagged with `primitive`).
+#[inline(always)]
 pub fn unit_direction<T: Real>(
     dir: &Vector2<T>,
     primitive: Primitive,
     what: &'static str,
 ) -> Result<Vector2<T>, Error<T>> {
     let dir = crate::geometry::finite_vec(*dir, primitive, what)?;
+    let squared = dir.x * dir.x + dir.y * dir.y;
+    if abs(squared - T::one()) <= T::lit(4.0) * T::eps() {
+        return Ok(dir);
+    }
     let norm = crate::geometry::positive(length(&dir), primitive, what)?;
     Ok(dir / norm)
 }

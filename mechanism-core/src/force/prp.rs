@@ -73,7 +73,7 @@ pub struct PrpReactions<T: Real> {
 /// Errors ([`Primitive::Prp`]): `NonFinite`; `NonPositive` for a zero
 /// direction; `Singular { det: cross(d1, d2), scale: 1 }` for guides parallel
 /// to within `|det| <= 6 eps`.
-#[inline]
+#[inline(always)]
 pub fn reactions<T: Real>(
     c: &Point2<T>,
     dir1: &Vector2<T>,

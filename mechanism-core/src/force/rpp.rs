@@ -81,7 +81,7 @@ pub struct RppReactions<T: Real> {
 /// Errors ([`Primitive::Rpp`]): `NonFinite`; `NonPositive` for a zero
 /// direction; `Singular { det: cross(ds, dg), scale: 1 }` when the slot is
 /// parallel to the guide to within `|det| <= 6 eps`.
-#[inline]
+#[inline(always)]
 pub fn reactions<T: Real>(
     a: &Point2<T>,
     slot_dir: &Vector2<T>,

@@ -76,7 +76,7 @@ pub struct RprReactions<T: Real> {
 /// Errors ([`Primitive::Rpr`]): `NonFinite`; `NonPositive` for a zero `dir`;
 /// `Singular { det: dot(B - A, d), scale: |B - A| }` when
 /// `|det| <= 6 eps scale` (see the module documentation).
-#[inline]
+#[inline(always)]
 pub fn reactions<T: Real>(
     a: &Point2<T>,
     b: &Point2<T>,

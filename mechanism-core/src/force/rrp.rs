@@ -74,7 +74,7 @@ pub struct RrpReactions<T: Real> {
 /// Errors ([`Primitive::Rrp`]): `NonFinite`; `NonPositive` for a zero `dir`;
 /// `Singular { det: dot(A - C, d), scale: |A - C| }` when
 /// `|det| <= 6 eps scale` (link 1 perpendicular to the guide, or `A = C`).
-#[inline]
+#[inline(always)]
 pub fn reactions<T: Real>(
     a: &Point2<T>,
     c: &Point2<T>,

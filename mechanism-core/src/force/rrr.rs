@@ -84,7 +84,7 @@ pub struct RrrReactions<T: Real> {
 /// [`crate::force::group::solve`] refuses the same equations, or when `det`
 /// or `scale` is below the normal range (lengths below about 1e-19 in
 /// `f32`, 1e-154 in `f64`).
-#[inline]
+#[inline(always)]
 pub fn reactions<T: Real>(
     a: &Point2<T>,
     b: &Point2<T>,
