@@ -55,7 +55,7 @@ fn main() {
         outln!("{name:>6} {o:>14.6} {printed:>10} {t:>14.6}");
     }
     outln!(
-        "conditioning indicator (smallest relative pivot): {:.4}",
+        "conditioning indicator (|sin| of the angle between the links at C): {:.4}",
         ours.ratio
     );
 }

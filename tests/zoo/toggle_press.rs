@@ -309,7 +309,8 @@ fn press_sweep<T: Real>(rnd: fn(f64) -> f64, eps: f64, mistake: f64) -> PressFig
 }
 
 /// Bound of the press's columns, in `eps S / kappa` (see [`worst_ratio`]):
-/// each reaction comes out of a 2- to 4-unknown pivoted elimination whose
+/// each reaction comes out of a group's closed form (at most a 2x2 pivoted
+/// elimination) or a driver's, whose
 /// inputs (positions, the reactions of the group before) carry a few eps of
 /// their scale: a backward-stable answer is within a few units. 8 is four
 /// times the worst measured (2.2 in f64 and f32); a drive 20 eps F L off is
