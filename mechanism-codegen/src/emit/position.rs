@@ -4,6 +4,7 @@
 
 use super::names::{debug_impl, grp, local, marker, output_docs, tag, Generated, TypeNames};
 use super::reads::{Analysis, Reads};
+use crate::keys::LinkName;
 use crate::kinds::{self, lane::OutputShape, tokens::axis, Known, Solve};
 use crate::model::{Model, StmtId};
 use crate::plan::Plan;
@@ -165,7 +166,7 @@ impl<'a> Emitter<'a> {
         let (model, plan, out) = (self.model, self.plan, &self.plan.outputs);
         let mut code = TokenStream::new();
         for link in &out.links {
-            let info = &plan.links[&link.to_string()];
+            let info = &plan.links[&LinkName::of(link)];
             let kind = kinds::of(&model.stmts[info.stmt]);
             let (_, dir) = kind.link_direction(info.index);
             // A crank's angle is its input: reduced to (-pi, pi], no atan2.

@@ -10,6 +10,7 @@
 //! allocates nothing, formats nothing and looks nothing up by name.
 
 use super::forces::Held;
+use crate::keys::{GuideName, InputName, LinkName, Name, PointName};
 use crate::model::{Model, Stmt};
 use crate::names::Family;
 use crate::plan::Plan;
@@ -85,13 +86,13 @@ pub struct Layout {
     /// Statements (points, guides, steps); slot `stmts` is the unknown one.
     pub stmts: usize,
     /// Link names by slot; slot `links.len()` is the unknown one.
-    pub link_names: Vec<String>,
+    pub link_names: Vec<LinkName>,
     /// Link slots by name.
-    links: BTreeMap<String, LinkSlot>,
+    links: BTreeMap<LinkName, LinkSlot>,
     /// Statement slots by the name they define.
-    defined: BTreeMap<String, u32>,
+    defined: BTreeMap<Name, u32>,
     /// Input slots by name.
-    inputs: BTreeMap<String, InputSlot>,
+    inputs: BTreeMap<InputName, InputSlot>,
     /// `true` for a point that moves.
     pub moving: Vec<bool>,
     /// `true` for a guide carried by a link.
@@ -110,13 +111,13 @@ impl Layout {
     /// The layout of `model` planned as `plan`.
     pub fn new(model: &Model, plan: &Plan) -> Self {
         let stmts = model.stmts.len();
-        let defined: BTreeMap<String, u32> = plan
+        let defined: BTreeMap<Name, u32> = plan
             .defined
             .iter()
             .map(|(n, id)| (n.clone(), slot(id.0)))
             .collect();
-        let link_names: Vec<String> = plan.links.keys().cloned().collect();
-        let links: BTreeMap<String, LinkSlot> = link_names
+        let link_names: Vec<LinkName> = plan.links.keys().cloned().collect();
+        let links: BTreeMap<LinkName, LinkSlot> = link_names
             .iter()
             .enumerate()
             .map(|(k, n)| (n.clone(), LinkSlot(slot(k))))
@@ -125,7 +126,7 @@ impl Layout {
             .inputs
             .iter()
             .enumerate()
-            .map(|(k, i)| (i.name.to_string(), InputSlot(slot(k))))
+            .map(|(k, i)| (InputName::of(&i.name), InputSlot(slot(k))))
             .collect();
         let moving_names = crate::emit::moving_points(model, plan);
         let mut l = Layout {
@@ -142,11 +143,11 @@ impl Layout {
             reference: Vec::new(),
         };
         for (k, s) in model.stmts.iter().enumerate() {
-            let name = s.name.to_string();
-            l.moving[k] = moving_names.contains(&name);
-            l.carried[k] = plan.guides.get(&name).is_some_and(|g| g.carrier.is_some());
-            l.point_body[k] = plan.body_of_point(&name).map(|b| l.link_named(&b));
-            l.guide_body[k] = plan.body_of_guide(&name).map(|b| l.link_named(&b));
+            let (point, guide) = (PointName::of(&s.name), GuideName::of(&s.name));
+            l.moving[k] = moving_names.contains(&point);
+            l.carried[k] = plan.guides.get(&guide).is_some_and(|g| g.carrier.is_some());
+            l.point_body[k] = plan.body_of_point(&point).map(|b| l.link_named(&b));
+            l.guide_body[k] = plan.body_of_guide(&guide).map(|b| l.link_named(&b));
         }
         let names = l.link_names.clone();
         l.turning = names
@@ -166,7 +167,7 @@ impl Layout {
     }
 
     /// The slot of link `name` (the unknown slot when none).
-    pub fn link_named(&self, name: &str) -> LinkSlot {
+    pub fn link_named(&self, name: &LinkName) -> LinkSlot {
         self.links
             .get(name)
             .copied()
@@ -174,17 +175,22 @@ impl Layout {
     }
 
     /// The slot of point `name` (the unknown slot when none).
-    pub fn point_named(&self, name: &str) -> PointSlot {
-        PointSlot(self.defined.get(name).copied().unwrap_or(slot(self.stmts)))
+    pub fn point_named(&self, name: &PointName) -> PointSlot {
+        PointSlot(self.stmt_named(&name.name()))
     }
 
     /// The slot of guide `name` (the unknown slot when none).
-    pub fn guide_named(&self, name: &str) -> GuideSlot {
-        GuideSlot(self.point_named(name).0)
+    pub fn guide_named(&self, name: &GuideName) -> GuideSlot {
+        GuideSlot(self.stmt_named(&name.name()))
+    }
+
+    /// The statement slot defining `name` (the unknown slot when none).
+    fn stmt_named(&self, name: &Name) -> u32 {
+        self.defined.get(name).copied().unwrap_or(slot(self.stmts))
     }
 
     /// The slot of input `name` (one past the inputs when none: reads NaN).
-    pub fn input_named(&self, name: &str) -> InputSlot {
+    pub fn input_named(&self, name: &InputName) -> InputSlot {
         self.inputs
             .get(name)
             .copied()
@@ -194,7 +200,7 @@ impl Layout {
     /// The name of link slot `l` (`ground` for none).
     pub fn link_name(&self, l: Option<LinkSlot>) -> &str {
         l.and_then(|l| self.link_names.get(at(l.0)))
-            .map_or("ground", String::as_str)
+            .map_or("ground", LinkName::as_str)
     }
 
     /// Number of link slots, the unknown one included.
@@ -215,17 +221,17 @@ pub struct Compile<'c> {
 impl Compile<'_> {
     /// The slot of point `n`.
     pub fn point(&self, n: &Ident) -> PointSlot {
-        self.layout.point_named(&n.to_string())
+        self.layout.point_named(&PointName::of(n))
     }
 
     /// The slot of guide `n`.
     pub fn guide(&self, n: &Ident) -> GuideSlot {
-        self.layout.guide_named(&n.to_string())
+        self.layout.guide_named(&GuideName::of(n))
     }
 
     /// The slot of link `n`.
     pub fn link(&self, n: &Ident) -> LinkSlot {
-        self.layout.link_named(&n.to_string())
+        self.layout.link_named(&LinkName::of(n))
     }
 
     /// `true` when point `p` moves (its rates are computed).
@@ -235,7 +241,7 @@ impl Compile<'_> {
 
     /// The slot of input `n`.
     pub fn input(&self, n: &Ident) -> InputSlot {
-        self.layout.input_named(&n.to_string())
+        self.layout.input_named(&InputName::of(n))
     }
 
     /// A dimension's value with the current parameters (NaN for one that
@@ -249,7 +255,7 @@ impl Compile<'_> {
     /// The slots `stmt` writes.
     pub fn me(&self, stmt: &Stmt) -> Me {
         let name = stmt.name.to_string();
-        let point = self.layout.point_named(&name);
+        let point = PointSlot(self.layout.stmt_named(&Name::of(&stmt.name)));
         let unknown = LinkSlot(slot(self.layout.link_names.len()));
         let mut links = [unknown; 4];
         for (l, n) in links.iter_mut().zip(&stmt.links) {
