@@ -8,7 +8,28 @@
 //! A key is made from the user's token ([`PointName::of`]) or, for a name
 //! held as text (a run-time parameter list, a test), from its text
 //! ([`PointName::new`]); the family is always said where the key is made.
-//! The keys do not borrow as `str` (no `Borrow<str>`), for the same reason.
+//! The keys do not borrow as `str` (no `Borrow<str>`), for the same reason:
+//!
+//! ```
+//! use mechanism_codegen::keys::LinkName;
+//! use std::collections::BTreeMap;
+//! let links: BTreeMap<LinkName, u32> = [(LinkName::new("link2"), 2)].into();
+//! assert_eq!(links.get(&LinkName::new("link2")), Some(&2));
+//! ```
+//!
+//! ```compile_fail,E0308
+//! use mechanism_codegen::keys::{LinkName, PointName};
+//! use std::collections::BTreeMap;
+//! let links: BTreeMap<LinkName, u32> = [(LinkName::new("link2"), 2)].into();
+//! links.get(&PointName::new("link2")); // a point's name among the links
+//! ```
+//!
+//! ```compile_fail,E0277
+//! use mechanism_codegen::keys::LinkName;
+//! use std::collections::BTreeMap;
+//! let links: BTreeMap<LinkName, u32> = [(LinkName::new("link2"), 2)].into();
+//! links.get("link2"); // untyped text
+//! ```
 //!
 //! Each key holds the name as written (a `String`): the maps are small
 //! (one entry per statement), built once per expansion, and a key's text is

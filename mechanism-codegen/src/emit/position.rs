@@ -53,7 +53,7 @@ pub(super) struct Emitter<'a> {
     /// tracked assemblies).
     pub known: &'a Known,
     /// Links whose unit axis is needed in position (points on them, carried guides).
-    axes: BTreeSet<String>,
+    axes: BTreeSet<LinkName>,
     /// Emitting `position_cos_sin`: cranks marked `as cos_sin` read
     /// `input_cs.NAME.cos` and `.sin`.
     cos_sin: bool,
@@ -69,7 +69,7 @@ impl<'a> Emitter<'a> {
         let mut axes = BTreeSet::new();
         for stmt in plan.solve.iter().map(|&i| &model.stmts[i]) {
             if let Some(link) = kinds::of(stmt).reads_axis() {
-                axes.insert(link.to_string());
+                axes.insert(LinkName::of(link));
             }
         }
         Emitter {
@@ -150,7 +150,7 @@ impl<'a> Emitter<'a> {
         // Unit axes of the links this statement creates, where needed.
         let mut axes = TokenStream::new();
         for (j, link) in stmt.links.iter().enumerate() {
-            if self.axes.contains(&link.to_string()) {
+            if self.axes.contains(&LinkName::of(link)) {
                 let axis = axis(link);
                 let (unit, _) = kind.link_direction(j);
                 axes.extend(quote!(let #axis = #unit;));
