@@ -11,9 +11,8 @@
 
 use super::forces::Held;
 use crate::keys::{GuideName, InputName, LinkName, Name, PointName};
-use crate::model::{Model, Stmt};
+use crate::model::Stmt;
 use crate::names::Family;
-use crate::plan::Plan;
 use crate::value::Value;
 use mechanism_core::force::{PrismaticReaction, Wrench};
 use mechanism_core::guide::{Line, LineAcceleration, LineVelocity};
@@ -108,62 +107,42 @@ pub struct Layout {
 }
 
 impl Layout {
-    /// The layout of `model` planned as `plan`.
-    pub fn new(model: &Model, plan: &Plan) -> Self {
-        let stmts = model.stmts.len();
-        let defined: BTreeMap<Name, u32> = plan
-            .defined
-            .iter()
-            .map(|(n, id)| (n.clone(), slot(id.0)))
-            .collect();
-        let link_names: Vec<LinkName> = plan.links.keys().cloned().collect();
-        let links: BTreeMap<LinkName, LinkSlot> = link_names
+    /// The layout of `stmts` statements with the links `link_names` (in slot
+    /// order), the statement index defining each name, and the inputs (in
+    /// slot order). The facts by slot (`moving`, `carried`, `point_body`,
+    /// `guide_body`: one more than `stmts`, the unknown slot last; `turning`
+    /// and `reference`: one more than the links) start as nothing moving,
+    /// carried or turning, and are the caller's to fill from the plan
+    /// (`runtime::slots`), so this stage reads no later one.
+    pub fn with_names(
+        stmts: usize,
+        link_names: Vec<LinkName>,
+        defined: impl IntoIterator<Item = (Name, usize)>,
+        inputs: impl IntoIterator<Item = InputName>,
+    ) -> Self {
+        let links = link_names
             .iter()
             .enumerate()
             .map(|(k, n)| (n.clone(), LinkSlot(slot(k))))
             .collect();
-        let inputs = model
-            .inputs
-            .iter()
-            .enumerate()
-            .map(|(k, i)| (InputName::of(&i.name), InputSlot(slot(k))))
-            .collect();
-        let moving_names = crate::emit::moving_points(model, plan);
-        let mut l = Layout {
+        let n_links = link_names.len() + 1;
+        Layout {
             stmts,
             link_names,
             links,
-            defined,
-            inputs,
+            defined: defined.into_iter().map(|(n, k)| (n, slot(k))).collect(),
+            inputs: inputs
+                .into_iter()
+                .enumerate()
+                .map(|(k, i)| (i, InputSlot(slot(k))))
+                .collect(),
             moving: vec![false; stmts + 1],
             carried: vec![false; stmts + 1],
-            turning: Vec::new(),
+            turning: vec![None; n_links],
             point_body: vec![None; stmts + 1],
             guide_body: vec![None; stmts + 1],
-            reference: Vec::new(),
-        };
-        for (k, s) in model.stmts.iter().enumerate() {
-            let (point, guide) = (PointName::of(&s.name), GuideName::of(&s.name));
-            l.moving[k] = moving_names.contains(&point);
-            l.carried[k] = plan.guides.get(&guide).is_some_and(|g| g.carrier.is_some());
-            l.point_body[k] = plan.body_of_point(&point).map(|b| l.link_named(&b));
-            l.guide_body[k] = plan.body_of_guide(&guide).map(|b| l.link_named(&b));
+            reference: vec![None; n_links],
         }
-        let names = l.link_names.clone();
-        l.turning = names
-            .iter()
-            .map(|n| plan.turning_link(n).map(|t| l.link_named(&t)))
-            .collect();
-        l.turning.push(None);
-        l.reference = names
-            .iter()
-            .map(|n| {
-                let first = plan.links.get(n).and_then(|i| i.points.first());
-                first.map(|p| l.point_named(p))
-            })
-            .collect();
-        l.reference.push(None);
-        l
     }
 
     /// The slot of link `name` (the unknown slot when none).

@@ -25,6 +25,7 @@
 
 pub mod forces;
 pub mod layout;
+mod slots;
 pub mod text;
 
 use crate::diag::Diagnostics;
@@ -203,7 +204,7 @@ impl Mechanism {
             .iter()
             .map(|(n, v)| (n.to_string(), *v))
             .collect();
-        let slots = Arc::new(run::Layout::new(&model, &plan));
+        let slots = Arc::new(slots::layout(&model, &plan));
         let mut m = Mechanism {
             model,
             plan,
