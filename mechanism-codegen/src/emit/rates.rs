@@ -3,9 +3,9 @@
 //! acceleration structs and their methods.
 
 use super::names::{debug_impl, lit_zero, marker, opt_point, output_docs, Generated, TypeNames};
-use super::reads::{Analysis, Reads};
 use crate::kinds;
 use crate::kinds::rates::{vec_ty, RateCx};
+use crate::kinds::reads::{Analysis, Reads};
 use crate::model::{Model, StmtId};
 use crate::names::Family;
 use crate::plan::{Outputs, Plan};
@@ -60,6 +60,8 @@ struct RateEmitter<'a> {
     code: TokenStream,
     fields: Vec<Field>,
     slide_values: Vec<(StmtId, usize, TokenStream)>,
+    /// The recorder of the code's reads of `pos` and `vel`.
+    reads: &'a Reads,
 }
 
 fn none() -> TokenStream {
@@ -86,7 +88,8 @@ impl RateCx for RateEmitter<'_> {
         }
         let n = Family::Gvel.of(g);
         if self.accel {
-            quote!(::core::option::Option::Some(&vel.#n))
+            let n = self.reads.vel(&n);
+            quote!(::core::option::Option::Some(&#n))
         } else {
             quote!(::core::option::Option::Some(&#n))
         }
@@ -107,10 +110,9 @@ impl RateCx for RateEmitter<'_> {
     }
 
     fn link_omega_in_accel(&self, link: &Ident) -> Option<TokenStream> {
-        self.plan.turning_link(&link.to_string()).map(|l| {
-            let w = Family::Omega.named(&l);
-            quote!(vel.#w)
-        })
+        self.plan
+            .turning_link(&link.to_string())
+            .map(|l| self.reads.vel(&Family::Omega.named(&l)))
     }
 
     fn code(&mut self, code: TokenStream) {
@@ -123,6 +125,10 @@ impl RateCx for RateEmitter<'_> {
 
     fn slide(&mut self, slot: usize, value: TokenStream) {
         self.slide_values.push((self.current, slot, value));
+    }
+
+    fn reads(&self) -> &Reads {
+        self.reads
     }
 }
 
@@ -184,8 +190,14 @@ impl RateEmitter<'_> {
 }
 
 /// Velocity or acceleration statements of a planned model; `moving` holds
-/// the points that move.
-pub(super) fn code(model: &Model, plan: &Plan, moving: &BTreeSet<String>, rate: Rate) -> RatesCode {
+/// the points that move; `reads` records the code's reads of `pos` and `vel`.
+pub(super) fn code(
+    model: &Model,
+    plan: &Plan,
+    moving: &BTreeSet<String>,
+    rate: Rate,
+    reads: &Reads,
+) -> RatesCode {
     let accel = rate == Rate::Acceleration;
     let mut em = RateEmitter {
         plan,
@@ -197,6 +209,7 @@ pub(super) fn code(model: &Model, plan: &Plan, moving: &BTreeSet<String>, rate: 
         code: TokenStream::new(),
         fields: Vec::new(),
         slide_values: Vec::new(),
+        reads,
     };
     for &i in &plan.solve {
         em.current = i;
@@ -366,6 +379,8 @@ pub(super) fn acceleration_items(
     };
     let debug = debug_impl(acceleration_ty, on, &[]);
     let items = quote!(#items #debug);
+    // `vel.rates` is a field every velocity struct has, read by the
+    // velocity's own family: not a reader that decides the struct's fields.
     let methods = quote! {
         /// Solves the acceleration analysis at `pos`, `vel` for the input
         /// accelerations (rad/s^2 or length units per s^2).
@@ -390,7 +405,7 @@ mod tests {
     fn rates(src: &str, rate: Rate) -> RatesCode {
         let (model, plan) = planned(src);
         let moving = moving_points(&model, &plan);
-        code(&model, &plan, &moving, rate)
+        code(&model, &plan, &moving, rate, &Reads::default())
     }
 
     fn output(rates: &RatesCode, name: &str) -> String {

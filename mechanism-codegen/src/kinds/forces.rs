@@ -3,6 +3,7 @@
 //! The same per-kind code runs against the emitter (code and fields) and
 //! against [`FieldsOnly`] (the fields alone, for the stubs emitted on error).
 
+use super::reads::Reads;
 use crate::model::{Model, Stmt};
 use crate::names::Family;
 use proc_macro2::TokenStream;
@@ -60,6 +61,8 @@ pub trait ForceCx {
     fn power(&mut self, term: TokenStream);
     /// Adds a group's conditioning (its relative pivot) to `condition`.
     fn condition(&mut self, term: TokenStream);
+    /// The recorder of the code's reads of `pos`, `vel` and `acc`.
+    fn reads(&self) -> &Reads;
 
     /// A force `force` (code) acting on `link` at point `at`, as a wrench
     /// about the link's reference point.
@@ -68,7 +71,8 @@ pub trait ForceCx {
         let wrench = if *at == r {
             quote!(::mechanism::force::Wrench::new(#force, <T as ::mechanism::Real>::lit(0.0)))
         } else {
-            quote!(::mechanism::force::Wrench::force_at(&(#force), &pos.#at, &pos.#r))
+            let (p_at, p_r) = (self.reads().pos(at), self.reads().pos(&r));
+            quote!(::mechanism::force::Wrench::force_at(&(#force), &#p_at, &#p_r))
         };
         self.add(link, wrench);
     }
@@ -80,7 +84,8 @@ pub trait ForceCx {
             let wrench = if *about == r {
                 quote!(-(#rx).wrench())
             } else {
-                quote!(-(#rx).wrench_about(&pos.#about, &pos.#r))
+                let (p_about, p_r) = (self.reads().pos(about), self.reads().pos(&r));
+                quote!(-(#rx).wrench_about(&#p_about, &#p_r))
             };
             self.add(&body, wrench);
         }
@@ -203,6 +208,8 @@ pub struct FieldsOnly {
     carrier: BTreeMap<String, Option<String>>,
     /// The fields found, in the order found.
     pub reactions: Vec<Reaction>,
+    /// The reads of the code the kinds write, which goes nowhere.
+    reads: Reads,
 }
 
 impl FieldsOnly {
@@ -214,6 +221,7 @@ impl FieldsOnly {
             owner: BTreeMap::new(),
             carrier: BTreeMap::new(),
             reactions: Vec::new(),
+            reads: Reads::default(),
         };
         for stmt in &model.stmts {
             let kind = super::of(stmt);
@@ -252,4 +260,7 @@ impl ForceCx for FieldsOnly {
     }
     fn power(&mut self, _term: TokenStream) {}
     fn condition(&mut self, _term: TokenStream) {}
+    fn reads(&self) -> &Reads {
+        &self.reads
+    }
 }

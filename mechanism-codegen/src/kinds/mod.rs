@@ -44,7 +44,11 @@ macro_rules! linkless_facets {
             false
         }
 
-        fn closure_axis(&self, _index: usize) -> ::proc_macro2::TokenStream {
+        fn closure_axis(
+            &self,
+            _index: usize,
+            _reads: &super::reads::Reads,
+        ) -> ::proc_macro2::TokenStream {
             ::quote::quote!([1.0, 0.0])
         }
 
@@ -56,7 +60,7 @@ macro_rules! linkless_facets {
             "LinkPoint"
         }
 
-        fn det_code(&self) -> ::proc_macro2::TokenStream {
+        fn det_code(&self, _reads: &super::reads::Reads) -> ::proc_macro2::TokenStream {
             ::quote::quote!(1.0)
         }
 
@@ -116,6 +120,7 @@ mod point;
 pub mod pose;
 mod prp;
 pub mod rates;
+pub mod reads;
 mod rpp;
 mod rpr;
 mod rrp;
@@ -256,8 +261,9 @@ pub trait GroupKind<'a>: run::RunKind {
 
     /// Its position code in the tracking form (`position_near`), which
     /// stays on the assembly of the previous position `pos`; `None`: the
-    /// same as `position` (kinds with a single assembly per mode).
-    fn position_tracking(&self) -> Option<Solve> {
+    /// same as `position` (kinds with a single assembly per mode). `reads`
+    /// records its reads of `pos`.
+    fn position_tracking(&self, _reads: &reads::Reads) -> Option<Solve> {
         None
     }
 
@@ -290,8 +296,8 @@ pub trait GroupKind<'a>: run::RunKind {
     }
 
     /// The unit axis of its link `index` from the solved points (code of
-    /// the self-test module).
-    fn closure_axis(&self, _index: usize) -> TokenStream;
+    /// the self-test module); `reads` records its reads of `pos`.
+    fn closure_axis(&self, _index: usize, _reads: &reads::Reads) -> TokenStream;
 
     /// Its link lengths (for the shortest link of the self-test tolerances).
     fn link_lengths(&self) -> Vec<&'a Value>;
@@ -319,7 +325,8 @@ pub trait GroupKind<'a>: run::RunKind {
 
     /// Its scaled determinant (the same as its `eval`'s) from the generated
     /// position struct `pos` (code of `check()`); 1 without a rate system.
-    fn det_code(&self) -> TokenStream;
+    /// `reads` records its reads of `pos`.
+    fn det_code(&self, _reads: &reads::Reads) -> TokenStream;
 
     /// Its line in the structure listing of the generated type's doc comment.
     fn describe(&self) -> String;
