@@ -322,7 +322,7 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
         let (rx, link, pivot) = (rx(stmt), &stmt.links[0], &g.pivot);
         let load = cx.load_about(link, pivot);
         let (ratio, pressure) = (g.ratio.emit(), g.pressure.emit());
-        let (pp, pc) = (cx.reads().pos(pivot), cx.reads().pos(&center));
+        let (pp, pc) = (cx.reads().pos(pivot), cx.reads().pos(center));
         cx.solve(
             stmt,
             quote!(::mechanism::force::gear::reactions(&#load, &#pp, &#pc, #ratio, #pressure)),
