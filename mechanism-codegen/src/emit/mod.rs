@@ -120,19 +120,21 @@ fn items(
     let tracking = position::tracking_code(&em, reads);
     // Debug builds: every read in the readers' tokens was recorded, and
     // every recorded read is in them.
-    debug_assert_eq!(
-        readers
-            .iter()
-            .copied()
-            .chain(vel.iter().chain(&accel).map(|r| &r.code))
-            .chain(forces.iter().map(|f| &f.methods))
-            .chain(dynamics.iter().map(|d| &d.methods))
-            .chain(&tracking)
-            .flat_map(Reads::scan)
-            .collect::<BTreeSet<_>>(),
-        reads.recorded(),
-        "the reads written in the emitted code (left) and those recorded (right)"
-    );
+    if cfg!(debug_assertions) {
+        let (unrecorded, unwritten) = reads.mismatch(
+            readers
+                .iter()
+                .copied()
+                .chain(vel.iter().chain(&accel).map(|r| &r.code))
+                .chain(forces.iter().map(|f| &f.methods))
+                .chain(dynamics.iter().map(|d| &d.methods))
+                .chain(&tracking),
+        );
+        assert!(
+            unrecorded.is_empty() && unwritten.is_empty(),
+            "reads written into tokens without `kinds::reads::Reads`: {unrecorded:?}; recorded reads in no emitted code: {unwritten:?}"
+        );
+    }
 
     let mut out = solution::own_items(model, plan, &inputs);
     out.push(position::items(

@@ -118,9 +118,20 @@ impl Reads {
             .contains(&(analysis, field.to_string()))
     }
 
-    /// Every read recorded so far.
-    pub fn recorded(&self) -> BTreeSet<Read> {
-        self.fields.borrow().clone()
+    /// The reads written in `readers` (found by [`Reads::scan`]) that were
+    /// not recorded, and the recorded reads written in none of them: both
+    /// empty when every read of the readers' code went through the
+    /// recorder and every recorded read was emitted.
+    pub fn mismatch<'t>(
+        &self,
+        readers: impl IntoIterator<Item = &'t TokenStream>,
+    ) -> (Vec<Read>, Vec<Read>) {
+        let written: BTreeSet<Read> = readers.into_iter().flat_map(Reads::scan).collect();
+        let recorded = self.fields.borrow();
+        (
+            written.difference(&recorded).cloned().collect(),
+            recorded.difference(&written).cloned().collect(),
+        )
     }
 
     /// The reads written in `code`: each identifier `pos`, `vel` or `acc`
@@ -192,6 +203,24 @@ mod tests {
         assert!(r.reads(Analysis::Position, &id("input")));
         assert!(!r.reads(Analysis::Velocity, &id("grp_B")));
         assert!(!r.reads(Analysis::Position, &id("omega_L")));
+    }
+
+    #[test]
+    fn a_read_bypassing_the_recorder_or_never_emitted_is_a_mismatch() {
+        let r = Reads::default();
+        let through = r.pos(&id("grp_B"));
+        let _never_emitted = r.vel(&id("grp_v_B"));
+        let code = quote!(f(&#through, &acc.by_hand));
+        let (unrecorded, unwritten) = r.mismatch([&code]);
+        assert_eq!(
+            unrecorded,
+            [(Analysis::Acceleration, "by_hand".to_string())]
+        );
+        assert_eq!(unwritten, [(Analysis::Velocity, "grp_v_B".to_string())]);
+        let clean = quote!(f(&#through));
+        let r2 = Reads::default();
+        let _ = r2.pos(&id("grp_B"));
+        assert_eq!(r2.mismatch([&clean]), (vec![], vec![]));
     }
 
     #[test]
