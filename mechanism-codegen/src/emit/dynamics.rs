@@ -20,6 +20,7 @@
 
 use super::forces::masses_by_link;
 use super::names::TypeNames;
+use crate::keys::{LinkName, PointName};
 use crate::kinds::reads::Reads;
 use crate::model::{ForceSpecValue, MassSpec, Model};
 use crate::names::Family;
@@ -42,17 +43,17 @@ pub struct DynamicsCode {
 #[derive(Clone, PartialEq, Eq, PartialOrd, Ord)]
 enum Coefficient {
     /// `vel.vel_P` of a moving point.
-    Point(String),
+    Point(PointName),
     /// `vel.omega_L` of a turning link.
-    Link(String),
+    Link(LinkName),
 }
 
 impl Coefficient {
     /// The field of the velocity struct.
     fn field(&self) -> Ident {
         match self {
-            Coefficient::Point(p) => Family::Vel.named(p),
-            Coefficient::Link(l) => Family::Omega.named(l),
+            Coefficient::Point(p) => Family::Vel.of(p),
+            Coefficient::Link(l) => Family::Omega.of(l),
         }
     }
 }
@@ -61,19 +62,22 @@ impl Coefficient {
 enum Term {
     /// A mass part: `m` at the moving centre `G` (`m v_G,i . v_G,j`,
     /// `m v_G,i . a_G`, weight `m g . v_G,i`).
-    Translation { mass: TokenStream, at: String },
+    Translation { mass: TokenStream, at: PointName },
     /// A moment of inertia `j` of a turning link (`j w_i w_j`, `j w_i alpha`).
-    Rotation { inertia: TokenStream, link: String },
+    Rotation {
+        inertia: TokenStream,
+        link: LinkName,
+    },
     /// An external force (code of its `Vector2`) at a moving point.
-    Force { value: TokenStream, at: String },
+    Force { value: TokenStream, at: PointName },
     /// An external couple on a turning link.
-    Couple { value: TokenStream, link: String },
+    Couple { value: TokenStream, link: LinkName },
 }
 
 struct Terms<'a> {
     model: &'a Model,
     plan: &'a Plan,
-    moving: &'a BTreeSet<String>,
+    moving: &'a BTreeSet<PointName>,
     terms: Vec<Term>,
     /// Run-time checks of masses and inertias not known at expansion.
     checks: TokenStream,
@@ -82,14 +86,14 @@ struct Terms<'a> {
 }
 
 impl Terms<'_> {
-    fn turning(&self, link: &Ident) -> Option<String> {
-        self.plan.turning_link(&link.to_string())
+    fn turning(&self, link: &Ident) -> Option<LinkName> {
+        self.plan.turning_link(&LinkName::of(link))
     }
 
     /// A mass or moment of inertia, checked at run time when not literal
     /// (the same checks as the force analysis': a typed error naming the
     /// group that creates the link).
-    fn checked(&mut self, value: &Value, link: &str, part: &str, mass: bool) -> TokenStream {
+    fn checked(&mut self, value: &Value, link: &LinkName, part: &str, mass: bool) -> TokenStream {
         if value.fold().is_some() {
             return value.emit();
         }
@@ -97,7 +101,7 @@ impl Terms<'_> {
             .model
             .stmts
             .iter()
-            .find(|s| s.links.iter().any(|l| l == link))
+            .find(|s| s.links.iter().any(|l| *link == *l))
         else {
             return value.emit();
         };
@@ -120,12 +124,12 @@ impl Terms<'_> {
         quote!(#local)
     }
 
-    fn mass(&mut self, link: &str, part: &str, m: &MassSpec) {
-        if self.moving.contains(&m.at.to_string()) {
+    fn mass(&mut self, link: &LinkName, part: &str, m: &MassSpec) {
+        if self.moving.contains(&PointName::of(&m.at)) {
             let mass = self.checked(&m.mass, link, part, true);
             self.terms.push(Term::Translation {
                 mass,
-                at: m.at.to_string(),
+                at: PointName::of(&m.at),
             });
         }
         if let (Some(j), Some(turning)) = (&m.inertia, self.turning(&m.link)) {
@@ -144,7 +148,7 @@ impl Terms<'_> {
         for (link, parts) in masses_by_link(&k.masses) {
             for (n, m) in parts.iter().enumerate() {
                 let part = if parts.len() == 1 {
-                    link.clone()
+                    link.to_string()
                 } else {
                     format!("{link}_{}", n + 1)
                 };
@@ -152,7 +156,7 @@ impl Terms<'_> {
             }
         }
         for f in &k.forces {
-            if !self.moving.contains(&f.at.to_string()) {
+            if !self.moving.contains(&PointName::of(&f.at)) {
                 continue;
             }
             let value = match &f.value {
@@ -167,7 +171,7 @@ impl Terms<'_> {
             };
             self.terms.push(Term::Force {
                 value,
-                at: f.at.to_string(),
+                at: PointName::of(&f.at),
             });
         }
         for t in &k.torques {
@@ -332,7 +336,7 @@ fn solve_code(inputs: &[Ident]) -> TokenStream {
 pub fn emit(
     model: &Model,
     plan: &Plan,
-    moving: &BTreeSet<String>,
+    moving: &BTreeSet<PointName>,
     loads_param: &TokenStream,
     reads: &Reads,
 ) -> DynamicsCode {

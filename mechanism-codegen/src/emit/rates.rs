@@ -3,6 +3,7 @@
 //! acceleration structs and their methods.
 
 use super::names::{debug_impl, lit_zero, marker, opt_point, output_docs, Generated, TypeNames};
+use crate::keys::{GuideName, LinkName, PointName};
 use crate::kinds;
 use crate::kinds::rates::{vec_ty, RateCx};
 use crate::kinds::reads::{Analysis, Reads};
@@ -49,7 +50,7 @@ pub(super) struct RatesCode {
 /// and the slides' rates by (statement, slot).
 struct RateEmitter<'a> {
     plan: &'a Plan,
-    moving: &'a BTreeSet<String>,
+    moving: &'a BTreeSet<PointName>,
     accel: bool,
     /// `vel_` or `acc_`: the family of point motions.
     pfx: Family,
@@ -74,7 +75,7 @@ impl RateCx for RateEmitter<'_> {
     }
 
     fn moves(&self, p: &Ident) -> bool {
-        self.moving.contains(&p.to_string())
+        self.moving.contains(&PointName::of(p))
     }
 
     fn point_arg(&self, p: &Ident) -> TokenStream {
@@ -105,14 +106,14 @@ impl RateCx for RateEmitter<'_> {
 
     fn link_rate(&self, link: &Ident) -> Option<Ident> {
         self.plan
-            .turning_link(&link.to_string())
+            .turning_link(&LinkName::of(link))
             .map(|l| self.wpfx.of(l))
     }
 
     fn link_omega_in_accel(&self, link: &Ident) -> Option<TokenStream> {
         self.plan
-            .turning_link(&link.to_string())
-            .map(|l| self.reads.vel(&Family::Omega.named(&l)))
+            .turning_link(&LinkName::of(link))
+            .map(|l| self.reads.vel(&Family::Omega.of(&l)))
     }
 
     fn code(&mut self, code: TokenStream) {
@@ -136,7 +137,7 @@ impl RateEmitter<'_> {
     fn carried(&self, g: &Ident) -> bool {
         self.plan
             .guides
-            .get(&g.to_string())
+            .get(&GuideName::of(g))
             .is_some_and(|i| i.carrier.is_some())
     }
 
@@ -144,7 +145,7 @@ impl RateEmitter<'_> {
     fn outputs(&self, out: &Outputs) -> Vec<Output> {
         let mut outs = Vec::new();
         for p in &out.points {
-            let value = if self.moving.contains(&p.to_string()) {
+            let value = if self.moving.contains(&PointName::of(p)) {
                 let v = self.pfx.of(p);
                 quote!(#v)
             } else {
@@ -194,7 +195,7 @@ impl RateEmitter<'_> {
 pub(super) fn code(
     model: &Model,
     plan: &Plan,
-    moving: &BTreeSet<String>,
+    moving: &BTreeSet<PointName>,
     rate: Rate,
     reads: &Reads,
 ) -> RatesCode {
