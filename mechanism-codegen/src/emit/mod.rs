@@ -27,6 +27,7 @@ mod rates;
 pub mod self_test;
 mod solution;
 pub mod stub;
+mod stub_fields;
 
 use crate::check::Findings;
 use crate::keys::{LinkName, PointName};

@@ -9,13 +9,14 @@
 
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, prismatic, revolute, rx, ForceCx, Held};
+use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
+use super::pose::Pose;
 use super::rates::{states, two_links, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, mode_arg};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::keys::LinkName;
 use crate::kinds::pose::{mode, num};

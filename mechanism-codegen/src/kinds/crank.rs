@@ -7,12 +7,13 @@
 
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, revolute, rx, ForceCx, Held};
+use super::group::{links_text, GroupKind, LinkShape, Placed, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
+use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, grp, local, tag, unit_field, unit_vector};
-use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
 use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;

@@ -2,12 +2,13 @@
 //! or carried by a link (turning with the link's axis).
 
 use super::closure::{f, Residuals, Scale};
+use super::group::{GroupKind, Placed, Role, Solve};
 use super::lane::{Lane, LaneGuide, Step, Vector};
 use super::lane_shapes::{carried, OriginMotion};
+use super::pose::Pose;
 use super::rates::RateCx;
 use super::run::{Compile, ForceRunCx, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, local, unit_vector};
-use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
 use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;

@@ -2,12 +2,13 @@
 //! fixed on a link, given in the link's frame.
 
 use super::closure::{f, Residuals};
+use super::group::{GroupKind, Placed, Role, Solve};
 use super::lane::{Lane, PointLocals, Step, Vector};
 use super::lane_shapes::local_vector;
+use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
 use super::run::{Compile, ForceRunCx, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, local, tag, unit_vector};
-use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
 use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;

@@ -3,13 +3,14 @@
 
 use super::closure::{guide_axis, Residuals};
 use super::forces::{inner, prismatic, rx, ForceCx};
+use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::line_axis;
+use super::pose::Pose;
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, Me, RunCx, RunPose};
 use super::tokens::{along, local};
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::keys::LinkName;
 use crate::kinds::pose::num;
 use crate::model::Stmt;

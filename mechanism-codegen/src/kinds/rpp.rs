@@ -4,13 +4,14 @@
 
 use super::closure::{f, guide_axis, Residuals};
 use super::forces::{inner, prismatic, revolute, rx, ForceCx};
+use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::lane_shapes::{along_line, line_axis};
+use super::pose::Pose;
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{along, grp, local, unit_field, unit_vector};
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
 use crate::keys::LinkName;
 use crate::kinds::pose::num;

@@ -3,13 +3,14 @@
 
 use super::closure::{f, mode_sign, Residuals};
 use super::forces::{inner, revolute, rx, ForceCx};
+use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, Step};
 use super::lane_shapes::along_line;
+use super::pose::Pose;
 use super::rates::{states, Pieces, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{grp, local, mode_arg, unit_field};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::keys::LinkName;
 use crate::kinds::pose::{mode, num};

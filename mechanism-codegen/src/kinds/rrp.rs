@@ -3,13 +3,14 @@
 
 use super::closure::{axis_between, f, guide_axis, mode_sign, Residuals};
 use super::forces::{inner, prismatic, revolute, rx, ForceCx};
+use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::{along_line, line_axis};
+use super::pose::Pose;
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{along, arm, grp, local, mode_arg};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::keys::LinkName;
 use crate::kinds::pose::{mode, num};

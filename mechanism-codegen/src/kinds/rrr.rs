@@ -3,13 +3,14 @@
 
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{inner, revolute, rx, ForceCx};
+use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
+use super::pose::Pose;
 use super::rates::{states, two_links, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, mode_arg};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::keys::LinkName;
 use crate::kinds::pose::{mode, num};
@@ -225,8 +226,9 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
     /// Driven by a crank onto a ground point, it closes a four-bar: its
     /// Grashof condition, in numbers.
     fn full_turn_hint(&self, find: &dyn Fn(&Ident) -> Option<&'a Stmt>) -> Option<String> {
-        let arm = |n: &Ident| find(n).and_then(|s| super::crank_arm(s).map(|arm| (s, arm)));
-        let ground = |n: &Ident| find(n).and_then(super::ground_at);
+        let arm =
+            |n: &Ident| find(n).and_then(|s| super::accessors::crank_arm(s).map(|arm| (s, arm)));
+        let ground = |n: &Ident| find(n).and_then(super::accessors::ground_at);
         let ((crank, (pivot, radius)), other) = match (arm(self.a), arm(self.b)) {
             (Some(c), _) => (c, self.b),
             (_, Some(c)) => (c, self.a),

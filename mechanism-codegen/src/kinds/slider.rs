@@ -3,12 +3,13 @@
 
 use super::closure::{guide_axis, Residuals};
 use super::forces::{drive, prismatic, rx, ForceCx, Held};
+use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
+use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, InputSlot, Me, RunCx, RunPose};
 use super::tokens::{along, grp, local, tag};
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::keys::LinkName;
 use crate::kinds::pose::num;
 use crate::model::Stmt;

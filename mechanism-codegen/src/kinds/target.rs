@@ -6,12 +6,13 @@
 //! must apply to it, `drive_X` and `drive_Y` its components.
 
 use super::forces::{body_name, rx, ForceCx, Held, Reaction};
+use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
+use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, Me, RunCx, RunPose};
 use super::tokens::tag;
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::keys::LinkName;
 use crate::model::Stmt;
 use crate::names::Family;

@@ -23,12 +23,13 @@
 
 use super::closure::{f, Residuals};
 use super::forces::{revolute, rx, ForceCx};
+use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Tracked, Tracking, Turn};
 use super::lane::{Lane, Step};
+use super::pose::Pose;
 use super::rates::{states, vec_ty, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, tag, unit_field};
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Tracking, Turn};
 use crate::diag::{show_num, Diagnostics};
 use crate::keys::LinkName;
 use crate::kinds::pose::num;
@@ -67,20 +68,6 @@ pub(super) struct TriadKind<'a> {
     /// findings, `check::Findings::known`); `None` where the check did not
     /// track it: the stated pose is the hint at every input.
     pub tracked: Option<&'a Tracked>,
-}
-
-/// What tracking a triad's stated assembly over its input's range found
-/// (the check's finding for the statement, read by the sweep, the
-/// generated `position()` and the messages).
-#[derive(Clone, Debug, Default)]
-pub struct Tracked {
-    /// The pose at evenly spaced inputs: `[input, ax, ay, bx, by, px, py]`.
-    pub rows: Vec<[f64; 7]>,
-    /// Where the tracked assembly stops existing: the last input it was
-    /// found at and the first it was not, below and above the stated one.
-    pub ends: Vec<(f64, f64)>,
-    /// `true` when the input is an angle (rad; messages show deg).
-    pub angle: bool,
 }
 
 /// `P`'s offset in the ternary's frame (L), its dimensions valued by `num`.

@@ -18,7 +18,8 @@ use syn::{Expr, Ident};
 /// second length), and the message would be about a name instead of the
 /// count.
 fn too_few_arguments(stmt: &parse::Let, kind: KindWord) -> Option<String> {
-    let (least, most) = kind.arity(&stmt.args);
+    let (least, most) =
+        kind.arity(|k| matches!(stmt.args.get(k), Some(parse::Arg::Value(Expr::Tuple(_), _))));
     let given = stmt.args.len();
     if given >= least {
         return None;
