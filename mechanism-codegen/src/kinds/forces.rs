@@ -5,6 +5,7 @@
 
 use super::reads::Reads;
 use crate::keys::LinkName;
+use crate::keys::GROUND;
 use crate::model::Stmt;
 use crate::names::Family;
 use proc_macro2::TokenStream;
@@ -126,7 +127,7 @@ pub fn rx(stmt: &Stmt) -> Ident {
 /// The name of the body on the far side of a joint, for field names.
 pub fn body_name(body: &Option<LinkName>) -> String {
     body.as_ref()
-        .map_or_else(|| "ground".into(), ToString::to_string)
+        .map_or_else(|| GROUND.into(), ToString::to_string)
 }
 
 /// The reaction of a revolute joint: the force of `from` (a body, or the

@@ -32,6 +32,7 @@ use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{grp, local, tag, unit_field};
 use crate::diag::Diagnostics;
+use crate::keys::GROUND;
 use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;
 use crate::model::{Gear, Stmt};
@@ -256,11 +257,11 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
     fn describe(&self) -> String {
         let g = self.g;
         let (n, links, pivot) = (&self.stmt.name, links_text(self.stmt), &g.pivot);
-        let mesh = g.mesh.as_ref().map_or("ground".into(), ToString::to_string);
+        let mesh = g.mesh.as_ref().map_or(GROUND.into(), ToString::to_string);
         let on = g
             .carrier
             .as_ref()
-            .map_or("ground".into(), ToString::to_string);
+            .map_or(GROUND.into(), ToString::to_string);
         let ratio = g.ratio.tokens.to_string();
         format!("gear: `{links}` about `{pivot}` on `{on}`, geared to `{mesh}` at ratio {ratio}, point `{n}`")
     }

@@ -5,6 +5,7 @@
 use super::args::{Args, NumberScope};
 use super::{Gear, Kind, Local, Origin, Triad};
 use crate::diag::{did_you_mean, Diagnostics};
+use crate::keys::GROUND;
 use crate::parse::vocabulary::{kinds, kinds_list, unsupported_driver, KindWord};
 use crate::parse::{self, Arg};
 use crate::value::convert;
@@ -99,7 +100,7 @@ pub(super) fn lower_kind(
 fn link_or_ground(a: &mut Args, role: &str) -> Option<(Option<Ident>, proc_macro2::Span)> {
     let name = a.name(role)?;
     let span = name.span();
-    Some(((name != "ground").then_some(name), span))
+    Some(((name != GROUND).then_some(name), span))
 }
 
 /// `gear(PIVOT, radius, MESH, ratio[, phase[, CARRIER[, pressure_angle]]])`:
