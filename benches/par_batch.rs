@@ -10,7 +10,15 @@
 //! - `halves-512`: the batch halved recursively down to pieces of at most
 //!   512 elements, each half joined with `rayon::join`;
 //! - `per-thread`: one piece per thread of the pool at every size;
-//! - `par_solve`: the library's function (`min_len` 0).
+//! - `par_solve`: the library's function (`min_len` 0);
+//! - `blocks min/max`: what a sweep that wants each output's range (not
+//!   every row) does: blocks of 4096 elements on rayon's pool, each solved
+//!   into its thread's scratch columns (made once per thread) and reduced to
+//!   every column's smallest and largest value, so that only the inputs
+//!   cross the memory bus (24 bytes per `f64` element instead of 169).
+//!
+//! The last column is the task latency `par_solve` has measured by the end
+//! of the size's rounds (`mechanism::par_task_ns`).
 //!
 //! `cargo bench --features rayon --bench par_batch` (prints a Markdown table;
 //! `PAR_BATCH_ROUNDS` sets the rounds, 51 by default).
@@ -27,6 +35,14 @@ mechanism! {
         let A = crank(O2, crank, theta2) as link2;
         let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
     }
+}
+
+/// One thread's output columns for a block of elements, made once per thread
+/// and reused block after block (they stay in the cache): the `blocks`
+/// policy.
+struct Scratch<T> {
+    out: Vec<Vec<T>>,
+    status: Vec<u8>,
 }
 
 /// The inputs, 18 output columns and the status of `n` elements.
@@ -54,36 +70,115 @@ macro_rules! impl_buffers {
             }
 
             fn view(&mut self) -> FourBarBatch<'_, $t> {
-                let mut o = self.out.iter_mut().map(|v| v.as_mut_slice());
-                let mut nx = || o.next().expect("18 columns");
-                FourBarBatch {
-                    in_theta2: &self.theta,
-                    rate_theta2: &self.w,
-                    accel_theta2: &self.a,
-                    pos_A_x: nx(),
-                    pos_A_y: nx(),
-                    pos_B_x: nx(),
-                    pos_B_y: nx(),
-                    pos_link3: nx(),
-                    pos_link4: nx(),
-                    vel_A_x: nx(),
-                    vel_A_y: nx(),
-                    vel_B_x: nx(),
-                    vel_B_y: nx(),
-                    vel_link3: nx(),
-                    vel_link4: nx(),
-                    acc_A_x: nx(),
-                    acc_A_y: nx(),
-                    acc_B_x: nx(),
-                    acc_B_y: nx(),
-                    acc_link3: nx(),
-                    acc_link4: nx(),
-                    status: &mut self.status,
+                view(
+                    &self.theta,
+                    &self.w,
+                    &self.a,
+                    &mut self.out,
+                    &mut self.status,
+                )
+            }
+
+            /// The batch of the elements `range` of `self`'s inputs into
+            /// `scratch` (18 columns and a status of at least its length).
+            fn block<'a>(
+                &'a self,
+                range: std::ops::Range<usize>,
+                scratch: &'a mut Scratch<$t>,
+            ) -> FourBarBatch<'a, $t> {
+                let k = range.len();
+                for c in &mut scratch.out {
+                    c.truncate(k);
                 }
+                scratch.status.truncate(k);
+                view(
+                    &self.theta[range.clone()],
+                    &self.w[range.clone()],
+                    &self.a[range],
+                    &mut scratch.out,
+                    &mut scratch.status,
+                )
+            }
+        }
+
+        impl Scratch<$t> {
+            /// 18 output columns and a status of `block` elements.
+            fn new(block: usize) -> Self {
+                Scratch {
+                    out: vec![vec![0.0; block]; 18],
+                    status: vec![0; block],
+                }
+            }
+
+            /// Back to `block` elements after a shorter last block.
+            fn reset(&mut self, block: usize) {
+                for c in &mut self.out {
+                    c.resize(block, 0.0);
+                }
+                self.status.resize(block, 0);
+            }
+
+            /// Each column's smallest and largest value over the block, and
+            /// the block's failed elements (status not 0).
+            fn min_max(&self) -> ([($t, $t); 18], usize) {
+                let mut r = [(<$t>::INFINITY, <$t>::NEG_INFINITY); 18];
+                for (m, c) in r.iter_mut().zip(&self.out) {
+                    // Eight running minima and maxima (the loop vectorizes;
+                    // one accumulator would wait on each comparison).
+                    let (mut lo, mut hi) = ([<$t>::INFINITY; 8], [<$t>::NEG_INFINITY; 8]);
+                    let mut chunks = c.chunks_exact(8);
+                    for ch in &mut chunks {
+                        for j in 0..8 {
+                            lo[j] = if ch[j] < lo[j] { ch[j] } else { lo[j] };
+                            hi[j] = if ch[j] > hi[j] { ch[j] } else { hi[j] };
+                        }
+                    }
+                    for &x in chunks.remainder().iter().chain(&lo).chain(&hi) {
+                        *m = (m.0.min(x), m.1.max(x));
+                    }
+                }
+                (r, self.status.iter().filter(|&&s| s != 0).count())
             }
         }
     };
 }
+/// The batch of the inputs `theta`, `w`, `a` into the 18 columns of
+/// `out` and `status`.
+fn view<'a, T: mechanism::Real>(
+    theta: &'a [T],
+    w: &'a [T],
+    a: &'a [T],
+    out: &'a mut [Vec<T>],
+    status: &'a mut [u8],
+) -> FourBarBatch<'a, T> {
+    let mut o = out.iter_mut().map(|v| v.as_mut_slice());
+    let mut nx = || o.next().expect("18 columns");
+    FourBarBatch {
+        in_theta2: theta,
+        rate_theta2: w,
+        accel_theta2: a,
+        pos_A_x: nx(),
+        pos_A_y: nx(),
+        pos_B_x: nx(),
+        pos_B_y: nx(),
+        pos_link3: nx(),
+        pos_link4: nx(),
+        vel_A_x: nx(),
+        vel_A_y: nx(),
+        vel_B_x: nx(),
+        vel_B_y: nx(),
+        vel_link3: nx(),
+        vel_link4: nx(),
+        acc_A_x: nx(),
+        acc_A_y: nx(),
+        acc_B_x: nx(),
+        acc_B_y: nx(),
+        acc_link3: nx(),
+        acc_link4: nx(),
+        status,
+    }
+}
+
 impl_buffers!(f64);
 impl_buffers!(f32);
 
@@ -113,7 +208,17 @@ fn per_thread<B: BatchSplit, F: Fn(B) -> usize + Sync>(b: B, pieces: usize, f: &
     x + y
 }
 
-const POLICIES: [&str; 4] = ["serial", "halves-512", "per-thread", "par_solve"];
+const POLICIES: [&str; 5] = [
+    "serial",
+    "halves-512",
+    "per-thread",
+    "par_solve",
+    "blocks min/max",
+];
+
+/// Elements per block of the `blocks` policy: 4096 elements of 18 `f64`
+/// columns are 590 kB of scratch per thread, within a core's L2.
+const BLOCK: usize = 4096;
 
 /// Nanoseconds per element of each policy at `n` elements: (minimum, median)
 /// over `rounds`.
@@ -127,13 +232,46 @@ macro_rules! measure {
         let solve = |mut b: FourBarBatch<'_, $t>| m.solve_batch(&mut b).unwrap_or(usize::MAX);
         let checked =
             |b: FourBarBatch<'_, $t>| -> Result<usize, mechanism::BatchError> { Ok(solve(b)) };
+        // Every column's smallest and largest value and the failed count,
+        // block by block on rayon's pool, nothing stored per element.
+        let blocks = |buf: &Buffers<$t>| -> usize {
+            use rayon::prelude::*;
+            let n = buf.theta.len();
+            thread_local! {
+                static SCRATCH: std::cell::RefCell<Scratch<$t>> =
+                    std::cell::RefCell::new(Scratch::<$t>::new(BLOCK));
+            }
+            let (range, failed) = (0..n.div_ceil(BLOCK))
+                .into_par_iter()
+                .map(|k| {
+                    SCRATCH.with_borrow_mut(|scratch| {
+                        let r = k * BLOCK..((k + 1) * BLOCK).min(n);
+                        scratch.reset(BLOCK);
+                        let _ = m.solve_batch(&mut buf.block(r, scratch));
+                        scratch.min_max()
+                    })
+                })
+                .reduce(
+                    || ([(<$t>::INFINITY, <$t>::NEG_INFINITY); 18], 0),
+                    |(a, fa), (b, fb)| {
+                        let mut r = a;
+                        for (x, y) in r.iter_mut().zip(b) {
+                            *x = (x.0.min(y.0), x.1.max(y.1));
+                        }
+                        (r, fa + fb)
+                    },
+                );
+            black_box(range);
+            failed
+        };
         let mut run = |p: usize| -> usize {
             let b = buf.view();
             match p {
                 0 => solve(b),
                 1 => halves(b, 512, &solve),
                 2 => per_thread(b, threads, &solve),
-                _ => mechanism::par_solve(b, 0, &checked).unwrap_or(usize::MAX),
+                3 => mechanism::par_solve(b, 0, &checked).unwrap_or(usize::MAX),
+                _ => blocks(&buf),
             }
         };
         // Repetitions per timed sample: at least 2 ms of the serial batch.
@@ -178,8 +316,11 @@ fn main() {
             .join(" ")
     );
     println!("\nns per element, minimum / median over {rounds} rounds");
-    println!("\n| elements | scalar | {} |", POLICIES.join(" | "));
-    println!("|---:|---|{}", "---:|".repeat(POLICIES.len()));
+    println!(
+        "\n| elements | scalar | {} | `par_task_ns` after (us) |",
+        POLICIES.join(" | ")
+    );
+    println!("|---:|---|{}---:|", "---:|".repeat(POLICIES.len()));
     for &n in &sizes {
         let r64 = measure!(f64, n, rounds);
         let r32 = measure!(f32, n, rounds);
@@ -188,7 +329,8 @@ fn main() {
                 .iter()
                 .map(|(lo, med)| format!("{lo:.2} / {med:.2}"))
                 .collect();
-            println!("| {n} | {t} | {} |", cells.join(" | "));
+            let latency = mechanism::par_task_ns() / 1e3;
+            println!("| {n} | {t} | {} | {latency:.1} |", cells.join(" | "));
         }
     }
 }

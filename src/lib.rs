@@ -177,7 +177,7 @@ pub use mechanism_macros::mechanism;
 pub mod batch;
 #[cfg(feature = "rayon")]
 #[cfg_attr(docsrs, doc(cfg(feature = "rayon")))]
-pub use batch::{par_solve, PAR_PROBE, PAR_TASK_NS};
+pub use batch::{par_solve, par_task_ns, PAR_PROBE, PAR_TASK_NS, PAR_TASK_NS_RANGE};
 pub use batch::{BatchError, BatchSplit};
 
 pub mod example;

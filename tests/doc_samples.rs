@@ -664,6 +664,77 @@ mod performance_batch {
     }
 }
 
+/// docs/performance.md, "Bound by memory": the block reduction (the sample
+/// verbatim) gives the range of `B.x` that the scalar path gives over the
+/// same inputs, without storing a row per element.
+#[cfg(feature = "rayon")]
+mod performance_blocks {
+    use mechanism::mechanism;
+
+    mechanism! {
+        pub FourBar {
+            params { ground = 304.8, crank = 101.6, coupler = 254.0, rocker = 177.8 }
+            analysis position;
+            outputs { B }
+            let O2 = ground(0.0, 0.0);
+            let O4 = ground(ground, 0.0);
+            let A = crank(O2, crank, theta2) as link2;
+            let B = rrr(A, coupler, O4, rocker, left) as (link3, link4);
+        }
+    }
+
+    #[test]
+    fn block_reduction_sample_gives_the_scalar_range() -> Result<(), mechanism::BatchError> {
+        use rayon::prelude::*;
+
+        const BLOCK: usize = 4096;
+        let m = FourBar::<f64>::default();
+        let theta: Vec<f64> = (0..1_000_000).map(|k| k as f64 * 1e-5).collect(); // rad
+        let (lo, hi, failed) = theta
+            .par_chunks(BLOCK)
+            .map_init(
+                || (vec![0.0; BLOCK], vec![0.0; BLOCK], vec![0u8; BLOCK]), // one thread's columns
+                |(bx, by, status), chunk| {
+                    let k = chunk.len();
+                    let mut b = FourBarBatch {
+                        in_theta2: chunk,
+                        pos_B_x: &mut bx[..k],
+                        pos_B_y: &mut by[..k],
+                        status: &mut status[..k],
+                    };
+                    let failed = m.solve_batch(&mut b)?;
+                    // A failed element's outputs are 0: only the solved ones count.
+                    let solved = bx[..k].iter().zip(&status[..k]).filter(|(_, &s)| s == 0);
+                    let (lo, hi) =
+                        solved.fold((f64::MAX, f64::MIN), |(l, h), (&x, _)| (l.min(x), h.max(x)));
+                    Ok::<_, mechanism::BatchError>((lo, hi, failed))
+                },
+            )
+            .try_reduce(
+                || (f64::MAX, f64::MIN, 0),
+                |a, b| Ok((a.0.min(b.0), a.1.max(b.1), a.2 + b.2)),
+            )?;
+
+        // The inputs cover 10 rad (more than a turn) of a crank-rocker: every
+        // pose assembles, and the range is the scalar path's over the same
+        // inputs, to the batch's agreement with it (64 eps of the magnitude
+        // over condition^2, the bound of `performance_batch`).
+        assert_eq!(failed, 0);
+        let bx = |t: f64| m.position(&FourBarInput { theta2: t }).unwrap().B.x;
+        let (slo, shi) = theta.iter().fold((f64::MAX, f64::MIN), |(l, h), &t| {
+            (l.min(bx(t)), h.max(bx(t)))
+        });
+        let tol = 64.0 * f64::EPSILON * 305.0 / 0.09;
+        assert!(
+            (lo - slo).abs() < tol && (hi - shi).abs() < tol,
+            "{lo} {hi} against {slo} {shi}"
+        );
+        // The coupler's far joint swings over tens of millimetres.
+        assert!(hi - lo > 10.0, "{lo} {hi}");
+        Ok(())
+    }
+}
+
 /// docs/performance.md: the force analysis in a batch (the sample verbatim),
 /// on the press of docs/dsl.md's force analysis sample.
 mod performance_forces_batch {

@@ -17,6 +17,7 @@
 pub mod check;
 pub mod diag;
 pub mod emit;
+pub mod keys;
 pub(crate) mod kinds;
 pub mod model;
 pub mod names;

@@ -3,6 +3,7 @@
 //! turns (its own angular velocity, a guide's, or none), which guides move.
 
 use crate::diag::Diagnostics;
+use crate::keys::{GuideName, LinkName, Name, PointName};
 use crate::kinds::{self, LinkShape};
 use crate::model::{ForceSpecValue, Model, Stmt, StmtId};
 use std::collections::{BTreeMap, BTreeSet};
@@ -18,20 +19,20 @@ pub struct LinkInfo {
     /// Position among the statement's links.
     pub index: usize,
     /// Points fixed on it.
-    pub points: Vec<String>,
+    pub points: Vec<PointName>,
     /// How it turns.
     pub turn: Turn,
     /// Whether the user named it.
     pub named: bool,
     /// The guide it slides on (a block), if any.
-    pub guide: Option<String>,
+    pub guide: Option<GuideName>,
 }
 
 /// What the plan knows of a guide.
 #[derive(Clone, Debug)]
 pub struct GuideInfo {
     /// Link carrying it (None: fixed).
-    pub carrier: Option<String>,
+    pub carrier: Option<LinkName>,
 }
 
 /// The plan.
@@ -39,17 +40,17 @@ pub struct Plan {
     /// The statements in solve order.
     pub order: Vec<StmtId>,
     /// The statement defining each name.
-    pub defined: BTreeMap<String, StmtId>,
+    pub defined: BTreeMap<Name, StmtId>,
     /// Links by name.
-    pub links: BTreeMap<String, LinkInfo>,
+    pub links: BTreeMap<LinkName, LinkInfo>,
     /// Guides by name.
-    pub guides: BTreeMap<String, GuideInfo>,
+    pub guides: BTreeMap<GuideName, GuideInfo>,
     /// Points on the ground.
-    pub ground: Vec<String>,
+    pub ground: Vec<PointName>,
     /// The link each point belongs to for the force analysis (`None`: the
     /// ground). A joint of two links belongs to the first link of the
     /// statement that defines it; see [`point_owner`].
-    pub owner: BTreeMap<String, Option<String>>,
+    pub owner: BTreeMap<PointName, Option<LinkName>>,
     /// What the definition asks to see: its outputs.
     pub outputs: Outputs,
     /// The statements the outputs and the force analysis need, in solve
@@ -65,7 +66,7 @@ pub struct Plan {
 /// second link (the yoke), a link point to its link. `None` for statements
 /// that define no point (guides, RPR slides). Each kind says which
 /// (`kinds::GroupKind::point_owner`).
-pub fn point_owner(stmt: &Stmt) -> Option<Option<String>> {
+pub fn point_owner(stmt: &Stmt) -> Option<Option<LinkName>> {
     kinds::of(stmt).point_owner()
 }
 
@@ -86,19 +87,19 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
     let mut guides = BTreeMap::new();
     let mut ground = Vec::new();
     for (id, stmt) in StmtId::all(&model.stmts).zip(&model.stmts) {
-        defined.insert(stmt.name.to_string(), id);
+        defined.insert(Name::of(&stmt.name), id);
         for l in &stmt.links {
-            defined.insert(l.to_string(), id);
+            defined.insert(Name::of(l), id);
         }
         let kind = kinds::of(stmt);
         if kind.point_owner() == Some(None) {
-            ground.push(stmt.name.to_string());
+            ground.push(PointName::of(&stmt.name));
         }
         if let Some(carrier) = kinds::guide_carrier(stmt) {
             guides.insert(
-                stmt.name.to_string(),
+                GuideName::of(&stmt.name),
                 GuideInfo {
-                    carrier: carrier.map(Ident::to_string),
+                    carrier: carrier.map(LinkName::of),
                 },
             );
         }
@@ -120,7 +121,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
                 None => turn,
             };
             links.insert(
-                stmt.links[j].to_string(),
+                LinkName::of(&stmt.links[j]),
                 LinkInfo {
                     stmt: id,
                     index: j,
@@ -135,13 +136,13 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
     let mut owner = BTreeMap::new();
     for stmt in &model.stmts {
         if let Some(body) = point_owner(stmt) {
-            owner.insert(stmt.name.to_string(), body);
+            owner.insert(PointName::of(&stmt.name), body);
         }
     }
     for stmt in &model.stmts {
         if let Some(link) = kinds::on_link(stmt) {
-            if let Some(info) = links.get_mut(&link.to_string()) {
-                info.points.push(stmt.name.to_string());
+            if let Some(info) = links.get_mut(&LinkName::of(link)) {
+                info.points.push(PointName::of(&stmt.name));
             }
         }
     }
@@ -154,7 +155,7 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
         .map(|s| {
             references(s)
                 .into_iter()
-                .filter_map(|r| defined.get(&r.to_string()).map(|d: &StmtId| d.0))
+                .filter_map(|r| defined.get(&Name::of(r)).map(|d: &StmtId| d.0))
                 .collect()
         })
         .collect();
@@ -230,33 +231,33 @@ pub fn plan(model: &Model, errors: &mut Diagnostics) -> Option<Plan> {
 
 impl Plan {
     /// The body a point belongs to (`None`: the ground or unknown).
-    pub fn body_of_point(&self, point: &str) -> Option<String> {
+    pub fn body_of_point(&self, point: &PointName) -> Option<LinkName> {
         self.owner.get(point).cloned().flatten()
     }
 
     /// The body carrying a guide (`None`: the ground).
-    pub fn body_of_guide(&self, guide: &str) -> Option<String> {
+    pub fn body_of_guide(&self, guide: &GuideName) -> Option<LinkName> {
         self.guides.get(guide).and_then(|g| g.carrier.clone())
     }
 
     /// The links that have `point` among their points.
-    pub fn links_with_point(&self, point: &str) -> Vec<String> {
+    pub fn links_with_point(&self, point: &PointName) -> Vec<LinkName> {
         self.links
             .iter()
-            .filter(|(_, info)| info.points.iter().any(|p| p == point))
+            .filter(|(_, info)| info.points.contains(point))
             .map(|(name, _)| name.clone())
             .collect()
     }
 
     /// `true` when a point never moves.
-    pub fn is_ground(&self, point: &str) -> bool {
-        self.ground.iter().any(|g| g == point)
+    pub fn is_ground(&self, point: &PointName) -> bool {
+        self.ground.contains(point)
     }
 
     /// The link whose angular velocity a link shares (itself, another link, or
     /// none when it never turns).
-    pub fn turning_link(&self, link: &str) -> Option<String> {
-        let mut at = link.to_string();
+    pub fn turning_link(&self, link: &LinkName) -> Option<LinkName> {
+        let mut at = link.clone();
         for _ in 0..64 {
             match &self.links.get(&at)?.turn {
                 Turn::None => return None,
@@ -269,21 +270,21 @@ impl Plan {
 }
 
 impl kinds::Placed for Plan {
-    fn link_points(&self, link: &Ident) -> Option<&[String]> {
+    fn link_points(&self, link: &Ident) -> Option<&[PointName]> {
         self.links
-            .get(&link.to_string())
+            .get(&LinkName::of(link))
             .map(|l| l.points.as_slice())
     }
 
-    fn is_defined(&self, name: &str) -> bool {
-        self.defined.contains_key(name)
+    fn is_defined(&self, name: &Ident) -> bool {
+        self.defined.contains_key(&Name::of(name))
     }
 
-    fn is_ground_point(&self, point: &str) -> bool {
+    fn is_ground_point(&self, point: &PointName) -> bool {
         self.is_ground(point)
     }
 
-    fn links_with_point(&self, point: &str) -> Vec<String> {
+    fn links_with_point(&self, point: &PointName) -> Vec<LinkName> {
         Plan::links_with_point(self, point)
     }
 }
@@ -359,17 +360,17 @@ fn outputs(model: &Model, plan: &Plan) -> Outputs {
 fn needed_statements(model: &Model, plan: &Plan, out: &Outputs) -> BTreeSet<StmtId> {
     let mut stack: Vec<StmtId> = roots(model, plan);
     for p in &out.points {
-        stack.extend(plan.defined.get(&p.to_string()));
+        stack.extend(plan.defined.get(&Name::of(p)));
     }
     for l in &out.links {
-        stack.extend(plan.links.get(&l.to_string()).map(|i| i.stmt));
+        stack.extend(plan.links.get(&LinkName::of(l)).map(|i| i.stmt));
     }
     stack.extend(out.slides.iter().map(|s| s.stmt));
     let mut needed = BTreeSet::new();
     while let Some(i) = stack.pop() {
         if needed.insert(i) {
             for r in references(&model.stmts[i]) {
-                stack.extend(plan.defined.get(&r.to_string()));
+                stack.extend(plan.defined.get(&Name::of(r)));
             }
         }
     }
@@ -390,10 +391,10 @@ fn roots(model: &Model, plan: &Plan) -> Vec<StmtId> {
     let named = k
         .masses
         .iter()
-        .map(|m| m.at.to_string())
-        .chain(k.forces.iter().map(|f| f.at.to_string()))
+        .map(|m| Name::of(&m.at))
+        .chain(k.forces.iter().map(|f| Name::of(&f.at)))
         .chain(k.forces.iter().filter_map(|f| match &f.value {
-            ForceSpecValue::Along(g, _) => Some(g.to_string()),
+            ForceSpecValue::Along(g, _) => Some(Name::of(g)),
             ForceSpecValue::Components(..) => None,
         }));
     roots.extend(named.filter_map(|n| plan.defined.get(&n).copied()));
@@ -482,15 +483,19 @@ mod tests {
         // the crank, a group's joint to its first link, a link point to its
         // link; and the points each link carries.
         let (_, plan) = planned(&four_bar(""));
-        let owner = |p: &str| plan.owner.get(p).cloned();
+        let owner = |p: &str| plan.owner.get(&PointName::new(p)).cloned();
+        let link = |l: &str| Some(Some(LinkName::new(l)));
         assert_eq!(owner("O2"), Some(None));
-        assert_eq!(owner("A"), Some(Some("link2".to_string())));
-        assert_eq!(owner("B"), Some(Some("link3".to_string())));
-        assert_eq!(owner("P"), Some(Some("link3".to_string())));
-        assert_eq!(plan.links["link3"].points, ["A", "B", "P"]);
-        assert_eq!(plan.links["link4"].points, ["O4", "B"]);
-        assert_eq!(plan.links_with_point("B"), ["link3", "link4"]);
-        assert!(plan.is_ground("O4") && !plan.is_ground("A"));
+        assert_eq!(owner("A"), link("link2"));
+        assert_eq!(owner("B"), link("link3"));
+        assert_eq!(owner("P"), link("link3"));
+        assert_eq!(plan.links[&LinkName::new("link3")].points, ["A", "B", "P"]);
+        assert_eq!(plan.links[&LinkName::new("link4")].points, ["O4", "B"]);
+        assert_eq!(
+            plan.links_with_point(&PointName::new("B")),
+            ["link3", "link4"]
+        );
+        assert!(plan.is_ground(&PointName::new("O4")) && !plan.is_ground(&PointName::new("A")));
     }
 
     #[test]

@@ -2,6 +2,7 @@
 //! plan's solve order and calling the same `mechanism-core` primitives, with
 //! the same arguments, as the generated `position()`.
 
+use crate::keys::InputName;
 use crate::kinds::{self, Known, Pose, Tracking};
 use crate::model::{Model, StmtId};
 use crate::plan::Checked;
@@ -28,7 +29,7 @@ pub struct Evaluator<'a> {
     /// Group index of each checked statement.
     group: BTreeMap<StmtId, usize>,
     /// Input index by name.
-    input: BTreeMap<String, usize>,
+    input: BTreeMap<InputName, usize>,
     /// The assumed modes, and the assemblies tracked so far.
     pub known: Known,
 }
@@ -51,7 +52,7 @@ impl<'a> Evaluator<'a> {
                 .inputs
                 .iter()
                 .enumerate()
-                .map(|(k, i)| (i.name.to_string(), k))
+                .map(|(k, i)| (InputName::of(&i.name), k))
                 .collect(),
             known,
         }
@@ -76,7 +77,7 @@ impl<'a> Evaluator<'a> {
     /// The value of input `n` in `q` (NaN when `n` is not an input).
     fn input_value(&self, q: &[f64], n: &Ident) -> f64 {
         self.input
-            .get(&n.to_string())
+            .get(&InputName::of(n))
             .and_then(|&k| q.get(k))
             .copied()
             .unwrap_or(f64::NAN)
@@ -89,13 +90,7 @@ impl<'a> Evaluator<'a> {
         let mut dets = [1.0; MAX_GROUPS];
         for &i in self.order {
             let g = self.group.get(&i).copied().unwrap_or(0);
-            let input = |n: &Ident| {
-                self.input
-                    .get(&n.to_string())
-                    .and_then(|&k| q.get(k))
-                    .copied()
-                    .unwrap_or(f64::NAN)
-            };
+            let input = |n: &Ident| self.input_value(q, n);
             if let Some(det) = kinds::of_known(&self.model.stmts, i, &self.known)
                 .eval(&mut pose, &input)
                 .map_err(|e| (g, e.fault))?

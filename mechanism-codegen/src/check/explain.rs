@@ -3,6 +3,7 @@
 //! Grashof condition, and a `range` statement that would pass.
 
 use crate::diag::show_num;
+use crate::keys::Name;
 use crate::kinds::{self};
 use crate::model::{Input, Model, StmtId};
 use crate::plan::Plan;
@@ -63,6 +64,6 @@ pub fn singular_meaning(model: &Model, stmt_index: StmtId) -> String {
 /// For a crank driving an RRR group onto a ground point: the four-bar's
 /// Grashof condition, in numbers (the RRR's `GroupKind::full_turn_hint`).
 pub fn grashof(model: &Model, plan: &Plan, stmt_index: StmtId) -> Option<String> {
-    let find = |n: &Ident| plan.defined.get(&n.to_string()).map(|&i| &model.stmts[i]);
+    let find = |n: &Ident| plan.defined.get(&Name::of(n)).map(|&i| &model.stmts[i]);
     kinds::of(&model.stmts[stmt_index]).full_turn_hint(&find)
 }

@@ -4,6 +4,7 @@
 //! that draws or tabulates any mechanism. Unused, it costs nothing: a constant
 //! and trait methods nobody calls.
 
+use crate::keys::{LinkName, PointName};
 use crate::kinds::{self, GuideLine};
 use crate::model::units::UnitNames;
 use crate::model::{Level, Model};
@@ -85,7 +86,7 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
     for &i in &plan.order {
         let stmt = &model.stmts[i];
         for (j, l) in stmt.links.iter().enumerate() {
-            let Some(info) = plan.links.get(&l.to_string()) else {
+            let Some(info) = plan.links.get(&LinkName::of(l)) else {
                 continue;
             };
             // A link on a guide is a block (the plan knows which guide); so
@@ -94,10 +95,10 @@ fn structure(model: &Model, plan: &Plan) -> TokenStream {
                 Some(_) => format_ident!("Block"),
                 None => format_ident!("{}", kinds::of(stmt).link_kind(j)),
             };
-            let guide = info.guide.clone();
+            let guide = info.guide.as_ref().map(ToString::to_string);
             let n = l.to_string();
             let named = info.named;
-            let pts = &info.points;
+            let pts = info.points.iter().map(PointName::as_str);
             let guide = option_str(guide);
             links.push(quote! {
                 #link { name: #n, named: #named, kind: #link_kind::#kind, points: &[#(#pts),*], guide: #guide }

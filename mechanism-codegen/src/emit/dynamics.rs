@@ -20,6 +20,7 @@
 
 use super::forces::masses_by_link;
 use super::names::TypeNames;
+use crate::keys::{LinkName, PointName};
 use crate::model::{ForceSpecValue, MassSpec, Model};
 use crate::names::Family;
 use crate::plan::Plan;
@@ -41,17 +42,17 @@ pub struct DynamicsCode {
 #[derive(Clone, PartialEq, Eq, PartialOrd, Ord)]
 enum Coefficient {
     /// `vel.vel_P` of a moving point.
-    Point(String),
+    Point(PointName),
     /// `vel.omega_L` of a turning link.
-    Link(String),
+    Link(LinkName),
 }
 
 impl Coefficient {
     /// The field of the velocity struct.
     fn field(&self) -> Ident {
         match self {
-            Coefficient::Point(p) => Family::Vel.named(p),
-            Coefficient::Link(l) => Family::Omega.named(l),
+            Coefficient::Point(p) => Family::Vel.of(p),
+            Coefficient::Link(l) => Family::Omega.of(l),
         }
     }
 }
@@ -60,33 +61,36 @@ impl Coefficient {
 enum Term {
     /// A mass part: `m` at the moving centre `G` (`m v_G,i . v_G,j`,
     /// `m v_G,i . a_G`, weight `m g . v_G,i`).
-    Translation { mass: TokenStream, at: String },
+    Translation { mass: TokenStream, at: PointName },
     /// A moment of inertia `j` of a turning link (`j w_i w_j`, `j w_i alpha`).
-    Rotation { inertia: TokenStream, link: String },
+    Rotation {
+        inertia: TokenStream,
+        link: LinkName,
+    },
     /// An external force (code of its `Vector2`) at a moving point.
-    Force { value: TokenStream, at: String },
+    Force { value: TokenStream, at: PointName },
     /// An external couple on a turning link.
-    Couple { value: TokenStream, link: String },
+    Couple { value: TokenStream, link: LinkName },
 }
 
 struct Terms<'a> {
     model: &'a Model,
     plan: &'a Plan,
-    moving: &'a BTreeSet<String>,
+    moving: &'a BTreeSet<PointName>,
     terms: Vec<Term>,
     /// Run-time checks of masses and inertias not known at expansion.
     checks: TokenStream,
 }
 
 impl Terms<'_> {
-    fn turning(&self, link: &Ident) -> Option<String> {
-        self.plan.turning_link(&link.to_string())
+    fn turning(&self, link: &Ident) -> Option<LinkName> {
+        self.plan.turning_link(&LinkName::of(link))
     }
 
     /// A mass or moment of inertia, checked at run time when not literal
     /// (the same checks as the force analysis': a typed error naming the
     /// group that creates the link).
-    fn checked(&mut self, value: &Value, link: &str, part: &str, mass: bool) -> TokenStream {
+    fn checked(&mut self, value: &Value, link: &LinkName, part: &str, mass: bool) -> TokenStream {
         if value.fold().is_some() {
             return value.emit();
         }
@@ -94,7 +98,7 @@ impl Terms<'_> {
             .model
             .stmts
             .iter()
-            .find(|s| s.links.iter().any(|l| l == link))
+            .find(|s| s.links.iter().any(|l| *link == *l))
         else {
             return value.emit();
         };
@@ -117,12 +121,12 @@ impl Terms<'_> {
         quote!(#local)
     }
 
-    fn mass(&mut self, link: &str, part: &str, m: &MassSpec) {
-        if self.moving.contains(&m.at.to_string()) {
+    fn mass(&mut self, link: &LinkName, part: &str, m: &MassSpec) {
+        if self.moving.contains(&PointName::of(&m.at)) {
             let mass = self.checked(&m.mass, link, part, true);
             self.terms.push(Term::Translation {
                 mass,
-                at: m.at.to_string(),
+                at: PointName::of(&m.at),
             });
         }
         if let (Some(j), Some(turning)) = (&m.inertia, self.turning(&m.link)) {
@@ -141,7 +145,7 @@ impl Terms<'_> {
         for (link, parts) in masses_by_link(&k.masses) {
             for (n, m) in parts.iter().enumerate() {
                 let part = if parts.len() == 1 {
-                    link.clone()
+                    link.to_string()
                 } else {
                     format!("{link}_{}", n + 1)
                 };
@@ -149,7 +153,7 @@ impl Terms<'_> {
             }
         }
         for f in &k.forces {
-            if !self.moving.contains(&f.at.to_string()) {
+            if !self.moving.contains(&PointName::of(&f.at)) {
                 continue;
             }
             let value = match &f.value {
@@ -164,7 +168,7 @@ impl Terms<'_> {
             };
             self.terms.push(Term::Force {
                 value,
-                at: f.at.to_string(),
+                at: PointName::of(&f.at),
             });
         }
         for t in &k.torques {
@@ -328,7 +332,7 @@ fn solve_code(inputs: &[Ident]) -> TokenStream {
 pub fn emit(
     model: &Model,
     plan: &Plan,
-    moving: &BTreeSet<String>,
+    moving: &BTreeSet<PointName>,
     loads_param: &TokenStream,
 ) -> DynamicsCode {
     let mut cx = Terms {

@@ -25,6 +25,7 @@ mod solution;
 pub mod stub;
 
 use crate::check::Findings;
+use crate::keys::{LinkName, PointName};
 use crate::kinds::{self, Known};
 use crate::model::{Level, Model};
 use crate::plan::Plan;
@@ -68,14 +69,14 @@ pub fn mechanism(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream
 
 /// Points that move (everything but ground points and points on still links
 /// measured from still points).
-pub(crate) fn moving_points(model: &Model, plan: &Plan) -> BTreeSet<String> {
-    let mut moving: BTreeSet<String> = BTreeSet::new();
+pub(crate) fn moving_points(model: &Model, plan: &Plan) -> BTreeSet<PointName> {
+    let mut moving: BTreeSet<PointName> = BTreeSet::new();
     for &i in &plan.solve {
         let stmt = &model.stmts[i];
-        let link_turns = |l: &Ident| plan.turning_link(&l.to_string()).is_some();
-        let moves = |p: &Ident| moving.contains(&p.to_string());
+        let link_turns = |l: &Ident| plan.turning_link(&LinkName::of(l)).is_some();
+        let moves = |p: &Ident| moving.contains(&PointName::of(p));
         if kinds::of(stmt).point_moves(&link_turns, &moves) {
-            moving.insert(stmt.name.to_string());
+            moving.insert(PointName::of(&stmt.name));
         }
     }
     moving

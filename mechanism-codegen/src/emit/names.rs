@@ -1,6 +1,7 @@
 //! Names and small token helpers shared by the emitters: the generated types'
 //! names, the locals of the position code, the error tag of a statement.
 
+use crate::keys::PointName;
 use crate::model::Model;
 use crate::names::Family;
 use crate::plan::Outputs;
@@ -81,11 +82,11 @@ pub(crate) use crate::kinds::tokens::{grp, local, tag};
 /// `Some(&SCOPE PREFIX_POINT)` when it moves, `None` when it is still.
 pub(super) fn opt_point(
     point: &Ident,
-    moving: &BTreeSet<String>,
+    moving: &BTreeSet<PointName>,
     family: Family,
     scope: &TokenStream,
 ) -> TokenStream {
-    if moving.contains(&point.to_string()) {
+    if moving.contains(&PointName::of(point)) {
         let v = family.of(point);
         quote!(::core::option::Option::Some(&#scope #v))
     } else {

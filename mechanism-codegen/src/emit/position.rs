@@ -4,6 +4,7 @@
 
 use super::names::{debug_impl, grp, local, marker, output_docs, tag, Generated, TypeNames};
 use super::reads::{Analysis, Reads};
+use crate::keys::LinkName;
 use crate::kinds::{self, lane::OutputShape, tokens::axis, Known, Solve};
 use crate::model::{Model, StmtId};
 use crate::plan::Plan;
@@ -52,7 +53,7 @@ pub(super) struct Emitter<'a> {
     /// tracked assemblies).
     pub known: &'a Known,
     /// Links whose unit axis is needed in position (points on them, carried guides).
-    axes: BTreeSet<String>,
+    axes: BTreeSet<LinkName>,
     /// Emitting `position_cos_sin`: cranks marked `as cos_sin` read
     /// `input_cs.NAME.cos` and `.sin`.
     cos_sin: bool,
@@ -68,7 +69,7 @@ impl<'a> Emitter<'a> {
         let mut axes = BTreeSet::new();
         for stmt in plan.solve.iter().map(|&i| &model.stmts[i]) {
             if let Some(link) = kinds::of(stmt).reads_axis() {
-                axes.insert(link.to_string());
+                axes.insert(LinkName::of(link));
             }
         }
         Emitter {
@@ -149,7 +150,7 @@ impl<'a> Emitter<'a> {
         // Unit axes of the links this statement creates, where needed.
         let mut axes = TokenStream::new();
         for (j, link) in stmt.links.iter().enumerate() {
-            if self.axes.contains(&link.to_string()) {
+            if self.axes.contains(&LinkName::of(link)) {
                 let axis = axis(link);
                 let (unit, _) = kind.link_direction(j);
                 axes.extend(quote!(let #axis = #unit;));
@@ -165,7 +166,7 @@ impl<'a> Emitter<'a> {
         let (model, plan, out) = (self.model, self.plan, &self.plan.outputs);
         let mut code = TokenStream::new();
         for link in &out.links {
-            let info = &plan.links[&link.to_string()];
+            let info = &plan.links[&LinkName::of(link)];
             let kind = kinds::of(&model.stmts[info.stmt]);
             let (_, dir) = kind.link_direction(info.index);
             // A crank's angle is its input: reduced to (-pi, pi], no atan2.

@@ -4,6 +4,7 @@
 
 use super::names::{debug_impl, lit_zero, marker, opt_point, output_docs, Generated, TypeNames};
 use super::reads::{Analysis, Reads};
+use crate::keys::{GuideName, LinkName, PointName};
 use crate::kinds;
 use crate::kinds::rates::{vec_ty, RateCx};
 use crate::model::{Model, StmtId};
@@ -49,7 +50,7 @@ pub(super) struct RatesCode {
 /// and the slides' rates by (statement, slot).
 struct RateEmitter<'a> {
     plan: &'a Plan,
-    moving: &'a BTreeSet<String>,
+    moving: &'a BTreeSet<PointName>,
     accel: bool,
     /// `vel_` or `acc_`: the family of point motions.
     pfx: Family,
@@ -72,7 +73,7 @@ impl RateCx for RateEmitter<'_> {
     }
 
     fn moves(&self, p: &Ident) -> bool {
-        self.moving.contains(&p.to_string())
+        self.moving.contains(&PointName::of(p))
     }
 
     fn point_arg(&self, p: &Ident) -> TokenStream {
@@ -102,13 +103,13 @@ impl RateCx for RateEmitter<'_> {
 
     fn link_rate(&self, link: &Ident) -> Option<Ident> {
         self.plan
-            .turning_link(&link.to_string())
+            .turning_link(&LinkName::of(link))
             .map(|l| self.wpfx.of(l))
     }
 
     fn link_omega_in_accel(&self, link: &Ident) -> Option<TokenStream> {
-        self.plan.turning_link(&link.to_string()).map(|l| {
-            let w = Family::Omega.named(&l);
+        self.plan.turning_link(&LinkName::of(link)).map(|l| {
+            let w = Family::Omega.of(&l);
             quote!(vel.#w)
         })
     }
@@ -130,7 +131,7 @@ impl RateEmitter<'_> {
     fn carried(&self, g: &Ident) -> bool {
         self.plan
             .guides
-            .get(&g.to_string())
+            .get(&GuideName::of(g))
             .is_some_and(|i| i.carrier.is_some())
     }
 
@@ -138,7 +139,7 @@ impl RateEmitter<'_> {
     fn outputs(&self, out: &Outputs) -> Vec<Output> {
         let mut outs = Vec::new();
         for p in &out.points {
-            let value = if self.moving.contains(&p.to_string()) {
+            let value = if self.moving.contains(&PointName::of(p)) {
                 let v = self.pfx.of(p);
                 quote!(#v)
             } else {
@@ -185,7 +186,12 @@ impl RateEmitter<'_> {
 
 /// Velocity or acceleration statements of a planned model; `moving` holds
 /// the points that move.
-pub(super) fn code(model: &Model, plan: &Plan, moving: &BTreeSet<String>, rate: Rate) -> RatesCode {
+pub(super) fn code(
+    model: &Model,
+    plan: &Plan,
+    moving: &BTreeSet<PointName>,
+    rate: Rate,
+) -> RatesCode {
     let accel = rate == Rate::Acceleration;
     let mut em = RateEmitter {
         plan,

@@ -16,6 +16,7 @@ use super::run::{Compile, ForceRunCx, InputSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, mode_arg};
 use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
+use crate::keys::LinkName;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
 use crate::names::Family;
@@ -62,13 +63,13 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
             Some((barrel, _)) => vec![
                 arm,
                 LinkShape::new(&[self.b], Turn::Own, None),
-                LinkShape::new(&[n], Turn::With(barrel.to_string()), None),
+                LinkShape::new(&[n], Turn::With(LinkName::of(barrel)), None),
             ],
         }
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
-        Some(Some(self.stmt.links[0].to_string()))
+    fn point_owner(&self) -> Option<Option<LinkName>> {
+        Some(Some(LinkName::of(&self.stmt.links[0])))
     }
 
     fn position_values(&self) -> Vec<Value> {
@@ -293,10 +294,10 @@ impl<'a> Actuator<'a> {
         let body_a = cx.pass_revolute(a, &rx, "a");
         let body_b = cx.pass_revolute(b, &rx, "b");
         cx.reaction(revolute(&rx, &body_a, &links[0], a, "a"));
-        let arm_body = Some(links[0].to_string());
+        let arm_body = Some(LinkName::of(&links[0]));
         cx.reaction(revolute(&rx, &arm_body, &links[2], name, "c"));
         cx.reaction(revolute(&rx, &body_b, &links[1], b, "b"));
-        let barrel_body = Some(links[1].to_string());
+        let barrel_body = Some(LinkName::of(&links[1]));
         cx.reaction(prismatic(&rx, &barrel_body, &links[2], name, "pair"));
         cx.power(quote!(#rx.axial * vel.rates.#input));
         cx.condition(quote!(#rx.min_pivot_ratio));

@@ -13,6 +13,7 @@ use super::run::{Compile, ForceRunCx, InputSlot, LinkSlot, Me, PointSlot, RunCx,
 use super::tokens::{axis, grp, local, tag, unit_field, unit_vector};
 use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
+use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::names::Family;
@@ -78,8 +79,8 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         )]
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
-        Some(Some(self.stmt.links[0].to_string()))
+    fn point_owner(&self) -> Option<Option<LinkName>> {
+        Some(Some(LinkName::of(&self.stmt.links[0])))
     }
 
     fn position_values(&self) -> Vec<Value> {
@@ -231,7 +232,7 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         // The motor's reaction (force and torque) goes to the carrier, or to
         // the body the pivot is on.
         let body = match self.carrier {
-            Some(c) => Some(c.to_string()),
+            Some(c) => Some(LinkName::of(c)),
             None => cx.body_of_point(pivot),
         };
         if let Some(b) = &body {
@@ -252,17 +253,16 @@ impl<'a> GroupKind<'a> for Crank<'a> {
     /// It turns about a ground point, or about a point of its carrier.
     fn check_placed(&self, plan: &dyn Placed, errors: &mut Diagnostics) {
         let pivot = self.pivot;
-        let p = pivot.to_string();
+        let p = PointName::of(pivot);
         match self.carrier {
-            None if plan.is_defined(&p) && !plan.is_ground_point(&p) => {
+            None if plan.is_defined(pivot) && !plan.is_ground_point(&p) => {
                 let (r, input) = (self.radius.tokens.to_string(), self.input);
                 let own = &self.stmt.links;
                 let carriers = plan.links_with_point(&p);
                 let link = carriers
                     .iter()
-                    .find(|l| !own.iter().any(|o| o == l.as_str()))
-                    .map(String::as_str)
-                    .unwrap_or("LINK");
+                    .find(|l| !own.iter().any(|o| **l == *o))
+                    .map_or("LINK", LinkName::as_str);
                 errors.push(
                     pivot.span(),
                     format!("a crank without a carrier turns about a ground point, and `{p}` moves; for a motor on the moving link that carries `{p}` (an elbow, a knee), name that link: `crank({p}, {r}, {input}, {link})`, the input then being the angle from `{link}`'s axis; or fix the pivot with `ground(x, y)`"),
@@ -271,7 +271,7 @@ impl<'a> GroupKind<'a> for Crank<'a> {
             Some(link) => {
                 let l = link.to_string();
                 if let Some(points) = plan.link_points(link) {
-                    if plan.is_defined(&p) && !points.contains(&p) {
+                    if plan.is_defined(pivot) && !points.contains(&p) {
                         errors.push(
                             pivot.span(),
                             format!("a crank carried by `{l}` turns about one of its points, and `{p}` is not on it; its points: {}", points.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(", ")),

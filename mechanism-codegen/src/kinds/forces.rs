@@ -3,6 +3,7 @@
 //! The same per-kind code runs against the emitter (code and fields) and
 //! against [`FieldsOnly`] (the fields alone, for the stubs emitted on error).
 
+use crate::keys::{GuideName, LinkName, PointName};
 use crate::model::{Model, Stmt};
 use crate::names::Family;
 use proc_macro2::TokenStream;
@@ -43,15 +44,15 @@ pub enum Held {
 /// conditioning go.
 pub trait ForceCx {
     /// The body owning a point (`None`: the ground or unknown).
-    fn body_of_point(&self, point: &Ident) -> Option<String>;
+    fn body_of_point(&self, point: &Ident) -> Option<LinkName>;
     /// The body carrying a guide (`None`: the ground).
-    fn body_of_guide(&self, guide: &Ident) -> Option<String>;
+    fn body_of_guide(&self, guide: &Ident) -> Option<LinkName>;
     /// The reference point a link's load is accumulated about.
-    fn reference(&self, link: &str) -> Ident;
+    fn reference(&self, link: &LinkName) -> Ident;
     /// The load of `link` as a wrench about `point` (code).
     fn load_about(&self, link: &Ident, point: &Ident) -> TokenStream;
     /// Adds a wrench (code about the link's reference point) to a link's load.
-    fn add(&mut self, link: &str, wrench: TokenStream);
+    fn add(&mut self, link: &LinkName, wrench: TokenStream);
     /// Appends code to the `forces` method.
     fn code(&mut self, code: TokenStream);
     /// Adds a field to the forces struct.
@@ -63,7 +64,7 @@ pub trait ForceCx {
 
     /// A force `force` (code) acting on `link` at point `at`, as a wrench
     /// about the link's reference point.
-    fn force_on(&mut self, link: &str, force: TokenStream, at: &Ident) {
+    fn force_on(&mut self, link: &LinkName, force: TokenStream, at: &Ident) {
         let r = self.reference(link);
         let wrench = if *at == r {
             quote!(::mechanism::force::Wrench::new(#force, <T as ::mechanism::Real>::lit(0.0)))
@@ -74,7 +75,7 @@ pub trait ForceCx {
     }
 
     /// A prismatic reaction `rx` (about point `about`) negated onto `body`.
-    fn prismatic_on(&mut self, body: Option<String>, rx: TokenStream, about: &Ident) {
+    fn prismatic_on(&mut self, body: Option<LinkName>, rx: TokenStream, about: &Ident) {
         if let Some(body) = body {
             let r = self.reference(&body);
             let wrench = if *about == r {
@@ -89,7 +90,7 @@ pub trait ForceCx {
     /// An outer revolute joint at `point` whose reaction on the group is
     /// `rx.field`: passes the reaction, negated, to the body that owns the
     /// point (nothing for the ground) and returns that body.
-    fn pass_revolute(&mut self, point: &Ident, rx: &Ident, field: &str) -> Option<String> {
+    fn pass_revolute(&mut self, point: &Ident, rx: &Ident, field: &str) -> Option<LinkName> {
         let body = self.body_of_point(point);
         if let Some(b) = &body {
             let field = format_ident!("{}", field);
@@ -119,15 +120,16 @@ pub fn rx(stmt: &Stmt) -> Ident {
 }
 
 /// The name of the body on the far side of a joint, for field names.
-pub fn body_name(body: &Option<String>) -> String {
-    body.clone().unwrap_or_else(|| "ground".into())
+pub fn body_name(body: &Option<LinkName>) -> String {
+    body.as_ref()
+        .map_or_else(|| "ground".into(), ToString::to_string)
 }
 
 /// The reaction of a revolute joint: the force of `from` (a body, or the
 /// ground) on `to` at `at`, field `field` of `rx`.
 pub fn revolute(
     rx: &Ident,
-    from: &Option<String>,
+    from: &Option<LinkName>,
     to: &Ident,
     at: &Ident,
     field: &str,
@@ -147,7 +149,7 @@ pub fn revolute(
 /// about `about`, field `field` of `rx`.
 pub fn prismatic(
     rx: &Ident,
-    from: &Option<String>,
+    from: &Option<LinkName>,
     to: &Ident,
     about: &Ident,
     field: &str,
@@ -186,7 +188,7 @@ pub fn inner(
     field: &str,
     prismatic_pair: bool,
 ) -> Reaction {
-    let from = Some(links[0].to_string());
+    let from = Some(LinkName::of(&links[0]));
     if prismatic_pair {
         prismatic(rx, &from, &links[1], at, field)
     } else {
@@ -199,8 +201,8 @@ pub fn inner(
 /// errors, so the user's code that reads a reaction reports no follow-on
 /// error.
 pub struct FieldsOnly {
-    owner: BTreeMap<String, Option<String>>,
-    carrier: BTreeMap<String, Option<String>>,
+    owner: BTreeMap<PointName, Option<LinkName>>,
+    carrier: BTreeMap<GuideName, Option<LinkName>>,
     /// The fields found, in the order found.
     pub reactions: Vec<Reaction>,
 }
@@ -218,11 +220,11 @@ impl FieldsOnly {
         for stmt in &model.stmts {
             let kind = super::of(stmt);
             if let Some(body) = kind.point_owner() {
-                cx.owner.insert(stmt.name.to_string(), body);
+                cx.owner.insert(PointName::of(&stmt.name), body);
             }
             if let Some(carrier) = super::guide_carrier(stmt) {
-                let carrier = carrier.map(ToString::to_string);
-                cx.carrier.insert(stmt.name.to_string(), carrier);
+                let carrier = carrier.map(LinkName::of);
+                cx.carrier.insert(GuideName::of(&stmt.name), carrier);
             }
         }
         for stmt in model.stmts.iter().rev() {
@@ -233,19 +235,19 @@ impl FieldsOnly {
 }
 
 impl ForceCx for FieldsOnly {
-    fn body_of_point(&self, point: &Ident) -> Option<String> {
-        self.owner.get(&point.to_string()).cloned().flatten()
+    fn body_of_point(&self, point: &Ident) -> Option<LinkName> {
+        self.owner.get(&PointName::of(point)).cloned().flatten()
     }
-    fn body_of_guide(&self, guide: &Ident) -> Option<String> {
-        self.carrier.get(&guide.to_string()).cloned().flatten()
+    fn body_of_guide(&self, guide: &Ident) -> Option<LinkName> {
+        self.carrier.get(&GuideName::of(guide)).cloned().flatten()
     }
-    fn reference(&self, link: &str) -> Ident {
-        format_ident!("{}", link)
+    fn reference(&self, link: &LinkName) -> Ident {
+        link.ident()
     }
     fn load_about(&self, _link: &Ident, _point: &Ident) -> TokenStream {
         TokenStream::new()
     }
-    fn add(&mut self, _link: &str, _wrench: TokenStream) {}
+    fn add(&mut self, _link: &LinkName, _wrench: TokenStream) {}
     fn code(&mut self, _code: TokenStream) {}
     fn reaction(&mut self, reaction: Reaction) {
         self.reactions.push(reaction);

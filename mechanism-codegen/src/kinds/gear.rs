@@ -30,6 +30,7 @@ use super::run::{Compile, ForceRunCx, InputSlot, LinkSlot, Me, PointSlot, RunCx,
 use super::tokens::{grp, local, tag, unit_field};
 use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
+use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;
 use crate::model::{Gear, Stmt};
 use crate::names::Family;
@@ -148,8 +149,8 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
         )]
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
-        Some(Some(self.stmt.links[0].to_string()))
+    fn point_owner(&self) -> Option<Option<LinkName>> {
+        Some(Some(LinkName::of(&self.stmt.links[0])))
     }
 
     fn position_values(&self) -> Vec<Value> {
@@ -288,8 +289,8 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
     /// It turns about a ground point, or a point of its carrier.
     fn check_placed(&self, plan: &dyn Placed, errors: &mut Diagnostics) {
         let pivot = &self.g.pivot;
-        let p = pivot.to_string();
-        if !plan.is_defined(&p) {
+        let p = PointName::of(pivot);
+        if !plan.is_defined(pivot) {
             return;
         }
         match &self.g.carrier {
@@ -326,7 +327,7 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
         // The pivot force reacts on the carrier (or the body the pivot is
         // on), the tooth force on the meshing link at the pitch point.
         let body = match &g.carrier {
-            Some(c) => Some(c.to_string()),
+            Some(c) => Some(LinkName::of(c)),
             None => cx.body_of_point(pivot),
         };
         if let Some(b) = &body {
@@ -337,14 +338,15 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
             );
         }
         if let Some(m) = &g.mesh {
-            let r = cx.reference(&m.to_string());
+            let m = LinkName::of(m);
+            let r = cx.reference(&m);
             cx.add(
-                &m.to_string(),
+                &m,
                 quote!(::mechanism::force::Wrench::force_at(&(-#rx.tooth), &#rx.contact, &pos.#r)),
             );
         }
         cx.reaction(revolute(&rx, &body, link, pivot, "pivot"));
-        let from = body_name(&g.mesh.as_ref().map(ToString::to_string));
+        let from = body_name(&g.mesh.as_ref().map(LinkName::of));
         cx.reaction(Reaction {
             name: Family::Reaction.pair(&from, link),
             ty: quote!(::mechanism::Vector2<T>),

@@ -3,6 +3,7 @@
 use super::lane::{Lane, PointLocals, Step};
 use super::run::{Compile, ForceRunCx, Me, RunCx, RunPose};
 use super::{GroupKind, Pose, Role, Solve};
+use crate::keys::LinkName;
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -34,7 +35,7 @@ impl<'a> GroupKind<'a> for Ground<'a> {
         vec![]
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
+    fn point_owner(&self) -> Option<Option<LinkName>> {
         Some(None)
     }
 

@@ -9,6 +9,7 @@ use super::run::{Compile, ForceRunCx, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, local, unit_vector};
 use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
+use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;
 use crate::model::{Origin, Stmt};
 use crate::names::Family;
@@ -49,7 +50,7 @@ impl<'a> GroupKind<'a> for Guide<'a> {
         r
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
+    fn point_owner(&self) -> Option<Option<LinkName>> {
         None
     }
 
@@ -204,7 +205,7 @@ impl<'a> GroupKind<'a> for Guide<'a> {
         match self.carrier {
             Some(link) => {
                 if let Some(points) = plan.link_points(link) {
-                    if !points.contains(&p.to_string()) {
+                    if !points.contains(&PointName::of(p)) {
                         errors.push(
                             p.span(),
                             format!("a guide carried by `{link}` must pass through one of its points, and `{p}` is not on it"),
@@ -213,8 +214,8 @@ impl<'a> GroupKind<'a> for Guide<'a> {
                 }
             }
             None => {
-                let name = p.to_string();
-                if plan.is_defined(&name) && !plan.is_ground_point(&name) {
+                let name = PointName::of(p);
+                if plan.is_defined(p) && !plan.is_ground_point(&name) {
                     errors.push(
                         p.span(),
                         format!("a fixed guide must pass through a ground point, and `{name}` moves; to slide on a moving link write `guide({name}, LINK)`"),

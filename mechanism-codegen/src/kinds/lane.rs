@@ -13,6 +13,7 @@
 //! vector at a run-time angle, `u_NAME`; the sign of a run-time assembly
 //! mode, `m_NAME`) are computed once before the loop.
 
+use crate::keys::{GuideName, LinkName, PointName, SlideName};
 use crate::model::{Mode, Stmt};
 use crate::names::Family;
 use crate::value::{lit, Value};
@@ -168,10 +169,10 @@ pub(crate) struct Lane {
     pub acc: bool,
     pub(crate) pre: TokenStream,
     pub(crate) body: TokenStream,
-    points: BTreeSet<String>,
-    links: BTreeMap<String, LaneLink>,
-    guides: BTreeMap<String, LaneGuide>,
-    slides: BTreeMap<String, Slide>,
+    points: BTreeSet<PointName>,
+    links: BTreeMap<LinkName, LaneLink>,
+    guides: BTreeMap<GuideName, LaneGuide>,
+    slides: BTreeMap<SlideName, Slide>,
 }
 
 impl Lane {
@@ -194,18 +195,18 @@ impl Lane {
     /// it.
     pub fn point(&self, p: &Ident) -> Option<PointLocals> {
         self.points
-            .contains(&p.to_string())
+            .contains(&PointName::of(p))
             .then(|| PointLocals::of(p))
     }
 
     /// Link `l` as solved so far.
     pub fn link(&self, l: &Ident) -> Option<&LaneLink> {
-        self.links.get(&l.to_string())
+        self.links.get(&LinkName::of(l))
     }
 
     /// Guide `g` as solved so far.
     pub fn guide(&self, g: &Ident) -> Option<&LaneGuide> {
-        self.guides.get(&g.to_string())
+        self.guides.get(&GuideName::of(g))
     }
 
     /// Appends a statement's code and makes what it defines known.
@@ -246,13 +247,13 @@ impl Lane {
             if self.acc {
                 checked.extend([quote!(#ax), quote!(#ay)]);
             }
-            self.points.insert(name.to_string());
+            self.points.insert(PointName::of(name));
         }
         if let Some(sum) = tree_sum(&checked) {
             self.body.extend(quote!(chk += #sum;));
         }
         if let Some(g) = guide {
-            self.guides.insert(name.to_string(), g);
+            self.guides.insert(GuideName::of(name), g);
         }
         self.links.extend(links);
         self.slides.extend(slides);
@@ -270,15 +271,15 @@ impl Lane {
         for li in 0..levels {
             for (o, shape) in outputs {
                 if *shape == OutputShape::Point {
-                    if !self.points.contains(&o.to_string()) {
+                    if !self.points.contains(&PointName::of(o)) {
                         return None;
                     }
                     let Pair { x, y } = pv(lanes[li], o);
                     w.push(prefixes[li].coord(o, "x"), quote!(#x));
                     w.push(prefixes[li].coord(o, "y"), quote!(#y));
                 } else {
-                    let key = o.to_string();
-                    let v = match (self.links.get(&key), self.slides.get(&key)) {
+                    let (link, slide) = (LinkName::of(o), SlideName::of(o));
+                    let v = match (self.links.get(&link), self.slides.get(&slide)) {
                         (Some(l), _) => l.at(li).clone(),
                         (None, Some(Slide(s))) => s[li].clone(),
                         (None, None) => return None,
@@ -344,8 +345,8 @@ pub(crate) struct Step<'s> {
     body: TokenStream,
     defines_point: bool,
     checked: Vec<TokenStream>,
-    links: BTreeMap<String, LaneLink>,
-    slides: BTreeMap<String, Slide>,
+    links: BTreeMap<LinkName, LaneLink>,
+    slides: BTreeMap<SlideName, Slide>,
     guide: Option<LaneGuide>,
 }
 
@@ -423,7 +424,7 @@ impl<'s> Step<'s> {
     /// Makes the statement's `k`th link known as `link` (`None` when it has
     /// fewer links).
     pub fn defines_link(&mut self, k: usize, link: LaneLink) -> Option<()> {
-        let name = self.stmt.links.get(k)?.to_string();
+        let name = LinkName::of(self.stmt.links.get(k)?);
         self.links.insert(name, link);
         Some(())
     }
@@ -433,8 +434,8 @@ impl<'s> Step<'s> {
     /// unnamed slides are no output and stay unknown).
     pub fn defines_slide(&mut self, slot: usize, l: &SlideLocals) {
         let slide = match self.stmt.slides.get(slot) {
-            Some(Some(s)) => Some(s.to_string()),
-            _ if super::of(self.stmt).names_slide() => Some(self.name.to_string()),
+            Some(Some(s)) => Some(SlideName::of(s)),
+            _ if super::of(self.stmt).names_slide() => Some(SlideName::of(self.name)),
             _ => None,
         };
         if let Some(name) = slide {

@@ -128,6 +128,7 @@ pub mod triad;
 pub mod word;
 
 use crate::diag::Diagnostics;
+use crate::keys::{GuideName, LinkName, PointName};
 use crate::model::{Kind, Mode, Stmt, StmtId};
 use crate::value::Value;
 pub use pose::Pose;
@@ -143,19 +144,19 @@ pub enum Turn {
     /// It has its own angular velocity, found by the statement that creates it.
     Own,
     /// It turns with another link (a block on a carried guide).
-    With(String),
+    With(LinkName),
 }
 
 /// What the rules that need the plan ask of it (implemented by `plan::Plan`).
 pub trait Placed {
     /// The points on `link`, `None` for an unknown link.
-    fn link_points(&self, link: &Ident) -> Option<&[String]>;
+    fn link_points(&self, link: &Ident) -> Option<&[PointName]>;
     /// `true` when a statement defines `name`.
-    fn is_defined(&self, name: &str) -> bool;
+    fn is_defined(&self, name: &Ident) -> bool;
     /// `true` when `point` never moves.
-    fn is_ground_point(&self, point: &str) -> bool;
+    fn is_ground_point(&self, point: &PointName) -> bool;
     /// The links that have `point` among their points.
-    fn links_with_point(&self, point: &str) -> Vec<String>;
+    fn links_with_point(&self, point: &PointName) -> Vec<LinkName>;
 }
 
 /// A guide's line as written.
@@ -184,20 +185,20 @@ pub enum Role {
 /// the guide it slides on (a block), if any.
 pub struct LinkShape {
     /// Points fixed on the link, its origin first.
-    pub points: Vec<String>,
+    pub points: Vec<PointName>,
     /// How it turns, a block on a guide as `Turn::None`.
     pub turn: Turn,
     /// The guide it slides on.
-    pub guide: Option<String>,
+    pub guide: Option<GuideName>,
 }
 
 impl LinkShape {
     /// A link through `points` that turns as `turn` and slides on `guide`.
     fn new(points: &[&Ident], turn: Turn, guide: Option<&Ident>) -> Self {
         LinkShape {
-            points: points.iter().map(ToString::to_string).collect(),
+            points: points.iter().map(|p| PointName::of(p)).collect(),
             turn,
-            guide: guide.map(ToString::to_string),
+            guide: guide.map(GuideName::of),
         }
     }
 }
@@ -234,7 +235,7 @@ pub trait GroupKind<'a>: run::RunKind {
     /// The body the statement's point belongs to when another group is
     /// pinned there (`Some(None)`: the ground); `None` for statements that
     /// define no point (guides, RPR slides). See `plan::point_owner`.
-    fn point_owner(&self) -> Option<Option<String>>;
+    fn point_owner(&self) -> Option<Option<LinkName>>;
 
     /// Every value its position uses, in the order the evaluator reads them.
     fn position_values(&self) -> Vec<Value>;
@@ -795,18 +796,14 @@ mod tests {
             let shapes = kind.link_shapes();
             assert_eq!(shapes.len(), stmt.links.len(), "{}", stmt.name);
             assert_eq!(shapes.len(), stmt.kind.link_count(), "{}", stmt.name);
-            let refs: Vec<String> = kind
+            let refs: Vec<PointName> = kind
                 .references()
                 .iter()
-                .map(|(r, _)| r.to_string())
+                .map(|(r, _)| PointName::of(r))
                 .collect();
             for shape in &shapes {
                 for p in &shape.points {
-                    assert!(
-                        refs.contains(p) || stmt.name == p.as_str(),
-                        "{}: {p}",
-                        stmt.name
-                    );
+                    assert!(refs.contains(p) || *p == stmt.name, "{}: {p}", stmt.name);
                 }
             }
         }

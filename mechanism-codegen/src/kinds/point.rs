@@ -9,6 +9,7 @@ use super::run::{Compile, ForceRunCx, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, local, tag, unit_vector};
 use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
+use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;
 use crate::model::{Local, Stmt};
 use crate::names::Family;
@@ -47,8 +48,8 @@ impl<'a> GroupKind<'a> for Point<'a> {
         vec![(self.link, Role::Link), (self.from, Role::Point)]
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
-        Some(Some(self.link.to_string()))
+    fn point_owner(&self) -> Option<Option<LinkName>> {
+        Some(Some(LinkName::of(self.link)))
     }
 
     fn position_values(&self) -> Vec<Value> {
@@ -166,15 +167,15 @@ impl<'a> GroupKind<'a> for Point<'a> {
     fn check_placed(&self, plan: &dyn Placed, errors: &mut Diagnostics) {
         let (link, from) = (self.link, self.from);
         if let Some(points) = plan.link_points(link) {
-            let f = from.to_string();
-            if !points.contains(&f) && plan.is_defined(&f) {
+            let f = PointName::of(from);
+            if !points.contains(&f) && plan.is_defined(from) {
                 errors.push(
                     from.span(),
                     format!(
                         "`{f}` is not a point of `{link}`; measure from one of its points: {}",
                         points
                             .iter()
-                            .filter(|p| self.stmt.name != p.as_str())
+                            .filter(|p| **p != self.stmt.name)
                             .map(|p| format!("`{p}`"))
                             .collect::<Vec<_>>()
                             .join(", ")

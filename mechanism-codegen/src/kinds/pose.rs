@@ -1,6 +1,7 @@
 //! The pose the expansion-time evaluator builds statement by statement: what
 //! each kind's `eval` reads and records, in `f64`.
 
+use crate::keys::{GuideName, LinkName, PointName};
 use crate::model::{Mode, Stmt};
 use crate::value::Value;
 use mechanism_core::guide::Line;
@@ -13,16 +14,16 @@ use syn::Ident;
 /// the primitives reject with a typed error.
 #[derive(Default)]
 pub struct Pose {
-    points: BTreeMap<String, Point2<f64>>,
-    guides: BTreeMap<String, Line<f64>>,
-    axes: BTreeMap<String, Vector2<f64>>,
+    points: BTreeMap<PointName, Point2<f64>>,
+    guides: BTreeMap<GuideName, Line<f64>>,
+    axes: BTreeMap<LinkName, Vector2<f64>>,
 }
 
 impl Pose {
     /// The point `n` (NaN when unknown).
     pub fn point(&self, n: &Ident) -> Point2<f64> {
         let nan = Point2::new(f64::NAN, f64::NAN);
-        self.points.get(&n.to_string()).copied().unwrap_or(nan)
+        self.points.get(&PointName::of(n)).copied().unwrap_or(nan)
     }
 
     /// The guide line `n` (NaN when unknown).
@@ -31,28 +32,28 @@ impl Pose {
             origin: Point2::new(f64::NAN, f64::NAN),
             dir: Vector2::new(f64::NAN, f64::NAN),
         };
-        self.guides.get(&n.to_string()).copied().unwrap_or(nan)
+        self.guides.get(&GuideName::of(n)).copied().unwrap_or(nan)
     }
 
     /// The unit axis of link `n` (NaN when unknown).
     pub fn axis(&self, n: &Ident) -> Vector2<f64> {
         let nan = Vector2::new(f64::NAN, f64::NAN);
-        self.axes.get(&n.to_string()).copied().unwrap_or(nan)
+        self.axes.get(&LinkName::of(n)).copied().unwrap_or(nan)
     }
 
     /// Records a statement's point and its links' axes.
     pub fn found(&mut self, stmt: &Stmt, point: Option<Point2<f64>>, axes: &[Vector2<f64>]) {
         if let Some(p) = point {
-            self.points.insert(stmt.name.to_string(), p);
+            self.points.insert(PointName::of(&stmt.name), p);
         }
         for (link, axis) in stmt.links.iter().zip(axes) {
-            self.axes.insert(link.to_string(), *axis);
+            self.axes.insert(LinkName::of(link), *axis);
         }
     }
 
     /// Records a guide statement's line.
     pub fn found_line(&mut self, stmt: &Stmt, line: Line<f64>) {
-        self.guides.insert(stmt.name.to_string(), line);
+        self.guides.insert(GuideName::of(&stmt.name), line);
     }
 }
 

@@ -9,6 +9,7 @@ use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::run::{Compile, ForceRunCx, GuideSlot, Me, RunCx, RunPose};
 use super::tokens::{along, local};
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::keys::LinkName;
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -51,8 +52,8 @@ impl<'a> GroupKind<'a> for Prp<'a> {
         ]
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
-        Some(Some(self.stmt.links[0].to_string()))
+    fn point_owner(&self) -> Option<Option<LinkName>> {
+        Some(Some(LinkName::of(&self.stmt.links[0])))
     }
 
     fn position_values(&self) -> Vec<Value> {

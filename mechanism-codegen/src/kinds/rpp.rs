@@ -11,6 +11,7 @@ use super::run::{Compile, ForceRunCx, GuideSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{along, grp, local, unit_field, unit_vector};
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
+use crate::keys::LinkName;
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
@@ -53,8 +54,8 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
     }
 
     /// The reference point belongs to the yoke, the second link.
-    fn point_owner(&self) -> Option<Option<String>> {
-        Some(Some(self.stmt.links[1].to_string()))
+    fn point_owner(&self) -> Option<Option<LinkName>> {
+        Some(Some(LinkName::of(&self.stmt.links[1])))
     }
 
     fn position_values(&self) -> Vec<Value> {

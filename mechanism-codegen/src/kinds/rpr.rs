@@ -10,6 +10,7 @@ use super::run::{Compile, ForceRunCx, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{grp, local, mode_arg, unit_field};
 use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
+use crate::keys::LinkName;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
 use crate::value::Value;
@@ -51,7 +52,7 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
         ]
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
+    fn point_owner(&self) -> Option<Option<LinkName>> {
         None
     }
 

@@ -10,6 +10,7 @@ use super::run::{Compile, ForceRunCx, GuideSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{along, arm, grp, local, mode_arg};
 use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
+use crate::keys::LinkName;
 use crate::kinds::pose::{mode, num};
 use crate::model::{Mode, Stmt};
 use crate::value::Value;
@@ -53,8 +54,8 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
         ]
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
-        Some(Some(self.stmt.links[0].to_string()))
+    fn point_owner(&self) -> Option<Option<LinkName>> {
+        Some(Some(LinkName::of(&self.stmt.links[0])))
     }
 
     fn position_values(&self) -> Vec<Value> {

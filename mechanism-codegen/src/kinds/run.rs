@@ -10,9 +10,9 @@
 //! allocates nothing, formats nothing and looks nothing up by name.
 
 use super::forces::Held;
-use crate::model::{Model, Stmt};
+use crate::keys::{GuideName, InputName, LinkName, Name, PointName};
+use crate::model::Stmt;
 use crate::names::Family;
-use crate::plan::Plan;
 use crate::value::Value;
 use mechanism_core::force::{PrismaticReaction, Wrench};
 use mechanism_core::guide::{Line, LineAcceleration, LineVelocity};
@@ -85,13 +85,13 @@ pub struct Layout {
     /// Statements (points, guides, steps); slot `stmts` is the unknown one.
     pub stmts: usize,
     /// Link names by slot; slot `links.len()` is the unknown one.
-    pub link_names: Vec<String>,
+    pub link_names: Vec<LinkName>,
     /// Link slots by name.
-    links: BTreeMap<String, LinkSlot>,
+    links: BTreeMap<LinkName, LinkSlot>,
     /// Statement slots by the name they define.
-    defined: BTreeMap<String, u32>,
+    defined: BTreeMap<Name, u32>,
     /// Input slots by name.
-    inputs: BTreeMap<String, InputSlot>,
+    inputs: BTreeMap<InputName, InputSlot>,
     /// `true` for a point that moves.
     pub moving: Vec<bool>,
     /// `true` for a guide carried by a link.
@@ -107,66 +107,46 @@ pub struct Layout {
 }
 
 impl Layout {
-    /// The layout of `model` planned as `plan`.
-    pub fn new(model: &Model, plan: &Plan) -> Self {
-        let stmts = model.stmts.len();
-        let defined: BTreeMap<String, u32> = plan
-            .defined
-            .iter()
-            .map(|(n, id)| (n.clone(), slot(id.0)))
-            .collect();
-        let link_names: Vec<String> = plan.links.keys().cloned().collect();
-        let links: BTreeMap<String, LinkSlot> = link_names
+    /// The layout of `stmts` statements with the links `link_names` (in slot
+    /// order), the statement index defining each name, and the inputs (in
+    /// slot order). The facts by slot (`moving`, `carried`, `point_body`,
+    /// `guide_body`: one more than `stmts`, the unknown slot last; `turning`
+    /// and `reference`: one more than the links) start as nothing moving,
+    /// carried or turning, and are the caller's to fill from the plan
+    /// (`runtime::slots`), so this stage reads no later one.
+    pub fn with_names(
+        stmts: usize,
+        link_names: Vec<LinkName>,
+        defined: impl IntoIterator<Item = (Name, usize)>,
+        inputs: impl IntoIterator<Item = InputName>,
+    ) -> Self {
+        let links = link_names
             .iter()
             .enumerate()
             .map(|(k, n)| (n.clone(), LinkSlot(slot(k))))
             .collect();
-        let inputs = model
-            .inputs
-            .iter()
-            .enumerate()
-            .map(|(k, i)| (i.name.to_string(), InputSlot(slot(k))))
-            .collect();
-        let moving_names = crate::emit::moving_points(model, plan);
-        let mut l = Layout {
+        let n_links = link_names.len() + 1;
+        Layout {
             stmts,
             link_names,
             links,
-            defined,
-            inputs,
+            defined: defined.into_iter().map(|(n, k)| (n, slot(k))).collect(),
+            inputs: inputs
+                .into_iter()
+                .enumerate()
+                .map(|(k, i)| (i, InputSlot(slot(k))))
+                .collect(),
             moving: vec![false; stmts + 1],
             carried: vec![false; stmts + 1],
-            turning: Vec::new(),
+            turning: vec![None; n_links],
             point_body: vec![None; stmts + 1],
             guide_body: vec![None; stmts + 1],
-            reference: Vec::new(),
-        };
-        for (k, s) in model.stmts.iter().enumerate() {
-            let name = s.name.to_string();
-            l.moving[k] = moving_names.contains(&name);
-            l.carried[k] = plan.guides.get(&name).is_some_and(|g| g.carrier.is_some());
-            l.point_body[k] = plan.body_of_point(&name).map(|b| l.link_named(&b));
-            l.guide_body[k] = plan.body_of_guide(&name).map(|b| l.link_named(&b));
+            reference: vec![None; n_links],
         }
-        let names = l.link_names.clone();
-        l.turning = names
-            .iter()
-            .map(|n| plan.turning_link(n).map(|t| l.link_named(&t)))
-            .collect();
-        l.turning.push(None);
-        l.reference = names
-            .iter()
-            .map(|n| {
-                let first = plan.links.get(n).and_then(|i| i.points.first());
-                first.map(|p| l.point_named(p))
-            })
-            .collect();
-        l.reference.push(None);
-        l
     }
 
     /// The slot of link `name` (the unknown slot when none).
-    pub fn link_named(&self, name: &str) -> LinkSlot {
+    pub fn link_named(&self, name: &LinkName) -> LinkSlot {
         self.links
             .get(name)
             .copied()
@@ -174,17 +154,22 @@ impl Layout {
     }
 
     /// The slot of point `name` (the unknown slot when none).
-    pub fn point_named(&self, name: &str) -> PointSlot {
-        PointSlot(self.defined.get(name).copied().unwrap_or(slot(self.stmts)))
+    pub fn point_named(&self, name: &PointName) -> PointSlot {
+        PointSlot(self.stmt_named(&name.name()))
     }
 
     /// The slot of guide `name` (the unknown slot when none).
-    pub fn guide_named(&self, name: &str) -> GuideSlot {
-        GuideSlot(self.point_named(name).0)
+    pub fn guide_named(&self, name: &GuideName) -> GuideSlot {
+        GuideSlot(self.stmt_named(&name.name()))
+    }
+
+    /// The statement slot defining `name` (the unknown slot when none).
+    fn stmt_named(&self, name: &Name) -> u32 {
+        self.defined.get(name).copied().unwrap_or(slot(self.stmts))
     }
 
     /// The slot of input `name` (one past the inputs when none: reads NaN).
-    pub fn input_named(&self, name: &str) -> InputSlot {
+    pub fn input_named(&self, name: &InputName) -> InputSlot {
         self.inputs
             .get(name)
             .copied()
@@ -194,7 +179,7 @@ impl Layout {
     /// The name of link slot `l` (`ground` for none).
     pub fn link_name(&self, l: Option<LinkSlot>) -> &str {
         l.and_then(|l| self.link_names.get(at(l.0)))
-            .map_or("ground", String::as_str)
+            .map_or("ground", LinkName::as_str)
     }
 
     /// Number of link slots, the unknown one included.
@@ -215,17 +200,17 @@ pub struct Compile<'c> {
 impl Compile<'_> {
     /// The slot of point `n`.
     pub fn point(&self, n: &Ident) -> PointSlot {
-        self.layout.point_named(&n.to_string())
+        self.layout.point_named(&PointName::of(n))
     }
 
     /// The slot of guide `n`.
     pub fn guide(&self, n: &Ident) -> GuideSlot {
-        self.layout.guide_named(&n.to_string())
+        self.layout.guide_named(&GuideName::of(n))
     }
 
     /// The slot of link `n`.
     pub fn link(&self, n: &Ident) -> LinkSlot {
-        self.layout.link_named(&n.to_string())
+        self.layout.link_named(&LinkName::of(n))
     }
 
     /// `true` when point `p` moves (its rates are computed).
@@ -235,7 +220,7 @@ impl Compile<'_> {
 
     /// The slot of input `n`.
     pub fn input(&self, n: &Ident) -> InputSlot {
-        self.layout.input_named(&n.to_string())
+        self.layout.input_named(&InputName::of(n))
     }
 
     /// A dimension's value with the current parameters (NaN for one that
@@ -249,7 +234,7 @@ impl Compile<'_> {
     /// The slots `stmt` writes.
     pub fn me(&self, stmt: &Stmt) -> Me {
         let name = stmt.name.to_string();
-        let point = self.layout.point_named(&name);
+        let point = PointSlot(self.layout.stmt_named(&Name::of(&stmt.name)));
         let unknown = LinkSlot(slot(self.layout.link_names.len()));
         let mut links = [unknown; 4];
         for (l, n) in links.iter_mut().zip(&stmt.links) {

@@ -8,6 +8,7 @@ use super::rates::{vec_ty, RateCx};
 use super::run::{Compile, ForceRunCx, GuideSlot, InputSlot, Me, RunCx, RunPose};
 use super::tokens::{along, grp, local, tag};
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::keys::LinkName;
 use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::names::Family;
@@ -50,8 +51,8 @@ impl<'a> GroupKind<'a> for Slider<'a> {
         )]
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
-        Some(Some(self.stmt.links[0].to_string()))
+    fn point_owner(&self) -> Option<Option<LinkName>> {
+        Some(Some(LinkName::of(&self.stmt.links[0])))
     }
 
     fn position_values(&self) -> Vec<Value> {

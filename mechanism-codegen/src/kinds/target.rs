@@ -11,6 +11,7 @@ use super::rates::{vec_ty, RateCx};
 use super::run::{Compile, ForceRunCx, InputSlot, Me, RunCx, RunPose};
 use super::tokens::tag;
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
+use crate::keys::LinkName;
 use crate::model::Stmt;
 use crate::names::Family;
 use crate::value::Value;
@@ -47,8 +48,8 @@ impl<'a> GroupKind<'a> for Target<'a> {
         vec![LinkShape::new(&[&self.stmt.name], Turn::None, None)]
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
-        Some(Some(self.stmt.links[0].to_string()))
+    fn point_owner(&self) -> Option<Option<LinkName>> {
+        Some(Some(LinkName::of(&self.stmt.links[0])))
     }
 
     fn position_values(&self) -> Vec<Value> {

@@ -29,6 +29,7 @@ use super::run::{Compile, ForceRunCx, InputSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, tag, unit_field};
 use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Tracking, Turn};
 use crate::diag::{show_num, Diagnostics};
+use crate::keys::LinkName;
 use crate::kinds::pose::num;
 use crate::model::{Local, Stmt, Triad as Args};
 use crate::value::Value;
@@ -285,8 +286,8 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         ]
     }
 
-    fn point_owner(&self) -> Option<Option<String>> {
-        Some(Some(self.stmt.links[3].to_string()))
+    fn point_owner(&self) -> Option<Option<LinkName>> {
+        Some(Some(LinkName::of(&self.stmt.links[3])))
     }
 
     fn position_values(&self) -> Vec<Value> {
@@ -616,7 +617,7 @@ fn forces(kind: &TriadKind<'_>, cx: &mut dyn ForceCx) {
     }
     let joints = [a, &t.b, &t.p];
     for (i, field) in ["a", "b", "p"].into_iter().enumerate() {
-        let from = Some(links[i].to_string());
+        let from = Some(LinkName::of(&links[i]));
         cx.reaction(revolute(&rx, &from, &links[3], joints[i], field));
     }
     cx.condition(quote!(#rx.min_pivot_ratio));

@@ -20,6 +20,7 @@
 
 use super::{intern, Column, Mechanism, Position, Rates};
 use crate::emit::forces::ForceField;
+use crate::keys::{GuideName, LinkName, PointName};
 use crate::kinds::forces::Held;
 use crate::kinds::run::{ForceRunCx, GuideSlot, Layout, LinkSlot, PointSlot};
 use crate::model::{ForceSpecValue, Level, MassSpec};
@@ -210,20 +211,24 @@ impl ForcePlan {
             .iter()
             .filter_map(|f| {
                 let link = match &f.on {
-                    Some(l) => l.to_string(),
-                    None => m.plan.links_with_point(&f.at.to_string()).first()?.clone(),
+                    Some(l) => LinkName::of(l),
+                    None => m
+                        .plan
+                        .links_with_point(&PointName::of(&f.at))
+                        .first()?
+                        .clone(),
                 };
                 let value = match &f.value {
                     ForceSpecValue::Components(x, y) => {
                         ForceVal::Components(Vector2::new(m.value(x), m.value(y)))
                     }
                     ForceSpecValue::Along(guide, v) => {
-                        ForceVal::Along(slots.guide_named(&guide.to_string()), m.value(v))
+                        ForceVal::Along(slots.guide_named(&GuideName::of(guide)), m.value(v))
                     }
                 };
                 Some(ExtForce {
                     link: slots.link_named(&link),
-                    at: slots.point_named(&f.at.to_string()),
+                    at: slots.point_named(&PointName::of(&f.at)),
                     value,
                 })
             })
@@ -231,7 +236,7 @@ impl ForcePlan {
         let torques = k
             .torques
             .iter()
-            .map(|t| (slots.link_named(&t.on.to_string()), m.value(&t.value)))
+            .map(|t| (slots.link_named(&LinkName::of(&t.on)), m.value(&t.value)))
             .collect();
         ForcePlan {
             gravity,
@@ -537,7 +542,13 @@ impl Mechanism {
     /// as the generated code checks one that is not literal, the error
     /// named by the group that creates the link; `part`: ` (part k)` or
     /// empty.
-    fn checked(&self, v: &Value, link: &str, part: &str, mass: bool) -> Result<f64, Error<f64>> {
+    fn checked(
+        &self,
+        v: &Value,
+        link: &LinkName,
+        part: &str,
+        mass: bool,
+    ) -> Result<f64, Error<f64>> {
         let x = self.value(v);
         if v.fold().is_some() {
             return Ok(x);
@@ -546,7 +557,7 @@ impl Mechanism {
             .model
             .stmts
             .iter()
-            .find(|s| s.links.iter().any(|l| l == link))
+            .find(|s| s.links.iter().any(|l| *link == *l))
         else {
             return Ok(x);
         };
@@ -565,7 +576,7 @@ impl Mechanism {
     /// a link's only part) moment of inertia, and the parts' moments of
     /// inertia summed as the generated code sums them (folded when every
     /// one is literal, else each checked).
-    fn link_masses(&self, link: &str, parts: &[&MassSpec]) -> LinkMasses {
+    fn link_masses(&self, link: &LinkName, parts: &[&MassSpec]) -> LinkMasses {
         let one = parts.len() == 1;
         let mut out = Vec::new();
         let mut inertias = Vec::new();
@@ -577,7 +588,7 @@ impl Mechanism {
             };
             let j = m.inertia.as_ref().filter(|j| j.fold() != Some(0.0));
             out.push(MassPart {
-                at: self.slots.point_named(&m.at.to_string()),
+                at: self.slots.point_named(&PointName::of(&m.at)),
                 mass: self.checked(&m.mass, link, &part, true),
                 j: j.filter(|_| one).map(|j| self.checked(j, link, "", false)),
             });
@@ -604,7 +615,7 @@ impl Mechanism {
             turning: self.slots.link_named(
                 &parts
                     .first()
-                    .map_or_else(String::new, |p| p.link.to_string()),
+                    .map_or_else(|| LinkName::new(""), |p| LinkName::of(&p.link)),
             ),
             one,
             parts: out,
@@ -629,7 +640,7 @@ impl Mechanism {
         };
         let turning = |link: &Ident| {
             self.plan
-                .turning_link(&link.to_string())
+                .turning_link(&LinkName::of(link))
                 .map(|l| self.slots.link_named(&l))
         };
         let links = model

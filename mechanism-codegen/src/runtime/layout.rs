@@ -4,6 +4,7 @@
 //! pose, any point, guide or link direction by name.
 
 use super::{Mechanism, Position};
+use crate::keys::{GuideName, LinkName, PointName};
 use crate::kinds;
 use mechanism_core::geometry;
 pub use mechanism_core::structure::{LinkKind, PointKind};
@@ -86,7 +87,7 @@ impl Mechanism {
                 });
             }
             for (j, l) in stmt.links.iter().enumerate() {
-                let Some(info) = self.plan.links.get(&l.to_string()) else {
+                let Some(info) = self.plan.links.get(&LinkName::of(l)) else {
                     continue;
                 };
                 links.push(LayoutLink {
@@ -95,8 +96,8 @@ impl Mechanism {
                         Some(_) => LinkKind::Block,
                         None => link_kind(kind.link_kind(j)),
                     },
-                    points: info.points.clone(),
-                    guide: info.guide.clone(),
+                    points: info.points.iter().map(ToString::to_string).collect(),
+                    guide: info.guide.as_ref().map(ToString::to_string),
                 });
             }
         }
@@ -105,8 +106,8 @@ impl Mechanism {
             .guides
             .iter()
             .map(|(name, g)| LayoutGuide {
-                name: name.clone(),
-                carrier: g.carrier.clone(),
+                name: name.to_string(),
+                carrier: g.carrier.as_ref().map(ToString::to_string),
             })
             .collect();
         Layout {
@@ -120,7 +121,7 @@ impl Mechanism {
     /// The direction of link `link` at `pos` (rad, counter-clockwise from
     /// +x): its axis, a block's along its guide. `None`: no such link.
     pub fn link_direction(&self, pos: &Position, link: &str) -> Option<f64> {
-        let info = self.plan.links.get(link)?;
+        let info = self.plan.links.get(&LinkName::new(link))?;
         let step = self.compiled.steps.get(info.stmt.0)?;
         let d = step.link_dir(info.index, &pos.pose);
         let a = geometry::angle(&d);
@@ -131,14 +132,18 @@ impl Mechanism {
 impl Position {
     /// Point `name` (L); `None` when the definition has no such point.
     pub fn point(&self, name: &str) -> Option<[f64; 2]> {
-        let p = self.pose.point(self.slots.point_named(name));
+        let p = self
+            .pose
+            .point(self.slots.point_named(&PointName::new(name)));
         (p.x.is_finite() && p.y.is_finite()).then_some([p.x, p.y])
     }
 
     /// Guide `name`: a point of its line (L) and its direction (rad);
     /// `None` when the definition has no such guide.
     pub fn guide(&self, name: &str) -> Option<([f64; 2], f64)> {
-        let line = self.pose.line(self.slots.guide_named(name));
+        let line = self
+            .pose
+            .line(self.slots.guide_named(&GuideName::new(name)));
         let a = line.dir.y.atan2(line.dir.x);
         let ok = line.origin.x.is_finite() && line.origin.y.is_finite() && a.is_finite();
         ok.then_some(([line.origin.x, line.origin.y], a))

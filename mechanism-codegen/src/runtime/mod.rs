@@ -25,9 +25,11 @@
 
 pub mod forces;
 pub mod layout;
+mod slots;
 pub mod text;
 
 use crate::diag::Diagnostics;
+use crate::keys::{LinkName, PointName};
 use crate::kinds;
 use crate::kinds::run::{
     self, Compile, LinkSlot, Motion, PointSlot, RunCx, RunPose, Step, StepSlot,
@@ -202,7 +204,7 @@ impl Mechanism {
             .iter()
             .map(|(n, v)| (n.to_string(), *v))
             .collect();
-        let slots = Arc::new(run::Layout::new(&model, &plan));
+        let slots = Arc::new(slots::layout(&model, &plan));
         let mut m = Mechanism {
             model,
             plan,
@@ -237,13 +239,13 @@ impl Mechanism {
         let mut pos_out = Vec::new();
         let mut rate_out = RateOut::default();
         for p in &out.points {
-            let slot = self.slots.point_named(&p.to_string());
+            let slot = self.slots.point_named(&PointName::of(p));
             pos_out.push(PosOut::Point(slot));
             let moving = self.slots.moving[slot.index()];
             rate_out.points.push(moving.then_some(slot));
         }
         for link in &out.links {
-            let name = link.to_string();
+            let name = LinkName::of(link);
             if let Some(info) = self.plan.links.get(&name) {
                 pos_out.push(PosOut::Angle {
                     stmt: info.stmt,
@@ -262,7 +264,7 @@ impl Mechanism {
             });
             let step = self
                 .slots
-                .point_named(&self.model.stmts[s.stmt].name.to_string());
+                .point_named(&PointName::of(&self.model.stmts[s.stmt].name));
             rate_out.slides.push((StepSlot::of(step), s.slot));
         }
         let forces = forces::ForcePlan::new(self);

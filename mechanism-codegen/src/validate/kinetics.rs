@@ -6,6 +6,7 @@
 
 use super::names::{another, defined_where, link_hints, named_links, symbols};
 use crate::diag::{did_you_mean, Diagnostics};
+use crate::keys::{GuideName, LinkName, Name, PointName};
 use crate::kinds;
 use crate::model::{ForceSpec, ForceSpecValue, Level, MassSpec, Model};
 use crate::plan::{references, Plan};
@@ -20,10 +21,10 @@ use syn::Ident;
 /// reaction passed to it would be lost and every effort behind it wrong; the
 /// kinematics are fine, so this is an error of the force analysis only.
 pub(super) fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Diagnostics) {
-    let cylinders: Vec<String> = model
+    let cylinders: Vec<LinkName> = model
         .stmts
         .iter()
-        .filter_map(|s| kinds::cylinder(s).map(Ident::to_string))
+        .filter_map(|s| kinds::cylinder(s).map(LinkName::of))
         .collect();
     for stmt in &model.stmts {
         if stmt.kind.link_count() == 0 {
@@ -31,7 +32,8 @@ pub(super) fn nothing_on_a_cylinder(model: &Model, plan: &Plan, errors: &mut Dia
         }
         for r in references(stmt) {
             let name = r.to_string();
-            let (body, what) = match (plan.body_of_point(&name), plan.body_of_guide(&name)) {
+            let (point, guide) = (PointName::of(r), GuideName::of(r));
+            let (body, what) = match (plan.body_of_point(&point), plan.body_of_guide(&guide)) {
                 (Some(b), _) => (b, "a point of"),
                 (None, Some(b)) => (b, "a guide carried by"),
                 (None, None) => continue,
@@ -92,9 +94,9 @@ fn mass_on_its_link(model: &Model, plan: &Plan, m: &MassSpec, errors: &mut Diagn
     if !loadable_link(model, plan, &m.link, "a mass", errors) {
         return;
     }
-    let link = m.link.to_string();
+    let link = LinkName::of(&m.link);
     let points = &plan.links[&link].points;
-    let at = m.at.to_string();
+    let at = PointName::of(&m.at);
     if !plan.owner.contains_key(&at) {
         let message = unknown_point(
             model,
@@ -114,7 +116,7 @@ fn mass_on_its_link(model: &Model, plan: &Plan, m: &MassSpec, errors: &mut Diagn
             format!(
                 "the centre of mass must be a point of `{link}`, and `{at}` is not; its points are {}; or define one: `let G = point({link}, from {}, distance, angle);`",
                 points.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(", "),
-                points.first().map(String::as_str).unwrap_or("A"),
+                points.first().map_or("A", PointName::as_str),
             ),
         );
     }
@@ -140,11 +142,11 @@ fn force_at_a_point_of_its_link(
     f: &ForceSpec,
     errors: &mut Diagnostics,
 ) -> bool {
-    let at = f.at.to_string();
+    let at = PointName::of(&f.at);
     if !plan.owner.contains_key(&at) {
         let on =
             f.on.as_ref()
-                .and_then(|l| plan.links.get(&l.to_string()))
+                .and_then(|l| plan.links.get(&LinkName::of(l)))
                 .map_or(&[][..], |info| &info.points[..]);
         if let Some(message) = unknown_point(model, plan, &at, on, "a force acts at a point") {
             errors.push(f.at.span(), message);
@@ -154,7 +156,7 @@ fn force_at_a_point_of_its_link(
     match &f.on {
         Some(link) => {
             if loadable_link(model, plan, link, "a force", errors) {
-                let l = link.to_string();
+                let l = LinkName::of(link);
                 if !plan.links[&l].points.contains(&at) {
                     errors.push(
                         f.at.span(),
@@ -201,7 +203,7 @@ fn force_at_a_point_of_its_link(
 fn force_along_a_guide(model: &Model, plan: &Plan, f: &ForceSpec, errors: &mut Diagnostics) {
     if let ForceSpecValue::Along(guide, _) = &f.value {
         let g = guide.to_string();
-        if !plan.guides.contains_key(&g) {
+        if !plan.guides.contains_key(&GuideName::of(guide)) {
             let what = match symbols(model).get(&g) {
                 Some((cat, _)) => format!("`{g}` is {}, not a guide", cat.article()),
                 None => format!("cannot find guide `{g}`"),
@@ -210,7 +212,7 @@ fn force_along_a_guide(model: &Model, plan: &Plan, f: &ForceSpec, errors: &mut D
                 guide.span(),
                 format!(
                     "{what}; `along` takes a guide, whose direction the force follows{}",
-                    guide_hint(&g, plan.guides.keys().map(String::as_str))
+                    guide_hint(&g, plan.guides.keys().map(GuideName::as_str))
                 ),
             );
         }
@@ -299,7 +301,7 @@ pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Di
         }
         for link in std::iter::once(&m.link).chain(&m.carrier) {
             if loadable_link(model, plan, link, "a motor", errors)
-                && plan.turning_link(&link.to_string()).is_none()
+                && plan.turning_link(&LinkName::of(link)).is_none()
                 && Some(link) == Some(&m.link)
             {
                 errors.push(
@@ -313,7 +315,7 @@ pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Di
                 m.link.span(),
                 format!("the motor `{name}` turns `{}` relative to itself; name the link carrying it, or none for the ground", m.link),
             );
-        } else if plan.turning_link(&m.link.to_string()).is_some()
+        } else if plan.turning_link(&LinkName::of(&m.link)).is_some()
             && motor_joint(plan, m) == Some(false)
         {
             let on = m
@@ -322,16 +324,16 @@ pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Di
                 .map_or("the ground".to_string(), |c| format!("`{c}`"));
             let own = plan
                 .links
-                .get(&m.link.to_string())
+                .get(&LinkName::of(&m.link))
                 .map(|i| i.points.clone())
                 .unwrap_or_default();
             // A link pinned to it: the carrier the motor could have.
             let neighbour = plan
                 .links
                 .iter()
-                .find(|(l, i)| m.link != l.as_str() && i.points.iter().any(|p| own.contains(p)))
-                .map(|(l, _)| l.clone())
-                .unwrap_or_else(|| "LINK".into());
+                .find(|(l, i)| **l != m.link && i.points.iter().any(|p| own.contains(p)))
+                .map_or("LINK", |(l, _)| l.as_str());
+            let own: Vec<&str> = own.iter().map(PointName::as_str).collect();
             errors.push(
                 m.link.span(),
                 format!("the motor `{name}` turns `{}` on {on}, and they share no joint for its axis (`{}` has {}); a motor sits at the joint of the two links it turns: `motor {name} = angle({}, {neighbour});`, or a motor on a link pinned to {on}", m.link, m.link, own.join(", "), m.link),
@@ -343,7 +345,7 @@ pub(super) fn motors_hold_the_target(model: &Model, plan: &Plan, errors: &mut Di
 /// Whether a motor's link and its carrier (or the ground) share a joint,
 /// its axis; `None` when a link is unknown (reported elsewhere).
 fn motor_joint(plan: &Plan, m: &crate::model::MotorSpec) -> Option<bool> {
-    let points = |l: &Ident| plan.links.get(&l.to_string()).map(|i| &i.points);
+    let points = |l: &Ident| plan.links.get(&LinkName::of(l)).map(|i| &i.points);
     let own = points(&m.link)?;
     Some(match &m.carrier {
         Some(c) => {
@@ -361,7 +363,7 @@ pub(super) fn load_names_unique(model: &Model, plan: &Plan, errors: &mut Diagnos
         let name = load.to_string();
         if model.params.iter().any(|(p, _)| p == load)
             || model.consts.contains_key(&name)
-            || plan.defined.contains_key(&name)
+            || plan.defined.contains_key(&Name::of(load))
         {
             let whence = defined_where(model, load)
                 .map(|w| format!(" {w}"))
@@ -375,11 +377,11 @@ pub(super) fn load_names_unique(model: &Model, plan: &Plan, errors: &mut Diagnos
 }
 
 /// `true` for the cylinder of an actuator (a massless two-force member).
-fn is_cylinder(model: &Model, link: &str) -> bool {
+fn is_cylinder(model: &Model, link: &LinkName) -> bool {
     model
         .stmts
         .iter()
-        .any(|s| kinds::cylinder(s).is_some_and(|l| l == link))
+        .any(|s| kinds::cylinder(s).is_some_and(|l| *link == *l))
 }
 
 /// Checks that `link` names a link that can carry loads; pushes an error otherwise.
@@ -400,7 +402,8 @@ fn loadable_link(
     {
         return false;
     }
-    if !plan.links.contains_key(&name) {
+    let key = LinkName::of(link);
+    if !plan.links.contains_key(&key) {
         let named = named_links(model);
         let hint = did_you_mean(&name, named.iter().map(String::as_str));
         if name == "ground" || name == "frame" {
@@ -410,7 +413,9 @@ fn loadable_link(
             );
             return false;
         }
-        let (kind, hint) = if plan.defined.contains_key(&name) || plan.guides.contains_key(&name) {
+        let (kind, hint) = if plan.defined.contains_key(&Name::of(link))
+            || plan.guides.contains_key(&GuideName::of(link))
+        {
             (format!("`{name}` is not a link"), hint)
         } else {
             (
@@ -424,7 +429,7 @@ fn loadable_link(
         );
         return false;
     }
-    if is_cylinder(model, &name) {
+    if is_cylinder(model, &key) {
         errors.push(
             link.span(),
             format!("`{name}` is an actuator's cylinder, a massless two-force member here; put the load on the link it drives, or give the actuator a third name to make its cylinder a barrel (pivoted at its base) and a rod (pinned at its joint) that carry loads: `as (ARM, BARREL, ROD)`"),
@@ -443,18 +448,18 @@ fn loadable_link(
 fn unknown_point(
     model: &Model,
     plan: &Plan,
-    at: &str,
-    first: &[String],
+    at: &PointName,
+    first: &[PointName],
     what: &str,
 ) -> Option<String> {
-    if model.failed.iter().any(|f| f.name == at) {
+    if model.failed.iter().any(|f| *at == f.name) {
         return None;
     }
-    let mut hint = did_you_mean(at, first.iter().map(String::as_str));
+    let mut hint = did_you_mean(at.as_str(), first.iter().map(PointName::as_str));
     if hint.is_empty() {
-        hint = did_you_mean(at, plan.owner.keys().map(String::as_str));
+        hint = did_you_mean(at.as_str(), plan.owner.keys().map(PointName::as_str));
     }
-    Some(match symbols(model).get(at) {
+    Some(match symbols(model).get(at.as_str()) {
         Some((cat, _)) => format!("`{at}` is {}, not a point; {what}{hint}", cat.article()),
         None => format!("cannot find point `{at}`{hint}"),
     })
@@ -470,8 +475,8 @@ pub(super) fn dynamics_has_inertia(model: &Model, plan: &Plan, errors: &mut Diag
         return;
     }
     let moves = |m: &MassSpec| {
-        let centre_moves = !plan.is_ground(&m.at.to_string());
-        let turns = plan.turning_link(&m.link.to_string()).is_some()
+        let centre_moves = !plan.is_ground(&PointName::of(&m.at));
+        let turns = plan.turning_link(&LinkName::of(&m.link)).is_some()
             && m.inertia.as_ref().is_some_and(|j| j.fold() != Some(0.0));
         centre_moves || turns
     };

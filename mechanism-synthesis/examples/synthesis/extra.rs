@@ -15,7 +15,7 @@ use mechanism_synthesis::multistart;
 use mechanism_synthesis::problem::{objective, Problem};
 use mechanism_synthesis::rng::Rng;
 
-use crate::report::median;
+use crate::measure::{jacobian_cost, median};
 
 /// What [`measure`] found: its markdown, and its lines for the targets.
 pub struct Extra {
@@ -75,7 +75,7 @@ fn local_solvers(md: &mut String) {
         };
         let p = case.problem(Mode::Plus);
         let starts = draw_starts(&p);
-        let ratio = crate::report::jacobian_cost(&p);
+        let ratio = jacobian_cost(&p);
         let opt = |jacobian| Options {
             max_iterations: 200,
             jacobian,

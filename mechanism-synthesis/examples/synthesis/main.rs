@@ -20,6 +20,7 @@
 #[path = "../../../examples/common/cli.rs"]
 mod cli;
 mod extra;
+mod measure;
 mod report;
 use std::f64::consts::TAU;
 use std::path::PathBuf;

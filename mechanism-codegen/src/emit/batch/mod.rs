@@ -35,6 +35,7 @@ mod kernel;
 mod tests;
 
 use crate::emit::forces::ForceField;
+use crate::keys::{LinkName, PointName};
 use crate::kinds::{self, lane::OutputShape};
 use crate::model::{Level, Model};
 use crate::names::Family;
@@ -579,10 +580,10 @@ fn solve_batch(
 /// repeat it per element.
 /// `ty`: the output's type (`Point2<T>` for a point).
 fn constant(model: &Model, plan: &Plan, output: &Ident, shape: OutputShape) -> bool {
-    let o = output.to_string();
     if shape == OutputShape::Point {
-        return !crate::emit::moving_points(model, plan).contains(&o);
+        return !crate::emit::moving_points(model, plan).contains(&PointName::of(output));
     }
+    let o = LinkName::of(output);
     plan.links.contains_key(&o) && plan.turning_link(&o).is_none()
 }
 

@@ -6,6 +6,7 @@
 
 use super::ForceEmitter;
 use crate::emit::tag;
+use crate::keys::{LinkName, PointName};
 use crate::kinds::{self, forces::ForceCx};
 use crate::model::{ForceSpec, ForceSpecValue, Kind, Local, MassSpec, Model, Stmt, TorqueSpec};
 use crate::names::Family;
@@ -40,7 +41,7 @@ impl ForceEmitter<'_> {
     /// The inertia force, weight and inertia couple of a link with mass, and
     /// their powers.
     fn mass(&mut self, m: &MassSpec) {
-        let link = m.link.to_string();
+        let link = LinkName::of(&m.link);
         let forces = self.part_forces(m, Part::whole(&link));
         let couple = match (&m.inertia, self.rates_of(&m.link)) {
             (Some(j), Some((w, alpha))) if j.fold() != Some(0.0) => {
@@ -66,7 +67,7 @@ impl ForceEmitter<'_> {
     /// combined centre to compute), and one inertia couple `-(sum j_k)
     /// alpha`, the sum folded when every `j` is literal. Locals are numbered
     /// by part from 1 in the order written (`pw_inertia_force_LINK_1`).
-    fn mass_parts(&mut self, link: &str, parts: &[&MassSpec]) {
+    fn mass_parts(&mut self, link: &LinkName, parts: &[&MassSpec]) {
         let mut inertias = Vec::new();
         for (k, m) in parts.iter().enumerate() {
             let part = Part {
@@ -136,7 +137,7 @@ impl ForceEmitter<'_> {
 
     /// A part's forces and powers added: the powers to the balance, the sum
     /// of the forces to `link`'s load at the part's centre.
-    fn place_part(&mut self, link: &str, m: &MassSpec, forces: PartForces) {
+    fn place_part(&mut self, link: &LinkName, m: &MassSpec, forces: PartForces) {
         self.power.extend(forces.powers);
         if let Some(total) = sum(&forces.terms) {
             self.force_on(link, total, &m.at);
@@ -146,8 +147,8 @@ impl ForceEmitter<'_> {
     /// External force number `n` and its power.
     fn external_force(&mut self, n: usize, f: &ForceSpec) {
         let link = match &f.on {
-            Some(l) => l.to_string(),
-            None => self.plan.links_with_point(&f.at.to_string())[0].clone(),
+            Some(l) => LinkName::of(l),
+            None => self.plan.links_with_point(&PointName::of(&f.at))[0].clone(),
         };
         let local = Family::PwForce.of(n);
         let value = match &f.value {
@@ -177,7 +178,7 @@ impl ForceEmitter<'_> {
             self.power.push(quote!(#local * #w));
         }
         self.add(
-            &t.on.to_string(),
+            &LinkName::of(&t.on),
             quote!(::mechanism::force::Wrench::couple(#local)),
         );
     }
@@ -188,7 +189,7 @@ impl ForceEmitter<'_> {
     /// must be finite and positive, a moment of inertia finite and not
     /// negative, else a typed error naming the group that creates the link
     /// (a negative mass would give finite, consistent and wrong reactions).
-    fn checked(&mut self, value: &Value, link: &str, quantity: Quantity) -> TokenStream {
+    fn checked(&mut self, value: &Value, link: &LinkName, quantity: Quantity) -> TokenStream {
         self.checked_as(value, Part::whole(link), quantity)
     }
 
@@ -202,7 +203,7 @@ impl ForceEmitter<'_> {
             .model
             .stmts
             .iter()
-            .find(|s| s.links.iter().any(|l| l == link))
+            .find(|s| s.links.iter().any(|l| *link == *l))
         else {
             return value.emit();
         };
@@ -230,10 +231,10 @@ impl ForceEmitter<'_> {
 
 /// The masses grouped by link, links in the order of their first `mass`,
 /// parts in the order written.
-pub(crate) fn masses_by_link(masses: &[MassSpec]) -> Vec<(String, Vec<&MassSpec>)> {
-    let mut out: Vec<(String, Vec<&MassSpec>)> = Vec::new();
+pub(crate) fn masses_by_link(masses: &[MassSpec]) -> Vec<(LinkName, Vec<&MassSpec>)> {
+    let mut out: Vec<(LinkName, Vec<&MassSpec>)> = Vec::new();
     for m in masses {
-        let link = m.link.to_string();
+        let link = LinkName::of(&m.link);
         match out.iter_mut().find(|(l, _)| *l == link) {
             Some((_, parts)) => parts.push(m),
             None => out.push((link, vec![m])),
@@ -247,13 +248,13 @@ pub(crate) fn masses_by_link(masses: &[MassSpec]) -> Vec<(String, Vec<&MassSpec>
 /// written; locals named after `LINK_k`).
 #[derive(Clone, Copy)]
 struct Part<'a> {
-    link: &'a str,
+    link: &'a LinkName,
     number: Option<usize>,
 }
 
 impl<'a> Part<'a> {
     /// The link's only mass.
-    fn whole(link: &'a str) -> Self {
+    fn whole(link: &'a LinkName) -> Self {
         Part { link, number: None }
     }
 
@@ -335,7 +336,7 @@ pub(super) fn parts_doc(model: &Model) -> String {
 /// centre from it in the link's frame, moment of inertia about the centre.
 fn combined(
     model: &Model,
-    link: &str,
+    link: &LinkName,
     parts: &[&MassSpec],
 ) -> Option<(f64, String, mechanism_core::Vector2<f64>, f64)> {
     use mechanism_core::Vector2;
@@ -357,7 +358,7 @@ fn combined(
                     link: l,
                     from,
                     local,
-                } if *l == link => Some((from.to_string(), local)),
+                } if *link == *l => Some((from.to_string(), local)),
                 _ => None,
             });
         let (from, offset) = match point {

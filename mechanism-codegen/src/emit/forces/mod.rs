@@ -14,6 +14,7 @@ mod loads;
 
 use super::describe::{fields_impl, FieldEntry};
 use super::names::TypeNames;
+use crate::keys::{GuideName, LinkName, PointName};
 use crate::kinds::{self, forces::ForceCx};
 use crate::model::Model;
 use crate::names::Family;
@@ -59,9 +60,9 @@ pub(crate) use loads::masses_by_link;
 struct ForceEmitter<'a> {
     model: &'a Model,
     plan: &'a Plan,
-    moving: &'a BTreeSet<String>,
+    moving: &'a BTreeSet<PointName>,
     /// Links whose load local exists (the others carry no load yet).
-    loaded: BTreeSet<String>,
+    loaded: BTreeSet<LinkName>,
     code: TokenStream,
     /// Power terms (expressions) for the balance.
     power: Vec<TokenStream>,
@@ -74,26 +75,26 @@ struct ForceEmitter<'a> {
 }
 
 impl ForceCx for ForceEmitter<'_> {
-    fn body_of_point(&self, point: &Ident) -> Option<String> {
-        self.plan.body_of_point(&point.to_string())
+    fn body_of_point(&self, point: &Ident) -> Option<LinkName> {
+        self.plan.body_of_point(&PointName::of(point))
     }
 
-    fn body_of_guide(&self, guide: &Ident) -> Option<String> {
-        self.plan.body_of_guide(&guide.to_string())
+    fn body_of_guide(&self, guide: &Ident) -> Option<LinkName> {
+        self.plan.body_of_guide(&GuideName::of(guide))
     }
 
     /// The reference point a link's load is accumulated about: its first point.
-    fn reference(&self, link: &str) -> Ident {
-        format_ident!("{}", self.plan.links[link].points[0])
+    fn reference(&self, link: &LinkName) -> Ident {
+        self.plan.links[link].points[0].ident()
     }
 
     /// The load of `link` as a wrench about `point`.
     fn load_about(&self, link: &Ident, point: &Ident) -> TokenStream {
-        let l = link.to_string();
+        let l = LinkName::of(link);
         if !self.loaded.contains(&l) {
             return quote!(::mechanism::force::Wrench::zero());
         }
-        let local = Family::Load.named(&l);
+        let local = Family::Load.of(&l);
         let r = self.reference(&l);
         if *point == r {
             quote!(#local)
@@ -103,9 +104,9 @@ impl ForceCx for ForceEmitter<'_> {
     }
 
     /// Adds a wrench (given as code about the link's reference point) to a link's load.
-    fn add(&mut self, link: &str, wrench: TokenStream) {
-        let local = Family::Load.named(link);
-        if self.loaded.insert(link.to_string()) {
+    fn add(&mut self, link: &LinkName, wrench: TokenStream) {
+        let local = Family::Load.of(link);
+        if self.loaded.insert(link.clone()) {
             self.code.extend(quote!(let #local = #wrench;));
         } else {
             self.code.extend(quote!(let #local = #local + #wrench;));
@@ -200,7 +201,7 @@ impl ForceEmitter<'_> {
 
     /// Velocity of a point (code), `None` when it never moves.
     fn velocity(&self, point: &Ident) -> Option<TokenStream> {
-        self.moving.contains(&point.to_string()).then(|| {
+        self.moving.contains(&PointName::of(point)).then(|| {
             let v = Family::Vel.of(point);
             quote!(vel.#v)
         })
@@ -209,8 +210,8 @@ impl ForceEmitter<'_> {
     /// Angular velocity and acceleration of a link (code), `None` when it
     /// does not turn.
     fn rates_of(&self, link: &Ident) -> Option<(TokenStream, TokenStream)> {
-        self.plan.turning_link(&link.to_string()).map(|l| {
-            let (w, a) = (Family::Omega.named(&l), Family::Alpha.named(&l));
+        self.plan.turning_link(&LinkName::of(link)).map(|l| {
+            let (w, a) = (Family::Omega.of(&l), Family::Alpha.of(&l));
             (quote!(vel.#w), quote!(acc.#a))
         })
     }
@@ -218,7 +219,7 @@ impl ForceEmitter<'_> {
 
 /// Emits the force analysis of a valid, planned model whose definition asks
 /// for it. `moving` holds the points that move.
-pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<String>) -> ForcesCode {
+pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<PointName>) -> ForcesCode {
     let mut em = ForceEmitter {
         model,
         plan,

@@ -3,6 +3,7 @@
 //! position code) as a residual recomputed from the solved points.
 
 use super::Context;
+use crate::keys::LinkName;
 use crate::kinds;
 use crate::kinds::closure::{Residual, Residuals};
 use crate::model::{Model, Stmt};
@@ -23,7 +24,7 @@ fn with_defaults(model: &Model, v: &Value) -> Option<f64> {
 fn residuals(model: &Model, plan: &Plan, stmt: &Stmt) -> Vec<Residual> {
     let mut r = Residuals::new(&stmt.name);
     let link_axis = |link: &Ident| {
-        let info = &plan.links[&link.to_string()];
+        let info = &plan.links[&LinkName::of(link)];
         kinds::of(&model.stmts[info.stmt]).closure_axis(info.index)
     };
     kinds::of(stmt).residuals(&mut r, &link_axis);

@@ -4,13 +4,14 @@
 //! from `params`), its assembly mode from the drawing, its spans on the
 //! user's names.
 
+use super::exprs::{distance, name, name_arg, turn, value};
 use super::steps::{side, Axis, Frame, Step};
 use super::{Drawing, Joint, JointId, LinkId, Slider};
 use crate::parse::vocabulary::KindWord;
 use crate::parse::{Arg, Let};
-use proc_macro2::{Group, Span, TokenStream, TokenTree};
+use proc_macro2::TokenStream;
 use quote::quote;
-use syn::{Expr, Ident};
+use syn::Ident;
 
 /// The `let` statement of one step.
 pub(super) fn statement(d: &Drawing, step: &Step) -> Let {
@@ -406,49 +407,6 @@ fn drawn_input(d: &Drawing) -> TokenStream {
     }
 }
 
-/// A generated expression as an argument, every token of it spanned on
-/// `at` (the user's name it is computed for), so that a message about it
-/// (an overflow, a value outside a range) points into the definition.
-pub(super) fn value(t: TokenStream, at: Span) -> Arg {
-    Arg::Value(
-        syn::parse2(respan(t, at)).expect("a generated expression parses"),
-        None,
-    )
-}
-
-/// `t` with every token spanned on `at`.
-fn respan(t: TokenStream, at: Span) -> TokenStream {
-    t.into_iter()
-        .map(|tree| match tree {
-            TokenTree::Group(g) => {
-                let mut group = Group::new(g.delimiter(), respan(g.stream(), at));
-                group.set_span(at);
-                TokenTree::Group(group)
-            }
-            mut other => {
-                other.set_span(at);
-                other
-            }
-        })
-        .collect()
-}
-
-/// A joint's name as an argument.
-pub(super) fn name(j: &Joint) -> Arg {
-    name_arg(&j.name)
-}
-
-/// A name as an argument.
-pub(super) fn name_arg(i: &Ident) -> Arg {
-    Arg::Value(Expr::Path(syn::parse_quote!(#i)), None)
-}
-
-/// `hypot(xb - xa, yb - ya)`.
-pub(super) fn distance(a: &Joint, b: &Joint) -> TokenStream {
-    let (ax, ay, bx, by) = (&a.x, &a.y, &b.x, &b.y);
-    quote!(hypot((#bx) - (#ax), (#by) - (#ay)))
-}
-
 /// `j`'s coordinates in the frame at `from` whose axis points to `toward`:
 /// `(d . u, u x d) / |u|` with `d = j - from`, `u = toward - from`.
 fn local(from: &Joint, toward: &Joint, j: &Joint) -> (TokenStream, TokenStream) {
@@ -460,26 +418,6 @@ fn local(from: &Joint, toward: &Joint, j: &Joint) -> (TokenStream, TokenStream) 
         quote!((#dx * #ux + #dy * #uy) / #len),
         quote!((#ux * #dy - #uy * #dx) / #len),
     )
-}
-
-/// The drawn angle of frame `f`'s axis (rad, counter-clockwise from +x, in
-/// (-pi, pi]): `atan2(ty - oy, tx - ox)`.
-pub(super) fn angle_of(d: &Drawing, f: Frame) -> TokenStream {
-    let (o, t) = (d.joint(f.origin), d.joint(f.toward));
-    let (ox, oy, tx, ty) = (&o.x, &o.y, &t.x, &t.y);
-    quote!(atan2((#ty) - (#oy), (#tx) - (#ox)))
-}
-
-/// The angle (rad, counter-clockwise) from the direction of frame `a` to
-/// that of frame `b`: `atan2(a x b, a . b)`.
-pub(super) fn turn(d: &Drawing, a: Frame, b: Frame) -> TokenStream {
-    let v = |f: Frame| {
-        let (o, t) = (d.joint(f.origin), d.joint(f.toward));
-        let (ox, oy, tx, ty) = (&o.x, &o.y, &t.x, &t.y);
-        (quote!(((#tx) - (#ox))), quote!(((#ty) - (#oy))))
-    };
-    let ((ax, ay), (bx, by)) = (v(a), v(b));
-    quote!(atan2(#ax * #by - #ay * #bx, #ax * #bx + #ay * #by))
 }
 
 /// The statements of a block on a moving link that define no joint: the

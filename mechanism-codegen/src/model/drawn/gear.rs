@@ -239,7 +239,7 @@ pub(super) fn args(
     mesh: Option<Frame>,
     carrier: Option<Frame>,
 ) -> Vec<Arg> {
-    use super::emit::{angle_of, distance, name, name_arg, turn, value};
+    use super::exprs::{angle_of, distance, name, name_arg, turn, value};
     use quote::quote;
     let g = &d.gears[k];
     let (pivot, tip) = (d.joint(frame.origin), d.joint(frame.toward));

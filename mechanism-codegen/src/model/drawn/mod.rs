@@ -19,6 +19,7 @@
 
 mod decompose;
 mod emit;
+mod exprs;
 mod gear;
 mod groups;
 mod modes;
