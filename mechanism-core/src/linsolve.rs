@@ -281,13 +281,12 @@ pub struct Factored<T, const N: usize> {
     inv_scale: [T; N],
     /// The row exchanged with row `k` at step `k` (`k` itself for none).
     swap: [usize; N],
-    /// `mult[k][i]`: the multiple of row `k` subtracted from row `i > k` at
-    /// step `k` (0 where the entry was already zero).
-    mult: [[T; N]; N],
-    /// The upper-triangular factor (on and above the diagonal).
-    upper: [[T; N]; N],
-    /// `1 / upper[k][k]`.
-    inv_pivot: [T; N],
+    /// The factors in one square: above the diagonal the upper-triangular
+    /// factor; on it the pivots' reciprocals; below it, at `[i][k]`, the
+    /// multiple of row `k` subtracted from the row at position `i > k` at
+    /// step `k` (0 where the entry was already zero; later steps exchange
+    /// only the columns after theirs, so it stays where it was made).
+    lu: [[T; N]; N],
 }
 
 /// Eliminates `a` as [`solve`] does and keeps the elimination; returns it
@@ -323,8 +322,6 @@ pub fn factor<T: Real, const N: usize>(
     let threshold = T::lit(PIVOT_TOLERANCE * N as f64) * T::eps();
     let mut min_pivot_ratio = T::one();
     let mut swap = [0; N];
-    let mut mult = [[T::zero(); N]; N];
-    let mut inv_pivots = [T::one(); N];
     for k in 0..N {
         let (p, best) = a
             .iter()
@@ -365,31 +362,27 @@ pub fn factor<T: Real, const N: usize>(
             ));
         }
         let (upper, lower) = a.split_at_mut(k + 1);
-        let (Some(pivot_row), Some(mk)) = (upper.last(), mult.get_mut(k)) else {
+        let Some(pivot_row) = upper.last_mut() else {
             continue;
         };
         let inv_pivot = T::one() / pivot;
-        if let Some(slot) = inv_pivots.get_mut(k) {
-            *slot = inv_pivot;
-        }
-        for (row, m_i) in lower.iter_mut().zip(mk.iter_mut().skip(k + 1)) {
+        for row in lower.iter_mut() {
             let e = row[k];
             if e != T::zero() {
                 let m = e * inv_pivot;
                 for j in k + 1..N {
                     row[j] -= m * pivot_row[j];
                 }
-                *m_i = m;
+                row[k] = m;
             }
         }
+        pivot_row[k] = inv_pivot;
     }
     Ok((
         Factored {
             inv_scale,
             swap,
-            mult,
-            upper: a,
-            inv_pivot: inv_pivots,
+            lu: a,
         },
         min_pivot_ratio,
     ))
@@ -413,7 +406,7 @@ impl<T: Real, const N: usize> Factored<T, N> {
         for (bi, inv) in b.iter_mut().zip(self.inv_scale.iter()) {
             *bi *= *inv;
         }
-        for (k, (&p, mk)) in self.swap.iter().zip(self.mult.iter()).enumerate() {
+        for (k, &p) in self.swap.iter().enumerate() {
             if p != k && p < N {
                 b.swap(k, p);
             }
@@ -421,19 +414,20 @@ impl<T: Real, const N: usize> Factored<T, N> {
             let Some(&bk) = b_upper.last() else {
                 continue;
             };
-            for (bi, &m) in b_lower.iter_mut().zip(mk.iter().skip(k + 1)) {
+            for (bi, row) in b_lower.iter_mut().zip(self.lu.iter().skip(k + 1)) {
+                let m = row[k];
                 if m != T::zero() {
                     *bi -= m * bk;
                 }
             }
         }
         for k in (0..N).rev() {
-            let row = &self.upper[k];
+            let row = &self.lu[k];
             let mut acc = b[k];
             for j in k + 1..N {
                 acc -= row[j] * b[j];
             }
-            b[k] = acc * self.inv_pivot[k];
+            b[k] = acc * row[k];
         }
         if b.iter().all(|v| v.finite()) {
             Ok(b)
