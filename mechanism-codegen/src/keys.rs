@@ -39,6 +39,11 @@ use quote::{format_ident, IdentFragment};
 use std::fmt;
 use syn::Ident;
 
+/// The fixed frame's name where a link is written (`ground` as a guide's or
+/// gear's carrier, a motor's reaction body, the `ground` in the field
+/// `r_ground_link2`): a word the language reserves, never a moving link's.
+pub const GROUND: &str = "ground";
+
 /// Declares a key newtype over the name's text, with its constructors, its
 /// text, its identifier and its formatting.
 macro_rules! key {

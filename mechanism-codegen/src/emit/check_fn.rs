@@ -4,6 +4,7 @@
 
 use crate::check::joints_at_infinity;
 use crate::kinds;
+use crate::kinds::reads::Reads;
 use crate::model::{Model, StmtId};
 use crate::plan::{checked, Plan};
 use proc_macro2::TokenStream;
@@ -11,9 +12,9 @@ use quote::{format_ident, quote};
 use syn::Ident;
 
 /// The scaled determinant of a checked group, from the generated position
-/// struct `pos` (code).
-pub(crate) fn det_code(model: &Model, stmt_index: StmtId) -> TokenStream {
-    kinds::of(&model.stmts[stmt_index]).det_code()
+/// struct `pos` (code; `reads` records its reads).
+pub(crate) fn det_code(model: &Model, stmt_index: StmtId, reads: &Reads) -> TokenStream {
+    kinds::of(&model.stmts[stmt_index]).det_code(reads)
 }
 
 /// The generated `check()` method: the items to put beside the mechanism's
@@ -29,7 +30,8 @@ pub struct CheckFn {
 /// cylinder, a target's coordinate, either of two inputs not both declared),
 /// or the inputs are more than two, `check()` still exists, and a call is a
 /// compile error saying which `range` statements to add ([`uncallable`]).
-pub fn emit_check(model: &Model, plan: &Plan, summary: &str) -> CheckFn {
+/// `reads` records its reads of the position struct.
+pub fn emit_check(model: &Model, plan: &Plan, summary: &str, reads: &Reads) -> CheckFn {
     let inputs = &model.inputs;
     let checked = checked(model, plan);
     if inputs.is_empty() || inputs.len() > 2 {
@@ -70,7 +72,11 @@ pub fn emit_check(model: &Model, plan: &Plan, summary: &str) -> CheckFn {
         .map(|&i| model.stmts[i].name.to_string())
         .collect();
     let indices: Vec<usize> = (0..g).collect();
-    let dets: Vec<TokenStream> = checked.groups.iter().map(|&i| det_code(model, i)).collect();
+    let dets: Vec<TokenStream> = checked
+        .groups
+        .iter()
+        .map(|&i| det_code(model, i, reads))
+        .collect();
     let input_names: Vec<&Ident> = inputs.iter().map(|i| &i.name).collect();
     let input_strs: Vec<String> = input_names.iter().map(|i| i.to_string()).collect();
     let ks: Vec<usize> = (0..d).collect();

@@ -21,6 +21,7 @@
 use super::forces::masses_by_link;
 use super::names::TypeNames;
 use crate::keys::{LinkName, PointName};
+use crate::kinds::reads::Reads;
 use crate::model::{ForceSpecValue, MassSpec, Model};
 use crate::names::Family;
 use crate::plan::Plan;
@@ -80,6 +81,8 @@ struct Terms<'a> {
     terms: Vec<Term>,
     /// Run-time checks of masses and inertias not known at expansion.
     checks: TokenStream,
+    /// The recorder of the code's reads of `pos`, `vel` and `acc`.
+    reads: &'a Reads,
 }
 
 impl Terms<'_> {
@@ -162,8 +165,8 @@ impl Terms<'_> {
                     quote!(::mechanism::Vector2::new(#x, #y))
                 }
                 ForceSpecValue::Along(guide, v) => {
-                    let v = v.emit();
-                    quote!((pos.#guide.dir * #v))
+                    let (guide, v) = (self.reads.pos(guide), v.emit());
+                    quote!((#guide.dir * #v))
                 }
             };
             self.terms.push(Term::Force {
@@ -245,16 +248,16 @@ fn equations(cx: &Terms<'_>, coefficients: &[Coefficient], n: usize) -> TokenStr
             Term::Translation { mass, at } => {
                 let (ci, a) = (
                     c(i, index(&Coefficient::Point(at.clone()))),
-                    Family::Acc.of(at),
+                    cx.reads.acc(&Family::Acc.of(at)),
                 );
-                Some(quote!(#mass * ::mechanism::geometry::dot(&#ci, &acc.#a)))
+                Some(quote!(#mass * ::mechanism::geometry::dot(&#ci, &#a)))
             }
             Term::Rotation { inertia, link } => {
                 let (ci, a) = (
                     c(i, index(&Coefficient::Link(link.clone()))),
-                    Family::Alpha.of(link),
+                    cx.reads.acc(&Family::Alpha.of(link)),
                 );
-                Some(quote!(#inertia * (#ci * acc.#a)))
+                Some(quote!(#inertia * (#ci * #a)))
             }
             _ => None,
         });
@@ -328,12 +331,14 @@ fn solve_code(inputs: &[Ident]) -> TokenStream {
 
 /// Emits the dynamics of a valid, planned model at `analysis dynamics`.
 /// `moving` holds the points that move; `loads_param` is the force
-/// analysis' extra parameter (empty without a `loads` block).
+/// analysis' extra parameter (empty without a `loads` block); `reads`
+/// records the code's reads of the analyses' structs.
 pub fn emit(
     model: &Model,
     plan: &Plan,
     moving: &BTreeSet<PointName>,
     loads_param: &TokenStream,
+    reads: &Reads,
 ) -> DynamicsCode {
     let mut cx = Terms {
         model,
@@ -341,6 +346,7 @@ pub fn emit(
         moving,
         terms: Vec::new(),
         checks: TokenStream::new(),
+        reads,
     };
     cx.collect();
     let names = TypeNames::of(model);
@@ -364,12 +370,15 @@ pub fn emit(
     }
     for i in 0..n {
         let locals: Vec<Ident> = (0..coefficients.len()).map(|k| c(i, k)).collect();
-        let fields: Vec<Ident> = coefficients.iter().map(Coefficient::field).collect();
+        let fields: Vec<TokenStream> = coefficients
+            .iter()
+            .map(|k| cx.reads.vel(&k.field()))
+            .collect();
         let u = unit(i);
         code.extend(quote! {
             let (#(#locals,)*) = {
                 let vel = self.velocity(pos, &#u)?;
-                (#(vel.#fields,)*)
+                (#(#fields,)*)
             };
         });
     }

@@ -7,6 +7,11 @@
 //! its inputs, `solve`), `position`, `rates` (velocity and acceleration),
 //! [`forces`], [`batch`], [`check_fn`] (`check()`), [`self_test`]; [`stub`] on
 //! error. `names` holds the names and small helpers they share.
+//!
+//! The fields the position, velocity and acceleration structs keep beside
+//! the outputs are those the other generated code reads: each emitter
+//! records its reads as it writes them (`kinds::reads::Reads`), and the
+//! structs are built last.
 
 pub mod batch;
 pub mod check_fn;
@@ -19,22 +24,22 @@ pub mod krate;
 mod names;
 mod position;
 mod rates;
-pub mod reads;
 pub mod self_test;
 mod solution;
 pub mod stub;
+mod stub_fields;
 
 use crate::check::Findings;
 use crate::keys::{LinkName, PointName};
 use crate::kinds::{self, Known};
 use crate::model::{Level, Model};
 use crate::plan::Plan;
+use kinds::reads::Reads;
 pub(crate) use names::{allow_literal_lints, tag};
 use names::{Generated, TypeNames};
 use proc_macro2::TokenStream;
 use quote::quote;
 use rates::Rate;
-use reads::Reads;
 use std::collections::BTreeSet;
 use syn::Ident;
 
@@ -42,17 +47,17 @@ use syn::Ident;
 /// `check()`, the expansion-time check's warnings and, with `#[self_test]`,
 /// its tests.
 pub fn mechanism(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
-    let check = check_fn::emit_check(model, plan, &findings.summary);
+    // The position struct keeps, among others, the fields these read
+    // (`pos.NAME`), recorded as they are emitted.
+    let reads = Reads::default();
+    let check = check_fn::emit_check(model, plan, &findings.summary, &reads);
     let self_tests = model
         .self_test
-        .map(|_| self_test::emit(model, plan, findings));
-    // The position struct keeps the fields these read (`pos.NAME`).
-    let mut readers = Reads::default();
-    readers.scan(&check.method);
-    if let Some(tests) = &self_tests {
-        readers.scan(tests);
-    }
-    let mut out = items(model, plan, &findings.known, readers);
+        .map(|_| self_test::emit(model, plan, findings, &reads));
+    let readers: Vec<&TokenStream> = std::iter::once(&check.method)
+        .chain(self_tests.as_ref())
+        .collect();
+    let mut out = items(model, plan, &findings.known, &reads, &readers);
     let name = &model.name;
     let allow_lints = allow_literal_lints();
     let (check_items, check) = (check.items, check.method);
@@ -82,12 +87,19 @@ pub(crate) fn moving_points(model: &Model, plan: &Plan) -> BTreeSet<PointName> {
     moving
 }
 
-/// The mechanism's structs and analyses. `readers`: the reads of the other
-/// generated code that reads position fields (the run-time `check()` and the
-/// `#[self_test]` tests); with the later analyses' own reads they decide
-/// which fields the position, velocity and acceleration structs keep
-/// ([`reads`]). `known`: what the check found that the position code reads.
-fn items(model: &Model, plan: &Plan, known: &Known, readers: Reads) -> TokenStream {
+/// The mechanism's structs and analyses. `reads`: the reads recorded by the
+/// other generated code that reads position fields (the run-time `check()`
+/// and the `#[self_test]` tests, whose code is `readers`); with the later
+/// analyses' own reads they decide which fields the position, velocity and
+/// acceleration structs keep ([`kinds::reads`]). `known`: what the check
+/// found that the position code reads.
+fn items(
+    model: &Model,
+    plan: &Plan,
+    known: &Known,
+    reads: &Reads,
+    readers: &[&TokenStream],
+) -> TokenStream {
     let em = position::Emitter::new(model, plan, known, false);
     let moving = moving_points(model, plan);
     let inputs = names::input_names(model);
@@ -95,34 +107,47 @@ fn items(model: &Model, plan: &Plan, known: &Known, readers: Reads) -> TokenStre
     // The later analyses, generated first: the hidden fields of the
     // position, velocity and acceleration structs are only those a later
     // analysis (or `check()`, or the self-tests) reads (`pos.NAME`,
-    // `vel.NAME`, `acc.NAME`); the rest are locals and never stored.
+    // `vel.NAME`, `acc.NAME`, recorded in `reads`); the rest are locals and
+    // never stored.
     let level = model.level;
-    let forces = (level >= Level::Forces).then(|| forces::emit(model, plan, &moving));
+    let forces = (level >= Level::Forces).then(|| forces::emit(model, plan, &moving, reads));
     let dynamics = forces
         .as_ref()
         .filter(|_| level >= Level::Dynamics)
-        .map(|f| dynamics::emit(model, plan, &moving, &f.loads_param));
+        .map(|f| dynamics::emit(model, plan, &moving, &f.loads_param, reads));
     let accel = (level >= Level::Acceleration)
-        .then(|| rates::code(model, plan, &moving, Rate::Acceleration));
-    let vel = (level >= Level::Velocity).then(|| rates::code(model, plan, &moving, Rate::Velocity));
-    let mut reads = readers;
-    for rates in [&vel, &accel].into_iter().flatten() {
-        reads.scan(&rates.code);
-    }
-    if let Some(f) = &forces {
-        reads.scan(&f.methods);
-    }
-    if let Some(d) = &dynamics {
-        reads.scan(&d.methods);
-    }
-    if let Some(code) = position::tracking_code(&em) {
-        reads.scan(&code);
+        .then(|| rates::code(model, plan, &moving, Rate::Acceleration, reads));
+    let vel = (level >= Level::Velocity)
+        .then(|| rates::code(model, plan, &moving, Rate::Velocity, reads));
+    let tracking = position::tracking_code(&em, reads);
+    // Debug builds: every read in the readers' tokens was recorded, and
+    // every recorded read is in them.
+    if cfg!(debug_assertions) {
+        let (unrecorded, unwritten) = reads.mismatch(
+            readers
+                .iter()
+                .copied()
+                .chain(vel.iter().chain(&accel).map(|r| &r.code))
+                .chain(forces.iter().map(|f| &f.methods))
+                .chain(dynamics.iter().map(|d| &d.methods))
+                .chain(&tracking),
+        );
+        assert!(
+            unrecorded.is_empty() && unwritten.is_empty(),
+            "reads written into tokens without `kinds::reads::Reads`: {unrecorded:?}; recorded reads in no emitted code: {unwritten:?}"
+        );
     }
 
     let mut out = solution::own_items(model, plan, &inputs);
-    out.push(position::items(&em, &position, &reads, &inputs));
+    out.push(position::items(
+        &em,
+        &position,
+        tracking.as_ref(),
+        reads,
+        &inputs,
+    ));
     if let Some(vel) = vel {
-        out.push(rates::velocity_items(model, plan, vel, &reads));
+        out.push(rates::velocity_items(model, plan, vel, reads));
     }
     if let Some(accel) = accel {
         if let Some(f) = &forces {
@@ -137,7 +162,7 @@ fn items(model: &Model, plan: &Plan, known: &Known, readers: Reads) -> TokenStre
                 methods: d.methods,
             });
         }
-        out.push(rates::acceleration_items(model, plan, accel, &reads));
+        out.push(rates::acceleration_items(model, plan, accel, reads));
         out.push(solution::solve_items(model, forces.as_ref()));
     }
     // `Display` of the result structs, and what the definition's derives ask for.

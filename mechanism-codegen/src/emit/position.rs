@@ -3,8 +3,8 @@
 //! the `position` and `position_cos_sin` methods.
 
 use super::names::{debug_impl, grp, local, marker, output_docs, tag, Generated, TypeNames};
-use super::reads::{Analysis, Reads};
 use crate::keys::LinkName;
+use crate::kinds::reads::{Analysis, Reads};
 use crate::kinds::{self, lane::OutputShape, tokens::axis, Known, Solve};
 use crate::model::{Model, StmtId};
 use crate::plan::Plan;
@@ -58,8 +58,9 @@ pub(super) struct Emitter<'a> {
     /// `input_cs.NAME.cos` and `.sin`.
     cos_sin: bool,
     /// Emitting `position_near`: kinds with several assemblies follow the
-    /// previous position's (`GroupKind::position_tracking`).
-    tracking: bool,
+    /// previous position's (`GroupKind::position_tracking`), their reads
+    /// of it recorded here.
+    tracking: Option<&'a Reads>,
 }
 
 impl<'a> Emitter<'a> {
@@ -78,7 +79,7 @@ impl<'a> Emitter<'a> {
             known,
             axes,
             cos_sin,
-            tracking: false,
+            tracking: None,
         }
     }
 
@@ -116,7 +117,10 @@ impl<'a> Emitter<'a> {
         let stmt = &self.model.stmts[id];
         let (name, g, t) = (&local(&stmt.name), grp(stmt), tag(stmt));
         let kind = kinds::of_known(&self.model.stmts, id, self.known);
-        let solve = match self.tracking.then(|| kind.position_tracking()).flatten() {
+        let solve = match self
+            .tracking
+            .and_then(|reads| kind.position_tracking(reads))
+        {
             Some(solve) => solve,
             None => kind.position(self.cos_sin),
         };
@@ -231,11 +235,13 @@ impl<'a> PositionStruct<'a> {
 }
 
 /// The position struct and the `position` method; with cranks marked
-/// `as cos_sin`, also the `CosSin` input struct and `position_cos_sin`.
+/// `as cos_sin`, also the `CosSin` input struct and `position_cos_sin`;
+/// with `tracking` (the code of [`tracking_code`]), `position_near`.
 /// `reads`: what every later reader reads of the struct.
 pub(super) fn items(
     em: &Emitter<'_>,
     code: &PositionCode,
+    tracking: Option<&TokenStream>,
     reads: &Reads,
     inputs: &[Ident],
 ) -> Generated {
@@ -300,7 +306,7 @@ pub(super) fn items(
         }
     });
     out.push(cos_sin_items(em, &names, inputs, layout.keep_input, &value));
-    if let Some(code) = tracking_code(em) {
+    if let Some(code) = tracking {
         let doc = "Solves the position analysis on the same assembly as `previous` (a triad's: Newton from its pose, falling back to the full search, `NotNear` when that assembly has met another one or vanished): the form for sweeps and real-time loops, where `position` picks the assembly from the pose tracked at expansion time.";
         out.methods.extend(quote! {
             #[doc = #doc]
@@ -318,16 +324,24 @@ pub(super) fn items(
     out
 }
 
-/// The code of `position_near` (its reads of `pos` decide the position
-/// struct's hidden fields), `None` when no statement has several assemblies.
-pub(super) fn tracking_code(em: &Emitter<'_>) -> Option<TokenStream> {
+/// The code of `position_near` (its reads of `pos`, recorded in `reads`,
+/// are among those that decide the position struct's hidden fields), `None`
+/// when no statement has several assemblies.
+pub(super) fn tracking_code(em: &Emitter<'_>, reads: &Reads) -> Option<TokenStream> {
     let (model, plan) = (em.model, em.plan);
+    // Whether a statement has a tracking form; the code that asks goes
+    // nowhere, so its reads are recorded apart.
+    let probe = Reads::default();
     plan.solve
         .iter()
-        .any(|&i| kinds::of(&model.stmts[i]).position_tracking().is_some())
+        .any(|&i| {
+            kinds::of(&model.stmts[i])
+                .position_tracking(&probe)
+                .is_some()
+        })
         .then(|| {
             let mut tr = Emitter::new(model, plan, em.known, false);
-            tr.tracking = true;
+            tr.tracking = Some(reads);
             tr.code().code
         })
 }
@@ -426,8 +440,6 @@ fn cos_sin_items(
 mod tests {
     use super::*;
     use crate::emit::test_support::{flat, four_bar, planned};
-    use proc_macro2::TokenStream;
-    use std::str::FromStr;
 
     /// The statement named `name`.
     fn stmt(model: &Model, name: &str) -> StmtId {
@@ -499,11 +511,11 @@ mod tests {
         let em = Emitter::new(&model, &plan, &known, false);
         let code = em.code();
         let inputs = crate::emit::names::input_names(&model);
-        let none = flat(&items(&em, &code, &Reads::default(), &inputs).items);
+        let none = flat(&items(&em, &code, None, &Reads::default(), &inputs).items);
         assert!(!none.contains("doc(hidden)"), "{none}");
-        let mut reads = Reads::default();
-        reads.scan(&TokenStream::from_str("pos.grp_B.c").unwrap());
-        let kept = flat(&items(&em, &code, &reads, &inputs).items);
+        let reads = Reads::default();
+        let _ = reads.pos(&format_ident!("grp_B"));
+        let kept = flat(&items(&em, &code, None, &reads, &inputs).items);
         assert!(
             kept.contains("#[doc(hidden)]pubgrp_B:::mechanism::dyad::rrr::RrrPosition<T>,"),
             "{kept}"

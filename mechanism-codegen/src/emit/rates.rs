@@ -3,10 +3,10 @@
 //! acceleration structs and their methods.
 
 use super::names::{debug_impl, lit_zero, marker, opt_point, output_docs, Generated, TypeNames};
-use super::reads::{Analysis, Reads};
 use crate::keys::{GuideName, LinkName, PointName};
 use crate::kinds;
 use crate::kinds::rates::{vec_ty, RateCx};
+use crate::kinds::reads::{Analysis, Reads};
 use crate::model::{Model, StmtId};
 use crate::names::Family;
 use crate::plan::{Outputs, Plan};
@@ -61,6 +61,8 @@ struct RateEmitter<'a> {
     code: TokenStream,
     fields: Vec<Field>,
     slide_values: Vec<(StmtId, usize, TokenStream)>,
+    /// The recorder of the code's reads of `pos` and `vel`.
+    reads: &'a Reads,
 }
 
 fn none() -> TokenStream {
@@ -87,7 +89,8 @@ impl RateCx for RateEmitter<'_> {
         }
         let n = Family::Gvel.of(g);
         if self.accel {
-            quote!(::core::option::Option::Some(&vel.#n))
+            let n = self.reads.vel(&n);
+            quote!(::core::option::Option::Some(&#n))
         } else {
             quote!(::core::option::Option::Some(&#n))
         }
@@ -108,10 +111,9 @@ impl RateCx for RateEmitter<'_> {
     }
 
     fn link_omega_in_accel(&self, link: &Ident) -> Option<TokenStream> {
-        self.plan.turning_link(&LinkName::of(link)).map(|l| {
-            let w = Family::Omega.of(&l);
-            quote!(vel.#w)
-        })
+        self.plan
+            .turning_link(&LinkName::of(link))
+            .map(|l| self.reads.vel(&Family::Omega.of(&l)))
     }
 
     fn code(&mut self, code: TokenStream) {
@@ -124,6 +126,10 @@ impl RateCx for RateEmitter<'_> {
 
     fn slide(&mut self, slot: usize, value: TokenStream) {
         self.slide_values.push((self.current, slot, value));
+    }
+
+    fn reads(&self) -> &Reads {
+        self.reads
     }
 }
 
@@ -185,12 +191,13 @@ impl RateEmitter<'_> {
 }
 
 /// Velocity or acceleration statements of a planned model; `moving` holds
-/// the points that move.
+/// the points that move; `reads` records the code's reads of `pos` and `vel`.
 pub(super) fn code(
     model: &Model,
     plan: &Plan,
     moving: &BTreeSet<PointName>,
     rate: Rate,
+    reads: &Reads,
 ) -> RatesCode {
     let accel = rate == Rate::Acceleration;
     let mut em = RateEmitter {
@@ -203,6 +210,7 @@ pub(super) fn code(
         code: TokenStream::new(),
         fields: Vec::new(),
         slide_values: Vec::new(),
+        reads,
     };
     for &i in &plan.solve {
         em.current = i;
@@ -372,6 +380,8 @@ pub(super) fn acceleration_items(
     };
     let debug = debug_impl(acceleration_ty, on, &[]);
     let items = quote!(#items #debug);
+    // `vel.rates` is a field every velocity struct has, read by the
+    // velocity's own family: not a reader that decides the struct's fields.
     let methods = quote! {
         /// Solves the acceleration analysis at `pos`, `vel` for the input
         /// accelerations (rad/s^2 or length units per s^2).
@@ -396,7 +406,7 @@ mod tests {
     fn rates(src: &str, rate: Rate) -> RatesCode {
         let (model, plan) = planned(src);
         let moving = moving_points(&model, &plan);
-        code(&model, &plan, &moving, rate)
+        code(&model, &plan, &moving, rate, &Reads::default())
     }
 
     fn output(rates: &RatesCode, name: &str) -> String {

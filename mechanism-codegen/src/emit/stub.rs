@@ -2,8 +2,9 @@
 //! the `compile_error!`s, and stubs with the real names and fields so the
 //! user's own code reports no follow-on errors.
 
+use super::stub_fields::FieldsOnly;
+use crate::kinds;
 use crate::kinds::word::KindWord;
-use crate::kinds::{self, forces::FieldsOnly};
 use crate::model::{FailedKind, Level, Model};
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};

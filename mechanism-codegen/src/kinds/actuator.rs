@@ -9,12 +9,14 @@
 
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, prismatic, revolute, rx, ForceCx, Held};
+use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
+use super::pose::Pose;
 use super::rates::{states, two_links, RateCx};
+use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, mode_arg};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::keys::LinkName;
 use crate::kinds::pose::{mode, num};
@@ -113,10 +115,12 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
     fn rates(&self, cx: &mut dyn RateCx) {
         let ((g, gv), input) = (states(self.stmt), self.input);
         let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
+        let g = cx.reads().pos(&g);
         let call = if cx.accel() {
-            quote!(::mechanism::driver::actuator::acceleration(&pos.#g, &vel.#gv, #ma, #mb, rates.#input, accels.#input))
+            let gv = cx.reads().vel(&gv);
+            quote!(::mechanism::driver::actuator::acceleration(&#g, &#gv, #ma, #mb, rates.#input, accels.#input))
         } else {
-            quote!(::mechanism::driver::actuator::velocity(&pos.#g, #ma, #mb, rates.#input))
+            quote!(::mechanism::driver::actuator::velocity(&#g, #ma, #mb, rates.#input))
         };
         let gr = cx.group(self.stmt, call, quote!(driver::actuator), "Actuator");
         two_links(cx, self.stmt, &gr);
@@ -128,19 +132,19 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
 
     /// `C` at `l` from `A`, at the input length from `B`, on its branch.
     fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
-        let input = self.input;
+        let (inputs, input) = (r.reads.pos_input(), self.input);
         r.at_length("|C - A| = l", self.a, f(self.l));
         r.at_length(
             "|C - B| = input length",
             self.b,
-            quote!(<T as ::mechanism::Real>::as_f64(pos.input.#input)),
+            quote!(<T as ::mechanism::Real>::as_f64(#inputs.#input)),
         );
         r.dyad_branch(self.a, self.b, self.mode);
     }
 
-    fn closure_axis(&self, index: usize) -> TokenStream {
+    fn closure_axis(&self, index: usize, reads: &Reads) -> TokenStream {
         let from = if index == 0 { self.a } else { self.b };
-        axis_between(from, &self.stmt.name)
+        axis_between(from, &self.stmt.name, reads)
     }
 
     fn link_lengths(&self) -> Vec<&'a Value> {
@@ -171,9 +175,9 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         "Actuator"
     }
 
-    fn det_code(&self) -> TokenStream {
-        let g = grp(self.stmt);
-        quote!(::mechanism::__private::det_rrr(&pos.#g))
+    fn det_code(&self, reads: &Reads) -> TokenStream {
+        let g = reads.pos(&grp(self.stmt));
+        quote!(::mechanism::__private::det_rrr(&#g))
     }
 
     fn describe(&self) -> String {
@@ -209,18 +213,21 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
         let (stmt, a, b, input) = (self.stmt, self.a, self.b, self.input);
         let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
         let load = cx.load_about(&links[0], a);
+        let r = cx.reads();
+        let (pa, pb, pn) = (r.pos(a), r.pos(b), r.pos(name));
         cx.solve(
             stmt,
-            quote!(::mechanism::force::actuator::reactions(&pos.#a, &pos.#b, &pos.#name, &#load)),
+            quote!(::mechanism::force::actuator::reactions(&#pa, &#pb, &#pn, &#load)),
         );
         let body_a = cx.pass_revolute(a, &rx, "a");
         if let Some(body) = cx.body_of_point(b) {
             let axis = Family::RxAxis.of(name);
-            cx.code(quote!(let #axis = (pos.#name - pos.#b) / ::mechanism::geometry::length(&(pos.#name - pos.#b));));
+            cx.code(quote!(let #axis = (#pn - #pb) / ::mechanism::geometry::length(&(#pn - #pb));));
             cx.force_on(&body, quote!(#axis * (-#rx.axial)), b);
         }
         cx.reaction(revolute(&rx, &body_a, &links[0], a, "a"));
-        cx.power(quote!(#rx.axial * vel.rates.#input));
+        let rates = cx.reads().vel_rates();
+        cx.power(quote!(#rx.axial * #rates.#input));
         cx.condition(quote!(#rx.min_pivot_ratio));
         let doc = format!("Axial force of the actuator `{}` (input `{input}`; force units, positive when it pushes its ends apart).", links[1]);
         cx.reaction(drive(&rx, input, "axial", Held::Push, doc));
@@ -287,9 +294,11 @@ impl<'a> Actuator<'a> {
         let arm = cx.load_about(&links[0], a);
         let barrel = cx.load_about(&links[1], b);
         let rod = cx.load_about(&links[2], name);
+        let r = cx.reads();
+        let (pa, pb, pn) = (r.pos(a), r.pos(b), r.pos(name));
         cx.solve(
             stmt,
-            quote!(::mechanism::force::actuator::reactions_with_cylinder(&pos.#a, &pos.#b, &pos.#name, &#arm, &#rod, &#barrel)),
+            quote!(::mechanism::force::actuator::reactions_with_cylinder(&#pa, &#pb, &#pn, &#arm, &#rod, &#barrel)),
         );
         let body_a = cx.pass_revolute(a, &rx, "a");
         let body_b = cx.pass_revolute(b, &rx, "b");
@@ -299,7 +308,8 @@ impl<'a> Actuator<'a> {
         cx.reaction(revolute(&rx, &body_b, &links[1], b, "b"));
         let barrel_body = Some(LinkName::of(&links[1]));
         cx.reaction(prismatic(&rx, &barrel_body, &links[2], name, "pair"));
-        cx.power(quote!(#rx.axial * vel.rates.#input));
+        let rates = cx.reads().vel_rates();
+        cx.power(quote!(#rx.axial * #rates.#input));
         cx.condition(quote!(#rx.min_pivot_ratio));
         let doc = format!("Axial force of the actuator `{}`/`{}` (input `{input}`; force units): the pressure force between barrel and rod, positive when it pushes them apart.", links[1], links[2]);
         cx.reaction(drive(&rx, input, "axial", Held::Push, doc));

@@ -5,6 +5,7 @@
 //! `dot`, `turn`, `unit_of`, `wrong_side`) are those of the generated
 //! self-test module.
 
+use super::reads::Reads;
 use crate::model::Mode;
 use crate::value::Value;
 use proc_macro2::TokenStream;
@@ -55,15 +56,23 @@ pub struct Residuals<'a> {
     pub n: &'a Ident,
     /// Its constraints, in the generated order.
     pub list: Vec<Residual>,
+    /// The recorder of the residuals' reads of `pos`.
+    pub reads: &'a Reads,
 }
 
 impl<'a> Residuals<'a> {
-    /// No residuals yet for statement `n`.
-    pub fn new(n: &'a Ident) -> Self {
+    /// No residuals yet for statement `n`; `reads` records their reads.
+    pub fn new(n: &'a Ident, reads: &'a Reads) -> Self {
         Residuals {
             n,
             list: Vec::new(),
+            reads,
         }
+    }
+
+    /// `pos.FIELD`, recorded (see [`Reads::pos`]).
+    pub fn pos(&self, field: &Ident) -> TokenStream {
+        self.reads.pos(field)
     }
 
     /// Adds the constraint `what` with residual `code` and its scale.
@@ -80,29 +89,28 @@ impl<'a> Residuals<'a> {
     /// The assembly branch of a dyad on the two points `a`, `b`: the point
     /// on the side of `a -> b` that `mode` names.
     pub fn dyad_branch(&mut self, a: &Ident, b: &Ident, mode: Mode) {
-        let (n, m) = (self.n, mode_sign(mode));
+        let (n, m) = (self.pos(self.n), mode_sign(mode));
+        let (a, b) = (self.pos(a), self.pos(b));
         self.push(
             "assembly branch",
-            quote!(wrong_side(#m * cross(sub(pt(&pos.#b), pt(&pos.#a)), sub(pt(&pos.#n), pt(&pos.#a))) / norm(sub(pt(&pos.#b), pt(&pos.#a))))),
+            quote!(wrong_side(#m * cross(sub(pt(&#b), pt(&#a)), sub(pt(&#n), pt(&#a))) / norm(sub(pt(&#b), pt(&#a))))),
         );
     }
 
     /// The point on a guide's offset line: `cross(dir, P - origin) = offset`.
     pub fn on_offset_line(&mut self, what: &str, guide: &Ident, offset: &Value) {
-        let (n, o) = (self.n, f(offset));
+        let (n, o) = (self.pos(self.n), f(offset));
+        let guide = self.pos(guide);
         self.push(
             what,
-            quote!(cross(vc(&pos.#guide.dir), sub(pt(&pos.#n), pt(&pos.#guide.origin))) - #o),
+            quote!(cross(vc(&#guide.dir), sub(pt(&#n), pt(&#guide.origin))) - #o),
         );
     }
 
     /// The point at `length` from `from`: `|P - from| = length`.
     pub fn at_length(&mut self, what: &str, from: &Ident, length: TokenStream) {
-        let n = self.n;
-        self.push(
-            what,
-            quote!(norm(sub(pt(&pos.#n), pt(&pos.#from))) - #length),
-        );
+        let (n, from) = (self.pos(self.n), self.pos(from));
+        self.push(what, quote!(norm(sub(pt(&#n), pt(&#from))) - #length));
     }
 }
 
@@ -120,12 +128,15 @@ pub fn mode_sign(m: Mode) -> f64 {
     }
 }
 
-/// The unit axis from point `from` to point `to` (code, from the solved points).
-pub fn axis_between(from: &Ident, to: &Ident) -> TokenStream {
-    quote!(unit_of(sub(pt(&pos.#to), pt(&pos.#from))))
+/// The unit axis from point `from` to point `to` (code, from the solved
+/// points; `reads` records the reads).
+pub fn axis_between(from: &Ident, to: &Ident, reads: &Reads) -> TokenStream {
+    let (from, to) = (reads.pos(from), reads.pos(to));
+    quote!(unit_of(sub(pt(&#to), pt(&#from))))
 }
 
-/// A guide's unit direction (code).
-pub fn guide_axis(guide: &Ident) -> TokenStream {
-    quote!(unit_of(vc(&pos.#guide.dir)))
+/// A guide's unit direction (code; `reads` records the read).
+pub fn guide_axis(guide: &Ident, reads: &Reads) -> TokenStream {
+    let guide = reads.pos(guide);
+    quote!(unit_of(vc(&#guide.dir)))
 }

@@ -7,11 +7,13 @@
 
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, revolute, rx, ForceCx, Held};
+use super::group::{links_text, GroupKind, LinkShape, Placed, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
+use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
+use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, grp, local, tag, unit_field, unit_vector};
-use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
 use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;
@@ -153,13 +155,14 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         let w = cx.own(stmt, 0);
         let m = cx.point_arg(pivot);
         let carrier = self.carrier.and_then(|l| cx.link_rate(l).map(|w| (l, w)));
-        cx.code(match (cx.accel(), carrier) {
+        let g = cx.reads().pos(&g);
+        let code = match (cx.accel(), carrier) {
             (true, None) => quote! {
-                let #pv = ::mechanism::driver::crank::acceleration(&pos.#g, #m, rates.#input, accels.#input) #t;
+                let #pv = ::mechanism::driver::crank::acceleration(&#g, #m, rates.#input, accels.#input) #t;
                 let #w = accels.#input;
             },
             (false, None) => quote! {
-                let #pv = ::mechanism::driver::crank::velocity(&pos.#g, #m, rates.#input) #t;
+                let #pv = ::mechanism::driver::crank::velocity(&#g, #m, rates.#input) #t;
                 let #w = rates.#input;
             },
             // On a turning carrier the link's rates are the carrier's plus
@@ -168,14 +171,15 @@ impl<'a> GroupKind<'a> for Crank<'a> {
                 let omega_c = cx.link_omega_in_accel(l);
                 quote! {
                     let #w = #alpha_c + accels.#input;
-                    let #pv = ::mechanism::driver::crank::acceleration(&pos.#g, #m, #omega_c + rates.#input, #w) #t;
+                    let #pv = ::mechanism::driver::crank::acceleration(&#g, #m, #omega_c + rates.#input, #w) #t;
                 }
             }
             (false, Some((_, omega_c))) => quote! {
                 let #w = #omega_c + rates.#input;
-                let #pv = ::mechanism::driver::crank::velocity(&pos.#g, #m, #w) #t;
+                let #pv = ::mechanism::driver::crank::velocity(&#g, #m, #w) #t;
             },
-        });
+        };
+        cx.code(code);
         cx.field(pv, vec_ty());
         cx.field(w, quote!(T));
     }
@@ -185,8 +189,8 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         r.at_length("|tip - pivot| = radius", self.pivot, f(self.radius));
     }
 
-    fn closure_axis(&self, _index: usize) -> TokenStream {
-        axis_between(self.pivot, &self.stmt.name)
+    fn closure_axis(&self, _index: usize, reads: &Reads) -> TokenStream {
+        axis_between(self.pivot, &self.stmt.name, reads)
     }
 
     fn link_lengths(&self) -> Vec<&'a Value> {
@@ -237,11 +241,13 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         };
         if let Some(b) = &body {
             let r = cx.reference(b);
-            let w = quote!(::mechanism::force::Wrench::force_at(&(-#rx.pivot), &pos.#pivot, &pos.#r).with_couple(-#rx.torque));
+            let (pp, pr) = (cx.reads().pos(pivot), cx.reads().pos(&r));
+            let w = quote!(::mechanism::force::Wrench::force_at(&(-#rx.pivot), &#pp, &#pr).with_couple(-#rx.torque));
             cx.add(b, w);
         }
         cx.reaction(revolute(&rx, &body, link, pivot, "pivot"));
-        cx.power(quote!(#rx.torque * vel.rates.#input));
+        let rates = cx.reads().vel_rates();
+        cx.power(quote!(#rx.torque * #rates.#input));
         let doc = format!("Driving torque on `{link}` (input `{input}`; force x length units, counter-clockwise positive): the balancing moment.");
         cx.reaction(drive(&rx, input, "torque", Held::Torque, doc));
     }
@@ -304,7 +310,7 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         false
     }
 
-    fn det_code(&self) -> TokenStream {
+    fn det_code(&self, _reads: &Reads) -> TokenStream {
         quote!(1.0)
     }
 

@@ -3,12 +3,13 @@
 //! The same per-kind code runs against the emitter (code and fields) and
 //! against [`FieldsOnly`] (the fields alone, for the stubs emitted on error).
 
-use crate::keys::{GuideName, LinkName, PointName};
-use crate::model::{Model, Stmt};
+use super::reads::Reads;
+use crate::keys::LinkName;
+use crate::keys::GROUND;
+use crate::model::Stmt;
 use crate::names::Family;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
-use std::collections::BTreeMap;
 use syn::Ident;
 
 /// A reaction field of the generated forces struct.
@@ -61,6 +62,8 @@ pub trait ForceCx {
     fn power(&mut self, term: TokenStream);
     /// Adds a group's conditioning (its relative pivot) to `condition`.
     fn condition(&mut self, term: TokenStream);
+    /// The recorder of the code's reads of `pos`, `vel` and `acc`.
+    fn reads(&self) -> &Reads;
 
     /// A force `force` (code) acting on `link` at point `at`, as a wrench
     /// about the link's reference point.
@@ -69,7 +72,8 @@ pub trait ForceCx {
         let wrench = if *at == r {
             quote!(::mechanism::force::Wrench::new(#force, <T as ::mechanism::Real>::lit(0.0)))
         } else {
-            quote!(::mechanism::force::Wrench::force_at(&(#force), &pos.#at, &pos.#r))
+            let (p_at, p_r) = (self.reads().pos(at), self.reads().pos(&r));
+            quote!(::mechanism::force::Wrench::force_at(&(#force), &#p_at, &#p_r))
         };
         self.add(link, wrench);
     }
@@ -81,7 +85,8 @@ pub trait ForceCx {
             let wrench = if *about == r {
                 quote!(-(#rx).wrench())
             } else {
-                quote!(-(#rx).wrench_about(&pos.#about, &pos.#r))
+                let (p_about, p_r) = (self.reads().pos(about), self.reads().pos(&r));
+                quote!(-(#rx).wrench_about(&#p_about, &#p_r))
             };
             self.add(&body, wrench);
         }
@@ -122,7 +127,7 @@ pub fn rx(stmt: &Stmt) -> Ident {
 /// The name of the body on the far side of a joint, for field names.
 pub fn body_name(body: &Option<LinkName>) -> String {
     body.as_ref()
-        .map_or_else(|| "ground".into(), ToString::to_string)
+        .map_or_else(|| GROUND.into(), ToString::to_string)
 }
 
 /// The reaction of a revolute joint: the force of `from` (a body, or the
@@ -194,64 +199,4 @@ pub fn inner(
     } else {
         revolute(rx, &from, &links[1], at, field)
     }
-}
-
-/// A [`ForceCx`] that keeps the fields only, the bodies found from the
-/// statements alone (no plan): the forces struct of a definition with
-/// errors, so the user's code that reads a reaction reports no follow-on
-/// error.
-pub struct FieldsOnly {
-    owner: BTreeMap<PointName, Option<LinkName>>,
-    carrier: BTreeMap<GuideName, Option<LinkName>>,
-    /// The fields found, in the order found.
-    pub reactions: Vec<Reaction>,
-}
-
-impl FieldsOnly {
-    /// The reaction fields of the statements of `model`, taken in the
-    /// reverse of the order written (the force analysis takes the groups in
-    /// the reverse of the solve order).
-    pub fn of(model: &Model) -> Vec<Reaction> {
-        let mut cx = FieldsOnly {
-            owner: BTreeMap::new(),
-            carrier: BTreeMap::new(),
-            reactions: Vec::new(),
-        };
-        for stmt in &model.stmts {
-            let kind = super::of(stmt);
-            if let Some(body) = kind.point_owner() {
-                cx.owner.insert(PointName::of(&stmt.name), body);
-            }
-            if let Some(carrier) = super::guide_carrier(stmt) {
-                let carrier = carrier.map(LinkName::of);
-                cx.carrier.insert(GuideName::of(&stmt.name), carrier);
-            }
-        }
-        for stmt in model.stmts.iter().rev() {
-            super::of(stmt).forces(&mut cx);
-        }
-        cx.reactions
-    }
-}
-
-impl ForceCx for FieldsOnly {
-    fn body_of_point(&self, point: &Ident) -> Option<LinkName> {
-        self.owner.get(&PointName::of(point)).cloned().flatten()
-    }
-    fn body_of_guide(&self, guide: &Ident) -> Option<LinkName> {
-        self.carrier.get(&GuideName::of(guide)).cloned().flatten()
-    }
-    fn reference(&self, link: &LinkName) -> Ident {
-        link.ident()
-    }
-    fn load_about(&self, _link: &Ident, _point: &Ident) -> TokenStream {
-        TokenStream::new()
-    }
-    fn add(&mut self, _link: &LinkName, _wrench: TokenStream) {}
-    fn code(&mut self, _code: TokenStream) {}
-    fn reaction(&mut self, reaction: Reaction) {
-        self.reactions.push(reaction);
-    }
-    fn power(&mut self, _term: TokenStream) {}
-    fn condition(&mut self, _term: TokenStream) {}
 }

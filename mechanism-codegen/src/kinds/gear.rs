@@ -24,12 +24,15 @@
 
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{body_name, revolute, rx, ForceCx, Held, Reaction};
+use super::group::{links_text, GroupKind, LinkShape, Placed, Role, Solve, Turn};
 use super::lane::{Lane, Step};
+use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
+use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{grp, local, tag, unit_field};
-use super::{links_text, GroupKind, LinkShape, Placed, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
+use crate::keys::GROUND;
 use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;
 use crate::model::{Gear, Stmt};
@@ -203,18 +206,20 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
         let w = cx.own(stmt, 0);
         let m = cx.point_arg(&self.g.pivot);
         let omega = self.angle_code(quote!(rates), false);
-        cx.code(if cx.accel() {
+        let g = cx.reads().pos(&g);
+        let code = if cx.accel() {
             let alpha = self.angle_code(quote!(accels), false);
             quote! {
                 let #w = #alpha;
-                let #pv = ::mechanism::driver::crank::acceleration(&pos.#g, #m, #omega, #w) #t;
+                let #pv = ::mechanism::driver::crank::acceleration(&#g, #m, #omega, #w) #t;
             }
         } else {
             quote! {
                 let #w = #omega;
-                let #pv = ::mechanism::driver::crank::velocity(&pos.#g, #m, #w) #t;
+                let #pv = ::mechanism::driver::crank::velocity(&#g, #m, #w) #t;
             }
-        });
+        };
+        cx.code(code);
         cx.field(pv, vec_ty());
         cx.field(w, quote!(T));
     }
@@ -228,8 +233,8 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
         r.at_length("|tip - pivot| = radius", &self.g.pivot, f(&self.g.radius));
     }
 
-    fn closure_axis(&self, _index: usize) -> TokenStream {
-        axis_between(&self.g.pivot, &self.stmt.name)
+    fn closure_axis(&self, _index: usize, reads: &Reads) -> TokenStream {
+        axis_between(&self.g.pivot, &self.stmt.name, reads)
     }
 
     fn link_lengths(&self) -> Vec<&'a Value> {
@@ -245,18 +250,18 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
         "Crank"
     }
 
-    fn det_code(&self) -> TokenStream {
+    fn det_code(&self, _reads: &Reads) -> TokenStream {
         quote!(1.0)
     }
 
     fn describe(&self) -> String {
         let g = self.g;
         let (n, links, pivot) = (&self.stmt.name, links_text(self.stmt), &g.pivot);
-        let mesh = g.mesh.as_ref().map_or("ground".into(), ToString::to_string);
+        let mesh = g.mesh.as_ref().map_or(GROUND.into(), ToString::to_string);
         let on = g
             .carrier
             .as_ref()
-            .map_or("ground".into(), ToString::to_string);
+            .map_or(GROUND.into(), ToString::to_string);
         let ratio = g.ratio.tokens.to_string();
         format!("gear: `{links}` about `{pivot}` on `{on}`, geared to `{mesh}` at ratio {ratio}, point `{n}`")
     }
@@ -320,9 +325,10 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
         let (rx, link, pivot) = (rx(stmt), &stmt.links[0], &g.pivot);
         let load = cx.load_about(link, pivot);
         let (ratio, pressure) = (g.ratio.emit(), g.pressure.emit());
+        let (pp, pc) = (cx.reads().pos(pivot), cx.reads().pos(center));
         cx.solve(
             stmt,
-            quote!(::mechanism::force::gear::reactions(&#load, &pos.#pivot, &pos.#center, #ratio, #pressure)),
+            quote!(::mechanism::force::gear::reactions(&#load, &#pp, &#pc, #ratio, #pressure)),
         );
         // The pivot force reacts on the carrier (or the body the pivot is
         // on), the tooth force on the meshing link at the pitch point.
@@ -331,18 +337,18 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
             None => cx.body_of_point(pivot),
         };
         if let Some(b) = &body {
-            let r = cx.reference(b);
+            let r = cx.reads().pos(&cx.reference(b));
             cx.add(
                 b,
-                quote!(::mechanism::force::Wrench::force_at(&(-#rx.pivot), &pos.#pivot, &pos.#r)),
+                quote!(::mechanism::force::Wrench::force_at(&(-#rx.pivot), &#pp, &#r)),
             );
         }
         if let Some(m) = &g.mesh {
             let m = LinkName::of(m);
-            let r = cx.reference(&m);
+            let r = cx.reads().pos(&cx.reference(&m));
             cx.add(
                 &m,
-                quote!(::mechanism::force::Wrench::force_at(&(-#rx.tooth), &#rx.contact, &pos.#r)),
+                quote!(::mechanism::force::Wrench::force_at(&(-#rx.tooth), &#rx.contact, &#r)),
             );
         }
         cx.reaction(revolute(&rx, &body, link, pivot, "pivot"));

@@ -1,8 +1,9 @@
 //! `ground(x, y)`: a fixed point.
 
+use super::group::{GroupKind, Role, Solve};
 use super::lane::{Lane, PointLocals, Step};
+use super::pose::Pose;
 use super::run::{Compile, ForceRunCx, Me, RunCx, RunPose};
-use super::{GroupKind, Pose, Role, Solve};
 use crate::keys::LinkName;
 use crate::kinds::pose::num;
 use crate::model::Stmt;

@@ -2,12 +2,13 @@
 //! or carried by a link (turning with the link's axis).
 
 use super::closure::{f, Residuals, Scale};
+use super::group::{GroupKind, Placed, Role, Solve};
 use super::lane::{Lane, LaneGuide, Step, Vector};
 use super::lane_shapes::{carried, OriginMotion};
+use super::pose::Pose;
 use super::rates::RateCx;
 use super::run::{Compile, ForceRunCx, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, local, unit_vector};
-use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
 use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;
@@ -148,26 +149,27 @@ impl<'a> GroupKind<'a> for Guide<'a> {
     /// Its direction (fixed, or turned from its carrier link's axis) and,
     /// when carried through a point, its origin at that point.
     fn residuals(&self, r: &mut Residuals<'_>, link_axis: &dyn Fn(&Ident) -> TokenStream) {
-        let n = r.n;
+        let n = r.pos(r.n);
         let a = f(self.angle);
         let Some(carrier) = self.carrier else {
             r.push_scaled(
                 "fixed guide direction",
-                quote!(norm(sub(vc(&pos.#n.dir), turn([1.0, 0.0], #a)))),
+                quote!(norm(sub(vc(&#n.dir), turn([1.0, 0.0], #a)))),
                 Scale::Direction,
             );
             return;
         };
         let ax = link_axis(carrier);
         if let Origin::Point(p) = self.origin {
+            let p = r.pos(p);
             r.push(
                 "carried guide origin",
-                quote!(norm(sub(pt(&pos.#n.origin), pt(&pos.#p)))),
+                quote!(norm(sub(pt(&#n.origin), pt(&#p)))),
             );
         }
         r.push_scaled(
             "carried guide direction",
-            quote!(norm(sub(vc(&pos.#n.dir), turn(#ax, #a)))),
+            quote!(norm(sub(vc(&#n.dir), turn(#ax, #a)))),
             Scale::CarriedDirection,
         );
     }

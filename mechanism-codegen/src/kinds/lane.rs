@@ -348,6 +348,8 @@ pub(crate) struct Step<'s> {
     links: BTreeMap<LinkName, LaneLink>,
     slides: BTreeMap<SlideName, Slide>,
     guide: Option<LaneGuide>,
+    /// An unnamed slide goes by the statement's name (`GroupKind::names_slide`).
+    names_slide: bool,
 }
 
 impl<'s> Step<'s> {
@@ -366,7 +368,9 @@ impl<'s> Step<'s> {
         }
     }
 
-    pub(crate) fn new(stmt: &'s Stmt) -> Step<'s> {
+    /// The step of `stmt`, whose unnamed slide goes by the statement's
+    /// name when `names_slide` (its kind's `GroupKind::names_slide`).
+    pub(crate) fn new(stmt: &'s Stmt, names_slide: bool) -> Step<'s> {
         Step {
             stmt,
             name: &stmt.name,
@@ -379,6 +383,7 @@ impl<'s> Step<'s> {
             links: BTreeMap::new(),
             slides: BTreeMap::new(),
             guide: None,
+            names_slide,
         }
     }
 
@@ -435,7 +440,7 @@ impl<'s> Step<'s> {
     pub fn defines_slide(&mut self, slot: usize, l: &SlideLocals) {
         let slide = match self.stmt.slides.get(slot) {
             Some(Some(s)) => Some(SlideName::of(s)),
-            _ if super::of(self.stmt).names_slide() => Some(SlideName::of(self.name)),
+            _ if self.names_slide => Some(SlideName::of(self.name)),
             _ => None,
         };
         if let Some(name) = slide {

@@ -2,12 +2,13 @@
 //! fixed on a link, given in the link's frame.
 
 use super::closure::{f, Residuals};
+use super::group::{GroupKind, Placed, Role, Solve};
 use super::lane::{Lane, PointLocals, Step, Vector};
 use super::lane_shapes::local_vector;
+use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
 use super::run::{Compile, ForceRunCx, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, local, tag, unit_vector};
-use super::{GroupKind, Placed, Pose, Role, Solve};
 use crate::diag::Diagnostics;
 use crate::keys::{LinkName, PointName};
 use crate::kinds::pose::num;
@@ -93,16 +94,24 @@ impl<'a> GroupKind<'a> for Point<'a> {
             let b = cx.pfx().of(from);
             quote!(#b)
         });
-        // The motion about `from`, as (unchecked, checked) calls.
-        let offset = quote!(&(pos.#name - pos.#from));
+        // The motion about `from`, as (unchecked, checked) calls; the
+        // offset read from `pos` only where a turning link needs it.
+        let offset = || {
+            let (n, f) = (cx.reads().pos(name), cx.reads().pos(from));
+            quote!(&(#n - #f))
+        };
         let relative = match (cx.link_rate(link), cx.accel()) {
             (None, _) => None,
-            (Some(w), false) => Some((
-                quote!(::mechanism::link::relative_velocity(#offset, #w)),
-                quote!(::mechanism::link::point_velocity(#offset, #w) #t),
-            )),
+            (Some(w), false) => {
+                let offset = offset();
+                Some((
+                    quote!(::mechanism::link::relative_velocity(#offset, #w)),
+                    quote!(::mechanism::link::point_velocity(#offset, #w) #t),
+                ))
+            }
             (Some(alpha), true) => {
                 let w = cx.link_omega_in_accel(link).unwrap_or_else(|| lit(0.0));
+                let offset = offset();
                 Some((
                     quote!(::mechanism::link::relative_acceleration(#offset, #w, #alpha)),
                     quote!(::mechanism::link::point_acceleration(#offset, #w, #alpha) #t),
@@ -123,7 +132,7 @@ impl<'a> GroupKind<'a> for Point<'a> {
 
     /// `from` plus the link's axes times the local offset.
     fn residuals(&self, r: &mut Residuals<'_>, link_axis: &dyn Fn(&Ident) -> TokenStream) {
-        let (n, from, axis) = (r.n, self.from, link_axis(self.link));
+        let (n, from, axis) = (r.pos(r.n), r.pos(self.from), link_axis(self.link));
         let (x, y) = match self.local {
             Local::Cartesian(x, y) => (f(x), f(y)),
             Local::Polar(d, a) => {
@@ -136,7 +145,7 @@ impl<'a> GroupKind<'a> for Point<'a> {
             quote!({
                 let u = #axis;
                 let (x, y) = (#x, #y);
-                norm(sub(sub(pt(&pos.#n), pt(&pos.#from)), [u[0] * x - u[1] * y, u[1] * x + u[0] * y]))
+                norm(sub(sub(pt(&#n), pt(&#from)), [u[0] * x - u[1] * y, u[1] * x + u[0] * y]))
             }),
         );
     }

@@ -3,12 +3,14 @@
 
 use super::closure::{guide_axis, Residuals};
 use super::forces::{inner, prismatic, rx, ForceCx};
+use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::line_axis;
+use super::pose::Pose;
 use super::rates::{states, vec_ty, Pieces, RateCx};
+use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, Me, RunCx, RunPose};
 use super::tokens::{along, local};
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::keys::LinkName;
 use crate::kinds::pose::num;
 use crate::model::Stmt;
@@ -101,11 +103,13 @@ impl<'a> GroupKind<'a> for Prp<'a> {
     fn rates(&self, cx: &mut dyn RateCx) {
         let ((g, gv), g1, g2) = (states(self.stmt), self.g1, self.g2);
         let (v1, v2) = (cx.guide_vel(g1), cx.guide_vel(g2));
+        let r = cx.reads();
+        let (pg, p1, p2) = (r.pos(&g), r.pos(g1), r.pos(g2));
         let call = if cx.accel() {
-            let (a1, a2) = (cx.guide_acc(g1), cx.guide_acc(g2));
-            quote!(::mechanism::dyad::prp::acceleration(&pos.#g, &pos.#g1, &pos.#g2, &vel.#gv, #v1, #a1, #v2, #a2))
+            let (a1, a2, gv) = (cx.guide_acc(g1), cx.guide_acc(g2), r.vel(&gv));
+            quote!(::mechanism::dyad::prp::acceleration(&#pg, &#p1, &#p2, &#gv, #v1, #a1, #v2, #a2))
         } else {
-            quote!(::mechanism::dyad::prp::velocity(&pos.#g, &pos.#g1, &pos.#g2, #v1, #v2))
+            quote!(::mechanism::dyad::prp::velocity(&#pg, &#p1, &#p2, #v1, #v2))
         };
         let gr = cx.group(self.stmt, call, quote!(dyad::prp), "Prp");
         let Pieces { point, s1, s2, .. } = Pieces::of(cx.accel());
@@ -124,8 +128,8 @@ impl<'a> GroupKind<'a> for Prp<'a> {
         r.on_offset_line("C on offset line 2", self.g2, self.offset2);
     }
 
-    fn closure_axis(&self, index: usize) -> TokenStream {
-        guide_axis(if index == 0 { self.g1 } else { self.g2 })
+    fn closure_axis(&self, index: usize, reads: &Reads) -> TokenStream {
+        guide_axis(if index == 0 { self.g1 } else { self.g2 }, reads)
     }
 
     fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
@@ -144,9 +148,9 @@ impl<'a> GroupKind<'a> for Prp<'a> {
         "Prp"
     }
 
-    fn det_code(&self) -> TokenStream {
-        let (g1, g2) = (self.g1, self.g2);
-        quote!(::mechanism::__private::det_prp(&pos.#g1, &pos.#g2))
+    fn det_code(&self, reads: &Reads) -> TokenStream {
+        let (g1, g2) = (reads.pos(self.g1), reads.pos(self.g2));
+        quote!(::mechanism::__private::det_prp(&#g1, &#g2))
     }
 
     fn describe(&self) -> String {
@@ -158,9 +162,11 @@ impl<'a> GroupKind<'a> for Prp<'a> {
         let (stmt, g1, g2) = (self.stmt, self.g1, self.g2);
         let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
         let (l1, l2) = cx.loads_about(stmt, name);
+        let r = cx.reads();
+        let (pn, p1, p2) = (r.pos(name), r.pos(g1), r.pos(g2));
         cx.solve(
             stmt,
-            quote!(::mechanism::force::prp::reactions(&pos.#name, &pos.#g1.dir, &pos.#g2.dir, &#l1, &#l2)),
+            quote!(::mechanism::force::prp::reactions(&#pn, &#p1.dir, &#p2.dir, &#l1, &#l2)),
         );
         let c1 = cx.body_of_guide(g1);
         let c2 = cx.body_of_guide(g2);

@@ -3,6 +3,7 @@
 //! uses, the rates of links, and where its code, stored values and slide
 //! rates go. One `rates` method per kind writes either derivative.
 
+use super::reads::Reads;
 use super::tokens::{grp, tag};
 use crate::model::Stmt;
 use crate::names::Family;
@@ -32,6 +33,8 @@ pub trait RateCx {
     fn field(&mut self, name: Ident, ty: TokenStream);
     /// The rate of the current statement's slide `slot`.
     fn slide(&mut self, slot: usize, value: TokenStream);
+    /// The recorder of the code's reads of `pos` and `vel` (`pos.grp_B`).
+    fn reads(&self) -> &Reads;
 
     /// `vel_` or `acc_`: the family of point motions.
     fn pfx(&self) -> Family {

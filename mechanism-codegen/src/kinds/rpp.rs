@@ -4,12 +4,14 @@
 
 use super::closure::{f, guide_axis, Residuals};
 use super::forces::{inner, prismatic, revolute, rx, ForceCx};
+use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::lane_shapes::{along_line, line_axis};
+use super::pose::Pose;
 use super::rates::{states, vec_ty, Pieces, RateCx};
+use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{along, grp, local, unit_field, unit_vector};
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::Diagnostics;
 use crate::keys::LinkName;
 use crate::kinds::pose::num;
@@ -104,11 +106,13 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
     fn rates(&self, cx: &mut dyn RateCx) {
         let ((g, gv), a, guide) = (states(self.stmt), self.a, self.guide);
         let (ma, gvel) = (cx.point_arg(a), cx.guide_vel(guide));
+        let r = cx.reads();
+        let (pg, pa, pl) = (r.pos(&g), r.pos(a), r.pos(guide));
         let call = if cx.accel() {
-            let gacc = cx.guide_acc(guide);
-            quote!(::mechanism::dyad::rpp::acceleration(&pos.#g, &pos.#a, &pos.#guide, &vel.#gv, #ma, #gvel, #gacc))
+            let (gacc, gv) = (cx.guide_acc(guide), r.vel(&gv));
+            quote!(::mechanism::dyad::rpp::acceleration(&#pg, &#pa, &#pl, &#gv, #ma, #gvel, #gacc))
         } else {
-            quote!(::mechanism::dyad::rpp::velocity(&pos.#g, &pos.#a, &pos.#guide, #ma, #gvel))
+            quote!(::mechanism::dyad::rpp::velocity(&#pg, &#pa, &#pl, #ma, #gvel))
         };
         let gr = cx.group(self.stmt, call, quote!(dyad::rpp), "Rpp");
         // The reference point's motion is `vq`/`aq`.
@@ -125,20 +129,20 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
 
     /// `Q` on the guide's offset line, `A` in the slot through `Q`.
     fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
-        let (n, a, guide, s) = (r.n, self.a, self.guide, f(self.slot));
-        r.on_offset_line("Q on the offset line", guide, self.offset);
+        r.on_offset_line("Q on the offset line", self.guide, self.offset);
+        let (n, a, guide, s) = (r.pos(r.n), r.pos(self.a), r.pos(self.guide), f(self.slot));
         r.push(
             "A in the slot through Q",
-            quote!(cross(turn(unit_of(vc(&pos.#guide.dir)), #s), sub(pt(&pos.#a), pt(&pos.#n)))),
+            quote!(cross(turn(unit_of(vc(&#guide.dir)), #s), sub(pt(&#a), pt(&#n)))),
         );
     }
 
-    fn closure_axis(&self, index: usize) -> TokenStream {
+    fn closure_axis(&self, index: usize, reads: &Reads) -> TokenStream {
         match index {
-            1 => guide_axis(self.guide),
+            1 => guide_axis(self.guide, reads),
             _ => {
-                let (guide, s) = (self.guide, f(self.slot));
-                quote!(turn(unit_of(vc(&pos.#guide.dir)), #s))
+                let (guide, s) = (reads.pos(self.guide), f(self.slot));
+                quote!(turn(unit_of(vc(&#guide.dir)), #s))
             }
         }
     }
@@ -159,9 +163,9 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
         "Rpp"
     }
 
-    fn det_code(&self) -> TokenStream {
-        let (g, guide) = (grp(self.stmt), self.guide);
-        quote!(::mechanism::__private::det_rpp(&pos.#g, &pos.#guide))
+    fn det_code(&self, reads: &Reads) -> TokenStream {
+        let (g, guide) = (reads.pos(&grp(self.stmt)), reads.pos(self.guide));
+        quote!(::mechanism::__private::det_rpp(&#g, &#guide))
     }
 
     fn describe(&self) -> String {
@@ -175,9 +179,11 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
         let (stmt, a, guide) = (self.stmt, self.a, self.guide);
         let (rx, links, g) = (rx(stmt), &stmt.links, grp(stmt));
         let (l1, l2) = cx.loads_about(stmt, a);
+        let r = cx.reads();
+        let (pa, pg, pl) = (r.pos(a), r.pos(&g), r.pos(guide));
         cx.solve(
             stmt,
-            quote!(::mechanism::force::rpp::reactions(&pos.#a, &pos.#g.slot, &pos.#guide.dir, &#l1, &#l2)),
+            quote!(::mechanism::force::rpp::reactions(&#pa, &#pg.slot, &#pl.dir, &#l1, &#l2)),
         );
         let ba = cx.pass_revolute(a, &rx, "a");
         let bg = cx.body_of_guide(guide);

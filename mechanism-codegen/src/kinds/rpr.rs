@@ -3,12 +3,14 @@
 
 use super::closure::{f, mode_sign, Residuals};
 use super::forces::{inner, revolute, rx, ForceCx};
+use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, Step};
 use super::lane_shapes::along_line;
+use super::pose::Pose;
 use super::rates::{states, Pieces, RateCx};
+use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{grp, local, mode_arg, unit_field};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::keys::LinkName;
 use crate::kinds::pose::{mode, num};
@@ -91,10 +93,13 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
     fn rates(&self, cx: &mut dyn RateCx) {
         let ((g, gv), a, b) = (states(self.stmt), self.a, self.b);
         let (ma, mb) = (cx.point_arg(a), cx.point_arg(b));
+        let r = cx.reads();
+        let (pg, pa, pb) = (r.pos(&g), r.pos(a), r.pos(b));
         let call = if cx.accel() {
-            quote!(::mechanism::dyad::rpr::acceleration(&pos.#g, &pos.#a, &pos.#b, &vel.#gv, #ma, #mb))
+            let gv = r.vel(&gv);
+            quote!(::mechanism::dyad::rpr::acceleration(&#pg, &#pa, &#pb, &#gv, #ma, #mb))
         } else {
-            quote!(::mechanism::dyad::rpr::velocity(&pos.#g, &pos.#a, &pos.#b, #ma, #mb))
+            quote!(::mechanism::dyad::rpr::velocity(&#pg, &#pa, &#pb, #ma, #mb))
         };
         let gr = cx.group(self.stmt, call, quote!(dyad::rpr), "Rpr");
         // Both links turn together: the group's one rate.
@@ -116,29 +121,29 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
     /// Its slide line at its offset from `B`, the slide along it, a unit
     /// axis, and the branch (the sign of the slide).
     fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
-        let (g, a, b) = (grp(self.stmt), self.a, self.b);
+        let (g, a, b) = (r.pos(&grp(self.stmt)), r.pos(self.a), r.pos(self.b));
         let (m, o) = (mode_sign(self.mode), f(self.offset));
         r.push(
             "slide line at its offset from B",
-            quote!(cross(vc(&pos.#g.axis), sub(pt(&pos.#a), pt(&pos.#b))) - #o),
+            quote!(cross(vc(&#g.axis), sub(pt(&#a), pt(&#b))) - #o),
         );
         r.push(
             "slide = dot(A - B, u)",
-            quote!(dot(vc(&pos.#g.axis), sub(pt(&pos.#a), pt(&pos.#b))) - <T as ::mechanism::Real>::as_f64(pos.#g.s)),
+            quote!(dot(vc(&#g.axis), sub(pt(&#a), pt(&#b))) - <T as ::mechanism::Real>::as_f64(#g.s)),
         );
         r.push(
             "unit axis (times |A - B|)",
-            quote!((norm(vc(&pos.#g.axis)) - 1.0) * norm(sub(pt(&pos.#a), pt(&pos.#b)))),
+            quote!((norm(vc(&#g.axis)) - 1.0) * norm(sub(pt(&#a), pt(&#b)))),
         );
         r.push(
             "assembly branch",
-            quote!(wrong_side(#m * <T as ::mechanism::Real>::as_f64(pos.#g.s))),
+            quote!(wrong_side(#m * <T as ::mechanism::Real>::as_f64(#g.s))),
         );
     }
 
-    fn closure_axis(&self, _index: usize) -> TokenStream {
-        let g = grp(self.stmt);
-        quote!(unit_of(vc(&pos.#g.axis)))
+    fn closure_axis(&self, _index: usize, reads: &Reads) -> TokenStream {
+        let g = reads.pos(&grp(self.stmt));
+        quote!(unit_of(vc(&#g.axis)))
     }
 
     fn explain_fault(&self, fault: &Fault, at: &str) -> Option<String> {
@@ -165,9 +170,13 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
         "Rpr"
     }
 
-    fn det_code(&self) -> TokenStream {
-        let (g, a, b) = (grp(self.stmt), self.a, self.b);
-        quote!(::mechanism::__private::det_rpr(&pos.#g, &pos.#a, &pos.#b))
+    fn det_code(&self, reads: &Reads) -> TokenStream {
+        let (g, a, b) = (
+            reads.pos(&grp(self.stmt)),
+            reads.pos(self.a),
+            reads.pos(self.b),
+        );
+        quote!(::mechanism::__private::det_rpr(&#g, &#a, &#b))
     }
 
     fn describe(&self) -> String {
@@ -208,9 +217,11 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
         let (stmt, a, b) = (self.stmt, self.a, self.b);
         let (rx, links, g) = (rx(stmt), &stmt.links, grp(stmt));
         let (l1, l2) = cx.loads_about(stmt, a);
+        let r = cx.reads();
+        let (pa, pb, pg) = (r.pos(a), r.pos(b), r.pos(&g));
         cx.solve(
             stmt,
-            quote!(::mechanism::force::rpr::reactions(&pos.#a, &pos.#b, &pos.#g.axis, &#l1, &#l2)),
+            quote!(::mechanism::force::rpr::reactions(&#pa, &#pb, &#pg.axis, &#l1, &#l2)),
         );
         let ba = cx.pass_revolute(a, &rx, "a");
         let bb = cx.pass_revolute(b, &rx, "b");

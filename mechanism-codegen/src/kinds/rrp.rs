@@ -3,12 +3,14 @@
 
 use super::closure::{axis_between, f, guide_axis, mode_sign, Residuals};
 use super::forces::{inner, prismatic, revolute, rx, ForceCx};
+use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::{along_line, line_axis};
+use super::pose::Pose;
 use super::rates::{states, vec_ty, Pieces, RateCx};
+use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{along, arm, grp, local, mode_arg};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::keys::LinkName;
 use crate::kinds::pose::{mode, num};
@@ -100,11 +102,13 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
     fn rates(&self, cx: &mut dyn RateCx) {
         let ((g, gv), guide) = (states(self.stmt), self.guide);
         let (ma, gvel) = (cx.point_arg(self.a), cx.guide_vel(guide));
+        let r = cx.reads();
+        let (pg, pl) = (r.pos(&g), r.pos(guide));
         let call = if cx.accel() {
-            let gacc = cx.guide_acc(guide);
-            quote!(::mechanism::dyad::rrp::acceleration(&pos.#g, &pos.#guide, &vel.#gv, #ma, #gvel, #gacc))
+            let (gacc, gv) = (cx.guide_acc(guide), r.vel(&gv));
+            quote!(::mechanism::dyad::rrp::acceleration(&#pg, &#pl, &#gv, #ma, #gvel, #gacc))
         } else {
-            quote!(::mechanism::dyad::rrp::velocity(&pos.#g, &pos.#guide, #ma, #gvel))
+            quote!(::mechanism::dyad::rrp::velocity(&#pg, &#pl, #ma, #gvel))
         };
         let gr = cx.group(self.stmt, call, quote!(dyad::rrp), "Rrp");
         let Pieces { point, r1, s, .. } = Pieces::of(cx.accel());
@@ -120,19 +124,20 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
     /// `C` at `l` from `A`, on the guide's offset line, on its branch
     /// (along the guide from `A`).
     fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
-        let (n, a, guide, m) = (r.n, self.a, self.guide, mode_sign(self.mode));
-        r.at_length("|C - A| = l", a, f(self.l));
-        r.on_offset_line("C on the offset line", guide, self.offset);
+        r.at_length("|C - A| = l", self.a, f(self.l));
+        r.on_offset_line("C on the offset line", self.guide, self.offset);
+        let (n, a, guide) = (r.pos(r.n), r.pos(self.a), r.pos(self.guide));
+        let m = mode_sign(self.mode);
         r.push(
             "assembly branch",
-            quote!(wrong_side(#m * dot(sub(pt(&pos.#n), pt(&pos.#a)), vc(&pos.#guide.dir)))),
+            quote!(wrong_side(#m * dot(sub(pt(&#n), pt(&#a)), vc(&#guide.dir)))),
         );
     }
 
-    fn closure_axis(&self, index: usize) -> TokenStream {
+    fn closure_axis(&self, index: usize, reads: &Reads) -> TokenStream {
         match index {
-            0 => axis_between(self.a, &self.stmt.name),
-            _ => guide_axis(self.guide),
+            0 => axis_between(self.a, &self.stmt.name, reads),
+            _ => guide_axis(self.guide, reads),
         }
     }
 
@@ -165,9 +170,9 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
         "Rrp"
     }
 
-    fn det_code(&self) -> TokenStream {
-        let (g, guide) = (grp(self.stmt), self.guide);
-        quote!(::mechanism::__private::det_rrp(&pos.#g, &pos.#guide))
+    fn det_code(&self, reads: &Reads) -> TokenStream {
+        let (g, guide) = (reads.pos(&grp(self.stmt)), reads.pos(self.guide));
+        quote!(::mechanism::__private::det_rrp(&#g, &#guide))
     }
 
     fn describe(&self) -> String {
@@ -182,9 +187,11 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
         let (stmt, a, guide) = (self.stmt, self.a, self.guide);
         let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
         let (l1, l2) = cx.loads_about(stmt, name);
+        let r = cx.reads();
+        let (pa, pn, pl) = (r.pos(a), r.pos(name), r.pos(guide));
         cx.solve(
             stmt,
-            quote!(::mechanism::force::rrp::reactions(&pos.#a, &pos.#name, &pos.#guide.dir, &#l1, &#l2)),
+            quote!(::mechanism::force::rrp::reactions(&#pa, &#pn, &#pl.dir, &#l1, &#l2)),
         );
         let ba = cx.pass_revolute(a, &rx, "a");
         let bg = cx.body_of_guide(guide);

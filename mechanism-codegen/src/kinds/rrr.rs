@@ -3,12 +3,14 @@
 
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{inner, revolute, rx, ForceCx};
+use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
+use super::pose::Pose;
 use super::rates::{states, two_links, RateCx};
+use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, mode_arg};
-use super::{links_text, mode_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::diag::show_num;
 use crate::keys::LinkName;
 use crate::kinds::pose::{mode, num};
@@ -101,12 +103,14 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
     fn rates(&self, cx: &mut dyn RateCx) {
         let (g, gv) = states(self.stmt);
         let (ma, mb) = (cx.point_arg(self.a), cx.point_arg(self.b));
+        let g = cx.reads().pos(&g);
         let call = if cx.accel() {
-            quote!(::mechanism::dyad::rrr::acceleration(&pos.#g, &vel.#gv, #ma, #mb))
+            let gv = cx.reads().vel(&gv);
+            quote!(::mechanism::dyad::rrr::acceleration(&#g, &#gv, #ma, #mb))
         } else {
             // The link lengths are the determinant's scale: no square root.
             let (l1, l2) = (self.l1.emit(), self.l2.emit());
-            quote!(::mechanism::dyad::rrr::velocity_lengths(&pos.#g, #l1, #l2, #ma, #mb))
+            quote!(::mechanism::dyad::rrr::velocity_lengths(&#g, #l1, #l2, #ma, #mb))
         };
         let gr = cx.group(self.stmt, call, quote!(dyad::rrr), "Rrr");
         two_links(cx, self.stmt, &gr);
@@ -123,9 +127,9 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
         r.dyad_branch(self.a, self.b, self.mode);
     }
 
-    fn closure_axis(&self, index: usize) -> TokenStream {
+    fn closure_axis(&self, index: usize, reads: &Reads) -> TokenStream {
         let from = if index == 0 { self.a } else { self.b };
-        axis_between(from, &self.stmt.name)
+        axis_between(from, &self.stmt.name, reads)
     }
 
     fn link_lengths(&self) -> Vec<&'a Value> {
@@ -180,9 +184,9 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
         "Rrr"
     }
 
-    fn det_code(&self) -> TokenStream {
-        let g = grp(self.stmt);
-        quote!(::mechanism::__private::det_rrr(&pos.#g))
+    fn det_code(&self, reads: &Reads) -> TokenStream {
+        let g = reads.pos(&grp(self.stmt));
+        quote!(::mechanism::__private::det_rrr(&#g))
     }
 
     fn describe(&self) -> String {
@@ -197,9 +201,11 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
         let (stmt, a, b) = (self.stmt, self.a, self.b);
         let (rx, links, name) = (rx(stmt), &stmt.links, &stmt.name);
         let (l1, l2) = cx.loads_about(stmt, name);
+        let r = cx.reads();
+        let (pa, pb, pn) = (r.pos(a), r.pos(b), r.pos(name));
         cx.solve(
             stmt,
-            quote!(::mechanism::force::rrr::reactions(&pos.#a, &pos.#b, &pos.#name, &#l1, &#l2)),
+            quote!(::mechanism::force::rrr::reactions(&#pa, &#pb, &#pn, &#l1, &#l2)),
         );
         let ba = cx.pass_revolute(a, &rx, "a");
         let bb = cx.pass_revolute(b, &rx, "b");
@@ -220,8 +226,9 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
     /// Driven by a crank onto a ground point, it closes a four-bar: its
     /// Grashof condition, in numbers.
     fn full_turn_hint(&self, find: &dyn Fn(&Ident) -> Option<&'a Stmt>) -> Option<String> {
-        let arm = |n: &Ident| find(n).and_then(|s| super::crank_arm(s).map(|arm| (s, arm)));
-        let ground = |n: &Ident| find(n).and_then(super::ground_at);
+        let arm =
+            |n: &Ident| find(n).and_then(|s| super::accessors::crank_arm(s).map(|arm| (s, arm)));
+        let ground = |n: &Ident| find(n).and_then(super::accessors::ground_at);
         let ((crank, (pivot, radius)), other) = match (arm(self.a), arm(self.b)) {
             (Some(c), _) => (c, self.b),
             (_, Some(c)) => (c, self.a),

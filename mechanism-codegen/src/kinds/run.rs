@@ -10,6 +10,7 @@
 //! allocates nothing, formats nothing and looks nothing up by name.
 
 use super::forces::Held;
+use crate::keys::GROUND;
 use crate::keys::{GuideName, InputName, LinkName, Name, PointName};
 use crate::model::Stmt;
 use crate::names::Family;
@@ -179,7 +180,7 @@ impl Layout {
     /// The name of link slot `l` (`ground` for none).
     pub fn link_name(&self, l: Option<LinkSlot>) -> &str {
         l.and_then(|l| self.link_names.get(at(l.0)))
-            .map_or("ground", LinkName::as_str)
+            .map_or(GROUND, LinkName::as_str)
     }
 
     /// Number of link slots, the unknown one included.

@@ -3,11 +3,13 @@
 
 use super::closure::{guide_axis, Residuals};
 use super::forces::{drive, prismatic, rx, ForceCx, Held};
+use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
+use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
+use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, InputSlot, Me, RunCx, RunPose};
 use super::tokens::{along, grp, local, tag};
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::keys::LinkName;
 use crate::kinds::pose::num;
 use crate::model::Stmt;
@@ -90,31 +92,35 @@ impl<'a> GroupKind<'a> for Slider<'a> {
         let (stmt, guide, input) = (self.stmt, self.guide, self.input);
         let (g, pv, t) = (grp(stmt), cx.motion(stmt), tag(stmt));
         let gvel = cx.guide_vel(guide);
-        cx.code(if cx.accel() {
+        let r = cx.reads();
+        let (pg, pl, pi) = (r.pos(&g), r.pos(guide), r.pos_input());
+        let code = if cx.accel() {
             let gacc = cx.guide_acc(guide);
             quote! {
-                let #pv = ::mechanism::driver::slider::acceleration(&pos.#g, &pos.#guide, pos.input.#input, rates.#input, accels.#input, #gvel, #gacc) #t;
+                let #pv = ::mechanism::driver::slider::acceleration(&#pg, &#pl, #pi.#input, rates.#input, accels.#input, #gvel, #gacc) #t;
             }
         } else {
             quote! {
-                let #pv = ::mechanism::driver::slider::velocity(&pos.#g, &pos.#guide, pos.input.#input, rates.#input, #gvel) #t;
+                let #pv = ::mechanism::driver::slider::velocity(&#pg, &#pl, #pi.#input, rates.#input, #gvel) #t;
             }
-        });
+        };
+        cx.code(code);
         cx.field(pv, vec_ty());
     }
 
     /// The pin on the guide's offset line, at the input displacement.
     fn residuals(&self, r: &mut Residuals<'_>, _link_axis: &dyn Fn(&Ident) -> TokenStream) {
-        let (n, guide, input) = (r.n, self.guide, self.input);
-        r.on_offset_line("pin on the offset line", guide, self.offset);
+        r.on_offset_line("pin on the offset line", self.guide, self.offset);
+        let (n, guide, input) = (r.pos(r.n), r.pos(self.guide), self.input);
+        let inputs = r.reads.pos_input();
         r.push(
             "pin at the input displacement",
-            quote!(dot(vc(&pos.#guide.dir), sub(pt(&pos.#n), pt(&pos.#guide.origin))) - <T as ::mechanism::Real>::as_f64(pos.input.#input)),
+            quote!(dot(vc(&#guide.dir), sub(pt(&#n), pt(&#guide.origin))) - <T as ::mechanism::Real>::as_f64(#inputs.#input)),
         );
     }
 
-    fn closure_axis(&self, _index: usize) -> TokenStream {
-        guide_axis(self.guide)
+    fn closure_axis(&self, _index: usize, reads: &Reads) -> TokenStream {
+        guide_axis(self.guide, reads)
     }
 
     fn primitive(&self) -> &'static str {
@@ -135,18 +141,21 @@ impl<'a> GroupKind<'a> for Slider<'a> {
         let (stmt, guide, input) = (self.stmt, self.guide, self.input);
         let (rx, link, name) = (rx(stmt), &stmt.links[0], &stmt.name);
         let load = cx.load_about(link, name);
+        let pl = cx.reads().pos(guide);
         cx.solve(
             stmt,
-            quote!(::mechanism::force::slider::reactions(&pos.#guide.dir, &#load)),
+            quote!(::mechanism::force::slider::reactions(&#pl.dir, &#load)),
         );
         let body = cx.body_of_guide(guide);
         if let Some(b) = &body {
             let r = cx.reference(b);
-            let w = quote!(::mechanism::force::Wrench::force_at(&(-(#rx.guide.force + pos.#guide.dir * #rx.drive)), &pos.#name, &pos.#r).with_couple(-#rx.guide.moment));
+            let (pn, pr) = (cx.reads().pos(name), cx.reads().pos(&r));
+            let w = quote!(::mechanism::force::Wrench::force_at(&(-(#rx.guide.force + #pl.dir * #rx.drive)), &#pn, &#pr).with_couple(-#rx.guide.moment));
             cx.add(b, w);
         }
         cx.reaction(prismatic(&rx, &body, link, name, "guide"));
-        cx.power(quote!(#rx.drive * vel.rates.#input));
+        let rates = cx.reads().vel_rates();
+        cx.power(quote!(#rx.drive * #rates.#input));
         let doc = format!("Driving force on `{link}` along its guide (input `{input}`; force units, positive along the guide's direction).");
         cx.reaction(drive(&rx, input, "drive", Held::Push, doc));
     }
@@ -173,7 +182,7 @@ impl<'a> GroupKind<'a> for Slider<'a> {
         Vec::new()
     }
 
-    fn det_code(&self) -> TokenStream {
+    fn det_code(&self, _reads: &Reads) -> TokenStream {
         quote!(1.0)
     }
 

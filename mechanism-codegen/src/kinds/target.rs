@@ -6,11 +6,13 @@
 //! must apply to it, `drive_X` and `drive_Y` its components.
 
 use super::forces::{body_name, rx, ForceCx, Held, Reaction};
+use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
+use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
+use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, Me, RunCx, RunPose};
 use super::tokens::tag;
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Turn};
 use crate::keys::LinkName;
 use crate::model::Stmt;
 use crate::names::Family;
@@ -91,14 +93,14 @@ impl<'a> GroupKind<'a> for Target<'a> {
         r: &mut super::closure::Residuals<'_>,
         _link_axis: &dyn Fn(&Ident) -> TokenStream,
     ) {
-        let (n, x, y) = (r.n, self.x, self.y);
+        let (n, inputs, x, y) = (r.pos(r.n), r.reads.pos_input(), self.x, self.y);
         r.push(
             "x at its input",
-            quote!(<T as ::mechanism::Real>::as_f64(pos.#n.x) - <T as ::mechanism::Real>::as_f64(pos.input.#x)),
+            quote!(<T as ::mechanism::Real>::as_f64(#n.x) - <T as ::mechanism::Real>::as_f64(#inputs.#x)),
         );
         r.push(
             "y at its input",
-            quote!(<T as ::mechanism::Real>::as_f64(pos.#n.y) - <T as ::mechanism::Real>::as_f64(pos.input.#y)),
+            quote!(<T as ::mechanism::Real>::as_f64(#n.y) - <T as ::mechanism::Real>::as_f64(#inputs.#y)),
         );
     }
 
@@ -120,7 +122,8 @@ impl<'a> GroupKind<'a> for Target<'a> {
         let (rx, link, name) = (rx(stmt), &stmt.links[0], &stmt.name);
         let load = cx.load_about(link, name);
         cx.solve(stmt, quote!(::mechanism::force::target::reactions(&#load)));
-        cx.power(quote!(#rx.drive.x * vel.rates.#x + #rx.drive.y * vel.rates.#y));
+        let rates = cx.reads().vel_rates();
+        cx.power(quote!(#rx.drive.x * #rates.#x + #rx.drive.y * #rates.#y));
         for (input, axis) in [(x, "x"), (y, "y")] {
             let a = format_ident!("{}", axis);
             cx.reaction(Reaction {
@@ -207,7 +210,7 @@ impl<'a> GroupKind<'a> for Target<'a> {
         false
     }
 
-    fn closure_axis(&self, _index: usize) -> TokenStream {
+    fn closure_axis(&self, _index: usize, _reads: &Reads) -> TokenStream {
         quote!([1.0, 0.0])
     }
 
@@ -215,7 +218,7 @@ impl<'a> GroupKind<'a> for Target<'a> {
         Vec::new()
     }
 
-    fn det_code(&self) -> TokenStream {
+    fn det_code(&self, _reads: &Reads) -> TokenStream {
         quote!(1.0)
     }
 

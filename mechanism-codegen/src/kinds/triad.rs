@@ -23,11 +23,13 @@
 
 use super::closure::{f, Residuals};
 use super::forces::{revolute, rx, ForceCx};
+use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Tracked, Tracking, Turn};
 use super::lane::{Lane, Step};
+use super::pose::Pose;
 use super::rates::{states, vec_ty, RateCx};
+use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, tag, unit_field};
-use super::{links_text, GroupKind, LinkShape, Pose, Role, Solve, Tracking, Turn};
 use crate::diag::{show_num, Diagnostics};
 use crate::keys::LinkName;
 use crate::kinds::pose::num;
@@ -66,20 +68,6 @@ pub(super) struct TriadKind<'a> {
     /// findings, `check::Findings::known`); `None` where the check did not
     /// track it: the stated pose is the hint at every input.
     pub tracked: Option<&'a Tracked>,
-}
-
-/// What tracking a triad's stated assembly over its input's range found
-/// (the check's finding for the statement, read by the sweep, the
-/// generated `position()` and the messages).
-#[derive(Clone, Debug, Default)]
-pub struct Tracked {
-    /// The pose at evenly spaced inputs: `[input, ax, ay, bx, by, px, py]`.
-    pub rows: Vec<[f64; 7]>,
-    /// Where the tracked assembly stops existing: the last input it was
-    /// found at and the first it was not, below and above the stated one.
-    pub ends: Vec<(f64, f64)>,
-    /// `true` when the input is an angle (rad; messages show deg).
-    pub angle: bool,
 }
 
 /// `P`'s offset in the ternary's frame (L), its dimensions valued by `num`.
@@ -336,13 +324,13 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         }
     }
 
-    fn position_tracking(&self) -> Option<Solve> {
+    fn position_tracking(&self, reads: &Reads) -> Option<Solve> {
         let dims = dims_code(self.t);
         let k = self.t.k.each_ref().map(local);
         let [k1, k2, k3] = &k;
-        let g = grp(self.stmt);
+        let g = reads.pos(&grp(self.stmt));
         Some(Solve::Group {
-            call: quote!(::mechanism::triad::position_near(&#dims, &[#k1, #k2, #k3], &pos.#g)),
+            call: quote!(::mechanism::triad::position_near(&#dims, &[#k1, #k2, #k3], &#g)),
             joint: Some("a"),
         })
     }
@@ -361,10 +349,12 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         let (g, gv) = states(self.stmt);
         let dims = dims_code(self.t);
         let [m1, m2, m3] = self.t.k.each_ref().map(|k| cx.point_arg(k));
+        let g = cx.reads().pos(&g);
         let call = if cx.accel() {
-            quote!(::mechanism::triad::acceleration(&#dims, &pos.#g, &vel.#gv, #m1, #m2, #m3))
+            let gv = cx.reads().vel(&gv);
+            quote!(::mechanism::triad::acceleration(&#dims, &#g, &#gv, #m1, #m2, #m3))
         } else {
-            quote!(::mechanism::triad::velocity(&#dims, &pos.#g, #m1, #m2, #m3))
+            quote!(::mechanism::triad::velocity(&#dims, &#g, #m1, #m2, #m3))
         };
         let gr = cx.group(self.stmt, call, quote!(triad), "Triad");
         let (pt, rates) = if cx.accel() {
@@ -407,12 +397,12 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
             (&t.b, &t.k[1], &t.l[1], "|B - K2| = l2"),
             (&t.p, &t.k[2], &t.l[2], "|P - K3| = l3"),
         ] {
-            let l = f(l);
-            r.push(what, quote!(norm(sub(pt(&pos.#j), pt(&pos.#k))) - #l));
+            let (j, k, l) = (r.pos(j), r.pos(k), f(l));
+            r.push(what, quote!(norm(sub(pt(&#j), pt(&#k))) - #l));
         }
     }
 
-    fn closure_axis(&self, index: usize) -> TokenStream {
+    fn closure_axis(&self, index: usize, reads: &Reads) -> TokenStream {
         let t = self.t;
         let (from, to) = match index {
             0 => (&t.k[0], &self.stmt.name),
@@ -420,7 +410,7 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
             2 => (&t.k[2], &t.p),
             _ => (&self.stmt.name, &t.b),
         };
-        super::closure::axis_between(from, to)
+        super::closure::axis_between(from, to, reads)
     }
 
     fn link_lengths(&self) -> Vec<&'a Value> {
@@ -553,9 +543,9 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
         "Triad"
     }
 
-    fn det_code(&self) -> TokenStream {
-        let g = grp(self.stmt);
-        quote!(<T as ::mechanism::Real>::as_f64(pos.#g.jacobian))
+    fn det_code(&self, reads: &Reads) -> TokenStream {
+        let g = reads.pos(&grp(self.stmt));
+        quote!(<T as ::mechanism::Real>::as_f64(#g.jacobian))
     }
 
     fn describe(&self) -> String {
@@ -604,10 +594,10 @@ fn forces(kind: &TriadKind<'_>, cx: &mut dyn ForceCx) {
         cx.load_about(&links[3], a),
     ];
     let [l1, l2, l3, l4] = &l;
-    let g = grp(stmt);
+    let g = cx.reads().pos(&grp(stmt));
     cx.solve(
         stmt,
-        quote!(::mechanism::triad::reactions(&pos.#g, &::mechanism::triad::TriadLoads {
+        quote!(::mechanism::triad::reactions(&#g, &::mechanism::triad::TriadLoads {
             leg1: #l1, leg2: #l2, leg3: #l3, ternary: #l4
         })),
     );

@@ -6,8 +6,7 @@
 //! dependency on the model), so the vocabulary and every message about a
 //! kind are built from the kind's own file.
 
-use crate::parse::Arg;
-use syn::{Expr, Ident};
+use syn::Ident;
 
 /// A statement kind, by its word (`rrr`, `crank`, ...).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -106,26 +105,6 @@ impl KindWord {
         KindWord::Gear,
     ];
 
-    /// Its descriptor, stated in its kind's file.
-    pub fn spec(self) -> &'static Spec {
-        match self {
-            KindWord::Ground => &super::ground::SPEC,
-            KindWord::Guide => &super::guide::SPEC,
-            KindWord::Crank => &super::crank::SPEC,
-            KindWord::Slider => &super::slider::SPEC,
-            KindWord::Actuator => &super::actuator::SPEC,
-            KindWord::Target => &super::target::SPEC,
-            KindWord::Rrr => &super::rrr::SPEC,
-            KindWord::Rrp => &super::rrp::SPEC,
-            KindWord::Rpr => &super::rpr::SPEC,
-            KindWord::Prp => &super::prp::SPEC,
-            KindWord::Rpp => &super::rpp::SPEC,
-            KindWord::Point => &super::point::SPEC,
-            KindWord::Triad => &super::triad::SPEC,
-            KindWord::Gear => &super::gear::SPEC,
-        }
-    }
-
     /// The kind a written word names, `None` for a word the language does
     /// not know (the one place a kind's text is compared).
     pub fn of(word: &Ident) -> Option<KindWord> {
@@ -143,19 +122,22 @@ impl KindWord {
         Ident::new(self.text(), span)
     }
 
-    /// The fewest and the most arguments it takes with the arguments
-    /// `args` as written.
-    pub fn arity(self, args: &[Arg]) -> (usize, usize) {
+    /// The fewest and the most arguments it takes, `tuple_at(k)` saying
+    /// whether its argument `k` is written as a tuple (`(x, y)`).
+    pub fn arity(self, tuple_at: impl Fn(usize) -> bool) -> (usize, usize) {
         match self.spec().arity {
             Arity::Range(lo, hi) => (lo, hi),
             Arity::TupleAt {
                 index,
                 tuple,
                 other,
-            } => match args.get(index) {
-                Some(Arg::Value(Expr::Tuple(_), _)) => tuple,
-                _ => other,
-            },
+            } => {
+                if tuple_at(index) {
+                    tuple
+                } else {
+                    other
+                }
+            }
         }
     }
 }

@@ -5,6 +5,7 @@
 use super::args::{Args, NumberScope};
 use super::{Gear, Kind, Local, Origin, Triad};
 use crate::diag::{did_you_mean, Diagnostics};
+use crate::keys::GROUND;
 use crate::parse::vocabulary::{kinds, kinds_list, unsupported_driver, KindWord};
 use crate::parse::{self, Arg};
 use crate::value::convert;
@@ -18,7 +19,8 @@ use syn::{Expr, Ident};
 /// second length), and the message would be about a name instead of the
 /// count.
 fn too_few_arguments(stmt: &parse::Let, kind: KindWord) -> Option<String> {
-    let (least, most) = kind.arity(&stmt.args);
+    let (least, most) =
+        kind.arity(|k| matches!(stmt.args.get(k), Some(parse::Arg::Value(Expr::Tuple(_), _))));
     let given = stmt.args.len();
     if given >= least {
         return None;
@@ -98,7 +100,7 @@ pub(super) fn lower_kind(
 fn link_or_ground(a: &mut Args, role: &str) -> Option<(Option<Ident>, proc_macro2::Span)> {
     let name = a.name(role)?;
     let span = name.span();
-    Some(((name != "ground").then_some(name), span))
+    Some(((name != GROUND).then_some(name), span))
 }
 
 /// `gear(PIVOT, radius, MESH, ratio[, phase[, CARRIER[, pressure_angle]]])`:

@@ -10,6 +10,7 @@ use super::{
     Mode, Model, MotorSpec, Stmt,
 };
 use crate::diag::{did_you_mean, Diagnostics};
+use crate::keys::GROUND;
 use crate::parse::vocabulary::KindWord;
 use crate::parse::{self, Arg, Assign, Definition, Item, RangeDecl};
 use crate::value::{convert, Value};
@@ -537,7 +538,7 @@ fn resolve_gear(kind: Kind, stmts: &[Stmt], errors: &mut Diagnostics) -> Option<
         let on = g
             .mesh
             .as_ref()
-            .map_or("ground".to_string(), ToString::to_string);
+            .map_or(GROUND.to_string(), ToString::to_string);
         errors.push(
             span,
             format!("a gear meshing with `{on}` while turning on `{on}` never turns; mesh it with a crank's link, e.g. `gear({}, r, link2, 2.0)`, or carry it on one (its sixth argument)", g.pivot),

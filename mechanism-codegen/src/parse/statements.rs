@@ -11,6 +11,7 @@ use super::{
     unit_message, unit_word, vocabulary, Arg, Assign, DrawnCylinder, DrawnGear, DrawnSlider, Force,
     ForceValue, Item, Let, Mass, RangeDecl, Valued, STATEMENTS,
 };
+use crate::keys::GROUND;
 use syn::buffer::Cursor;
 use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
@@ -465,7 +466,7 @@ fn parse_motor(input: ParseStream, start: Cursor) -> syn::Result<Item> {
         &format!("the `motor {name} = ..` statement"),
         Valued::Load("a motor"),
     )?;
-    let carrier = carrier.filter(|c| c != "ground");
+    let carrier = carrier.filter(|c| c != GROUND);
     Ok(Item::Motor(name, link, carrier))
 }
 

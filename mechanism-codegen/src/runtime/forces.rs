@@ -379,7 +379,9 @@ impl Mechanism {
         let units = &self.model.units;
         let (f, m) = (intern(&units.force), intern(&units.moment()));
         let moving = crate::emit::moving_points(&self.model, &self.plan);
-        let code = crate::emit::forces::emit(&self.model, &self.plan, &moving);
+        // Only the fields are used: the code's reads go nowhere.
+        let reads = crate::kinds::reads::Reads::default();
+        let code = crate::emit::forces::emit(&self.model, &self.plan, &moving, &reads);
         let mut cols = Vec::new();
         let mut push = |name: String, unit| cols.push(Column { name, unit });
         for (n, held) in &code.fields {

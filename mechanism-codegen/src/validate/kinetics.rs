@@ -6,6 +6,7 @@
 
 use super::names::{another, defined_where, link_hints, named_links, symbols};
 use crate::diag::{did_you_mean, Diagnostics};
+use crate::keys::GROUND;
 use crate::keys::{GuideName, LinkName, Name, PointName};
 use crate::kinds;
 use crate::model::{ForceSpec, ForceSpecValue, Level, MassSpec, Model};
@@ -406,7 +407,7 @@ fn loadable_link(
     if !plan.links.contains_key(&key) {
         let named = named_links(model);
         let hint = did_you_mean(&name, named.iter().map(String::as_str));
-        if name == "ground" || name == "frame" {
+        if name == GROUND || name == "frame" {
             errors.push(
                 link.span(),
                 format!("`{name}` is the frame, which is fixed: {what} on it moves nothing; put it on a moving link (the names after `as`){hint}"),

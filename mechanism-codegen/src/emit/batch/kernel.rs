@@ -86,8 +86,9 @@ pub(super) fn kernel(
 /// Adds the lane code of one statement (its kind's), `None` when it has no
 /// lane version here (an argument the kernel does not know).
 pub(super) fn statement(lane: &mut Lane, stmt: &Stmt) -> Option<()> {
-    let mut s = Step::new(stmt);
-    kinds::of(stmt).lane(lane, &mut s)?;
+    let kind = kinds::of(stmt);
+    let mut s = Step::new(stmt, kind.names_slide());
+    kind.lane(lane, &mut s)?;
     lane.commit(s);
     Some(())
 }

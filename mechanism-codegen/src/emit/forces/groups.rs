@@ -10,7 +10,8 @@ mod tests {
     fn reactions(src: &str) -> (Vec<String>, String) {
         let (model, plan) = planned(src);
         let moving = crate::emit::moving_points(&model, &plan);
-        let code = super::super::emit(&model, &plan, &moving);
+        let reads = crate::kinds::reads::Reads::default();
+        let code = super::super::emit(&model, &plan, &moving, &reads);
         let methods = flat(&code.methods);
         let value = methods.split("Ok(").last().unwrap();
         let fields = value

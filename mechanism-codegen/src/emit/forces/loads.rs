@@ -43,8 +43,9 @@ impl ForceEmitter<'_> {
     fn mass(&mut self, m: &MassSpec) {
         let link = LinkName::of(&m.link);
         let forces = self.part_forces(m, Part::whole(&link));
-        let couple = match (&m.inertia, self.rates_of(&m.link)) {
+        let couple = match (&m.inertia, self.rate_fields(&m.link)) {
             (Some(j), Some((w, alpha))) if j.fold() != Some(0.0) => {
+                let (w, alpha) = (self.reads.vel(&w), self.reads.acc(&alpha));
                 let j = self.checked(j, &link, Quantity::Inertia);
                 let c = Family::PwInertiaCouple.of(&link);
                 self.code.extend(quote!(let #c = -(#j * #alpha);));
@@ -80,12 +81,13 @@ impl ForceEmitter<'_> {
                 inertias.push((part, j));
             }
         }
-        let Some((w, alpha)) = self.rates_of(&parts[0].link) else {
+        let Some((w, alpha)) = self.rate_fields(&parts[0].link) else {
             return;
         };
         if inertias.is_empty() {
             return;
         }
+        let (w, alpha) = (self.reads.vel(&w), self.reads.acc(&alpha));
         let folded: Option<f64> = inertias.iter().map(|(_, j)| j.fold()).sum();
         let j = match folded {
             Some(sum) => crate::value::lit(sum),
@@ -115,9 +117,9 @@ impl ForceEmitter<'_> {
         if v_g.is_some() {
             let (f, a) = (
                 Family::PwInertiaForce.of(part.suffix()),
-                Family::Acc.of(&m.at),
+                self.reads.acc(&Family::Acc.of(&m.at)),
             );
-            self.code.extend(quote!(let #f = acc.#a * (-#mass);));
+            self.code.extend(quote!(let #f = #a * (-#mass);));
             out.terms.push(quote!(#f));
         }
         if gravity {
@@ -157,8 +159,8 @@ impl ForceEmitter<'_> {
                 quote!(::mechanism::Vector2::new(#x, #y))
             }
             ForceSpecValue::Along(guide, v) => {
-                let v = v.emit();
-                quote!(pos.#guide.dir * #v)
+                let (guide, v) = (self.reads.pos(guide), v.emit());
+                quote!(#guide.dir * #v)
             }
         };
         self.code.extend(quote!(let #local = #value;));
@@ -174,7 +176,8 @@ impl ForceEmitter<'_> {
         let local = Family::PwTorque.of(n);
         let value = t.value.emit();
         self.code.extend(quote!(let #local = #value;));
-        if let Some((w, _)) = self.rates_of(&t.on) {
+        if let Some((w, _)) = self.rate_fields(&t.on) {
+            let w = self.reads.vel(&w);
             self.power.push(quote!(#local * #w));
         }
         self.add(

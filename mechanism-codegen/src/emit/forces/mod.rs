@@ -15,7 +15,7 @@ mod loads;
 use super::describe::{fields_impl, FieldEntry};
 use super::names::TypeNames;
 use crate::keys::{GuideName, LinkName, PointName};
-use crate::kinds::{self, forces::ForceCx};
+use crate::kinds::{self, forces::ForceCx, reads::Reads};
 use crate::model::Model;
 use crate::names::Family;
 use crate::plan::Plan;
@@ -72,6 +72,8 @@ struct ForceEmitter<'a> {
     conditions: Vec<TokenStream>,
     /// Methods beside `forces` (the motors' rate map).
     extra_methods: TokenStream,
+    /// The recorder of the code's reads of `pos`, `vel` and `acc`.
+    reads: &'a Reads,
 }
 
 impl ForceCx for ForceEmitter<'_> {
@@ -99,7 +101,8 @@ impl ForceCx for ForceEmitter<'_> {
         if *point == r {
             quote!(#local)
         } else {
-            quote!(#local.moved(&pos.#r, &pos.#point))
+            let (r, point) = (self.reads.pos(&r), self.reads.pos(point));
+            quote!(#local.moved(&#r, &#point))
         }
     }
 
@@ -128,6 +131,10 @@ impl ForceCx for ForceEmitter<'_> {
     fn condition(&mut self, term: TokenStream) {
         self.conditions.push(term);
     }
+
+    fn reads(&self) -> &Reads {
+        self.reads
+    }
 }
 
 impl ForceEmitter<'_> {
@@ -154,7 +161,7 @@ impl ForceEmitter<'_> {
             });
             quote!(#input_ty { #(#fields),* })
         };
-        let rate = |link: &Ident| self.rates_of(link).map(|(w, _)| w);
+        let rate = |link: &Ident| self.rate_fields(link).map(|(w, _)| self.reads.vel(&w));
         let rates: Vec<TokenStream> = model
             .kinetics
             .motors
@@ -201,25 +208,25 @@ impl ForceEmitter<'_> {
 
     /// Velocity of a point (code), `None` when it never moves.
     fn velocity(&self, point: &Ident) -> Option<TokenStream> {
-        self.moving.contains(&PointName::of(point)).then(|| {
-            let v = Family::Vel.of(point);
-            quote!(vel.#v)
-        })
+        self.moving
+            .contains(&PointName::of(point))
+            .then(|| self.reads.vel(&Family::Vel.of(point)))
     }
 
-    /// Angular velocity and acceleration of a link (code), `None` when it
-    /// does not turn.
-    fn rates_of(&self, link: &Ident) -> Option<(TokenStream, TokenStream)> {
-        self.plan.turning_link(&LinkName::of(link)).map(|l| {
-            let (w, a) = (Family::Omega.of(&l), Family::Alpha.of(&l));
-            (quote!(vel.#w), quote!(acc.#a))
-        })
+    /// The fields of a link's angular velocity and acceleration in the
+    /// velocity and acceleration structs (`omega_L`, `alpha_L`), `None`
+    /// when it does not turn. The code that reads one records it.
+    fn rate_fields(&self, link: &Ident) -> Option<(Ident, Ident)> {
+        self.plan
+            .turning_link(&LinkName::of(link))
+            .map(|l| (Family::Omega.of(&l), Family::Alpha.of(&l)))
     }
 }
 
 /// Emits the force analysis of a valid, planned model whose definition asks
-/// for it. `moving` holds the points that move.
-pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<PointName>) -> ForcesCode {
+/// for it. `moving` holds the points that move; `reads` records the code's
+/// reads of the analyses' structs.
+pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<PointName>, reads: &Reads) -> ForcesCode {
     let mut em = ForceEmitter {
         model,
         plan,
@@ -230,6 +237,7 @@ pub fn emit(model: &Model, plan: &Plan, moving: &BTreeSet<PointName>) -> ForcesC
         reactions: Vec::new(),
         conditions: Vec::new(),
         extra_methods: TokenStream::new(),
+        reads,
     };
     em.known_loads();
     for &i in plan.solve.iter().rev() {
@@ -286,10 +294,11 @@ pub(crate) fn unique_names(reactions: &mut [Reaction]) {
 /// scaled determinants see that in any frame. The force solves' relative
 /// pivots are row-equilibrated and can miss it: a PRP with its guides along
 /// the x axis has a row (the x balance) whose entries all vanish together,
-/// and the scaling lifts it back to 1.
-fn condition_code(conditions: &[TokenStream]) -> TokenStream {
+/// and the scaling lifts it back to 1. `reads` records the read of the
+/// velocity's `condition`.
+fn condition_code(conditions: &[TokenStream], reads: &Reads) -> TokenStream {
     conditions.iter().fold(
-        quote!(vel.condition),
+        reads.vel(&format_ident!("condition")),
         |acc, c| quote!(::mechanism::geometry::min(#acc, #c)),
     )
 }
@@ -457,7 +466,7 @@ fn forces_method(
         &names.forces,
     );
     let code = &em.code;
-    let condition = condition_code(&em.conditions);
+    let condition = condition_code(&em.conditions, em.reads);
     let power = power_code(&em.power);
     let field_names: Vec<&Ident> = em.reactions.iter().map(|r| &r.name).collect();
     let field_values: Vec<&TokenStream> = em.reactions.iter().map(|r| &r.value).collect();
@@ -481,7 +490,7 @@ fn forces_method(
 
 #[cfg(test)]
 mod tests {
-    use super::{condition_code, power_code, unique_names, ForcesCode, Held, Reaction};
+    use super::{condition_code, power_code, unique_names, ForcesCode, Held, Reaction, Reads};
     use crate::emit::test_support::{flat, four_bar, planned};
     use proc_macro2::TokenStream;
     use quote::{format_ident, quote};
@@ -532,7 +541,7 @@ mod tests {
     fn forces(scene: &str) -> ForcesCode {
         let (model, plan) = planned(&four_bar(scene));
         let moving = crate::emit::moving_points(&model, &plan);
-        super::emit(&model, &plan, &moving)
+        super::emit(&model, &plan, &moving, &Reads::default())
     }
 
     // Proves the weight terms come only with a gravity statement: a mass
@@ -657,9 +666,10 @@ mod tests {
     #[test]
     fn empty_power_balance_and_condition_chain() {
         assert_eq!(flat(&power_code(&[])), "<Tas::mechanism::Real>::lit(0f64)");
-        assert_eq!(flat(&condition_code(&[])), "vel.condition");
+        let reads = Reads::default();
+        assert_eq!(flat(&condition_code(&[], &reads)), "vel.condition");
         assert_eq!(
-            flat(&condition_code(&[quote!(rx_B.min_pivot_ratio)])),
+            flat(&condition_code(&[quote!(rx_B.min_pivot_ratio)], &reads)),
             "::mechanism::geometry::min(vel.condition,rx_B.min_pivot_ratio)"
         );
     }

@@ -6,6 +6,7 @@ use super::Context;
 use crate::keys::LinkName;
 use crate::kinds;
 use crate::kinds::closure::{Residual, Residuals};
+use crate::kinds::reads::Reads;
 use crate::model::{Model, Stmt};
 use crate::plan::Plan;
 use crate::value::Value;
@@ -21,11 +22,12 @@ fn with_defaults(model: &Model, v: &Value) -> Option<f64> {
 /// Residuals of one statement's constraints (lengths in the definition's
 /// unit), as its kind writes them; a link's axis comes from the kind that
 /// creates the link.
-fn residuals(model: &Model, plan: &Plan, stmt: &Stmt) -> Vec<Residual> {
-    let mut r = Residuals::new(&stmt.name);
+/// `reads` records their reads of the position struct.
+fn residuals(model: &Model, plan: &Plan, stmt: &Stmt, reads: &Reads) -> Vec<Residual> {
+    let mut r = Residuals::new(&stmt.name, reads);
     let link_axis = |link: &Ident| {
         let info = &plan.links[&LinkName::of(link)];
-        kinds::of(&model.stmts[info.stmt]).closure_axis(info.index)
+        kinds::of(&model.stmts[info.stmt]).closure_axis(info.index, reads)
     };
     kinds::of(stmt).residuals(&mut r, &link_axis);
     r.list
@@ -51,7 +53,7 @@ impl Constraints {
             scales: Vec::new(),
         };
         for &i in &cx.checked.order {
-            for r in residuals(cx.model, cx.plan, &cx.model.stmts[i]) {
+            for r in residuals(cx.model, cx.plan, &cx.model.stmts[i], cx.reads) {
                 c.labels.push(r.label);
                 c.codes.push(r.code);
                 c.scales.push(r.scale.emit());

@@ -24,6 +24,7 @@ mod support;
 
 use crate::check::Findings;
 use crate::kinds;
+use crate::kinds::reads::Reads;
 use crate::model::{Level, Model};
 use crate::plan::{checked, Checked, Plan};
 use proc_macro2::TokenStream;
@@ -47,20 +48,23 @@ struct Context<'a> {
     velocity: bool,
     /// `true` when it generates `acceleration`.
     acceleration: bool,
+    /// The recorder of the tests' reads of the position struct.
+    reads: &'a Reads,
 }
 
 impl<'a> Context<'a> {
-    /// The context of `model`'s tests.
-    fn new(model: &'a Model, plan: &'a Plan) -> Self {
+    /// The context of `model`'s tests; `reads` records their reads.
+    fn new(model: &'a Model, plan: &'a Plan, reads: &'a Reads) -> Self {
         Context {
             model,
             plan,
             checked: checked(model, plan),
             name: &model.name,
             d: model.inputs.len(),
-            rows: OutputRows::new(&plan.outputs),
+            rows: OutputRows::new(&plan.outputs, reads),
             velocity: model.level >= Level::Velocity,
             acceleration: model.level >= Level::Acceleration,
+            reads,
         }
     }
 
@@ -78,9 +82,10 @@ impl<'a> Context<'a> {
     }
 }
 
-/// The `#[cfg(test)]` module.
-pub fn emit(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream {
-    let cx = Context::new(model, plan);
+/// The `#[cfg(test)]` module; `reads` records its reads of the position
+/// struct.
+pub fn emit(model: &Model, plan: &Plan, findings: &Findings, reads: &Reads) -> TokenStream {
+    let cx = Context::new(model, plan, reads);
     let name = cx.name;
     let module = format_ident!("{}_self_test", snake(&name.to_string()));
     let constraints = closure::Constraints::new(&cx);

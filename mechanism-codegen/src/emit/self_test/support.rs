@@ -4,6 +4,7 @@
 
 use super::closure::{shortest_link, Constraints};
 use super::Context;
+use crate::kinds::reads::Reads;
 use crate::model::Model;
 use crate::plan::Outputs;
 use proc_macro2::TokenStream;
@@ -23,23 +24,27 @@ pub(super) struct OutputRows {
 }
 
 impl OutputRows {
-    /// The columns of the definition's outputs: points, link angles, slides.
-    pub fn new(out: &Outputs) -> Self {
+    /// The columns of the definition's outputs: points, link angles,
+    /// slides; `reads` records the reads of the position struct.
+    pub fn new(out: &Outputs, reads: &Reads) -> Self {
         let (mut pos, mut rate, mut angle) = (Vec::new(), Vec::new(), Vec::new());
         for p in &out.points {
-            pos.push(quote!(<T as ::mechanism::Real>::as_f64(pos.#p.x)));
-            pos.push(quote!(<T as ::mechanism::Real>::as_f64(pos.#p.y)));
+            let at = reads.pos(p);
+            pos.push(quote!(<T as ::mechanism::Real>::as_f64(#at.x)));
+            pos.push(quote!(<T as ::mechanism::Real>::as_f64(#at.y)));
             rate.push(quote!(<T as ::mechanism::Real>::as_f64(v.#p.x)));
             rate.push(quote!(<T as ::mechanism::Real>::as_f64(v.#p.y)));
             angle.extend([false, false]);
         }
         for l in &out.links {
-            pos.push(quote!(<T as ::mechanism::Real>::as_f64(pos.#l)));
+            let at = reads.pos(l);
+            pos.push(quote!(<T as ::mechanism::Real>::as_f64(#at)));
             rate.push(quote!(<T as ::mechanism::Real>::as_f64(v.#l)));
             angle.push(true);
         }
         for s in out.slides.iter().map(|s| &s.name) {
-            pos.push(quote!(<T as ::mechanism::Real>::as_f64(pos.#s)));
+            let at = reads.pos(s);
+            pos.push(quote!(<T as ::mechanism::Real>::as_f64(#at)));
             rate.push(quote!(<T as ::mechanism::Real>::as_f64(v.#s)));
             angle.push(false);
         }
@@ -162,12 +167,12 @@ fn measures(cx: &Context, constraints: &Constraints) -> TokenStream {
     let position_ty = format_ident!("{}Position", name);
     let codes = &constraints.codes;
     let pos_row = &cx.rows.pos;
-    let points = cx.points();
+    let points: Vec<TokenStream> = cx.points().into_iter().map(|p| cx.reads.pos(p)).collect();
     let dets: Vec<TokenStream> = cx
         .checked
         .groups
         .iter()
-        .map(|&i| crate::emit::check_fn::det_code(cx.model, i))
+        .map(|&i| crate::emit::check_fn::det_code(cx.model, i, cx.reads))
         .collect();
     let ng = dets.len();
     let rate_impls = super::rates::row_impls(cx);
@@ -181,7 +186,7 @@ fn measures(cx: &Context, constraints: &Constraints) -> TokenStream {
         /// The mechanism's size at a pose: the largest point coordinate.
         fn size_of<T: ::mechanism::Real>(pos: &#position_ty<T>) -> f64 {
             let mut s = 0.0f64;
-            #( s = s.max(pt(&pos.#points)[0].abs()).max(pt(&pos.#points)[1].abs()); )*
+            #( s = s.max(pt(&#points)[0].abs()).max(pt(&#points)[1].abs()); )*
             s
         }
         fn pos_row<T: ::mechanism::Real>(pos: &#position_ty<T>) -> [f64; #k] { [#(#pos_row),*] }

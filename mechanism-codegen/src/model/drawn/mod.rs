@@ -35,7 +35,7 @@ use proc_macro2::Span;
 use syn::{Expr, Ident};
 
 /// The name of the fixed link.
-const GROUND: &str = "ground";
+use crate::keys::GROUND;
 
 /// A joint of the drawing, by its place in [`Drawing::joints`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
