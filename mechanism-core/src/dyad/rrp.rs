@@ -61,8 +61,8 @@ use crate::driver::slider::{transport_acceleration, transport_velocity};
 use crate::eft::{compensated, half_excess, split, two_product_split, two_sum};
 use crate::error::{Error, Fault, Primitive};
 use crate::geometry::{
-    abs, check_det_condition, cross, difference, dot, finite, finite_point, finite_vec, length,
-    perp, plus, positive, root_of_product,
+    abs, check_det_condition, cross, difference, dot, finite, finite_vec, length, perp, plus,
+    positive, root_of_product,
 };
 use crate::guide::{Line, LineAcceleration, LineVelocity};
 use crate::mode::Mode;
@@ -194,8 +194,26 @@ pub fn position<T: Real>(
         (r, t)
     };
     let s = finite(t + half, P, "RRP slide displacement s")?;
-    let c = finite_point(a + r1, P, "RRP joint C")?;
-    Ok(RrpPosition { c, r1, s, l })
+    // `C` by components, checked, and made a point in the result only: a
+    // checked `Point2` moved out of its own `Result` was copied through the
+    // stack as one 8-byte word from two 4-byte stores in `f32` (a
+    // store-forwarding stall on x86-64, about a tenth of the f32
+    // slider-crank's solve).
+    let (cx, cy) = (a.x + r1.x, a.y + r1.y);
+    if !(cx.finite() && cy.finite()) {
+        return Err(Error::new(
+            P,
+            Fault::NonFinite {
+                what: "RRP joint C",
+            },
+        ));
+    }
+    Ok(RrpPosition {
+        c: Point2::new(cx, cy),
+        r1,
+        s,
+        l,
+    })
 }
 
 /// Determinant of the rate system, `dot(r1, dir) = +-sqrt(l^2 - k^2)`, checked

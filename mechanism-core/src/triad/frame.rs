@@ -126,17 +126,25 @@ impl<T: Real> Frame<T> {
         (g, jac)
     }
 
-    /// Newton's method on [`Frame::system`] from `x`: `Some` when the steps
-    /// fall below `sqrt(eps) R` (then one more is taken) and every residual
-    /// ends within `64 eps l_i R`. The axis turns by `atan(step)` rather than
-    /// `step` (a rotation by `(1, step) / sqrt(1 + step^2)`, no sine or
-    /// cosine): the difference is third order in the step, so convergence
-    /// stays quadratic. Each step solves the 3x3 system by Cramer's rule
-    /// (its accuracy matters only to the speed of convergence: the residuals
-    /// decide the result).
+    /// Newton's method on [`Frame::system`] from `x`: `Some` when the
+    /// iteration settles and every residual ends within `64 eps l_i R`.
+    /// Settled: a step below `sqrt(eps) R` whose successor, predicted from
+    /// the quadratic convergence (`|d_(k+1)| ~ |d_k| (|d_k| / |d_(k-1)|)^2`,
+    /// step sizes weighted as below), is under `eps c / 8`, an eighth of the
+    /// rounding of the axis' angle times the side `c` (so it would move
+    /// neither `A` nor the axis by more than a fraction of an ulp); when the
+    /// prediction is larger (or there is no previous step), one more step is
+    /// taken. The axis turns by `atan(step)` rather than `step` (a rotation
+    /// by `(1, step) / sqrt(1 + step^2)`, no sine or cosine): the difference
+    /// is third order in the step, so convergence stays quadratic. Each step
+    /// solves the 3x3 system by Cramer's rule (its accuracy matters only to
+    /// the speed of convergence: the residuals decide the result).
     pub(super) fn newton(&self, mut x: State<T>) -> Option<State<T>> {
         let small = T::eps().sqrt() * self.reach;
+        let tiny = T::lit(0.125) * T::eps() * self.c;
         let mut settled = false;
+        // The previous step's size (0 before the first: no prediction).
+        let mut last = T::zero();
         for _ in 0..MAX_NEWTON {
             let (g, jac) = self.system(&x);
             let step = cramer(&jac, [-g[0], -g[1], -g[2]])?;
@@ -151,6 +159,13 @@ impl<T: Real> Frame<T> {
                 break;
             }
             settled = size <= small;
+            // The predicted next step `size^3 / last^2` against `tiny`,
+            // without a division (a cube below the normal range is a step
+            // far below rounding: 0 passes).
+            if settled && size * size * size <= tiny * last * last {
+                break;
+            }
+            last = size;
         }
         if !settled {
             return None;
@@ -193,11 +208,17 @@ impl<T: Real> Frame<T> {
     /// Root-sum-square distance of the joints of `pos` from `near`, in the
     /// normalized unit (no overflow).
     pub(super) fn distance(&self, pos: &TriadPosition<T>, near: &Near<T>) -> T {
+        self.distance_squared(pos, near).sqrt_kernel()
+    }
+
+    /// The square of [`Frame::distance`] (no square root: for comparisons
+    /// with a squared limit).
+    pub(super) fn distance_squared(&self, pos: &TriadPosition<T>, near: &Near<T>) -> T {
         let d = |p: &Point2<T>, q: &Point2<T>| {
             let w = (p - q) * self.down;
             dot(&w, &w)
         };
-        (d(&pos.a, &near.a) + d(&pos.b, &near.b) + d(&pos.p, &near.p)).sqrt_kernel()
+        d(&pos.a, &near.a) + d(&pos.b, &near.b) + d(&pos.p, &near.p)
     }
 
     /// The largest accepted jump, normalized.

@@ -69,8 +69,9 @@
 //! Differentiating the three leg equations: `r1 . vA = r1 . vK1`,
 //! `r2 . (vA + w perp(ab)) = r2 . vK2`, `r3 . (vA + w perp(ap)) = r3 . vK3`
 //! (`ri` the leg vectors `A - K1`, `B - K2`, `P - K3`; `w` the ternary's
-//! angular velocity): the position Newton's 3x3 Jacobian, solved by
-//! [`crate::linsolve`] after its determinant is checked against its bound
+//! angular velocity): the position Newton's 3x3 Jacobian, eliminated once
+//! by [`crate::linsolve::factor`] (row equilibration, partial pivoting) for
+//! the velocity and the acceleration after its determinant is checked against its bound
 //! `l1 l2 l3 (ab + |ap|)` (expanding along the ternary's column: `|r2 x ab|
 //! <= l2 ab`, `|r3 x ap| <= l3 |ap|`, each minor `<= l1 l3` or `l1 l2`). The legs' rates follow as
 //! `omega_i = cross(ri, v_joint - vKi) / li^2`. Accelerations: the same

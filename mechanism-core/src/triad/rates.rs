@@ -30,6 +30,10 @@ pub struct TriadVelocity<T: Real> {
     pub vk: [Vector2<T>; 3],
     /// `|jacobian|` of the position: the conditioning, in `(16 eps, 1]`.
     pub condition: T,
+    /// The rate matrix's elimination at the position these rates are for,
+    /// and that position's [`TriadPosition::jacobian`]: [`acceleration`] at
+    /// the same position (same matrix) solves with it.
+    factored: (linsolve::Factored<T, 3>, T),
 }
 
 /// Angular accelerations of the four links and the joints' accelerations.
@@ -70,11 +74,20 @@ fn rate_matrix<T: Real>(triad: &Triad<T>, pos: &TriadPosition<T>) -> Result<[[T;
     ])
 }
 
-/// Solves the rate system and maps its error to the triad.
-fn solve3<T: Real>(m: [[T; 3]; 3], rhs: [T; 3]) -> Result<[T; 3], Error<T>> {
-    linsolve::solve(m, rhs)
-        .map(|s| s.x)
+/// The rate matrix at `pos`, checked and eliminated.
+fn factor<T: Real>(
+    triad: &Triad<T>,
+    pos: &TriadPosition<T>,
+) -> Result<linsolve::Factored<T, 3>, Error<T>> {
+    linsolve::factor(rate_matrix(triad, pos)?)
+        .map(|(f, _)| f)
         .map_err(|e| Error::new(PRIM, e.fault))
+}
+
+/// Solves the rate system for one right-hand side and maps its error to
+/// the triad.
+fn solve3<T: Real>(m: &linsolve::Factored<T, 3>, rhs: [T; 3]) -> Result<[T; 3], Error<T>> {
+    m.solve(rhs).map_err(|e| Error::new(PRIM, e.fault))
 }
 
 /// The rotation rate of a leg `r` of length `l` whose ends move at `v_end`
@@ -96,14 +109,14 @@ pub fn velocity<T: Real>(
     vk2: Option<&Vector2<T>>,
     vk3: Option<&Vector2<T>>,
 ) -> Result<TriadVelocity<T>, Error<T>> {
-    let m = rate_matrix(triad, pos)?;
+    let m = factor(triad, pos)?;
     let vk = [or_zero(vk1), or_zero(vk2), or_zero(vk3)];
     let rhs = [
         dot(&pos.r1, &vk[0]),
         dot(&pos.r2, &vk[1]),
         dot(&pos.r3, &vk[2]),
     ];
-    let [vx, vy, w_c] = solve3(m, rhs)?;
+    let [vx, vy, w_c] = solve3(&m, rhs)?;
     let omega = w_c / triad.ab;
     let va = Vector2::new(vx, vy);
     let vb = va + perp(&pos.ab) * omega;
@@ -118,6 +131,7 @@ pub fn velocity<T: Real>(
         vp,
         vk,
         condition: abs(pos.jacobian),
+        factored: (m, pos.jacobian),
     };
     let check = [out.omega1, out.omega2, out.omega3, vb.x, vb.y, vp.x, vp.y];
     if all_finite(check) {
@@ -137,8 +151,10 @@ pub fn velocity<T: Real>(
 ///
 /// Second derivatives of the leg equations: `r1 . aA = r1 . aK1 - |vA -
 /// vK1|^2`, `r2 . (aA + alpha perp(ab)) = r2 . aK2 - |vB - vK2|^2 + omega^2
-/// r2 . ab`, likewise for leg 3 with `ap`: the rate matrix again.
-/// Errors as for [`velocity`].
+/// r2 . ab`, likewise for leg 3 with `ap`: the rate matrix again, whose
+/// elimination `vel` carries when it was solved at this `pos` (the matrix is
+/// then not checked and eliminated a second time). Errors as for
+/// [`velocity`].
 pub fn acceleration<T: Real>(
     triad: &Triad<T>,
     pos: &TriadPosition<T>,
@@ -147,7 +163,15 @@ pub fn acceleration<T: Real>(
     ak2: Option<&Vector2<T>>,
     ak3: Option<&Vector2<T>>,
 ) -> Result<TriadAcceleration<T>, Error<T>> {
-    let m = rate_matrix(triad, pos)?;
+    // The velocity's elimination when `vel` was solved at this position
+    // (the same determinant, bit for bit), else the matrix again.
+    let fresh;
+    let m = if vel.factored.1 == pos.jacobian {
+        &vel.factored.0
+    } else {
+        fresh = factor(triad, pos)?;
+        &fresh
+    };
     let ak = [or_zero(ak1), or_zero(ak2), or_zero(ak3)];
     let w2 = vel.omega * vel.omega;
     let (d1, d2, d3) = (vel.va - vel.vk[0], vel.vb - vel.vk[1], vel.vp - vel.vk[2]);
