@@ -38,6 +38,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[3],
     mode_at: Some(4),
     mode_words: super::word::SIDE_MODES,
+    group: Some("actuator"),
 };
 
 /// An `actuator` statement.

@@ -35,6 +35,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[2],
     mode_at: None,
     mode_words: &[],
+    group: Some("crank"),
 };
 
 /// A `crank` statement. `cos_sin`: its input is marked `as cos_sin`;

@@ -53,6 +53,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[],
     mode_at: None,
     mode_words: &[],
+    group: Some("gear"),
 };
 
 /// A `gear` statement.

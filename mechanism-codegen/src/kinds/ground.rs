@@ -22,6 +22,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[],
     mode_at: None,
     mode_words: &[],
+    group: None,
 };
 
 /// A `ground` statement.

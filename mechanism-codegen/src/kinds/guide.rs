@@ -31,6 +31,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[],
     mode_at: None,
     mode_words: &[],
+    group: None,
 };
 
 /// A `guide` statement.

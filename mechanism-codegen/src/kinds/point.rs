@@ -34,6 +34,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[],
     mode_at: None,
     mode_words: &[],
+    group: Some("link point"),
 };
 
 /// A `point` statement.

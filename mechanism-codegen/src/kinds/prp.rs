@@ -30,6 +30,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[],
     mode_at: None,
     mode_words: &[],
+    group: Some("PRP"),
 };
 
 /// A `prp` statement.

@@ -31,6 +31,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[],
     mode_at: Some(2),
     mode_words: super::word::SIGN_MODES,
+    group: Some("RPR"),
 };
 
 /// An `rpr` statement.

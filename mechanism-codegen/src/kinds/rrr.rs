@@ -31,6 +31,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[],
     mode_at: Some(4),
     mode_words: super::word::SIDE_MODES,
+    group: Some("RRR"),
 };
 
 /// An `rrr` statement.

@@ -30,6 +30,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[1],
     mode_at: None,
     mode_words: &[],
+    group: Some("slider"),
 };
 
 /// A `slider` statement.

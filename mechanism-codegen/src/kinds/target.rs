@@ -32,6 +32,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[0, 1],
     mode_at: None,
     mode_words: &[],
+    group: Some("target"),
 };
 
 /// A `target` statement.

@@ -51,6 +51,7 @@ pub(crate) const SPEC: super::word::Spec = super::word::Spec {
     inputs: &[],
     mode_at: None,
     mode_words: &[],
+    group: Some("triad"),
 };
 
 /// Evenly spaced rows of the tracked-pose table the generated

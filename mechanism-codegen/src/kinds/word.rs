@@ -79,6 +79,9 @@ pub struct Spec {
     pub mode_at: Option<usize>,
     /// The words its assembly mode accepts (empty without a mode).
     pub mode_words: &'static [&'static str],
+    /// What messages call a statement of this kind that fails to assemble
+    /// or is singular (`None`: it cannot fail, a ground point or a guide).
+    pub group: Option<&'static str>,
 }
 
 /// The mode words of the groups whose mode is a side (RRR, actuator).

@@ -434,6 +434,26 @@ pub struct Triad {
 }
 
 impl Kind {
+    /// The word of this kind (its descriptor: `self.word().spec()`).
+    pub fn word(&self) -> KindWord {
+        match self {
+            Kind::Ground { .. } => KindWord::Ground,
+            Kind::Guide { .. } => KindWord::Guide,
+            Kind::Crank { .. } => KindWord::Crank,
+            Kind::Slider { .. } => KindWord::Slider,
+            Kind::Actuator { .. } => KindWord::Actuator,
+            Kind::Target { .. } => KindWord::Target,
+            Kind::Rrr { .. } => KindWord::Rrr,
+            Kind::Rrp { .. } => KindWord::Rrp,
+            Kind::Rpr { .. } => KindWord::Rpr,
+            Kind::Prp { .. } => KindWord::Prp,
+            Kind::Rpp { .. } => KindWord::Rpp,
+            Kind::Point { .. } => KindWord::Point,
+            Kind::Triad(_) => KindWord::Triad,
+            Kind::Gear(_) => KindWord::Gear,
+        }
+    }
+
     /// Number of links the statement creates.
     pub fn link_count(&self) -> usize {
         match self {
@@ -474,23 +494,11 @@ impl Kind {
     }
 }
 
-/// The kind name of a statement that can fail (drivers, groups, link points).
+/// The kind name of a statement that can fail (drivers, groups, link points)
+/// as messages give it (its kind's `Spec::group`); `None` for ground points
+/// and guides.
 pub fn group_kind(kind: &Kind) -> Option<&'static str> {
-    Some(match kind {
-        Kind::Crank { .. } => "crank",
-        Kind::Slider { .. } => "slider",
-        Kind::Actuator { .. } => "actuator",
-        Kind::Target { .. } => "target",
-        Kind::Rrr { .. } => "RRR",
-        Kind::Rrp { .. } => "RRP",
-        Kind::Rpr { .. } => "RPR",
-        Kind::Prp { .. } => "PRP",
-        Kind::Rpp { .. } => "RPP",
-        Kind::Point { .. } => "link point",
-        Kind::Triad(_) => "triad",
-        Kind::Gear(_) => "gear",
-        Kind::Ground { .. } | Kind::Guide { .. } => return None,
-    })
+    kind.word().spec().group
 }
 
 #[cfg(test)]
