@@ -289,3 +289,64 @@ fn gear_pair_on_the_ground_and_on_a_carrier() {
     );
     assert_eq!((solved, failed), (POSES, 0));
 }
+
+/// Proves a mass or moment of inertia given by a parameter and set out of
+/// range at run time fails the run-time forces with the generated code's
+/// typed error (same group, same fault, same quantity named), the first
+/// one its checks meet when several are bad, and that the analysis works
+/// again once the parameter is valid.
+#[test]
+fn masses_set_out_of_range_fail_as_the_generated_checks() {
+    use super::agreement::scenes::{ShaperForces, ShaperForcesInput, ShaperForcesLoads};
+    let text = definition(
+        include_str!("../../examples/common/scenes.rs"),
+        "ShaperForces",
+    );
+    let mut m = Mechanism::new(&text).unwrap();
+    let input = |x| ShaperForcesInput { crank: x };
+    let loads = ShaperForcesLoads { cut: 0.0 };
+    let bad: [&[(&str, f64)]; 6] = [
+        &[("m3", -1.0)],
+        &[("j3", -0.5)],
+        &[("m4", 0.0)],
+        &[("m5", -2.0), ("j4", -1.0)],
+        &[("j4", -1.0), ("m3", -3.0)],
+        &[("m3", 0.0), ("j3", -1.0)],
+    ];
+    for set in bad {
+        let mut g = ShaperForces::<f64>::default();
+        for &(name, value) in set {
+            m.set_param(name, value).unwrap();
+            match name {
+                "m3" => g.m3 = value,
+                "j3" => g.j3 = value,
+                "m4" => g.m4 = value,
+                "j4" => g.j4 = value,
+                _ => g.m5 = value,
+            }
+        }
+        let (gp, rp) = (
+            g.position(&input(0.7)).unwrap(),
+            m.position(&[0.7]).unwrap(),
+        );
+        let gv = g.velocity(&gp, &input(3.0)).unwrap();
+        let rv = m.velocity(&rp, &[3.0]).unwrap();
+        let ga = g.acceleration(&gp, &gv, &input(1.0)).unwrap();
+        let ra = m.acceleration(&rp, &rv, &[1.0]).unwrap();
+        let want = g.forces(&gp, &gv, &ga, &loads).expect_err("a bad mass");
+        let got = m.forces(&rp, &rv, &ra).expect_err("a bad mass");
+        assert_eq!(got, want, "{set:?}");
+        for &(name, _) in set {
+            let valid = ShaperForces::<f64>::default();
+            let value = match name {
+                "m3" => valid.m3,
+                "j3" => valid.j3,
+                "m4" => valid.m4,
+                "j4" => valid.j4,
+                _ => valid.m5,
+            };
+            m.set_param(name, value).unwrap();
+        }
+        assert!(m.forces(&rp, &rv, &ra).is_ok(), "{set:?} restored");
+    }
+}

@@ -45,6 +45,13 @@ impl PointSlot {
     }
 }
 
+impl LinkSlot {
+    /// Its index in the layout's per-link facts.
+    pub fn index(self) -> usize {
+        at(self.0)
+    }
+}
+
 impl StepSlot {
     /// The step of the statement defining point `p`.
     pub fn of(p: PointSlot) -> Self {
@@ -698,6 +705,58 @@ pub trait Step: Send + Sync {
     }
 }
 
+/// The power balance's terms summed as they come, as the generated
+/// `forces()` sums them: the first term, then each next one added in
+/// order; beside it the largest magnitude, and whether any was seen.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct PowerSum {
+    sum: Option<f64>,
+    scale: f64,
+}
+
+impl PowerSum {
+    /// Adds the next term (W: force x length / time).
+    pub fn push(&mut self, term: f64) {
+        self.sum = Some(match self.sum {
+            Some(s) => s + term,
+            None => term,
+        });
+        let a = mechanism_core::geometry::abs(term);
+        if a > self.scale {
+            self.scale = a;
+        }
+    }
+
+    /// |sum| over the largest |term|: 0 with no term or when all vanish,
+    /// 1 when the sum or the largest term is not finite (the generated
+    /// `__power_residual`).
+    pub fn residual(&self) -> f64 {
+        let Some(sum) = self.sum else {
+            return 0.0;
+        };
+        if !(self.scale.is_finite() && sum.is_finite()) {
+            1.0
+        } else if self.scale > 0.0 {
+            mechanism_core::geometry::abs(sum) / self.scale
+        } else {
+            0.0
+        }
+    }
+}
+
+/// The smallest of a sequence of conditioning figures, folded in order
+/// with `geometry::min` from a starting value (as the generated code
+/// folds them).
+#[derive(Clone, Copy, Debug)]
+pub struct RunningMin(pub f64);
+
+impl RunningMin {
+    /// Folds in the next figure.
+    pub fn push(&mut self, x: f64) {
+        self.0 = mechanism_core::geometry::min(self.0, x);
+    }
+}
+
 /// The reaction at the joint between a group's two links.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ForceValue {
@@ -727,10 +786,10 @@ pub struct ForceRunCx<'r> {
     /// The fields' values, in order (a revolute force: x, y; a prismatic
     /// reaction: force x, y and moment; a scalar: itself).
     pub values: &'r mut Vec<f64>,
-    /// The power terms of the balance, in order.
-    pub power: &'r mut Vec<f64>,
-    /// The groups' force-system conditioning, in order.
-    pub conditions: &'r mut Vec<f64>,
+    /// The power terms of the balance, summed in order.
+    pub power: &'r mut PowerSum,
+    /// The groups' force-system conditioning, the smallest so far.
+    pub conditions: &'r mut RunningMin,
     /// The fields' names and kinds, when the plan is compiled (`None` when
     /// evaluating).
     pub names: Option<&'r mut Vec<(String, Held)>>,
@@ -777,6 +836,12 @@ impl ForceRunCx<'_> {
     /// Input `i`'s rate.
     pub fn rate(&self, i: InputSlot) -> f64 {
         self.vel.q[at(i.0)]
+    }
+
+    /// The angular velocity and acceleration recorded for link slot `l`
+    /// (a slot of `Layout::turning`: the link whose rates a link shares).
+    pub fn link_rates(&self, l: LinkSlot) -> (f64, f64) {
+        (self.vel.links[at(l.0)], self.acc.links[at(l.0)])
     }
 
     /// The load of `link` as a wrench about `point` (zero when it carries

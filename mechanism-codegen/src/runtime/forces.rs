@@ -22,7 +22,7 @@ use super::{intern, Column, Mechanism, Position, Rates};
 use crate::emit::forces::ForceField;
 use crate::keys::{GuideName, LinkName, PointName};
 use crate::kinds::forces::Held;
-use crate::kinds::run::{ForceRunCx, GuideSlot, Layout, LinkSlot, PointSlot};
+use crate::kinds::run::{ForceRunCx, GuideSlot, Layout, LinkSlot, PointSlot, PowerSum, RunningMin};
 use crate::model::{ForceSpecValue, Level, MassSpec};
 use crate::names::Family;
 use crate::value::{Value, ValueKind};
@@ -49,13 +49,11 @@ pub struct Forces {
 }
 
 /// What one force evaluation works in, kept between evaluations: each
-/// link's load, the power terms, the groups' conditioning, and the
-/// velocities at unit rates of an inverse-kinematics definition's motors.
+/// link's load and the velocities at unit rates of an inverse-kinematics
+/// definition's motors.
 #[derive(Clone, Debug, Default)]
 struct Scratch {
     loads: Vec<Option<Wrench<f64>>>,
-    power: Vec<f64>,
-    conditions: Vec<f64>,
     unit: Vec<Rates>,
 }
 
@@ -109,45 +107,27 @@ fn primitive_named(name: &str) -> Primitive {
     .unwrap_or(Primitive::LinkPoint)
 }
 
-/// The power residual of the terms, as the generated code computes it.
-fn power_residual(terms: &[f64]) -> f64 {
-    let Some((&first, rest)) = terms.split_first() else {
-        return 0.0;
-    };
-    let scale = terms
-        .iter()
-        .map(|t| geometry::abs(*t))
-        .fold(0.0, |m: f64, a| if a > m { a } else { m });
-    let sum = rest.iter().fold(first, |acc, t| acc + t);
-    if !(scale.is_finite() && sum.is_finite()) {
-        1.0
-    } else if scale > 0.0 {
-        geometry::abs(sum) / scale
-    } else {
-        0.0
-    }
-}
-
-/// One part of a link's mass, compiled: its centre, its mass (or the
-/// error the generated code's check gives) and, for a link's only part,
-/// its moment of inertia (likewise).
-#[derive(Clone, Debug)]
+/// One part of a link's mass, compiled: its centre (and whether it
+/// moves), its mass and, for a link's only part, its moment of inertia
+/// when the link turns (checked when compiled: [`ForcePlan::error`]).
+#[derive(Clone, Copy, Debug)]
 struct MassPart {
     at: PointSlot,
-    mass: Result<f64, Error<f64>>,
-    j: Option<Result<f64, Error<f64>>>,
+    moving: bool,
+    mass: f64,
+    j: Option<f64>,
 }
 
-/// A link's masses, compiled: the link, the link whose rates its inertia
-/// couple reads, its parts and, for several parts, their moments of
-/// inertia summed (`None`: none has one).
+/// A link's masses, compiled: the link, the slot of the link whose rates
+/// its inertia couple reads (`None`: it never turns), its parts and, for
+/// several parts, their moments of inertia summed (`None`: none has one,
+/// or the link does not turn).
 #[derive(Clone, Debug)]
 struct LinkMasses {
     link: LinkSlot,
-    turning: LinkSlot,
-    one: bool,
+    turning: Option<LinkSlot>,
     parts: Vec<MassPart>,
-    inertia: Option<Result<f64, Error<f64>>>,
+    inertia: Option<f64>,
 }
 
 /// An external force's value: components (force units), or a magnitude
@@ -183,6 +163,10 @@ struct Motors {
 /// link, then forces, then couples), and the motors.
 #[derive(Clone, Debug, Default)]
 pub(super) struct ForcePlan {
+    /// The error the generated code's checks of the masses and moments of
+    /// inertia give first, in the order it makes them (a value known once
+    /// the parameters are: each evaluation returns it before any load).
+    error: Option<Error<f64>>,
     gravity: Option<Vector2<f64>>,
     masses: Vec<LinkMasses>,
     forces: Vec<ExtForce>,
@@ -202,9 +186,10 @@ impl ForcePlan {
             .gravity
             .as_ref()
             .map(|(_, gx, gy)| Vector2::new(m.value(gx), m.value(gy)));
+        let mut error = None;
         let masses = crate::emit::forces::masses_by_link(&k.masses)
             .into_iter()
-            .map(|(link, parts)| m.link_masses(&link, &parts))
+            .map(|(link, parts)| m.link_masses(&link, &parts, &mut error))
             .collect();
         let forces = k
             .forces
@@ -239,6 +224,7 @@ impl ForcePlan {
             .map(|t| (slots.link_named(&LinkName::of(&t.on)), m.value(&t.value)))
             .collect();
         ForcePlan {
+            error,
             gravity,
             masses,
             forces,
@@ -249,8 +235,11 @@ impl ForcePlan {
 
     /// The known loads onto the links' loads, their powers in order.
     fn known_loads(&self, cx: &mut ForceRunCx<'_>) -> Result<(), Error<f64>> {
+        if let Some(e) = self.error {
+            return Err(e);
+        }
         for lm in &self.masses {
-            masses(cx, lm, self.gravity)?;
+            masses(cx, lm, self.gravity);
         }
         for f in &self.forces {
             let value = match f.value {
@@ -274,17 +263,13 @@ impl ForcePlan {
 
 /// The masses of one link (`loads::mass`, `loads::mass_parts`): each
 /// part's inertia force and weight at its centre; the inertia couple (the
-/// parts' `j` summed) when the link turns. Checks, powers and loads in
-/// the generated order.
-fn masses(
-    cx: &mut ForceRunCx<'_>,
-    lm: &LinkMasses,
-    gravity: Option<Vector2<f64>>,
-) -> Result<(), Error<f64>> {
-    let turning = cx.rates_of(lm.turning);
+/// parts' `j` summed) when the link turns. Powers and loads in the
+/// generated order (the checks are [`ForcePlan::error`]).
+fn masses(cx: &mut ForceRunCx<'_>, lm: &LinkMasses, gravity: Option<Vector2<f64>>) {
+    let turning = lm.turning.map(|l| cx.link_rates(l));
     for part in &lm.parts {
-        let mass = part.mass?;
-        let v_g = cx.velocity_of(part.at);
+        let mass = part.mass;
+        let v_g = part.moving.then(|| cx.vel.point(part.at));
         let mut terms = [Vector2::zeros(); 2];
         let mut n = 0;
         if v_g.is_some() {
@@ -297,8 +282,8 @@ fn masses(
         }
         // A link's only mass: its couple comes before its forces.
         let mut couple = None;
-        if let (true, Some(j), Some((w, alpha))) = (lm.one, part.j, turning) {
-            let c = -(j? * alpha);
+        if let (Some(j), Some((w, alpha))) = (part.j, turning) {
+            let c = -(j * alpha);
             cx.power.push(c * w);
             couple = Some(c);
         }
@@ -316,12 +301,11 @@ fn masses(
         }
     }
     let (Some((w, alpha)), Some(j)) = (turning, lm.inertia) else {
-        return Ok(());
+        return;
     };
-    let c = -(j? * alpha);
+    let c = -(j * alpha);
     cx.power.push(c * w);
     cx.add(lm.link, Wrench::couple(c));
-    Ok(())
 }
 
 impl Mechanism {
@@ -416,8 +400,6 @@ impl Mechanism {
             power_residual: f64::NAN,
             scratch: Scratch {
                 loads: vec![None; self.slots.link_names.len() + 1],
-                power: Vec::new(),
-                conditions: Vec::new(),
                 unit,
             },
         }
@@ -473,12 +455,7 @@ impl Mechanism {
             ));
         }
         let n = self.model.inputs.len();
-        let Scratch {
-            loads,
-            power,
-            conditions,
-            unit,
-        } = &mut out.scratch;
+        let Scratch { loads, unit } = &mut out.scratch;
         self.fits(
             pos.solved
                 && vel.solved
@@ -495,9 +472,8 @@ impl Mechanism {
                     },
         )?;
         loads.fill(None);
-        power.clear();
-        conditions.clear();
         out.values.clear();
+        let (mut power, mut conditions) = (PowerSum::default(), RunningMin(vel.condition));
         let mut cx = ForceRunCx {
             pose: &pos.pose,
             vel: &vel.motion,
@@ -505,8 +481,8 @@ impl Mechanism {
             layout: &self.slots,
             loads,
             values: &mut out.values,
-            power,
-            conditions,
+            power: &mut power,
+            conditions: &mut conditions,
             names,
         };
         let c = &self.compiled;
@@ -516,14 +492,10 @@ impl Mechanism {
             step.forces(&mut cx).map_err(|e| e.in_group(step.group()))?;
         }
         self.motors(pos, &mut cx, unit)?;
-        let condition = cx
-            .conditions
-            .iter()
-            .fold(vel.condition, |c, &x| geometry::min(c, x));
-        let power_residual = power_residual(cx.power);
+        let (condition, power_residual) = (conditions.0, power.residual());
         out.values.extend([condition, power_residual]);
-        if let Some(bad) = out.values.iter().find(|v| !v.is_finite()) {
-            return Err(super::non_finite(*bad));
+        if let Some(bad) = super::first_non_finite(&out.values) {
+            return Err(super::non_finite(bad));
         }
         out.condition = condition;
         out.power_residual = power_residual;
@@ -575,10 +547,27 @@ impl Mechanism {
     }
 
     /// The masses of `link`, compiled: each part's checked mass and (for
-    /// a link's only part) moment of inertia, and the parts' moments of
-    /// inertia summed as the generated code sums them (folded when every
-    /// one is literal, else each checked).
-    fn link_masses(&self, link: &LinkName, parts: &[&MassSpec]) -> LinkMasses {
+    /// a link's only part, when the link turns) moment of inertia, and the
+    /// parts' moments of inertia summed as the generated code sums them
+    /// (folded when every one is literal, else each checked). The first
+    /// failed check, in the order the generated code makes them, into
+    /// `error` unless it holds one.
+    fn link_masses(
+        &self,
+        link: &LinkName,
+        parts: &[&MassSpec],
+        error: &mut Option<Error<f64>>,
+    ) -> LinkMasses {
+        let mut first = |r: Result<f64, Error<f64>>| {
+            r.unwrap_or_else(|e| {
+                error.get_or_insert(e);
+                f64::NAN
+            })
+        };
+        let turning_name = parts
+            .first()
+            .map_or_else(|| LinkName::new(""), |p| LinkName::of(&p.link));
+        let turning = self.slots.turning[self.slots.link_named(&turning_name).index()];
         let one = parts.len() == 1;
         let mut out = Vec::new();
         let mut inertias = Vec::new();
@@ -589,37 +578,38 @@ impl Mechanism {
                 format!(" (part {})", k + 1)
             };
             let j = m.inertia.as_ref().filter(|j| j.fold() != Some(0.0));
+            let at = self.slots.point_named(&PointName::of(&m.at));
+            let mass = first(self.checked(&m.mass, link, &part, true));
+            let j_one = j
+                .filter(|_| one && turning.is_some())
+                .map(|j| first(self.checked(j, link, "", false)));
             out.push(MassPart {
-                at: self.slots.point_named(&PointName::of(&m.at)),
-                mass: self.checked(&m.mass, link, &part, true),
-                j: j.filter(|_| one).map(|j| self.checked(j, link, "", false)),
+                at,
+                moving: self.slots.moving[at.index()],
+                mass,
+                j: j_one,
             });
             if let (false, Some(j)) = (one, j) {
                 inertias.push((part, j));
             }
         }
-        let inertia = (!inertias.is_empty()).then(|| {
+        let inertia = (turning.is_some() && !inertias.is_empty()).then(|| {
             let folded: Option<f64> = inertias.iter().map(|(_, j)| j.fold()).sum();
             match folded {
-                Some(sum) => Ok(sum),
+                Some(sum) => sum,
                 None => {
                     let mut total: Option<f64> = None;
                     for (part, j) in &inertias {
-                        let x = self.checked(j, link, part, false)?;
+                        let x = first(self.checked(j, link, part, false));
                         total = Some(total.map_or(x, |t| t + x));
                     }
-                    Ok(total.unwrap_or(f64::NAN))
+                    total.unwrap_or(f64::NAN)
                 }
             }
         });
         LinkMasses {
             link: self.slots.link_named(link),
-            turning: self.slots.link_named(
-                &parts
-                    .first()
-                    .map_or_else(|| LinkName::new(""), |p| LinkName::of(&p.link)),
-            ),
-            one,
+            turning,
             parts: out,
             inertia,
         }
@@ -711,7 +701,7 @@ impl Mechanism {
 }
 #[cfg(test)]
 mod tests {
-    use super::{power_residual, Held, Mechanism};
+    use super::{Held, Mechanism, PowerSum};
 
     /// A block slid along a ground line drives a rocker through a rod,
     /// with masses, gravity and a couple: a push, a prismatic reaction,
@@ -766,9 +756,15 @@ mod tests {
     // term gives 0, all-zero terms 0, an overflowing sum 1, else |sum|/max.
     #[test]
     fn power_residual_as_generated() {
-        assert_eq!(power_residual(&[]), 0.0);
-        assert_eq!(power_residual(&[0.0, 0.0]), 0.0);
-        assert_eq!(power_residual(&[f64::MAX, f64::MAX]), 1.0);
-        assert_eq!(power_residual(&[2.0, -1.5]), 0.25);
+        let residual = |terms: &[f64]| {
+            let mut p = PowerSum::default();
+            terms.iter().for_each(|&t| p.push(t));
+            p.residual()
+        };
+        assert_eq!(residual(&[]), 0.0);
+        assert_eq!(residual(&[0.0, 0.0]), 0.0);
+        assert_eq!(residual(&[f64::MAX, f64::MAX]), 1.0);
+        assert_eq!(residual(&[2.0, -1.5]), 0.25);
+        assert_eq!(residual(&[3.0, f64::NAN]), 1.0);
     }
 }

@@ -576,14 +576,22 @@ impl Mechanism {
             step.rates(&mut cx).map_err(|e| e.in_group(step.group()))?;
         }
         let (values, motion) = (&mut out.values, &out.motion);
-        values.clear();
         let o = &c.rate_out;
-        values.extend(o.points.iter().flat_map(|p| {
+        // Written in place (the length is fixed by the plan): no capacity
+        // check per value.
+        values.resize(o.len(), 0.0);
+        let (xy, rest) = values.split_at_mut(2 * o.points.len());
+        let (links, slides) = rest.split_at_mut(o.links.len());
+        for (pair, p) in xy.chunks_exact_mut(2).zip(&o.points) {
             let v = p.map_or_else(mechanism_core::Vector2::zeros, |p| motion.point(p));
-            [v.x, v.y]
-        }));
-        values.extend(o.links.iter().map(|l| l.map_or(0.0, |l| motion.link(l))));
-        values.extend(o.slides.iter().map(|&(s, k)| motion.slide(s, k)));
+            pair.copy_from_slice(&[v.x, v.y]);
+        }
+        for (x, l) in links.iter_mut().zip(&o.links) {
+            *x = l.map_or(0.0, |l| motion.link(l));
+        }
+        for (x, &(s, k)) in slides.iter_mut().zip(&o.slides) {
+            *x = motion.slide(s, k);
+        }
         if let Some(bad) = first_non_finite(values) {
             return Err(non_finite(bad));
         }
