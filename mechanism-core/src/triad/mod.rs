@@ -70,7 +70,8 @@
 //! `r2 . (vA + w perp(ab)) = r2 . vK2`, `r3 . (vA + w perp(ap)) = r3 . vK3`
 //! (`ri` the leg vectors `A - K1`, `B - K2`, `P - K3`; `w` the ternary's
 //! angular velocity): the position Newton's 3x3 Jacobian, eliminated once
-//! by [`crate::linsolve::factor`] (row equilibration, partial pivoting) for
+//! (row equilibration, partial pivoting: [`crate::linsolve::factor`]'s
+//! arithmetic unrolled for this matrix, `elimination.rs`) for
 //! the velocity and the acceleration after its determinant is checked against its bound
 //! `l1 l2 l3 (ab + |ap|)` (expanding along the ternary's column: `|r2 x ab|
 //! <= l2 ab`, `|r3 x ap| <= l3 |ap|`, each minor `<= l1 l3` or `l1 l2`). The legs' rates follow as
@@ -89,6 +90,7 @@
 //! rates per second.
 
 mod assembly;
+mod elimination;
 mod forces;
 mod frame;
 mod polynomial;

@@ -90,9 +90,15 @@ const TANGENCY: f64 = 256.0;
 /// within this many ulps of the largest product that formed it.
 const VANISH: f64 = 4096.0;
 
-/// Newton steps on one bracket of the root isolation (each halves the
-/// bracket at least, so 60 reach any precision).
+/// Steps on one bracket of the root isolation (a step that does not at
+/// least halve the bracket is followed by a bisection, so 60 reach any
+/// precision).
 const MAX_STEPS: usize = 60;
+
+/// The largest Newton step `|p / p'|` (in the half-angle tangent, on
+/// `[-1, 1]`) after which a root's step may be the last (see
+/// [`bracketed`]): `2^-10`.
+const SETTLE: f64 = 1.0 / 1024.0;
 
 /// `Re` and `Im` of `(1 + i t)^(2m) (1 + t^2)^(3 - m)`, ascending powers of `t`,
 /// for `m = 0..=3`: `P(t) = sum_m (2 - [m = 0]) Re(F_m basis_m)`.
@@ -252,16 +258,20 @@ pub(super) fn roots<T: Real>(f: &Frame<T>) -> RootsOf<T> {
     RootsOf::Halves(roots_in_unit(&p), roots_in_unit(&rev))
 }
 
-/// `p(x)` and `p'(x)` by Horner's rule, for the `n + 1` first coefficients.
+/// `p(x)`, `p'(x)` and `p''(x) / 2` by Horner's rule, for the `n + 1`
+/// first coefficients (three chains side by side: about the latency of
+/// `p(x)` alone).
 #[inline(always)]
-fn eval<T: Real>(p: &Poly<T>, n: usize, x: T) -> (T, T) {
+fn eval<T: Real>(p: &Poly<T>, n: usize, x: T) -> (T, T, T) {
     let mut v = p[n];
     let mut d = T::zero();
+    let mut h = T::zero();
     for k in (0..n).rev() {
+        h = h * x + d;
         d = d * x + v;
         v = v * x + p[k];
     }
-    (v, d)
+    (v, d, h)
 }
 
 /// The sum of the magnitudes of `p`'s terms at `x` (rounding's scale).
@@ -271,13 +281,23 @@ fn magnitude<T: Real>(p: &Poly<T>, x: T) -> T {
 }
 
 /// The root in `[a, b]` of `p` (degree `n`), monotone there with `pa`, `pb`
-/// of opposite signs: Newton from the secant point, kept in the bracket.
+/// of opposite signs: Halley's method from the midpoint, kept in the
+/// bracket (bisection when a step leaves it).
+///
+/// With `v`, `d`, `h` = `p`, `p'`, `p'' / 2` at `x`, Halley's step is `v d
+/// / (d^2 - v h)` (one division; third order), Newton's `s = v / d`, which
+/// would leave an error of about `h s^2 / d` (second order). A step is the
+/// last when Newton's predicted error is below the tolerance
+/// (`sqrt(eps) / 64`; Halley's, of higher order, is smaller still) and `|s|
+/// <= 2^-10`, where the expansion's omitted terms are of order `s^3`; or
+/// when the bracket is below the tolerance. No division in the test: `|v^2
+/// h| <= tol |d|^3`, `|v| <= 2^-10 |d|`.
 fn bracketed<T: Real>(p: &Poly<T>, n: usize, mut a: T, mut b: T, pa: T) -> T {
     let tol = T::eps().sqrt() * T::lit(1.0 / 64.0);
     let neg_a = pa < T::zero();
     let mut x = T::lit(0.5) * (a + b);
     for _ in 0..MAX_STEPS {
-        let (v, d) = eval(p, n, x);
+        let (v, d, h) = eval(p, n, x);
         if v == T::zero() {
             return x;
         }
@@ -286,19 +306,69 @@ fn bracketed<T: Real>(p: &Poly<T>, n: usize, mut a: T, mut b: T, pa: T) -> T {
         } else {
             b = x;
         }
-        let newton = x - v / d;
-        let next = if newton > a && newton < b {
-            newton
+        // Outside the bracket, or NaN (`d^2 = v h`): bisection.
+        let halley = x - v * d / (d * d - v * h);
+        let inside = halley > a && halley < b;
+        let settled =
+            inside && abs(v) <= T::lit(SETTLE) * abs(d) && abs(v * v * h) <= tol * abs(d * d * d);
+        x = if inside {
+            halley
         } else {
             T::lit(0.5) * (a + b)
         };
-        let step = abs(next - x);
-        x = next;
-        if step <= tol || b - a <= tol {
+        if settled || b - a <= tol {
             break;
         }
     }
     x
+}
+
+/// The real roots of the quadratic `c[0] + c[1] x + c[2] x^2` in `[-1, 1]`,
+/// ascending, in closed form (the critical points of the cubic level):
+/// `q = -(c1 + sign(c1) sqrt(c1^2 - 4 c0 c2)) / 2`, roots `q / c2` and `c0 /
+/// q` (no cancellation). A negative discriminant gives none: where it is
+/// negative by rounding only, the two roots are within about `sqrt(eps)`
+/// and the cubic's wiggle between them is of order `eps^(3/2)`, below its
+/// rounding (a monotone piece that is not split there loses no root the
+/// rounding does not hide already). A double root is kept (an extra split
+/// of a monotone piece is harmless).
+fn quadratic_roots<T: Real>(c: &Poly<T>) -> Starts<T> {
+    let mut out = Starts::new();
+    let one = T::one();
+    let mut keep = |x: T| {
+        if x >= -one && x <= one {
+            out.push(x);
+        }
+    };
+    let (c0, c1, c2) = (c[0], c[1], c[2]);
+    if c2 == T::zero() {
+        if c1 != T::zero() {
+            keep(-c0 / c1);
+        }
+        return out;
+    }
+    let disc = c1 * c1 - T::lit(4.0) * c0 * c2;
+    // NaN (overflowed products) gives none, as no sign change would.
+    if !(disc >= T::zero()) {
+        return out;
+    }
+    let root = disc.sqrt_kernel();
+    let q = T::lit(-0.5)
+        * if c1 >= T::zero() {
+            c1 + root
+        } else {
+            c1 - root
+        };
+    if q == T::zero() {
+        // c1 = 0 and c0 = 0: the double root 0.
+        keep(T::zero());
+        return out;
+    }
+    let (r1, r2) = (q / c2, c0 / q);
+    let (lo, hi) = if r1 <= r2 { (r1, r2) } else { (r2, r1) };
+    keep(lo);
+    keep(hi);
+    out
 }
 
 /// Roots of `p` (degree `n`) in `[-1, 1]` given its sorted critical points
@@ -307,13 +377,13 @@ fn level<T: Real>(p: &Poly<T>, n: usize, crit: &Starts<T>, tangent: bool) -> Sta
     let mut out = Starts::new();
     let one = T::one();
     let mut a = -one;
-    let (mut pa, _) = eval(p, n, a);
+    let (mut pa, _, _) = eval(p, n, a);
     if pa == T::zero() {
         out.push(a);
     }
     let ends = crit.iter().copied().chain(core::iter::once(one));
     for b in ends {
-        let (pb, _) = eval(p, n, b);
+        let (pb, _, _) = eval(p, n, b);
         if pb == T::zero() {
             out.push(b);
         } else if (pa < T::zero() && pb > T::zero()) || (pa > T::zero() && pb < T::zero()) {
@@ -327,11 +397,12 @@ fn level<T: Real>(p: &Poly<T>, n: usize, crit: &Starts<T>, tangent: bool) -> Sta
 }
 
 /// Every real root of `p` in `[-1, 1]` and its near-double roots, by the
-/// derivatives' roots (see the module documentation).
+/// derivatives' roots (see the module documentation): the quadratic fourth
+/// derivative's in closed form, then each level's from the next one's.
 fn roots_in_unit<T: Real>(p: &Poly<T>) -> Starts<T> {
     // ders[k]: the k-th derivative, degree DEGREE - k.
-    let mut ders = [*p; DEGREE];
-    for k in 1..DEGREE {
+    let mut ders = [*p; DEGREE - 1];
+    for k in 1..DEGREE - 1 {
         let prev = ders[k - 1];
         let n = DEGREE - k;
         for j in 0..=n {
@@ -341,8 +412,8 @@ fn roots_in_unit<T: Real>(p: &Poly<T>) -> Starts<T> {
             *x = T::zero();
         }
     }
-    let mut crit = Starts::new();
-    for k in (0..DEGREE).rev() {
+    let mut crit = quadratic_roots(&ders[DEGREE - 2]);
+    for k in (0..DEGREE - 2).rev() {
         crit = level(&ders[k], DEGREE - k, &crit, k == 0);
     }
     crit
@@ -447,7 +518,7 @@ mod tests {
                 "{phi}: {got} vs {want}"
             );
             let t = (0.5 * phi).tan();
-            let (pt, _) = eval(&p, DEGREE, t);
+            let (pt, _, _) = eval(&p, DEGREE, t);
             let want_p = want * (1.0 + t * t).powi(3);
             assert!(
                 (pt - want_p).abs() <= 256.0 * f64::EPSILON * scale * (1.0 + t * t).powi(3),

@@ -1,10 +1,10 @@
 //! Velocities and accelerations of the triad (see the module documentation
 //! of [`super`]).
 
+use super::elimination::{eliminate, Eliminated};
 use super::{Triad, TriadPosition, PRIM};
 use crate::error::{Error, Fault};
 use crate::geometry::{abs, all_finite, check_det, cross, dot, perp};
-use crate::linsolve;
 use crate::scalar::Real;
 use nalgebra::Vector2;
 
@@ -33,7 +33,7 @@ pub struct TriadVelocity<T: Real> {
     /// The rate matrix's elimination at the position these rates are for,
     /// and that position's [`TriadPosition::jacobian`]: [`acceleration`] at
     /// the same position (same matrix) solves with it.
-    factored: (linsolve::Factored<T, 3>, T),
+    factored: (Eliminated<T>, T),
 }
 
 /// Angular accelerations of the four links and the joints' accelerations.
@@ -61,33 +61,19 @@ fn or_zero<T: Real>(v: Option<&Vector2<T>>) -> Vector2<T> {
 }
 
 /// The rate matrix (rows: the three legs; columns: the joint `A`'s two
-/// components and `ab` times the ternary's rate, so all are lengths), after
-/// the determinant check.
-fn rate_matrix<T: Real>(triad: &Triad<T>, pos: &TriadPosition<T>) -> Result<[[T; 3]; 3], Error<T>> {
+/// components and `ab` times the ternary's rate, so all are lengths; leg
+/// 1's row has no ternary column), after the determinant check, eliminated
+/// ([`eliminate`]: `linsolve`'s row equilibration and partial pivoting,
+/// unrolled).
+#[inline(always)]
+fn factor<T: Real>(triad: &Triad<T>, pos: &TriadPosition<T>) -> Result<Eliminated<T>, Error<T>> {
     check_det(pos.jacobian, T::one(), PRIM)?;
     let (r1, r2, r3) = (pos.r1, pos.r2, pos.r3);
-    let c = triad.ab;
-    Ok([
-        [r1.x, r1.y, T::zero()],
+    eliminate(
+        [r1.x, r1.y],
         [r2.x, r2.y, cross(&pos.axis, &r2)],
-        [r3.x, r3.y, cross(&pos.ap, &r3) / c],
-    ])
-}
-
-/// The rate matrix at `pos`, checked and eliminated.
-fn factor<T: Real>(
-    triad: &Triad<T>,
-    pos: &TriadPosition<T>,
-) -> Result<linsolve::Factored<T, 3>, Error<T>> {
-    linsolve::factor(rate_matrix(triad, pos)?)
-        .map(|(f, _)| f)
-        .map_err(|e| Error::new(PRIM, e.fault))
-}
-
-/// Solves the rate system for one right-hand side and maps its error to
-/// the triad.
-fn solve3<T: Real>(m: &linsolve::Factored<T, 3>, rhs: [T; 3]) -> Result<[T; 3], Error<T>> {
-    m.solve(rhs).map_err(|e| Error::new(PRIM, e.fault))
+        [r3.x, r3.y, cross(&pos.ap, &r3) / triad.ab],
+    )
 }
 
 /// The rotation rate of a leg `r` of length `l` whose ends move at `v_end`
@@ -116,7 +102,7 @@ pub fn velocity<T: Real>(
         dot(&pos.r2, &vk[1]),
         dot(&pos.r3, &vk[2]),
     ];
-    let [vx, vy, w_c] = solve3(&m, rhs)?;
+    let [vx, vy, w_c] = m.solve(rhs)?;
     let omega = w_c / triad.ab;
     let va = Vector2::new(vx, vy);
     let vb = va + perp(&pos.ab) * omega;
@@ -180,7 +166,7 @@ pub fn acceleration<T: Real>(
         dot(&pos.r2, &ak[1]) - dot(&d2, &d2) + w2 * dot(&pos.r2, &pos.ab),
         dot(&pos.r3, &ak[2]) - dot(&d3, &d3) + w2 * dot(&pos.r3, &pos.ap),
     ];
-    let [ax, ay, al_c] = solve3(m, rhs)?;
+    let [ax, ay, al_c] = m.solve(rhs)?;
     let alpha = al_c / triad.ab;
     let aa = Vector2::new(ax, ay);
     let ab = aa + perp(&pos.ab) * alpha - pos.ab * w2;
