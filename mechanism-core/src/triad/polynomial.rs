@@ -52,9 +52,12 @@
 //! Halley's method (third order, its Taylor coefficients evaluated side by
 //! side) takes about 3.7 steps a bracket, Newton's stopped on its own
 //! predicted error 4.1, and Newton's stopped after a step below the
-//! tolerance 7. Roots need only be accurate to `sqrt(eps) /
-//! 64`: each is polished by Newton on the three leg equations
-//! ([`Frame::newton`]), which converges from there in two steps.
+//! tolerance 7. The critical points that only split intervals need only
+//! be accurate to `sqrt(eps) / 64`; the roots and extrema that start a
+//! polish by Newton on the three leg equations ([`Frame::newton`], two
+//! steps from there) are found to rounding, so that near a branch point,
+//! where that Newton converges slowly, its start adds nothing to the
+//! polynomial's own error.
 //!
 //! **Double roots.** Where two assemblies meet (a branch point, the end of a
 //! swing), `P` touches zero without changing sign, or the rounding of its
@@ -297,11 +300,9 @@ fn magnitude<T: Real>(p: &Poly<T>, x: T) -> T {
 /// the root is off the point it reaches by about `s^3 (h^2 - g d) / d^2`
 /// (the expansion of `v + d e + h e^2 + g e^3 = 0` to third order; the
 /// omitted terms are of order `s^4`). That step is the last when this
-/// predicted error is at most the tolerance `sqrt(eps) / 64` and `|s| <=
-/// 2^-10` (so the expansion holds); the iteration also ends when the
-/// bracket is below the tolerance.
-fn bracketed<T: Real>(p: &Poly<T>, n: usize, mut a: T, mut b: T, pa: T) -> T {
-    let tol = T::eps().sqrt() * T::lit(1.0 / 64.0);
+/// predicted error is at most `tol` and `|s| <= 2^-10` (so the expansion
+/// holds); the iteration also ends when the bracket is below `tol`.
+fn bracketed<T: Real>(p: &Poly<T>, n: usize, mut a: T, mut b: T, pa: T, tol: T) -> T {
     let neg_a = pa < T::zero();
     let mut x = T::lit(0.5) * (a + b);
     for _ in 0..MAX_STEPS {
@@ -382,8 +383,9 @@ fn quadratic_roots<T: Real>(c: &Poly<T>) -> Starts<T> {
 }
 
 /// Roots of `p` (degree `n`) in `[-1, 1]` given its sorted critical points
-/// there; with `tangent`, also the extrema within rounding of zero.
-fn level<T: Real>(p: &Poly<T>, n: usize, crit: &Starts<T>, tangent: bool) -> Starts<T> {
+/// there, each to `tol` ([`bracketed`]); with `tangent`, also the extrema
+/// within rounding of zero.
+fn level<T: Real>(p: &Poly<T>, n: usize, crit: &Starts<T>, tangent: bool, tol: T) -> Starts<T> {
     let mut out = Starts::new();
     let one = T::one();
     let mut a = -one;
@@ -397,7 +399,7 @@ fn level<T: Real>(p: &Poly<T>, n: usize, crit: &Starts<T>, tangent: bool) -> Sta
         if pb == T::zero() {
             out.push(b);
         } else if (pa < T::zero() && pb > T::zero()) || (pa > T::zero() && pb < T::zero()) {
-            out.push(bracketed(p, n, a, b, pa));
+            out.push(bracketed(p, n, a, b, pa, tol));
         } else if tangent && b < one && abs(pb) <= T::lit(TANGENCY) * T::eps() * magnitude(p, b) {
             out.push(b);
         }
@@ -422,9 +424,20 @@ fn roots_in_unit<T: Real>(p: &Poly<T>) -> Starts<T> {
             *x = T::zero();
         }
     }
+    // The critical points of the third and second derivatives only split
+    // intervals: `sqrt(eps) / 64` is ample (a split off by `d` changes the
+    // next level's values there by about `d^2`, far below their rounding).
+    // The first derivative's roots (the extrema, candidates for double
+    // roots) and the polynomial's start the polish on the loop: to rounding
+    // (`eps`), so the polish starts where the polynomial puts the root, as
+    // accurately as its coefficients allow; near a branch point, where the
+    // loop's Jacobian is nearly singular and Newton converges slowly, a
+    // start off by `sqrt(eps)` would leave its mark in the rates.
+    let split = T::eps().sqrt() * T::lit(1.0 / 64.0);
     let mut crit = quadratic_roots(&ders[DEGREE - 2]);
     for k in (0..DEGREE - 2).rev() {
-        crit = level(&ders[k], DEGREE - k, &crit, k == 0);
+        let tol = if k <= 1 { T::eps() } else { split };
+        crit = level(&ders[k], DEGREE - k, &crit, k == 0, tol);
     }
     crit
 }
