@@ -143,7 +143,10 @@ impl<T: Real> Frame<T> {
     /// rounding of the axis' angle times the side `c` (so it would move
     /// neither `A` nor the axis by more than a fraction of an ulp); when the
     /// prediction is larger (or there is no previous step), one more step is
-    /// taken. The axis turns by `atan(step)` rather than `step` (a rotation
+    /// taken, and further ones while that step is above `4 eps c` and
+    /// shrank at least fourfold (Newton converging slowly on a nearly
+    /// singular Jacobian, near a branch point; at rounding level, or no
+    /// longer shrinking, it stops). The axis turns by `atan(step)` rather than `step` (a rotation
     /// by `(1, step) / sqrt(1 + step^2)`, no sine or cosine): the difference
     /// is third order in the step, so convergence stays quadratic. Each step
     /// solves the 3x3 system by Cramer's rule (its accuracy matters only to
@@ -152,6 +155,7 @@ impl<T: Real> Frame<T> {
     pub(super) fn newton(&self, mut x: State<T>) -> Option<State<T>> {
         let small = T::eps().sqrt() * self.reach;
         let tiny = T::lit(0.125) * T::eps() * self.c;
+        let floor = T::lit(4.0) * T::eps() * self.c;
         let mut settled = false;
         // The previous step's size (0 before the first: no prediction).
         let mut last = T::zero();
@@ -165,10 +169,15 @@ impl<T: Real> Frame<T> {
             if !(size.finite() && abs(x.a.x) + abs(x.a.y) <= T::lit(4.0) * self.reach) {
                 return None;
             }
-            if settled {
+            // The step after a settled one is the last unless it is still
+            // above rounding (`floor`) and shrank at least fourfold: then
+            // Newton is converging slowly (a nearly singular Jacobian, near
+            // a branch point) and goes on while it shrinks. Elsewhere that
+            // step is at rounding level and the last, as always.
+            if settled && (size <= floor || size * T::lit(4.0) > last) {
                 break;
             }
-            settled = size <= small;
+            settled = settled || size <= small;
             // The predicted next step `size^3 / last^2` against `tiny`,
             // without a division (a cube below the normal range is a step
             // far below rounding: 0 passes).
