@@ -248,21 +248,18 @@ mod tests {
     use super::*;
     use crate::linsolve;
 
+    /// The elimination's error, or the four right-hand sides' solutions.
+    type Solves = Result<[Result<[f64; 3], Error<f64>>; 4], Error<f64>>;
+
     /// `linsolve`'s elimination and solve of the same matrix, its errors
     /// attributed to the triad as [`super::super::rates`] did.
-    fn reference(
-        a: [[f64; 3]; 3],
-        rhs: &[[f64; 3]; 4],
-    ) -> Result<[Result<[f64; 3], Error<f64>>; 4], Error<f64>> {
+    fn reference(a: [[f64; 3]; 3], rhs: &[[f64; 3]; 4]) -> Solves {
         let to_triad = |e: Error<f64>| Error::new(PRIM, e.fault);
         let (f, _) = linsolve::factor(a).map_err(to_triad)?;
         Ok(rhs.map(|b| f.solve(b).map_err(to_triad)))
     }
 
-    fn ours(
-        a: [[f64; 3]; 3],
-        rhs: &[[f64; 3]; 4],
-    ) -> Result<[Result<[f64; 3], Error<f64>>; 4], Error<f64>> {
+    fn ours(a: [[f64; 3]; 3], rhs: &[[f64; 3]; 4]) -> Solves {
         let e = eliminate([a[0][0], a[0][1]], a[1], a[2])?;
         Ok(rhs.map(|b| e.solve(b)))
     }

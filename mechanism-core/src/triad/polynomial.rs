@@ -359,8 +359,9 @@ fn quadratic_roots<T: Real>(c: &Poly<T>) -> Starts<T> {
         return out;
     }
     let disc = c1 * c1 - T::lit(4.0) * c0 * c2;
-    // NaN (overflowed products) gives none, as no sign change would.
-    if !(disc >= T::zero()) {
+    // NaN or infinite (overflowed products) gives none, as no sign change
+    // would.
+    if disc < T::zero() || !disc.finite() {
         return out;
     }
     let root = disc.sqrt_kernel();
