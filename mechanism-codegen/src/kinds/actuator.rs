@@ -367,6 +367,10 @@ impl super::run::Step for ActuatorRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let len = pose.input(self.input);
         let (pa, pb) = (pose.point(self.a), pose.point(self.b));

@@ -427,6 +427,10 @@ impl super::run::Step for CrankRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let pivot = pose.point(self.pivot);
         let (r, q) = (self.radius, pose.input(self.input));

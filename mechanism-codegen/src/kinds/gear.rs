@@ -420,6 +420,10 @@ impl super::run::Step for GearRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let pivot = pose.point(self.pivot);
         let theta = self.angle(&|q| pose.input(q), true);

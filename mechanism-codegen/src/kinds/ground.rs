@@ -134,6 +134,13 @@ impl super::run::Step for GroundRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks {
+            rates: false,
+            forces: false,
+        }
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         pose.found(&self.me, self.at, &[]);
         Ok(None)

@@ -316,6 +316,13 @@ impl super::run::Step for GuideRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks {
+            rates: self.carrier.is_some(),
+            forces: false,
+        }
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let origin = match self.origin {
             GuideOrigin::Point(p) => pose.point(p),

@@ -307,6 +307,13 @@ impl super::run::Step for PointRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks {
+            rates: self.moves,
+            forces: false,
+        }
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let p = link::point_position(&pose.point(self.from), &pose.axis(self.link), &self.offset)?;
         pose.found(&self.me, p, &[]);

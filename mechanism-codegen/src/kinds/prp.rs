@@ -297,6 +297,10 @@ impl super::run::Step for PrpRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let (l1, l2) = (pose.line(self.g1), pose.line(self.g2));
         let p = dyad::prp::position(&l1, self.offset1, &l2, self.offset2)?;

@@ -330,6 +330,10 @@ impl super::run::Step for RppRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let (pa, gl) = (pose.point(self.a), pose.line(self.guide));
         let p = dyad::rpp::position(&pa, &gl, self.offset, &self.slot)?;

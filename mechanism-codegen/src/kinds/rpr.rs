@@ -344,6 +344,10 @@ impl super::run::Step for RprRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let (pa, pb) = (pose.point(self.a), pose.point(self.b));
         let p = dyad::rpr::position(&pa, &pb, self.offset, self.mode)?;

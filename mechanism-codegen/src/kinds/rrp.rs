@@ -310,6 +310,10 @@ impl super::run::Step for RrpRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let (pa, gl, l) = (pose.point(self.a), pose.line(self.guide), self.l);
         let p = dyad::rrp::position(&pa, l, &gl, self.offset, self.mode)?;

@@ -345,6 +345,10 @@ impl super::run::Step for RrrRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let (pa, pb) = (pose.point(self.a), pose.point(self.b));
         let (l1, l2) = (self.l1, self.l2);

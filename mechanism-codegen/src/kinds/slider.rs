@@ -272,6 +272,10 @@ impl super::run::Step for SliderRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let g = pose.line(self.guide);
         let s = driver::slider::position(&g, self.offset, pose.input(self.input))?;

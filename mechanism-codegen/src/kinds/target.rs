@@ -267,6 +267,10 @@ impl super::run::Step for TargetRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let p = driver::target::position(pose.input(self.x), pose.input(self.y))?;
         pose.found(&self.me, p, &[mechanism_core::Vector2::x()]);

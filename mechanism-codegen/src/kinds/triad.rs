@@ -717,6 +717,10 @@ impl super::run::Step for TriadRun {
         self.me.group
     }
 
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
+    }
+
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {
         let k = self.k.map(|k| pose.point(k));
         let near = self.hint(pose.input(self.at))?;

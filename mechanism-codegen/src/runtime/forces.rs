@@ -487,7 +487,7 @@ impl Mechanism {
         };
         let c = &self.compiled;
         c.forces.known_loads(&mut cx)?;
-        for &i in c.solve.iter().rev() {
+        for &i in c.force_walk.iter().rev() {
             let step = &c.steps[i.0];
             step.forces(&mut cx).map_err(|e| e.in_group(step.group()))?;
         }
