@@ -126,6 +126,15 @@ pub struct Batch {
 /// The values of one input (or rate, or acceleration) at every row.
 pub type Column<'a> = &'a [f64];
 
+/// Rows solved into a row-major block before the block is written out
+/// column by column: writing each row's values straight into the columns
+/// stores to one stream per output (28 for a four-bar's three analyses),
+/// more than the hardware prefetches, and cost more than the solve itself
+/// (a four-bar's full sweep took 3.3 times the walk alone); a block of 256
+/// rows (56 KiB at that width) stays in the cache and each column then
+/// gets a run of 256 values.
+const BLOCK: usize = 256;
+
 /// Every row `i < n` of a sweep: inputs `inputs[j][i]` (one column per
 /// input, in `Mechanism::inputs` order, each at least `n` long), rates and
 /// accelerations likewise (empty when `depth` does not need them).
@@ -138,33 +147,32 @@ pub fn sweep(
     n: usize,
 ) -> Batch {
     let width = keys(m, depth).len();
-    let mut columns = vec![Vec::with_capacity(n); width];
+    let mut columns: Vec<Vec<f64>> = (0..width).map(|_| Vec::with_capacity(n)).collect();
     let mut errors = Vec::with_capacity(n);
     let (mut q, mut r, mut a) = (Vec::new(), Vec::new(), Vec::new());
-    let mut values = Vec::with_capacity(width);
+    let mut block = Vec::with_capacity(BLOCK * width);
     let mut store = Store::new(m);
     let at = |cols: &[Column<'_>], i: usize, into: &mut Vec<f64>| {
         into.clear();
         into.extend(cols.iter().map(|c| c[i]));
     };
-    for i in 0..n {
-        at(inputs, i, &mut q);
-        at(rates, i, &mut r);
-        at(accels, i, &mut a);
-        values.clear();
-        match row(m, &q, &r, &a, depth, &mut store, &mut values) {
-            Ok(()) => {
-                for (col, v) in columns.iter_mut().zip(&values) {
-                    col.push(*v);
+    for start in (0..n).step_by(BLOCK) {
+        let rows = start..n.min(start + BLOCK);
+        block.clear();
+        for i in rows.clone() {
+            at(inputs, i, &mut q);
+            at(rates, i, &mut r);
+            at(accels, i, &mut a);
+            match row(m, &q, &r, &a, depth, &mut store, &mut block) {
+                Ok(()) => errors.push(None),
+                Err(e) => {
+                    block.resize(block.len() + width, f64::NAN);
+                    errors.push(Some(e.to_string()));
                 }
-                errors.push(None);
             }
-            Err(e) => {
-                for col in &mut columns {
-                    col.push(f64::NAN);
-                }
-                errors.push(Some(e.to_string()));
-            }
+        }
+        for (k, col) in columns.iter_mut().enumerate() {
+            col.extend(block.iter().skip(k).step_by(width.max(1)).take(rows.len()));
         }
     }
     Batch { columns, errors }

@@ -72,6 +72,27 @@ def test_failing_rows_are_nan_with_their_error_only(reach):
             assert out[key][i] == value and not math.isnan(value), key
 
 
+def test_a_sweep_over_several_blocks_equals_the_scalar_calls(reach):
+    """Rows are solved in blocks of 256 and written out per column: over
+    1001 rows, with failing runs that straddle the block edges 256, 512 and
+    768 (|s| > sqrt(3) fails), every row still equals its scalar call or is
+    NaN with its error."""
+    s = np.linspace(-1.5, 1.5, 1001)
+    s[250:263], s[508:516], s[767:770] = 2.0, -2.0, 2.5
+    out = reach.sweep(s=s, rates={"s": 0.7})
+    fails = np.abs(s) > math.sqrt(3.0)
+    np.testing.assert_array_equal(out["ok"], ~fails)
+    keys = list(reach.solve(s=0.0, rates={"s": 0.7}))
+    for i in range(len(s)):
+        if fails[i]:
+            assert "group `B`" in out["error"][i]
+            assert all(math.isnan(out[key][i]) for key in keys)
+            continue
+        one = reach.solve(s=s[i], rates={"s": 0.7})
+        for key in keys:
+            assert out[key][i] == one[key], (i, key)
+
+
 def test_sweep_arguments_are_checked(fourbar):
     with pytest.raises(TypeError, match="missing values for input `theta`"):
         fourbar.sweep()
