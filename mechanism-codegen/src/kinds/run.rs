@@ -449,6 +449,23 @@ impl RunPose {
     }
 }
 
+/// A pose read by name: what the statements solved so far found, as the
+/// expansion-time check hands it to a kind that follows its assembly over
+/// the input range (`GroupKind::track`).
+pub struct NamedPose<'l> {
+    /// The pose.
+    pub pose: RunPose,
+    /// Its slots by name.
+    pub layout: &'l Layout,
+}
+
+impl NamedPose<'_> {
+    /// Point `n` (NaN when not solved, or not a point).
+    pub fn point(&self, n: &Ident) -> Point2<f64> {
+        self.pose.point(self.layout.point_named(&PointName::of(n)))
+    }
+}
+
 /// The rates at one level (velocity or acceleration), by slot: the points'
 /// motions, the links' rates, the carried guides' motions, the groups'
 /// velocity states, the slides' rates, the groups' conditioning; the

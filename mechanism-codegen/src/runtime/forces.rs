@@ -362,7 +362,7 @@ impl Mechanism {
         }
         let units = &self.model.units;
         let (f, m) = (intern(&units.force), intern(&units.moment()));
-        let moving = crate::emit::moving_points(&self.model, &self.plan);
+        let moving = self.plan.moving_points(&self.model);
         // Only the fields are used: the code's reads go nowhere.
         let reads = crate::kinds::reads::Reads::default();
         let code = crate::emit::forces::emit(&self.model, &self.plan, &moving, &reads);

@@ -25,7 +25,6 @@
 
 pub mod forces;
 pub mod layout;
-mod slots;
 pub mod text;
 
 use crate::diag::Diagnostics;
@@ -208,7 +207,7 @@ impl Mechanism {
             .iter()
             .map(|(n, v)| (n.to_string(), *v))
             .collect();
-        let slots = Arc::new(slots::layout(&model, &plan));
+        let slots = Arc::new(crate::slots::layout(&model, &plan));
         let mut m = Mechanism {
             model,
             plan,
