@@ -1,11 +1,10 @@
 //! The run-time mechanism: a definition read from text at run time, through
 //! the macro's own stages (parse, model, validate, plan, check: the same
 //! rules and messages, every error at once), evaluated in `f64` by walking
-//! the plan: each statement's position is its kind's `GroupKind::eval` (the
-//! expansion-time evaluator's step), its rates its kind's
-//! `run::RunKind::run_rates`; both call the `mechanism-core` primitive the
-//! generated code calls, with the same arguments, in the same order. It is
-//! the third walker of the plan, beside the emitter and the check; no
+//! the plan compiled into each kind's `run::Step` (defined in the kind's
+//! file): its position, rates and forces call the `mechanism-core`
+//! primitive the generated code calls, with the same arguments, in the same
+//! order. The expansion-time check walks the same steps' positions; no
 //! second solver.
 //!
 //! ```
