@@ -93,6 +93,25 @@ def test_a_sweep_over_several_blocks_equals_the_scalar_calls(reach):
             assert out[key][i] == one[key], (i, key)
 
 
+def test_threads_give_the_same_numbers_as_one_thread(reach):
+    """Rows split over threads (each on its own copy of the definition)
+    equal the calling thread's sweep bit for bit, failing rows and their
+    errors included, whatever the count; `threads=0` is refused."""
+    s = np.linspace(-2.0, 2.0, 3001)
+    one = reach.sweep(s=s, rates={"s": 0.4}, accels={"s": -0.2}, threads=1)
+    assert not one["ok"].all() and one["ok"].any()
+    for threads in (2, 3, 7):
+        out = reach.sweep(s=s, rates={"s": 0.4}, accels={"s": -0.2}, threads=threads)
+        assert set(out) == set(one)
+        for key, value in one.items():
+            if key == "error":
+                assert list(out[key]) == list(value)
+            else:
+                np.testing.assert_array_equal(out[key], value)
+    with pytest.raises(ValueError):
+        reach.sweep(s=s, threads=0)
+
+
 def test_sweep_arguments_are_checked(fourbar):
     with pytest.raises(TypeError, match="missing values for input `theta`"):
         fourbar.sweep()
