@@ -5,8 +5,10 @@
 //! [`parse`] (tokens to syntax) -> [`model`] (typed statements, inputs and
 //! their ranges) -> `kinds` (what each statement kind means, one module per
 //! kind, read by every later stage) -> [`validate`] (one rule per function)
-//! -> [`plan`] (solve order, owners, what each analysis needs) -> [`check`]
-//! (the mechanism assembled over its input range at expansion time) ->
+//! -> [`plan`] (solve order, owners, what each analysis needs) -> `slots`
+//! (the plan's names laid out in flat storage, for the compiled position
+//! walk) -> [`check`] (the mechanism assembled over its input range at
+//! expansion time, walking the compiled steps) ->
 //! [`emit`] (the generated items, one file per family).
 //!
 //! Errors from every stage go to one [`diag::Diagnostics`] and are reported
@@ -24,6 +26,7 @@ pub mod names;
 pub mod parse;
 pub mod plan;
 pub mod runtime;
+pub(crate) mod slots;
 pub mod validate;
 pub mod value;
 

@@ -421,6 +421,25 @@ pub fn checked(model: &Model, plan: &Plan) -> Checked {
     Checked { order, groups }
 }
 
+impl Plan {
+    /// Points that move (everything but ground points and points on still
+    /// links measured from still points), in solve order's terms: a point
+    /// moves when its kind says so of the links and points it is found
+    /// from.
+    pub fn moving_points(&self, model: &Model) -> BTreeSet<PointName> {
+        let mut moving: BTreeSet<PointName> = BTreeSet::new();
+        for &i in &self.solve {
+            let stmt = &model.stmts[i];
+            let link_turns = |l: &Ident| self.turning_link(&LinkName::of(l)).is_some();
+            let moves = |p: &Ident| moving.contains(&PointName::of(p));
+            if kinds::of(stmt).point_moves(&link_turns, &moves) {
+                moving.insert(PointName::of(&stmt.name));
+            }
+        }
+        moving
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

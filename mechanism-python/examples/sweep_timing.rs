@@ -95,27 +95,34 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     );
 
     let rt = Mechanism::new(TEXT).map_err(|e| e.to_string())?;
+    // Storage made once, as `planar_mechanism`'s sweep does (`*_into`
+    // allocate nothing per pose).
+    let mut pos = rt.new_position();
+    let (mut vel, mut acc) = (rt.new_rates(), rt.new_rates());
     report(
         "run-time walk, position",
         median(|| {
-            theta
-                .iter()
-                .map(|t| rt.position(&[*t]).map_or(f64::NAN, |p| p.values[6]))
-                .sum()
+            let mut sum = 0.0;
+            for t in &theta {
+                sum += match rt.position_into(&[*t], &mut pos) {
+                    Ok(()) => pos.values[6],
+                    Err(_) => f64::NAN,
+                };
+            }
+            sum
         }),
     );
     report(
         "run-time walk, position + velocity + acceleration",
         median(|| {
-            theta
-                .iter()
-                .map(|t| {
-                    let p = rt.position(&[*t]);
-                    let v = p.and_then(|p| rt.velocity(&p, &[1.0]).map(|v| (p, v)));
-                    let a = v.and_then(|(p, v)| rt.acceleration(&p, &v, &[0.0]));
-                    a.map_or(f64::NAN, |a| a.values[6])
-                })
-                .sum()
+            let mut sum = 0.0;
+            for t in &theta {
+                let ok = rt.position_into(&[*t], &mut pos).is_ok()
+                    && rt.velocity_into(&pos, &[1.0], &mut vel).is_ok()
+                    && rt.acceleration_into(&pos, &vel, &[0.0], &mut acc).is_ok();
+                sum += if ok { acc.values[6] } else { f64::NAN };
+            }
+            sum
         }),
     );
     Ok(())

@@ -558,15 +558,25 @@ impl Mechanism {
     /// and `error` (object: None, or the message naming the failed group).
     /// A failed pose has NaN in every output of its row and only there; a
     /// solved pose never holds NaN. The GIL is released while it solves.
-    #[pyo3(signature = (*, rates=None, accels=None, forces=false, **inputs))]
+    /// `threads`: how many threads solve it (`None`: one per core, each
+    /// given at least `batch::ROWS_PER_THREAD` rows; 1: the calling thread
+    /// only); the threads end with the call. The numbers do not depend on
+    /// it.
+    #[pyo3(signature = (*, rates=None, accels=None, forces=false, threads=None, **inputs))]
     fn sweep<'py>(
         &self,
         py: Python<'py>,
         rates: Option<&Bound<'py, PyDict>>,
         accels: Option<&Bound<'py, PyDict>>,
         forces: bool,
+        threads: Option<usize>,
         inputs: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyDict>> {
+        if threads == Some(0) {
+            return Err(PyValueError::new_err(
+                "threads must be at least 1 (or None: one per core)",
+            ));
+        }
         let depth = depth(rates.is_some(), accels.is_some(), forces)?;
         self.need_forces(forces)?;
         let mut given = self.ordered("values", inputs)?;
@@ -588,8 +598,24 @@ impl Mechanism {
         let n = shape.iter().product();
         let (q, rest) = slices.split_at(k);
         let (r, a) = rest.split_at(if depth.velocity { k } else { 0 });
+        let given = batch::Given {
+            inputs: q,
+            rates: r,
+            accels: a,
+        };
+        let threads = threads.unwrap_or_else(|| {
+            let cores = std::thread::available_parallelism().map_or(1, usize::from);
+            cores.min(n / batch::ROWS_PER_THREAD).max(1)
+        });
         // The solve needs no Python object: other Python threads run meanwhile.
-        let batch = py.detach(|| self.rt(|m| batch::sweep(m, q, r, a, depth, n)))?;
+        let batch = py.detach(|| {
+            if threads == 1 {
+                self.rt(|m| batch::sweep(m, given, depth, n))
+            } else {
+                batch::par_sweep(&self.shared, given, depth, n, threads)
+                    .map_err(PyRuntimeError::new_err)
+            }
+        })?;
         self.sweep_dict(py, &shape, &flat[..k], batch, depth)
     }
 

@@ -72,6 +72,46 @@ def test_failing_rows_are_nan_with_their_error_only(reach):
             assert out[key][i] == value and not math.isnan(value), key
 
 
+def test_a_sweep_over_several_blocks_equals_the_scalar_calls(reach):
+    """Rows are solved in blocks of 256 and written out per column: over
+    1001 rows, with failing runs that straddle the block edges 256, 512 and
+    768 (|s| > sqrt(3) fails), every row still equals its scalar call or is
+    NaN with its error."""
+    s = np.linspace(-1.5, 1.5, 1001)
+    s[250:263], s[508:516], s[767:770] = 2.0, -2.0, 2.5
+    out = reach.sweep(s=s, rates={"s": 0.7})
+    fails = np.abs(s) > math.sqrt(3.0)
+    np.testing.assert_array_equal(out["ok"], ~fails)
+    keys = list(reach.solve(s=0.0, rates={"s": 0.7}))
+    for i in range(len(s)):
+        if fails[i]:
+            assert "group `B`" in out["error"][i]
+            assert all(math.isnan(out[key][i]) for key in keys)
+            continue
+        one = reach.solve(s=s[i], rates={"s": 0.7})
+        for key in keys:
+            assert out[key][i] == one[key], (i, key)
+
+
+def test_threads_give_the_same_numbers_as_one_thread(reach):
+    """Rows split over threads (each on its own copy of the definition)
+    equal the calling thread's sweep bit for bit, failing rows and their
+    errors included, whatever the count; `threads=0` is refused."""
+    s = np.linspace(-2.0, 2.0, 3001)
+    one = reach.sweep(s=s, rates={"s": 0.4}, accels={"s": -0.2}, threads=1)
+    assert not one["ok"].all() and one["ok"].any()
+    for threads in (2, 3, 7):
+        out = reach.sweep(s=s, rates={"s": 0.4}, accels={"s": -0.2}, threads=threads)
+        assert set(out) == set(one)
+        for key, value in one.items():
+            if key == "error":
+                assert list(out[key]) == list(value)
+            else:
+                np.testing.assert_array_equal(out[key], value)
+    with pytest.raises(ValueError):
+        reach.sweep(s=s, threads=0)
+
+
 def test_sweep_arguments_are_checked(fourbar):
     with pytest.raises(TypeError, match="missing values for input `theta`"):
         fourbar.sweep()

@@ -247,7 +247,7 @@ fn check_assuming(
         modes,
         ..kinds::Known::default()
     };
-    let mut ev = Evaluator::new(model, &checked, known);
+    let mut ev = Evaluator::new(model, plan, &checked, known);
     if !eval::track_assemblies(model, &mut ev, &ranges, errors) {
         return findings;
     }

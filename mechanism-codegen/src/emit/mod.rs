@@ -30,7 +30,6 @@ pub mod stub;
 mod stub_fields;
 
 use crate::check::Findings;
-use crate::keys::{LinkName, PointName};
 use crate::kinds::{self, Known};
 use crate::model::{Level, Model};
 use crate::plan::Plan;
@@ -40,8 +39,6 @@ use names::{Generated, TypeNames};
 use proc_macro2::TokenStream;
 use quote::quote;
 use rates::Rate;
-use std::collections::BTreeSet;
-use syn::Ident;
 
 /// Expands a valid, planned and checked model: the mechanism's items, its
 /// `check()`, the expansion-time check's warnings and, with `#[self_test]`,
@@ -72,21 +69,6 @@ pub fn mechanism(model: &Model, plan: &Plan, findings: &Findings) -> TokenStream
     out
 }
 
-/// Points that move (everything but ground points and points on still links
-/// measured from still points).
-pub(crate) fn moving_points(model: &Model, plan: &Plan) -> BTreeSet<PointName> {
-    let mut moving: BTreeSet<PointName> = BTreeSet::new();
-    for &i in &plan.solve {
-        let stmt = &model.stmts[i];
-        let link_turns = |l: &Ident| plan.turning_link(&LinkName::of(l)).is_some();
-        let moves = |p: &Ident| moving.contains(&PointName::of(p));
-        if kinds::of(stmt).point_moves(&link_turns, &moves) {
-            moving.insert(PointName::of(&stmt.name));
-        }
-    }
-    moving
-}
-
 /// The mechanism's structs and analyses. `reads`: the reads recorded by the
 /// other generated code that reads position fields (the run-time `check()`
 /// and the `#[self_test]` tests, whose code is `readers`); with the later
@@ -101,7 +83,7 @@ fn items(
     readers: &[&TokenStream],
 ) -> TokenStream {
     let em = position::Emitter::new(model, plan, known, false);
-    let moving = moving_points(model, plan);
+    let moving = plan.moving_points(model);
     let inputs = names::input_names(model);
     let position = em.code();
     // The later analyses, generated first: the hidden fields of the

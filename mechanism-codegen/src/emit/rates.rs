@@ -400,12 +400,11 @@ pub(super) fn acceleration_items(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::emit::moving_points;
     use crate::emit::test_support::{flat, four_bar, planned};
 
     fn rates(src: &str, rate: Rate) -> RatesCode {
         let (model, plan) = planned(src);
-        let moving = moving_points(&model, &plan);
+        let moving = plan.moving_points(&model);
         code(&model, &plan, &moving, rate, &Reads::default())
     }
 

@@ -12,14 +12,13 @@ use super::forces::{drive, prismatic, revolute, rx, ForceCx, Held};
 use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
-use super::pose::Pose;
 use super::rates::{states, two_links, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, mode_arg};
 use crate::diag::show_num;
 use crate::keys::LinkName;
-use crate::kinds::pose::{mode, num};
+use crate::kinds::pose::mode;
 use crate::model::{Mode, Stmt};
 use crate::names::Family;
 use crate::value::Value;
@@ -77,19 +76,6 @@ impl<'a> GroupKind<'a> for Actuator<'a> {
 
     fn position_values(&self) -> Vec<Value> {
         vec![self.l.clone()]
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let len = input(self.input);
-        let (pa, pb) = (pose.point(self.a), pose.point(self.b));
-        let p = driver::actuator::position(&pa, num(self.l), &pb, len, mode(self.mode))?;
-        let (arm, cylinder) = (p.r1 / num(self.l), p.r2 / len);
-        pose.found(self.stmt, Some(p.c), &[arm, cylinder, cylinder]);
-        Ok(Some(sweep::det_rrr(&p)))
     }
 
     fn position_type(&self) -> TokenStream {
@@ -365,6 +351,10 @@ struct ActuatorRun {
 impl super::run::Step for ActuatorRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

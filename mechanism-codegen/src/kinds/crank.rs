@@ -9,14 +9,12 @@ use super::closure::{axis_between, f, Residuals};
 use super::forces::{drive, revolute, rx, ForceCx, Held};
 use super::group::{links_text, GroupKind, LinkShape, Placed, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
-use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, grp, local, tag, unit_field, unit_vector};
 use crate::diag::Diagnostics;
 use crate::keys::{LinkName, PointName};
-use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::names::Family;
 use crate::value::Value;
@@ -88,25 +86,6 @@ impl<'a> GroupKind<'a> for Crank<'a> {
 
     fn position_values(&self) -> Vec<Value> {
         vec![self.radius.clone(), self.zero.clone()]
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let pivot = pose.point(self.pivot);
-        let (r, q) = (num(self.radius), input(self.input));
-        let c = match self.carrier {
-            None => driver::crank::position(&pivot, r, q)?,
-            Some(l) => {
-                let zero = geometry::unit(num(self.zero));
-                let axis = link::local_offset(&pose.axis(l), &zero);
-                driver::crank::position_on(&pivot, r, &axis, q)?
-            }
-        };
-        pose.found(self.stmt, Some(c.tip), &[c.axis]);
-        Ok(None)
     }
 
     fn position_type(&self) -> TokenStream {
@@ -425,6 +404,10 @@ struct CrankRun {
 impl super::run::Step for CrankRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

@@ -26,7 +26,6 @@ use super::closure::{axis_between, f, Residuals};
 use super::forces::{body_name, revolute, rx, ForceCx, Held, Reaction};
 use super::group::{links_text, GroupKind, LinkShape, Placed, Role, Solve, Turn};
 use super::lane::{Lane, Step};
-use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, LinkSlot, Me, PointSlot, RunCx, RunPose};
@@ -34,7 +33,6 @@ use super::tokens::{grp, local, tag, unit_field};
 use crate::diag::Diagnostics;
 use crate::keys::GROUND;
 use crate::keys::{LinkName, PointName};
-use crate::kinds::pose::num;
 use crate::model::{Gear, Stmt};
 use crate::names::Family;
 use crate::value::Value;
@@ -111,20 +109,6 @@ impl<'a> GearKind<'a> {
         sum
     }
 
-    /// Its angle (rad) or rate from the inputs' `value`s (`f64`).
-    fn angle_f64(&self, value: &dyn Fn(&Ident) -> f64, phase: bool) -> f64 {
-        let t = self.terms();
-        let ratio = num(&self.g.ratio);
-        let mut sum = if phase { num(&self.g.phase) } else { 0.0 };
-        if let Some(q) = t.mesh {
-            sum -= ratio * value(q);
-        }
-        if let Some(q) = t.carrier {
-            sum += (1.0 + ratio) * value(q);
-        }
-        sum
-    }
-
     /// The center of the meshing gear: its crank's pivot, or for a fixed
     /// gear (`MESH` the ground) the carrier's crank's pivot.
     fn mesh_center(&self) -> Option<&'a Ident> {
@@ -160,18 +144,6 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
     fn position_values(&self) -> Vec<Value> {
         let g = self.g;
         vec![g.radius.clone(), g.ratio.clone(), g.phase.clone()]
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let pivot = pose.point(&self.g.pivot);
-        let theta = self.angle_f64(input, true);
-        let c = driver::crank::position(&pivot, num(&self.g.radius), theta)?;
-        pose.found(self.stmt, Some(c.tip), &[c.axis]);
-        Ok(None)
     }
 
     fn position_type(&self) -> TokenStream {
@@ -418,6 +390,10 @@ impl GearRun {
 impl super::run::Step for GearRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

@@ -2,10 +2,8 @@
 
 use super::group::{GroupKind, Role, Solve};
 use super::lane::{Lane, PointLocals, Step};
-use super::pose::Pose;
 use super::run::{Compile, ForceRunCx, Me, RunCx, RunPose};
 use crate::keys::LinkName;
-use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
 use mechanism_core::Point2;
@@ -43,16 +41,6 @@ impl<'a> GroupKind<'a> for Ground<'a> {
 
     fn position_values(&self) -> Vec<Value> {
         vec![self.x.clone(), self.y.clone()]
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        _input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let p = Point2::new(num(self.x), num(self.y));
-        pose.found(self.stmt, Some(p), &[]);
-        Ok(None)
     }
 
     fn position(&self, _cos_sin: bool) -> Solve {
@@ -132,6 +120,13 @@ struct GroundRun {
 impl super::run::Step for GroundRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks {
+            rates: false,
+            forces: false,
+        }
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

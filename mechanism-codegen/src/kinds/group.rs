@@ -4,7 +4,7 @@
 //! position is emitted, what tracking found). The kinds' files import this
 //! and not `kinds/mod.rs`, whose dispatcher ([`super::of`]) imports them.
 
-use super::pose::Pose;
+use super::run::NamedPose;
 use super::{closure, forces, lane, rates, reads, run};
 use crate::diag::Diagnostics;
 use crate::keys::{GuideName, LinkName, PointName};
@@ -116,15 +116,6 @@ pub trait GroupKind<'a>: run::RunKind {
 
     /// Every value its position uses, in the order the evaluator reads them.
     fn position_values(&self) -> Vec<Value>;
-
-    /// Its position in `f64` at expansion time: what it finds goes into
-    /// `pose`; returns its scaled determinant (`None` for statements without
-    /// a rate system). `input` reads a driver's input value.
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>>;
 
     /// The core type of its solved position state (`grp_NAME`), `()` for none.
     fn position_type(&self) -> TokenStream;
@@ -292,9 +283,9 @@ pub trait GroupKind<'a>: run::RunKind {
     /// statements solved before it at input `q`, and keeps what the emitted
     /// code reads. [`Tracking::Failed`] with an error reported when the
     /// stated assembly cannot be followed. Others have nothing to follow.
-    fn track(
+    fn track<'l>(
         &self,
-        _before: &dyn Fn(f64) -> Option<Pose>,
+        _before: &dyn Fn(f64) -> Option<NamedPose<'l>>,
         _range: (f64, f64),
         _angle: bool,
         _errors: &mut Diagnostics,

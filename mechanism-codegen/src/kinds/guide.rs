@@ -5,13 +5,11 @@ use super::closure::{f, Residuals, Scale};
 use super::group::{GroupKind, Placed, Role, Solve};
 use super::lane::{Lane, LaneGuide, Step, Vector};
 use super::lane_shapes::{carried, OriginMotion};
-use super::pose::Pose;
 use super::rates::RateCx;
 use super::run::{Compile, ForceRunCx, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, local, unit_vector};
 use crate::diag::Diagnostics;
 use crate::keys::{LinkName, PointName};
-use crate::kinds::pose::num;
 use crate::model::{Origin, Stmt};
 use crate::names::Family;
 use crate::value::{lit, Value};
@@ -63,24 +61,6 @@ impl<'a> GroupKind<'a> for Guide<'a> {
         }
         v.push(self.angle.clone());
         v
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        _input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let origin = match self.origin {
-            Origin::Point(p) => pose.point(p),
-            Origin::Coords(x, y) => Point2::new(num(x), num(y)),
-        };
-        let u = geometry::unit(num(self.angle));
-        let dir = match self.carrier {
-            None => u,
-            Some(l) => link::local_offset(&pose.axis(l), &u),
-        };
-        pose.found_line(self.stmt, Line { origin, dir });
-        Ok(None)
     }
 
     /// The line: its origin and its direction (a carried guide turns with
@@ -314,6 +294,13 @@ struct GuideRun {
 impl super::run::Step for GuideRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks {
+            rates: self.carrier.is_some(),
+            forces: false,
+        }
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

@@ -139,7 +139,6 @@ pub use accessors::{as_guide, cos_sin_input, cylinder, guide_carrier, literal_gr
 pub use group::{GroupKind, GuideLine, LinkShape, Placed, Role, Solve, Tracked, Tracking, Turn};
 
 use crate::model::{Kind, Mode, Stmt, StmtId};
-pub use pose::Pose;
 use std::collections::BTreeMap;
 
 /// What the later stages know of the statements beside the model: the
@@ -349,7 +348,6 @@ mod tests {
     use crate::diag::Diagnostics;
     use crate::keys::PointName;
     use crate::model::Model;
-    use syn::Ident;
 
     /// The definition `src` lowered (it must have no errors).
     fn lowered(src: &str) -> Model {
@@ -402,42 +400,5 @@ mod tests {
                 }
             }
         }
-    }
-
-    #[test]
-    fn evaluator_steps_close_the_four_bar() {
-        // Proves the kinds' f64 steps solve a four-bar at theta = 0.7: the
-        // crank tip at (cos, sin) of the input, the RRR joint at l1 = 3 from
-        // `A` and l2 = 2.5 from `O4` (1e-12: a few roundings of numbers of
-        // size 3), on the left of `A -> O4`, and its determinant in (0, 1].
-        let model = lowered(
-            "pub M {
-                let O = ground(0.0, 0.0);
-                let O4 = ground(3.0, 0.0);
-                let A = crank(O, 1.0, theta) as link2;
-                let B = rrr(A, 3.0, O4, 2.5, left) as (link3, link4);
-            }",
-        );
-        let theta: f64 = 0.7;
-        let input = |_: &Ident| theta;
-        let mut pose = Pose::default();
-        let mut dets = Vec::new();
-        for stmt in &model.stmts {
-            dets.push(of(stmt).eval(&mut pose, &input).expect("assembles"));
-        }
-        let id = |n: &str| syn::Ident::new(n, proc_macro2::Span::call_site());
-        let (a, b, o4) = (
-            pose.point(&id("A")),
-            pose.point(&id("B")),
-            pose.point(&id("O4")),
-        );
-        assert!((a.x - theta.cos()).abs() <= 1e-15 && (a.y - theta.sin()).abs() <= 1e-15);
-        assert!(((b - a).norm() - 3.0).abs() <= 1e-12);
-        assert!(((b - o4).norm() - 2.5).abs() <= 1e-12);
-        let (r, s) = (o4 - a, b - a);
-        assert!(r.x * s.y - r.y * s.x > 0.0, "B is not left of A -> O4");
-        assert_eq!(&dets[..3], &[None, None, None]);
-        let det = dets[3].expect("the RRR has a rate system");
-        assert!(det > 0.0 && det <= 1.0, "{det}");
     }
 }

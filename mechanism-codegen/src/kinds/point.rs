@@ -5,13 +5,11 @@ use super::closure::{f, Residuals};
 use super::group::{GroupKind, Placed, Role, Solve};
 use super::lane::{Lane, PointLocals, Step, Vector};
 use super::lane_shapes::local_vector;
-use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
 use super::run::{Compile, ForceRunCx, LinkSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{axis, local, tag, unit_vector};
 use crate::diag::Diagnostics;
 use crate::keys::{LinkName, PointName};
-use crate::kinds::pose::num;
 use crate::model::{Local, Stmt};
 use crate::names::Family;
 use crate::value::{lit, Value};
@@ -58,20 +56,6 @@ impl<'a> GroupKind<'a> for Point<'a> {
         match self.local {
             Local::Polar(a, b) | Local::Cartesian(a, b) => vec![a.clone(), b.clone()],
         }
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        _input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let offset = match self.local {
-            Local::Cartesian(x, y) => Vector2::new(num(x), num(y)),
-            Local::Polar(d, a) => geometry::unit(num(a)) * num(d),
-        };
-        let p = link::point_position(&pose.point(self.from), &pose.axis(self.link), &offset)?;
-        pose.found(self.stmt, Some(p), &[]);
-        Ok(None)
     }
 
     fn position(&self, _cos_sin: bool) -> Solve {
@@ -305,6 +289,13 @@ struct PointRun {
 impl super::run::Step for PointRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks {
+            rates: self.moves,
+            forces: false,
+        }
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

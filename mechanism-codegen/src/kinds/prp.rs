@@ -6,13 +6,11 @@ use super::forces::{inner, prismatic, rx, ForceCx};
 use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::line_axis;
-use super::pose::Pose;
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, Me, RunCx, RunPose};
 use super::tokens::{along, local};
 use crate::keys::LinkName;
-use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
 use mechanism_core::{dyad, sweep, Fault};
@@ -61,17 +59,6 @@ impl<'a> GroupKind<'a> for Prp<'a> {
 
     fn position_values(&self) -> Vec<Value> {
         vec![self.offset1.clone(), self.offset2.clone()]
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        _input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let (l1, l2) = (pose.line(self.g1), pose.line(self.g2));
-        let p = dyad::prp::position(&l1, num(self.offset1), &l2, num(self.offset2))?;
-        pose.found(self.stmt, Some(p.c), &[l1.dir, l2.dir]);
-        Ok(Some(sweep::det_prp(&l1, &l2)))
     }
 
     fn position_type(&self) -> TokenStream {
@@ -295,6 +282,10 @@ struct PrpRun {
 impl super::run::Step for PrpRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

@@ -7,14 +7,12 @@ use super::forces::{inner, prismatic, revolute, rx, ForceCx};
 use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
 use super::lane_shapes::{along_line, line_axis};
-use super::pose::Pose;
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{along, grp, local, unit_field, unit_vector};
 use crate::diag::Diagnostics;
 use crate::keys::LinkName;
-use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::value::Value;
 use mechanism_core::{dyad, geometry, sweep, Fault};
@@ -63,18 +61,6 @@ impl<'a> GroupKind<'a> for Rpp<'a> {
 
     fn position_values(&self) -> Vec<Value> {
         vec![self.slot.clone(), self.offset.clone()]
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        _input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let (pa, gl) = (pose.point(self.a), pose.line(self.guide));
-        let u = geometry::unit(num(self.slot));
-        let p = dyad::rpp::position(&pa, &gl, num(self.offset), &u)?;
-        pose.found(self.stmt, Some(p.q), &[p.slot, gl.dir]);
-        Ok(Some(sweep::det_rpp(&p, &gl)))
     }
 
     fn position_type(&self) -> TokenStream {
@@ -328,6 +314,10 @@ struct RppRun {
 impl super::run::Step for RppRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

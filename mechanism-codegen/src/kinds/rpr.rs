@@ -6,14 +6,13 @@ use super::forces::{inner, revolute, rx, ForceCx};
 use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, Step};
 use super::lane_shapes::along_line;
-use super::pose::Pose;
 use super::rates::{states, Pieces, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{grp, local, mode_arg, unit_field};
 use crate::diag::show_num;
 use crate::keys::LinkName;
-use crate::kinds::pose::{mode, num};
+use crate::kinds::pose::mode;
 use crate::model::{Mode, Stmt};
 use crate::value::Value;
 use mechanism_core::{dyad, sweep, Fault};
@@ -61,17 +60,6 @@ impl<'a> GroupKind<'a> for Rpr<'a> {
 
     fn position_values(&self) -> Vec<Value> {
         vec![self.offset.clone()]
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        _input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let (pa, pb) = (pose.point(self.a), pose.point(self.b));
-        let p = dyad::rpr::position(&pa, &pb, num(self.offset), mode(self.mode))?;
-        pose.found(self.stmt, None, &[p.axis, p.axis]);
-        Ok(Some(sweep::det_rpr(&p, &pa, &pb)))
     }
 
     fn position_type(&self) -> TokenStream {
@@ -342,6 +330,10 @@ struct RprRun {
 impl super::run::Step for RprRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

@@ -6,14 +6,13 @@ use super::forces::{inner, prismatic, revolute, rx, ForceCx};
 use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step};
 use super::lane_shapes::{along_line, line_axis};
-use super::pose::Pose;
 use super::rates::{states, vec_ty, Pieces, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, Me, PointSlot, RunCx, RunPose};
 use super::tokens::{along, arm, grp, local, mode_arg};
 use crate::diag::show_num;
 use crate::keys::LinkName;
-use crate::kinds::pose::{mode, num};
+use crate::kinds::pose::mode;
 use crate::model::{Mode, Stmt};
 use crate::value::Value;
 use mechanism_core::{dyad, sweep, Fault};
@@ -63,17 +62,6 @@ impl<'a> GroupKind<'a> for Rrp<'a> {
 
     fn position_values(&self) -> Vec<Value> {
         vec![self.l.clone(), self.offset.clone()]
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        _input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let (pa, gl, l) = (pose.point(self.a), pose.line(self.guide), num(self.l));
-        let p = dyad::rrp::position(&pa, l, &gl, num(self.offset), mode(self.mode))?;
-        pose.found(self.stmt, Some(p.c), &[p.r1 / l, gl.dir]);
-        Ok(Some(sweep::det_rrp(&p, &gl)))
     }
 
     fn position_type(&self) -> TokenStream {
@@ -308,6 +296,10 @@ struct RrpRun {
 impl super::run::Step for RrpRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

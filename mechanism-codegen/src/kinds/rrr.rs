@@ -6,7 +6,6 @@ use super::forces::{inner, revolute, rx, ForceCx};
 use super::group::{links_text, mode_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, Step};
 use super::lane_shapes::{dyad, SecondSide};
-use super::pose::Pose;
 use super::rates::{states, two_links, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, Me, PointSlot, RunCx, RunPose};
@@ -63,18 +62,6 @@ impl<'a> GroupKind<'a> for Rrr<'a> {
 
     fn position_values(&self) -> Vec<Value> {
         vec![self.l1.clone(), self.l2.clone()]
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        _input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let (pa, pb) = (pose.point(self.a), pose.point(self.b));
-        let (l1, l2) = (num(self.l1), num(self.l2));
-        let p = dyad::rrr::position(&pa, l1, &pb, l2, mode(self.mode))?;
-        pose.found(self.stmt, Some(p.c), &[p.r1 / l1, p.r2 / l2]);
-        Ok(Some(sweep::det_rrr(&p)))
     }
 
     fn position_type(&self) -> TokenStream {
@@ -343,6 +330,10 @@ struct RrrRun {
 impl super::run::Step for RrrRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

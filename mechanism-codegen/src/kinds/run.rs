@@ -449,6 +449,23 @@ impl RunPose {
     }
 }
 
+/// A pose read by name: what the statements solved so far found, as the
+/// expansion-time check hands it to a kind that follows its assembly over
+/// the input range (`GroupKind::track`).
+pub struct NamedPose<'l> {
+    /// The pose.
+    pub pose: RunPose,
+    /// Its slots by name.
+    pub layout: &'l Layout,
+}
+
+impl NamedPose<'_> {
+    /// Point `n` (NaN when not solved, or not a point).
+    pub fn point(&self, n: &Ident) -> Point2<f64> {
+        self.pose.point(self.layout.point_named(&PointName::of(n)))
+    }
+}
+
 /// The rates at one level (velocity or acceleration), by slot: the points'
 /// motions, the links' rates, the carried guides' motions, the groups'
 /// velocity states, the slides' rates, the groups' conditioning; the
@@ -659,6 +676,23 @@ pub fn missing(primitive: mechanism_core::Primitive) -> Error<f64> {
     )
 }
 
+/// The walks after the position in which a [`Step`] does something.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Walks {
+    /// Its `rates` write a motion (velocity and acceleration walks).
+    pub rates: bool,
+    /// Its `forces` write reactions or loads (the force walk).
+    pub forces: bool,
+}
+
+impl Walks {
+    /// Both walks: a group or driver.
+    pub const ALL: Walks = Walks {
+        rates: true,
+        forces: true,
+    };
+}
+
 /// A kind's run-time facet: its statement compiled into a [`Step`].
 pub trait RunKind {
     /// The statement as a step of the compiled plan: its slots resolved,
@@ -687,6 +721,11 @@ pub trait Step: Send + Sync {
     /// kind without forces (a ground point, a guide, a point on a link)
     /// does nothing.
     fn forces(&self, cx: &mut ForceRunCx<'_>) -> Result<(), Error<f64>>;
+
+    /// The walks whose calls of it do something: the compiled plan leaves
+    /// it out of the others (a ground point's rates and forces, a fixed
+    /// guide's rates, a point's forces).
+    fn walks(&self) -> Walks;
 
     /// The raw direction of its link `index` (the second of
     /// `GroupKind::link_direction`), from the position.

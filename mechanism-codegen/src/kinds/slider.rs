@@ -5,13 +5,11 @@ use super::closure::{guide_axis, Residuals};
 use super::forces::{drive, prismatic, rx, ForceCx, Held};
 use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
-use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, GuideSlot, InputSlot, Me, RunCx, RunPose};
 use super::tokens::{along, grp, local, tag};
 use crate::keys::LinkName;
-use crate::kinds::pose::num;
 use crate::model::Stmt;
 use crate::names::Family;
 use crate::value::Value;
@@ -60,17 +58,6 @@ impl<'a> GroupKind<'a> for Slider<'a> {
 
     fn position_values(&self) -> Vec<Value> {
         vec![self.offset.clone()]
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let g = pose.line(self.guide);
-        let s = driver::slider::position(&g, num(self.offset), input(self.input))?;
-        pose.found(self.stmt, Some(s.p), &[g.dir]);
-        Ok(None)
     }
 
     fn position_type(&self) -> TokenStream {
@@ -270,6 +257,10 @@ struct SliderRun {
 impl super::run::Step for SliderRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

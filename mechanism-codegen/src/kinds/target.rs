@@ -8,7 +8,6 @@
 use super::forces::{body_name, rx, ForceCx, Held, Reaction};
 use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Turn};
 use super::lane::{Lane, LaneLink, PointLocals, Step, Vector};
-use super::pose::Pose;
 use super::rates::{vec_ty, RateCx};
 use super::reads::Reads;
 use super::run::{Compile, ForceRunCx, InputSlot, Me, RunCx, RunPose};
@@ -57,16 +56,6 @@ impl<'a> GroupKind<'a> for Target<'a> {
 
     fn position_values(&self) -> Vec<Value> {
         Vec::new()
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let p = driver::target::position(input(self.x), input(self.y))?;
-        pose.found(self.stmt, Some(p), &[mechanism_core::Vector2::x()]);
-        Ok(None)
     }
 
     fn position(&self, _cos_sin: bool) -> Solve {
@@ -265,6 +254,10 @@ struct TargetRun {
 impl super::run::Step for TargetRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

@@ -25,10 +25,9 @@ use super::closure::{f, Residuals};
 use super::forces::{revolute, rx, ForceCx};
 use super::group::{links_text, GroupKind, LinkShape, Role, Solve, Tracked, Tracking, Turn};
 use super::lane::{Lane, Step};
-use super::pose::Pose;
 use super::rates::{states, vec_ty, RateCx};
 use super::reads::Reads;
-use super::run::{Compile, ForceRunCx, InputSlot, Me, PointSlot, RunCx, RunPose};
+use super::run::{Compile, ForceRunCx, InputSlot, Me, NamedPose, PointSlot, RunCx, RunPose};
 use super::tokens::{arm, grp, local, tag, unit_field};
 use crate::diag::{show_num, Diagnostics};
 use crate::keys::LinkName;
@@ -217,19 +216,6 @@ fn stated_input(t: &Args, (lo, hi): (f64, f64), angle: bool) -> f64 {
 }
 
 impl TriadKind<'_> {
-    /// The hint the position uses at `q`: the table's pose, or the stated
-    /// one when there is no table.
-    fn hint(&self, q: f64) -> Result<Near<f64>, mechanism_core::Error<f64>> {
-        let Some(rows) = self.tracked.filter(|t| !t.rows.is_empty()) else {
-            return Ok(stated(self.t, &num));
-        };
-        if rows.angle {
-            triad::near_from_table_turning(&rows.rows, q)
-        } else {
-            triad::near_from_table(&rows.rows, q)
-        }
-    }
-
     /// The hint's code: the table as `const` data, or the stated pose.
     fn hint_code(&self) -> TokenStream {
         let Some(rows) = self.tracked.filter(|t| !t.rows.is_empty()) else {
@@ -291,20 +277,6 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
             v.extend([x.clone(), y.clone()]);
         }
         v
-    }
-
-    fn eval(
-        &self,
-        pose: &mut Pose,
-        input: &dyn Fn(&Ident) -> f64,
-    ) -> Result<Option<f64>, mechanism_core::Error<f64>> {
-        let k = self.t.k.each_ref().map(|k| pose.point(k));
-        let near = self.hint(input(&self.t.at.0))?;
-        let dims = dims(self.t, &num);
-        let p = triad::position(&dims, &k, &near)?;
-        let axes = [p.r1 / dims.l1, p.r2 / dims.l2, p.r3 / dims.l3, p.axis];
-        pose.found(self.stmt, Some(p.a), &axes);
-        Ok(Some(p.jacobian))
     }
 
     fn position_type(&self) -> TokenStream {
@@ -487,9 +459,9 @@ impl<'a> GroupKind<'a> for TriadKind<'a> {
     /// tracked poses, which the sweep and the generated `position()` then
     /// read. A stated input outside the range, or a stated pose that
     /// selects no assembly, is an error on the statement.
-    fn track(
+    fn track<'l>(
         &self,
-        before: &dyn Fn(f64) -> Option<Pose>,
+        before: &dyn Fn(f64) -> Option<NamedPose<'l>>,
         (lo, hi): (f64, f64),
         angle: bool,
         errors: &mut Diagnostics,
@@ -715,6 +687,10 @@ impl TriadRun {
 impl super::run::Step for TriadRun {
     fn group(&self) -> &'static str {
         self.me.group
+    }
+
+    fn walks(&self) -> super::run::Walks {
+        super::run::Walks::ALL
     }
 
     fn position(&self, pose: &mut RunPose) -> Result<Option<f64>, mechanism_core::Error<f64>> {

@@ -362,7 +362,7 @@ impl Mechanism {
         }
         let units = &self.model.units;
         let (f, m) = (intern(&units.force), intern(&units.moment()));
-        let moving = crate::emit::moving_points(&self.model, &self.plan);
+        let moving = self.plan.moving_points(&self.model);
         // Only the fields are used: the code's reads go nowhere.
         let reads = crate::kinds::reads::Reads::default();
         let code = crate::emit::forces::emit(&self.model, &self.plan, &moving, &reads);
@@ -487,7 +487,7 @@ impl Mechanism {
         };
         let c = &self.compiled;
         c.forces.known_loads(&mut cx)?;
-        for &i in c.solve.iter().rev() {
+        for &i in c.force_walk.iter().rev() {
             let step = &c.steps[i.0];
             step.forces(&mut cx).map_err(|e| e.in_group(step.group()))?;
         }

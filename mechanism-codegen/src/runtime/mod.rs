@@ -1,11 +1,10 @@
 //! The run-time mechanism: a definition read from text at run time, through
 //! the macro's own stages (parse, model, validate, plan, check: the same
 //! rules and messages, every error at once), evaluated in `f64` by walking
-//! the plan: each statement's position is its kind's `GroupKind::eval` (the
-//! expansion-time evaluator's step), its rates its kind's
-//! `run::RunKind::run_rates`; both call the `mechanism-core` primitive the
-//! generated code calls, with the same arguments, in the same order. It is
-//! the third walker of the plan, beside the emitter and the check; no
+//! the plan compiled into each kind's `run::Step` (defined in the kind's
+//! file): its position, rates and forces call the `mechanism-core`
+//! primitive the generated code calls, with the same arguments, in the same
+//! order. The expansion-time check walks the same steps' positions; no
 //! second solver.
 //!
 //! ```
@@ -25,14 +24,13 @@
 
 pub mod forces;
 pub mod layout;
-mod slots;
 pub mod text;
 
 use crate::diag::Diagnostics;
 use crate::keys::{LinkName, PointName};
 use crate::kinds;
 use crate::kinds::run::{
-    self, Compile, LinkSlot, Motion, PointSlot, RunCx, RunPose, Step, StepSlot,
+    self, Compile, LinkSlot, Motion, PointSlot, RunCx, RunPose, Step, StepSlot, Walks,
 };
 use crate::model::{Mode, Model, StmtId};
 use crate::plan::Plan;
@@ -138,10 +136,14 @@ impl RateOut {
 }
 
 /// The plan compiled: one step per statement (by statement index), the
-/// statements `position()` solves, in order, and where each output is.
+/// statements `position()` solves, in order, those of them whose rates and
+/// whose forces do something ([`Step::walks`]), in the same order, and
+/// where each output is.
 struct Compiled {
     steps: Vec<Box<dyn Step>>,
     solve: Vec<StmtId>,
+    rate_walk: Vec<StmtId>,
+    force_walk: Vec<StmtId>,
     pos_out: Vec<PosOut>,
     rate_out: RateOut,
     /// The force analysis' loads and motors ([`forces::ForcePlan`]).
@@ -204,7 +206,7 @@ impl Mechanism {
             .iter()
             .map(|(n, v)| (n.to_string(), *v))
             .collect();
-        let slots = Arc::new(slots::layout(&model, &plan));
+        let slots = Arc::new(crate::slots::layout(&model, &plan));
         let mut m = Mechanism {
             model,
             plan,
@@ -215,6 +217,8 @@ impl Mechanism {
             compiled: Compiled {
                 steps: Vec::new(),
                 solve: Vec::new(),
+                rate_walk: Vec::new(),
+                force_walk: Vec::new(),
                 pos_out: Vec::new(),
                 rate_out: RateOut::default(),
                 forces: forces::ForcePlan::default(),
@@ -232,9 +236,18 @@ impl Mechanism {
             params: &self.params,
         };
         let stmts = &self.model.stmts;
-        let steps = StmtId::all(stmts)
+        let steps: Vec<Box<dyn Step>> = StmtId::all(stmts)
             .map(|i| kinds::of_known(stmts, i, &self.known).compile(&cx))
             .collect();
+        let solve = self.plan.solve.clone();
+        let walk = |takes: fn(Walks) -> bool| -> Vec<StmtId> {
+            solve
+                .iter()
+                .copied()
+                .filter(|i| takes(steps[i.0].walks()))
+                .collect()
+        };
+        let (rate_walk, force_walk) = (walk(|w| w.rates), walk(|w| w.forces));
         let out = &self.plan.outputs;
         let mut pos_out = Vec::new();
         let mut rate_out = RateOut::default();
@@ -270,7 +283,9 @@ impl Mechanism {
         let forces = forces::ForcePlan::new(self);
         self.compiled = Compiled {
             steps,
-            solve: self.plan.solve.clone(),
+            solve,
+            rate_walk,
+            force_walk,
             pos_out,
             rate_out,
             forces,
@@ -571,7 +586,7 @@ impl Mechanism {
             out: &mut out.motion,
             layout: &self.slots,
         };
-        for &i in &c.solve {
+        for &i in &c.rate_walk {
             let step = &c.steps[i.0];
             step.rates(&mut cx).map_err(|e| e.in_group(step.group()))?;
         }

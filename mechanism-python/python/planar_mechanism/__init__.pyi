@@ -208,6 +208,7 @@ class Mechanism:
         rates: Optional[Mapping[str, npt.ArrayLike]] = None,
         accels: Optional[Mapping[str, npt.ArrayLike]] = None,
         forces: bool = False,
+        threads: Optional[int] = None,
         **inputs: npt.ArrayLike,
     ) -> Dict[str, npt.NDArray[Any]]:
         """Solves every pose of a sweep in Rust (no Python call per pose).
@@ -232,5 +233,12 @@ class Mechanism:
 
         A pose that fails (out of reach, singular velocity system) has NaN
         in every output of its row and only there; a solved pose never
-        holds NaN. Check ``ok`` (or ``error``) before using a row."""
+        holds NaN. Check ``ok`` (or ``error``) before using a row.
+
+        ``threads``: how many threads solve the rows (``None``: one per
+        core, each given at least 32768 rows, so a short sweep stays on
+        the calling thread; ``1``: the calling thread only). The threads
+        are started and joined within the call (nothing is left running
+        for a later ``fork``); the GIL is released meanwhile. The numbers
+        are the same whatever the count."""
     def __repr__(self) -> str: ...

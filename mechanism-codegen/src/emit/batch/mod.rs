@@ -581,7 +581,7 @@ fn solve_batch(
 /// `ty`: the output's type (`Point2<T>` for a point).
 fn constant(model: &Model, plan: &Plan, output: &Ident, shape: OutputShape) -> bool {
     if shape == OutputShape::Point {
-        return !crate::emit::moving_points(model, plan).contains(&PointName::of(output));
+        return !plan.moving_points(model).contains(&PointName::of(output));
     }
     let o = LinkName::of(output);
     plan.links.contains_key(&o) && plan.turning_link(&o).is_none()

@@ -9,7 +9,7 @@ mod tests {
     /// `forces` method's code, without whitespace.
     fn reactions(src: &str) -> (Vec<String>, String) {
         let (model, plan) = planned(src);
-        let moving = crate::emit::moving_points(&model, &plan);
+        let moving = plan.moving_points(&model);
         let reads = crate::kinds::reads::Reads::default();
         let code = super::super::emit(&model, &plan, &moving, &reads);
         let methods = flat(&code.methods);

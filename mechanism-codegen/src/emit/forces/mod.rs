@@ -541,7 +541,7 @@ mod tests {
 
     fn forces(scene: &str) -> ForcesCode {
         let (model, plan) = planned(&four_bar(scene));
-        let moving = crate::emit::moving_points(&model, &plan);
+        let moving = plan.moving_points(&model);
         super::emit(&model, &plan, &moving, &Reads::default())
     }
 

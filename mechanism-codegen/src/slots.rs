@@ -1,9 +1,10 @@
-//! The run-time mechanism's slots laid out from the plan: which name is in
-//! which slot of flat storage (`kinds::run::Layout`), and the facts by slot
-//! the compiled steps read (which points move, which guides are carried,
-//! the body owning each point and guide, the link whose rate each link
-//! shares, each link's reference point). Built here, above the plan and the
-//! emitters whose answers it reuses, so that `kinds::run` reads neither.
+//! The compiled plan's slots laid out from the plan: which name is in which
+//! slot of flat storage (`kinds::run::Layout`), and the facts by slot the
+//! compiled steps read (which points move, which guides are carried, the
+//! body owning each point and guide, the link whose rate each link shares,
+//! each link's reference point). Built here, above the plan, so that
+//! `kinds::run` does not read it; read by the expansion-time check (its
+//! position walk) and by the run-time mechanism.
 
 use crate::keys::{GuideName, InputName, PointName};
 use crate::kinds::run::Layout;
@@ -11,12 +12,12 @@ use crate::model::Model;
 use crate::plan::Plan;
 
 /// The layout of `model` planned as `plan`.
-pub(super) fn layout(model: &Model, plan: &Plan) -> Layout {
+pub fn layout(model: &Model, plan: &Plan) -> Layout {
     let stmts = model.stmts.len();
     let defined = plan.defined.iter().map(|(n, id)| (n.clone(), id.0));
     let inputs = model.inputs.iter().map(|i| InputName::of(&i.name));
     let mut l = Layout::with_names(stmts, plan.links.keys().cloned().collect(), defined, inputs);
-    let moving = crate::emit::moving_points(model, plan);
+    let moving = plan.moving_points(model);
     for (k, s) in model.stmts.iter().enumerate() {
         let (point, guide) = (PointName::of(&s.name), GuideName::of(&s.name));
         l.moving[k] = moving.contains(&point);
