@@ -146,11 +146,12 @@ impl<T: Real> Frame<T> {
     /// taken, and further ones while that step is above `4 eps c` and
     /// shrank at least fourfold (Newton converging slowly on a nearly
     /// singular Jacobian, near a branch point; at rounding level, or no
-    /// longer shrinking, it stops). The axis turns by `atan(step)` rather than `step` (a rotation
-    /// by `(1, step) / sqrt(1 + step^2)`, no sine or cosine): the difference
-    /// is third order in the step, so convergence stays quadratic. Each step
-    /// solves the 3x3 system by Cramer's rule (its accuracy matters only to
-    /// the speed of convergence: the residuals decide the result).
+    /// longer shrinking, it stops). The axis turns by `atan(step)` rather
+    /// than `step` (a rotation by `(1, step) / sqrt(1 + step^2)`, no sine
+    /// or cosine): the difference is third order in the step, so
+    /// convergence stays quadratic. Each step solves the 3x3 system by
+    /// Cramer's rule (its accuracy matters only to the speed of
+    /// convergence: the residuals decide the result).
     #[inline(always)]
     pub(super) fn newton(&self, mut x: State<T>) -> Option<State<T>> {
         let small = T::eps().sqrt() * self.reach;
