@@ -15,6 +15,7 @@ The Rust figures beside them: `cargo run --release -p mechanism-python
 """
 
 import math
+import os
 import statistics
 import time
 
@@ -59,15 +60,21 @@ def pylinkage_fourbar():
 
 
 def main():
+    print(f"{os.cpu_count()} logical cores")
     m = pm.Mechanism(TEXT)
     theta = (np.arange(N) + 1.0) * (2.0 * math.pi / N)
     rates, accels = {"theta": 1.0}, {"theta": 0.0}
 
-    t, ours = median_seconds(lambda: m.sweep(theta=theta), 7)
+    t, ours = median_seconds(lambda: m.sweep(theta=theta, threads=1), 7)
     assert ours["ok"].all()
-    show("planar_mechanism sweep, position", t)
-    t, _ = median_seconds(lambda: m.sweep(theta=theta, rates=rates, accels=accels), 7)
-    show("planar_mechanism sweep, position + velocity + acceleration", t)
+    show("planar_mechanism sweep, position, one thread", t)
+    t, _ = median_seconds(lambda: m.sweep(theta=theta), 7)
+    show("planar_mechanism sweep, position, threads=None", t)
+    full = dict(rates=rates, accels=accels)
+    t, _ = median_seconds(lambda: m.sweep(theta=theta, threads=1, **full), 7)
+    show("planar_mechanism sweep, pos + vel + acc, one thread", t)
+    t, _ = median_seconds(lambda: m.sweep(theta=theta, **full), 7)
+    show("planar_mechanism sweep, pos + vel + acc, threads=None", t)
     t, _ = median_seconds(lambda: [m.position(theta=x) for x in theta.tolist()], 3)
     show("planar_mechanism position() in a Python loop", t)
 

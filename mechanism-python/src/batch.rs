@@ -140,8 +140,10 @@ const BLOCK: usize = 256;
 /// The fewest rows a worker thread of [`par_sweep`] is given: a worker
 /// reads the definition's text again for its own copy of the run-time
 /// mechanism (about 5 ms for a four-bar, the check included), the time of
-/// some 15 000 rows of its position sweep.
-pub const ROWS_PER_THREAD: usize = 32_768;
+/// some 20 000 rows of its position sweep. Measured on 2 logical cores
+/// (docs/python.md): a four-bar's full sweep of 10^5 rows on two threads
+/// took as long as on one, of 3 x 10^5 rows 1.6 times less.
+pub const ROWS_PER_THREAD: usize = 65_536;
 
 /// The inputs of a sweep's rows: one column per input, rate and
 /// acceleration (in `Mechanism::inputs` order; rates and accelerations
