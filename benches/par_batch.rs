@@ -18,7 +18,9 @@
 //!   cross the memory bus (24 bytes per `f64` element instead of 169).
 //!
 //! The last column is the task latency `par_solve` has measured by the end
-//! of the size's rounds (`mechanism::par_task_ns`).
+//! of the size's rounds (`mechanism::par_task_ns`). With
+//! `RAYON_NUM_THREADS` above the machine's cores it shows the rules on a
+//! pool with more threads than free cores.
 //!
 //! `cargo bench --features rayon --bench par_batch` (prints a Markdown table;
 //! `PAR_BATCH_ROUNDS` sets the rounds, 51 by default).

@@ -176,9 +176,13 @@ pub use mechanism_macros::mechanism;
 
 pub mod batch;
 #[cfg(feature = "rayon")]
-#[cfg_attr(docsrs, doc(cfg(feature = "rayon")))]
-pub use batch::{par_solve, par_task_ns, PAR_PROBE, PAR_TASK_NS, PAR_TASK_NS_RANGE};
+mod par;
 pub use batch::{BatchError, BatchSplit};
+#[cfg(feature = "rayon")]
+#[cfg_attr(docsrs, doc(cfg(feature = "rayon")))]
+pub use par::{
+    par_solve, par_task_ns, PAR_PIECES_PER_THREAD, PAR_PROBE, PAR_TASK_NS, PAR_TASK_NS_RANGE,
+};
 
 pub mod example;
 

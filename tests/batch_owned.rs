@@ -313,9 +313,12 @@ mod par_solve {
         assert_eq!(calls.load(Ordering::Relaxed), 0);
         assert!(c.status.iter().all(|s| *s == 9));
         // Equal lengths: every piece runs. The documented split: the timed
-        // probe on the calling thread, then at most one piece per pool
-        // thread (how many depends on the time the probe took).
-        let most = 1 + rayon::current_num_threads();
+        // probe on the calling thread, then the rest whole or in at most
+        // `PAR_PIECES_PER_THREAD` pieces per pool thread, each of at least
+        // `min_len` (512) elements (which depends on the time the probe took).
+        let rest = 10_000 - mechanism::PAR_PROBE;
+        let most =
+            1 + (rest / 512).min(mechanism::PAR_PIECES_PER_THREAD * rayon::current_num_threads());
         c.vel_B_y.push(0.0);
         let r = mechanism::par_solve(c.as_batch(), 512, &|mut b| {
             calls.fetch_add(1, Ordering::Relaxed);
