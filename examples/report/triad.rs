@@ -123,8 +123,16 @@ fn ref_triad(phi: f64) -> (TriadRef, V, V) {
 /// The reference's columns at `phi` from the angles `start`, and its
 /// converged angles (`None`: its Newton or a rate solve failed).
 fn ref_row(phi: f64, start: [Dd; 4]) -> Option<([Dd; COLS], [Dd; 4])> {
-    let (t, vc, ac) = ref_triad(phi);
+    let (t, _, _) = ref_triad(phi);
     let pose = rt::newton(&t, start)?;
+    Some((columns(phi, &pose)?, pose.q))
+}
+
+/// The columns at `phi` of the assembly `pose`: its joints and angles, and
+/// the rates and accelerations the reference solves from them (`None`: a
+/// rate solve failed).
+fn columns(phi: f64, pose: &rt::Pose) -> Option<[Dd; COLS]> {
+    let (t, vc, ac) = ref_triad(phi);
     let z = [Dd::ZERO; 2];
     let (w, vj) = rt::rates(&t, &pose, [z, z, vc])?;
     let (al, aj) = rt::accelerations(&t, &pose, &w, [z, z, ac])?;
@@ -138,14 +146,58 @@ fn ref_row(phi: f64, start: [Dd; 4]) -> Option<([Dd; COLS], [Dd; 4])> {
         }
         r[10 * order + 6..10 * order + 10].copy_from_slice(&angs[order]);
     }
-    Some((r, pose.q))
+    Some(r)
+}
+
+/// The floor of any method that forms the velocity and acceleration
+/// systems in `f64`: the link angles' rates and accelerations (in the order
+/// of the columns 16..20 and 26..30) solved in double-double from the
+/// reference's Jacobian at its own angles `q` and right-hand sides (`J x`
+/// of its exact `x`) with every entry rounded to `f64` once, as `f64`.
+fn system_floor(phi: f64, q: [Dd; 4], exact: &[Dd; COLS]) -> Option<[f64; 8]> {
+    let (t, _, _) = ref_triad(phi);
+    let jac = t.jacobian(&q);
+    let round = |x: Dd| Dd::from(x.to_f64());
+    let rows: Vec<Vec<Dd>> = jac
+        .iter()
+        .map(|r| r.iter().map(|&x| round(x)).collect())
+        .collect();
+    let mut out = [0.0; 8];
+    for (order, base) in [(0, 16), (1, 26)] {
+        let x = &exact[base..base + 4];
+        let rhs = jac
+            .iter()
+            .map(|r| round(r.iter().zip(x).fold(Dd::ZERO, |s, (&a, &b)| s + a * b)))
+            .collect();
+        let y = mechanism_reference::linear::solve(rows.clone(), rhs).ok()?;
+        for i in 0..4 {
+            out[4 * order + i] = y[i].to_f64();
+        }
+    }
+    Some(out)
+}
+
+/// The floor of any method that holds the pose in `f64`: the columns at
+/// `phi` solved in double-double from the reference's link angles `q`
+/// rounded to `f64` (the joints from those angles), as `f64`. Where the
+/// velocity system is nearly singular (the swing's ends) the rounding of
+/// the angles alone moves the rates and accelerations by far more than an
+/// ulp; this measures how far.
+fn floor_row(phi: f64, q: [Dd; 4]) -> Option<[f64; COLS]> {
+    let (t, _, _) = ref_triad(phi);
+    let q = q.map(|x| Dd::from(x.to_f64()));
+    let pose = rt::Pose {
+        q,
+        joints: t.joints(&q),
+    };
+    Some(columns(phi, &pose)?.map(|x| x.to_f64()))
 }
 
 /// The reference at every input, by continuation: Newton from the stated
 /// approximate pose (angles of the stated joints) at the stated input, then
 /// in steps of at most 0.01 deg to the first input and along the inputs, each
 /// solve started from the previous one's angles.
-fn references(g: &[f64]) -> Vec<Option<[Dd; COLS]>> {
+fn references(g: &[f64]) -> Vec<Option<([Dd; COLS], [Dd; 4])>> {
     let ang = |from: (f64, f64), to: (f64, f64)| Dd::from((to.1 - from.1).atan2(to.0 - from.0));
     let (a, b, p) = ((-0.061, -0.052), (0.137, 0.116), (-0.036, 0.096));
     let q0 = stated_phi();
@@ -170,7 +222,7 @@ fn references(g: &[f64]) -> Vec<Option<[Dd; COLS]>> {
         .map(|&x| {
             let (r, nq) = ref_row(x, q)?;
             q = nq;
-            Some(r)
+            Some((r, nq))
         })
         .collect()
 }
@@ -557,10 +609,16 @@ fn per_output(ms: &[Method], local: &[Vec<Vec<f64>>]) -> String {
 pub fn section(out_dir: &Path) -> String {
     let (m, m32) = (Stephenson::<f64>::default(), Stephenson::<f32>::default());
     let g = grid();
-    let refs = references(&g);
+    let with_angles = references(&g);
+    let floor: Vec<Option<[f64; COLS]>> = g
+        .iter()
+        .zip(&with_angles)
+        .map(|(&x, r)| floor_row(x, r.as_ref()?.1))
+        .collect();
+    let refs: Vec<Option<[Dd; COLS]>> = with_angles.iter().map(|r| r.map(|r| r.0)).collect();
     // The f32 methods' inputs and their reference.
     let g32: Vec<f64> = g.iter().map(|&x| x as f32 as f64).collect();
-    let refs32 = references(&g32);
+    let refs32: Vec<Option<[Dd; COLS]>> = references(&g32).iter().map(|r| r.map(|r| r.0)).collect();
     let (mut ms, alone) = methods(&m, &m32, &g);
     let mut scale = [0.0f64; COLS];
     for r in refs.iter().flatten() {
@@ -650,7 +708,32 @@ pub fn section(out_dir: &Path) -> String {
             med / near
         );
     }
-    md += &targets(&ms, &errs);
+    let floor_errs = column_errors(&floor, &refs, &scale).0;
+    let system = system_floor_worst(&g, &with_angles, &scale);
+    // The rates solved exactly from each generated method's own angles.
+    let inherited: Vec<Vec<Vec<f64>>> = ms[..2]
+        .iter()
+        .map(|m| {
+            let rows: Vec<Option<[f64; COLS]>> = g
+                .iter()
+                .zip(&m.rows)
+                .map(|(&x, r)| {
+                    floor_row(
+                        x,
+                        [
+                            r.as_ref()?[6],
+                            r.as_ref()?[7],
+                            r.as_ref()?[8],
+                            r.as_ref()?[9],
+                        ]
+                        .map(Dd::from),
+                    )
+                })
+                .collect();
+            column_errors(&rows, &refs, &scale).0
+        })
+        .collect();
+    md += &targets(&ms, &errs, &floor_errs, system, &inherited);
     let _ = writeln!(
         md,
         "\nScales above (the columns' largest |reference| values): A.x {:.3}, B.x {:.3}, P.x \
@@ -672,30 +755,99 @@ pub fn section(out_dir: &Path) -> String {
     md
 }
 
+/// The columns of the link angles' rates and accelerations.
+const ANGLE_RATES: [usize; 8] = [16, 17, 18, 19, 26, 27, 28, 29];
+
+/// The largest error over the inputs of [`system_floor`]'s columns,
+/// relative to each column's `scale`.
+fn system_floor_worst(
+    g: &[f64],
+    refs: &[Option<([Dd; COLS], [Dd; 4])>],
+    scale: &[f64; COLS],
+) -> f64 {
+    let at = |x: f64, r: &Option<([Dd; COLS], [Dd; 4])>| -> Option<f64> {
+        let (row, q) = r.as_ref()?;
+        let f = system_floor(x, *q, row)?;
+        Some(ANGLE_RATES.iter().zip(f).fold(0.0f64, |m, (&k, v)| {
+            m.max((Dd::from(v) - row[k]).to_f64().abs() / scale[k])
+        }))
+    };
+    g.iter()
+        .zip(refs)
+        .filter_map(|(&x, r)| at(x, r))
+        .fold(0.0, f64::max)
+}
+
 /// The issue-35 target lines (rows in the order of the table: `position()`,
-/// `position_near`, Newton SMatrix, ...; `errs`: each method's column errors).
-fn targets(ms: &[Method], errs: &[Vec<Vec<f64>>]) -> String {
+/// `position_near`, Newton SMatrix, ...; `errs`: each method's column
+/// errors; `floor`: the column errors of the reference's pose rounded to
+/// `f64`, [`floor_row`]).
+fn targets(
+    ms: &[Method],
+    errs: &[Vec<Vec<f64>>],
+    floor: &[Vec<f64>],
+    system: f64,
+    inherited: &[Vec<Vec<f64>>],
+) -> String {
     let med = |k: usize| timing::stats(&ms[k].ns).0;
     let (full, near, newton) = (med(0), med(1), med(2));
     let met = |b: bool| if b { "**met**" } else { "**not met**" };
     let worst = |e: &[Vec<f64>], ks: std::ops::Range<usize>| {
         ks.map(|k| max_med(&e[k]).0).fold(0.0f64, f64::max)
     };
-    let figures = |e: &[Vec<f64>]| [worst(e, 6..10), worst(e, 0..6), worst(e, 10..30)].map(sci);
-    let ([a, p, r], [an, pn, rn]) = (figures(&errs[1]), figures(&errs[2]));
-    format!(
+    // Per input, the largest error of the rates and accelerations.
+    let rate_worst_at = |e: &[Vec<f64>]| -> Vec<f64> {
+        (0..e[10].len())
+            .map(|i| (10..30).map(|k| e[k][i]).fold(0.0f64, f64::max))
+            .collect()
+    };
+    let mut md = format!(
         "\nTargets (issue 35, this run):\n\n\
          - `position()` with rates and accelerations {full:.1} ns = {:.2}x `position_near` \
          {near:.1} ns (target <= 5): {}\n\
          - `position_near` with rates and accelerations {near:.1} ns = {:.2}x the warm-started \
-         SMatrix Newton {newton:.1} ns (target <= 0.5): {}\n\
-         - accuracy of `position_near` over the swing: angles {a} rad, positions {p}, rates and \
-         accelerations {r} relative (the SMatrix Newton's: {an} rad, {pn}, {rn})\n",
+         SMatrix Newton {newton:.1} ns (target <= 0.5): {}\n",
         full / near,
         met(full / near <= 5.0),
         near / newton,
         met(near / newton <= 0.5),
-    )
+    );
+    let floor_rates = worst(floor, 10..30);
+    for (k, name) in [(0, "`position()`"), (1, "`position_near`")] {
+        let (ang, pos) = (worst(&errs[k], 6..10), worst(&errs[k], 0..6));
+        let rat = worst(&errs[k], 10..30);
+        let over = rate_worst_at(&errs[k])
+            .iter()
+            .filter(|&&x| x > 1e-13)
+            .count();
+        let _ = writeln!(
+            md,
+            "- accuracy of {name} over the swing, its ends included: angles {} rad (target 1e-14): \
+             {}; positions {} (target 1e-13): {}; rates and accelerations {} relative (target \
+             1e-13): {}, over 1e-13 at {over} of the {N} inputs; the rates and accelerations \
+             solved exactly from its own angles are off by {} (the SMatrix Newton's: {})",
+            sci(ang),
+            met(ang <= 1e-14),
+            sci(pos),
+            met(pos <= 1e-13),
+            sci(rat),
+            met(rat <= 1e-13),
+            sci(worst(&inherited[k], 10..30)),
+            sci(worst(&errs[2], 10..30)),
+        );
+    }
+    let _ = writeln!(
+        md,
+        "- what the rates and accelerations inherit, over the swing: {} from the reference's \
+         own angles rounded to `f64` (the rates solved exactly from them), {} from its velocity \
+         and acceleration systems with every entry rounded to `f64` once (the link angles' \
+         rates and accelerations solved exactly); so where the velocity system is nearly \
+         singular the error of the rates is the error of the angles the position solve \
+         returned, amplified by that system, not the rates' own rounding",
+        sci(floor_rates),
+        sci(system),
+    );
+    md
 }
 
 fn col_name(k: usize) -> String {
