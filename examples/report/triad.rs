@@ -134,8 +134,8 @@ fn ref_row(phi: f64, start: [Dd; 4]) -> Option<([Dd; COLS], [Dd; 4])> {
 fn columns(phi: f64, pose: &rt::Pose) -> Option<[Dd; COLS]> {
     let (t, vc, ac) = ref_triad(phi);
     let z = [Dd::ZERO; 2];
-    let (w, vj) = rt::rates(&t, &pose, [z, z, vc])?;
-    let (al, aj) = rt::accelerations(&t, &pose, &w, [z, z, ac])?;
+    let (w, vj) = rt::rates(&t, pose, [z, z, vc])?;
+    let (al, aj) = rt::accelerations(&t, pose, &w, [z, z, ac])?;
     let mut r = [Dd::ZERO; COLS];
     let pts = [pose.joints, vj, aj];
     let angs = [pose.q, w, al];
