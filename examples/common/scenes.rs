@@ -108,6 +108,27 @@ mechanism! {
     }
 }
 
+// The gear pair (docs/dsl.md, "Gear pairs"), measured in the report.
+mechanism! {
+    /// A geared five-bar (m): the crank `link2` about O2 = (0, 0) and the
+    /// gear `link5` about O5 = (0.3, 0) mesh at ratio 2 (external: `link5`
+    /// turns at 30 deg - 2 theta, its point C at 0.08 from O5); the RRR
+    /// `link3`, `link4` closes the loop at B, left of the directed line
+    /// A -> C. It assembles over the whole turn: |AC| stays within 0.12 to
+    /// 0.48, inside the 0.06 to 0.58 the dyad reaches.
+    #[self_test]
+    pub GearedFiveBar {
+        units { length = "m" }
+        dof 1;
+        let O2 = ground(0.0, 0.0);
+        let O5 = ground(0.3, 0.0);
+        let A = crank(O2, 0.1, theta) as link2;
+        let C = gear(O5, 0.08, link2, 2.0, 30 deg, ground) as link5;
+        let B = rrr(A, 0.32, C, 0.26, left) as (link3, link4);
+        outputs { B, link3, link4, link5, A, C }
+    }
+}
+
 // examples/sine_mechanism.rs
 mechanism! {
     /// Sine mechanism of seed 000, problem 4-23 (m, kg, N): crank AB = 0.1

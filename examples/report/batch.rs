@@ -146,6 +146,13 @@ fn five_bar_sample(g: &dyn Fn(&str) -> f64, q: &[f64]) -> Sample {
     }
 }
 
+fn geared_five_bar_sample(g: &dyn Fn(&str) -> f64, _q: &[f64]) -> Sample {
+    Sample {
+        cols: cols(g, &["B_x", "B_y", "link3", "link4", "link5"]),
+        points: vec![(0.0, 0.0), (0.3, 0.0), pt(g, "A"), pt(g, "C"), pt(g, "B")],
+    }
+}
+
 /// Serial and (feature `rayon`) parallel batch methods of definition `$ty`
 /// in precision `$t`: inputs `[$i]`, point outputs `[$p]`, scalar outputs
 /// `[$s]` (every output of the batch, in the definition's order: ground
@@ -299,6 +306,18 @@ pub fn for_scene(scene: &Scene) -> Vec<Method<'_>> {
                 [],
                 "pos_P_x",
                 five_bar_sample
+            );
+        }
+        "GearedFiveBar" => {
+            for_both!(
+                v,
+                scene,
+                GearedFiveBar,
+                [theta],
+                [B, A, C],
+                [link3, link4, link5],
+                "pos_link3",
+                geared_five_bar_sample
             );
         }
         _ => {}

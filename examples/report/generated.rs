@@ -204,6 +204,31 @@ pub fn five_bar<T: Real>(m: &FiveBar<T>, q: &[f64], w: &[f64], a: &[f64]) -> Opt
     })
 }
 
+/// `GearedFiveBar`: B, link3, link4 and the gear's link5.
+pub fn geared_five_bar<T: Real>(
+    m: &GearedFiveBar<T>,
+    q: &[f64],
+    w: &[f64],
+    a: &[f64],
+) -> Option<Sample> {
+    let i = |x: &[f64]| GearedFiveBarInput {
+        theta: l::<T>(x[0]),
+    };
+    let s3 = m.solve(&i(q), &i(w), &i(a)).ok()?;
+    let (ps, v, ac) = (s3.position, s3.velocity, s3.acceleration);
+    let mut cols = Vec::new();
+    cols.extend(pt(&ps.B));
+    cols.extend([s(ps.link3), s(ps.link4), s(ps.link5)]);
+    cols.extend(xy(&v.B));
+    cols.extend([s(v.link3), s(v.link4), s(v.link5)]);
+    cols.extend(xy(&ac.B));
+    cols.extend([s(ac.link3), s(ac.link4), s(ac.link5)]);
+    Some(Sample {
+        cols,
+        points: vec![(0.0, 0.0), (0.3, 0.0), p(&ps.A), p(&ps.C), p(&ps.B)],
+    })
+}
+
 /// The f64 generated code of the scene named `name` at one point (the
 /// definitions' own parameters); `None` for an unknown name or an error.
 pub fn f64_sample(name: &str, q: &[f64], w: &[f64], a: &[f64]) -> Option<Sample> {
@@ -213,6 +238,7 @@ pub fn f64_sample(name: &str, q: &[f64], w: &[f64], a: &[f64]) -> Option<Sample>
         "Shaper" => shaper(&Shaper::<f64>::default(), q, w, a),
         "SliderCrank" => slider_crank(&SliderCrank::<f64>::default(), q, w, a),
         "FiveBar" => five_bar(&FiveBar::<f64>::default(), q, w, a),
+        "GearedFiveBar" => geared_five_bar(&GearedFiveBar::<f64>::default(), q, w, a),
         _ => None,
     }
 }

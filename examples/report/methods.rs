@@ -468,6 +468,24 @@ pub fn for_scene<'a>(scene: &'a Scene, out_dir: &Path) -> Vec<Method<'a>> {
                     + s.acceleration.P.y
             );
         }
+        "GearedFiveBar" => {
+            gen_pair!(
+                v,
+                scene,
+                GearedFiveBar,
+                GearedFiveBarInput { theta },
+                generated::geared_five_bar,
+                ["generated f64", "generated f64"],
+                ["generated f32", "generated f32"],
+                |s| s.position.B.x
+                    + s.position.link4
+                    + s.position.link5
+                    + s.velocity.B.y
+                    + s.velocity.link3
+                    + s.acceleration.B.x
+                    + s.acceleration.link4
+            );
+        }
         _ => {}
     }
     v.extend(crate::batch::for_scene(scene));

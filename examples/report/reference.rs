@@ -97,7 +97,7 @@ fn point_items(p: &[V2], v: &[V2], a: &[V2], i: usize) -> [[Dd; 3]; 2] {
 
 pub const RPM_3000: f64 = 3000.0 * 2.0 * std::f64::consts::PI / 60.0;
 
-/// The five example scenes. Grid sizes: 3600 points each (0.1 deg steps over
+/// The six example scenes. Grid sizes: 3600 points each (0.1 deg steps over
 /// a full turn; 3600 steps over the six-bar's 40-55 deg; 60 x 60 over the
 /// five-bar's q1 in [60, 150) deg, q2 in [0, 90) deg).
 pub fn scenes() -> Vec<Scene> {
@@ -369,6 +369,74 @@ pub fn scenes() -> Vec<Scene> {
             columns_of: |p, v, a| {
                 let [px, py] = point_items(p, v, a, 4);
                 by_order(vec![px, py])
+            },
+        },
+        Scene {
+            name: "GearedFiveBar",
+            columns: cols(&[
+                ("B.x", Va),
+                ("B.y", Va),
+                ("link3", An),
+                ("link4", An),
+                ("link5", An),
+            ]),
+            grid: deg_grid(0.0, 360.0, 3600),
+            rates: vec![10.0],
+            accels: vec![-50.0],
+            // 0 O2, 1 O5, 2 A, 3 C, 4 B. The gear as its law (docs/dsl.md,
+            // "Gear pairs"): an external gear of ratio 2 meshing with the
+            // crank turns at `phase - 2 theta`.
+            linkage: Linkage {
+                points: vec![
+                    fixed(0.0, 0.0),
+                    fixed(0.3, 0.0),
+                    Point::Unknown,
+                    Point::Unknown,
+                    Point::Unknown,
+                ],
+                constraints: vec![
+                    Constraint::Crank {
+                        p: 2,
+                        o: 0,
+                        r: 0.1,
+                        input: 0,
+                    },
+                    Constraint::Geared {
+                        p: 3,
+                        o: 1,
+                        r: 0.08,
+                        input: 0,
+                        phase: 30f64.to_radians(),
+                        factor: -2.0,
+                    },
+                    Constraint::Distance {
+                        p: 4,
+                        q: 2,
+                        len: 0.32,
+                    },
+                    Constraint::Distance {
+                        p: 4,
+                        q: 3,
+                        len: 0.26,
+                    },
+                ],
+                sides: vec![Side::Left {
+                    p: 4,
+                    a: 2,
+                    b: 3,
+                    sign: 1.0,
+                }],
+                scale: 0.32,
+            },
+            columns_of: |p, v, a| {
+                let [bx, by] = point_items(p, v, a, 4);
+                by_order(vec![
+                    bx,
+                    by,
+                    ang(p, v, a, 2, 4),
+                    ang(p, v, a, 3, 4),
+                    ang(p, v, a, 1, 3),
+                ])
             },
         },
     ]

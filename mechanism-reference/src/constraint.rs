@@ -9,6 +9,7 @@
 //! | constraint | equations `phi` | rows |
 //! |---|---|---|
 //! | [`Constraint::Crank`] | `P - O - r (cos q_k, sin q_k)` | 2 |
+//! | [`Constraint::Geared`] | `P - O - r (cos a, sin a)`, `a = phase + factor q_k` | 2 |
 //! | [`Constraint::Distance`] | `\|P - Q\|^2 - L^2` | 1 |
 //! | [`Constraint::OnFixedLine`] | `cross(u, P - origin)` | 1 |
 //! | [`Constraint::OnLine`] | `cross(Q2 - Q1, P - Q1)` | 1 |
@@ -100,6 +101,24 @@ pub enum Constraint {
         /// Index of the input angle (rad).
         input: usize,
     },
+    /// `P = O + r (cos a, sin a)` with `a = phase + factor q`, `q` the
+    /// driver input number `input`: a link turned in proportion to an input
+    /// (a gear meshing with a crank on the ground: `factor` minus the
+    /// ratio of the pitch radii for external gears).
+    Geared {
+        /// The point on the turned link.
+        p: PointId,
+        /// Its pivot.
+        o: PointId,
+        /// Length (L).
+        r: f64,
+        /// Index of the input angle (rad).
+        input: usize,
+        /// The link's angle at input 0 (rad).
+        phase: f64,
+        /// Its angle per unit of the input (dimensionless).
+        factor: f64,
+    },
     /// `|P - Q| = len`.
     Distance {
         /// One end.
@@ -147,7 +166,7 @@ impl Constraint {
     /// Number of scalar equations.
     pub fn rows(&self) -> usize {
         match self {
-            Constraint::Crank { .. } | Constraint::Affine { .. } => 2,
+            Constraint::Crank { .. } | Constraint::Geared { .. } | Constraint::Affine { .. } => 2,
             _ => 1,
         }
     }
@@ -156,6 +175,7 @@ impl Constraint {
     pub fn degree(&self) -> i32 {
         match self {
             Constraint::Crank { .. }
+            | Constraint::Geared { .. }
             | Constraint::Affine { .. }
             | Constraint::OnFixedLine { .. } => 1,
             _ => 2,

@@ -15,6 +15,57 @@
 use crate::constraint::{Constraint, Linkage, Point, V2};
 use crate::Dd;
 
+/// A point turned about its pivot by an input: `Crank` (phase 0, factor
+/// 1) and `Geared`.
+#[derive(Clone, Copy)]
+struct Turn {
+    r: f64,
+    input: usize,
+    phase: f64,
+    factor: f64,
+}
+
+impl Turn {
+    /// The turn of `c`, when it is a crank or a geared link.
+    fn of(c: &Constraint) -> Option<Turn> {
+        match *c {
+            Constraint::Crank { r, input, .. } => Some(Turn {
+                r,
+                input,
+                phase: 0.0,
+                factor: 1.0,
+            }),
+            Constraint::Geared {
+                r,
+                input,
+                phase,
+                factor,
+                ..
+            } => Some(Turn {
+                r,
+                input,
+                phase,
+                factor,
+            }),
+            _ => None,
+        }
+    }
+
+    /// The length, and the angle's value, rate and acceleration (rad,
+    /// rad/s, rad/s^2) from one input's (`rates` and `accels` may be empty
+    /// when not needed: their terms are then zero).
+    fn at(self, inputs: &[Dd], rates: &[Dd], accels: &[Dd]) -> [Dd; 4] {
+        let of = |v: &[Dd]| v.get(self.input).copied().unwrap_or(Dd::ZERO);
+        let f = Dd::from_f64(self.factor);
+        [
+            Dd::from_f64(self.r),
+            Dd::from_f64(self.phase) + f * of(inputs),
+            f * of(rates),
+            f * of(accels),
+        ]
+    }
+}
+
 /// Positions of every point (fixed ones included) from the unknown vector.
 pub fn points(linkage: &Linkage, q: &[Dd]) -> Vec<V2> {
     linkage
@@ -36,19 +87,21 @@ pub fn points(linkage: &Linkage, q: &[Dd]) -> Vec<V2> {
 pub fn residual(linkage: &Linkage, p: &[V2], inputs: &[Dd]) -> Vec<Dd> {
     let mut f = Vec::with_capacity(linkage.equations());
     for c in &linkage.constraints {
+        if let (
+            Some(turn),
+            Constraint::Crank { p: tip, o, .. } | Constraint::Geared { p: tip, o, .. },
+        ) = (Turn::of(c), *c)
+        {
+            let [r, angle, _, _] = turn.at(inputs, &[], &[]);
+            let (s, co) = angle.sin_cos();
+            let d = p[tip].minus(p[o]);
+            f.push(d.x - r * co);
+            f.push(d.y - r * s);
+            continue;
+        }
         match *c {
-            Constraint::Crank {
-                p: tip,
-                o,
-                r,
-                input,
-            } => {
-                let (s, co) = inputs[input].sin_cos();
-                let r = Dd::from_f64(r);
-                let d = p[tip].minus(p[o]);
-                f.push(d.x - r * co);
-                f.push(d.y - r * s);
-            }
+            // Pushed above, from their `Turn`.
+            Constraint::Crank { .. } | Constraint::Geared { .. } => {}
             Constraint::Distance { p: a, q: b, len } => {
                 let d = p[a].minus(p[b]);
                 f.push(d.dot(d) - Dd::from_f64(len).sqr());
@@ -95,7 +148,7 @@ pub fn jacobian(linkage: &Linkage, p: &[V2]) -> Vec<Vec<Dd>> {
     let mut rows = Vec::with_capacity(linkage.equations());
     for c in &linkage.constraints {
         match *c {
-            Constraint::Crank { p: tip, o, .. } => {
+            Constraint::Crank { p: tip, o, .. } | Constraint::Geared { p: tip, o, .. } => {
                 let mut rx = vec![zero; n];
                 put(&mut rx, &cols, tip, V2 { x: one, y: zero });
                 put(&mut rx, &cols, o, V2 { x: -one, y: zero });
@@ -177,14 +230,18 @@ pub fn jacobian(linkage: &Linkage, p: &[V2]) -> Vec<Vec<Dd>> {
 pub fn velocity_rhs(linkage: &Linkage, inputs: &[Dd], rates: &[Dd]) -> Vec<Dd> {
     let mut b = Vec::with_capacity(linkage.equations());
     for c in &linkage.constraints {
+        if let Some(turn) = Turn::of(c) {
+            // phi = P - O - r (cos a, sin a): phi_a = r (sin a, -cos a).
+            let [r, angle, rate, _] = turn.at(inputs, rates, &[]);
+            let (s, co) = angle.sin_cos();
+            let k = r * rate;
+            b.push(-(k * s));
+            b.push(k * co);
+            continue;
+        }
         match *c {
-            Constraint::Crank { r, input, .. } => {
-                // phi = P - O - r (cos, sin): phi_theta = r (sin, -cos).
-                let (s, co) = inputs[input].sin_cos();
-                let k = Dd::from_f64(r) * rates[input];
-                b.push(-(k * s));
-                b.push(k * co);
-            }
+            // Pushed above, from their `Turn`.
+            Constraint::Crank { .. } | Constraint::Geared { .. } => {}
             Constraint::Affine { .. } => {
                 b.push(Dd::ZERO);
                 b.push(Dd::ZERO);
@@ -199,7 +256,9 @@ pub fn velocity_rhs(linkage: &Linkage, inputs: &[Dd], rates: &[Dd]) -> Vec<Dd> {
 /// at positions `p`, point velocities `v` (every point; zero for fixed ones),
 /// input rates and input accelerations.
 ///
-/// Per constraint: crank `r thetaddot (-sin, cos) - r thetadot^2 (cos, sin)`;
+/// Per constraint: crank (and geared, with its angle `a = phase + factor
+/// theta`, `adot = factor thetadot`, `addot = factor thetaddot`) `r
+/// thetaddot (-sin, cos) - r thetadot^2 (cos, sin)`;
 /// distance `-2 |Pdot - Qdot|^2`; moving line `-2 cross(Q2dot - Q1dot, Pdot -
 /// Q1dot)`; fixed line and affine: zero (linear in the coordinates).
 pub fn acceleration_rhs(
@@ -212,15 +271,17 @@ pub fn acceleration_rhs(
     let two = Dd::from_f64(2.0);
     let mut b = Vec::with_capacity(linkage.equations());
     for c in &linkage.constraints {
+        if let Some(turn) = Turn::of(c) {
+            let [r, angle, w, al] = turn.at(inputs, rates, accels);
+            let (s, co) = angle.sin_cos();
+            let w2 = w.sqr();
+            b.push(-(r * al * s) - r * w2 * co);
+            b.push(r * al * co - r * w2 * s);
+            continue;
+        }
         match *c {
-            Constraint::Crank { r, input, .. } => {
-                let (s, co) = inputs[input].sin_cos();
-                let r = Dd::from_f64(r);
-                let w2 = rates[input].sqr();
-                let al = accels[input];
-                b.push(-(r * al * s) - r * w2 * co);
-                b.push(r * al * co - r * w2 * s);
-            }
+            // Pushed above, from their `Turn`.
+            Constraint::Crank { .. } | Constraint::Geared { .. } => {}
             Constraint::Distance { p: a, q: bb, .. } => {
                 let dv = v[a].minus(v[bb]);
                 b.push(-(two * dv.dot(dv)));
@@ -253,4 +314,86 @@ pub fn relative_residual(linkage: &Linkage, f: &[Dd]) -> f64 {
         }
     }
     worst
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::constraint::{Constraint, Linkage, Point, V2};
+    use crate::loop_closure::{acceleration, position, velocity};
+    use crate::Dd;
+
+    /// One point turned about the origin by `c`.
+    fn turned(c: Constraint) -> Linkage {
+        Linkage {
+            points: vec![Point::Fixed(V2::new(0.0, 0.0)), Point::Unknown],
+            constraints: vec![c],
+            sides: vec![],
+            scale: 1.0,
+        }
+    }
+
+    /// A geared point turns at `phase + factor q`: its pose, velocity and
+    /// acceleration are the circle's at that angle (`r e`, `r a' perp(e)`,
+    /// `r a'' perp(e) - r a'^2 e`, written out here), and a geared point of
+    /// phase 0 and factor 1 is the crank's, bit for bit.
+    #[test]
+    fn a_geared_point_turns_in_proportion_to_its_input() {
+        let (q, w, al) = (0.7, 3.0, -20.0);
+        let (r, phase, factor) = (0.08, 30f64.to_radians(), -2.0);
+        let geared = turned(Constraint::Geared {
+            p: 1,
+            o: 0,
+            r,
+            input: 0,
+            phase,
+            factor,
+        });
+        let d = Dd::from_f64;
+        let (qs, ws, als) = ([d(q)], [d(w)], [d(al)]);
+        let pose = position(&geared, &qs, &[(0.0, 0.0), (0.05, -0.05)]).expect("solves");
+        let v = velocity(&geared, &pose, &qs, &ws).expect("rates");
+        let a = acceleration(&geared, &pose, &v, &qs, &ws, &als).expect("accelerations");
+        let angle = phase + factor * q;
+        let (s, c) = angle.sin_cos();
+        let (aw, aal) = (factor * w, factor * al);
+        let want = [
+            (pose.points[1], r * c, r * s),
+            (v[1], -r * aw * s, r * aw * c),
+            (a[1], -r * aal * s - r * aw * aw * c, r * aal * c - r * aw * aw * s),
+        ];
+        for (got, x, y) in want {
+            // f64 arithmetic on the expected side: a few ulp of the largest term.
+            let tol = 1e-15 * (1.0 + (r * aw * aw).abs() + (r * aal).abs());
+            assert!((got.x.to_f64() - x).abs() <= tol, "{} vs {x}", got.x.to_f64());
+            assert!((got.y.to_f64() - y).abs() <= tol, "{} vs {y}", got.y.to_f64());
+        }
+        let crank = turned(Constraint::Crank {
+            p: 1,
+            o: 0,
+            r,
+            input: 0,
+        });
+        let as_crank = turned(Constraint::Geared {
+            p: 1,
+            o: 0,
+            r,
+            input: 0,
+            phase: 0.0,
+            factor: 1.0,
+        });
+        let pts = [V2::new(0.0, 0.0), V2::new(0.05, 0.06)];
+        let vs = [V2::new(0.0, 0.0), V2::new(0.3, -0.2)];
+        assert_eq!(
+            super::residual(&crank, &pts, &qs),
+            super::residual(&as_crank, &pts, &qs)
+        );
+        assert_eq!(
+            super::velocity_rhs(&crank, &qs, &ws),
+            super::velocity_rhs(&as_crank, &qs, &ws)
+        );
+        assert_eq!(
+            super::acceleration_rhs(&crank, &vs, &qs, &ws, &als),
+            super::acceleration_rhs(&as_crank, &vs, &qs, &ws, &als)
+        );
+    }
 }

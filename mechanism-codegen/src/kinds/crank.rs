@@ -279,7 +279,17 @@ impl<'a> GroupKind<'a> for Crank<'a> {
         if self.carrier.is_some() {
             return None;
         }
-        lane_steps(lane, s, self.pivot, self.radius, self.input)
+        let (th, rate, accel) = (
+            Family::In.of(self.input),
+            Family::Rate.of(self.input),
+            Family::Accel.of(self.input),
+        );
+        let turn = LaneTurn {
+            angle: quote!(#th[k]),
+            rate: quote!(#rate[k]),
+            accel: quote!(#accel[k]),
+        };
+        lane_steps(lane, s, self.pivot, self.radius, &turn)
     }
 
     fn slide_field(&self, _slot: usize) -> TokenStream {
@@ -307,19 +317,28 @@ impl<'a> GroupKind<'a> for Crank<'a> {
     }
 }
 
-/// A crank about `pivot` of length `radius` (length unit) at the input
-/// angle `in_INPUT[k]` (radians, counter-clockwise from +x):
-/// `lane::crank`, then the tip's velocity and acceleration with
-/// `lane::rel_vel` / `lane::rel_acc` from the input's rates (rad/s,
-/// rad/s^2), which become the link's `w_LINK` / `al_LINK`. The link's angle
-/// is the input wrapped (`lane::wrap_angle`). `None` when the pivot is not
-/// known yet.
-fn lane_steps(
+/// The angle a turned link's lane step reads, as expressions of element
+/// `k` of the batch: the angle (rad, counter-clockwise from +x), its rate
+/// (rad/s) and acceleration (rad/s^2). A crank's are its input's slices; a
+/// gear's are linear in its cranks' inputs.
+pub(super) struct LaneTurn {
+    pub angle: TokenStream,
+    pub rate: TokenStream,
+    pub accel: TokenStream,
+}
+
+/// A link turned about `pivot` with its point at `radius` (length unit) at
+/// the angle `turn.angle`: `lane::crank`, then the point's velocity and
+/// acceleration with `lane::rel_vel` / `lane::rel_acc` from `turn`'s rate
+/// and acceleration, which become the link's `w_LINK` / `al_LINK`. The
+/// link's angle is `turn.angle` wrapped (`lane::wrap_angle`). `None` when
+/// the pivot is not known yet.
+pub(super) fn lane_steps(
     lane: &Lane,
     s: &mut Step,
     pivot: &Ident,
     radius: &Value,
-    input: &Ident,
+    turn: &LaneTurn,
 ) -> Option<()> {
     let p = lane.point(pivot)?;
     let PointLocals {
@@ -333,29 +352,29 @@ fn lane_steps(
     let g = s.g.clone();
     let (ppx, ppy) = (&p.px, &p.py);
     let r = radius.emit();
-    let th = Family::In.of(input);
+    let th = &turn.angle;
     let rates = s.rates(0)?;
     let (omega, alpha) = (&rates.omega, &rates.alpha);
     s.emit(quote! {
-        let #g = ::mechanism::__private::lane::crank(#ppx, #ppy, #r, #th[k]);
+        let #g = ::mechanism::__private::lane::crank(#ppx, #ppy, #r, #th);
         ok &= #g.ok;
         let #px = #g.x; let #py = #g.y;
     });
     if lane.vel {
-        let rate = Family::Rate.of(input);
+        let rate = &turn.rate;
         let (pvx, pvy) = (&p.vx, &p.vy);
         s.emit(quote! {
-            let #omega = #rate[k];
+            let #omega = #rate;
             let (tx, ty) = ::mechanism::__private::lane::rel_vel(#g.rx, #g.ry, #omega);
             let #vx = #pvx + tx; let #vy = #pvy + ty;
         });
         s.check([quote!(#omega)]);
     }
     if lane.acc {
-        let accel = Family::Accel.of(input);
+        let accel = &turn.accel;
         let (pax, pay) = (&p.ax, &p.ay);
         s.emit(quote! {
-            let #alpha = #accel[k];
+            let #alpha = #accel;
             let (tx, ty) = ::mechanism::__private::lane::rel_acc(#g.rx, #g.ry, #omega, #alpha);
             let #ax = #pax + tx; let #ay = #pay + ty;
         });
@@ -368,7 +387,7 @@ fn lane_steps(
                 x: quote!(#g.ux),
                 y: quote!(#g.uy),
             },
-            angle: quote!(::mechanism::__private::lane::wrap_angle(#th[k])),
+            angle: quote!(::mechanism::__private::lane::wrap_angle(#th)),
             omega: quote!(#omega),
             alpha: quote!(#alpha),
         },

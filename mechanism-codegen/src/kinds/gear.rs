@@ -25,6 +25,7 @@
 use super::closure::{axis_between, f, Residuals};
 use super::forces::{body_name, revolute, rx, ForceCx, Held, Reaction};
 use super::group::{links_text, GroupKind, LinkShape, Placed, Role, Solve, Turn};
+use super::crank::{lane_steps, LaneTurn};
 use super::lane::{Lane, Step};
 use super::rates::{vec_ty, RateCx};
 use super::reads::Reads;
@@ -88,9 +89,10 @@ impl<'a> GearKind<'a> {
     }
 
     /// Its angle (rad, from +x) or a rate of it (`phase` false: the rates,
-    /// whose phase term is 0), from the inputs' values or rates in the
-    /// struct `src` (`input`, `rates`, `accels`).
-    fn angle_code(&self, src: TokenStream, phase: bool) -> TokenStream {
+    /// whose phase term is 0), from the expressions `input` gives for its
+    /// cranks' inputs (their values, rates or accelerations: a field of the
+    /// input structs, or an element of a batch's slices).
+    fn angle_code(&self, input: impl Fn(&Ident) -> TokenStream, phase: bool) -> TokenStream {
         let t = self.terms();
         let ratio = self.g.ratio.emit();
         let mut sum = if phase {
@@ -100,13 +102,32 @@ impl<'a> GearKind<'a> {
             quote!(<T as ::mechanism::Real>::lit(0.0))
         };
         if let Some(q) = t.mesh {
-            sum = quote!(#sum - #ratio * #src.#q);
+            let q = input(q);
+            sum = quote!(#sum - #ratio * #q);
         }
         if let Some(q) = t.carrier {
-            let k = self.one_plus_ratio();
-            sum = quote!(#sum + #k * #src.#q);
+            let (q, k) = (input(q), self.one_plus_ratio());
+            sum = quote!(#sum + #k * #q);
         }
         sum
+    }
+
+    /// [`Self::angle_code`] from the fields of the input struct `src`
+    /// (`input`, `rates`, `accels`).
+    fn angle_of(&self, src: TokenStream, phase: bool) -> TokenStream {
+        self.angle_code(|q| quote!(#src.#q), phase)
+    }
+
+    /// [`Self::angle_code`] in a batch's lane step: element `k` of the
+    /// inputs' slices of `family` (values, rates or accelerations).
+    fn lane_angle(&self, family: Family, phase: bool) -> TokenStream {
+        self.angle_code(
+            |q| {
+                let q = family.of(q);
+                quote!(#q[k])
+            },
+            phase,
+        )
     }
 
     /// The center of the meshing gear: its crank's pivot, or for a fixed
@@ -152,7 +173,7 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
 
     fn position(&self, _cos_sin: bool) -> Solve {
         let (r, pivot) = (self.g.radius.emit(), local(&self.g.pivot));
-        let theta = self.angle_code(quote!(input), true);
+        let theta = self.angle_of(quote!(input), true);
         Solve::Group {
             call: quote!(::mechanism::driver::crank::position(&#pivot, #r, #theta)),
             joint: Some("tip"),
@@ -169,7 +190,7 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
 
     /// Its angle from the inputs, reduced to (-pi, pi] (no atan2).
     fn link_angle(&self, _cos_sin: bool) -> Option<TokenStream> {
-        let theta = self.angle_code(quote!(input), true);
+        let theta = self.angle_of(quote!(input), true);
         Some(quote!(::mechanism::geometry::wrap_angle(#theta)))
     }
 
@@ -178,10 +199,10 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
         let (g, pv, t) = (grp(stmt), cx.motion(stmt), tag(stmt));
         let w = cx.own(stmt, 0);
         let m = cx.point_arg(&self.g.pivot);
-        let omega = self.angle_code(quote!(rates), false);
+        let omega = self.angle_of(quote!(rates), false);
         let g = cx.reads().pos(&g);
         let code = if cx.accel() {
-            let alpha = self.angle_code(quote!(accels), false);
+            let alpha = self.angle_of(quote!(accels), false);
             quote! {
                 let #w = #alpha;
                 let #pv = ::mechanism::driver::crank::acceleration(&#g, #m, #omega, #w) #t;
@@ -214,9 +235,15 @@ impl<'a> GroupKind<'a> for GearKind<'a> {
         vec![&self.g.radius]
     }
 
-    /// No batch kernel: the batch takes the scalar path.
-    fn lane(&self, _lane: &mut Lane, _s: &mut Step<'_>) -> Option<()> {
-        None
+    /// The crank's lane step at the gear's angle, its rate and
+    /// acceleration, each linear in its cranks' inputs at element `k`.
+    fn lane(&self, lane: &mut Lane, s: &mut Step<'_>) -> Option<()> {
+        let turn = LaneTurn {
+            angle: self.lane_angle(Family::In, true),
+            rate: self.lane_angle(Family::Rate, false),
+            accel: self.lane_angle(Family::Accel, false),
+        };
+        lane_steps(lane, s, &self.g.pivot, &self.g.radius, &turn)
     }
 
     fn primitive(&self) -> &'static str {
