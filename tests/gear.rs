@@ -381,7 +381,9 @@ fn the_batch_turns_a_gear_as_the_scalar_code_does() {
     // few dozen operations, the batch's sin and cos within 1.5 ulp of the
     // scalar's.
     let n = 72;
-    let theta: Vec<f64> = (0..n).map(|k| 0.1 + f64::to_radians(5.0 * k as f64)).collect();
+    let theta: Vec<f64> = (0..n)
+        .map(|k| 0.1 + f64::to_radians(5.0 * k as f64))
+        .collect();
     let (w, al) = (3.0, -20.0);
     let five = GearedFiveBar::<f64>::default();
     let mut b = GearedFiveBar::<f64>::batch(n);
@@ -424,7 +426,9 @@ fn the_batch_turns_a_gear_as_the_scalar_code_does() {
     assert_eq!(arm.solve_columns(&mut b), Ok(0));
     for (k, &q) in theta.iter().enumerate() {
         let i = |x| PlanetaryArmInput { theta: x };
-        let s = arm.solve(&i(q), &i(w), &i(al)).expect("the arm always turns");
+        let s = arm
+            .solve(&i(q), &i(w), &i(al))
+            .expect("the arm always turns");
         let (p, v, a) = (&s.position, &s.velocity, &s.acceleration);
         for (got, want, what) in [
             (b.pos_P_x[k], p.P.x, "pos_P_x"),

@@ -359,13 +359,25 @@ mod tests {
         let want = [
             (pose.points[1], r * c, r * s),
             (v[1], -r * aw * s, r * aw * c),
-            (a[1], -r * aal * s - r * aw * aw * c, r * aal * c - r * aw * aw * s),
+            (
+                a[1],
+                -r * aal * s - r * aw * aw * c,
+                r * aal * c - r * aw * aw * s,
+            ),
         ];
         for (got, x, y) in want {
             // f64 arithmetic on the expected side: a few ulp of the largest term.
             let tol = 1e-15 * (1.0 + (r * aw * aw).abs() + (r * aal).abs());
-            assert!((got.x.to_f64() - x).abs() <= tol, "{} vs {x}", got.x.to_f64());
-            assert!((got.y.to_f64() - y).abs() <= tol, "{} vs {y}", got.y.to_f64());
+            assert!(
+                (got.x.to_f64() - x).abs() <= tol,
+                "{} vs {x}",
+                got.x.to_f64()
+            );
+            assert!(
+                (got.y.to_f64() - y).abs() <= tol,
+                "{} vs {y}",
+                got.y.to_f64()
+            );
         }
         let crank = turned(Constraint::Crank {
             p: 1,

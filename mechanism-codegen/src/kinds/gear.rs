@@ -23,9 +23,9 @@
 //! carrier.
 
 use super::closure::{axis_between, f, Residuals};
+use super::crank::{lane_steps, LaneTurn};
 use super::forces::{body_name, revolute, rx, ForceCx, Held, Reaction};
 use super::group::{links_text, GroupKind, LinkShape, Placed, Role, Solve, Turn};
-use super::crank::{lane_steps, LaneTurn};
 use super::lane::{Lane, Step};
 use super::rates::{vec_ty, RateCx};
 use super::reads::Reads;
