@@ -108,7 +108,7 @@ mechanism! {
     }
 }
 
-// The gear pair (docs/dsl.md, "Gear pairs"), measured in the report.
+// examples/geared_five_bar.rs
 mechanism! {
     /// A geared five-bar (m): the crank `link2` about O2 = (0, 0) and the
     /// gear `link5` about O5 = (0.3, 0) mesh at ratio 2 (external: `link5`
@@ -125,7 +125,7 @@ mechanism! {
         let A = crank(O2, 0.1, theta) as link2;
         let C = gear(O5, 0.08, link2, 2.0, 30 deg, ground) as link5;
         let B = rrr(A, 0.32, C, 0.26, left) as (link3, link4);
-        outputs { B, link3, link4, link5, A, C }
+        outputs { B, link3, link4, link5, A, C, O2, O5 }
     }
 }
 

@@ -23,7 +23,7 @@ struct Expect {
     frames: usize,
 }
 
-const SCENES: [Expect; 6] = [
+const SCENES: [Expect; 7] = [
     // O2, O4 ground; A, B moving; link3 a plate A-B-P.
     Expect {
         name: "fourbar",
@@ -76,6 +76,16 @@ const SCENES: [Expect; 6] = [
         moving_joints: 2,
         ground_joints: 1,
         sliders: 2,
+        frames: 90,
+    },
+    // O2, O5 ground; A, C, B moving; B and the gear's angle at three levels.
+    Expect {
+        name: "geared_five_bar",
+        make: crate::example_geared_five_bar::pictures,
+        panels: 6,
+        moving_joints: 3,
+        ground_joints: 2,
+        sliders: 0,
         frames: 90,
     },
     // O1, O2 ground; A, C, P moving; P at three levels.

@@ -9,12 +9,13 @@
 use std::path::Path;
 
 /// The examples whose definitions are gathered, in the file's order.
-const EXAMPLES: [&str; 8] = [
+const EXAMPLES: [&str; 9] = [
     "fourbar",
     "sixbar",
     "shaper",
     "slider_crank",
     "five_bar",
+    "geared_five_bar",
     "sine_mechanism",
     "shaper_forces",
     "five_bar_ik",
