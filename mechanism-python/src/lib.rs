@@ -12,6 +12,7 @@ mod batch;
 mod errors;
 mod mechanism;
 mod shared;
+mod synthesis;
 
 use pyo3::prelude::*;
 
@@ -22,6 +23,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<mechanism::Mechanism>()?;
     m.add_class::<mechanism::Input>()?;
     m.add_class::<errors::Diagnostic>()?;
+    m.add_function(wrap_pyfunction!(synthesis::synthesize_path, m)?)?;
     m.add("MechanismError", py.get_type::<errors::MechanismError>())?;
     m.add("PoseError", py.get_type::<errors::PoseError>())?;
     Ok(())

@@ -97,6 +97,35 @@ impl Design {
     pub fn angles(&self) -> &[f64] {
         &self.0[9..]
     }
+
+    /// The text of [`FourBarPath`] with this design's parameters and the
+    /// circuit `mode` (`left` for [`Mode::Plus`]), for what reads a
+    /// definition at run time (`mechanism table`, the Python package): the
+    /// same statements as the macro's input above, each number written so
+    /// that it reads back to the same `f64` (Rust's shortest round-trip
+    /// form). Its input `phi` is the crank's absolute angle, `theta0` plus
+    /// the angle from the ground link.
+    pub fn definition(&self, mode: Mode) -> String {
+        let d = &self.0;
+        let circuit = match mode {
+            Mode::Plus => "left",
+            Mode::Minus => "right",
+        };
+        format!(
+            "pub FourBarPath {{\n    \
+             params {{\n        \
+             r1 = {:?}, r2 = {:?}, r3 = {:?}, r4 = {:?}, rcx = {:?}, rcy = {:?},\n        \
+             theta0 = {:?}, x0 = {:?}, y0 = {:?}, circuit = {circuit}\n    \
+             }}\n    \
+             let O2 = ground(x0, y0);\n    \
+             let O4 = ground(x0 + r1 * cos(theta0), y0 + r1 * sin(theta0));\n    \
+             let A = crank(O2, r2, phi) as crank;\n    \
+             let B = rrr(A, r3, O4, r4, circuit) as (coupler, rocker);\n    \
+             let P = point(coupler, from A, (rcx, rcy));\n\
+             }}\n",
+            d[0], d[1], d[2], d[3], d[4], d[5], d[6], d[7], d[8]
+        )
+    }
 }
 
 /// When the crank reaches the targets.

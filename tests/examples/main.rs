@@ -38,11 +38,11 @@ mod scenes;
 #[path = "../../examples/five_bar.rs"]
 mod example_five_bar;
 #[allow(dead_code, unused_imports, unused_macros)]
-#[path = "../../examples/geared_five_bar.rs"]
-mod example_geared_five_bar;
-#[allow(dead_code, unused_imports, unused_macros)]
 #[path = "../../examples/fourbar.rs"]
 mod example_fourbar;
+#[allow(dead_code, unused_imports, unused_macros)]
+#[path = "../../examples/geared_five_bar.rs"]
+mod example_geared_five_bar;
 #[allow(dead_code, unused_imports, unused_macros)]
 #[path = "../../examples/shaper.rs"]
 mod example_shaper;

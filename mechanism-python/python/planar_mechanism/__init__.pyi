@@ -9,7 +9,14 @@ from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, final
 
 import numpy.typing as npt
 
-__all__ = ["Diagnostic", "Input", "Mechanism", "MechanismError", "PoseError"]
+__all__ = [
+    "Diagnostic",
+    "Input",
+    "Mechanism",
+    "MechanismError",
+    "PoseError",
+    "synthesize_path",
+]
 
 @final
 class Diagnostic:
@@ -242,3 +249,40 @@ class Mechanism:
         for a later ``fork``); the GIL is released meanwhile. The numbers
         are the same whatever the count."""
     def __repr__(self) -> str: ...
+
+def synthesize_path(
+    targets: Sequence[Tuple[float, float]],
+    *,
+    angles: Optional[Sequence[float]] = None,
+    frame: Optional[Tuple[float, float, float]] = None,
+    links: Tuple[float, float] = (0.0, 60.0),
+    coords: Tuple[float, float] = (-60.0, 60.0),
+    starts: int = 300,
+    hops: int = 300,
+    seed: int = 0,
+) -> Dict[str, Any]:
+    """A four-bar whose coupler point passes through ``targets`` (least
+    squares: the sum of squared distances from the coupler point at each
+    target's crank angle to the target).
+
+    The four-bar: ground pivot ``O2 = (x0, y0)``, the other ground pivot at
+    ``r1`` from it at angle ``theta0``, crank ``r2`` at angle ``th2`` from
+    the ground link, coupler ``r3``, rocker ``r4``, the coupler point at
+    ``(rcx, rcy)`` in the frame of ``A -> B``; always a Grashof crank-rocker
+    with the crank shortest (it turns fully), in the assembly mode that fits
+    better.
+
+    ``targets``: the points (at least 3). ``angles``: the crank angle from
+    the ground link at each target (rad, in ``[0, 2 pi]``), or ``None`` for
+    free timing. ``frame``: ``(theta0, x0, y0)`` fixed, or ``None`` for
+    free. ``links``: bounds of ``r1 .. r4``; ``coords``: bounds of ``rcx,
+    rcy, x0, y0``. ``starts`` (local solves per assembly mode), ``hops``
+    (basin hops) and ``seed`` size the search; the result depends only on
+    the arguments. ``ValueError`` for bad arguments or when no design
+    assembles at every target.
+
+    Returns ``objective``, ``mode`` (``"left"`` or ``"right"``), ``design``
+    (``r1 .. y0`` by name), ``angles`` (crank angles from the ground link,
+    rad), ``definition`` (the four-bar's text, input ``phi`` = ``theta0 +
+    th2``: give it to ``Mechanism``), ``evaluations`` and ``jacobians``.
+    Releases the GIL while it searches."""
