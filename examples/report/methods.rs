@@ -253,150 +253,156 @@ fn slider_crank_closed_forms(scene: &Scene) -> Vec<Method<'_>> {
     vec![m64, m32]
 }
 
+/// The four-bar's methods: the generated code with and without angle
+/// outputs, the hand-written closed form, the Newton baselines at every
+/// tolerance and numpy (when available).
+fn fourbar_methods<'a>(v: &mut Vec<Method<'a>>, scene: &'a Scene, out_dir: &Path) {
+    use Precision::*;
+    gen_pair!(
+        v,
+        scene,
+        FourBar,
+        FourBarInput { theta2 },
+        generated::fourbar,
+        ["generated f64", "generated f64"],
+        ["generated f32", "generated f32"],
+        |s| s.position.B.x
+            + s.position.B.y
+            + s.position.link3
+            + s.position.link4
+            + s.velocity.B.x
+            + s.velocity.B.y
+            + s.velocity.link3
+            + s.velocity.link4
+            + s.acceleration.B.x
+            + s.acceleration.B.y
+            + s.acceleration.link3
+            + s.acceleration.link4
+    );
+    gen_pair!(
+        v,
+        scene,
+        FourBarPoints,
+        FourBarPointsInput { theta2 },
+        generated::fourbar_points,
+        ["generated, no angles", "generated f64, no angle outputs"],
+        ["generated, no angles", "generated f32, no angle outputs"],
+        |s| s.position.B.x
+            + s.position.B.y
+            + s.velocity.B.x
+            + s.velocity.B.y
+            + s.acceleration.B.x
+            + s.acceleration.B.y
+    );
+    let (w, a) = (scene.rates[0], scene.accels[0]);
+    let grid = &scene.grid;
+    // Hand-written closed form, f64 and f32.
+    let samples = grid
+        .iter()
+        .map(|q| {
+            Some(fourbar_out_sample(
+                q[0],
+                &baselines::closed_form(q[0], w, a),
+            ))
+        })
+        .collect();
+    let sweep: Sweep = Box::new(move || {
+        let mut acc = 0.0;
+        for q in grid {
+            let o = baselines::closed_form(q[0], w, a);
+            acc += o.t3 + o.t4 + o.w3 + o.w4 + o.al3 + o.al4;
+        }
+        black_box(acc)
+    });
+    v.push(method(
+        "hand-written closed form",
+        "hand-written closed form f64",
+        F64,
+        samples,
+        Some(sweep),
+    ));
+    let g32: Vec<f32> = grid.iter().map(|q| q[0] as f32).collect();
+    let samples = g32
+        .iter()
+        .map(|&q| {
+            let o = widen(baselines::closed_form(q, w as f32, a as f32));
+            Some(fourbar_out_sample(q as f64, &o))
+        })
+        .collect();
+    let (w32, a32) = (w as f32, a as f32);
+    let sweep: Sweep = Box::new(move || {
+        let mut acc = 0.0f32;
+        for &q in &g32 {
+            let o = baselines::closed_form(q, w32, a32);
+            acc += o.t3 + o.t4 + o.w3 + o.w4 + o.al3 + o.al4;
+        }
+        black_box(acc) as f64
+    });
+    v.push(method(
+        "hand-written closed form",
+        "hand-written closed form f32",
+        F32,
+        samples,
+        Some(sweep),
+    ));
+    for tol in TOLERANCES {
+        v.push(newton_method(
+            "Newton, nalgebra Matrix2",
+            baselines::newton_fixed::<f64>,
+            tol,
+            grid,
+            w,
+            a,
+        ));
+    }
+    for tol in TOLERANCES {
+        v.push(newton_method(
+            "Newton, heap DMatrix LU",
+            baselines::newton_heap::<f64>,
+            tol,
+            grid,
+            w,
+            a,
+        ));
+    }
+    let flat: Vec<f64> = grid.iter().map(|q| q[0]).collect();
+    match crate::numpy::run(&flat, w, a, crate::ROUNDS, out_dir) {
+        Some((ns, version, rows)) => {
+            let samples = rows
+                .iter()
+                .zip(grid)
+                .map(|(r, q)| {
+                    let o = FourBarOut {
+                        t3: r[0],
+                        t4: r[1],
+                        w3: r[2],
+                        w4: r[3],
+                        al3: r[4],
+                        al4: r[5],
+                    };
+                    Some(fourbar_out_sample(q[0], &o))
+                })
+                .collect();
+            let mut m = method(
+                "numpy whole-array",
+                &format!("numpy {version} whole-array closed form f64 (subprocess)"),
+                F64,
+                samples,
+                None,
+            );
+            m.ns = ns;
+            v.push(m);
+        }
+        None => eprintln!("numpy not available: skipped"),
+    }
+}
+
 /// Every method of a scene.
 pub fn for_scene<'a>(scene: &'a Scene, out_dir: &Path) -> Vec<Method<'a>> {
     use Precision::*;
     let mut v = Vec::new();
     match scene.name {
-        "FourBar" => {
-            gen_pair!(
-                v,
-                scene,
-                FourBar,
-                FourBarInput { theta2 },
-                generated::fourbar,
-                ["generated f64", "generated f64"],
-                ["generated f32", "generated f32"],
-                |s| s.position.B.x
-                    + s.position.B.y
-                    + s.position.link3
-                    + s.position.link4
-                    + s.velocity.B.x
-                    + s.velocity.B.y
-                    + s.velocity.link3
-                    + s.velocity.link4
-                    + s.acceleration.B.x
-                    + s.acceleration.B.y
-                    + s.acceleration.link3
-                    + s.acceleration.link4
-            );
-            gen_pair!(
-                v,
-                scene,
-                FourBarPoints,
-                FourBarPointsInput { theta2 },
-                generated::fourbar_points,
-                ["generated, no angles", "generated f64, no angle outputs"],
-                ["generated, no angles", "generated f32, no angle outputs"],
-                |s| s.position.B.x
-                    + s.position.B.y
-                    + s.velocity.B.x
-                    + s.velocity.B.y
-                    + s.acceleration.B.x
-                    + s.acceleration.B.y
-            );
-            let (w, a) = (scene.rates[0], scene.accels[0]);
-            let grid = &scene.grid;
-            // Hand-written closed form, f64 and f32.
-            let samples = grid
-                .iter()
-                .map(|q| {
-                    Some(fourbar_out_sample(
-                        q[0],
-                        &baselines::closed_form(q[0], w, a),
-                    ))
-                })
-                .collect();
-            let sweep: Sweep = Box::new(move || {
-                let mut acc = 0.0;
-                for q in grid {
-                    let o = baselines::closed_form(q[0], w, a);
-                    acc += o.t3 + o.t4 + o.w3 + o.w4 + o.al3 + o.al4;
-                }
-                black_box(acc)
-            });
-            v.push(method(
-                "hand-written closed form",
-                "hand-written closed form f64",
-                F64,
-                samples,
-                Some(sweep),
-            ));
-            let g32: Vec<f32> = grid.iter().map(|q| q[0] as f32).collect();
-            let samples = g32
-                .iter()
-                .map(|&q| {
-                    let o = widen(baselines::closed_form(q, w as f32, a as f32));
-                    Some(fourbar_out_sample(q as f64, &o))
-                })
-                .collect();
-            let (w32, a32) = (w as f32, a as f32);
-            let sweep: Sweep = Box::new(move || {
-                let mut acc = 0.0f32;
-                for &q in &g32 {
-                    let o = baselines::closed_form(q, w32, a32);
-                    acc += o.t3 + o.t4 + o.w3 + o.w4 + o.al3 + o.al4;
-                }
-                black_box(acc) as f64
-            });
-            v.push(method(
-                "hand-written closed form",
-                "hand-written closed form f32",
-                F32,
-                samples,
-                Some(sweep),
-            ));
-            for tol in TOLERANCES {
-                v.push(newton_method(
-                    "Newton, nalgebra Matrix2",
-                    baselines::newton_fixed::<f64>,
-                    tol,
-                    grid,
-                    w,
-                    a,
-                ));
-            }
-            for tol in TOLERANCES {
-                v.push(newton_method(
-                    "Newton, heap DMatrix LU",
-                    baselines::newton_heap::<f64>,
-                    tol,
-                    grid,
-                    w,
-                    a,
-                ));
-            }
-            let flat: Vec<f64> = grid.iter().map(|q| q[0]).collect();
-            match crate::numpy::run(&flat, w, a, crate::ROUNDS, out_dir) {
-                Some((ns, version, rows)) => {
-                    let samples = rows
-                        .iter()
-                        .zip(grid)
-                        .map(|(r, q)| {
-                            let o = FourBarOut {
-                                t3: r[0],
-                                t4: r[1],
-                                w3: r[2],
-                                w4: r[3],
-                                al3: r[4],
-                                al4: r[5],
-                            };
-                            Some(fourbar_out_sample(q[0], &o))
-                        })
-                        .collect();
-                    let mut m = method(
-                        "numpy whole-array",
-                        &format!("numpy {version} whole-array closed form f64 (subprocess)"),
-                        F64,
-                        samples,
-                        None,
-                    );
-                    m.ns = ns;
-                    v.push(m);
-                }
-                None => eprintln!("numpy not available: skipped"),
-            }
-        }
+        "FourBar" => fourbar_methods(&mut v, scene, out_dir),
         "SixBar" => {
             gen_pair!(
                 v,

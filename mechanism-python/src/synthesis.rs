@@ -34,11 +34,13 @@ fn case(
     }
     let timing = match angles {
         None => Timing::Free,
-        Some(a) if a.len() != targets.len() => return Err(format!(
+        Some(a) if a.len() != targets.len() => {
+            return Err(format!(
             "{} angles for {} target points: give one crank angle per point, or none (free timing)",
             a.len(),
             targets.len()
-        )),
+        ))
+        }
         Some(a) if !a.iter().all(|&x| (0.0..=TAU).contains(&x)) => {
             return Err("every crank angle is in [0, 2 pi] (rad, from the ground link)".into())
         }
