@@ -106,228 +106,240 @@ use Link::{Body as Bd, Ground};
 
 fn scenes() -> Vec<ForceScene> {
     vec![
-        // Sine mechanism: 0 A, 1 B (crank tip, block 2's pin); derived 2 Q =
-        // (0, B.y), link 3's point on the frame's line x = 0. The slot of
-        // link 3 is horizontal (the guide's 90 deg turned by -90 deg), the
-        // guide vertical; both prismatic couples are stated about B.
-        ForceScene {
-            name: "SineMechanism",
-            columns: vec![
-                ("r_ground_link1.x", Unit::Force),
-                ("r_ground_link1.y", Unit::Force),
-                ("r_link1_block2.x", Unit::Force),
-                ("r_link1_block2.y", Unit::Force),
-                ("r_block2_link3.force.x", Unit::Force),
-                ("r_block2_link3.force.y", Unit::Force),
-                ("r_block2_link3.moment", Unit::Moment),
-                ("r_ground_link3.force.x", Unit::Force),
-                ("r_ground_link3.force.y", Unit::Force),
-                ("r_ground_link3.moment", Unit::Moment),
-                ("drive_phi1", Unit::Moment),
-            ],
-            grid: grid(),
-            rate: 10.0,
-            accel: 0.0,
-            linkage: Linkage {
-                points: vec![fixed(0.0, 0.0), Point::Unknown],
-                constraints: vec![Constraint::Crank {
-                    p: 1,
-                    o: 0,
-                    r: 0.1,
-                    input: 0,
-                }],
-                sides: vec![],
-                scale: 0.1,
-            },
-            first_guess: vec![(0.0, 0.0), (0.1, 0.0)],
-            extend: |p| {
-                let mut v = p.to_vec();
-                v.push(V2 {
-                    x: Dd::ZERO,
-                    y: p[1].y,
-                });
-                v
-            },
-            load_of: |_, _| 0.0,
-            system: |_| System {
-                // 0 link1 (massless), 1 block2 (4 kg at B), 2 link3 (10 kg at Q).
-                bodies: vec![
-                    Body::new(0.0, 0, 0.0, None),
-                    Body::new(4.0, 1, 0.0, None),
-                    Body::new(10.0, 2, 0.0, None),
-                ],
-                joints: vec![
-                    Joint::revolute(Ground, Bd(0), 0),
-                    Joint::revolute(Bd(0), Bd(1), 1),
-                    Joint::prismatic(Bd(1), Bd(2), Direction::Fixed(V2::new(1.0, 0.0)), 1),
-                    Joint::prismatic(Ground, Bd(2), Direction::Fixed(V2::new(0.0, 1.0)), 1),
-                ],
-                drivers: vec![Driver::Torque { body: 0 }],
-                loads: vec![Load::Force {
-                    body: 2,
-                    at: 2,
-                    force: V2::new(0.0, -400.0),
-                }],
-                gravity: V2::default(),
-            },
-        },
-        // Shaper: 0 A, 1 C, 2-3 the ram guide's points, 4 B, 5 D, 6 E;
-        // derived 7 S3 (midpoint C-D), 8 S4 (midpoint D-E). The block slides
-        // on the rocker along C -> B (couple about the pin B), the ram on the
-        // frame along (-1, 0) (couple about E).
-        ForceScene {
-            name: "ShaperForces",
-            columns: vec![
-                ("r_ground_link2.x", Unit::Force),
-                ("r_ground_link2.y", Unit::Force),
-                ("r_link2_block.x", Unit::Force),
-                ("r_link2_block.y", Unit::Force),
-                ("r_block_link3.force.x", Unit::Force),
-                ("r_block_link3.force.y", Unit::Force),
-                ("r_block_link3.moment", Unit::Moment),
-                ("r_ground_link3.x", Unit::Force),
-                ("r_ground_link3.y", Unit::Force),
-                ("r_link3_link4.x", Unit::Force),
-                ("r_link3_link4.y", Unit::Force),
-                ("r_link4_ram_block.x", Unit::Force),
-                ("r_link4_ram_block.y", Unit::Force),
-                ("r_ground_ram_block.force.x", Unit::Force),
-                ("r_ground_ram_block.force.y", Unit::Force),
-                ("r_ground_ram_block.moment", Unit::Moment),
-                ("drive_crank", Unit::Moment),
-            ],
-            grid: grid(),
-            rate: 2.0 * PI,
-            accel: 0.0,
-            linkage: crate::reference::shaper_linkage(),
-            first_guess: vec![
-                (0.0, 0.0),
-                (0.0, -0.275),
-                (0.0, 0.3),
-                (-1.0, 0.3),
-                (0.125, 0.0),
-                (0.25, 0.25),
-                (0.1, 0.3),
-            ],
-            extend: |p| {
-                let mut v = p.to_vec();
-                v.push(midpoint(p, 1, 5));
-                v.push(midpoint(p, 5, 6));
-                v
-            },
-            // The cutting force on the forward stroke: the ram's slide rate
-            // along the guide's (-1, 0) positive.
-            load_of: |_, v| if -v[6].x.to_f64() > 0.0 { -5000.0 } else { 0.0 },
-            system: |cut| System {
-                // 0 link2, 1 block (massless), 2 link3, 3 link4, 4 ram_block.
-                bodies: vec![
-                    Body::new(0.0, 0, 0.0, None),
-                    Body::new(0.0, 4, 0.0, None),
-                    Body::new(20.0, 7, 0.6, Some((1, 5))),
-                    Body::new(3.0, 8, 0.005625, Some((5, 6))),
-                    Body::new(60.0, 6, 0.0, None),
-                ],
-                joints: vec![
-                    Joint::revolute(Ground, Bd(0), 0),
-                    Joint::revolute(Bd(0), Bd(1), 4),
-                    Joint::prismatic(Bd(1), Bd(2), Direction::Segment(1, 4), 4),
-                    Joint::revolute(Ground, Bd(2), 1),
-                    Joint::revolute(Bd(2), Bd(3), 5),
-                    Joint::revolute(Bd(3), Bd(4), 6),
-                    Joint::prismatic(Ground, Bd(4), Direction::Fixed(V2::new(-1.0, 0.0)), 6),
-                ],
-                drivers: vec![Driver::Torque { body: 0 }],
-                // `force at E on ram_block along ram = cut`: cut times the
-                // guide's unit direction (-1, 0).
-                loads: vec![Load::Force {
-                    body: 4,
-                    at: 6,
-                    force: V2::new(-cut, 0.0),
-                }],
-                gravity: V2::new(0.0, -9.81),
-            },
-        },
-        // Four-bar (m): 0 O2, 1 O4, 2 A, 3 B; derived 4 G3 (midpoint A-B:
-        // 0.127 of 0.254), 5 G4 (midpoint O4-B: 0.0889 of 0.1778).
-        ForceScene {
-            name: "FourBarForces",
-            columns: vec![
-                ("r_ground_link2.x", Unit::Force),
-                ("r_ground_link2.y", Unit::Force),
-                ("r_link2_link3.x", Unit::Force),
-                ("r_link2_link3.y", Unit::Force),
-                ("r_ground_link4.x", Unit::Force),
-                ("r_ground_link4.y", Unit::Force),
-                ("r_link3_link4.x", Unit::Force),
-                ("r_link3_link4.y", Unit::Force),
-                ("drive_theta2", Unit::Moment),
-            ],
-            grid: grid(),
-            rate: 250.0,
-            accel: 2.0e4,
-            linkage: Linkage {
-                points: vec![
-                    fixed(0.0, 0.0),
-                    fixed(0.3048, 0.0),
-                    Point::Unknown,
-                    Point::Unknown,
-                ],
-                constraints: vec![
-                    Constraint::Crank {
-                        p: 2,
-                        o: 0,
-                        r: 0.1016,
-                        input: 0,
-                    },
-                    Constraint::Distance {
-                        p: 3,
-                        q: 2,
-                        len: 0.254,
-                    },
-                    Constraint::Distance {
-                        p: 3,
-                        q: 1,
-                        len: 0.1778,
-                    },
-                ],
-                sides: vec![Side::Left {
-                    p: 3,
-                    a: 2,
-                    b: 1,
-                    sign: 1.0,
-                }],
-                scale: 0.3048,
-            },
-            first_guess: vec![(0.0, 0.0), (0.3048, 0.0), (0.1016, 0.0), (0.2, 0.17)],
-            extend: |p| {
-                let mut v = p.to_vec();
-                v.push(midpoint(p, 2, 3));
-                v.push(midpoint(p, 1, 3));
-                v
-            },
-            load_of: |_, _| 0.0,
-            system: |_| System {
-                // 0 link2 (massless), 1 link3, 2 link4.
-                bodies: vec![
-                    Body::new(0.0, 0, 0.0, None),
-                    Body::new(1.2, 4, 0.0065, Some((2, 3))),
-                    Body::new(0.9, 5, 0.0024, Some((1, 3))),
-                ],
-                joints: vec![
-                    Joint::revolute(Ground, Bd(0), 0),
-                    Joint::revolute(Bd(0), Bd(1), 2),
-                    Joint::revolute(Ground, Bd(2), 1),
-                    Joint::revolute(Bd(1), Bd(2), 3),
-                ],
-                drivers: vec![Driver::Torque { body: 0 }],
-                loads: vec![Load::Couple {
-                    body: 2,
-                    couple: d(-5.0),
-                }],
-                gravity: V2::new(0.0, -9.81),
-            },
-        },
+        sine_mechanism_scene(),
+        shaper_forces_scene(),
+        four_bar_forces_scene(),
     ]
+}
+
+/// Sine mechanism: 0 A, 1 B (crank tip, block 2's pin); derived 2 Q =
+/// (0, B.y), link 3's point on the frame's line x = 0. The slot of
+/// link 3 is horizontal (the guide's 90 deg turned by -90 deg), the
+/// guide vertical; both prismatic couples are stated about B.
+fn sine_mechanism_scene() -> ForceScene {
+    ForceScene {
+        name: "SineMechanism",
+        columns: vec![
+            ("r_ground_link1.x", Unit::Force),
+            ("r_ground_link1.y", Unit::Force),
+            ("r_link1_block2.x", Unit::Force),
+            ("r_link1_block2.y", Unit::Force),
+            ("r_block2_link3.force.x", Unit::Force),
+            ("r_block2_link3.force.y", Unit::Force),
+            ("r_block2_link3.moment", Unit::Moment),
+            ("r_ground_link3.force.x", Unit::Force),
+            ("r_ground_link3.force.y", Unit::Force),
+            ("r_ground_link3.moment", Unit::Moment),
+            ("drive_phi1", Unit::Moment),
+        ],
+        grid: grid(),
+        rate: 10.0,
+        accel: 0.0,
+        linkage: Linkage {
+            points: vec![fixed(0.0, 0.0), Point::Unknown],
+            constraints: vec![Constraint::Crank {
+                p: 1,
+                o: 0,
+                r: 0.1,
+                input: 0,
+            }],
+            sides: vec![],
+            scale: 0.1,
+        },
+        first_guess: vec![(0.0, 0.0), (0.1, 0.0)],
+        extend: |p| {
+            let mut v = p.to_vec();
+            v.push(V2 {
+                x: Dd::ZERO,
+                y: p[1].y,
+            });
+            v
+        },
+        load_of: |_, _| 0.0,
+        system: |_| System {
+            // 0 link1 (massless), 1 block2 (4 kg at B), 2 link3 (10 kg at Q).
+            bodies: vec![
+                Body::new(0.0, 0, 0.0, None),
+                Body::new(4.0, 1, 0.0, None),
+                Body::new(10.0, 2, 0.0, None),
+            ],
+            joints: vec![
+                Joint::revolute(Ground, Bd(0), 0),
+                Joint::revolute(Bd(0), Bd(1), 1),
+                Joint::prismatic(Bd(1), Bd(2), Direction::Fixed(V2::new(1.0, 0.0)), 1),
+                Joint::prismatic(Ground, Bd(2), Direction::Fixed(V2::new(0.0, 1.0)), 1),
+            ],
+            drivers: vec![Driver::Torque { body: 0 }],
+            loads: vec![Load::Force {
+                body: 2,
+                at: 2,
+                force: V2::new(0.0, -400.0),
+            }],
+            gravity: V2::default(),
+        },
+    }
+}
+
+/// Shaper: 0 A, 1 C, 2-3 the ram guide's points, 4 B, 5 D, 6 E;
+/// derived 7 S3 (midpoint C-D), 8 S4 (midpoint D-E). The block slides
+/// on the rocker along C -> B (couple about the pin B), the ram on the
+/// frame along (-1, 0) (couple about E).
+fn shaper_forces_scene() -> ForceScene {
+    ForceScene {
+        name: "ShaperForces",
+        columns: vec![
+            ("r_ground_link2.x", Unit::Force),
+            ("r_ground_link2.y", Unit::Force),
+            ("r_link2_block.x", Unit::Force),
+            ("r_link2_block.y", Unit::Force),
+            ("r_block_link3.force.x", Unit::Force),
+            ("r_block_link3.force.y", Unit::Force),
+            ("r_block_link3.moment", Unit::Moment),
+            ("r_ground_link3.x", Unit::Force),
+            ("r_ground_link3.y", Unit::Force),
+            ("r_link3_link4.x", Unit::Force),
+            ("r_link3_link4.y", Unit::Force),
+            ("r_link4_ram_block.x", Unit::Force),
+            ("r_link4_ram_block.y", Unit::Force),
+            ("r_ground_ram_block.force.x", Unit::Force),
+            ("r_ground_ram_block.force.y", Unit::Force),
+            ("r_ground_ram_block.moment", Unit::Moment),
+            ("drive_crank", Unit::Moment),
+        ],
+        grid: grid(),
+        rate: 2.0 * PI,
+        accel: 0.0,
+        linkage: crate::reference::shaper_linkage(),
+        first_guess: vec![
+            (0.0, 0.0),
+            (0.0, -0.275),
+            (0.0, 0.3),
+            (-1.0, 0.3),
+            (0.125, 0.0),
+            (0.25, 0.25),
+            (0.1, 0.3),
+        ],
+        extend: |p| {
+            let mut v = p.to_vec();
+            v.push(midpoint(p, 1, 5));
+            v.push(midpoint(p, 5, 6));
+            v
+        },
+        // The cutting force on the forward stroke: the ram's slide rate
+        // along the guide's (-1, 0) positive.
+        load_of: |_, v| if -v[6].x.to_f64() > 0.0 { -5000.0 } else { 0.0 },
+        system: |cut| System {
+            // 0 link2, 1 block (massless), 2 link3, 3 link4, 4 ram_block.
+            bodies: vec![
+                Body::new(0.0, 0, 0.0, None),
+                Body::new(0.0, 4, 0.0, None),
+                Body::new(20.0, 7, 0.6, Some((1, 5))),
+                Body::new(3.0, 8, 0.005625, Some((5, 6))),
+                Body::new(60.0, 6, 0.0, None),
+            ],
+            joints: vec![
+                Joint::revolute(Ground, Bd(0), 0),
+                Joint::revolute(Bd(0), Bd(1), 4),
+                Joint::prismatic(Bd(1), Bd(2), Direction::Segment(1, 4), 4),
+                Joint::revolute(Ground, Bd(2), 1),
+                Joint::revolute(Bd(2), Bd(3), 5),
+                Joint::revolute(Bd(3), Bd(4), 6),
+                Joint::prismatic(Ground, Bd(4), Direction::Fixed(V2::new(-1.0, 0.0)), 6),
+            ],
+            drivers: vec![Driver::Torque { body: 0 }],
+            // `force at E on ram_block along ram = cut`: cut times the
+            // guide's unit direction (-1, 0).
+            loads: vec![Load::Force {
+                body: 4,
+                at: 6,
+                force: V2::new(-cut, 0.0),
+            }],
+            gravity: V2::new(0.0, -9.81),
+        },
+    }
+}
+
+/// Four-bar (m): 0 O2, 1 O4, 2 A, 3 B; derived 4 G3 (midpoint A-B:
+/// 0.127 of 0.254), 5 G4 (midpoint O4-B: 0.0889 of 0.1778).
+fn four_bar_forces_scene() -> ForceScene {
+    ForceScene {
+        name: "FourBarForces",
+        columns: vec![
+            ("r_ground_link2.x", Unit::Force),
+            ("r_ground_link2.y", Unit::Force),
+            ("r_link2_link3.x", Unit::Force),
+            ("r_link2_link3.y", Unit::Force),
+            ("r_ground_link4.x", Unit::Force),
+            ("r_ground_link4.y", Unit::Force),
+            ("r_link3_link4.x", Unit::Force),
+            ("r_link3_link4.y", Unit::Force),
+            ("drive_theta2", Unit::Moment),
+        ],
+        grid: grid(),
+        rate: 250.0,
+        accel: 2.0e4,
+        linkage: Linkage {
+            points: vec![
+                fixed(0.0, 0.0),
+                fixed(0.3048, 0.0),
+                Point::Unknown,
+                Point::Unknown,
+            ],
+            constraints: vec![
+                Constraint::Crank {
+                    p: 2,
+                    o: 0,
+                    r: 0.1016,
+                    input: 0,
+                },
+                Constraint::Distance {
+                    p: 3,
+                    q: 2,
+                    len: 0.254,
+                },
+                Constraint::Distance {
+                    p: 3,
+                    q: 1,
+                    len: 0.1778,
+                },
+            ],
+            sides: vec![Side::Left {
+                p: 3,
+                a: 2,
+                b: 1,
+                sign: 1.0,
+            }],
+            scale: 0.3048,
+        },
+        first_guess: vec![(0.0, 0.0), (0.3048, 0.0), (0.1016, 0.0), (0.2, 0.17)],
+        extend: |p| {
+            let mut v = p.to_vec();
+            v.push(midpoint(p, 2, 3));
+            v.push(midpoint(p, 1, 3));
+            v
+        },
+        load_of: |_, _| 0.0,
+        system: |_| System {
+            // 0 link2 (massless), 1 link3, 2 link4.
+            bodies: vec![
+                Body::new(0.0, 0, 0.0, None),
+                Body::new(1.2, 4, 0.0065, Some((2, 3))),
+                Body::new(0.9, 5, 0.0024, Some((1, 3))),
+            ],
+            joints: vec![
+                Joint::revolute(Ground, Bd(0), 0),
+                Joint::revolute(Bd(0), Bd(1), 2),
+                Joint::revolute(Ground, Bd(2), 1),
+                Joint::revolute(Bd(1), Bd(2), 3),
+            ],
+            drivers: vec![Driver::Torque { body: 0 }],
+            loads: vec![Load::Couple {
+                body: 2,
+                couple: d(-5.0),
+            }],
+            gravity: V2::new(0.0, -9.81),
+        },
+    }
 }
 
 /// The reference's columns from its solution (the order of
