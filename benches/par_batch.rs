@@ -323,6 +323,7 @@ fn main() {
         POLICIES.join(" | ")
     );
     println!("|---:|---|{}---:|", "---:|".repeat(POLICIES.len()));
+    let mut targets = Vec::new();
     for &n in &sizes {
         let r64 = measure!(f64, n, rounds);
         let r32 = measure!(f32, n, rounds);
@@ -333,6 +334,37 @@ fn main() {
                 .collect();
             let latency = mechanism::par_task_ns() / 1e3;
             println!("| {n} | {t} | {} | {latency:.1} |", cells.join(" | "));
+            targets.push(target_line(n, t, &r));
         }
     }
+    println!(
+        "\nTargets (issue 35, item 4: `par_solve` within 0.8 of the best of serial, halves-512 \
+         and per-thread, here on {} threads; ratio = best / par_solve, by the minima and by the \
+         medians):\n",
+        rayon::current_num_threads()
+    );
+    for line in targets {
+        println!("{line}");
+    }
+}
+
+/// The target line of one size and type: the best fixed way (`serial`,
+/// `halves-512`, `per-thread`: the first three policies) over
+/// `par_solve` (the fourth), by the minima and by the medians, each at
+/// least 0.8 to be met.
+fn target_line(n: usize, t: &str, r: &[(f64, f64)]) -> String {
+    let best = |f: fn(&(f64, f64)) -> f64| r[..3].iter().map(f).fold(f64::INFINITY, f64::min);
+    let (lo, med) = (best(|x| x.0) / r[3].0, best(|x| x.1) / r[3].1);
+    let met = if lo >= 0.8 && med >= 0.8 {
+        "**met**"
+    } else {
+        "**not met**"
+    };
+    format!(
+        "- {n} elements, {t}: par_solve {:.2} / {:.2} ns, best fixed {:.2} / {:.2}: ratio {lo:.2} / {med:.2} (target >= 0.8): {met}",
+        r[3].0,
+        r[3].1,
+        best(|x| x.0),
+        best(|x| x.1)
+    )
 }
