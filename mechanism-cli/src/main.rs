@@ -4,6 +4,7 @@
 
 mod picture;
 mod spec;
+mod synthesize;
 mod table;
 
 use clap::{Parser, Subcommand};
@@ -19,7 +20,7 @@ const PROGRESS_FROM: usize = 2_000;
 #[command(
     name = "mechanism",
     version,
-    about = "Check, tabulate, draw, animate, chart and emit planar linkage definitions (the mechanism! language) without compiling them",
+    about = "Check, tabulate, draw, animate, chart and emit planar linkage definitions (the mechanism! language) without compiling them, and synthesize four-bars through given points",
     long_about = "Reads a definition from FILE: the text between the braces of `mechanism! { ... }` \
 (statements, params, modes, loads; grouped or drawn form), or the whole `pub Name { ... }` item. \
 `-` reads standard input. The definition goes through the macro's own stages: the same rules \
@@ -151,6 +152,64 @@ that analysis (at the rates and accelerations given, 0 for the others).")]
         #[command(flatten)]
         pic: PictureArgs,
     },
+    /// Synthesizes a four-bar whose coupler point passes through given points, and writes its
+    /// definition.
+    #[command(after_help = "Examples:\n  \
+mechanism synthesize --target 20,20 --target 20,25 --target 20,30 --target 20,35 -o path.mech\n  \
+mechanism synthesize --target 3,3 --target 2.759,3.363 --target 2.372,3.663 \\\n    \
+--angle 30deg --angle 45deg --angle 60deg --frame 0,0,0 --links 0:50 --coords=-50:50 --json\n  \
+mechanism animate path.mech --input phi=0:360deg:120 --trace P -o path.svg\n\n\
+The four-bar: ground pivot O2 = (x0, y0), the other at r1 from it at angle theta0, crank r2 at \
+an angle from the ground link, coupler r3, rocker r4, the coupler point P at (rcx, rcy) in the \
+frame of A -> B; always a Grashof crank-rocker with the crank shortest. The objective: the sum \
+of squared distances from P at each target's crank angle to the target (given with --angle, one \
+per target, or free and ascending). The definition (its input `phi` is the crank's absolute \
+angle, theta0 plus the angle from the ground link) goes to -o or standard output; a summary \
+to standard error. The result depends only on the arguments (--seed included).")]
+    Synthesize {
+        /// A point of the path: X,Y (at least 3).
+        #[arg(
+            long = "target",
+            value_name = "X,Y",
+            required = true,
+            allow_hyphen_values = true
+        )]
+        targets: Vec<String>,
+        /// The crank angle from the ground link at each target, in order (rad, or with `deg`);
+        /// none: free timing.
+        #[arg(long = "angle", value_name = "ANGLE", allow_hyphen_values = true)]
+        angles: Vec<String>,
+        /// The frame fixed: THETA0,X0,Y0 (THETA0 in rad, or with `deg`); default free.
+        #[arg(long, value_name = "THETA0,X0,Y0", allow_hyphen_values = true)]
+        frame: Option<String>,
+        /// Bounds of the link lengths r1 .. r4.
+        #[arg(long, value_name = "LO:HI", default_value = "0:60")]
+        links: String,
+        /// Bounds of rcx, rcy, x0, y0.
+        #[arg(
+            long,
+            value_name = "LO:HI",
+            default_value = "-60:60",
+            allow_hyphen_values = true
+        )]
+        coords: String,
+        /// Local solves per assembly mode.
+        #[arg(long, default_value_t = 300)]
+        starts: usize,
+        /// Basin hops from the best, per assembly mode.
+        #[arg(long, default_value_t = 300)]
+        hops: usize,
+        /// The search's seed.
+        #[arg(long, default_value_t = 0)]
+        seed: u64,
+        /// The definition file to write (default: standard output).
+        #[arg(short = 'o', long = "output", value_name = "FILE.mech")]
+        output: Option<PathBuf>,
+        /// The result as JSON on standard output: objective, mode, design, angles (rad),
+        /// definition, evaluations, jacobians.
+        #[arg(long)]
+        json: bool,
+    },
     /// Writes the Rust source of the `mechanism!` item, to paste into a crate.
     #[command(after_help = "Example:\n  mechanism emit press.mech --name Press > src/press.rs")]
     Emit {
@@ -265,6 +324,30 @@ fn main() -> ExitCode {
             chart(&file, &args, &outputs, &pic)
         }
         Command::Emit { file, name } => emit(&file, name.as_deref()),
+        Command::Synthesize {
+            targets,
+            angles,
+            frame,
+            links,
+            coords,
+            starts,
+            hops,
+            seed,
+            output,
+            json,
+        } => synthesize::run(&synthesize::Args {
+            targets,
+            angles,
+            frame,
+            links,
+            coords,
+            starts,
+            hops,
+            seed,
+            output,
+            json,
+        })
+        .map_err(Failure::Usage),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

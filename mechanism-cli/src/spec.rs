@@ -13,7 +13,7 @@ pub struct Spec {
 }
 
 /// One number with an optional `deg`/`rad` suffix, in rad (or as written).
-fn number(text: &str) -> Result<f64, String> {
+pub fn number(text: &str) -> Result<f64, String> {
     let t = text.trim();
     let (t, scale) = if let Some(n) = t.strip_suffix("deg") {
         (n, std::f64::consts::PI / 180.0)

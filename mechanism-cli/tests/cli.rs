@@ -157,3 +157,132 @@ fn emit_writes_the_item() {
         "{text}"
     );
 }
+
+/// The coupler point of `synthesize`'s four-bar (`[r1, r2, r3, r4, rcx,
+/// rcy, theta0, x0, y0]`) at crank angle `th2` from the ground link, `B`
+/// left of `A -> O4`: circle intersection written here.
+fn coupler_point(d: &[f64; 9], th2: f64) -> (f64, f64) {
+    let [r1, r2, r3, r4, rcx, rcy, t0, x0, y0] = *d;
+    let (ax, ay) = (x0 + r2 * (t0 + th2).cos(), y0 + r2 * (t0 + th2).sin());
+    let (ox, oy) = (x0 + r1 * t0.cos(), y0 + r1 * t0.sin());
+    let (dx, dy) = (ox - ax, oy - ay);
+    let d = dx.hypot(dy);
+    let a = (r3 * r3 - r4 * r4 + d * d) / (2.0 * d);
+    let h = (r3 * r3 - a * a).sqrt();
+    let (bx, by) = (ax + (a * dx - h * dy) / d, ay + (a * dy + h * dx) / d);
+    let (ux, uy) = ((bx - ax) / r3, (by - ay) / r3);
+    (ax + rcx * ux - rcy * uy, ay + rcx * uy + rcy * ux)
+}
+
+#[test]
+fn synthesize_fits_a_known_crank_rocker_and_writes_a_definition_the_table_reads() {
+    // Proves `synthesize`: targets from a crank-rocker (this file's circle
+    // intersection) at prescribed angles are fitted exactly (objective at
+    // rounding level, 1e-9 of the squared path size); the JSON's design
+    // gives the same points by this file's formula (1e-9: the fit's own
+    // residual); the definition written with -o, read by `table` at `phi =
+    // theta0 + angle`, puts P there too. Then bad arguments: exit status 2
+    // with the reason.
+    let truth = [4.0, 1.2, 3.5, 4.5, 1.5, 1.0, 0.3, 0.5, -0.2];
+    let angles: Vec<f64> = (0..7).map(|k| 0.4 + 0.6 * k as f64).collect();
+    let mut args = vec!["synthesize".to_string()];
+    for &a in &angles {
+        let (x, y) = coupler_point(&truth, a);
+        args.push(format!("--target={x:?},{y:?}"));
+        args.push(format!("--angle={a:?}"));
+    }
+    let out_file = file("synthesized.mech", "");
+    args.extend(
+        [
+            "--links=0:10",
+            "--coords=-10:10",
+            "--starts=100",
+            "--hops=100",
+            "--json",
+            "-o",
+        ]
+        .map(String::from),
+    );
+    args.push(out_file.to_str().unwrap().to_string());
+    let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+    let out = run(&refs);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let scale = 25.0;
+    assert!(v["objective"].as_f64().unwrap() <= 1e-9 * scale, "{v}");
+    let names = ["r1", "r2", "r3", "r4", "rcx", "rcy", "theta0", "x0", "y0"];
+    let design = names.map(|n| v["design"][n].as_f64().unwrap());
+    let got: Vec<f64> = v["angles"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|a| a.as_f64().unwrap())
+        .collect();
+    assert_eq!(got, angles);
+    assert_eq!(v["mode"], "left");
+    let written = std::fs::read_to_string(&out_file).unwrap();
+    assert_eq!(v["definition"].as_str().unwrap(), written);
+    let phis: Vec<String> = angles
+        .iter()
+        .map(|a| format!("{:?}", design[6] + a))
+        .collect();
+    let table = run(&[
+        "table",
+        out_file.to_str().unwrap(),
+        "--input",
+        &format!("phi={}", phis.join(",")),
+        "--csv",
+    ]);
+    assert!(
+        table.status.success(),
+        "{}",
+        String::from_utf8_lossy(&table.stderr)
+    );
+    let text = String::from_utf8(table.stdout).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| header.iter().position(|h| h.starts_with(n)).expect(n);
+    let (px, py) = (col("P.x "), col("P.y "));
+    for (line, &a) in lines.zip(&angles) {
+        let cells: Vec<f64> = line.split(',').map(|c| c.parse().unwrap()).collect();
+        let (wx, wy) = coupler_point(&truth, a);
+        let (dx, dy) = coupler_point(&design, a);
+        for (g, w, d) in [(cells[px], wx, dx), (cells[py], wy, dy)] {
+            assert!(
+                (g - w).abs() <= 1e-9 && (g - d).abs() <= 1e-9,
+                "{g} {w} {d}"
+            );
+        }
+    }
+    for (bad, reason) in [
+        (vec!["--target=1,2", "--target=3,4"], "at least 3"),
+        (
+            vec!["--target=1,2", "--target=3,4", "--target=5,x"],
+            "--target `5,x`",
+        ),
+        (
+            vec!["--target=1,2", "--target=3,4", "--target=5,6", "--angle=1"],
+            "one crank angle per point",
+        ),
+        (
+            vec![
+                "--target=1,2",
+                "--target=3,4",
+                "--target=5,6",
+                "--links=9:1",
+            ],
+            "lo < hi",
+        ),
+    ] {
+        let mut a = vec!["synthesize"];
+        a.extend(bad);
+        let out = run(&a);
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(reason), "{err}");
+    }
+}

@@ -5,71 +5,12 @@
 //! `planar_mechanism.Mechanism` reads to sweep or draw the result.
 
 use mechanism_synthesis::cases::{self, Case};
-use mechanism_synthesis::fourbar::Timing;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use std::f64::consts::TAU;
 
 /// The names of a design's first nine numbers, in `Design`'s order.
 const DESIGN: [&str; 9] = ["r1", "r2", "r3", "r4", "rcx", "rcy", "theta0", "x0", "y0"];
-
-/// Checks the arguments; the case to solve.
-fn case(
-    targets: Vec<(f64, f64)>,
-    angles: Option<Vec<f64>>,
-    frame: Option<(f64, f64, f64)>,
-    links: (f64, f64),
-    coords: (f64, f64),
-) -> Result<Case, String> {
-    if targets.len() < 3 {
-        return Err(format!(
-            "{} target points: a path needs at least 3",
-            targets.len()
-        ));
-    }
-    let finite = |x: f64| x.is_finite();
-    if !targets.iter().all(|t| finite(t.0) && finite(t.1)) {
-        return Err("a target point is not finite".into());
-    }
-    let timing = match angles {
-        None => Timing::Free,
-        Some(a) if a.len() != targets.len() => {
-            return Err(format!(
-            "{} angles for {} target points: give one crank angle per point, or none (free timing)",
-            a.len(),
-            targets.len()
-        ))
-        }
-        Some(a) if !a.iter().all(|&x| (0.0..=TAU).contains(&x)) => {
-            return Err("every crank angle is in [0, 2 pi] (rad, from the ground link)".into())
-        }
-        Some(a) => Timing::Prescribed(a),
-    };
-    if let Some((t, x, y)) = frame {
-        if !(finite(t) && finite(x) && finite(y)) {
-            return Err("the frame (theta0, x0, y0) is not finite".into());
-        }
-    }
-    for (name, (lo, hi)) in [("links", links), ("coords", coords)] {
-        if !(finite(lo) && finite(hi) && lo < hi) {
-            return Err(format!(
-                "{name} = ({lo}, {hi}): bounds need lo < hi, both finite"
-            ));
-        }
-    }
-    if links.0 < 0.0 {
-        return Err(format!("links = {links:?}: lengths are not negative"));
-    }
-    Ok(Case {
-        id: "python",
-        targets: targets.into_iter().map(|(x, y)| [x, y]).collect(),
-        timing,
-        frame: frame.map(|(t, x, y)| [t, x, y]),
-        links,
-        coords,
-    })
-}
 
 /// Synthesizes a four-bar whose coupler point passes through `targets`
 /// (least squares: the sum of squared distances from the coupler point at
@@ -114,16 +55,15 @@ pub fn synthesize_path<'py>(
     hops: usize,
     seed: u64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let case = case(targets, angles, frame, links, coords).map_err(PyValueError::new_err)?;
+    let targets = targets.into_iter().map(|(x, y)| [x, y]).collect();
+    let frame = frame.map(|(t, x, y)| [t, x, y]);
+    let case = Case::path(targets, angles, frame, links, coords).map_err(PyValueError::new_err)?;
     if starts == 0 {
         return Err(PyValueError::new_err(
             "starts = 0: the search needs a start",
         ));
     }
-    // The budget of the benchmark cases with free timing
-    // (`mechanism-synthesis/examples/synthesis`): 20 candidates screened per
-    // start, 30 iterations per local solve.
-    let found = py.detach(|| cases::solve(&case, starts, 20, 30, hops, seed));
+    let found = py.detach(|| cases::solve_user(&case, starts, hops, seed));
     if !found.objective.is_finite() {
         return Err(PyValueError::new_err(
             "no design assembled at every target: widen the bounds or move the targets",

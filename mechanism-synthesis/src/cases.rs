@@ -31,6 +31,66 @@ pub struct Case {
 }
 
 impl Case {
+    /// A user's path-generation case, checked: at least 3 finite `targets`;
+    /// `angles` (crank angles from the ground link, rad, in `[0, 2 pi]`),
+    /// one per target, or `None` for free timing; `frame` `(theta0, x0,
+    /// y0)` fixed or `None` for free; `links` (bounds of `r1 .. r4`, not
+    /// negative) and `coords` (bounds of `rcx, rcy, x0, y0`) each with
+    /// `lo < hi`, finite. `Err`: what is wrong, as a sentence to show the
+    /// user (the Python package and the `mechanism` command show it).
+    pub fn path(
+        targets: Vec<[f64; 2]>,
+        angles: Option<Vec<f64>>,
+        frame: Option<[f64; 3]>,
+        links: (f64, f64),
+        coords: (f64, f64),
+    ) -> Result<Case, String> {
+        if targets.len() < 3 {
+            return Err(format!(
+                "{} target points: a path needs at least 3",
+                targets.len()
+            ));
+        }
+        if !targets.iter().flatten().all(|x| x.is_finite()) {
+            return Err("a target point is not finite".into());
+        }
+        let timing = match angles {
+            None => Timing::Free,
+            Some(a) if a.len() != targets.len() => {
+                return Err(format!(
+                    "{} angles for {} target points: give one crank angle per point, or none (free timing)",
+                    a.len(),
+                    targets.len()
+                ))
+            }
+            Some(a) if !a.iter().all(|x| (0.0..=TAU).contains(x)) => {
+                return Err("every crank angle is in [0, 2 pi] (rad, from the ground link)".into())
+            }
+            Some(a) => Timing::Prescribed(a),
+        };
+        if !frame.iter().flatten().all(|x| x.is_finite()) {
+            return Err("the frame (theta0, x0, y0) is not finite".into());
+        }
+        for (name, (lo, hi)) in [("links", links), ("coords", coords)] {
+            if !(lo.is_finite() && hi.is_finite() && lo < hi) {
+                return Err(format!(
+                    "{name} = ({lo}, {hi}): bounds need lo < hi, both finite"
+                ));
+            }
+        }
+        if links.0 < 0.0 {
+            return Err(format!("links = {links:?}: lengths are not negative"));
+        }
+        Ok(Case {
+            id: "user",
+            targets,
+            timing,
+            frame,
+            links,
+            coords,
+        })
+    }
+
     /// The problem in assembly mode `mode`.
     pub fn problem(&self, mode: Mode) -> PathProblem {
         PathProblem::new(
@@ -145,6 +205,21 @@ pub struct Found {
     pub evaluations: usize,
     /// Jacobian evaluations over the run (both modes).
     pub jacobians: usize,
+}
+
+/// Candidates screened per start and iterations per local solve of
+/// [`solve_user`]: the budget of the benchmark cases with free timing (the
+/// example `synthesis`).
+pub const USER_SCREEN: usize = 20;
+/// See [`USER_SCREEN`].
+pub const USER_ITERATIONS: usize = 30;
+
+/// [`solve`] with `starts` starts and `hops` basin hops per assembly mode,
+/// [`USER_SCREEN`] candidates per start and [`USER_ITERATIONS`] iterations
+/// per local solve: what the Python package's `synthesize_path` and the
+/// `mechanism synthesize` command run.
+pub fn solve_user(case: &Case, starts: usize, hops: usize, seed: u64) -> Found {
+    solve(case, starts, USER_SCREEN, USER_ITERATIONS, hops, seed)
 }
 
 /// Runs `starts` local solves of at most `local_iterations` iterations in each
