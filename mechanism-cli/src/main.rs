@@ -166,50 +166,7 @@ of squared distances from P at each target's crank angle to the target (given wi
 per target, or free and ascending). The definition (its input `phi` is the crank's absolute \
 angle, theta0 plus the angle from the ground link) goes to -o or standard output; a summary \
 to standard error. The result depends only on the arguments (--seed included).")]
-    Synthesize {
-        /// A point of the path: X,Y (at least 3).
-        #[arg(
-            long = "target",
-            value_name = "X,Y",
-            required = true,
-            allow_hyphen_values = true
-        )]
-        targets: Vec<String>,
-        /// The crank angle from the ground link at each target, in order (rad, or with `deg`);
-        /// none: free timing.
-        #[arg(long = "angle", value_name = "ANGLE", allow_hyphen_values = true)]
-        angles: Vec<String>,
-        /// The frame fixed: THETA0,X0,Y0 (THETA0 in rad, or with `deg`); default free.
-        #[arg(long, value_name = "THETA0,X0,Y0", allow_hyphen_values = true)]
-        frame: Option<String>,
-        /// Bounds of the link lengths r1 .. r4.
-        #[arg(long, value_name = "LO:HI", default_value = "0:60")]
-        links: String,
-        /// Bounds of rcx, rcy, x0, y0.
-        #[arg(
-            long,
-            value_name = "LO:HI",
-            default_value = "-60:60",
-            allow_hyphen_values = true
-        )]
-        coords: String,
-        /// Local solves per assembly mode.
-        #[arg(long, default_value_t = 300)]
-        starts: usize,
-        /// Basin hops from the best, per assembly mode.
-        #[arg(long, default_value_t = 300)]
-        hops: usize,
-        /// The search's seed.
-        #[arg(long, default_value_t = 0)]
-        seed: u64,
-        /// The definition file to write (default: standard output).
-        #[arg(short = 'o', long = "output", value_name = "FILE.mech")]
-        output: Option<PathBuf>,
-        /// The result as JSON on standard output: objective, mode, design, angles (rad),
-        /// definition, evaluations, jacobians.
-        #[arg(long)]
-        json: bool,
-    },
+    Synthesize(synthesize::Args),
     /// Writes the Rust source of the `mechanism!` item, to paste into a crate.
     #[command(after_help = "Example:\n  mechanism emit press.mech --name Press > src/press.rs")]
     Emit {
@@ -324,30 +281,7 @@ fn main() -> ExitCode {
             chart(&file, &args, &outputs, &pic)
         }
         Command::Emit { file, name } => emit(&file, name.as_deref()),
-        Command::Synthesize {
-            targets,
-            angles,
-            frame,
-            links,
-            coords,
-            starts,
-            hops,
-            seed,
-            output,
-            json,
-        } => synthesize::run(&synthesize::Args {
-            targets,
-            angles,
-            frame,
-            links,
-            coords,
-            starts,
-            hops,
-            seed,
-            output,
-            json,
-        })
-        .map_err(Failure::Usage),
+        Command::Synthesize(args) => synthesize::run(&args).map_err(Failure::Usage),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -5,33 +5,54 @@
 
 use crate::spec::number;
 use mechanism_synthesis::cases::{self, Case, Found};
+use mechanism_synthesis::fourbar::{circuit_word, Design};
 use std::path::PathBuf;
 use std::time::Instant;
 
-/// The names of a design's first nine numbers, in `Design`'s order.
-const DESIGN: [&str; 9] = ["r1", "r2", "r3", "r4", "rcx", "rcy", "theta0", "x0", "y0"];
-
 /// What `synthesize` is given on the command line.
+#[derive(clap::Args)]
 pub struct Args {
-    /// `X,Y` each.
+    /// A point of the path: X,Y (at least 3).
+    #[arg(
+        long = "target",
+        value_name = "X,Y",
+        required = true,
+        allow_hyphen_values = true
+    )]
     pub targets: Vec<String>,
-    /// Crank angles from the ground link (rad, or with `deg`), one per target.
+    /// The crank angle from the ground link at each target, in order (rad, or with `deg`);
+    /// none: free timing.
+    #[arg(long = "angle", value_name = "ANGLE", allow_hyphen_values = true)]
     pub angles: Vec<String>,
-    /// `THETA0,X0,Y0` (`THETA0` in rad, or with `deg`).
+    /// The frame fixed: THETA0,X0,Y0 (THETA0 in rad, or with `deg`); default free.
+    #[arg(long, value_name = "THETA0,X0,Y0", allow_hyphen_values = true)]
     pub frame: Option<String>,
-    /// `LO:HI` of `r1 .. r4`.
+    /// Bounds of the link lengths r1 .. r4.
+    #[arg(long, value_name = "LO:HI", default_value = "0:60")]
     pub links: String,
-    /// `LO:HI` of `rcx, rcy, x0, y0`.
+    /// Bounds of rcx, rcy, x0, y0.
+    #[arg(
+        long,
+        value_name = "LO:HI",
+        default_value = "-60:60",
+        allow_hyphen_values = true
+    )]
     pub coords: String,
     /// Local solves per assembly mode.
+    #[arg(long, default_value_t = 300)]
     pub starts: usize,
-    /// Basin hops per assembly mode.
+    /// Basin hops from the best, per assembly mode.
+    #[arg(long, default_value_t = 300)]
     pub hops: usize,
     /// The search's seed.
+    #[arg(long, default_value_t = 0)]
     pub seed: u64,
-    /// Where to write the definition (standard output when `None`).
+    /// The definition file to write (default: standard output).
+    #[arg(short = 'o', long = "output", value_name = "FILE.mech")]
     pub output: Option<PathBuf>,
-    /// The result as JSON on standard output (the definition in it).
+    /// The result as JSON on standard output: objective, mode, design, angles (rad),
+    /// definition, evaluations, jacobians.
+    #[arg(long)]
     pub json: bool,
 }
 
@@ -113,24 +134,16 @@ pub fn run(a: &Args) -> Result<(), String> {
     Ok(())
 }
 
-/// `left` for `Mode::Plus`, `right` for `Mode::Minus`.
-fn mode_word(f: &Found) -> &'static str {
-    match f.mode {
-        mechanism_core::Mode::Plus => "left",
-        mechanism_core::Mode::Minus => "right",
-    }
-}
-
 /// The result as one JSON object (numbers round-trip).
 fn json(f: &Found, text: &str) -> String {
-    let design: serde_json::Map<String, serde_json::Value> = DESIGN
+    let design: serde_json::Map<String, serde_json::Value> = Design::NAMES
         .iter()
         .zip(&f.design.0)
         .map(|(n, v)| (n.to_string(), serde_json::json!(v)))
         .collect();
     serde_json::json!({
         "objective": f.objective,
-        "mode": mode_word(f),
+        "mode": circuit_word(f.mode),
         "design": design,
         "angles": f.design.angles(),
         "definition": text,
@@ -143,7 +156,7 @@ fn json(f: &Found, text: &str) -> String {
 /// What a person reads: the objective, the design, the crank angles in
 /// degrees, the cost.
 fn summary(f: &Found, seconds: f64) -> String {
-    let design: Vec<String> = DESIGN
+    let design: Vec<String> = Design::NAMES
         .iter()
         .zip(&f.design.0)
         .map(|(n, v)| format!("{n} = {v:.6}"))
@@ -157,7 +170,7 @@ fn summary(f: &Found, seconds: f64) -> String {
     format!(
         "objective {:.6e} (sum of squared distances), circuit {}\n{}\ncrank angles from the ground link (deg): {}\n{} evaluations, {} Jacobians, {seconds:.2} s; input `phi` = theta0 + crank angle",
         f.objective,
-        mode_word(f),
+        circuit_word(f.mode),
         design.join(", "),
         angles.join(", "),
         f.evaluations,

@@ -5,12 +5,10 @@
 //! `planar_mechanism.Mechanism` reads to sweep or draw the result.
 
 use mechanism_synthesis::cases::{self, Case};
+use mechanism_synthesis::fourbar::{circuit_word, Design};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-
-/// The names of a design's first nine numbers, in `Design`'s order.
-const DESIGN: [&str; 9] = ["r1", "r2", "r3", "r4", "rcx", "rcy", "theta0", "x0", "y0"];
 
 /// Synthesizes a four-bar whose coupler point passes through `targets`
 /// (least squares: the sum of squared distances from the coupler point at
@@ -71,13 +69,9 @@ pub fn synthesize_path<'py>(
     }
     let out = PyDict::new(py);
     out.set_item("objective", found.objective)?;
-    let mode = match found.mode {
-        mechanism_core::Mode::Plus => "left",
-        mechanism_core::Mode::Minus => "right",
-    };
-    out.set_item("mode", mode)?;
+    out.set_item("mode", circuit_word(found.mode))?;
     let design = PyDict::new(py);
-    for (name, value) in DESIGN.iter().zip(&found.design.0) {
+    for (name, value) in Design::NAMES.iter().zip(&found.design.0) {
         design.set_item(*name, *value)?;
     }
     out.set_item("design", design)?;

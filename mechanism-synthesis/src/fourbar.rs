@@ -76,7 +76,20 @@ const TRANSMISSION_WEIGHT: f64 = 1e3;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Design(pub Vec<f64>);
 
+/// The word of the definition's `circuit` for an assembly mode: `left` for
+/// [`Mode::Plus`], `right` for [`Mode::Minus`].
+pub fn circuit_word(mode: Mode) -> &'static str {
+    match mode {
+        Mode::Plus => "left",
+        Mode::Minus => "right",
+    }
+}
+
 impl Design {
+    /// The names of a design's first nine numbers, in order.
+    pub const NAMES: [&'static str; 9] =
+        ["r1", "r2", "r3", "r4", "rcx", "rcy", "theta0", "x0", "y0"];
+
     /// The four-bar of this design in assembly mode `mode`.
     pub fn mechanism(&self, mode: Mode) -> FourBarPath<f64> {
         let d = &self.0;
@@ -107,10 +120,7 @@ impl Design {
     /// the angle from the ground link.
     pub fn definition(&self, mode: Mode) -> String {
         let d = &self.0;
-        let circuit = match mode {
-            Mode::Plus => "left",
-            Mode::Minus => "right",
-        };
+        let circuit = circuit_word(mode);
         format!(
             "pub FourBarPath {{\n    \
              params {{\n        \
