@@ -48,6 +48,7 @@ use mechanism_reference::Dd;
 use methods::{Method, Precision};
 use reference::{Kind, Scene};
 use std::fmt::Write as _;
+use std::path::Path;
 
 /// Interleaved rounds per method (the targets ask for at least 5).
 const ROUNDS: usize = 21;
@@ -284,6 +285,165 @@ fn sci(x: f64) -> String {
     }
 }
 
+/// What one kinematic scene adds to the report.
+struct SceneSection {
+    /// Its table and lines (Markdown).
+    md: String,
+    /// Its issue-5 target lines.
+    targets: Vec<String>,
+    /// Where the reference failed.
+    problems: Vec<String>,
+}
+
+/// One kinematic scene's section: its methods timed and compared with the
+/// reference, the table (and its SVG and CSV in `out_dir`), its target
+/// lines and the reference's failures.
+fn scene_section(scene: &Scene, out_dir: &Path) -> SceneSection {
+    eprintln!("scene {}", scene.name);
+    let mut problems = Vec::new();
+    let grid64 = scene.grid.clone();
+    let r32 = |v: &[f64]| v.iter().map(|&x| x as f32 as f64).collect::<Vec<_>>();
+    let grid32: Vec<Vec<f64>> = grid64.iter().map(|q| r32(q)).collect();
+    let (rates32, accels32) = (r32(&scene.rates), r32(&scene.accels));
+    let mut ms: Vec<Method> = methods::for_scene(scene, out_dir);
+    let gen_of = |p: Precision| {
+        ms.iter()
+            .find(|m| m.precision == p && m.family.starts_with("generated"))
+            .map(|m| m.samples.clone())
+            .expect("a generated method per precision")
+    };
+    let (ref64, p64) = references(
+        scene,
+        &grid64,
+        &scene.rates,
+        &scene.accels,
+        &gen_of(Precision::F64),
+    );
+    let (ref32, p32) = references(scene, &grid32, &rates32, &accels32, &gen_of(Precision::F32));
+    problems.extend(p64);
+    problems.extend(p32);
+    let scale = scales(scene, &ref64);
+    let floor = cos_sin_floor(scene, &grid32, &rates32, &accels32, &scale);
+    let max_res = ref64.iter().flatten().map(|r| r.1).fold(0.0f64, f64::max);
+    for m in ms.iter_mut() {
+        let (g, r) = match m.precision {
+            Precision::F64 => (&grid64, &ref64),
+            Precision::F32 => (&grid32, &ref32),
+        };
+        m.errors = errors(scene, g, r, &scale, &m.samples);
+    }
+    // Timing: every timed method interleaved.
+    let timed: Vec<(&timing::Sweep, usize)> = ms
+        .iter()
+        .filter_map(|m| m.sweep.as_ref().map(|s| (s, grid64.len())))
+        .collect();
+    let ns = timing::interleaved(&timed, ROUNDS, MIN_SAMPLE_NS);
+    let mut it = ns.into_iter();
+    for m in ms.iter_mut() {
+        if m.sweep.is_some() {
+            m.ns = it.next().unwrap_or_default();
+        }
+    }
+    SceneSection {
+        md: scene_table(scene, &ms, &grid64, max_res, floor, out_dir),
+        targets: methods::targets(scene, &ms, floor),
+        problems,
+    }
+}
+
+/// A scene's table of methods (ns, errors), its work-precision SVG and CSV
+/// written to `out_dir`, and the f32 floor line.
+fn scene_table(
+    scene: &Scene,
+    ms: &[Method],
+    grid64: &[Vec<f64>],
+    max_res: f64,
+    floor: (f64, f64),
+    out_dir: &Path,
+) -> String {
+    let mut md = String::new();
+    let _ = writeln!(md, "## {}\n", scene.name);
+    let _ = writeln!(
+        md,
+        "{} grid points; input rates {:?}, accelerations {:?}; reference residual at most {:.1e}.\n",
+        grid64.len(),
+        scene.rates,
+        scene.accels,
+        max_res
+    );
+    let _ = writeln!(
+        md,
+        "| method | ns/eval median | min - max | angle err (rad) | position rel err | rate rel err | worst column | loop residual | failed |"
+    );
+    let _ = writeln!(md, "|---|---:|---:|---:|---:|---:|---|---:|---:|");
+    let mut csv = String::from(
+        "method,precision,ns_median,ns_min,ns_max,angle_abs,pos_rel,rate_rel,all_rel,residual,failures\n",
+    );
+    let mut pts = Vec::new();
+    for m in ms {
+        let (med, lo, hi) = if m.ns.is_empty() {
+            (f64::NAN, f64::NAN, f64::NAN)
+        } else {
+            timing::stats(&m.ns)
+        };
+        let e = m.errors;
+        let _ = writeln!(
+            md,
+            "| {} | {:.1} | {:.1} - {:.1} | {} | {} | {} | {} | {} | {} |",
+            m.name,
+            med,
+            lo,
+            hi,
+            sci(e.angle_abs),
+            sci(e.pos_rel),
+            sci(e.rate_rel),
+            e.worst,
+            sci(e.residual),
+            e.failures
+        );
+        let _ = writeln!(
+            csv,
+            "{},{:?},{med},{lo},{hi},{},{},{},{},{},{}",
+            m.name,
+            m.precision,
+            e.angle_abs,
+            e.pos_rel,
+            e.rate_rel,
+            e.all_rel,
+            e.residual,
+            e.failures
+        );
+        if med.is_finite() {
+            pts.push(svg::Pt {
+                family: m.family.clone(),
+                label: m.name.clone(),
+                ns: med,
+                err: e.all_rel,
+            });
+        }
+    }
+    let file = format!("{}.svg", scene.name.to_lowercase());
+    std::fs::write(
+        out_dir.join(&file),
+        svg::plot(&format!("{}: work-precision", scene.name), &pts, 1e-17),
+    )
+    .expect("write svg");
+    std::fs::write(
+        out_dir.join(format!("{}.csv", scene.name.to_lowercase())),
+        csv,
+    )
+    .expect("write csv");
+    let _ = writeln!(
+        md,
+        "\nf32 floor (conditioning times the rounding of the f32 cos/sin: every input \
+         turned by 2^-25 rad, f64 code): positions {}, rates {} (relative, as in the table).\n",
+        sci(floor.0),
+        sci(floor.1)
+    );
+    let _ = writeln!(md, "Plot: `target/report/{file}`.\n");
+    md
+}
+
 fn main() {
     cli::parse(
         "report",
@@ -340,137 +500,10 @@ fn main() {
     let only_scene = std::env::var("REPORT_SCENE_ONLY").ok();
     let wanted = |name: &str| only_scene.as_deref().is_none_or(|n| n == name);
     for scene in reference::scenes().into_iter().filter(|s| wanted(s.name)) {
-        eprintln!("scene {}", scene.name);
-        let grid64 = scene.grid.clone();
-        let r32 = |v: &[f64]| v.iter().map(|&x| x as f32 as f64).collect::<Vec<_>>();
-        let grid32: Vec<Vec<f64>> = grid64.iter().map(|q| r32(q)).collect();
-        let (rates32, accels32) = (r32(&scene.rates), r32(&scene.accels));
-        let mut ms: Vec<Method> = methods::for_scene(&scene, &out_dir);
-        let gen_of = |p: Precision| {
-            ms.iter()
-                .find(|m| m.precision == p && m.family.starts_with("generated"))
-                .map(|m| m.samples.clone())
-                .expect("a generated method per precision")
-        };
-        let (ref64, p64) = references(
-            &scene,
-            &grid64,
-            &scene.rates,
-            &scene.accels,
-            &gen_of(Precision::F64),
-        );
-        let (ref32, p32) = references(
-            &scene,
-            &grid32,
-            &rates32,
-            &accels32,
-            &gen_of(Precision::F32),
-        );
-        all_problems.extend(p64);
-        all_problems.extend(p32);
-        let scale = scales(&scene, &ref64);
-        let floor = cos_sin_floor(&scene, &grid32, &rates32, &accels32, &scale);
-        let max_res = ref64.iter().flatten().map(|r| r.1).fold(0.0f64, f64::max);
-        for m in ms.iter_mut() {
-            let (g, r) = match m.precision {
-                Precision::F64 => (&grid64, &ref64),
-                Precision::F32 => (&grid32, &ref32),
-            };
-            m.errors = errors(&scene, g, r, &scale, &m.samples);
-        }
-        // Timing: every timed method interleaved.
-        let timed: Vec<(&timing::Sweep, usize)> = ms
-            .iter()
-            .filter_map(|m| m.sweep.as_ref().map(|s| (s, grid64.len())))
-            .collect();
-        let ns = timing::interleaved(&timed, ROUNDS, MIN_SAMPLE_NS);
-        let mut it = ns.into_iter();
-        for m in ms.iter_mut() {
-            if m.sweep.is_some() {
-                m.ns = it.next().unwrap_or_default();
-            }
-        }
-        // Table.
-        let _ = writeln!(md, "## {}\n", scene.name);
-        let _ = writeln!(
-            md,
-            "{} grid points; input rates {:?}, accelerations {:?}; reference residual at most {:.1e}.\n",
-            grid64.len(),
-            scene.rates,
-            scene.accels,
-            max_res
-        );
-        let _ = writeln!(
-            md,
-            "| method | ns/eval median | min - max | angle err (rad) | position rel err | rate rel err | worst column | loop residual | failed |"
-        );
-        let _ = writeln!(md, "|---|---:|---:|---:|---:|---:|---|---:|---:|");
-        let mut csv = String::from(
-            "method,precision,ns_median,ns_min,ns_max,angle_abs,pos_rel,rate_rel,all_rel,residual,failures\n",
-        );
-        let mut pts = Vec::new();
-        for m in &ms {
-            let (med, lo, hi) = if m.ns.is_empty() {
-                (f64::NAN, f64::NAN, f64::NAN)
-            } else {
-                timing::stats(&m.ns)
-            };
-            let e = m.errors;
-            let _ = writeln!(
-                md,
-                "| {} | {:.1} | {:.1} - {:.1} | {} | {} | {} | {} | {} | {} |",
-                m.name,
-                med,
-                lo,
-                hi,
-                sci(e.angle_abs),
-                sci(e.pos_rel),
-                sci(e.rate_rel),
-                e.worst,
-                sci(e.residual),
-                e.failures
-            );
-            let _ = writeln!(
-                csv,
-                "{},{:?},{med},{lo},{hi},{},{},{},{},{},{}",
-                m.name,
-                m.precision,
-                e.angle_abs,
-                e.pos_rel,
-                e.rate_rel,
-                e.all_rel,
-                e.residual,
-                e.failures
-            );
-            if med.is_finite() {
-                pts.push(svg::Pt {
-                    family: m.family.clone(),
-                    label: m.name.clone(),
-                    ns: med,
-                    err: e.all_rel,
-                });
-            }
-        }
-        let file = format!("{}.svg", scene.name.to_lowercase());
-        std::fs::write(
-            out_dir.join(&file),
-            svg::plot(&format!("{}: work-precision", scene.name), &pts, 1e-17),
-        )
-        .expect("write svg");
-        std::fs::write(
-            out_dir.join(format!("{}.csv", scene.name.to_lowercase())),
-            csv,
-        )
-        .expect("write csv");
-        let _ = writeln!(
-            md,
-            "\nf32 floor (conditioning times the rounding of the f32 cos/sin: every input \
-             turned by 2^-25 rad, f64 code): positions {}, rates {} (relative, as in the table).\n",
-            sci(floor.0),
-            sci(floor.1)
-        );
-        let _ = writeln!(md, "Plot: `target/report/{file}`.\n");
-        target_lines.extend(methods::targets(&scene, &ms, floor));
+        let section = scene_section(&scene, &out_dir);
+        md += &section.md;
+        target_lines.extend(section.targets);
+        all_problems.extend(section.problems);
     }
     if only_scene.is_some() {
         for l in &target_lines {
