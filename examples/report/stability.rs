@@ -417,17 +417,10 @@ fn worst_ratio(v: &[(f64, f64)], f: impl Fn(f64, f64) -> f64) -> f64 {
 }
 
 /// The markdown section; writes the SVG plots into `out_dir`.
-pub fn section(out_dir: &Path) -> String {
-    let outer = rrr_edge(true);
-    let inner = rrr_edge(false);
-    let rrp_e = rrp_edge();
-    let rpr_e = rpr_edge();
-    let naive = naive_height();
-    let rates = rrr_rates();
-    let stiff_v = stiff();
-
-    // Timing: one evaluation of each primitive at a pose 1e-8 from its edge
-    // and at a comfortable pose (medians of 31 interleaved rounds).
+/// One evaluation of each primitive at a pose 1e-8 from its edge and at a
+/// comfortable pose, ns (medians of 31 interleaved rounds): RRR at the
+/// edge and in the middle, RRP and RPR at the edge, the RRR's velocity.
+fn primitive_times() -> Vec<f64> {
     let (a, b_edge, b_mid) = (
         p(0.31, -0.72),
         p(0.31 + 2.2 * (1.0 - 1e-8), -0.72),
@@ -457,7 +450,7 @@ pub fn section(out_dir: &Path) -> String {
     let va = Vector2::new(0.3, -1.1);
     let mut t_vel =
         || rrr::velocity(black_box(&pos), Some(black_box(&va)), None).map_or(0.0, |v| v.omega1);
-    let times = time_interleaved(
+    time_interleaved(
         &mut [
             &mut t_rrr_edge,
             &mut t_rrr_mid,
@@ -467,8 +460,20 @@ pub fn section(out_dir: &Path) -> String {
         ],
         20_000,
         31,
-    );
+    )
+}
 
+/// The three figures of the section, written to `out_dir`: position error
+/// near the edge (`outer`, `inner`, `rrp_e`, `rpr_e`, `naive`), rate error
+/// near toggle (`rates`), the stiff group's reactions (`stiff_v`).
+fn write_figures(
+    out_dir: &Path,
+    edges: [&[(f64, f64)]; 4],
+    naive: &[(f64, f64, f64)],
+    rates: &[(f64, f64)],
+    stiff_v: &[(f64, f64, f64)],
+) {
+    let [outer, inner, rrp_e, rpr_e] = edges;
     let bound = |c: f64| -> Vec<(f64, f64)> {
         deltas()
             .into_iter()
@@ -482,22 +487,22 @@ pub fn section(out_dir: &Path) -> String {
         &[
             Series {
                 name: "RRR outer".into(),
-                points: outer.clone(),
+                points: outer.to_vec(),
                 dashed: false,
             },
             Series {
                 name: "RRR inner".into(),
-                points: inner.clone(),
+                points: inner.to_vec(),
                 dashed: false,
             },
             Series {
                 name: "RRP tangency".into(),
-                points: rrp_e.clone(),
+                points: rrp_e.to_vec(),
                 dashed: false,
             },
             Series {
                 name: "RPR tangency".into(),
-                points: rpr_e.clone(),
+                points: rpr_e.to_vec(),
                 dashed: false,
             },
             Series {
@@ -524,7 +529,7 @@ pub fn section(out_dir: &Path) -> String {
         &[
             Series {
                 name: "RRR rates".into(),
-                points: rates.clone(),
+                points: rates.to_vec(),
                 dashed: false,
             },
             Series {
@@ -560,6 +565,25 @@ pub fn section(out_dir: &Path) -> String {
             eprintln!("stability: cannot write {name}: {e}");
         }
     }
+}
+
+pub fn section(out_dir: &Path) -> String {
+    let outer = rrr_edge(true);
+    let inner = rrr_edge(false);
+    let rrp_e = rrp_edge();
+    let rpr_e = rpr_edge();
+    let naive = naive_height();
+    let rates = rrr_rates();
+    let stiff_v = stiff();
+
+    let times = primitive_times();
+    write_figures(
+        out_dir,
+        [&outer, &inner, &rrp_e, &rpr_e],
+        &naive,
+        &rates,
+        &stiff_v,
+    );
 
     let mut md = String::new();
     let _ = writeln!(md, "## Stability\n");
