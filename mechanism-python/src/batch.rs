@@ -3,8 +3,7 @@
 //! per output), with a per-row error instead of numbers for a pose that
 //! fails. No Python object is touched here.
 
-use crate::shared::Shared;
-use mechanism_codegen::runtime::{Analysis, Forces, Mechanism, Position, Rates};
+use mechanism_codegen::runtime::{Analysis, Forces, Mechanism, Position, Rates, Solver};
 use mechanism_core::Error;
 use std::ops::Range;
 
@@ -62,7 +61,7 @@ pub struct Store {
 
 impl Store {
     /// Storage for `m`'s rows.
-    pub fn new(m: &Mechanism) -> Self {
+    pub fn new(m: &Solver) -> Self {
         Store {
             pos: m.new_position(),
             vel: m.new_rates(),
@@ -78,7 +77,7 @@ impl Store {
 /// `depth`), solved in `store` (from [`Store::new`] of the same `m`). On
 /// an error nothing is appended.
 pub fn row(
-    m: &Mechanism,
+    m: &Solver,
     q: &[f64],
     rates: &[f64],
     accels: &[f64],
@@ -137,13 +136,12 @@ pub type Column<'a> = &'a [f64];
 /// gets a run of 256 values.
 const BLOCK: usize = 256;
 
-/// The fewest rows a worker thread of [`par_sweep`] is given: a worker
-/// reads the definition's text again for its own copy of the run-time
-/// mechanism (about 5 ms for a four-bar, the check included), the time of
-/// some 20 000 rows of its position sweep. Measured on 2 logical cores
-/// (docs/python.md): a four-bar's full sweep of 10^5 rows on two threads
-/// took as long as on one, of 3 x 10^5 rows 1.6 times less.
-pub const ROWS_PER_THREAD: usize = 65_536;
+/// The fewest rows a worker thread of [`par_sweep`] is given. The workers
+/// share the definition's compiled [`Solver`], so a worker costs its
+/// start and join (tens of microseconds) and its storage; 8192 rows of a
+/// four-bar's position sweep take about 2 ms. Measured on 2 logical cores
+/// (docs/python.md).
+pub const ROWS_PER_THREAD: usize = 8_192;
 
 /// The inputs of a sweep's rows: one column per input, rate and
 /// acceleration (in `Mechanism::inputs` order; rates and accelerations
@@ -162,7 +160,7 @@ pub struct Given<'a> {
 /// Rows `rows` of a sweep into `out` (one slice per key of [`keys`], each
 /// `rows.len()` long: row `i` at `i - rows.start`) and `errors` (likewise).
 fn sweep_rows(
-    m: &Mechanism,
+    m: &Solver,
     given: Given<'_>,
     depth: Depth,
     rows: Range<usize>,
@@ -215,24 +213,25 @@ fn columns(width: usize, n: usize) -> Batch {
 pub fn sweep(m: &Mechanism, given: Given<'_>, depth: Depth, n: usize) -> Batch {
     let mut batch = columns(keys(m, depth).len(), n);
     let mut out: Vec<&mut [f64]> = batch.columns.iter_mut().map(Vec::as_mut_slice).collect();
-    sweep_rows(m, given, depth, 0..n, &mut out, &mut batch.errors);
+    sweep_rows(m.solver(), given, depth, 0..n, &mut out, &mut batch.errors);
     batch
 }
 
-/// Every row `i < n` of a sweep on `threads` threads (at least one; each
-/// given a contiguous run of whole blocks), started here and joined before
-/// it returns: no pool outlives the call, so a process that forks later
-/// (Python's multiprocessing) inherits no thread. Each thread works on its
-/// own copy of the definition ([`Shared::with`]); the rows are the same
-/// numbers as [`sweep`]'s, bit for bit. `Err`: a copy could not be made.
+/// Every row `i < n` of a sweep of `m` on `threads` threads (at least one;
+/// each given a contiguous run of whole blocks), started here and joined
+/// before it returns: no pool outlives the call, so a process that forks
+/// later (Python's multiprocessing) inherits no thread. The threads share
+/// `m`'s compiled [`Solver`] (`Send + Sync`); the rows are the same numbers
+/// as [`sweep`]'s, bit for bit. `Err`: a thread panicked (none does: the
+/// rows' errors are values).
 pub fn par_sweep(
-    shared: &Shared,
+    m: &Mechanism,
     given: Given<'_>,
     depth: Depth,
     n: usize,
     threads: usize,
 ) -> Result<Batch, String> {
-    let width = shared.with(|m| keys(m, depth).len())?;
+    let (solver, width) = (m.solver(), keys(m, depth).len());
     let chunk = n.div_ceil(threads.max(1)).div_ceil(BLOCK).max(1) * BLOCK;
     let mut batch = columns(width, n);
     let pieces = n.div_ceil(chunk);
@@ -242,26 +241,21 @@ pub fn par_sweep(
             out.push(piece);
         }
     }
-    let done: Vec<Result<(), String>> = std::thread::scope(|s| {
+    let joined: Vec<bool> = std::thread::scope(|s| {
         let workers: Vec<_> = outs
             .into_iter()
             .zip(batch.errors.chunks_mut(chunk))
             .enumerate()
             .map(|(k, (mut out, errors))| {
                 let rows = k * chunk..k * chunk + errors.len();
-                s.spawn(move || {
-                    shared.with(|m| sweep_rows(m, given, depth, rows, &mut out, errors))
-                })
+                s.spawn(move || sweep_rows(solver, given, depth, rows, &mut out, errors))
             })
             .collect();
-        workers
-            .into_iter()
-            .map(|w| {
-                w.join()
-                    .unwrap_or_else(|_| Err("a sweep thread failed".into()))
-            })
-            .collect()
+        workers.into_iter().map(|w| w.join().is_ok()).collect()
     });
-    done.into_iter().collect::<Result<(), String>>()?;
-    Ok(batch)
+    if joined.iter().all(|&ok| ok) {
+        Ok(batch)
+    } else {
+        Err("a sweep thread failed".into())
+    }
 }

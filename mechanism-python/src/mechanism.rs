@@ -198,8 +198,8 @@ impl Mechanism {
     ) -> PyResult<Vec<f64>> {
         let mut values = Vec::new();
         self.rt(|m| {
-            let mut store = batch::Store::new(m);
-            batch::row(m, q, rates, accels, depth, &mut store, &mut values)
+            let mut store = batch::Store::new(m.solver());
+            batch::row(m.solver(), q, rates, accels, depth, &mut store, &mut values)
         })?
         .map_err(|e| self.pose_error(py, &e, q))?;
         Ok(values)
@@ -608,14 +608,17 @@ impl Mechanism {
             cores.min(n / batch::ROWS_PER_THREAD).max(1)
         });
         // The solve needs no Python object: other Python threads run meanwhile.
-        let batch = py.detach(|| {
-            if threads == 1 {
-                self.rt(|m| batch::sweep(m, given, depth, n))
-            } else {
-                batch::par_sweep(&self.shared, given, depth, n, threads)
-                    .map_err(PyRuntimeError::new_err)
-            }
-        })?;
+        let batch = py
+            .detach(|| {
+                self.rt(|m| {
+                    if threads == 1 {
+                        Ok(batch::sweep(m, given, depth, n))
+                    } else {
+                        batch::par_sweep(m, given, depth, n, threads)
+                    }
+                })
+            })?
+            .map_err(PyRuntimeError::new_err)?;
         self.sweep_dict(py, &shape, &flat[..k], batch, depth)
     }
 

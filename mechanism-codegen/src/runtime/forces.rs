@@ -181,7 +181,7 @@ impl ForcePlan {
             return ForcePlan::default();
         }
         let k = &m.model.kinetics;
-        let slots: &Layout = &m.slots;
+        let slots: &Layout = &m.solver.slots;
         let gravity = k
             .gravity
             .as_ref()
@@ -338,7 +338,13 @@ impl Mechanism {
         match self.loads.get_mut(name) {
             Some(v) => {
                 *v = value;
-                self.compiled.forces = ForcePlan::new(self);
+                let forces = ForcePlan::new(self);
+                match std::sync::Arc::get_mut(&mut self.solver.compiled) {
+                    Some(c) => c.forces = forces,
+                    // A clone of the solver is in use elsewhere: a fresh
+                    // compiled plan for this definition, the clone keeps its own.
+                    None => self.compile(),
+                }
                 Ok(())
             }
             None => Err(format!(
@@ -386,120 +392,6 @@ impl Mechanism {
         push("condition".into(), "1");
         push("power_residual".into(), "1");
         cols
-    }
-
-    /// Storage for [`Mechanism::forces_into`].
-    pub fn new_forces(&self) -> Forces {
-        let unit = match &self.compiled.forces.motors {
-            Some(_) => vec![self.new_rates(), self.new_rates()],
-            None => Vec::new(),
-        };
-        Forces {
-            values: Vec::new(),
-            condition: f64::NAN,
-            power_residual: f64::NAN,
-            scratch: Scratch {
-                loads: vec![None; self.slots.link_names.len() + 1],
-                unit,
-            },
-        }
-    }
-
-    /// The force analysis at a solved pose `pos`, its velocity `vel` and
-    /// acceleration `acc` (from [`Mechanism::velocity`] and
-    /// [`Mechanism::acceleration`]), with the current load values
-    /// ([`Mechanism::set_load`]) and parameters. The values in
-    /// [`Mechanism::force_columns`] order; signs and units in the module
-    /// documentation. Errors as the generated `forces()`: the group whose
-    /// force system is singular or whose loads are not finite, a mass not
-    /// positive or a moment of inertia negative (named by the group that
-    /// creates its link). A definition without a force analysis: an error
-    /// (`NonFinite`, "force analysis (the definition has no masses or
-    /// loads)").
-    pub fn forces(&self, pos: &Position, vel: &Rates, acc: &Rates) -> Result<Forces, Error<f64>> {
-        let mut out = self.new_forces();
-        self.forces_into(pos, vel, acc, &mut out)?;
-        Ok(out)
-    }
-
-    /// [`Mechanism::forces`] into `out` (from [`Mechanism::new_forces`]),
-    /// allocating nothing once its buffers have grown to their size: the
-    /// known loads, each solved step's `forces` in the reverse of the solve
-    /// order, then the motors.
-    pub fn forces_into(
-        &self,
-        pos: &Position,
-        vel: &Rates,
-        acc: &Rates,
-        out: &mut Forces,
-    ) -> Result<(), Error<f64>> {
-        self.force_walk(pos, vel, acc, out, None)
-    }
-
-    /// The walk of [`Mechanism::forces_into`]; with `names`, each field's
-    /// name and kind as the walk writes it.
-    fn force_walk(
-        &self,
-        pos: &Position,
-        vel: &Rates,
-        acc: &Rates,
-        out: &mut Forces,
-        names: Option<&mut Vec<(String, Held)>>,
-    ) -> Result<(), Error<f64>> {
-        if !self.has_forces() {
-            return Err(Error::new(
-                Primitive::LinkPoint,
-                mechanism_core::Fault::NonFinite {
-                    what: "force analysis (the definition has no masses or loads)",
-                },
-            ));
-        }
-        let n = self.model.inputs.len();
-        let Scratch { loads, unit } = &mut out.scratch;
-        self.fits(
-            pos.solved
-                && vel.solved
-                && acc.solved
-                && pos.pose.fits(&self.slots, n)
-                && vel.motion.fits(&self.slots, n)
-                && acc.motion.fits(&self.slots, n)
-                && loads.len() == self.slots.link_names.len() + 1
-                && unit.len()
-                    == if self.compiled.forces.motors.is_some() {
-                        2
-                    } else {
-                        0
-                    },
-        )?;
-        loads.fill(None);
-        out.values.clear();
-        let (mut power, mut conditions) = (PowerSum::default(), RunningMin(vel.condition));
-        let mut cx = ForceRunCx {
-            pose: &pos.pose,
-            vel: &vel.motion,
-            acc: &acc.motion,
-            layout: &self.slots,
-            loads,
-            values: &mut out.values,
-            power: &mut power,
-            conditions: &mut conditions,
-            names,
-        };
-        let c = &self.compiled;
-        c.forces.known_loads(&mut cx)?;
-        for &i in c.force_walk.iter().rev() {
-            let step = &c.steps[i.0];
-            step.forces(&mut cx).map_err(|e| e.in_group(step.group()))?;
-        }
-        self.motors(pos, &mut cx, unit)?;
-        let (condition, power_residual) = (conditions.0, power.residual());
-        out.values.extend([condition, power_residual]);
-        if let Some(bad) = super::first_non_finite(&out.values) {
-            return Err(super::non_finite(bad));
-        }
-        out.condition = condition;
-        out.power_residual = power_residual;
-        Ok(())
     }
 
     /// A load value (`Value`) with the current parameters and loads.
@@ -567,7 +459,8 @@ impl Mechanism {
         let turning_name = parts
             .first()
             .map_or_else(|| LinkName::new(""), |p| LinkName::of(&p.link));
-        let turning = self.slots.turning[self.slots.link_named(&turning_name).index()];
+        let turning =
+            self.solver.slots.turning[self.solver.slots.link_named(&turning_name).index()];
         let one = parts.len() == 1;
         let mut out = Vec::new();
         let mut inertias = Vec::new();
@@ -578,14 +471,14 @@ impl Mechanism {
                 format!(" (part {})", k + 1)
             };
             let j = m.inertia.as_ref().filter(|j| j.fold() != Some(0.0));
-            let at = self.slots.point_named(&PointName::of(&m.at));
+            let at = self.solver.slots.point_named(&PointName::of(&m.at));
             let mass = first(self.checked(&m.mass, link, &part, true));
             let j_one = j
                 .filter(|_| one && turning.is_some())
                 .map(|j| first(self.checked(j, link, "", false)));
             out.push(MassPart {
                 at,
-                moving: self.slots.moving[at.index()],
+                moving: self.solver.slots.moving[at.index()],
                 mass,
                 j: j_one,
             });
@@ -608,7 +501,7 @@ impl Mechanism {
             }
         });
         LinkMasses {
-            link: self.slots.link_named(link),
+            link: self.solver.slots.link_named(link),
             turning,
             parts: out,
             inertia,
@@ -633,7 +526,7 @@ impl Mechanism {
         let turning = |link: &Ident| {
             self.plan
                 .turning_link(&LinkName::of(link))
-                .map(|l| self.slots.link_named(&l))
+                .map(|l| self.solver.slots.link_named(&l))
         };
         let links = model
             .kinetics
@@ -654,7 +547,8 @@ impl Mechanism {
             drive: [drive(x), drive(y)],
         })
     }
-
+}
+impl super::Solver {
     /// The motors' torques of an inverse-kinematics definition
     /// (`ForceEmitter::motors`): the rate map from two velocity
     /// evaluations at unit rates of the target's inputs (into `unit`),
@@ -698,7 +592,146 @@ impl Mechanism {
         }
         Ok(())
     }
+
+    /// Storage for [`Mechanism::forces_into`].
+    pub fn new_forces(&self) -> Forces {
+        let unit = match &self.compiled.forces.motors {
+            Some(_) => vec![self.new_rates(), self.new_rates()],
+            None => Vec::new(),
+        };
+        Forces {
+            values: Vec::new(),
+            condition: f64::NAN,
+            power_residual: f64::NAN,
+            scratch: Scratch {
+                loads: vec![None; self.slots.link_names.len() + 1],
+                unit,
+            },
+        }
+    }
+
+    /// The force analysis at a solved pose `pos`, its velocity `vel` and
+    /// acceleration `acc` (from [`Mechanism::velocity`] and
+    /// [`Mechanism::acceleration`]), with the current load values
+    /// ([`Mechanism::set_load`]) and parameters. The values in
+    /// [`Mechanism::force_columns`] order; signs and units in the module
+    /// documentation. Errors as the generated `forces()`: the group whose
+    /// force system is singular or whose loads are not finite, a mass not
+    /// positive or a moment of inertia negative (named by the group that
+    /// creates its link). A definition without a force analysis: an error
+    /// (`NonFinite`, "force analysis (the definition has no masses or
+    /// loads)").
+    pub fn forces(&self, pos: &Position, vel: &Rates, acc: &Rates) -> Result<Forces, Error<f64>> {
+        let mut out = self.new_forces();
+        self.forces_into(pos, vel, acc, &mut out)?;
+        Ok(out)
+    }
+
+    /// [`Mechanism::forces`] into `out` (from [`Mechanism::new_forces`]),
+    /// allocating nothing once its buffers have grown to their size: the
+    /// known loads, each solved step's `forces` in the reverse of the solve
+    /// order, then the motors.
+    pub fn forces_into(
+        &self,
+        pos: &Position,
+        vel: &Rates,
+        acc: &Rates,
+        out: &mut Forces,
+    ) -> Result<(), Error<f64>> {
+        self.force_walk(pos, vel, acc, out, None)
+    }
+
+    /// The walk of [`Mechanism::forces_into`]; with `names`, each field's
+    /// name and kind as the walk writes it.
+    fn force_walk(
+        &self,
+        pos: &Position,
+        vel: &Rates,
+        acc: &Rates,
+        out: &mut Forces,
+        names: Option<&mut Vec<(String, Held)>>,
+    ) -> Result<(), Error<f64>> {
+        if !self.forces {
+            return Err(Error::new(
+                Primitive::LinkPoint,
+                mechanism_core::Fault::NonFinite {
+                    what: "force analysis (the definition has no masses or loads)",
+                },
+            ));
+        }
+        let n = self.inputs;
+        let Scratch { loads, unit } = &mut out.scratch;
+        self.fits(
+            pos.solved
+                && vel.solved
+                && acc.solved
+                && pos.pose.fits(&self.slots, n)
+                && vel.motion.fits(&self.slots, n)
+                && acc.motion.fits(&self.slots, n)
+                && loads.len() == self.slots.link_names.len() + 1
+                && unit.len()
+                    == if self.compiled.forces.motors.is_some() {
+                        2
+                    } else {
+                        0
+                    },
+        )?;
+        loads.fill(None);
+        out.values.clear();
+        let (mut power, mut conditions) = (PowerSum::default(), RunningMin(vel.condition));
+        let mut cx = ForceRunCx {
+            pose: &pos.pose,
+            vel: &vel.motion,
+            acc: &acc.motion,
+            layout: &self.slots,
+            loads,
+            values: &mut out.values,
+            power: &mut power,
+            conditions: &mut conditions,
+            names,
+        };
+        let c = &self.compiled;
+        c.forces.known_loads(&mut cx)?;
+        for &i in c.force_walk.iter().rev() {
+            let step = &c.steps[i.0];
+            step.forces(&mut cx).map_err(|e| e.in_group(step.group()))?;
+        }
+        self.motors(pos, &mut cx, unit)?;
+        let (condition, power_residual) = (conditions.0, power.residual());
+        out.values.extend([condition, power_residual]);
+        if let Some(bad) = super::first_non_finite(&out.values) {
+            return Err(super::non_finite(bad));
+        }
+        out.condition = condition;
+        out.power_residual = power_residual;
+        Ok(())
+    }
 }
+
+/// The force analysis through [`Mechanism::solver`] (documented there).
+impl Mechanism {
+    /// [`super::Solver::new_forces`].
+    pub fn new_forces(&self) -> Forces {
+        self.solver.new_forces()
+    }
+
+    /// [`super::Solver::forces`].
+    pub fn forces(&self, pos: &Position, vel: &Rates, acc: &Rates) -> Result<Forces, Error<f64>> {
+        self.solver.forces(pos, vel, acc)
+    }
+
+    /// [`super::Solver::forces_into`].
+    pub fn forces_into(
+        &self,
+        pos: &Position,
+        vel: &Rates,
+        acc: &Rates,
+        out: &mut Forces,
+    ) -> Result<(), Error<f64>> {
+        self.solver.forces_into(pos, vel, acc, out)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::{Held, Mechanism, PowerSum};
@@ -732,7 +765,8 @@ mod tests {
         let a = m.acceleration(&p, &v, &[0.5]).unwrap();
         let mut out = m.new_forces();
         let mut names = Vec::new();
-        m.force_walk(&p, &v, &a, &mut out, Some(&mut names))
+        m.solver
+            .force_walk(&p, &v, &a, &mut out, Some(&mut names))
             .unwrap();
         let mut cols = Vec::new();
         for (n, held) in &names {

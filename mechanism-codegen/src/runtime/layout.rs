@@ -122,7 +122,7 @@ impl Mechanism {
     /// +x): its axis, a block's along its guide. `None`: no such link.
     pub fn link_direction(&self, pos: &Position, link: &str) -> Option<f64> {
         let info = self.plan.links.get(&LinkName::new(link))?;
-        let step = self.compiled.steps.get(info.stmt.0)?;
+        let step = self.solver.compiled.steps.get(info.stmt.0)?;
         let d = step.link_dir(info.index, &pos.pose);
         let a = geometry::angle(&d);
         a.is_finite().then_some(a)

@@ -154,7 +154,6 @@ struct Compiled {
 pub struct Mechanism {
     model: Model,
     plan: Plan,
-    slots: Arc<run::Layout>,
     params: BTreeMap<String, f64>,
     /// What the check found (the triads' tracked assemblies) and the
     /// modes set at run time ([`Mechanism::set_mode`]), which the position
@@ -162,7 +161,8 @@ pub struct Mechanism {
     known: kinds::Known,
     /// The `loads { .. }` values ([`Mechanism::set_load`]).
     loads: BTreeMap<String, f64>,
-    compiled: Compiled,
+    /// The compiled plan and slots ([`Solver`]).
+    solver: Solver,
 }
 
 /// The name `s` with a `'static` lifetime (errors name their group so).
@@ -207,14 +207,8 @@ impl Mechanism {
             .map(|(n, v)| (n.to_string(), *v))
             .collect();
         let slots = Arc::new(crate::slots::layout(&model, &plan));
-        let mut m = Mechanism {
-            model,
-            plan,
-            slots,
-            params,
-            known: findings.known,
-            loads,
-            compiled: Compiled {
+        let solver = Solver {
+            compiled: Arc::new(Compiled {
                 steps: Vec::new(),
                 solve: Vec::new(),
                 rate_walk: Vec::new(),
@@ -222,7 +216,18 @@ impl Mechanism {
                 pos_out: Vec::new(),
                 rate_out: RateOut::default(),
                 forces: forces::ForcePlan::default(),
-            },
+            }),
+            slots,
+            inputs: model.inputs.len(),
+            forces: model.level >= crate::model::Level::Forces,
+        };
+        let mut m = Mechanism {
+            model,
+            plan,
+            params,
+            known: findings.known,
+            loads,
+            solver,
         };
         m.compile();
         Ok(m)
@@ -232,7 +237,7 @@ impl Mechanism {
     /// every name resolved to its slot, every dimension valued.
     fn compile(&mut self) {
         let cx = Compile {
-            layout: &self.slots,
+            layout: &self.solver.slots,
             params: &self.params,
         };
         let stmts = &self.model.stmts;
@@ -252,9 +257,9 @@ impl Mechanism {
         let mut pos_out = Vec::new();
         let mut rate_out = RateOut::default();
         for p in &out.points {
-            let slot = self.slots.point_named(&PointName::of(p));
+            let slot = self.solver.slots.point_named(&PointName::of(p));
             pos_out.push(PosOut::Point(slot));
-            let moving = self.slots.moving[slot.index()];
+            let moving = self.solver.slots.moving[slot.index()];
             rate_out.points.push(moving.then_some(slot));
         }
         for link in &out.links {
@@ -268,7 +273,7 @@ impl Mechanism {
             let turning = self.plan.turning_link(&name);
             rate_out
                 .links
-                .push(turning.map(|l| self.slots.link_named(&l)));
+                .push(turning.map(|l| self.solver.slots.link_named(&l)));
         }
         for s in &out.slides {
             pos_out.push(PosOut::Slide {
@@ -276,12 +281,13 @@ impl Mechanism {
                 k: s.slot,
             });
             let step = self
+                .solver
                 .slots
                 .point_named(&PointName::of(&self.model.stmts[s.stmt].name));
             rate_out.slides.push((StepSlot::of(step), s.slot));
         }
         let forces = forces::ForcePlan::new(self);
-        self.compiled = Compiled {
+        self.solver.compiled = Arc::new(Compiled {
             steps,
             solve,
             rate_walk,
@@ -289,7 +295,7 @@ impl Mechanism {
             pos_out,
             rate_out,
             forces,
-        };
+        });
     }
 
     /// The type name of the definition (`Mechanism` for a body alone).
@@ -417,10 +423,124 @@ impl Mechanism {
         }
         cols
     }
+}
 
+/// The first value of `values` that is not finite, if any: one pass
+/// without a branch per value (`&` of every `is_finite`, which the
+/// compiler vectorizes), then a search only when one is found.
+fn first_non_finite(values: &[f64]) -> Option<f64> {
+    if values.iter().fold(true, |ok, v| ok & v.is_finite()) {
+        return None;
+    }
+    values.iter().copied().find(|v| !v.is_finite())
+}
+
+/// The error of an output that is not finite (none of the primitives let
+/// one through; the walk checks again, as no `Ok` may hold a NaN).
+fn non_finite(_value: f64) -> Error<f64> {
+    Error::new(
+        mechanism_core::Primitive::LinkPoint,
+        mechanism_core::Fault::NonFinite { what: "an output" },
+    )
+}
+
+/// `a`, `b` (or "none").
+fn names<T: std::fmt::Display>(it: impl IntoIterator<Item = T>) -> String {
+    let v: Vec<String> = it.into_iter().map(|n| format!("`{n}`")).collect();
+    if v.is_empty() {
+        "none".into()
+    } else {
+        v.join(", ")
+    }
+}
+
+/// The evaluations, through [`Mechanism::solver`]'s methods (documented
+/// there).
+impl Mechanism {
+    /// The evaluation part of this definition, to share with threads (clone
+    /// it) or to call directly.
+    pub fn solver(&self) -> &Solver {
+        &self.solver
+    }
+
+    /// [`Solver::new_position`].
+    pub fn new_position(&self) -> Position {
+        self.solver.new_position()
+    }
+
+    /// [`Solver::new_rates`].
+    pub fn new_rates(&self) -> Rates {
+        self.solver.new_rates()
+    }
+
+    /// [`Solver::position`].
+    pub fn position(&self, q: &[f64]) -> Result<Position, Error<f64>> {
+        self.solver.position(q)
+    }
+
+    /// [`Solver::position_into`].
+    pub fn position_into(&self, q: &[f64], pos: &mut Position) -> Result<(), Error<f64>> {
+        self.solver.position_into(q, pos)
+    }
+
+    /// [`Solver::velocity`].
+    pub fn velocity(&self, pos: &Position, rates: &[f64]) -> Result<Rates, Error<f64>> {
+        self.solver.velocity(pos, rates)
+    }
+
+    /// [`Solver::velocity_into`].
+    pub fn velocity_into(
+        &self,
+        pos: &Position,
+        rates: &[f64],
+        vel: &mut Rates,
+    ) -> Result<(), Error<f64>> {
+        self.solver.velocity_into(pos, rates, vel)
+    }
+
+    /// [`Solver::acceleration`].
+    pub fn acceleration(
+        &self,
+        pos: &Position,
+        vel: &Rates,
+        accels: &[f64],
+    ) -> Result<Rates, Error<f64>> {
+        self.solver.acceleration(pos, vel, accels)
+    }
+
+    /// [`Solver::acceleration_into`].
+    pub fn acceleration_into(
+        &self,
+        pos: &Position,
+        vel: &Rates,
+        accels: &[f64],
+        acc: &mut Rates,
+    ) -> Result<(), Error<f64>> {
+        self.solver.acceleration_into(pos, vel, accels, acc)
+    }
+}
+
+/// What evaluating a definition takes, apart from the definition itself:
+/// its compiled steps with the current parameters, modes and loads, and
+/// its slot layout. Cheap to clone (shared pointers) and `Send + Sync`,
+/// unlike [`Mechanism`] (which holds the parser's tokens): threads that
+/// sweep one definition share one (`Mechanism::solver`). A change of a
+/// parameter, mode or load on the `Mechanism` does not reach a clone made
+/// before it.
+#[derive(Clone)]
+pub struct Solver {
+    compiled: Arc<Compiled>,
+    slots: Arc<run::Layout>,
+    /// The number of driver inputs.
+    inputs: usize,
+    /// Whether the definition has a force analysis.
+    forces: bool,
+}
+
+impl Solver {
     /// The error of a slice that does not hold one value per input.
     fn arity(&self, q: &[f64]) -> Result<(), Error<f64>> {
-        if q.len() == self.model.inputs.len() {
+        if q.len() == self.inputs {
             Ok(())
         } else {
             Err(Error::new(
@@ -437,7 +557,7 @@ impl Mechanism {
     pub fn new_position(&self) -> Position {
         Position {
             values: Vec::with_capacity(self.compiled.pos_out.len() + 2),
-            pose: RunPose::new(&self.slots, self.model.inputs.len()),
+            pose: RunPose::new(&self.slots, self.inputs),
             slots: Arc::clone(&self.slots),
             solved: false,
         }
@@ -449,7 +569,7 @@ impl Mechanism {
         Rates {
             values: Vec::with_capacity(self.compiled.rate_out.len()),
             condition: f64::NAN,
-            motion: Motion::new(&self.slots, self.model.inputs.len()),
+            motion: Motion::new(&self.slots, self.inputs),
             solved: false,
         }
     }
@@ -617,34 +737,5 @@ impl Mechanism {
         };
         out.solved = true;
         Ok(())
-    }
-}
-
-/// The first value of `values` that is not finite, if any: one pass
-/// without a branch per value (`&` of every `is_finite`, which the
-/// compiler vectorizes), then a search only when one is found.
-fn first_non_finite(values: &[f64]) -> Option<f64> {
-    if values.iter().fold(true, |ok, v| ok & v.is_finite()) {
-        return None;
-    }
-    values.iter().copied().find(|v| !v.is_finite())
-}
-
-/// The error of an output that is not finite (none of the primitives let
-/// one through; the walk checks again, as no `Ok` may hold a NaN).
-fn non_finite(_value: f64) -> Error<f64> {
-    Error::new(
-        mechanism_core::Primitive::LinkPoint,
-        mechanism_core::Fault::NonFinite { what: "an output" },
-    )
-}
-
-/// `a`, `b` (or "none").
-fn names<T: std::fmt::Display>(it: impl IntoIterator<Item = T>) -> String {
-    let v: Vec<String> = it.into_iter().map(|n| format!("`{n}`")).collect();
-    if v.is_empty() {
-        "none".into()
-    } else {
-        v.join(", ")
     }
 }

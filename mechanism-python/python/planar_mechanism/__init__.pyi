@@ -243,7 +243,7 @@ class Mechanism:
         holds NaN. Check ``ok`` (or ``error``) before using a row.
 
         ``threads``: how many threads solve the rows (``None``: one per
-        core, each given at least 65536 rows, so a short sweep stays on
+        core, each given at least 8192 rows, so a short sweep stays on
         the calling thread; ``1``: the calling thread only). The threads
         are started and joined within the call (nothing is left running
         for a later ``fork``); the GIL is released meanwhile. The numbers
