@@ -277,6 +277,10 @@ fn synthesize_fits_a_known_crank_rocker_and_writes_a_definition_the_table_reads(
             ],
             "lo < hi",
         ),
+        (
+            vec!["--target=1,2", "--target=3,4", "--target=5,6", "--starts=0"],
+            "starts = 0",
+        ),
     ] {
         let mut a = vec!["synthesize"];
         a.extend(bad);

@@ -217,9 +217,19 @@ pub const USER_ITERATIONS: usize = 30;
 /// [`solve`] with `starts` starts and `hops` basin hops per assembly mode,
 /// [`USER_SCREEN`] candidates per start and [`USER_ITERATIONS`] iterations
 /// per local solve: what the Python package's `synthesize_path` and the
-/// `mechanism synthesize` command run.
-pub fn solve_user(case: &Case, starts: usize, hops: usize, seed: u64) -> Found {
-    solve(case, starts, USER_SCREEN, USER_ITERATIONS, hops, seed)
+/// `mechanism synthesize` command run. `Err`, as a sentence to show the
+/// user: no start (`starts` 0), or no design that assembles at every
+/// target.
+pub fn solve_user(case: &Case, starts: usize, hops: usize, seed: u64) -> Result<Found, String> {
+    if starts == 0 {
+        return Err("starts = 0: the search needs a start".into());
+    }
+    let found = solve(case, starts, USER_SCREEN, USER_ITERATIONS, hops, seed);
+    if found.objective.is_finite() {
+        Ok(found)
+    } else {
+        Err("no design assembled at every target: widen the bounds or move the targets".into())
+    }
 }
 
 /// Runs `starts` local solves of at most `local_iterations` iterations in each

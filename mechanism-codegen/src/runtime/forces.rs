@@ -23,7 +23,7 @@ use crate::emit::forces::ForceField;
 use crate::keys::{GuideName, LinkName, PointName};
 use crate::kinds::forces::Held;
 use crate::kinds::run::{ForceRunCx, GuideSlot, Layout, LinkSlot, PointSlot, PowerSum, RunningMin};
-use crate::model::{ForceSpecValue, Level, MassSpec};
+use crate::model::{ForceSpecValue, MassSpec};
 use crate::names::Family;
 use crate::value::{Value, ValueKind};
 use mechanism_core::force::Wrench;
@@ -312,7 +312,7 @@ impl Mechanism {
     /// `true` when the definition has a force analysis (masses, loads or
     /// `analysis forces;`/`dynamics;`).
     pub fn has_forces(&self) -> bool {
-        self.model.level >= Level::Forces
+        self.solver.forces
     }
 
     /// The `loads { .. }` values with their current values.
