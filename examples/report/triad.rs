@@ -133,9 +133,15 @@ fn ref_row(phi: f64, start: [Dd; 4]) -> Option<([Dd; COLS], [Dd; 4])> {
 /// rate solve failed).
 fn columns(phi: f64, pose: &rt::Pose) -> Option<[Dd; COLS]> {
     let (t, vc, ac) = ref_triad(phi);
+    columns_of(&t, vc, ac, pose)
+}
+
+/// [`columns`] for the triad `t` with `K3`'s velocity `vc` and acceleration
+/// `ac`.
+fn columns_of(t: &TriadRef, vc: V, ac: V, pose: &rt::Pose) -> Option<[Dd; COLS]> {
     let z = [Dd::ZERO; 2];
-    let (w, vj) = rt::rates(&t, pose, [z, z, vc])?;
-    let (al, aj) = rt::accelerations(&t, pose, &w, [z, z, ac])?;
+    let (w, vj) = rt::rates(t, pose, [z, z, vc])?;
+    let (al, aj) = rt::accelerations(t, pose, &w, [z, z, ac])?;
     let mut r = [Dd::ZERO; COLS];
     let pts = [pose.joints, vj, aj];
     let angs = [pose.q, w, al];
@@ -191,6 +197,36 @@ fn floor_row(phi: f64, q: [Dd; 4]) -> Option<[f64; COLS]> {
         joints: t.joints(&q),
     };
     Some(columns(phi, &pose)?.map(|x| x.to_f64()))
+}
+
+/// The floor of any method that receives the triad's moving pivot `K3`
+/// (link 6's tip) in `f64`: per input, the largest error of the rates and
+/// accelerations (columns 10..30, relative to `scale`) of the exact
+/// solution (the reference's Newton, from its own angles) at `K3`, its
+/// velocity and its acceleration rounded once from the reference's
+/// double-double values. Near the swing's ends the half-ulp rounding of
+/// `K3` alone moves the assembly by the velocity system's amplification, as
+/// the rounding of the angles does in [`floor_row`]; `NaN` where the
+/// reference failed.
+fn input_floor(g: &[f64], refs: &[Option<([Dd; COLS], [Dd; 4])>], scale: &[f64; COLS]) -> Vec<f64> {
+    let round = |v: V| v.map(|c| Dd::from(c.to_f64()));
+    let at = |x: f64, f: &[Dd; COLS], q: [Dd; 4]| -> Option<f64> {
+        let (mut t, vc, ac) = ref_triad(x);
+        t.k[2] = round(t.k[2]);
+        let pose = rt::newton(&t, q)?;
+        let row = columns_of(&t, round(vc), round(ac), &pose)?;
+        Some((10..30).fold(0.0f64, |m, k| {
+            m.max((row[k] - f[k]).to_f64().abs() / scale[k])
+        }))
+    };
+    g.iter()
+        .zip(refs)
+        .map(|(&x, r)| {
+            r.as_ref()
+                .and_then(|(f, q)| at(x, f, *q))
+                .unwrap_or(f64::NAN)
+        })
+        .collect()
 }
 
 /// The reference at every input, by continuation: Newton from the stated
@@ -733,7 +769,8 @@ pub fn section(out_dir: &Path) -> String {
             column_errors(&rows, &refs, &scale).0
         })
         .collect();
-    md += &targets(&ms, &errs, &floor_errs, system, &inherited);
+    let inputs = input_floor(&g, &with_angles, &scale);
+    md += &targets(&ms, &errs, &floor_errs, system, &inherited, &inputs);
     let _ = writeln!(
         md,
         "\nScales above (the columns' largest |reference| values): A.x {:.3}, B.x {:.3}, P.x \
@@ -788,6 +825,7 @@ fn targets(
     floor: &[Vec<f64>],
     system: f64,
     inherited: &[Vec<Vec<f64>>],
+    inputs: &[f64],
 ) -> String {
     let med = |k: usize| timing::stats(&ms[k].ns).0;
     let (full, near, newton) = (med(0), med(1), med(2));
@@ -816,15 +854,20 @@ fn targets(
     for (k, name) in [(0, "`position()`"), (1, "`position_near`")] {
         let (ang, pos) = (worst(&errs[k], 6..10), worst(&errs[k], 0..6));
         let rat = worst(&errs[k], 10..30);
-        let over = rate_worst_at(&errs[k])
+        let per_input = rate_worst_at(&errs[k]);
+        let over: Vec<usize> = (0..per_input.len())
+            .filter(|&i| per_input[i] > 1e-13)
+            .collect();
+        // Where it is over, the floor of the triad's input there.
+        let there = over
             .iter()
-            .filter(|&&x| x > 1e-13)
-            .count();
+            .map(|&i| inputs.get(i).copied().unwrap_or(f64::NAN))
+            .fold(0.0f64, f64::max);
         let _ = writeln!(
             md,
             "- accuracy of {name} over the swing, its ends included: angles {} rad (target 1e-14): \
              {}; positions {} (target 1e-13): {}; rates and accelerations {} relative (target \
-             1e-13): {}, over 1e-13 at {over} of the {N} inputs; the rates and accelerations \
+             1e-13): {}, over 1e-13 at {} of the {N} inputs{}; the rates and accelerations \
              solved exactly from its own angles are off by {} (the SMatrix Newton's: {})",
             sci(ang),
             met(ang <= 1e-14),
@@ -832,6 +875,16 @@ fn targets(
             met(pos <= 1e-13),
             sci(rat),
             met(rat <= 1e-13),
+            over.len(),
+            if over.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    ", where the exact solution at `K3` and its rates rounded once to `f64` is \
+                     off by {}",
+                    sci(there)
+                )
+            },
             sci(worst(&inherited[k], 10..30)),
             sci(worst(&errs[2], 10..30)),
         );
@@ -841,11 +894,13 @@ fn targets(
         "- what the rates and accelerations inherit, over the swing: {} from the reference's \
          own angles rounded to `f64` (the rates solved exactly from them), {} from its velocity \
          and acceleration systems with every entry rounded to `f64` once (the link angles' \
-         rates and accelerations solved exactly); so where the velocity system is nearly \
-         singular the error of the rates is the error of the angles the position solve \
-         returned, amplified by that system, not the rates' own rounding",
+         rates and accelerations solved exactly), {} from the triad's input `K3` (link 6's tip), \
+         its velocity and acceleration rounded to `f64` once (the exact solution there); so where the velocity system is nearly singular the error of the rates is the \
+         error of the pose, amplified by that system, not the rates' own rounding, and the \
+         half-ulp rounding of the group's input alone moves the pose by as much",
         sci(floor_rates),
         sci(system),
+        sci(inputs.iter().copied().fold(0.0f64, f64::max)),
     );
     md
 }

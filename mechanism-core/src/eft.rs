@@ -3,7 +3,9 @@
 //! group's distance from its guide in `f32` near tangency (scalar
 //! [`crate::dyad::rrp::position`] and [`crate::__private::lane::rrp`]), and the
 //! Cody-Waite reduction of the sine and cosine kernels ([`reduce`]:
-//! [`crate::sincos64`], [`crate::__private::lane::sin_cos`]). Branch-free and without
+//! [`crate::sincos64`], [`crate::__private::lane::sin_cos`]), and the
+//! double words ([`Word`]) of the triad's residuals near a branch point
+//! ([`crate::triad`]). Branch-free and without
 //! fused multiply-add, so they vectorize and run on a Cortex-M4F.
 
 use crate::scalar::{single, Real};
@@ -65,6 +67,84 @@ pub(crate) fn split<T: Real>(a: T) -> (T, T) {
     } * a;
     let hi = c - (c - a);
     (hi, a - hi)
+}
+
+/// `a b = p + e` exactly ([`two_product_split`] with `b` split here).
+#[inline(always)]
+pub(crate) fn two_product<T: Real>(a: T, b: T) -> (T, T) {
+    let (bh, bl) = split(b);
+    two_product_split(a, b, bh, bl)
+}
+
+/// A double word: the unevaluated sum `hi + lo` with `|lo|` at most about
+/// half an ulp of `hi`, about twice the significand's bits. The operations
+/// are the "sloppy" ones of the double-double literature (Dekker 1971;
+/// Joldes, Muller and Popescu, "Tight and rigorous error bounds for basic
+/// building blocks of double-word arithmetic", ACM TOMS 44, 2017): a sum's
+/// error is within a few `eps^2` of `|a| + |b|` (not of the result: no
+/// accuracy is claimed for a cancelling sum beyond that), a product's within
+/// a few `eps^2` of itself. Used where a residual must be evaluated beyond
+/// the working precision ([`crate::triad`]'s polish near a branch point);
+/// only with `f32` and `f64` (Veltkamp's split of a dual number's
+/// derivatives is not exact).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Word<T: Real> {
+    pub(crate) hi: T,
+    pub(crate) lo: T,
+}
+
+impl<T: Real> Word<T> {
+    /// `x` exactly.
+    #[inline(always)]
+    pub(crate) fn of(x: T) -> Self {
+        Word {
+            hi: x,
+            lo: T::zero(),
+        }
+    }
+
+    /// `hi + lo` renormalized (two-sum: no assumption on their sizes).
+    #[inline(always)]
+    pub(crate) fn new(hi: T, lo: T) -> Self {
+        let (hi, lo) = two_sum(hi, lo);
+        Word { hi, lo }
+    }
+
+    /// `self + o`.
+    #[inline(always)]
+    pub(crate) fn add(self, o: Self) -> Self {
+        let (s, e) = two_sum(self.hi, o.hi);
+        Word::new(s, e + (self.lo + o.lo))
+    }
+
+    /// `self - o`.
+    #[inline(always)]
+    pub(crate) fn sub(self, o: Self) -> Self {
+        self.add(Word {
+            hi: -o.hi,
+            lo: -o.lo,
+        })
+    }
+
+    /// `self b` for a working-precision `b`.
+    #[inline(always)]
+    pub(crate) fn scale(self, b: T) -> Self {
+        let (p, e) = two_product(self.hi, b);
+        Word::new(p, e + self.lo * b)
+    }
+
+    /// `self^2`.
+    #[inline(always)]
+    pub(crate) fn square(self) -> Self {
+        let (p, e) = two_product(self.hi, self.hi);
+        Word::new(p, e + T::lit(2.0) * self.hi * self.lo)
+    }
+
+    /// The value rounded to the working precision.
+    #[inline(always)]
+    pub(crate) fn value(self) -> T {
+        self.hi + self.lo
+    }
 }
 
 /// `x - k (p1 + p2 + p3)` as an unevaluated sum `r + rt` (`|rt|` at most

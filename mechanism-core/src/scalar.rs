@@ -24,6 +24,17 @@ pub(crate) fn single<T: Real>() -> bool {
     T::eps() > T::lit(1e-10)
 }
 
+/// `true` when `T` is `f32` or `f64` itself, `false` for a dual number
+/// ([`crate::dual::Dual`]): the error-free transformations of
+/// [`crate::eft`] are exact only on the former (Veltkamp's split rounds a
+/// dual number's derivatives). Folds at compile time.
+#[inline(always)]
+pub(crate) fn native<T: Real>() -> bool {
+    use core::any::TypeId;
+    let t = TypeId::of::<T>();
+    t == TypeId::of::<f64>() || t == TypeId::of::<f32>()
+}
+
 /// A floating-point scalar: `f32` or `f64`. `LowerExp` (`{:e}`) so that an
 /// [`Error<T>`](crate::Error) prints its numbers in their own precision
 /// from generic code.

@@ -10,9 +10,10 @@
 //! of the kernel's own samples), for about 2.4 kB more code per scalar type.
 
 use super::{Near, Triad, TriadPosition, JUMP_FRACTION, MAX_NEWTON, PRIM};
+use crate::eft::{half_excess, split, Word};
 use crate::error::{Error, Fault};
 use crate::geometry::{abs, all_finite, cross, dot, length, min, perp};
-use crate::scalar::Real;
+use crate::scalar::{native, Real};
 use nalgebra::{Point2, Vector2};
 
 /// The problem in the normalized frame: origin `K1`, lengths divided by
@@ -33,6 +34,35 @@ pub(super) struct Frame<T: Real> {
     /// `R`: `1 + |K2 - K1| + |K3 - K1|` (normalized), the size of the
     /// coordinates the residuals are rounded at.
     pub(super) reach: T,
+    /// `K2` and `K3` as given: [`Frame::polish`] takes their differences
+    /// from `K1` exactly (`k2`, `k3` are those differences rounded).
+    known: [Point2<T>; 2],
+}
+
+/// [`Frame::finish`] polishes a state whose relative determinant is below
+/// this ([`Frame::polish`]). Without it, the rates' error near a branch
+/// point grows like `1 / jacobian^2` (the pose's error like `1 /
+/// jacobian`): on the Stephenson III's swing 8.7e-13 at `|jacobian|` 0.022
+/// (docs/report.md, "Stephenson (triad)"), so about 1e-13 at 1/16 and a
+/// quarter of that at 1/8, the bound taken. 70 of the swing's 3600 inputs
+/// fall under it (2 %).
+pub(super) const POLISH_BELOW: f64 = 0.125;
+
+/// The most steps of [`Frame::polish`]: the first corrects the state, the
+/// second (when the first was above rounding level) moves it by at most
+/// about an ulp, to the rounded solution.
+const POLISH_STEPS: usize = 2;
+
+/// The geometry of a state (normalized): see [`Frame::pose`].
+#[derive(Clone, Copy, Debug)]
+struct Pose<T: Real> {
+    a: Vector2<T>,
+    e: Vector2<T>,
+    ab: Vector2<T>,
+    ap: Vector2<T>,
+    r2: Vector2<T>,
+    r3: Vector2<T>,
+    jacobian: T,
 }
 
 /// A Newton state in the normalized frame: `A` and the ternary's unit axis
@@ -107,6 +137,7 @@ impl<T: Real> Frame<T> {
             u: triad.p_local.x * down,
             v: triad.p_local.y * down,
             reach,
+            known: [k[1], k[2]],
         })
     }
 
@@ -197,16 +228,28 @@ impl<T: Real> Frame<T> {
         ok.then_some(x)
     }
 
-    /// The assembly at a converged state, in the user's frame.
+    /// The assembly at a converged state, in the user's frame. Where the
+    /// Jacobian's relative determinant is below [`POLISH_BELOW`] (near a
+    /// branch point) the state is first polished by [`Frame::polish`]:
+    /// there the rates solved from the returned position amplify its
+    /// rounding by about `1 / jacobian^2` (docs/report.md, "Stephenson
+    /// (triad)"), so the position should be the rounded solution, not one
+    /// a few dozen ulps off it.
     #[inline(always)]
     pub(super) fn finish(&self, x: &State<T>) -> Option<TriadPosition<T>> {
-        let (a, e) = (x.a, x.e);
-        let (ab, ap) = self.offsets(&e);
-        let r2 = a + ab - self.k2;
-        let r3 = a + ap - self.k3;
-        let det = cross(&ap, &r3) * cross(&a, &r2) - cross(&ab, &r2) * cross(&a, &r3);
-        let bound = self.l1 * self.l2 * self.l3 * (self.c + length(&ap));
-        let jacobian = det / bound;
+        let mut at = self.pose(x);
+        if native::<T>() && abs(at.jacobian) < T::lit(POLISH_BELOW) {
+            at = self.polish(x, at.jacobian);
+        }
+        let Pose {
+            a,
+            e,
+            ab,
+            ap,
+            r2,
+            r3,
+            jacobian,
+        } = at;
         let up = self.up;
         let pa = self.origin + a * up;
         let pos = TriadPosition {
@@ -224,6 +267,153 @@ impl<T: Real> Frame<T> {
         let all = [pos.a, pos.b, pos.p];
         let finite = all.iter().all(|q| all_finite([q.x, q.y])) && jacobian.finite();
         finite.then_some(pos)
+    }
+
+    /// The joints' offsets, the legs and the relative determinant at `x`
+    /// (normalized).
+    #[inline(always)]
+    fn pose(&self, x: &State<T>) -> Pose<T> {
+        let (a, e) = (x.a, x.e);
+        let (ab, ap) = self.offsets(&e);
+        let r2 = a + ab - self.k2;
+        let r3 = a + ap - self.k3;
+        self.pose_of(a, e, ab, ap, r2, r3)
+    }
+
+    /// The [`Pose`] of these vectors: their relative determinant added.
+    #[inline(always)]
+    fn pose_of(
+        &self,
+        a: Vector2<T>,
+        e: Vector2<T>,
+        ab: Vector2<T>,
+        ap: Vector2<T>,
+        r2: Vector2<T>,
+        r3: Vector2<T>,
+    ) -> Pose<T> {
+        let det = cross(&ap, &r3) * cross(&a, &r2) - cross(&ab, &r2) * cross(&a, &r3);
+        let bound = self.l1 * self.l2 * self.l3 * (self.c + length(&ap));
+        Pose {
+            a,
+            e,
+            ab,
+            ap,
+            r2,
+            r3,
+            jacobian: det / bound,
+        }
+    }
+
+    /// Newton steps on the leg equations whose residuals are evaluated in
+    /// double words ([`Frame::words`]; the Jacobian and the step in the
+    /// working precision), from a state [`Frame::newton`] converged to.
+    /// Near a branch point the residuals' own rounding (a few `eps R`)
+    /// divided by the small singular value is the error that solve leaves,
+    /// a few dozen ulps along the direction in which the two assemblies
+    /// meet; with the residuals exact to about `eps^2` at the state's own
+    /// numbers, a step is the state's error itself (to first order) and
+    /// moves it to within rounding of the solution. The residuals cannot
+    /// judge the step: at a state rounded to the working precision they are
+    /// about `eps R` in the well-conditioned directions whatever the error
+    /// along the singular one. So a step is taken when it is small against
+    /// the distance to the branch point (`|jacobian| c / 64`, where the
+    /// linearization's error, about `step^2 / (|jacobian| c)`, is a small
+    /// fraction of the step), at most [`POLISH_STEPS`] of them, the last
+    /// one when it is at rounding level (`4 eps c`). Within about `eps` of
+    /// the branch point, where no step is that small, the state is kept as
+    /// it came. The pose returned is the one [`Frame::words`] rounded once
+    /// from double words (the axis at unit length), not recomputed in the
+    /// working precision: the rate matrix built from it is then within
+    /// rounding of the exact one at that state. Out of line: it runs only
+    /// near branch points.
+    #[inline(never)]
+    #[cold]
+    fn polish(&self, x: &State<T>, jacobian: T) -> Pose<T> {
+        let limit = abs(jacobian) * self.c * T::lit(1.0 / 64.0);
+        let floor = T::lit(4.0) * T::eps() * self.c;
+        let mut x = *x;
+        let (mut g, mut pose) = self.words(&x);
+        for _ in 0..POLISH_STEPS {
+            let (_, jac) = self.system(&x);
+            let Some(step) = cramer(&jac, [-g[0], -g[1], -g[2]]) else {
+                break;
+            };
+            let size = abs(step[0]) + abs(step[1]) + abs(step[2]) * self.c;
+            // A NaN step fails the comparison too.
+            let small = size <= limit;
+            if !small {
+                break;
+            }
+            x = State {
+                a: x.a + Vector2::new(step[0], step[1]),
+                e: x.e + perp(&x.e) * step[2],
+            };
+            (g, pose) = self.words(&x);
+            if size <= floor {
+                break;
+            }
+        }
+        // Double words overflow sooner (Veltkamp's split): then the state
+        // as it came.
+        let parts = [pose.a, pose.e, pose.ab, pose.ap, pose.r2, pose.r3];
+        if parts.iter().all(|v| all_finite([v.x, v.y])) && pose.jacobian.finite() {
+            pose
+        } else {
+            self.pose(&x)
+        }
+    }
+
+    /// The residuals of [`Frame::system`] at `x` with the axis taken at unit
+    /// length (`x.e` is within a few ulps of it; its excess is measured
+    /// exactly and divided out to first order, `e (1 - (|e|^2 - 1) / 2)`,
+    /// the next term about `eps^2`), every product and sum in double words
+    /// ([`Word`]), the known points' offsets from `K1` included (the frame's
+    /// `k2`, `k3` are rounded), and rounded once at the end: each residual within a few
+    /// `eps^2 R^2` of its exact value at the state's own numbers; with the
+    /// state's [`Pose`], each vector rounded once from its double words.
+    fn words(&self, x: &State<T>) -> ([T; 3], Pose<T>) {
+        let (a, e) = (x.a, x.e);
+        let (xh, xl) = split(e.x);
+        let (yh, yl) = split(e.y);
+        let excess = half_excess(e.x, xh, xl, e.y, yh, yl);
+        let ex = Word::new(e.x, -e.x * excess);
+        let ey = Word::new(e.y, -e.y * excess);
+        let (ax, ay) = (Word::of(a.x), Word::of(a.y));
+        // `(K - K1) down` exactly: a two-sum, then a power of two.
+        let from_origin = |p: T, o: T| {
+            let w = Word::of(p).sub(Word::of(o));
+            Word {
+                hi: w.hi * self.down,
+                lo: w.lo * self.down,
+            }
+        };
+        let [k2, k3] = self.known;
+        let o = self.origin;
+        let r2 = [
+            ax.add(ex.scale(self.c)).sub(from_origin(k2.x, o.x)),
+            ay.add(ey.scale(self.c)).sub(from_origin(k2.y, o.y)),
+        ];
+        let apx = ex.scale(self.u).sub(ey.scale(self.v));
+        let apy = ey.scale(self.u).add(ex.scale(self.v));
+        let r3 = [
+            ax.add(apx).sub(from_origin(k3.x, o.x)),
+            ay.add(apy).sub(from_origin(k3.y, o.y)),
+        ];
+        let half = |r: &[Word<T>; 2], l: T| {
+            let d = r[0].square().add(r[1].square()).sub(Word::of(l).square());
+            d.value() * T::lit(0.5)
+        };
+        let g = [
+            half(&[ax, ay], self.l1),
+            half(&r2, self.l2),
+            half(&r3, self.l3),
+        ];
+        let round = |w: [Word<T>; 2]| Vector2::new(w[0].value(), w[1].value());
+        let e = round([ex, ey]);
+        let ab = round([ex.scale(self.c), ey.scale(self.c)]);
+        let ap = round([apx, apy]);
+        let (r2, r3) = (round(r2), round(r3));
+        (g, self.pose_of(a, e, ab, ap, r2, r3))
     }
 
     /// Root-sum-square distance of the joints of `pos` from `near`, in the

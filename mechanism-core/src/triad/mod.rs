@@ -33,7 +33,14 @@
 //!    method on the full 3x3 system in the unknowns `(A, phi)`, equations
 //!    `(|A - Ki|^2 - li^2) / 2 = 0` for the three legs, to full precision;
 //!    kept when it converges (residuals at rounding level); assemblies whose
-//!    joints agree to `sqrt(eps) / 8` of the group's scale are merged.
+//!    joints agree to `sqrt(eps) / 8` of the group's scale are merged;
+//! 4. near a branch point (relative determinant below 1/8) one or two more
+//!    Newton steps whose residuals are evaluated in double words (`f32` and
+//!    `f64`; not for dual numbers): there the residuals' rounding divided by
+//!    the small singular value would leave the joints dozens of ulps off,
+//!    and the rates, solved through the same nearly singular matrix, that
+//!    error over the determinant again; polished, the joints are the
+//!    rounded solution (`Frame::polish` in `frame.rs`).
 //!
 //! Where the polynomial vanishes identically (a degenerate triad whose
 //! reduced equation holds at every angle) and where it gives no assembly,
