@@ -3,7 +3,8 @@
 //! angle) over its declared range, 3600 inputs.
 //!
 //! Methods, timed in the same interleaved rounds over the same inputs:
-//! the generated `position()` (the full search, stateless) and
+//! the generated `position()` (stateless: Newton from the tracked table's
+//! pose with a radius of isolation, else the full search) and
 //! `position_near` (warm-started from the previous input's pose), each
 //! followed by the generated `velocity` and `acceleration`; and Newton on
 //! the whole loop closure with nalgebra (`benches/common/baselines.rs`),
@@ -605,8 +606,10 @@ fn intro(ref_failed: usize) -> String {
          f64 in both, so an f32 error includes the rounding of the dimensions); it failed at \
          {ref_failed} inputs. All methods run on the same inputs in the same {} interleaved \
          rounds; ns per evaluation \
-         (position + velocity + acceleration), median and min-max. `position()` is the stateless \
-         full search; `position_near` and both Newton baselines start from the previous input's \
+         (position + velocity + acceleration), median and min-max. `position()` is stateless: \
+         Newton from the pose interpolated in the definition's tracked table, kept when a radius \
+         of isolation proves it the assembly the full search would select, else the full \
+         search; `position_near` and both Newton baselines start from the previous input's \
          answer. The Newton baselines (`benches/common/baselines.rs`) solve the six-bar's whole \
          loop closure (four equations in the four unknown link angles) with nalgebra's LU, stop \
          after the first step below {:.0e} rad (at most {} iterations), then solve the velocity and \

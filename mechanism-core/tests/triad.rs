@@ -665,10 +665,17 @@ fn nearest_selection_refuses_unclear_poses() {
         .copied()
         .collect();
     assert!(all.len() >= 2);
-    // Each assembly's own joints select it, bit for bit.
+    // Each assembly's own joints select it: the same assembly, to rounding
+    // (the search's polish starts from the polynomial's root, the isolated
+    // Newton's from these joints: a few ulps of the scale, 0.28 m, apart).
     for q in &all {
         let got = triad::position(&case.triad, &case.k, &Near::of(q)).unwrap();
-        assert_eq!(&got, q);
+        let moved = [(got.a, q.a), (got.b, q.b), (got.p, q.p)]
+            .iter()
+            .map(|(x, y)| (x - y).norm())
+            .fold(0.0, f64::max);
+        assert!(moved <= 4.0 * f64::EPSILON * 0.28, "{moved:e}");
+        assert_eq!(got.jacobian.signum(), q.jacobian.signum());
     }
     // Halfway between two assemblies: refused, with the two distances.
     let (p, q) = (&all[0], &all[1]);
@@ -1143,4 +1150,85 @@ fn near_a_branch_point_the_pose_is_the_rounded_solution() {
          scale, rates within {worst_rate:.2} eps / |jacobian|"
     );
     assert!(n >= 120, "only {n} poses near a branch point");
+}
+
+#[test]
+fn position_selects_what_the_rule_selects_from_every_assembly() {
+    // Proves: `position` (which answers without the full search when it
+    // can prove the answer: Newton from the pose, then a radius of isolation
+    // around what it reached) returns exactly what the documented rule
+    // selects from the list of every assembly (`assemblies`): the nearest
+    // one to the pose (root-sum-square over A, B, P) when within half the
+    // shortest dimension and at most half as far as the next, else
+    // `NotNear` (or `CannotAssemble` with none). Random closing triads, poses
+    // from each assembly moved by 1e-6 to 0.3 of the scale and poses
+    // halfway between two assemblies; cases within 1e-9 of a limit are
+    // skipped (rounding may fall either way there).
+    let mut rng = Rng(0x7a7e_5000_0000_0042);
+    let (mut agreed, mut refused) = (0, 0);
+    for _ in 0..300 {
+        let case = closing_case(&mut rng);
+        let all: Vec<TriadPosition<f64>> = triad::assemblies(&case.triad, &case.k)
+            .unwrap()
+            .iter()
+            .copied()
+            .collect();
+        let t = &case.triad;
+        let jump = 0.5 * [t.l2, t.l3, t.ab].into_iter().fold(t.l1, f64::min);
+        let dist = |p: &TriadPosition<f64>, n: &Near<f64>| {
+            ((p.a - n.a).norm_squared() + (p.b - n.b).norm_squared() + (p.p - n.p).norm_squared())
+                .sqrt()
+        };
+        let mut poses = Vec::new();
+        for q in &all {
+            for size in [1e-6, 1e-3, 1e-2, 0.05, 0.1, 0.3] {
+                let mut off = || {
+                    Vector2::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)) * size * case.scale()
+                };
+                poses.push(Near::new(q.a + off(), q.b + off(), q.p + off()));
+            }
+        }
+        for w in all.windows(2) {
+            let mid = |x: Point2<f64>, y: Point2<f64>| Point2::from((x.coords + y.coords) * 0.5);
+            poses.push(Near::new(
+                mid(w[0].a, w[1].a),
+                mid(w[0].b, w[1].b),
+                mid(w[0].p, w[1].p),
+            ));
+        }
+        for near in &poses {
+            let mut ds: Vec<(f64, &TriadPosition<f64>)> =
+                all.iter().map(|q| (dist(q, near), q)).collect();
+            ds.sort_by(|x, y| x.0.total_cmp(&y.0));
+            let got = triad::position(&case.triad, &case.k, near);
+            let Some(&(d, want)) = ds.first() else {
+                assert!(matches!(
+                    got.unwrap_err().fault,
+                    Fault::CannotAssemble { .. }
+                ));
+                continue;
+            };
+            let next = ds.get(1).map_or(f64::INFINITY, |x| x.0);
+            let margin = 1e-9 * case.scale();
+            if (d - jump).abs() < margin || (next - 2.0 * d).abs() < margin {
+                continue;
+            }
+            if d > jump || next < 2.0 * d {
+                let e = got.expect_err("the rule refuses this pose");
+                assert!(matches!(e.fault, Fault::NotNear { .. }), "{e:?}");
+                refused += 1;
+            } else {
+                let p = got.expect("the rule selects an assembly");
+                let moved = dist(&p, &Near::of(want));
+                assert!(
+                    moved <= 8.0 * f64::EPSILON * case.scale() / want.jacobian.abs().min(1.0),
+                    "{moved:e} {case:?}"
+                );
+                assert_eq!(p.jacobian.signum(), want.jacobian.signum());
+                agreed += 1;
+            }
+        }
+    }
+    println!("{agreed} poses selected as the rule does, {refused} refused as it does");
+    assert!(agreed > 1000 && refused > 100, "{agreed} {refused}");
 }

@@ -83,6 +83,9 @@ pub(super) fn position_in<T: Real>(
     if !near_finite(near) {
         return Err(Error::new(PRIM, Fault::NonFinite { what: "triad pose" }));
     }
+    if let Some(pos) = isolated(&f, near) {
+        return Ok(pos);
+    }
     let all = search(&f);
     let Some((pos, d, next)) = nearest(&f, all.iter(), near) else {
         return Err(all.none_error());
@@ -94,6 +97,39 @@ pub(super) fn position_in<T: Real>(
         return Err(not_near(&f, d, next));
     }
     Ok(pos)
+}
+
+/// [`super::position`]'s answer without the full search, when it can be
+/// proved: Newton on the leg equations from `near` (its `A` and the axis
+/// `A -> B`) converges to an assembly at distance `d` from `near` within
+/// the jump limit, and [`Frame::isolation`] proves every other assembly at
+/// least `(1 + NEAR_FACTOR) d` from it, so at least `NEAR_FACTOR d` from
+/// `near`: that assembly is the nearest and clearly so, the one the search
+/// would select (from its own polish of the same root). `None` otherwise
+/// (Newton fails, the radius is too small, near a branch point or with a
+/// pose far from every assembly): then the search decides, and reports its
+/// errors. Measured in docs/report.md, "Stephenson (triad)": the generated
+/// stateless `position()`, whose pose is the tracked table's, takes this
+/// path at all but the inputs nearest the swing's ends.
+#[inline(always)]
+fn isolated<T: Real>(f: &Frame<T>, near: &Near<T>) -> Option<TriadPosition<T>> {
+    let a = (near.a - f.origin) * f.down;
+    let axis = (near.b - near.a) * f.down;
+    let norm2 = dot(&axis, &axis);
+    let usable = norm2 > T::zero() && norm2.finite();
+    if !usable {
+        return None;
+    }
+    let start = State {
+        a,
+        e: axis * (T::one() / norm2.sqrt_kernel()),
+    };
+    let x = f.newton(start)?;
+    let pos = f.finish(&x)?;
+    let d = f.distance(&pos, near);
+    let radius = f.isolation(&x)?;
+    let clear = d <= f.jump() && radius >= T::lit(1.0 + NEAR_FACTOR) * d;
+    clear.then_some(pos)
 }
 
 fn near_finite<T: Real>(near: &Near<T>) -> bool {
@@ -225,6 +261,64 @@ mod tests {
         };
         let c = Point2::new(0.05 + 0.24 * phi.cos(), 0.42 + 0.24 * phi.sin());
         (triad, [Point2::new(0.0, 0.0), Point2::new(0.30, 0.0), c])
+    }
+
+    /// The Stephenson III's swing as the generated stateless `position()`
+    /// sees it: the assembly followed at 49 evenly spaced inputs (a table
+    /// like the one the macro writes), the pose interpolated linearly at
+    /// 3600 inputs between them. Proves that the isolated Newton
+    /// ([`isolated`]) answers at all but the inputs nearest the swing's ends
+    /// (3452 of 3600, 96 %: near the ends the interpolated pose is farther
+    /// off and the other assembly closer; those go to the search), and that
+    /// where it answers it returns the assembly the search selects.
+    #[test]
+    fn the_tracked_table_pose_is_answered_without_the_search() {
+        let (lo, hi) = ((-50.43f64).to_radians(), (-2.64f64).to_radians());
+        const ROWS: usize = 49;
+        let rows = ROWS;
+        let (t0, k0) = stephenson((-49.48f64).to_radians());
+        let hint = Near::new(
+            Point2::new(-0.061, -0.052),
+            Point2::new(0.137, 0.116),
+            Point2::new(-0.036, 0.096),
+        );
+        let mut pos = position_in(&t0, &k0, &hint).unwrap();
+        // Follow to `lo` in small steps, then along the rows.
+        let mut phi = (-49.48f64).to_radians();
+        let mut table = [(0.0, Near::of(&pos)); ROWS];
+        for (i, row) in table.iter_mut().enumerate() {
+            let target = lo + (hi - lo) * i as f64 / (rows - 1) as f64;
+            while phi != target {
+                let step = (target - phi).clamp(-0.002, 0.002);
+                phi = if (target - phi).abs() <= 0.002 {
+                    target
+                } else {
+                    phi + step
+                };
+                let (t, k) = stephenson(phi);
+                pos = position_near_in(&t, &k, &pos).unwrap();
+            }
+            *row = (phi, Near::of(&pos));
+        }
+        let n = 3600;
+        let mut answered = 0;
+        for j in 0..n {
+            let x = lo + (hi - lo) * (j as f64 + 0.5) / n as f64;
+            let i = (((x - lo) / (hi - lo) * (rows - 1) as f64) as usize).min(rows - 2);
+            let ((x0, p0), (x1, p1)) = (table[i], table[i + 1]);
+            let w = (x - x0) / (x1 - x0);
+            let lerp = |a: Point2<f64>, b: Point2<f64>| a + (b - a) * w;
+            let near = Near::new(lerp(p0.a, p1.a), lerp(p0.b, p1.b), lerp(p0.p, p1.p));
+            let (t, k) = stephenson(x);
+            let f = Frame::new(&t, &k).unwrap();
+            if let Some(p) = isolated(&f, &near) {
+                answered += 1;
+                let all = search(&f);
+                let (q, _, _) = nearest(&f, all.iter(), &near).unwrap();
+                assert!(f.distance(&p, &Near::of(&q)) < 1e-14, "at {x}");
+            }
+        }
+        assert!(answered * 100 >= 95 * n, "{answered} of {n}");
     }
 
     /// The search that [`position_near`] falls back on when Newton fails

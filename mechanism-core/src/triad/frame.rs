@@ -12,7 +12,7 @@
 use super::{Near, Triad, TriadPosition, JUMP_FRACTION, MAX_NEWTON, PRIM};
 use crate::eft::{half_excess, split, Word};
 use crate::error::{Error, Fault};
-use crate::geometry::{abs, all_finite, cross, dot, length, min, perp};
+use crate::geometry::{abs, all_finite, cross, dot, length, max, min, perp};
 use crate::scalar::{native, Real};
 use nalgebra::{Point2, Vector2};
 
@@ -414,6 +414,64 @@ impl<T: Real> Frame<T> {
         let ap = round([apx, apy]);
         let (r2, r3) = (round(r2), round(r3));
         (g, self.pose_of(a, e, ab, ap, r2, r3))
+    }
+
+    /// A radius of isolation of the assembly at `x` (normalized): every
+    /// other assembly's joints are at least this far from `x`'s
+    /// (root-sum-square over `A`, `B`, `P`, as [`Frame::distance`]), by the
+    /// uniqueness part of Newton-Kantorovich's argument on the leg
+    /// equations `G(A, phi) = 0`. For another solution `y`, `0 = G(y) -
+    /// G(x) = J (y - x) + R` with `|R| <= L N(y - x)^2 / 2`, so `N(y - x)
+    /// >= 2 / (beta L)`, where:
+    ///
+    /// - `N(da, dphi) = max(|da|, s |dphi|)` (`dphi` taken within `pi`, the
+    ///   equations being `2 pi`-periodic), `s = 2 kappa / pi`, `kappa =
+    ///   sqrt(c^2 + |w|^2 - |c + w|^2 / 3)` (`w = (u, v)`): the joints' moves
+    ///   are at least `N`, since `|dA| <= D` and, minimizing over `dA` the
+    ///   sum `|dA|^2 + |dA + c dz|^2 + |dA + w dz|^2` (`dz` the axis' move,
+    ///   `|dz| = 2 |sin(dphi / 2)| >= (2 / pi) |dphi|`), `D >= kappa |dz|`;
+    /// - `beta` bounds `N(J^-1 v)` for `|v|_inf <= 1` (from `J`'s adjugate at
+    ///   `x`);
+    /// - `L` bounds each equation's second derivative along any segment
+    ///   between two assemblies in `N`'s units: `1` for leg 1, `(1 + c /
+    ///   s)^2 + (l1 + c + |k2|) c / s^2` for leg 2 (`|r2'| <= |da| + c |dphi|`,
+    ///   `r2'' = -c e dphi^2`, `|r2| <= l1 + c + |k2|` where `|A| <= l1`, as
+    ///   on any segment between two assemblies), likewise leg 3 with `|w|`
+    ///   and `k3`.
+    ///
+    /// `None` when `J` is singular or a bound is not finite. Rounding: `J`,
+    /// `beta` and `L` are computed to about `eps` times `J`'s condition
+    /// number relative; the radius is reduced by `2^-10` of itself, above
+    /// that in `f64` and in `f32` wherever the radius is not already far
+    /// below any pose's distance (a condition number under about 8000).
+    pub(super) fn isolation(&self, x: &State<T>) -> Option<T> {
+        let (_, m) = self.system(x);
+        let cross3 = |p: &[T; 3], q: &[T; 3]| {
+            [
+                p[1] * q[2] - p[2] * q[1],
+                p[2] * q[0] - p[0] * q[2],
+                p[0] * q[1] - p[1] * q[0],
+            ]
+        };
+        // Row i of J^-1 is (c0[i], c1[i], c2[i]) / det.
+        let c0 = cross3(&m[1], &m[2]);
+        let c1 = cross3(&m[2], &m[0]);
+        let c2 = cross3(&m[0], &m[1]);
+        let det = abs(m[0][0] * c0[0] + m[0][1] * c0[1] + m[0][2] * c0[2]);
+        let [ra0, ra1, rphi] = [0, 1, 2].map(|i| abs(c0[i]) + abs(c1[i]) + abs(c2[i]));
+        let w2 = self.u * self.u + self.v * self.v;
+        let cw = (self.c + self.u) * (self.c + self.u) + self.v * self.v;
+        let kappa2 = self.c * self.c + w2 - cw * T::lit(1.0 / 3.0);
+        let s = T::lit(2.0 / core::f64::consts::PI) * max(kappa2, T::zero()).sqrt_kernel();
+        let beta = max((ra0 * ra0 + ra1 * ra1).sqrt_kernel(), s * rphi) / det;
+        let w = w2.sqrt_kernel();
+        let leg = |len: T, k: &Vector2<T>| {
+            let g = T::one() + len / s;
+            g * g + (self.l1 + len + length(k)) * len / (s * s)
+        };
+        let lip = max(T::one(), max(leg(self.c, &self.k2), leg(w, &self.k3)));
+        let r = T::lit(2.0) / (beta * lip) * (T::one() - T::lit(1.0 / 1024.0));
+        (r.finite() && r > T::zero()).then_some(r)
     }
 
     /// Root-sum-square distance of the joints of `pos` from `near`, in the

@@ -58,7 +58,13 @@
 //! **Which assembly.** [`position`] takes a [`Near`]: the approximate
 //! positions of `A`, `B` and `P` ("at this input the joints are about
 //! here"), and returns the assembly nearest to it (root-sum-square distance
-//! over the three joints). It never returns a different one silently: no
+//! over the three joints). It answers without the search when it can prove
+//! the answer: Newton on the leg equations from the pose, then a radius of
+//! isolation around the assembly reached (`Frame::isolation`: the
+//! uniqueness half of Newton-Kantorovich's theorem, from the Jacobian's
+//! inverse there and a bound on the equations' second derivatives) that
+//! puts every other assembly at least `1 + NEAR_FACTOR` times as far from
+//! it as the pose is; else every assembly as above, and the rule below. It never returns a different one silently: no
 //! assembly is `CannotAssemble`, and a nearest one farther than
 //! [`JUMP_FRACTION`] of the shortest dimension, or not at most half as far
 //! ([`NEAR_FACTOR`]) as the next, is `NotNear`. [`position_near`]
