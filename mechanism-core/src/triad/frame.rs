@@ -446,18 +446,9 @@ impl<T: Real> Frame<T> {
     /// below any pose's distance (a condition number under about 8000).
     pub(super) fn isolation(&self, x: &State<T>) -> Option<T> {
         let (_, m) = self.system(x);
-        let cross3 = |p: &[T; 3], q: &[T; 3]| {
-            [
-                p[1] * q[2] - p[2] * q[1],
-                p[2] * q[0] - p[0] * q[2],
-                p[0] * q[1] - p[1] * q[0],
-            ]
-        };
         // Row i of J^-1 is (c0[i], c1[i], c2[i]) / det.
-        let c0 = cross3(&m[1], &m[2]);
-        let c1 = cross3(&m[2], &m[0]);
-        let c2 = cross3(&m[0], &m[1]);
-        let det = abs(m[0][0] * c0[0] + m[0][1] * c0[1] + m[0][2] * c0[2]);
+        let ([c0, c1, c2], det) = adjugate(&m);
+        let det = abs(det);
         let [ra0, ra1, rphi] = [0, 1, 2].map(|i| abs(c0[i]) + abs(c1[i]) + abs(c2[i]));
         let w2 = self.u * self.u + self.v * self.v;
         let cw = (self.c + self.u) * (self.c + self.u) + self.v * self.v;
@@ -513,10 +504,10 @@ fn inv_hypot1<T: Real>(s: T) -> T {
     }
 }
 
-/// `m x = b` for a 3x3 `m` by Cramer's rule (rows' cross products); `None`
-/// when the determinant is zero or the result not finite.
+/// The columns of a 3x3 `m`'s adjugate (the rows' cross products: `m^-1`
+/// has `c_j[i] / det` in row `i`, column `j`) and its determinant.
 #[inline(always)]
-fn cramer<T: Real>(m: &[[T; 3]; 3], b: [T; 3]) -> Option<[T; 3]> {
+fn adjugate<T: Real>(m: &[[T; 3]; 3]) -> ([[T; 3]; 3], T) {
     let cross3 = |p: &[T; 3], q: &[T; 3]| {
         [
             p[1] * q[2] - p[2] * q[1],
@@ -528,6 +519,14 @@ fn cramer<T: Real>(m: &[[T; 3]; 3], b: [T; 3]) -> Option<[T; 3]> {
     let c1 = cross3(&m[2], &m[0]);
     let c2 = cross3(&m[0], &m[1]);
     let det = m[0][0] * c0[0] + m[0][1] * c0[1] + m[0][2] * c0[2];
+    ([c0, c1, c2], det)
+}
+
+/// `m x = b` for a 3x3 `m` by Cramer's rule (rows' cross products); `None`
+/// when the determinant is zero or the result not finite.
+#[inline(always)]
+fn cramer<T: Real>(m: &[[T; 3]; 3], b: [T; 3]) -> Option<[T; 3]> {
+    let ([c0, c1, c2], det) = adjugate(m);
     if det == T::zero() {
         return None;
     }
