@@ -787,6 +787,32 @@ fn force_targets(name: &str, ns: &[Vec<f64>]) -> Vec<String> {
 /// The forces section of the report (markdown), and one CSV per scene in
 /// `out_dir`.
 pub fn section(out_dir: &Path) -> String {
+    let mut md = intro();
+    let mut problems = Vec::new();
+    let mut targets = Vec::new();
+    for sc in scenes() {
+        eprintln!("forces {}", sc.name);
+        let m = measure(&sc, &mut problems);
+        md += &scene_table(&sc, &m, out_dir);
+        targets.push(force_targets(sc.name, &m.ns));
+    }
+    let _ = writeln!(md, "### Targets (forces, issue 35)\n");
+    for t in targets.iter().flatten() {
+        let _ = writeln!(md, "- {t}");
+    }
+    let _ = writeln!(md);
+    if !problems.is_empty() {
+        let _ = writeln!(md, "Reference failures (forces):\n");
+        for p in problems.iter().take(20) {
+            let _ = writeln!(md, "- {p}");
+        }
+        let _ = writeln!(md, "- ({} in all)\n", problems.len());
+    }
+    md
+}
+
+/// The section's heading and what it measures.
+fn intro() -> String {
     let mut md = String::new();
     let _ = writeln!(md, "## Forces\n");
     let _ = writeln!(
@@ -815,168 +841,160 @@ pub fn section(out_dir: &Path) -> String {
          the same reference. The force analysis alone is a row's time less the kinematics'.\n",
         mechanism_reference::newton_euler::RESIDUAL_TOLERANCE
     );
-    let mut problems = Vec::new();
-    let mut targets = Vec::new();
-    for sc in scenes() {
-        eprintln!("forces {}", sc.name);
-        let ref64 = references(&sc, &sc.grid, sc.rate, sc.accel, None, &mut problems);
-        let loads: Vec<f64> = ref64
-            .iter()
-            .map(|r| r.as_ref().map_or(0.0, |r| r.load))
-            .collect();
-        let r32 = |x: f64| x as f32 as f64;
-        let grid32: Vec<f64> = sc.grid.iter().map(|&q| r32(q)).collect();
-        let (rate32, accel32) = (r32(sc.rate), r32(sc.accel));
-        let ref32 = references(&sc, &grid32, rate32, accel32, Some(&loads), &mut problems);
-        let scale = scales(&sc, &ref64);
-        let max_res = ref64
-            .iter()
-            .chain(&ref32)
-            .flatten()
-            .map(|r| r.residual)
-            .fold(0.0f64, f64::max);
-        let gen: fn(f64, f64, f64, f64) -> GenSample;
-        let gen32: fn(f64, f64, f64, f64) -> GenSample;
-        match sc.name {
-            "SineMechanism" => (gen, gen32) = (sine::<f64>, sine::<f32>),
-            "ShaperForces" => (gen, gen32) = (shaper::<f64>, shaper::<f32>),
-            _ => (gen, gen32) = (four_bar::<f64>, four_bar::<f32>),
-        }
-        let s64: Vec<GenSample> = sc
-            .grid
-            .iter()
-            .zip(&loads)
-            .map(|(&q, &l)| gen(q, sc.rate, sc.accel, l))
-            .collect();
-        let s32: Vec<GenSample> = sc
-            .grid
-            .iter()
-            .zip(&loads)
-            .map(|(&q, &l)| gen32(q, sc.rate, sc.accel, l))
-            .collect();
-        let e64 = compare(&sc, &ref64, &scale, &s64);
-        let e32 = compare(&sc, &ref32, &scale, &s32);
-        let global_of = |heap| {
-            let s: Vec<GenSample> = sc
-                .grid
-                .iter()
-                .zip(&loads)
-                .map(|(&q, &l)| global(sc.name, q, sc.rate, sc.accel, l, heap))
-                .collect();
-            compare(&sc, &ref64, &scale, &s)
-        };
-        let (e_fixed, e_heap) = (global_of(false), global_of(true));
-        let sw64 = sweep::<f64>(sc.name, &sc.grid, sc.rate, sc.accel, &loads);
-        let sw32 = sweep::<f32>(sc.name, &sc.grid, sc.rate, sc.accel, &loads);
-        let sw_kin = kinematics_sweep(sc.name, &sc.grid, sc.rate, sc.accel);
-        let sw_fixed = global_sweep(sc.name, &sc.grid, sc.rate, sc.accel, &loads, false);
-        let sw_heap = global_sweep(sc.name, &sc.grid, sc.rate, sc.accel, &loads, true);
-        let n = sc.grid.len();
-        let ns = timing::interleaved(
-            &[
-                (&sw64, n),
-                (&sw32, n),
-                (&sw_kin, n),
-                (&sw_fixed, n),
-                (&sw_heap, n),
-            ],
-            ROUNDS,
-            MIN_SAMPLE_NS,
-        );
-        let _ = writeln!(md, "### {}\n", sc.name);
-        let f_scale = sc
-            .columns
-            .iter()
-            .zip(&scale)
-            .filter(|((_, u), _)| *u == Unit::Force)
-            .fold(0.0f64, |m, (_, &x)| m.max(x));
-        let m_scale = sc
-            .columns
-            .iter()
-            .zip(&scale)
-            .filter(|((_, u), _)| *u == Unit::Moment)
-            .fold(0.0f64, |m, (_, &x)| m.max(x));
-        let _ = writeln!(
-            md,
-            "{n} grid points (a full turn in 0.1 deg steps); crank rate {} rad/s, acceleration {} \
-             rad/s^2; {} reactions and driving-effort columns; largest force {:.4e} N, largest \
-             moment {:.4e} N m; reference residual at most {:.1e}.\n",
-            sc.rate,
-            sc.accel,
-            sc.columns.len(),
-            f_scale,
-            m_scale,
-            max_res
-        );
-        let _ = writeln!(
-            md,
-            "| method | ns/eval median | min - max | force abs err (N) | moment abs err (N m) | rel err | worst column | power_residual max | failed |"
-        );
-        let _ = writeln!(md, "|---|---:|---:|---:|---:|---:|---|---:|---:|");
-        let mut csv = String::from(
-            "method,ns_median,ns_min,ns_max,force_abs,moment_abs,rel,worst,power_residual,failures\n",
-        );
-        let none = ForceErrors::default();
-        let rows = [
-            (
-                "generated f64 `solve` (kinematics and forces)",
-                &e64,
-                &ns[0],
-            ),
-            (
-                "generated f32 `solve` (kinematics and forces)",
-                &e32,
-                &ns[1],
-            ),
-            ("generated f64 kinematics alone", &none, &ns[2]),
-            (
-                "global Newton-Euler, nalgebra SMatrix LU f64",
-                &e_fixed,
-                &ns[3],
-            ),
-            ("global Newton-Euler, heap DMatrix LU f64", &e_heap, &ns[4]),
-        ];
-        for (k, &(name, e, ns)) in rows.iter().enumerate() {
-            let (med, lo, hi) = timing::stats(ns);
-            let errs = if k == 2 {
-                "- | - | - | - | - | -".to_string()
-            } else {
-                format!(
-                    "{} | {} | {} | {} | {} | {}",
-                    sci(e.force_abs),
-                    sci(e.moment_abs),
-                    sci(e.rel),
-                    e.worst,
-                    if k >= 3 { "-".into() } else { sci(e.power) },
-                    e.failures
-                )
-            };
-            let _ = writeln!(md, "| {name} | {med:.1} | {lo:.1} - {hi:.1} | {errs} |");
-            let _ = writeln!(
-                csv,
-                "{name},{med},{lo},{hi},{},{},{},{},{},{}",
-                e.force_abs, e.moment_abs, e.rel, e.worst, e.power, e.failures
-            );
-        }
-        let _ = writeln!(md);
-        targets.push(force_targets(sc.name, &ns));
-        std::fs::write(
-            out_dir.join(format!("forces_{}.csv", sc.name.to_lowercase())),
-            csv,
-        )
-        .expect("write forces csv");
+    md
+}
+
+/// One scene's measurements: the references' largest residual and the
+/// columns' scales, each method's errors (f64, f32, the global method
+/// fixed-size and heap) and the timed rounds (in the order of
+/// [`scene_table`]'s rows).
+struct Measured {
+    max_res: f64,
+    scale: Vec<f64>,
+    errors: [ForceErrors; 4],
+    ns: Vec<Vec<f64>>,
+}
+
+/// References at the scene's grid (and at the grid rounded to f32, with
+/// the same loads), the generated and global methods' errors against them,
+/// and all five methods timed in the same interleaved rounds.
+fn measure(sc: &ForceScene, problems: &mut Vec<String>) -> Measured {
+    let ref64 = references(sc, &sc.grid, sc.rate, sc.accel, None, problems);
+    let loads: Vec<f64> = ref64
+        .iter()
+        .map(|r| r.as_ref().map_or(0.0, |r| r.load))
+        .collect();
+    let r32 = |x: f64| x as f32 as f64;
+    let grid32: Vec<f64> = sc.grid.iter().map(|&q| r32(q)).collect();
+    let (rate32, accel32) = (r32(sc.rate), r32(sc.accel));
+    let ref32 = references(sc, &grid32, rate32, accel32, Some(&loads), problems);
+    let scale = scales(sc, &ref64);
+    let max_res = ref64
+        .iter()
+        .chain(&ref32)
+        .flatten()
+        .map(|r| r.residual)
+        .fold(0.0f64, f64::max);
+    let gen: fn(f64, f64, f64, f64) -> GenSample;
+    let gen32: fn(f64, f64, f64, f64) -> GenSample;
+    match sc.name {
+        "SineMechanism" => (gen, gen32) = (sine::<f64>, sine::<f32>),
+        "ShaperForces" => (gen, gen32) = (shaper::<f64>, shaper::<f32>),
+        _ => (gen, gen32) = (four_bar::<f64>, four_bar::<f32>),
     }
-    let _ = writeln!(md, "### Targets (forces, issue 35)\n");
-    for t in targets.iter().flatten() {
-        let _ = writeln!(md, "- {t}");
+    let samples = |f: &dyn Fn(f64, f64) -> GenSample| -> Vec<GenSample> {
+        sc.grid.iter().zip(&loads).map(|(&q, &l)| f(q, l)).collect()
+    };
+    let s64 = samples(&|q, l| gen(q, sc.rate, sc.accel, l));
+    let s32 = samples(&|q, l| gen32(q, sc.rate, sc.accel, l));
+    let global_of = |heap| {
+        compare(
+            sc,
+            &ref64,
+            &scale,
+            &samples(&|q, l| global(sc.name, q, sc.rate, sc.accel, l, heap)),
+        )
+    };
+    let errors = [
+        compare(sc, &ref64, &scale, &s64),
+        compare(sc, &ref32, &scale, &s32),
+        global_of(false),
+        global_of(true),
+    ];
+    let sw64 = sweep::<f64>(sc.name, &sc.grid, sc.rate, sc.accel, &loads);
+    let sw32 = sweep::<f32>(sc.name, &sc.grid, sc.rate, sc.accel, &loads);
+    let sw_kin = kinematics_sweep(sc.name, &sc.grid, sc.rate, sc.accel);
+    let sw_fixed = global_sweep(sc.name, &sc.grid, sc.rate, sc.accel, &loads, false);
+    let sw_heap = global_sweep(sc.name, &sc.grid, sc.rate, sc.accel, &loads, true);
+    let n = sc.grid.len();
+    let ns = timing::interleaved(
+        &[
+            (&sw64, n),
+            (&sw32, n),
+            (&sw_kin, n),
+            (&sw_fixed, n),
+            (&sw_heap, n),
+        ],
+        ROUNDS,
+        MIN_SAMPLE_NS,
+    );
+    Measured {
+        max_res,
+        scale,
+        errors,
+        ns,
+    }
+}
+
+/// One scene's subsection: its description and table (markdown), and its
+/// CSV written to `out_dir`.
+fn scene_table(sc: &ForceScene, m: &Measured, out_dir: &Path) -> String {
+    let mut md = String::new();
+    let n = sc.grid.len();
+    let _ = writeln!(md, "### {}\n", sc.name);
+    let largest = |unit: Unit| {
+        sc.columns
+            .iter()
+            .zip(&m.scale)
+            .filter(|((_, u), _)| *u == unit)
+            .fold(0.0f64, |acc, (_, &x)| acc.max(x))
+    };
+    let _ = writeln!(
+        md,
+        "{n} grid points (a full turn in 0.1 deg steps); crank rate {} rad/s, acceleration {} \
+         rad/s^2; {} reactions and driving-effort columns; largest force {:.4e} N, largest \
+         moment {:.4e} N m; reference residual at most {:.1e}.\n",
+        sc.rate,
+        sc.accel,
+        sc.columns.len(),
+        largest(Unit::Force),
+        largest(Unit::Moment),
+        m.max_res
+    );
+    let _ = writeln!(
+        md,
+        "| method | ns/eval median | min - max | force abs err (N) | moment abs err (N m) | rel err | worst column | power_residual max | failed |"
+    );
+    let _ = writeln!(md, "|---|---:|---:|---:|---:|---:|---|---:|---:|");
+    let mut csv = String::from(
+        "method,ns_median,ns_min,ns_max,force_abs,moment_abs,rel,worst,power_residual,failures\n",
+    );
+    let none = ForceErrors::default();
+    let [e64, e32, e_fixed, e_heap] = &m.errors;
+    let rows = [
+        ("generated f64 `solve` (kinematics and forces)", e64),
+        ("generated f32 `solve` (kinematics and forces)", e32),
+        ("generated f64 kinematics alone", &none),
+        ("global Newton-Euler, nalgebra SMatrix LU f64", e_fixed),
+        ("global Newton-Euler, heap DMatrix LU f64", e_heap),
+    ];
+    for (k, (&(name, e), ns)) in rows.iter().zip(&m.ns).enumerate() {
+        let (med, lo, hi) = timing::stats(ns);
+        let errs = if k == 2 {
+            "- | - | - | - | - | -".to_string()
+        } else {
+            format!(
+                "{} | {} | {} | {} | {} | {}",
+                sci(e.force_abs),
+                sci(e.moment_abs),
+                sci(e.rel),
+                e.worst,
+                if k >= 3 { "-".into() } else { sci(e.power) },
+                e.failures
+            )
+        };
+        let _ = writeln!(md, "| {name} | {med:.1} | {lo:.1} - {hi:.1} | {errs} |");
+        let _ = writeln!(
+            csv,
+            "{name},{med},{lo},{hi},{},{},{},{},{},{}",
+            e.force_abs, e.moment_abs, e.rel, e.worst, e.power, e.failures
+        );
     }
     let _ = writeln!(md);
-    if !problems.is_empty() {
-        let _ = writeln!(md, "Reference failures (forces):\n");
-        for p in problems.iter().take(20) {
-            let _ = writeln!(md, "- {p}");
-        }
-        let _ = writeln!(md, "- ({} in all)\n", problems.len());
-    }
+    std::fs::write(
+        out_dir.join(format!("forces_{}.csv", sc.name.to_lowercase())),
+        csv,
+    )
+    .expect("write forces csv");
     md
 }

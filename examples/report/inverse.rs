@@ -184,66 +184,7 @@ pub fn section() -> String {
     ];
     let (nrows, iterations) = newton_rows(&g, guess0);
     let n = g.len();
-    let inp = |x: f64, y: f64| FiveBarIkInput { x, y };
-    let (vel, acc) = (inp(V.0, V.1), inp(A.0, A.1));
-    let sweeps: [(&str, Sweep); 4] = [
-        (
-            "generated `solve` (position, velocity, acceleration)",
-            Box::new(|| {
-                let mut s = 0.0;
-                for &(x, y) in &g {
-                    if let Ok(o) = m.solve(&inp(x, y), &vel, &acc) {
-                        s += o.position.arm1 + o.velocity.arm2 + o.acceleration.arm1;
-                    }
-                }
-                black_box(s)
-            }),
-        ),
-        (
-            "generated `solve` + `forces` (motor torques)",
-            Box::new(|| {
-                let mut s = 0.0;
-                for &(x, y) in &g {
-                    if let Ok(o) = m.solve(&inp(x, y), &vel, &acc) {
-                        if let Ok(f) = m.forces(&o.position, &o.velocity, &o.acceleration) {
-                            s += f.drive_q1 + f.drive_q2;
-                        }
-                    }
-                }
-                black_box(s)
-            }),
-        ),
-        (
-            "generated f32 `solve`",
-            Box::new(|| {
-                let inp32 = |x: f64, y: f64| FiveBarIkInput {
-                    x: x as f32,
-                    y: y as f32,
-                };
-                let (v32, a32) = (inp32(V.0, V.1), inp32(A.0, A.1));
-                let mut s = 0.0f32;
-                for &(x, y) in &g32 {
-                    if let Ok(o) = m32.solve(&inp32(x, y), &v32, &a32) {
-                        s += o.position.arm1 + o.velocity.arm2 + o.acceleration.arm1;
-                    }
-                }
-                black_box(s as f64)
-            }),
-        ),
-        (
-            "Newton, nalgebra SMatrix 4x4 LU (warm start)",
-            Box::new(|| {
-                let (mut s, mut guess) = (0.0, guess0);
-                for &p in &g {
-                    if let Some(o) = baselines::five_bar_ik_newton(p, V, A, guess) {
-                        guess = o.q;
-                        s += o.q[0] + o.w[2] + o.al[0];
-                    }
-                }
-                black_box(s)
-            }),
-        ),
-    ];
+    let sweeps = methods(&m, &m32, &g, &g32, guess0);
     let timed: Vec<(&Sweep, usize)> = sweeps.iter().map(|(_, s)| (s, n)).collect();
     let ns = timing::interleaved(&timed, crate::ROUNDS, crate::MIN_SAMPLE_NS);
     let base = timing::stats(&ns[0]).0;
@@ -259,6 +200,110 @@ pub fn section() -> String {
         rows32.iter().filter(|r| r.is_none()).count().to_string(),
         nrows.iter().filter(|r| r.is_none()).count().to_string(),
     ];
+    let mut md = intro(n, left_out);
+    let _ = writeln!(
+        md,
+        "| method | ns median | min - max | x generated `solve` | {} | Newton iterations mean (max) | failed |",
+        NAMES.join(" | ")
+    );
+    let _ = writeln!(md, "|---|---:|---:|---:|{}---:|---:|", "---:|".repeat(6));
+    for (k, (name, _)) in sweeps.iter().enumerate() {
+        let (med, mn, mx) = timing::stats(&ns[k]);
+        let cols = match errs[k] {
+            Some(e) => e.map(sci).join(" | "),
+            None => ["-"; 6].join(" | "),
+        };
+        let iters = if k == 3 && !iterations.is_empty() {
+            let s: u64 = iterations.iter().map(|&i| i as u64).sum();
+            let mx = iterations.iter().max().copied().unwrap_or(0);
+            format!("{:.2} ({mx})", s as f64 / iterations.len() as f64)
+        } else {
+            "-".into()
+        };
+        let _ = writeln!(
+            md,
+            "| {name} | {med:.1} | {mn:.1} - {mx:.1} | {:.2} | {cols} | {iters} | {} |",
+            med / base,
+            failed[k]
+        );
+    }
+    md
+}
+
+/// The timed methods, in the table's order: the generated `solve`, with
+/// `forces`, in f32, and the Newton baseline (warm-started from `guess0`).
+fn methods<'a>(
+    m: &'a FiveBarIk<f64>,
+    m32: &'a FiveBarIk<f32>,
+    g: &'a [(f64, f64)],
+    g32: &'a [(f64, f64)],
+    guess0: [f64; 4],
+) -> [(&'static str, Sweep<'a>); 4] {
+    let inp = |x: f64, y: f64| FiveBarIkInput { x, y };
+    let (vel, acc) = (inp(V.0, V.1), inp(A.0, A.1));
+    [
+        (
+            "generated `solve` (position, velocity, acceleration)",
+            Box::new(move || {
+                let mut s = 0.0;
+                for &(x, y) in g {
+                    if let Ok(o) = m.solve(&inp(x, y), &vel, &acc) {
+                        s += o.position.arm1 + o.velocity.arm2 + o.acceleration.arm1;
+                    }
+                }
+                black_box(s)
+            }),
+        ),
+        (
+            "generated `solve` + `forces` (motor torques)",
+            Box::new(move || {
+                let mut s = 0.0;
+                for &(x, y) in g {
+                    if let Ok(o) = m.solve(&inp(x, y), &vel, &acc) {
+                        if let Ok(f) = m.forces(&o.position, &o.velocity, &o.acceleration) {
+                            s += f.drive_q1 + f.drive_q2;
+                        }
+                    }
+                }
+                black_box(s)
+            }),
+        ),
+        (
+            "generated f32 `solve`",
+            Box::new(move || {
+                let inp32 = |x: f64, y: f64| FiveBarIkInput {
+                    x: x as f32,
+                    y: y as f32,
+                };
+                let (v32, a32) = (inp32(V.0, V.1), inp32(A.0, A.1));
+                let mut s = 0.0f32;
+                for &(x, y) in g32 {
+                    if let Ok(o) = m32.solve(&inp32(x, y), &v32, &a32) {
+                        s += o.position.arm1 + o.velocity.arm2 + o.acceleration.arm1;
+                    }
+                }
+                black_box(s as f64)
+            }),
+        ),
+        (
+            "Newton, nalgebra SMatrix 4x4 LU (warm start)",
+            Box::new(move || {
+                let (mut s, mut guess) = (0.0, guess0);
+                for &p in g {
+                    if let Some(o) = baselines::five_bar_ik_newton(p, V, A, guess) {
+                        guess = o.q;
+                        s += o.q[0] + o.w[2] + o.al[0];
+                    }
+                }
+                black_box(s)
+            }),
+        ),
+    ]
+}
+
+/// The section's heading and what it measures (`n` end points, `left_out`
+/// grid points left out).
+fn intro(n: usize, left_out: usize) -> String {
     let mut md = String::new();
     let _ = writeln!(
         md,
@@ -286,31 +331,5 @@ pub fn section() -> String {
         baselines::IK_MAX_ITER,
         crate::ROUNDS
     );
-    let _ = writeln!(
-        md,
-        "| method | ns median | min - max | x generated `solve` | {} | Newton iterations mean (max) | failed |",
-        NAMES.join(" | ")
-    );
-    let _ = writeln!(md, "|---|---:|---:|---:|{}---:|---:|", "---:|".repeat(6));
-    for (k, (name, _)) in sweeps.iter().enumerate() {
-        let (med, mn, mx) = timing::stats(&ns[k]);
-        let cols = match errs[k] {
-            Some(e) => e.map(sci).join(" | "),
-            None => ["-"; 6].join(" | "),
-        };
-        let iters = if k == 3 && !iterations.is_empty() {
-            let s: u64 = iterations.iter().map(|&i| i as u64).sum();
-            let mx = iterations.iter().max().copied().unwrap_or(0);
-            format!("{:.2} ({mx})", s as f64 / iterations.len() as f64)
-        } else {
-            "-".into()
-        };
-        let _ = writeln!(
-            md,
-            "| {name} | {med:.1} | {mn:.1} - {mx:.1} | {:.2} | {cols} | {iters} | {} |",
-            med / base,
-            failed[k]
-        );
-    }
     md
 }

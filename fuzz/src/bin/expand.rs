@@ -1148,6 +1148,78 @@ fn repro(path: &Path) -> i32 {
     0
 }
 
+/// Each definition of the corpus as a flat token list (empty where it does
+/// not lex).
+fn flattened(corpus: &[(String, String)]) -> Vec<Vec<Tok>> {
+    corpus
+        .iter()
+        .map(|(_, body)| {
+            let mut v = Vec::new();
+            if let Ok(s) = body.parse::<TokenStream>() {
+                flatten(s, &mut v);
+            }
+            v
+        })
+        .collect()
+}
+
+/// The distinct words of the corpus (the mutations' vocabulary), sorted.
+fn word_list(flat: &[Vec<Tok>]) -> Vec<String> {
+    let mut words: Vec<String> = flat
+        .iter()
+        .flatten()
+        .filter(|t| is_word(t))
+        .map(|t| t.text.clone())
+        .collect();
+    words.sort();
+    words.dedup();
+    words
+}
+
+/// The next case and its source: six in ten a mutant of a corpus
+/// definition (with a donor's tokens), three in ten from the grammar, one
+/// in ten random tokens.
+fn next_case(
+    rng: &mut fastrand::Rng,
+    flat: &[Vec<Tok>],
+    words: &[String],
+) -> (&'static str, String) {
+    match rng.u8(..10) {
+        0..=5 => {
+            let k = rng.usize(..flat.len());
+            let donor = &flat[rng.usize(..flat.len())];
+            let mut toks = flat[k].clone();
+            mutate(rng, &mut toks, words, donor);
+            ("mutant", render(&toks))
+        }
+        6..=8 => ("grammar", generate(rng)),
+        _ => ("tokens", random_stream(rng, 0)),
+    }
+}
+
+/// The run's one-line summary.
+fn print_summary(n: u64, seconds: f64, counts: &Counts, compiler: &Compiler) {
+    let sources: Vec<String> = counts
+        .by_source
+        .iter()
+        .map(|(k, v)| format!("{k} {v}"))
+        .collect();
+    println!(
+        "{n} cases in {seconds:.0} s ({}): not a token stream {}, ok {}, errors {}, panics {}, hangs {}, non-parsing {}, errors off the user's tokens {}; compiled {} expansions in {} batches, compile failures {}",
+        sources.join(", "),
+        counts.unlexable,
+        counts.ok,
+        counts.errors,
+        counts.panics,
+        counts.hangs,
+        counts.not_parsing,
+        counts.call_site,
+        compiler.compiled,
+        compiler.batches,
+        compiler.failures,
+    );
+}
+
 fn main() {
     let o = match options() {
         Ok(o) => o,
@@ -1170,24 +1242,8 @@ fn main() {
         eprintln!("no `mechanism! {{ .. }}` found under {}", root.display());
         std::process::exit(2);
     }
-    let flat: Vec<Vec<Tok>> = corpus
-        .iter()
-        .map(|(_, body)| {
-            let mut v = Vec::new();
-            if let Ok(s) = body.parse::<TokenStream>() {
-                flatten(s, &mut v);
-            }
-            v
-        })
-        .collect();
-    let mut words: Vec<String> = flat
-        .iter()
-        .flatten()
-        .filter(|t| is_word(t))
-        .map(|t| t.text.clone())
-        .collect();
-    words.sort();
-    words.dedup();
+    let flat = flattened(&corpus);
+    let words = word_list(&flat);
 
     quiet_panics();
     let (tx, rx) = spawn_worker();
@@ -1208,17 +1264,7 @@ fn main() {
     let mut last_report = Instant::now();
     while start.elapsed() < limit {
         n += 1;
-        let (source, text) = match rng.u8(..10) {
-            0..=5 => {
-                let k = rng.usize(..flat.len());
-                let donor = &flat[rng.usize(..flat.len())];
-                let mut toks = flat[k].clone();
-                mutate(&mut rng, &mut toks, &words, donor);
-                ("mutant", render(&toks))
-            }
-            6..=8 => ("grammar", generate(&mut rng)),
-            _ => ("tokens", random_stream(&mut rng, 0)),
-        };
+        let (source, text) = next_case(&mut rng, &flat, &words);
         *counts.by_source.entry(source).or_default() += 1;
         if last_report.elapsed() > Duration::from_secs(60) {
             last_report = Instant::now();
@@ -1279,26 +1325,7 @@ fn main() {
         compiler.flush(o.seed);
         compiler.wait();
     }
-    let sources: Vec<String> = counts
-        .by_source
-        .iter()
-        .map(|(k, v)| format!("{k} {v}"))
-        .collect();
-    println!(
-        "{n} cases in {:.0} s ({}): not a token stream {}, ok {}, errors {}, panics {}, hangs {}, non-parsing {}, errors off the user's tokens {}; compiled {} expansions in {} batches, compile failures {}",
-        start.elapsed().as_secs_f64(),
-        sources.join(", "),
-        counts.unlexable,
-        counts.ok,
-        counts.errors,
-        counts.panics,
-        counts.hangs,
-        counts.not_parsing,
-        counts.call_site,
-        compiler.compiled,
-        compiler.batches,
-        compiler.failures,
-    );
+    print_summary(n, start.elapsed().as_secs_f64(), &counts, &compiler);
     if failures.is_empty() && compiler.failures == 0 {
         println!("no failure (seed {})", o.seed);
     } else {
