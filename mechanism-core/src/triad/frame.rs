@@ -277,20 +277,14 @@ impl<T: Real> Frame<T> {
         let (ab, ap) = self.offsets(&e);
         let r2 = a + ab - self.k2;
         let r3 = a + ap - self.k3;
-        self.pose_of(a, e, ab, ap, r2, r3)
+        self.pose_of(a, e, [ab, ap, r2, r3])
     }
 
-    /// The [`Pose`] of these vectors: their relative determinant added.
+    /// The [`Pose`] of `A`, the axis `e` and the vectors `B - A`, `P - A`
+    /// and the legs 2 and 3: their relative determinant added.
     #[inline(always)]
-    fn pose_of(
-        &self,
-        a: Vector2<T>,
-        e: Vector2<T>,
-        ab: Vector2<T>,
-        ap: Vector2<T>,
-        r2: Vector2<T>,
-        r3: Vector2<T>,
-    ) -> Pose<T> {
+    fn pose_of(&self, a: Vector2<T>, e: Vector2<T>, vectors: [Vector2<T>; 4]) -> Pose<T> {
+        let [ab, ap, r2, r3] = vectors;
         let det = cross(&ap, &r3) * cross(&a, &r2) - cross(&ab, &r2) * cross(&a, &r3);
         let bound = self.l1 * self.l2 * self.l3 * (self.c + length(&ap));
         Pose {
@@ -413,7 +407,7 @@ impl<T: Real> Frame<T> {
         let ab = round([ex.scale(self.c), ey.scale(self.c)]);
         let ap = round([apx, apy]);
         let (r2, r3) = (round(r2), round(r3));
-        (g, self.pose_of(a, e, ab, ap, r2, r3))
+        (g, self.pose_of(a, e, [ab, ap, r2, r3]))
     }
 
     /// A radius of isolation of the assembly at `x` (normalized): every
