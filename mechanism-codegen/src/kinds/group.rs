@@ -340,7 +340,7 @@ pub enum Tracking {
 /// generated `position()` and the messages).
 #[derive(Clone, Debug, Default)]
 pub struct Tracked {
-    /// The pose at evenly spaced inputs: `[input, ax, ay, bx, by, px, py]`.
+    /// The pose at the table's inputs (increasing): `[input, ax, ay, bx, by, px, py]`.
     pub rows: Vec<[f64; 7]>,
     /// Where the tracked assembly stops existing: the last input it was
     /// found at and the first it was not, below and above the stated one.

@@ -263,10 +263,11 @@ mod tests {
         (triad, [Point2::new(0.0, 0.0), Point2::new(0.30, 0.0), c])
     }
 
-    /// The Stephenson III's swing as the generated stateless `position()`
-    /// sees it: the assembly followed at 49 evenly spaced inputs (a table
-    /// like the one the macro writes), the pose interpolated linearly at
-    /// 3600 inputs between them. Proves that the isolated Newton
+    /// The Stephenson III's swing as a stateless `position()` from a table
+    /// sees it: the assembly followed at 49 evenly spaced inputs (the
+    /// macro's table crowds its rows near the ends instead, which misses
+    /// by 60 times less there: `mechanism-codegen`'s `kinds/triad.rs`), the
+    /// pose interpolated linearly at 3600 inputs between them. Proves that the isolated Newton
     /// ([`isolated`]) answers at all but the inputs nearest the swing's ends
     /// (3452 of 3600, 96 %: near the ends the interpolated pose is farther
     /// off and the other assembly closer; those go to the search), and that
