@@ -893,6 +893,13 @@ mod tests {
         }
     }
 
+    /// The Stephenson's known points `O2`, `O4` and `C` at link 6's angle
+    /// `q` (rad), as `track` asks for them.
+    fn stephenson_known(q: f64) -> Option<[Point2<f64>; 3]> {
+        let c = Point2::new(0.05 + 0.24 * q.cos(), 0.42 + 0.24 * q.sin());
+        Some([Point2::new(0.0, 0.0), Point2::new(0.30, 0.0), c])
+    }
+
     #[test]
     fn tracking_over_a_range_wider_than_the_swing_finds_its_ends() {
         // Proves the expansion-time tracking of the stated assembly over
@@ -905,10 +912,7 @@ mod tests {
         let Kind::Triad(t) = &model.stmts[4].kind else {
             unreachable!()
         };
-        let ks = |q: f64| {
-            let c = Point2::new(0.05 + 0.24 * q.cos(), 0.42 + 0.24 * q.sin());
-            Some([Point2::new(0.0, 0.0), Point2::new(0.30, 0.0), c])
-        };
+        let ks = stephenson_known;
         let (lo, hi) = ((-60f64).to_radians(), 0.0);
         let tracked = track(t, (lo, hi), false, &ks).expect("the stated pose selects an assembly");
         let step = (hi - lo) / ((ROWS - 1) * SUB) as f64;
@@ -944,10 +948,7 @@ mod tests {
         let Kind::Triad(t) = &model.stmts[4].kind else {
             unreachable!()
         };
-        let ks = |q: f64| {
-            let c = Point2::new(0.05 + 0.24 * q.cos(), 0.42 + 0.24 * q.sin());
-            Some([Point2::new(0.0, 0.0), Point2::new(0.30, 0.0), c])
-        };
+        let ks = stephenson_known;
         let (lo, hi) = ((-50.43f64).to_radians(), (-2.64f64).to_radians());
         let tracked = track(t, (lo, hi), false, &ks).expect("tracks");
         // Every step again, from the first row's pose (the same steps the
